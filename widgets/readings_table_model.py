@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt, Signal
 from PySide6.QtGui import QBrush, QColor, QUndoStack
 
@@ -57,22 +59,35 @@ class ReadingsTableModel(QAbstractTableModel):
         #: plan's next point, pre-filled), and their blank cells are not red (#62 review F8:
         #: every capture showed its next row as cells that cannot be read)
         self.reading_columns: tuple[int, ...] = ()
+        #: the row the entry plan sends the next reading to (the presenter's), wherever it
+        #: is: one in the middle whose reading was cleared waits for it too, its blank cells
+        #: not red (None: a new row, or no plan)
+        self.planned_row: Callable[[], int | None] = lambda: None
         self._waiting_from: int | None = None  # the first of them (None: none)
+        self._planned: int | None = None
         self._waiting_known = False
-        self.sheet_changed.connect(self._forget_waiting)
+        self.sheet_changed.connect(self.forget_waiting)
         on_language_change(self, self._on_language_changed)
 
-    def _forget_waiting(self) -> None:
-        """The cells made or no longer waiting by a change repainted (their red)."""
-        before = self._waiting_from if self._waiting_known else None
+    def forget_waiting(self) -> None:
+        """The cells made or no longer waiting by a change (of the cells, or of the plan)
+        repainted (their red)."""
+        known = self._waiting_known
+        before, planned_before = (self._waiting_from, self._planned) if known else (None, None)
         self._waiting_known = False
         after = self.waiting_from()
-        if before != after and self.sheet.row_count:
+        last = self.sheet.row_count - 1
+        if before != after and last >= 0:
             first = min(r for r in (before, after) if r is not None)
-            last = self.sheet.row_count - 1
             if first <= last:
                 self.dataChanged.emit(self.index(first, 0),
                                       self.index(last, self.sheet.column_count - 1),
+                                      [Qt.ItemDataRole.BackgroundRole,
+                                       Qt.ItemDataRole.ToolTipRole])
+        for row in (planned_before, self._planned) if planned_before != self._planned else ():
+            if row is not None and row <= last:
+                self.dataChanged.emit(self.index(row, 0),
+                                      self.index(row, self.sheet.column_count - 1),
                                       [Qt.ItemDataRole.BackgroundRole,
                                        Qt.ItemDataRole.ToolTipRole])
 
@@ -80,10 +95,18 @@ class ReadingsTableModel(QAbstractTableModel):
         """The first of the rows at the end that wait for their reading (None: none)."""
         if not self._waiting_known:
             sheet = self.sheet
-            self._waiting_from = None if isinstance(sheet.rows, NumericRows) else waiting_row(
+            numeric = isinstance(sheet.rows, NumericRows)
+            self._waiting_from = None if numeric else waiting_row(
                 sheet.row_count, sheet.column_count, self.reading_columns, sheet.text)
+            self._planned = None if numeric else self.planned_row()
             self._waiting_known = True
         return self._waiting_from
+
+    def is_waiting(self, r: int) -> bool:
+        """Row ``r`` waits for its reading: one of the rows at the end that do
+        (:meth:`waiting_from`), or the row the entry plan sends the next reading to."""
+        waiting = self.waiting_from()
+        return (waiting is not None and r >= waiting) or r == self._planned
 
     def _on_language_changed(self) -> None:
         self.headerDataChanged.emit(Qt.Orientation.Horizontal, 0, self.sheet.column_count - 1)
@@ -105,6 +128,8 @@ class ReadingsTableModel(QAbstractTableModel):
         if not inside:
             return None
         if role == Qt.ItemDataRole.BackgroundRole:
+            if self.cleared_after_capture(r, c):
+                return EDITED_BRUSH
             if self.cell_error(r, c) is not None:
                 return INVALID_BRUSH
             if (r, c) in self.edited_cells:
@@ -114,23 +139,33 @@ class ReadingsTableModel(QAbstractTableModel):
             return None
         if role == Qt.ItemDataRole.ToolTipRole:
             reason = self.cell_error(r, c)
-            if reason is None and (r, c) in self.edited_cells:
-                return translated(self.edited_cells[(r, c)])
+            edited = self.edited_cells.get((r, c))
+            if reason is None and edited is not None:
+                return translated(edited)
             column = self.sheet.columns[c]  # the header the user sees, the file's key beside it
-            return (tr("Row {row}, {header} ({key}): {reason}").format(
+            why = (tr("Row {row}, {header} ({key}): {reason}").format(
                 row=r + 1, header=declared(column.header), key=column.key,
                 reason=translated(reason))
                 if reason else None)
+            if edited is not None and self.cleared_after_capture(r, c):
+                # a cleared reading: what was captured, and why its row is left out
+                return f"{translated(edited)}\n{why}"
+            return why
         return None
+
+    def cleared_after_capture(self, r: int, c: int) -> bool:
+        """The cell of a captured reading the user emptied: an edit (marked so, its tooltip
+        says what was captured), never a cell that cannot be read (it was red)."""
+        return (r, c) in self.edited_cells and not self.sheet.text(r, c).strip()
 
     def cell_error(self, r: int, c: int) -> str | None:
         """The sheet's :meth:`~models.readings.sheet.ReadingsSheet.cell_error`, the parse
         remembered by column and text (a blank row is fine, asked each time, and so is a
-        blank cell of a row waiting for its reading: :meth:`waiting_from`)."""
+        blank cell of a row waiting for its reading: :meth:`is_waiting`)."""
         if self.sheet.is_blank_row(r):
             return None
         key = (c, self.sheet.text(r, c))
-        if not key[1].strip() and (waiting := self.waiting_from()) is not None and r >= waiting:
+        if not key[1].strip() and self.is_waiting(r):
             return None  # a row waiting for its reading: a cell not filled yet
         try:
             return self._reasons[key]

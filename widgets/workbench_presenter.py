@@ -73,14 +73,14 @@ class _AnalysisTask(QRunnable):
 
     def __init__(self, kind: Workbench, sheet: ReadingsSheet, settings: dict[str, Any],
                  generation: int, signals: _TaskSignals, prepare, current, workers: Workers,
-                 reading_keys: tuple[str, ...] = ()) -> None:
+                 reading_keys: tuple[str, ...] = (), planned: int | None = None) -> None:
         super().__init__()
         self._args = (kind, sheet, settings, generation, signals, prepare, current, workers,
-                      reading_keys)
+                      reading_keys, planned)
 
     def run(self) -> None:
-        kind, sheet, settings, generation, signals, prepare, current, workers, reading_keys = \
-            self._args
+        (kind, sheet, settings, generation, signals, prepare, current, workers, reading_keys,
+         planned) = self._args
         # a newer edit (come while this waited in the queue or ran) cancels this analysis at
         # its next checkpoint: the newer one has its thread and the interpreter to itself
         try:
@@ -92,7 +92,7 @@ class _AnalysisTask(QRunnable):
                     # the rows at the end waiting for their reading, as in the GUI thread's
                     # analysis (#62 review F8: while capturing, the plan's pre-filled row was
                     # "3 cell(s) cannot be read")
-                    parsed = _without_waiting_rows(parsed, sheet, reading_keys)
+                    parsed = _without_waiting_rows(parsed, sheet, reading_keys, planned)
                 result, error = _run_analysis(kind, parsed, settings)
                 checkpoint()
                 display = _prepare_display(prepare, result)
@@ -104,18 +104,20 @@ class _AnalysisTask(QRunnable):
 
 
 def _without_waiting_rows(parsed: ParsedReadings, sheet: ReadingsSheet,
-                          reading_keys: tuple[str, ...]) -> ParsedReadings:
-    """``parsed`` less the rows at the end of ``sheet`` waiting for their reading
+                          reading_keys: tuple[str, ...],
+                          planned: int | None = None) -> ParsedReadings:
+    """``parsed`` less the rows at the end of ``sheet`` waiting for their reading, and the
+    row the entry plan sends the next reading to (``planned``) wherever it is
     (models/readings/incomplete.py), their reading cells' text blank."""
     keys = [c.key for c in sheet.columns]
     columns = [keys.index(k) for k in reading_keys if k in keys]
     if isinstance(sheet.rows, NumericRows) or not columns:
-        return without_waiting_rows(parsed, reading_keys)[0]
+        return without_waiting_rows(parsed, reading_keys, planned=planned)[0]
 
     def blank_reading(row: int) -> bool:
         return all(not sheet.text(row, c).strip() for c in columns)
 
-    return without_waiting_rows(parsed, reading_keys, blank_reading)[0]
+    return without_waiting_rows(parsed, reading_keys, blank_reading, planned)[0]
 
 
 def _prepare_display(prepare, result: Any) -> Any:
@@ -225,6 +227,7 @@ class WorkbenchPresenter(QObject):
         keys = [c.key for c in kind.columns]
         self.table_model.reading_columns = tuple(keys.index(k) for k in self._reading_keys()
                                                  if k in keys)
+        self.table_model.planned_row = self.planned_row
         self.view.attach_table_model(self.table_model)
         if hasattr(getattr(self.view, "table", None), "own_layout"):  # a mock view has none
             self.view.table.own_layout = kind.rows_from_table
@@ -386,6 +389,7 @@ class WorkbenchPresenter(QObject):
         self._settings = self.kind.settings_with_defaults(settings)
         self.view.set_settings(self._settings)
         self._readings_per_point()
+        self.table_model.forget_waiting()  # the plan's row waiting may be another
         self._settings_modified = True
         self._emit_modified()
         self.schedule_refresh()
@@ -411,6 +415,7 @@ class WorkbenchPresenter(QObject):
             self.view.set_settings(settings)
         self._settings = dict(settings)
         self._readings_per_point()
+        self.table_model.forget_waiting()  # the plan's row waiting may be another
         self._settings_modified = True
         self._emit_modified()
         self.schedule_refresh()
@@ -637,12 +642,22 @@ class WorkbenchPresenter(QObject):
         reading = [keys.index(k) for k in self._reading_keys() if k in keys]
         return waiting_row(sheet.row_count, len(keys), reading, sheet.text)
 
+    def planned_row(self) -> int | None:
+        """The row of the table the entry plan sends the next reading to — a row pre-filled
+        with the next point, or one in the middle whose reading was cleared (a take thrown
+        away) — that waits for its reading as the rows at the end do: never a bad row.
+        None without a plan, when the plan is complete or its next point is a new row."""
+        place = self.plan_placement()
+        return place.row if place is not None and place.row < self.sheet.row_count else None
+
     def _without_waiting_rows(self, parsed: ParsedReadings,
-                              sheet: ReadingsSheet | None = None) -> ParsedReadings:
+                              sheet: ReadingsSheet | None = None,
+                              planned: int | None = None) -> ParsedReadings:
         """The readings less the rows at the end that wait for their reading (the plan's or
-        the nominal step's cells filled, no reading yet): a row waiting is not a bad row."""
+        the nominal step's cells filled, no reading yet), and the plan's row ``planned``
+        waiting for the next one: a row waiting is not a bad row."""
         return _without_waiting_rows(parsed, self.sheet if sheet is None else sheet,
-                                     self._reading_keys())
+                                     self._reading_keys(), planned)
 
     # -- analysis -----------------------------------------------------------
     def schedule_refresh(self) -> None:
@@ -669,6 +684,7 @@ class WorkbenchPresenter(QObject):
         # the readings as they are now: the analysis parses these, wherever it runs, and
         # they stay with its result (edits made while a worker analyses never reach them)
         sheet = self.sheet.snapshot()
+        planned = self.planned_row()  # the plan's row waiting in the middle (cleared)
         if sheet.row_count > THREAD_THRESHOLD_ROWS or self.capturing:
             if not self.capturing:
                 self._set_busy(True, tr("Analysing {rows} readings …").format(
@@ -677,9 +693,10 @@ class WorkbenchPresenter(QObject):
                 _AnalysisTask(self.kind, sheet, dict(self._settings), self._generation,
                               self._signals, self.prepare_display, lambda: self._generation,
                               self.workers,
-                              self._reading_keys() if sheet.row_count <= PLAN_ROWS else ()))
+                              self._reading_keys() if sheet.row_count <= PLAN_ROWS else (),
+                              planned))
             return
-        parsed = self._without_waiting_rows(sheet.parse(), sheet)
+        parsed = self._without_waiting_rows(sheet.parse(), sheet, planned)
         settings = dict(self._settings)
         result, error = _run_analysis(self.kind, parsed, settings)
         self._shown_generation = self._generation

@@ -14,7 +14,8 @@ both passed without a word).
 
 A reading whose cell was emptied is said *cleared*, with what the frames gave (it was
 "edited …: 300.00002 → —"). A row captured again — its cells cleared and the reading taken
-anew, the older take superseded (models/capture/take_rows.py) — is checked against the
+anew, or its take undone and the reading taken anew into it, the older take superseded
+(models/capture/take_rows.py) — is checked against the
 newer take alone and said once, "captured again", never "edited" (review 62 F1): the
 customer is told that the raw record (ISO/IEC 17025 7.5.1, its SHA-256 on the certificate)
 holds two takes for that row, and which one the row reports. A file written before the

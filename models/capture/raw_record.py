@@ -21,7 +21,8 @@ earlier one's rows become -1 (its frames stay: they are no longer behind a row).
 undone (Edit › Undo of the take, or of the replacement of the sheet it went into) is -1
 too, until its redo (review 62 F4: it kept its row, and a reading typed there afterwards
 was said "edited after capture"). A take *superseded* by a newer take of the same
-instrument into its row (its cells cleared and the reading taken again, review 62 F1) is
+instrument into its row (its cells cleared and the reading taken again, review 62 F1; or
+the take undone and the reading taken again into the row it was in) is
 ``[-1, first, last, key]``, ``key`` the newer take's ``[instrument, port, started_utc,
 first, last]``: both takes stay, the certificate says the row was captured again.
 

@@ -12,10 +12,11 @@ A take's row is, in the stored ``takes``:
   read, but no cell claims to hold them;
 * ``-1`` with a fourth item, the key of a newer take (:func:`take_key`, as a list):
   *superseded* — a newer take of the same instrument went into its row (its cells cleared
-  and the reading taken again, review 62 F1). The row holds the newer take's reading; the
-  older one's frames stay, and the certificate says the row was captured again, never
-  that it was edited (models/capture/edits.py). The undo of the newer take gives the row
-  back to the older one;
+  and the reading taken again, review 62 F1; or the take undone and the reading taken again
+  into the row it was in). The row holds the newer take's reading; the older one's frames
+  stay, and the certificate says the row was captured again, never that it was edited
+  (models/capture/edits.py). The undo of the newer take gives the row back to the older
+  one (an undone one: undone again, of that row);
 * ``r <= -2``: its row was deleted (or the sheet replaced) — at row ``-2 - r`` then. The
   frames stay in the raw record; the certificate says the captured reading was deleted
   (models/capture/edits.py). A file of 0.8.10 reads such a row as ``-1``.
@@ -69,18 +70,32 @@ def superseded_by(take) -> tuple | None:
 class TakeRows:
     """The takes of one workbench's sessions moved with its rows. ``takes()``: every take of
     the workbench as ``(key, take)``, ``take`` the live ``[row, first, last]`` list the
-    sessions hold (changed in place)."""
+    sessions hold (changed in place).
+
+    The row each take undone in this window was in (:attr:`undone_rows`) moves with the
+    rows too, though the take claims none: the next take of its instrument into that row
+    supersedes it, as it supersedes a take whose cells were cleared — both are a position
+    taken again after its first take was thrown away, said "captured again" (the raw record
+    holds both takes; it was said only of the cleared one). The row deleted, or the sheet
+    replaced, and the undone take is of no row any more."""
 
     def __init__(self, takes: Callable[[], Iterable[tuple[tuple, list[int]]]]) -> None:
         self._takes = takes
         #: the columns (keys) each take made in this window wrote (:meth:`taken`)
         self.columns: dict[tuple, frozenset[str]] = {}
+        #: the row each take undone was in, by its key (moved with the rows since)
+        self.undone_rows: dict[tuple, int] = {}
+        #: the undone takes a newer take superseded: its undo undoes them again
+        self._superseded_undone: set[tuple] = set()
 
     def inserted(self, at: int, count: int) -> None:
         """``count`` rows inserted at ``at``: the takes at or below it move down."""
         for _, take in self._takes():
             if take[0] >= at:
                 take[0] += count
+        for key, row in self.undone_rows.items():
+            if row >= at:
+                self.undone_rows[key] = row + count
 
     def removed(self, at: int, count: int) -> Detached:
         """Rows ``at`` … ``at + count - 1`` deleted: their takes detached (returned, for
@@ -92,6 +107,9 @@ class TakeRows:
                 take[0] = deleted_row(take[0])
             elif take[0] >= at + count:
                 take[0] -= count
+        self.undone_rows = {key: row - count if row >= at + count else row
+                            for key, row in self.undone_rows.items()
+                            if not at <= row < at + count}
         return detached
 
     def replaced(self) -> Detached:
@@ -102,6 +120,7 @@ class TakeRows:
             if take[0] >= 0:
                 detached.append((key, take[0]))
                 take[0] = deleted_row(take[0])
+        self.undone_rows.clear()
         return detached
 
     def detach(self, detached: Detached) -> None:
@@ -110,15 +129,23 @@ class TakeRows:
         for key, take in self._takes():
             if key in rows and take[0] == rows[key]:
                 take[0] = deleted_row(take[0])
+        self.undone_rows.clear()
 
     def undone(self, taken: Detached) -> None:
         """These takes undone (``(key, row)``: each take's key and the row it went into):
-        they no longer claim a row (the undo of the take's own cells, review 62 F4)."""
+        they no longer claim a row (the undo of the take's own cells, review 62 F4); the
+        row is remembered (:attr:`undone_rows`)."""
+        before = {key: take[0] for key, take in self._takes()}
         self._move(taken, lambda row: row, UNDONE)
+        for key, row in taken:
+            if before.get(key) == row:
+                self.undone_rows[key] = row
 
     def redone(self, taken: Detached) -> None:
         """These undone takes back in their rows (the redo of what :meth:`undone` undid)."""
         self._move(taken, lambda row: UNDONE, None)
+        for key, _ in taken:
+            self.undone_rows.pop(key, None)
 
     def taken(self, taken: Detached, columns: dict[tuple, frozenset[str]] | None = None) -> None:
         """These takes in their rows (made, or redone; ``(key, row)`` each, the take at -1
@@ -129,20 +156,25 @@ class TakeRows:
         values) — when it wrote no column the newer did not: a reading written into a cell
         chosen at the time (:data:`CHOSEN_CELL`, a readout's "the current cell") may be in
         another column of the row, and stays checked. The same frames taken twice are one
-        reading, never superseded by themselves."""
+        reading, never superseded by themselves. A take undone whose row
+        (:attr:`undone_rows`) is one of those rows is superseded the same way."""
         self.columns.update(columns or {})
         self.redone(taken)
         # the newer take of each instrument in each row
         rows = {(row, key[0]): key for key, row in taken}
         newer = {key for key, _ in taken}
         for key, take in self._takes():
-            by = rows.get((take[0], key[0]))
+            undone = take[0] == UNDONE and len(take) <= 3 and key in self.undone_rows
+            by = rows.get((self.undone_rows[key] if undone else take[0], key[0]))
             if by is None or key in newer:
                 continue
             mine, theirs = self.columns.get(by), self.columns.get(key)
             if theirs is None and key[0] in CHOSEN_CELL or \
                     theirs is not None and mine is not None and not theirs <= mine:
                 continue
+            if undone:
+                self._superseded_undone.add(key)
+                del self.undone_rows[key]
             take[0] = REPLACED
             cast(list, take)[3:] = [list(by)]  # the newer take's key beside it
 
@@ -151,10 +183,15 @@ class TakeRows:
         in their rows."""
         self.undone(taken)
         rows = {tuple(key): row for key, row in taken}
-        for _, take in self._takes():
+        for key, take in self._takes():
             by = superseded_by(take)
             if by is not None and by in rows:
-                take[0] = rows[by]
+                if key in self._superseded_undone:  # undone before: undone again, of the row
+                    self._superseded_undone.discard(key)
+                    take[0] = UNDONE
+                    self.undone_rows[key] = rows[by]
+                else:
+                    take[0] = rows[by]
                 del take[3:]
 
     def undo_replacement(self) -> Detached:
@@ -167,6 +204,7 @@ class TakeRows:
             if take[0] >= 0:
                 taken.append((key, take[0]))
                 take[0] = UNDONE
+        self.undone_rows.clear()  # rows of the replacement, gone with it
         return taken
 
     def _move(self, taken: Detached, was: Callable[[int], int], to: int | None) -> None:

@@ -100,8 +100,8 @@ def _blank(value: object) -> bool:
 
 
 def without_waiting_rows(parsed: ParsedReadings, reading_keys: tuple[str, ...],
-                         blank_reading: Callable[[int], bool] | None = None
-                         ) -> tuple[ParsedReadings, int]:
+                         blank_reading: Callable[[int], bool] | None = None,
+                         planned: int | None = None) -> tuple[ParsedReadings, int]:
     """The readings less the rows at the end that wait for their reading: their plan's or
     nominal step's cells filled (target, face, set), every cell of ``reading_keys`` blank.
     Such a row is a point not yet taken, not a bad row. (readings, rows left out).
@@ -109,28 +109,38 @@ def without_waiting_rows(parsed: ParsedReadings, reading_keys: tuple[str, ...],
     ``blank_reading(row)``: whether the row's cells of ``reading_keys`` are all blank (its
     text); with it, a blank cell of a waiting row that is no reading's (the polygon's
     deviation, filled at the take) does not make it a bad row either (#62 review F8). A
-    cell typed that cannot be read always does."""
+    cell typed that cannot be read always does.
+
+    ``planned``: the row the entry plan sends the next reading to, wherever it is — a row in
+    the middle whose reading was cleared (a take thrown away) waits for it as the rows at
+    the end do, and is left out on the same terms (it was counted a bad row)."""
     if not reading_keys or (parsed.n == 0 and not parsed.errors):
         return parsed, 0
     in_parsed = {int(r): i for i, r in enumerate(parsed.row_index.tolist())}
     errors_of: dict[int, list] = {}
     for e in parsed.errors:
         errors_of.setdefault(e.row, []).append(e)
-    waiting: set[int] = set()
-    for row in sorted(set(in_parsed) | set(errors_of), reverse=True):
+
+    def waits(row: int) -> bool:
         errors = errors_of.get(row, [])
         if any(e.text.strip() for e in errors):
-            break  # a cell of its own is wrong: told as before
+            return False  # a cell of its own is wrong: told as before
         if blank_reading is not None:
             if not blank_reading(row):
-                break  # it has a reading
+                return False  # it has a reading
         elif any(e.column_key not in reading_keys for e in errors):
-            break  # a cell of its own is wrong: told as before
+            return False  # a cell of its own is wrong: told as before
         i = in_parsed.get(row)
-        if i is not None and not all(_blank(parsed.values[k][i]) for k in reading_keys
-                                     if k in parsed.values):
-            break  # it has a reading
+        return i is None or all(_blank(parsed.values[k][i]) for k in reading_keys
+                                if k in parsed.values)  # else it has a reading
+
+    waiting: set[int] = set()
+    for row in sorted(set(in_parsed) | set(errors_of), reverse=True):
+        if not waits(row):
+            break
         waiting.add(row)
+    if planned is not None and (planned in in_parsed or planned in errors_of) and waits(planned):
+        waiting.add(planned)
     if not waiting:
         return parsed, 0
     keep = np.array([int(r) not in waiting for r in parsed.row_index], dtype=bool)

@@ -224,14 +224,18 @@ def test_a_captured_azimuth_typed_a_whole_turn_away_is_marked_and_said(window, q
 
 class _Model:
     """Which row holds which take, kept apart from the code: each state the rows (the takes
-    that claim each, oldest first, and its x and y), the takes whose rows were deleted and
-    the takes superseded by a newer one into their row, as (older, newer) (review 62 F1);
-    undo and redo step through the states, as the undo stack does through the commands."""
+    that claim each, oldest first, and its x and y), the takes whose rows were deleted, the
+    takes superseded by a newer one into their row, as (older, newer) (review 62 F1), and
+    the step that made it; undo and redo step through the states, as the undo stack does
+    through the commands. Beside the states, the row each undone take was in (``ghosts``),
+    moved by every step, its undo and redo, as rows move: a take into that row supersedes
+    the undone take as it does a cleared one (both said "captured again")."""
 
     def __init__(self, rows: int) -> None:
-        self.states = [([((), "", "") for _ in range(rows)], (), ())]
+        self.states = [([((), "", "") for _ in range(rows)], (), (), ())]
         self.at = 0
         self.values: list[tuple[str, str]] = []  # per take (in the order taken): its x, y
+        self.ghosts: dict[int, int] = {}  # an undone take: the row it was in, moved since
 
     @property
     def rows(self):
@@ -245,23 +249,60 @@ class _Model:
     def superseded(self):
         return self.states[self.at][2]
 
-    def push(self, rows, deleted=None, superseded=None) -> None:
+    def push(self, rows, deleted=None, superseded=None, step=()) -> None:
         del self.states[self.at + 1:]
         self.states.append((rows, self.deleted if deleted is None else deleted,
-                            self.superseded if superseded is None else superseded))
+                            self.superseded if superseded is None else superseded, step))
         self.at += 1
+        self._ghosts_forward(step)
+
+    def _ghosts_forward(self, step) -> None:
+        """The undone takes' rows after ``step`` (made or redone)."""
+        if not step:
+            return
+        if step[0] == "insert":
+            at, count = step[1:]
+            self.ghosts = {t: g + count if g >= at else g for t, g in self.ghosts.items()}
+        elif step[0] == "delete":
+            gone = step[1]
+            self.ghosts = {t: g - sum(r < g for r in gone) for t, g in self.ghosts.items()
+                           if g not in gone}
+        elif step[0] == "replace":
+            self.ghosts = {}
+        elif step[0] == "take":
+            for old in step[3]:
+                del self.ghosts[old]
+
+    def _ghosts_back(self, step) -> None:
+        """The undone takes' rows after the undo of ``step``."""
+        if not step:
+            return
+        if step[0] == "insert":
+            at, count = step[1:]
+            self.ghosts = {t: g - count if g >= at + count else g
+                           for t, g in self.ghosts.items() if not at <= g < at + count}
+        elif step[0] == "delete":
+            for r in sorted(step[1]):
+                self.ghosts = {t: g + 1 if g >= r else g for t, g in self.ghosts.items()}
+        elif step[0] == "replace":
+            self.ghosts = {}
+        elif step[0] == "take":
+            row, new, olds = step[1:]
+            self.ghosts.update({t: row for t in (new, *olds)})
 
     def insert(self, at: int, count: int) -> None:
-        self.push(self.rows[:at] + [((), "", "")] * count + self.rows[at:])
+        self.push(self.rows[:at] + [((), "", "")] * count + self.rows[at:],
+                  step=("insert", at, count))
 
     def delete(self, gone: list[int]) -> None:
         claims = tuple(t for r in gone for t in self.rows[r][0])
         self.push([row for r, row in enumerate(self.rows) if r not in gone],
-                  tuple(sorted(self.deleted + claims)))
+                  tuple(sorted(self.deleted + claims)), step=("delete", tuple(gone)))
 
     def replace(self, count: int) -> None:
         claims = tuple(t for row in self.rows for t in row[0])
-        self.push([((), "", "")] * count, tuple(sorted(self.deleted + claims)))
+        self.push([((), "", "")] * count, tuple(sorted(self.deleted + claims)),
+                  step=("replace",))
 
     def type(self, row: int, x: str, y: str) -> None:
         rows = list(self.rows)
@@ -274,20 +315,26 @@ class _Model:
         self.push(rows)
 
     def take(self, row: int, x: str, y: str) -> None:
-        """A take into ``row``: it supersedes the takes that claimed it (cleared since)."""
+        """A take into ``row``: it supersedes the takes that claimed it (cleared since) and
+        the takes undone of it."""
         rows = list(self.rows) + ([((), "", "")] if row == len(self.rows) else [])
         assert rows[row][1:] == ("", ""), "a take goes to a row whose reading is blank"
         new = len(self.values)
-        superseded = self.superseded + tuple((old, new) for old in rows[row][0])
+        ghosts = tuple(sorted(t for t, g in self.ghosts.items() if g == row))
+        superseded = self.superseded + tuple((old, new) for old in rows[row][0] + ghosts)
         rows[row] = ((new,), x, y)
         self.values.append((x, y))
-        self.push(rows, superseded=superseded)
+        self.push(rows, superseded=superseded, step=("take", row, new, ghosts))
 
     def undo(self) -> None:
-        self.at = max(0, self.at - 1)
+        if self.at > 0:
+            self._ghosts_back(self.states[self.at][3])
+            self.at -= 1
 
     def redo(self) -> None:
-        self.at = min(len(self.states) - 1, self.at + 1)
+        if self.at < len(self.states) - 1:
+            self.at += 1
+            self._ghosts_forward(self.states[self.at][3])
 
     def take_rows(self) -> list[str]:
         """Per take: its row, 'deleted', 'superseded by N' or 'undone' (in no state before
@@ -348,7 +395,7 @@ def test_random_rows_takes_undo_and_redo_keep_each_take_in_the_cell_that_holds_i
         _type(bench, row, Y, f"{600 + row}.5")
     bench.undo_stack.clear()
     ideal = _Model(0)
-    ideal.states = [([((), f"{500 + r}.5", f"{600 + r}.5") for r in range(4)], (), ())]
+    ideal.states = [([((), f"{500 + r}.5", f"{600 + r}.5") for r in range(4)], (), (), ())]
     log: list[str] = []
     undone = edits = retaken = 0  # steps with a take undone, a reading edited, a row retaken
     with AutocollimatorSimulator("pty", positions=[(3.25, -1.5)], sigma=2.0) as sim:

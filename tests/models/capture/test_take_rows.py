@@ -209,3 +209,32 @@ def test_a_readout_take_supersedes_an_older_one_only_over_its_own_column():
     readout["takes"].append([-1, 2, 2])
     takes.taken([(third, 0)], {third: frozenset({"encoder_deg"})})
     assert readout["takes"] == [[0, 0, 0], [-1, 1, 1, list(third)], [0, 2, 2]]
+
+
+def test_an_undone_take_is_superseded_by_a_take_into_its_row_as_a_cleared_one_is():
+    """The row an undone take was in moves with the rows (not with its stored -1); a take of
+    its instrument into that row supersedes it and is said "captured again", as for a take
+    whose cells were cleared; the undo of that take undoes the older one again."""
+    session = _session([[-1, 0, 0], [-1, 1, 1], [-1, 2, 2]])
+    takes = TakeRows(lambda: session_takes([session]))
+    key = [k for k, _ in session_takes([session])]
+    takes.taken([(key[0], 1)])
+    takes.undone([(key[0], 1)])  # Edit › Undo of the take into row 2
+    assert takes.undone_rows == {key[0]: 1}
+    takes.inserted(0, 1)  # a row above: row 3 now
+    assert takes.undone_rows == {key[0]: 2} and session["takes"][0][:1] == [-1]
+    takes.taken([(key[1], 3)])  # into another row: a first take
+    assert [t[0] for t in session["takes"]] == [-1, 3, -1] and len(session["takes"][0]) == 3
+    takes.taken([(key[2], 2)])  # into its row: the undone take superseded
+    assert session["takes"][0] == [-1, 0, 0, list(key[2])] and takes.undone_rows == {}
+    rows = [["0", "0", "0", "1", "1"], ROWS[0], ROWS[3], ROWS[2]]
+    assert _said(rows, [session]) == ["reading of row 3 captured again, superseding an "
+                                      "earlier take (both kept in the instrument output)"]
+    takes.untaken([(key[2], 2)])  # the undo of the newer take: both undone, of row 3
+    assert [t[0] for t in session["takes"]] == [-1, 3, -1] and len(session["takes"][0]) == 3
+    assert takes.undone_rows == {key[0]: 2, key[2]: 2}
+    takes.removed(2, 1)  # their row deleted: of no row any more
+    assert takes.undone_rows == {}
+    takes.inserted(2, 1)  # a new row in its place: another row
+    takes.taken([(key[2], 2)])
+    assert [t[0] for t in session["takes"]] == [-1, 3, 2] and len(session["takes"][0]) == 3
