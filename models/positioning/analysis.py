@@ -628,6 +628,11 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
 
     plan_reading_keys = ("deviation", "measured")
 
+    def reading_positions(self, settings):
+        # the measured position is the target's, in the target unit
+        unit = "mm" if settings.get("target_unit", "deg") == "mm" else "deg"
+        return {"measured": ("target", unit)}
+
     def entry_plan(self, settings):
         runs = int(settings.get("plan_runs", 0) or 0)
         if not runs:
