@@ -33,7 +33,9 @@ it (by default the workbench's encoder, reference or θ column: ``READOUT_COLUMN
 the current cell's). A connected instrument whose reading a take cannot place (no column of
 its own) is said in the panel, never dropped without a word; a reading far from the one the
 plan expects (more than half the pitch between faces; positioning: nearer another target
-of the plan than its row's, models/capture/wrong_target.py) is warned of and kept.
+of the plan than its row's, models/capture/wrong_target.py) is warned of and kept. A
+position in degrees (positioning's measured) is written in the turn of its row's target
+(models/capture/take_cells.py in_turn_of).
 
 *Auto-take* feeds every reading of the first instrument to a stability gate
 (models/capture/stability.py): when the output has stayed within the window for the
@@ -102,6 +104,7 @@ from models.capture.take_cells import (
     column_is_dms,
     elevation_from_zenith_deg,
     fixed_text,
+    in_turn_of,
     next_empty_point,
 )
 from models.capture.take_rows import UNDONE, session_takes, take_key
@@ -1461,6 +1464,9 @@ class CapturePanel(QDockWidget):
                  if link.slot in taking and link.slot not in placed]
         place = self._placement(presenter)
         row = self.target_row(presenter, place)
+        # a position in degrees in its target's turn (positioning's measured: a readout's
+        # 359.5 at target 0° is −0.5); the raw trace keeps it as sent
+        taking = self._in_target_turn(presenter, row, place, targets, taking)
         changes = []
         steps: dict[int, float] = {}
         for link, i, key in targets:
@@ -1601,6 +1607,25 @@ class CapturePanel(QDockWidget):
         except (ValueError, TypeError, OverflowError):
             return None
         return value if math.isfinite(value) else None
+
+    def _in_target_turn(self, presenter, row: int, place, targets, taking):
+        """``taking`` with each reading in degrees (or with no unit, into a column in degrees)
+        that goes to a column of positions (``Workbench.reading_positions``) in the turn of its
+        row's target (models/capture/take_cells.py in_turn_of)."""
+        positions = presenter.kind.reading_positions(presenter.settings)
+        out = dict(taking)
+        for link, i, key in targets:
+            got, unit, frames = out[link.slot]
+            position = positions.get(key)
+            if position is None or position[1] != "deg" or unit not in ("deg", "") \
+                    or i >= len(got):
+                continue
+            near = self._row_angle(presenter, row, place, position[0])
+            if near is not None:
+                values = list(got)
+                values[i] = in_turn_of(float(values[i]), near)
+                out[link.slot] = (tuple(values), unit, frames)
+        return out
 
     def _off_the_target(self, presenter, row: int, place, targets, taking) -> list[str]:
         """A warning per reading of a position (``Workbench.reading_positions``: positioning's
