@@ -22,6 +22,7 @@ from models.certificate.metadata import CertificateMetadata
 from models.project.atomic_write import write_bytes_atomic
 from models.project.file import READINGS_SOURCE, Project, WorkbenchState, project_to_json
 from models.project.output_guard import check_output, register_files
+from models.readings.angles import parse_angle_deg
 from models.register.store import CertificateRecord, IssueRequest, Register
 
 __all__ = ["IssuedNotWritten", "draft_reasons", "issue_certificate",
@@ -165,8 +166,22 @@ def readings_edited_after_capture(kind, settings: Mapping[str, Any], rows, sessi
 
     if cache is not None and elevation:  # the frames' readings as elevations kept apart
         cache = cache.setdefault("elevation", {})
+    # a take writes a position in degrees in its target's turn (app/capture/panel.py)
+    turns = [keys.index(near) for near, unit in kind.reading_positions(settings).values()
+             if unit == "deg" and near in keys]
+
+    def turn_of_row(cells) -> float | None:
+        for column in turns:
+            text = cells[column] if column < len(cells) else ""
+            try:
+                return float(parse_angle_deg(text))
+            except (ValueError, TypeError, OverflowError):
+                continue
+        return None
+
     # a session recorded on another workbench is said, not checked (review 61 F7)
-    return edited_after_capture(sessions or [], rows, columns, values, cache, kind.key)
+    return edited_after_capture(sessions or [], rows, columns, values, cache, kind.key,
+                                turn_of_row if turns else None)
 
 
 def sign_if_configured(xml: bytes, key_file: str = "", cert_file: str = "") -> bytes:

@@ -115,6 +115,15 @@ class Workbench(ABC, Generic[ResultT]):
         be made."""
         return None
 
+    def reading_positions(self, settings: Mapping[str, Any]) -> Mapping[str, tuple[str, str]]:
+        """{reading column: (the column of its row holding the position the plan expects the
+        reading at, the unit of both: "deg" or "mm")} — positioning's measured position and
+        its target. A take's reading there nearer another of the plan's targets is warned of
+        (models/capture/wrong_target.py), and one in degrees is written in its target's
+        turn (models/capture/take_cells.py ``in_turn_of``). Empty by default: every reading
+        as sent, none checked against a target."""
+        return {}
+
     def split_incomplete(self, parsed: ParsedReadings, settings: Mapping[str, Any]
                          ) -> tuple[ParsedReadings, IncompleteUnit | None]:
         """The readings of the complete units, and the last unit when it is in progress

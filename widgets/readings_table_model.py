@@ -255,10 +255,12 @@ class ReadingsTableModel(QAbstractTableModel):
             rows=len(rows))))
 
     def replace_all(self, rows: list[list[str]], label: str = "",
-                    checked: bool = False) -> None:
-        """Replace every row (one undo step); ``checked``: rows already fit the columns."""
+                    checked: bool = False, replaces: str = "") -> None:
+        """Replace every row (one undo step); ``checked``: rows already fit the columns;
+        ``replaces``: the instrument whose earlier takes the rows replace, in the same step
+        (the fringe's live take: widgets/table_commands.py ReplaceAllCommand)."""
         self.undo_stack.push(ReplaceAllCommand(self, rows, label or tr("Replace readings"),
-                                               checked))
+                                               checked, replaces))
 
     # -- raw operations used by the commands ------------------------------
     def apply_cells(self, changes: list[tuple[int, int, str]]) -> None:

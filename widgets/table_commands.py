@@ -97,11 +97,20 @@ class RemoveRowsCommand(QUndoCommand):
 
 
 class ReplaceAllCommand(QUndoCommand):
-    """Replace every row (import of a file, loading a sample)."""
+    """Replace every row (import of a file, loading a sample, the fringe's live take).
 
-    def __init__(self, model, rows: list[list[str]], label: str, checked: bool = False) -> None:
+    ``replaces``: the instrument whose earlier takes the new rows replace (the fringe's live
+    signals, ``"signals"``): they are marked replaced (row -1) by this command, so its undo
+    gives them back their rows and its redo replaces them again (a retake marked them
+    outside any command: its undo left the earlier take's readings unclaimed)."""
+
+    def __init__(self, model, rows: list[list[str]], label: str, checked: bool = False,
+                 replaces: str = "") -> None:
         super().__init__(label)
         self._model, self._new, self._checked = model, rows, checked
+        self._replaces = replaces
+        #: the earlier takes of ``replaces`` this replacement replaced, at their rows then
+        self._replaced: list = []
         self._old: list[list[str]] = []
         #: the takes whose rows the replacement took away (None: not yet replaced); a redo
         #: detaches these again, not the takes made since (the fringe's live take adds its
@@ -115,8 +124,11 @@ class ReplaceAllCommand(QUndoCommand):
     def redo(self) -> None:
         def move(takes) -> None:
             if self._detached is None:
+                if self._replaces:
+                    self._replaced = takes.replaced_by_later_take(self._replaces)
                 self._detached = takes.replaced()
             else:
+                takes.undone(self._replaced)
                 takes.detach(self._detached)
                 takes.redone(self._made)
 
@@ -131,6 +143,7 @@ class ReplaceAllCommand(QUndoCommand):
         def move(takes) -> None:
             self._made = takes.undo_replacement()
             takes.reattach(self._detached or [])
+            takes.unreplaced(self._replaced)
 
         self._model.apply_replace(self._old, checked=True, takes=move)
 

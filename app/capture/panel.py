@@ -32,7 +32,10 @@ vertical column from a theodolite; a readout's single value goes to the column c
 it (by default the workbench's encoder, reference or θ column: ``READOUT_COLUMNS``; or
 the current cell's). A connected instrument whose reading a take cannot place (no column of
 its own) is said in the panel, never dropped without a word; a reading far from the one the
-plan expects (more than half the pitch between faces) is warned of and kept.
+plan expects (more than half the pitch between faces; positioning: nearer another target
+of the plan than its row's, models/capture/wrong_target.py) is warned of and kept. A
+position in degrees (positioning's measured) is written in the turn of its row's target
+(models/capture/take_cells.py in_turn_of).
 
 *Auto-take* feeds every reading of the first instrument to a stability gate
 (models/capture/stability.py): when the output has stayed within the window for the
@@ -101,9 +104,12 @@ from models.capture.take_cells import (
     column_is_dms,
     elevation_from_zenith_deg,
     fixed_text,
+    in_turn_of,
     next_empty_point,
 )
 from models.capture.take_rows import UNDONE, session_takes, take_key
+from models.capture.wrong_target import off_target
+from models.readings.angles import parse_angle_deg
 from models.workbench import GuidesAcquisition
 from widgets.i18n import declared, live, on_language_change, tr, translated
 from widgets.settings_form import ignore_unfocused_wheel
@@ -1458,6 +1464,9 @@ class CapturePanel(QDockWidget):
                  if link.slot in taking and link.slot not in placed]
         place = self._placement(presenter)
         row = self.target_row(presenter, place)
+        # a position in degrees in its target's turn (positioning's measured: a readout's
+        # 359.5 at target 0° is −0.5); the raw trace keeps it as sent
+        taking = self._in_target_turn(presenter, row, place, targets, taking)
         changes = []
         steps: dict[int, float] = {}
         for link, i, key in targets:
@@ -1471,6 +1480,7 @@ class CapturePanel(QDockWidget):
             steps[link.slot] = max(steps.get(link.slot, 0.0), step)
         self.update_guide()
         notes += self._off_the_plan(sheet, row, targets, taking)
+        notes += self._off_the_target(presenter, row, place, targets, taking)
         filled = {c for _, c, _ in changes}
         if place is not None and place.row == row:  # the plan's cells, where blank
             for key, text in place.cells.items():
@@ -1581,6 +1591,75 @@ class CapturePanel(QDockWidget):
                 face=step.fill.get("position", "?"),
                 value=f"{float(got[i]) % 360.0:.4f}", off=f"{off:+.1f}",
                 expected=degrees_text(expected), pitch=degrees_text(step.pitch_deg)))
+        return out
+
+    @staticmethod
+    def _row_angle(presenter, row: int, place, key: str) -> float | None:
+        """The number in column ``key`` of ``row`` once the take has filled it: its text, or
+        the plan's cell for it where it is blank (None: neither is a number)."""
+        sheet = presenter.table_model.sheet
+        keys = [c.key for c in sheet.columns]
+        text = sheet.text(row, keys.index(key)) if key in keys and row < sheet.row_count else ""
+        if not text.strip() and place is not None and place.row == row:
+            text = str(place.cells.get(key, ""))
+        try:
+            value = float(parse_angle_deg(text))
+        except (ValueError, TypeError, OverflowError):
+            return None
+        return value if math.isfinite(value) else None
+
+    def _in_target_turn(self, presenter, row: int, place, targets, taking):
+        """``taking`` with each reading in degrees (or with no unit, into a column in degrees)
+        that goes to a column of positions (``Workbench.reading_positions``) in the turn of its
+        row's target (models/capture/take_cells.py in_turn_of)."""
+        positions = presenter.kind.reading_positions(presenter.settings)
+        out = dict(taking)
+        for link, i, key in targets:
+            got, unit, frames = out[link.slot]
+            position = positions.get(key)
+            if position is None or position[1] != "deg" or unit not in ("deg", "") \
+                    or i >= len(got):
+                continue
+            near = self._row_angle(presenter, row, place, position[0])
+            if near is not None:
+                values = list(got)
+                values[i] = in_turn_of(float(values[i]), near)
+                out[link.slot] = (tuple(values), unit, frames)
+        return out
+
+    def _off_the_target(self, presenter, row: int, place, targets, taking) -> list[str]:
+        """A warning per reading of a position (``Workbench.reading_positions``: positioning's
+        measured) nearer another target of the plan than its row's: more than half the
+        distance to the neighbouring target from it (models/capture/wrong_target.py) — the
+        axis at another target. The reading is kept."""
+        positions = presenter.kind.reading_positions(presenter.settings)
+        if not positions:
+            return []
+        plan = getattr(presenter, "entry_plan", lambda: None)()
+        planned = plan.spec.get("targets") if plan is not None else None
+        if not planned:
+            return []
+        sheet = presenter.table_model.sheet
+        keys = [c.key for c in sheet.columns]
+        out = []
+        for link, i, key in targets:
+            position = positions.get(key)
+            got, unit, _ = taking[link.slot]
+            if position is None or unit not in (position[1], "") or i >= len(got):
+                continue
+            target = self._row_angle(presenter, row, place, position[0])
+            off = None if target is None else off_target(float(got[i]), target, planned)
+            if off is None:
+                continue
+            symbol = "°" if position[1] == "deg" else f" {position[1]}"
+            out.append(tr("Row {row}: {column} {value}{unit} is {off}{unit} from target "
+                          "{target}{unit}, the plan's for this row (more than half the "
+                          "{gap}{unit} to the neighbouring target {neighbour}{unit}): check the "
+                          "axis's position. The reading is kept; undo the take if it is "
+                          "wrong").format(
+                row=row + 1, column=declared(sheet.columns[keys.index(key)].header),
+                value=f"{off.reading:.4f}", off=f"{off.off:+.4f}", unit=symbol,
+                target=f"{off.target:g}", gap=f"{off.gap:g}", neighbour=f"{off.neighbour:g}"))
         return out
 
     @staticmethod

@@ -30,6 +30,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from models.capture.take_cells import in_turn_of
 from models.capture.take_rows import deleted_at, superseded_by
 from models.messages import QT_TR_NOOP, Message, message
 from models.readings.angles import parse_angle_deg
@@ -185,7 +186,9 @@ def _steps(session: dict[str, Any]) -> list[float]:
 def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequence[str]],
                          columns_of: Callable[[str], Sequence[tuple[str, int | None]]],
                          values_of: Callable[[str, bytes], tuple[float, ...] | None],
-                         cache: dict | None = None, workbench: str = "") -> list[EditedReading]:
+                         cache: dict | None = None, workbench: str = "",
+                         turn_of_row: Callable[[Sequence[str]], float | None] | None = None
+                         ) -> list[EditedReading]:
     """Every cell of a taken reading that differs now from the reading its frames give;
     then every captured reading whose row was deleted, every take none of whose frames
     reads, and (``workbench`` given) every session recorded on another workbench.
@@ -195,7 +198,10 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
     readout's; such a reading is edited when no cell of its row holds it any more; -1: the
     sheet has no column for it).
     ``values_of(instrument, line)``: the values a frame reads (None if none). ``cache``: a
-    dict kept between calls, the frames' readings by session and take (they never change)."""
+    dict kept between calls, the frames' readings by session and take (they never change).
+    ``turn_of_row(cells)``: the angle (degrees) a take wrote a row's reading in the turn of
+    (models/capture/take_cells.py in_turn_of: positioning's target on a rotary axis; None:
+    as sent): the reading in that turn is the reading as captured too."""
     edited: dict[tuple[int, str], EditedReading] = {}
     # the takes superseded by a newer one into their rows: by the newer's key (take_rows.py);
     # in a file from before, a take of an instrument claiming a row a later take of it claims
@@ -262,8 +268,11 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                 edited[(row, key or "?")] = EditedReading(row, key, "", "", "unverifiable")
                 continue
             cells = list(rows[row]) if row < len(rows) else []
+            near = turn_of_row(cells) if turn_of_row is not None else None
             for (key, column), value in zip(targets, values, strict=False):
                 forms = _forms(value, angles, key)
+                if near is not None and in_turn_of(value, near) != value:
+                    forms += (in_turn_of(value, near),)  # written in its target's turn
                 if column is not None and column < 0:  # no column for it in this sheet
                     continue
                 if column is None:

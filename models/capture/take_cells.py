@@ -14,6 +14,12 @@
   in arcseconds for a column in arcseconds. The raw trace and ``capture --out`` keep the
   instrument's full precision; only the cell is rounded.
 * **Elevation from a zenith angle** (:func:`elevation_from_zenith_deg`).
+* **A reading in its target's turn** (:func:`in_turn_of`): a readout showing one turn sends
+  the same position as −0.5 (a ±180° display) or 359.5 (a 0…360° display); into a
+  column whose readings are positions in the turn of their row's target (positioning's
+  *measured* on a rotary axis: ``Workbench.reading_positions``) the take writes it in the turn
+  nearest that target — a reading within 180° of it as sent. The raw trace keeps the line
+  as sent (the form the readout used).
 """
 
 from __future__ import annotations
@@ -26,8 +32,8 @@ from decimal import Decimal
 from models.readings.angles import format_dms
 
 __all__ = ["RESOLUTIONS_ARCSEC", "cell_step", "cell_text", "column_is_dms", "decimals_for",
-           "elevation_from_zenith_deg", "fixed_text", "next_empty_point", "rounded",
-           "waiting_row"]
+           "elevation_from_zenith_deg", "fixed_text", "in_turn_of", "next_empty_point",
+           "rounded", "waiting_row"]
 
 #: one microradian in arcseconds
 MICRORADIAN_ARCSEC = 1e-6 * 180.0 / math.pi * 3600.0
@@ -66,6 +72,19 @@ def waiting_row(row_count: int, column_count: int, reading_columns: Sequence[int
             break
         first = r
     return first
+
+
+def in_turn_of(value: float, near: float) -> float:
+    """An angle in degrees in the turn nearest ``near`` (its row's target): ``value`` itself
+    when within 180° of it — a reading in its target's own turn is never changed — else
+    ``value`` + k·360°. At target 0° a ±180° display's −0.5 stays −0.5 and a 0…360°
+    display's 359.5 becomes −0.5; at 360° 0.0003 becomes 360.0003; at 270° −90.0003
+    becomes 269.9997 (as sent they were 360° from their target, a deviation the analysis
+    refuses). The turns are added to the decimal digits the value has (359.9996 − 360 is
+    −0.0004, not −0.000400000000013). A number not finite is returned as it is."""
+    if not (math.isfinite(value) and math.isfinite(near)) or abs(value - near) <= 180.0:
+        return value
+    return float(Decimal(repr(value)) + 360 * round((near - value) / 360.0))
 
 
 def rounded(value: float, resolution: float) -> float:

@@ -194,6 +194,23 @@ class TakeRows:
                     take[0] = rows[by]
                 del take[3:]
 
+    def replaced_by_later_take(self, instrument: str) -> Detached:
+        """Every take of ``instrument`` not replaced yet (in a row, or at a row deleted) is
+        replaced (row -1): a later take of it replaced the whole record (the fringe's live
+        signals: a retake). Returned, ``(key, stored row)`` each, for the undo
+        (:meth:`unreplaced`) and the redo (:meth:`undone`)."""
+        replaced: Detached = []
+        for key, take in self._takes():
+            if key[0] == instrument and take[0] != REPLACED:
+                replaced.append((key, take[0]))
+                take[0] = REPLACED
+        return replaced
+
+    def unreplaced(self, replaced: Detached) -> None:
+        """The undo of :meth:`replaced_by_later_take`: these takes back at the rows they stood
+        at (a deleted row's as deleted)."""
+        self._move(replaced, lambda row: REPLACED, None)
+
     def undo_replacement(self) -> Detached:
         """The replacement of the sheet undone: every take that names a row went into the
         replacement (those of the rows replaced were detached by it) and is undone with it

@@ -628,6 +628,13 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
 
     plan_reading_keys = ("deviation", "measured")
 
+    def reading_positions(self, settings):
+        # the measured position is the target's, in the target unit: on a rotary axis in the
+        # target's turn (measured − target is its deviation: a readout's −0.5 or 359.5 at
+        # target 0° is written −0.5)
+        unit = "mm" if settings.get("target_unit", "deg") == "mm" else "deg"
+        return {"measured": ("target", unit)}
+
     def entry_plan(self, settings):
         runs = int(settings.get("plan_runs", 0) or 0)
         if not runs:

@@ -61,7 +61,7 @@ from widgets.fringe.signal_bar import SignalBar
 from widgets.i18n import declared, explained, live, on_language_change, tr, translated
 from widgets.plot_grid import show_grid
 
-__all__ = ["REFRESH_MS", "LiveSignalsPanel"]
+__all__ = ["INSTRUMENT", "REFRESH_MS", "LiveSignalsPanel"]
 
 #: the display's refresh: at most one redraw this often, whatever the stream's rate
 REFRESH_MS = 50
@@ -666,10 +666,10 @@ class LiveSignalsPanel(QWidget):
         session = None
         if self._sessions is not None:
             sessions = self._sessions()
-            for earlier in sessions:  # the rows of an earlier take are replaced now
-                if earlier.get("instrument") == INSTRUMENT:
-                    earlier["takes"] = [[-1, a, b] for _, a, b in earlier["takes"]]
             session = self._session(index)
+        # the readings replaced (one undo step), the earlier takes of the stream marked
+        # replaced in that same step (FringePresenter.take_live_signals): marked here, outside
+        # it, the undo of a retake left the earlier take's readings unclaimed
         self.taken.emit(np.array(u_sin), np.array(u_cos))
         # added once the readings are replaced: the replacement detaches the takes that
         # named the rows it replaced (models/capture/take_rows.py), not this one's

@@ -6,6 +6,7 @@ from __future__ import annotations
 from models.fringe import plots
 from models.fringe.analysis import FRINGE, FringeResult
 from models.fringe.signal_quality import SignalQuality, default_window, signal_quality
+from widgets.fringe.live_signals import INSTRUMENT as LIVE_INSTRUMENT
 from widgets.fringe.view import FringeView
 from widgets.i18n import explained, tr, translated
 from widgets.workbench_presenter import WorkbenchPresenter
@@ -53,8 +54,9 @@ class FringePresenter(WorkbenchPresenter):
         for s, c in zip(u_sin.tolist(), u_cos.tolist(), strict=True):
             values = {"u_sin": f"{s:.12g}", "u_cos": f"{c:.12g}"}
             rows.append([values.get(k, "") for k in keys])
+        # the earlier takes of the stream replaced in the same undo step as their readings
         self.table_model.replace_all(rows, tr("Take live signals ({n} samples)").format(
-            n=len(rows)), checked=True)
+            n=len(rows)), checked=True, replaces=LIVE_INSTRUMENT)
         self._fit_columns()
         self.schedule_refresh()
         self.view.show_status(tr("{n} samples taken from the live signals").format(n=len(rows)))

@@ -80,8 +80,12 @@ def fringe(qtbot):
 
 
 def live(presenter, lab_defaults=None):
+    from models.capture.take_rows import TakeRows, session_takes
+
     panel = presenter.view.live_signals
     sessions: list[dict] = []
+    # the takes follow their rows, as the window has them (app/main_window.py)
+    presenter.table_model.take_rows = TakeRows(lambda: session_takes(sessions))
     panel.attach(lambda *_a: None, sessions=lambda: sessions,
                  lab_defaults=(lambda: lab_defaults) if lab_defaults else None)
     stream = FakeStream()
@@ -225,6 +229,49 @@ def test_undo_of_a_take_undoes_its_claim_on_the_rows_it_replaced(fringe):
     assert [t[0] for t in sessions[1]["takes"]] == list(range(len(second)))
     fringe.table_model.set_cells([(5, 0, "0.123456")])
     assert [(e.row, e.what) for e in said()] == [(5, "edited")]
+
+
+def test_undo_of_a_retake_gives_the_earlier_take_its_rows_back_and_redo_replaces_them(fringe):
+    """A retake marked the earlier take's readings replaced before, and outside, the undo
+    step that replaced them: Undo gave the earlier readings back unclaimed (a cell of them
+    edited since was no longer said edited, the record said no row held them). The marks
+    are now in the retake's own step: Undo gives the earlier take its rows back, Redo
+    replaces them again."""
+    from app.certificate_issue import readings_edited_after_capture
+
+    panel, stream, sessions = live(fringe)
+
+    def said():
+        return [(e.row, e.what) for e in readings_edited_after_capture(
+            fringe.kind, fringe.settings, fringe.sheet.rows, sessions)]
+
+    panel.periods.setValue(4)
+    stream.send(signal_lines(a=0.45, periods=6, per_period=200))
+    panel.tick()
+    panel.take_button.click()
+    fringe.table_model.set_cells([(5, 0, "0.123456")])  # a reading of the first take edited
+    before_rows = [list(r) for r in fringe.sheet.rows]
+    before_takes = [list(t) for t in sessions[0]["takes"]]
+    assert [t[0] for t in before_takes] == list(range(len(before_rows)))
+    assert said() == [(5, "edited")]
+    stream.send(signal_lines(a=0.40, periods=6, per_period=200, theta0=1.0))
+    panel.tick()
+    panel.take_button.click()  # the retake
+    second_rows = [list(r) for r in fringe.sheet.rows]
+    assert len(sessions) == 2 and {t[0] for t in sessions[0]["takes"]} == {-1}
+    assert said() == []
+    fringe.undo_stack.undo()
+    assert [list(r) for r in fringe.sheet.rows] == before_rows
+    assert sessions[0]["takes"] == before_takes  # was: every take of it still at -1
+    assert {t[0] for t in sessions[1]["takes"]} == {-1}
+    assert said() == [(5, "edited")]  # was: [] (the first take no longer claimed its rows)
+    fringe.undo_stack.redo()
+    assert [list(r) for r in fringe.sheet.rows] == second_rows
+    assert {t[0] for t in sessions[0]["takes"]} == {-1}
+    assert [t[0] for t in sessions[1]["takes"]] == list(range(len(second_rows)))
+    assert said() == []
+    fringe.undo_stack.undo()  # and again: the same state as before the retake
+    assert sessions[0]["takes"] == before_takes and said() == [(5, "edited")]
 
 
 def test_a_take_with_nothing_in_the_window_is_refused_and_said(fringe):
