@@ -148,6 +148,9 @@ class CertificatePresenter:
         self.workbench_settings: Callable[[str], dict] = lambda _key: {}
         #: a workbench's details were changed (the main window redraws its plots: ±T, U)
         self.details_changed: Callable[[str], None] = lambda _key: None
+        #: the lab defaults were saved (the main window redraws every workbench's plots: their
+        #: U bands are drawn with the details the certificate would use, the defaults in)
+        self.lab_defaults_changed: Callable[[], None] = lambda: None
 
     @property
     def pending(self) -> PendingRevision | None:
@@ -208,6 +211,7 @@ class CertificatePresenter:
             if key in stored and key not in defaults:
                 defaults = {**defaults, key: stored[key]}
         self.store.setValue(LAB_DEFAULTS_KEY, json.dumps(defaults, ensure_ascii=False))
+        self.lab_defaults_changed()
 
     def save_lab_defaults_entry(self, key: str, value: Any) -> None:
         """One entry of the lab defaults set, the others kept: a workbench's own (e.g. the

@@ -111,6 +111,8 @@ class MainWindow(QMainWindow):
         # not analysed again (a new analysis would leave the result not yet current and hold
         # back the next export while capturing or on a large sheet)
         self.certificates.details_changed = lambda key: self.presenter(key).schedule_redraw()
+        self.certificates.lab_defaults_changed = lambda: [
+            p.schedule_redraw() for p in self.presenters]  # every workbench's details change
         for presenter in self.presenters:  # a polygon read from its DCC joins the standards
             if hasattr(presenter, "dcc_schema_dir"):  # a DCC read is validated against it
                 presenter.dcc_schema_dir = self._dcc_schema_dir
