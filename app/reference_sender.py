@@ -76,7 +76,8 @@ def send_reference(window: Any) -> bool:
     sent = window.projects.metadata.get(SENT_REFERENCES)
     sent = dict(sent) if isinstance(sent, dict) else {}
     sent[target.kind.key] = {"source": source.kind.key, "kind": str(reference.kind),
-                             "digest": reference.digest()}
+                             "digest": reference.digest(),
+                             "values": {str(k): v for k, v in reference.values.items()}}
     window.projects.metadata[SENT_REFERENCES] = sent  # saved with the project
     target.view.reference_notice.clear()
     target.refresh()
@@ -102,6 +103,19 @@ def _now(window: Any, source: Any) -> tuple[str, str]:
         return "", explained(exc)
 
 
+def _still_held(target: Any, record: dict) -> bool:
+    """Whether ``target``'s reference column still holds the values sent (to 1e-6, as they
+    were written)."""
+    sent = record.get("values")
+    if not isinstance(sent, dict):
+        return True  # (a record without them: the column is taken as the sent one)
+    held = target.held_reference()
+    try:
+        return all(abs(held[int(k)] - float(v)) <= 1e-6 for k, v in sent.items())
+    except (KeyError, TypeError, ValueError):
+        return False
+
+
 def check_sent_references(window: Any) -> None:
     """Each workbench that holds a sent reference says so when its source would not send the
     same now (its readings, settings or certificate details changed since, in this session
@@ -117,9 +131,9 @@ def check_sent_references(window: Any) -> None:
         source = next((p for p in window.presenters if isinstance(record, dict)
                        and p.kind.key == record.get("source")
                        and isinstance(p.kind, SendsReference)), None)
-        if source is None:
-            notice.clear()
-            continue
+        if source is None or not _still_held(target, record):
+            notice.clear()  # nothing sent, or the column holds something else now (undone,
+            continue  # a certificate loaded, typed over): not the sent reference to check
         digest, why = _now(window, source)
         if digest and digest == record.get("digest"):
             notice.clear()
@@ -151,11 +165,11 @@ def _send_again(window: Any, target: Any) -> None:
 
 
 def watch_sent_references(window: Any) -> None:
-    """Check the sent references whenever a workbench that sends one shows a result (a new
-    analysis, its details or the lab defaults changed, a project opened), and connect each
-    receiver's *Send again*."""
+    """Check the sent references whenever a workbench that sends or receives one shows a
+    result (a new analysis, its details or the lab defaults changed, a project opened), and
+    connect each receiver's *Send again*."""
     for presenter in window.presenters:
-        if isinstance(presenter.kind, SendsReference):
+        if isinstance(presenter.kind, SendsReference | AcceptsReference):
             presenter.analysed.connect(lambda: check_sent_references(window))
         if isinstance(presenter.kind, AcceptsReference):
             presenter.view.reference_notice.resend.connect(

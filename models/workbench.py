@@ -467,7 +467,8 @@ class SendsReference(ABC, Generic[ResultT]):
 
 class AcceptsReference(ABC):
     """Reads with a reference another workbench sends (:class:`SendsReference`) of its
-    ``accepted_reference`` kind; its presenter's ``accept_reference`` fills the values."""
+    ``accepted_reference`` kind; its presenter's ``accept_reference`` fills the values, and
+    its ``held_reference`` gives them as they are held now (by position)."""
 
     accepted_reference: ClassVar[str]
     #: the notice its view shows when the reference it holds no longer is what its source

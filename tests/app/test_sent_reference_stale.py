@@ -87,6 +87,23 @@ def test_the_crosscals_details_changed_after_sending_are_said(window, qtbot):
     qtbot.waitUntil(lambda: polygon.view.reference_notice.stale, timeout=5000)
 
 
+def test_a_column_no_longer_the_sent_one_is_not_said_stale(window, qtbot):
+    """The polygon's column typed over after sending (or undone, or a certificate loaded):
+    it is not the sent reference, so a change of the cross-calibration says nothing there."""
+    crosscal, polygon = _sent(window, qtbot)
+    column = polygon.sheet.column_index("polygon_dev_arcsec")
+    window.tabs.setCurrentIndex(window.presenters.index(polygon))
+    _type_cell(qtbot, polygon.view.table, 2, column, "1.25")
+    details = CertificateMetadata.from_dict(json.loads(
+        (SAMPLES / "certificate_crosscal.json").read_text(encoding="utf-8")))
+    window.certificates.store_details("crosscal", details)
+    qtbot.waitUntil(lambda: not crosscal.analysis_pending and not polygon.analysis_pending)
+    qtbot.wait(300)  # the redraw
+    assert not polygon.view.reference_notice.stale
+    polygon.table_model.undo_stack.undo()  # the sent column back: now said
+    qtbot.waitUntil(lambda: polygon.view.reference_notice.stale, timeout=5000)
+
+
 def test_the_digest_is_saved_with_the_project_and_compared_on_opening(window, qtbot,
                                                                        tmp_path):
     crosscal, polygon = _sent(window, qtbot)
