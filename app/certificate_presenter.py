@@ -19,7 +19,7 @@ from typing import Any, Protocol
 
 from app.issued_outputs import refuse_issued_outputs
 from app.writers.results_export import write_results_csv, write_results_xlsx
-from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.certificate.metadata import CertificateMetadata, MetadataError, readable_standards
 from models.certificate.standards_fit import (
     STANDARDS_BY_WORKBENCH,
     standards_fit,
@@ -35,6 +35,9 @@ from widgets.i18n import explained, tr, translated
 __all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
 
 LAB_DEFAULTS_KEY = "certificate/lab_defaults"
+#: the keys of ``problems`` that name a stored standard left out (the others kept): of the
+#: workbench's stored details, of the lab defaults (models.certificate.metadata.readable_standards)
+SKIPPED_STANDARD_KEYS = ("standards[", "lab_defaults.standards[")
 #: the lab defaults' key of the test plans, per workbench ({workbench: {plan_…: value}})
 TEST_PLANS = "test_plans"
 #: the lab's signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY)
@@ -130,6 +133,8 @@ class CertificatePresenter:
         self._metadata = metadata
         self._mark_modified = mark_modified
         self.problems: dict[str, str] = {}  # stored details that no longer read
+        # per workbench, the stored standards left out that the status last said
+        self._skipped_said: dict[str, tuple[str, ...]] = {}
         self.raw: dict = {}
         #: the pending amendment or replacement changed (the window shows it: rev62 F3)
         self.revision_changed: Callable[[], None] = lambda: None
@@ -148,6 +153,9 @@ class CertificatePresenter:
         self.workbench_settings: Callable[[str], dict] = lambda _key: {}
         #: a workbench's details were changed (the main window redraws its plots: ±T, U)
         self.details_changed: Callable[[str], None] = lambda _key: None
+        #: the lab defaults were saved (the main window redraws every workbench's plots: their
+        #: U bands are drawn with the details the certificate would use, the defaults in)
+        self.lab_defaults_changed: Callable[[], None] = lambda: None
 
     @property
     def pending(self) -> PendingRevision | None:
@@ -208,6 +216,7 @@ class CertificatePresenter:
             if key in stored and key not in defaults:
                 defaults = {**defaults, key: stored[key]}
         self.store.setValue(LAB_DEFAULTS_KEY, json.dumps(defaults, ensure_ascii=False))
+        self.lab_defaults_changed()
 
     def save_lab_defaults_entry(self, key: str, value: Any) -> None:
         """One entry of the lab defaults set, the others kept: a workbench's own (e.g. the
@@ -245,10 +254,35 @@ class CertificatePresenter:
         raw = stored if isinstance(stored, dict) else {}
         if "language" not in raw:
             meta = dataclasses.replace(meta, language=self.default_language)
+        merged, skipped = self._with_lab_defaults(meta, key)
+        problems = {**problems, **skipped}
+        self._say_skipped(key, [text for name, text in problems.items()
+                                if name.startswith(SKIPPED_STANDARD_KEYS)])
+        return merged, problems, raw
+
+    def _with_lab_defaults(self, meta: CertificateMetadata, key: str
+                           ) -> tuple[CertificateMetadata, dict[str, str]]:
+        """``meta`` with workbench ``key``'s lab defaults filled in, and the lab defaults'
+        standards that do not read (each by itself, keyed ``lab_defaults.standards[N]``): one
+        bad entry leaves out itself only, where it dropped every lab default unseen."""
+        lab = self.lab_defaults(key)
+        skipped: dict[str, str] = {}
+        if "standards" in lab:
+            lab["standards"], bad = readable_standards(lab["standards"], lab_defaults=True)
+            if not meta.standards:  # only then do the lab defaults' standards fill them in
+                skipped = {f"lab_defaults.{name}": text for name, text in bad.items()}
         try:
-            return meta.with_lab_defaults(self.lab_defaults(key)), problems, raw
+            return meta.with_lab_defaults(lab), skipped
         except MetadataError:
-            return meta, problems, raw
+            return meta, skipped
+
+    def _say_skipped(self, key: str, texts: list[str]) -> None:
+        """The window's status says which stored standards were left out and why, once for
+        each new set (the details are read on every redraw of the plots)."""
+        said = tuple(texts)
+        if said and said != self._skipped_said.get(key):
+            self.view.show_status("; ".join(translated(t) for t in texts), 20000)
+        self._skipped_said[key] = said
 
     def stored_details(self, key: str) -> CertificateMetadata | None:
         """The details stored for workbench ``key``, the lab's defaults filled in, as its
@@ -258,10 +292,7 @@ class CertificatePresenter:
         if not isinstance(stored, dict):
             return None
         meta, _problems = CertificateMetadata.from_dict_lenient(stored)
-        try:
-            return meta.with_lab_defaults(self.lab_defaults(key))
-        except MetadataError:
-            return meta
+        return self._with_lab_defaults(meta, key)[0]
 
     def store_details(self, key: str, meta: CertificateMetadata) -> None:
         metadata = self._metadata()

@@ -33,6 +33,7 @@ from app.certificate_presenter import CertificatePresenter
 from app.main_menus import MainMenus
 from app.project_dialogs import ProjectDialogs
 from app.project_presenter import ProjectPresenter, default_recovery_store
+from app.reference_sender import watch_sent_references
 from app.run_overlay_actions import RunOverlayActions
 from models import __version__
 from models.display_units import ANGLE_UNITS, AngleUnit
@@ -111,6 +112,10 @@ class MainWindow(QMainWindow):
         # not analysed again (a new analysis would leave the result not yet current and hold
         # back the next export while capturing or on a large sheet)
         self.certificates.details_changed = lambda key: self.presenter(key).schedule_redraw()
+        # a reference sent from one workbench to another is said when its source changes
+        watch_sent_references(self)
+        self.certificates.lab_defaults_changed = lambda: [
+            p.schedule_redraw() for p in self.presenters]  # every workbench's details change
         for presenter in self.presenters:  # a polygon read from its DCC joins the standards
             if hasattr(presenter, "dcc_schema_dir"):  # a DCC read is validated against it
                 presenter.dcc_schema_dir = self._dcc_schema_dir

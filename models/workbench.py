@@ -443,6 +443,22 @@ class SentReference:
         """max u = U / k over the positions: one figure for a budget that takes one."""
         return max(self.expanded_uncertainty.values()) / self.coverage_factor
 
+    def digest(self) -> str:
+        """SHA-256 of what is sent (the values, each U, k, the unit and the standard's name,
+        figures to 1e-9): kept with the receiver, it tells whether its source would send the
+        same now (app/reference_sender.py: a sent reference gone stale)."""
+        import hashlib
+        import json
+
+        def figures(values: Mapping[int, float]) -> list[list[Any]]:
+            return [[int(k), round(float(v), 9)] for k, v in sorted(values.items())]
+
+        text = json.dumps([str(self.kind), figures(self.values),
+                           figures(self.expanded_uncertainty),
+                           round(float(self.coverage_factor), 9), self.unit,
+                           str(self.standard_name)], ensure_ascii=False)
+        return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
 
 class SendsReference(ABC, Generic[ResultT]):
     """Its result is a reference standard's values for another workbench (the window's
@@ -460,9 +476,13 @@ class SendsReference(ABC, Generic[ResultT]):
 
 class AcceptsReference(ABC):
     """Reads with a reference another workbench sends (:class:`SendsReference`) of its
-    ``accepted_reference`` kind; its presenter's ``accept_reference`` fills the values."""
+    ``accepted_reference`` kind; its presenter's ``accept_reference`` fills the values, and
+    its ``held_reference`` gives them as they are held now (by position)."""
 
     accepted_reference: ClassVar[str]
+    #: the notice its view shows when the reference it holds no longer is what its source
+    #: would send (widgets/reference_notice.py; app/reference_sender.py)
+    view_needs: ClassVar[tuple[str, ...]] = ("reference_notice",)
 
 
 class ComparesAfterLog(ABC, Generic[ResultT]):

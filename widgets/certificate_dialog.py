@@ -550,9 +550,12 @@ class CertificateDialog(QDialog):
         for key, value in (raw or {}).items():
             if key in self.fields and key in problems and isinstance(value, str | int | float):
                 self.fields[key].setText(str(value))
-        for message in problems.values():
+        for key, message in problems.items():
+            if "standards[" in key:  # a stored standard left out: not in the table to mark
+                continue
             self._mark(message)
-        self.error_label.setText("\n".join(problems.values()))
+        self.error_label.setStyleSheet("color: #b00020;")
+        self.error_label.setText("\n".join(translated(m) for m in problems.values()))
 
     def _mark(self, message: str) -> None:
         self.error_label.setStyleSheet("color: #b00020;")

@@ -17,7 +17,7 @@ import unicodedata
 from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, message, reason_of
 from models.quantity import UNITS, Quantity, UnitError, unit
 from models.uncertainty.budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILITY
 from models.uncertainty.conformity import DECISION_QUANTITIES, DECISION_RULES
@@ -34,6 +34,7 @@ __all__ = [
     "ReferenceStandard",
     "clean_text",
     "format_certificate_number",
+    "readable_standards",
     "revision_statement",
     "separate_statement",
 ]
@@ -246,6 +247,45 @@ class ReferenceStandard:
                    applies_to, unit_key, _date(data.get("due_date"), f"{name}.due_date"), k)
 
 
+#: what a stored standard that does not read is said as (where: the lab defaults' standards
+#: or a workbench's stored details); the entry alone is left out, the others kept
+_SKIPPED_STANDARD = {
+    True: QT_TR_NOOP("reference standard {number} of the lab defaults ({name}) cannot be read "
+                     "and is left out, the others kept: {reason}"),
+    False: QT_TR_NOOP("reference standard {number} of the stored certificate details ({name}) "
+                      "cannot be read and is left out, the others kept: {reason}"),
+}
+
+
+def readable_standards(raw: Any, lab_defaults: bool = False) -> tuple[list[Any], dict[str, Any]]:
+    """The entries of a stored standards list (``raw``: the lab defaults' when
+    ``lab_defaults``, else a workbench's stored details) that read, as stored, and for each
+    that does not a message keyed ``standards[N]`` (N its place in ``raw``) that says which
+    (its number and name) and why: one bad entry (a name too long, a figure out of range, an
+    entry that is no object) leaves out itself only, never the whole list unseen. ``raw``
+    that is not a list: ([], {"standards": why})."""
+    if raw is None:
+        return [], {}
+    if not isinstance(raw, list):
+        return [], {"standards": message(QT_TR_NOOP(
+            "certificate field 'standards' must be a list"))}
+    good: list[Any] = []
+    skipped: dict[str, Any] = {}
+    for index, entry in enumerate(raw):
+        try:
+            ReferenceStandard.from_dict(entry, index)
+        except MetadataError as exc:
+            name = entry.get("description") if isinstance(entry, dict) else None
+            name = (f"“{name[:40]}…”" if len(name) > 40 else f"“{name}”") \
+                if isinstance(name, str) and name.strip() else "—"
+            skipped[f"standards[{index + 1}]"] = message(
+                _SKIPPED_STANDARD[lab_defaults], number=index + 1, name=name,
+                reason=reason_of(exc))
+        else:
+            good.append(entry)
+    return good, skipped
+
+
 #: keys written before their figures had a unit (project schema 1) → the keys now
 _UNITLESS_KEYS = {"tolerance_arcsec": "tolerance", "item_resolution_arcsec": "item_resolution"}
 
@@ -447,6 +487,10 @@ class CertificateMetadata:
         good: dict[str, Any] = {}
         problems: dict[str, str] = {}
         for key, value in data.items():
+            if key == "standards" and isinstance(value, list):  # each entry on its own
+                good[key], skipped = readable_standards(value)
+                problems.update(skipped)
+                continue
             try:
                 cls.from_dict({key: value})
             except MetadataError as exc:

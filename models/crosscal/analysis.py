@@ -416,6 +416,10 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
     else:
         out["polygon_deviation_from_face1_arcsec"] = _list(d - d[0])  # reference "face 1"
         out["polygon_deviation_U_from_face1_arcsec"] = _list(result.polygon_u_from_face1_arcsec())
+        # the encoder's errors referred to step 0 (E_k − E_0, the certificate's "From step 0"
+        # column): their U and k beside them come from uncertainty_budgets (#39's rule)
+        e = s.encoder_error_arcsec
+        out["encoder_error_from_step0_arcsec"] = _list(e - e[0])  # reference "step 0"
         out["encoder_figures_arcsec"] = encoder_figures(result)
     return out
 
@@ -634,6 +638,8 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
                                              metadata)
                        for item, name in zip(("encoder", "polygon"), names, strict=True)}
         budgets["polygon_deviation_from_face1_arcsec"] = result.u_from_first("polygon", metadata)
+        # the certificate's "U from step 0" (models/crosscal/report.py), the comparators in
+        budgets["encoder_error_from_step0_arcsec"] = result.u_from_first("encoder", metadata)
         return budgets
 
     def certified_json(self, result, metadata, settings=None):

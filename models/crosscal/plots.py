@@ -54,14 +54,22 @@ def in_progress_errors(parsed, result) -> tuple[np.ndarray, np.ndarray]:
     return result.step_deg[k], v - v[0] + s.encoder_error_arcsec[k[0]]
 
 
-def encoder_figure(result, parsed=None) -> PlotFigure | None:
-    """The encoder's error with U; with ``parsed`` (the readings given the analysis), the
-    mounting in progress as taken beside it (grey markers: in_progress_errors)."""
+def _band(result, item: int, u) -> np.ndarray:
+    """The ±U band of item ``item`` (0: E, 1: d): ``u`` when given (the certificate's U, its
+    details in: models.crosscal.analysis CrossCal.uncertainty_budgets), else the readings' own
+    (result.expanded_u_arcsec, no certificate details)."""
+    return np.asarray(result.expanded_u_arcsec[item] if u is None else u, dtype=float)
+
+
+def encoder_figure(result, parsed=None, u=None) -> PlotFigure | None:
+    """The encoder's error with U (``u``: the U its certificate states, :func:`_band`); with
+    ``parsed`` (the readings given the analysis), the mounting in progress as taken beside it
+    (grey markers: in_progress_errors)."""
     s = result.solution
     if s.encoder_error_arcsec is None:
         return None
     series = [PlotSeries(QT_TR_NOOP("encoder error ± U"), result.step_deg, s.encoder_error_arcsec,
-                         BLUE, True, band=result.expanded_u_arcsec[0], role="corrected")]
+                         BLUE, True, band=_band(result, 0, u), role="corrected")]
     x, y = in_progress_errors(parsed, result)
     if x.size:
         series.append(PlotSeries(QT_TR_NOOP("mounting in progress (as taken)"), x, y, GREY, True,
@@ -70,7 +78,8 @@ def encoder_figure(result, parsed=None) -> PlotFigure | None:
                       QT_TR_NOOP("error (\")"), tuple(series))
 
 
-def polygon_figure(result) -> PlotFigure | None:
+def polygon_figure(result, u=None) -> PlotFigure | None:
+    """The face deviations with U (``u``: the U their certificate states, :func:`_band`)."""
     s = result.solution
     if s.polygon_deviation_arcsec is None:
         return None
@@ -78,7 +87,7 @@ def polygon_figure(result) -> PlotFigure | None:
     return PlotFigure(QT_TR_NOOP("Polygon face deviations with U"), QT_TR_NOOP("face"),
                       QT_TR_NOOP("deviation (\")"), (
         PlotSeries(QT_TR_NOOP("face deviation ± U"), faces, s.polygon_deviation_arcsec, GREEN, True,
-                   band=result.expanded_u_arcsec[1], role="corrected"),))
+                   band=_band(result, 1, u), role="corrected"),))
 
 
 def residual_figure(result) -> PlotFigure:

@@ -398,7 +398,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
             more_rows.append((QT_TR_NOOP("ISO 230-2 (unidirectional)"), ", ".join(iso),
                               QT_TR_NOOP("indicative (mountings are remountings, not repeat "
                                          "runs); deviation = −error")))
-        plots = [encoder_figure(result)]
+        plots = [encoder_figure(result, u=big_u)]  # the table's U
     else:
         u1 = result.polygon_u_from_face1_arcsec(metadata)
         results = PointTable(QT_TR_NOOP("Face deviations"), (
@@ -425,7 +425,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         first_rows = [(QT_TR_NOOP("Deviation"), span,
                        message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=ptp))]
         more_rows = []
-        plots = [polygon_figure(result)]
+        plots = [polygon_figure(result, u=big_u)]  # the table's U
     sign = {} if item == "encoder" else {"sign_convention": POLYGON_SIGN_CONVENTION_TEXT}
     statements = (
         message(QT_TR_NOOP("No calibrated reference value enters these results: the polygon and "

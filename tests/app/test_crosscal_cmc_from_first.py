@@ -144,7 +144,8 @@ def test_the_json_states_u_from_face1_held_to_the_cmc_and_flags_it(issued):
     cmc = held["laboratory_cmc"]
     assert (cmc["setting"], cmc["value"]) == ("cmc_arcsec", CMC_POLYGON)
     assert cmc["arrays"] == ["polygon_deviation_arcsec", "polygon_deviation_from_face1_arcsec"]
-    assert cmc["other_quantities"][0]["arrays"] == ["encoder_error_arcsec"]
+    assert cmc["other_quantities"][0]["arrays"] == ["encoder_error_arcsec",
+                                                    "encoder_error_from_step0_arcsec"]
 
 
 def test_without_a_cmc_the_u_from_face1_is_what_the_readings_give(issued, tmp_path):

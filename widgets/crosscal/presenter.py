@@ -25,11 +25,36 @@ class CrossCalPresenter(WorkbenchPresenter):
         #: file states the U from face 1 that certificate states
         self.issue_details: Callable[[], Any] = lambda: self.certificate_details()
 
+    def certified_u(self, result: CrossCalResult) -> tuple[Any, Any]:
+        """(U of E, U of d) per point as each item's certificate states them with the details
+        it would be issued with now (:attr:`issue_details`: the workbench's details, the lab
+        defaults filled in — the comparators' U, the resolution, the coverage probability):
+        the plots' ±U bands are drawn with them. (None, None) where the details give no
+        budget (the bands then the readings' own U)."""
+        details = self.issue_details()
+        if details is None:
+            return None, None
+        try:
+            budgets = self.kind.uncertainty_budgets(result, details, self.result_settings)
+        except (ValueError, ArithmeticError, IndexError):
+            return None, None
+        return tuple(getattr(budgets.get(name), "expanded", None)  # type: ignore[return-value]
+                     for name in ("encoder_error_arcsec", "polygon_deviation_arcsec"))
+
+    def printed_rounding(self, result: Any) -> Any:
+        """As the certificate rounds, with the details it would be issued with now (the lab
+        defaults in: :meth:`certified_u`), so the summary's U is the bands'."""
+        details = self.issue_details()
+        return super().printed_rounding(result) if details is None else \
+            self.kind.printed_rounding(result, details, self.result_settings)
+
     def show_result(self, result: CrossCalResult) -> None:
         self.table_model.set_highlight_rows({int(i) for i in result.readings.sheet_rows[
             result.readings.closure] - 1})
+        u_encoder, u_polygon = self.certified_u(result)
         self.view.show_figures(*self.in_unit(
-            plots.encoder_figure(result, self.parsed), plots.polygon_figure(result),
+            plots.encoder_figure(result, self.parsed, u_encoder),
+            plots.polygon_figure(result, u_polygon),
             plots.residual_figure(result), plots.closure_figure(result)))
         self.view.set_reference_enabled(result.solution.polygon_deviation_arcsec is not None)
 

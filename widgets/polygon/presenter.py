@@ -128,6 +128,20 @@ class PolygonPresenter(WorkbenchPresenter):
         except TableImportError as exc:
             raise ValueError(str(exc)) from None
 
+    def held_reference(self) -> dict[int, float]:
+        """The deviation column by position as it holds now (cells that do not read left
+        out): what a sent reference is compared with (app/reference_sender.py)."""
+        column = self.sheet.column_index("polygon_dev_arcsec")
+        position_column = self.sheet.column_index("position")
+        out: dict[int, float] = {}
+        for row in range(self.sheet.row_count):
+            try:
+                out[int(float(self.sheet.text(row, position_column)))] = float(
+                    self.sheet.text(row, column))
+            except ValueError:
+                continue
+        return out
+
     def _fill_deviations(self, deviations: dict[int, float], label: str, path: str,
                          spec: str = "g") -> int:
         column = self.sheet.column_index("polygon_dev_arcsec")

@@ -13,6 +13,7 @@ from widgets.figure_plot import FigurePlot, FigureRenderer
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.plot_grid import IntegerAxis, show_grid
 from widgets.polygon.simulation import PolygonSimulation
+from widgets.reference_notice import ReferenceNotice
 from widgets.workbench_view import WorkbenchView
 
 
@@ -87,6 +88,8 @@ class PolygonView(WorkbenchView):
         self.harmonics = HarmonicBars()
         self.sets_plot = FigurePlot()  # each set beside the mean, the set in progress, ±T
         self.simulation = PolygonSimulation()
+        # a sent reference (a cross-calibration's face deviations) gone stale: said here
+        self.reference_notice = ReferenceNotice()
         self.certificate_button = QPushButton()
         live(self.certificate_button.setText, tr("Load polygon certificate…"))
         live(self.certificate_button.setToolTip, tr("Fill the deviation column from a CSV/XLSX "
@@ -102,6 +105,7 @@ class PolygonView(WorkbenchView):
     def subscribe(self, presenter) -> None:
         super().subscribe(presenter)
         self.settings.layout().addRow(self.certificate_button)
+        self.settings.layout().addRow(self.reference_notice)
         self.certificate_button.clicked.connect(presenter.load_certificate_dialog)
 
     def show_figures(self, errors, residuals, tilt, harmonics, sets=None) -> None:
