@@ -1674,12 +1674,16 @@
     </message>
     <message>
         <source>Replacing {number}</source>
-        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) the lab&apos;s signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the lab&apos;s DCC settings, kept with the lab defaults (paths only: never a key&apos;s content): PTB&apos;s schema folder (empty: not validated), the signing key and its X.509 certificate (PEM files; empty: the environment&apos;s, else unsigned), the certificate a signature read in is checked against (empty: the environment&apos;s) the pending amendment or replacement changed (the window shows it: rev62 F3) the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
+        <extracomment>the keys of ``problems`` that name a stored standard left out (the others kept): of the workbench&apos;s stored details, of the lab defaults (models.certificate.metadata.readable_standards) the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) the lab&apos;s signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the lab&apos;s DCC settings, kept with the lab defaults (paths only: never a key&apos;s content): PTB&apos;s schema folder (empty: not validated), the signing key and its X.509 certificate (PEM files; empty: the environment&apos;s, else unsigned), the certificate a signature read in is checked against (empty: the environment&apos;s) the pending amendment or replacement changed (the window shows it: rev62 F3) the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U) the lab defaults were saved (the main window redraws every workbench&apos;s plots: their U bands are drawn with the details the certificate would use, the defaults in)</extracomment>
         <translation>正在替代 {number}</translation>
     </message>
     <message>
         <source>Amending {number}</source>
         <translation>正在修改 {number}</translation>
+    </message>
+    <message>
+        <source>Results file kept</source>
+        <translation>已保留结果文件</translation>
     </message>
     <message>
         <source>; its DCC (validated) written to {path}</source>
@@ -2116,6 +2120,7 @@ Yes: replace it with this window&apos;s project. No: save this window&apos;s pro
     </message>
     <message>
         <source>Cannot send</source>
+        <extracomment>the project metadata&apos;s record of each reference sent, by the receiver&apos;s key: the sender&apos;s key, what was sent and its digest (models.workbench.SentReference.digest), so that a reference whose source has changed since is said, in the session and on load</extracomment>
         <translation>无法发送</translation>
     </message>
     <message>
@@ -2686,6 +2691,15 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>certificate field &apos;{field_name}&apos; must be a number above 0</source>
         <translation>证书字段 &apos;{field_name}&apos; 必须是大于 0 的数</translation>
+    </message>
+    <message>
+        <source>reference standard {number} of the lab defaults ({name}) cannot be read and is left out, the others kept: {reason}</source>
+        <extracomment>what a stored standard that does not read is said as (where: the lab defaults&apos; standards or a workbench&apos;s stored details); the entry alone is left out, the others kept</extracomment>
+        <translation>实验室默认值中的第 {number} 个参考标准（{name}）无法读取，已略去该条，其余保留：{reason}</translation>
+    </message>
+    <message>
+        <source>reference standard {number} of the stored certificate details ({name}) cannot be read and is left out, the others kept: {reason}</source>
+        <translation>已保存的证书信息中的第 {number} 个参考标准（{name}）无法读取，已略去该条，其余保留：{reason}</translation>
     </message>
     <message>
         <source>certificate metadata must be a JSON object</source>
@@ -3877,7 +3891,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read)</extracomment>
+        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -6241,6 +6255,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>序列号</translation>
     </message>
     <message>
+        <source>item description</source>
+        <translation>被校对象描述</translation>
+    </message>
+    <message>
+        <source>manufacturer</source>
+        <translation>制造商</translation>
+    </message>
+    <message>
         <source>certificate number {number}: numbers beginning SPECIMEN are kept for specimen certificates, which are never recorded</source>
         <translation>证书编号 {number}：以 SPECIMEN 开头的编号留给样本证书使用，样本证书从不记入登记册</translation>
     </message>
@@ -8468,6 +8490,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>第 {row} 行：{column} {value}° 与计划在第 {face} 面预期的 ≈ {expected}° 相差 {off}°（超过相邻两面间隔 {pitch}° 的一半）：请检查转台位置。读数已保留；如有误，请撤销此次取数</translation>
     </message>
     <message>
+        <source>Row {row}: {column} {value}{unit} is {off}{unit} from target {target}{unit}, the plan&apos;s for this row (more than half the {gap}{unit} to the neighbouring target {neighbour}{unit}): check the axis&apos;s position. The reading is kept; undo the take if it is wrong</source>
+        <translation>第 {row} 行：{column} {value}{unit} 与目标位置 {target}{unit}（计划中该行的目标位置）相差 {off}{unit}（超过到相邻目标位置 {neighbour}{unit} 的 {gap}{unit} 的一半）：请检查轴的位置。读数予以保留；若有误，请撤销此次取数</translation>
+    </message>
+    <message>
         <source>Take reading (F9)</source>
         <extracomment>finished sessions per workbench (stored form) rows filled by Take reading or auto-take: (workbench, row, values of the first instrument at full precision) per workbench, the columns an instrument has filled or was set to fill: the plan&apos;s nominal is never written there (#60: a readout&apos;s link gave up and the plan&apos;s expected encoder value went into its column as if read)</extracomment>
         <translation>取读数 (F9)</translation>
@@ -9598,6 +9624,14 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>{workbench}：{cells} 个参考值连同其 U 已发送至{target}（最大 u = {u}）；在该处用 编辑 › 撤销 可恢复该列</translation>
     </message>
     <message>
+        <source>The {what} in the reference column were sent from {source}, which has no result now ({why}): they cannot be checked against it.</source>
+        <translation>参考列中的{what}是从{source}发送的，而它现在没有结果（{why}）：无法与之核对。</translation>
+    </message>
+    <message>
+        <source>The {what} in the reference column were sent from {source}, which has changed since (its readings, settings or certificate details): the column and the reference standard&apos;s U are not what it sends now. Send them again.</source>
+        <translation>参考列中的{what}是从{source}发送的，此后它已改变（读数、设置或证书信息）：该列和参考标准的 U 已不是它现在会发送的值。请重新发送。</translation>
+    </message>
+    <message>
         <source>Send as &amp;reference</source>
         <translation>作为参考值发送(&amp;R)</translation>
     </message>
@@ -10022,7 +10056,9 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>{what} &quot;{shown}&quot;: character {n} is U+{code:04X} ({name}), which prints as nothing or moves the text; type the {what} again without it</source>
-        <extracomment>dashes, hyphens and minus signs a word processor or a keyboard layout may put in glyphs that draw a blank and are not default-ignorable</extracomment>
+        <extracomment>dashes, hyphens and minus signs a word processor or a keyboard layout may put in glyphs that draw a blank and are not default-ignorable
+----------
+what a name or description may hold that prints as no character of its own: a line break or a tab prints as a space</extracomment>
         <translation>{what}“{shown}”：第 {n} 个字符为 U+{code:04X}（{name}），它打印不出或会移动文字；请去掉它重新输入{what}</translation>
     </message>
     <message>
@@ -10926,8 +10962,20 @@ Replace it?</source>
 替换它吗？</translation>
     </message>
     <message>
+        <source>{temp} is the results file recorded with certificate {number}, left under a temporary name by an issue stopped before it was named, and it could not be kept under another name: nothing was written; move it first</source>
+        <translation>{temp} 是与证书 {number} 一起记录的结果文件，因签发在为其命名之前被终止而留在临时名下，且无法以其他名称保存：未写出任何文件；请先移走它</translation>
+    </message>
+    <message>
+        <source>{temp} is the results file recorded with certificate {number}, left under a temporary name by an issue stopped before it was named: kept as {kept}</source>
+        <translation>{temp} 是与证书 {number} 一起记录的结果文件，因签发在为其命名之前被终止而留在临时名下：已保存为 {kept}</translation>
+    </message>
+    <message>
         <source>{flag}{out} is {what}, as issued; an issued file is never replaced: nothing was written, choose another name</source>
         <translation>{flag}{out} 是{what}（签发时的原样）；已签发的文件绝不被替换：未写出任何内容，请另选名称</translation>
+    </message>
+    <message>
+        <source>Send again</source>
+        <translation>重新发送</translation>
     </message>
 </context>
 </TS>
