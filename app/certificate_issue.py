@@ -18,7 +18,7 @@ from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
 from models.capture.take_cells import elevation_from_zenith_deg
-from models.certificate.metadata import CertificateMetadata
+from models.certificate.metadata import NUMBER_FIELDS, CertificateMetadata
 from models.project.atomic_write import write_bytes_atomic
 from models.project.file import READINGS_SOURCE, Project, WorkbenchState, project_to_json
 from models.project.output_guard import check_output, register_files
@@ -119,7 +119,7 @@ def _place(register: Register, temp: str, target) -> None:
 def draft_reasons(metadata: CertificateMetadata) -> list[str]:
     """What keeps the certificate a draft; the number is not among them (the register
     allocates it)."""
-    return [m for m in metadata.missing_fields() if m != "certificate number"]
+    return [m for m in metadata.missing_fields() if m not in NUMBER_FIELDS.values()]
 
 
 def specimen_document(document):

@@ -544,8 +544,10 @@ class CertificatePresenter:
         suggested = (f"{kind.key}-specimen" if entered.example else entered.certificate_number
                      or (f"{kind.key}-draft" if draft else
                          f"{kind.key}-report" if report else f"{kind.key}-certificate"))
-        path = self.view.choose_save_path(tr("Export certificate"),
-                                          f"{suggested.replace('/', '-')}.pdf", "PDF (*.pdf)")
+        # the file dialog names what will be written (ISO/IEC 17025 7.8.2.1 a))
+        path = self.view.choose_save_path(
+            tr("Export test report") if report else tr("Export certificate"),
+            f"{suggested.replace('/', '-')}.pdf", "PDF (*.pdf)")
         if not path:
             return False
         if not path.lower().endswith(".pdf"):

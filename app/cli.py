@@ -505,19 +505,25 @@ def run_analyze(argv: list[str]) -> int:
                                   path=args.interpolator_table, reason=str(exc)), words))
             return 1
         _say(rendered(said, words))
+    # a test report asked for is called one when refused (ISO/IEC 17025 7.8.2.1 a))
     if incomplete is not None and args.certificate:
-        _say(rendered(message(QT_TR_NOOP("{file}: no certificate was written: {progress} is "
-                                         "not complete; a certificate waits for it (the "
-                                         "complete ones are analysed above)"),
-                              file=args.file, progress=incomplete.text()), words))
+        _say(rendered(message(QT_TR_NOOP(
+            "{file}: no test report was written: {progress} is not complete; a test report "
+            "waits for it (the complete ones are analysed above)")
+            if _test_report_asked(args) else QT_TR_NOOP(
+            "{file}: no certificate was written: {progress} is not complete; a certificate "
+            "waits for it (the complete ones are analysed above)"),
+            file=args.file, progress=incomplete.text()), words))
         return EXIT_BAD_INPUT
     doubt = (kind.certificate_doubt(result)
              if isinstance(kind, IssuesCertificates) and args.certificate else "")
     if doubt and not args.confirm_implausible:
-        _say(rendered(message(QT_TR_NOOP("{file}: no certificate was written: {reason} If the "
-                                         "readings are right, run again with "
-                                         "--confirm-implausible"), file=args.file, reason=doubt),
-                      words))
+        _say(rendered(message(QT_TR_NOOP(
+            "{file}: no test report was written: {reason} If the readings are right, run "
+            "again with --confirm-implausible")
+            if _test_report_asked(args) else QT_TR_NOOP(
+            "{file}: no certificate was written: {reason} If the readings are right, run again "
+            "with --confirm-implausible"), file=args.file, reason=doubt), words))
         return EXIT_BAD_INPUT
     if args.certificate or args.results:
         # the register keeps the readings as written: read as text when one is issued
@@ -561,6 +567,17 @@ def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:
             raise
         # its rows are the readings unrolled: a bad cell is named by the readings' row
         return dataclasses.replace(table, line_numbers=list(range(1, len(own) + 1))), own
+
+
+def _test_report_asked(args: argparse.Namespace) -> bool:
+    """Whether the details (--metadata) ask for a test report (``document_type`` "test");
+    False when they do not read (they are refused, saying why, when they are used)."""
+    from models.certificate.metadata import MetadataError
+
+    try:
+        return _read_metadata(args.metadata).document_type == "test"
+    except MetadataError:
+        return False
 
 
 def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
@@ -785,7 +802,8 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
                 "in the register)") if document.is_test_report else QT_TR_NOOP(
                 "Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded "
                 "in the register)"), path=args.certificate, fields=listed(
-                    message(name) for name in metadata.missing_fields())), words))
+                    message(name) for name in metadata.missing_fields(
+                        document.is_test_report))), words))
         if args.results:
             if args.results.lower().endswith(".xlsx"):
                 write_results_xlsx(args.results, document, ANGLE_UNITS[args.unit])

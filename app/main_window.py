@@ -51,6 +51,7 @@ from widgets.i18n import (
     tr,
 )
 from widgets.screen_fit import fit_to_screen
+from widgets.status_line import StatusLine
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 
 log = logging.getLogger(__name__)
@@ -159,8 +160,9 @@ class MainWindow(QMainWindow):
         self.setAcceptDrops(True)
         self._on_tab_changed(0)
         self.setCentralWidget(self.tabs)
-        self._ready = tr("Ready")
-        self.statusBar().showMessage(self._ready)
+        # its message said again in the new language after a switch (widgets/status_line.py)
+        self.setStatusBar(StatusLine(self))
+        self.statusBar().showMessage(tr("Ready"))
         # the pending Amend…/Replace…, in sight until it is issued or ended (rev62 F3)
         self.revision_label = QLabel()
         self.revision_label.setObjectName("pending_revision")
@@ -229,9 +231,8 @@ class MainWindow(QMainWindow):
 
     def _retranslate(self) -> None:
         self.menus.update_undo_actions()
-        if self.statusBar().currentMessage() == getattr(self, "_ready", None):  # said anew
-            self._ready = tr("Ready")  # (--language is set after the window is made)
-            self.statusBar().showMessage(self._ready)
+        # the status line says its message again itself ("Ready" too: --language is set
+        # after the window is made), widgets/status_line.py
         if self.manual is not None and self.manual.isVisible():  # the page in the new language
             self.manual.show_page(self.current.kind.key, self.language)
         for index, presenter in enumerate(self.presenters):

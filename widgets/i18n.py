@@ -29,17 +29,33 @@ from collections.abc import Callable
 
 from PySide6.QtCore import QT_TR_NOOP, QCoreApplication, QLibraryInfo, QLocale, QObject, QTranslator
 
-from models.messages import TRANSLATIONS_DIR, declared_text, reason_of, rendered
+from models.messages import TRANSLATIONS_DIR, Message, declared_text, reason_of, rendered
 
-__all__ = ["LANGUAGES", "SEEN_DECLARED", "Language", "Tr", "application_language", "declared",
-           "explained", "install_language", "live", "on_language_change", "resolve_language", "tr",
-           "translated"]
+__all__ = ["LANGUAGES", "SEEN_DECLARED", "Language", "Said", "Tr", "application_language",
+           "declared", "explained", "install_language", "live", "on_language_change",
+           "resolve_language", "said_again", "tr", "translated"]
 
 LANGUAGES = {"system": QT_TR_NOOP("System language"), "en": "English",
              "zh_CN": "简体中文 (Chinese)"}
 
 
-class Tr(str):
+class _SaidAgain(str):
+    """A text of the window that can be said again in another language
+    (:func:`said_again`); joined to another text with ``+``, the two are said again each on
+    its own ("Draft written to …" + "; its DCC written to …")."""
+
+    def __add__(self, other):
+        if not isinstance(other, str):
+            return NotImplemented
+        return Said(str.__add__(self, other), lambda: said_again(self) + said_again(other))
+
+    def __radd__(self, other):
+        if not isinstance(other, str):
+            return NotImplemented
+        return Said(str.__add__(other, self), lambda: said_again(other) + said_again(self))
+
+
+class Tr(_SaidAgain):
     """A translated text that remembers its English source (to translate it again)."""
 
     source: str
@@ -50,6 +66,45 @@ class Tr(str):
         obj.source = source
         obj.is_declared = is_declared
         return obj
+
+    def format(self, *args: object, **kwargs: object) -> Said:
+        """The translation filled in, remembering its source and arguments: said again, the
+        source is translated anew and filled with the arguments said again (a status
+        line's message after a change of language: widgets/status_line.py)."""
+        # an exception is kept as its text (its traceback would hold its frames alive)
+        args = tuple(str(a) if isinstance(a, BaseException) else a for a in args)
+        kwargs = {k: str(v) if isinstance(v, BaseException) else v for k, v in kwargs.items()}
+        return Said(str.format(self, *args, **kwargs),
+                    lambda: said_again(self).format(*(said_again(a) for a in args),
+                                                    **{k: said_again(v) for k, v in
+                                                       kwargs.items()}))
+
+
+class Said(_SaidAgain):
+    """A text composed of translated parts (``tr(…).format(…)``, a model's message
+    translated, two such texts joined), with how to compose it again in the language now
+    installed (:func:`said_again`)."""
+
+    again: Callable[[], str]
+
+    def __new__(cls, text: str, again: Callable[[], str]) -> Said:
+        obj = super().__new__(cls, text)
+        obj.again = again
+        return obj
+
+    def __reduce__(self):  # a copy (a pickle) is the text alone, said again no more
+        return (str, (str(self),))
+
+
+def said_again(text):
+    """``text`` in the language now installed: a :class:`Tr` translated anew, a
+    :class:`Said` composed again; anything else (a path, a number, a text of no language)
+    as it is."""
+    if isinstance(text, Tr):
+        return declared(text.source) if text.is_declared else tr(text.source)
+    if isinstance(text, Said):
+        return text.again()
+    return text
 
 
 def tr(source: str) -> Tr:
@@ -66,8 +121,10 @@ def _translate_declared(source: str) -> str:
 
 def translated(text: str) -> str:
     """A result text of the models (models.messages.Message) in the window's language:
-    its template translated and filled with the same figures; plain text as it is."""
-    return rendered(text, lambda template: QCoreApplication.translate("", template))
+    its template translated and filled with the same figures (a :class:`Said`: said again,
+    it is translated anew); plain text as it is."""
+    said = rendered(text, lambda template: QCoreApplication.translate("", template))
+    return Said(said, lambda: translated(text)) if isinstance(text, Message) else said
 
 
 def explained(exc: BaseException) -> str:

@@ -28,6 +28,7 @@ __all__ = [
     "DOCUMENT_TYPES",
     "LANGUAGES",
     "LAB_DEFAULT_FIELDS",
+    "NUMBER_FIELDS",
     "CertificateMetadata",
     "MetadataError",
     "PLACES",
@@ -51,6 +52,9 @@ LAB_DEFAULT_FIELDS = ("lab_name", "lab_address", "lab_accreditation", "number_sc
 #: What the document is: a calibration certificate, or a test report.
 DOCUMENT_TYPES = {"calibration": QT_TR_NOOP("Calibration certificate"),
                   "test": QT_TR_NOOP("Test report")}
+#: the document's number as a missing field names it: a calibration certificate's, a test
+#: report's (``missing_fields(report=True)``)
+NUMBER_FIELDS = {False: QT_TR_NOOP("certificate number"), True: QT_TR_NOOP("report number")}
 #: where the calibration was made (ISO/IEC 17025 7.8.2.1 c): the laboratory's own premises, or
 #: the customer's site (its address in ``calibration_site``)
 PLACES = {"laboratory": QT_TR_NOOP("at the laboratory"),
@@ -522,10 +526,12 @@ class CertificateMetadata:
                    if not getattr(self, k) and getattr(lab, k)}
         return replace(self, **updates)
 
-    def missing_fields(self) -> list[str]:
-        """What a signed certificate must state and this one does not (it is then a draft)."""
+    def missing_fields(self, report: bool = False) -> list[str]:
+        """What a signed certificate must state and this one does not (it is then a draft);
+        ``report``: the document is a test report, whose number is its "report number"
+        (ISO/IEC 17025 7.8.2.1 a): it calls itself what it is)."""
         required = {
-            QT_TR_NOOP("certificate number"): self.certificate_number,
+            NUMBER_FIELDS[report]: self.certificate_number,
             QT_TR_NOOP("laboratory"): self.lab_name, QT_TR_NOOP("customer"): self.customer_name,
             QT_TR_NOOP("item under test"): self.item_description,
             QT_TR_NOOP("item serial number"): self.item_serial,

@@ -61,6 +61,13 @@ class RegisterError(ValueError):
     newer version) or cannot be reached; the message says which."""
 
 
+def _not_in_register(number: str) -> RegisterError:
+    """No record numbered ``number``: its kind unknown, so named as either (a test report's
+    number was said to be "no certificate")."""
+    return RegisterError(message(
+        QT_TR_NOOP("no certificate or test report {number} in the register"), number=number))
+
+
 class SameCalibrationIssued(RegisterError):
     """An original for an item and date of calibration that a current certificate already
     reports (``numbers``): a corrected one is its amendment or replacement, a calibration of
@@ -1093,9 +1100,7 @@ class Register:
         row = conn.execute(self._sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS)).where(
             certificates.c.number == number)).first()
         if row is None:
-            raise RegisterError(message(
-                QT_TR_NOOP("no certificate {number} in the register"),
-                number=number))
+            raise _not_in_register(number)
         return CertificateRecord(**row._asdict())
 
     def get(self, number: str) -> CertificateRecord:
@@ -1108,9 +1113,7 @@ class Register:
                 try:
                     alike = normalise_identifier(number)
                 except IdentifierError:
-                    raise RegisterError(message(
-                        QT_TR_NOOP("no certificate {number} in the register"),
-                        number=number)) from None
+                    raise _not_in_register(number) from None
                 return self._get(conn, alike)
 
     def chain_before(self, number: str) -> str:
@@ -1140,9 +1143,7 @@ class Register:
             row = conn.execute(self._sa.select(certificates.c.pdf, certificates.c.pdf_sha256)
                                .where(certificates.c.number == number)).first()
         if row is None:
-            raise RegisterError(message(
-                QT_TR_NOOP("no certificate {number} in the register"),
-                number=number))
+            raise _not_in_register(number)
         data = bytes(row.pdf)
         if checked and hashlib.sha256(data).hexdigest() != row.pdf_sha256:
             raise RegisterError(message(QT_TR_NOOP(
@@ -1160,9 +1161,7 @@ class Register:
             row = conn.execute(self._sa.select(certificates.c.dcc, certificates.c.dcc_sha256)
                                .where(certificates.c.number == number)).first()
         if row is None:
-            raise RegisterError(message(
-                QT_TR_NOOP("no certificate {number} in the register"),
-                number=number))
+            raise _not_in_register(number)
         if row.dcc is None and row.dcc_sha256 is None:
             raise RegisterError(message(QT_TR_NOOP(
                 "certificate {number} was issued without a digital calibration certificate "

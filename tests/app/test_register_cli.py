@@ -71,7 +71,7 @@ def test_a_draft_is_not_recorded_and_bad_requests_exit_2(samples_dir, tmp_path, 
     assert "nothing was recorded in the register" in capsys.readouterr().err
     assert main(["register", "list"]) == 0 and capsys.readouterr().out == ""
     assert main(["register", "show", "NOPE"]) == 2
-    assert "no certificate NOPE" in capsys.readouterr().err
+    assert "no certificate or test report NOPE in the register" in capsys.readouterr().err
     assert main(["register", "interval", "RX-1", "-5"]) == 2
     assert "positive number of days" in capsys.readouterr().err
     assert main(["register", "--register", "postgresql://x@/db?host=/nonexistent", "list"]) == 2

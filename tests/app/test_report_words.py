@@ -2,7 +2,10 @@
 the window's and the command line's draft and "issued, but the file was not written"
 messages, the status line of an amendment (whose revision was English in a Chinese
 window), and ``register verify`` of its PDF or results file (by the kind the register
-recorded; "document" for a record issued before it recorded kinds). Also the XLSX's row
+recorded; "document" for a record issued before it recorded kinds), the command line's
+refusals before writing one and a draft's missing "report number", the export's file
+dialog's title, and a number not in the register ("no certificate or test report N"). Also
+the XLSX's row
 naming the test (检测 on a Chinese calibration certificate's sheet), an empty serial of a
 standard ("serial ;", "出厂编号 ；") and the cross-calibration's remark ending in an ASCII
 "." in Chinese. The positioning sample's result names inputs not stated, so it is a test
@@ -60,6 +63,14 @@ PENDING_ZH = {
     "identical to the record (SHA-256)":
         "{path}：文件 {number} 的结果文件，记录于 {recorded_at}，{status}；与记录一致（SHA-256）",
     "{remarks}.": "{remarks}。",
+    "report number": "报告编号",
+    "{file}: no test report was written: {progress} is not complete; a test report waits "
+    "for it (the complete ones are analysed above)":
+        "{file}：未写出检测报告：{progress} 尚未完成；检测报告须待其完成（上面已分析已完成的部分）",
+    "{file}: no test report was written: {reason} If the readings are right, run again with "
+    "--confirm-implausible":
+        "{file}：未写出检测报告：{reason} 若读数无误，请加上 --confirm-implausible 重新运行",
+    "no certificate or test report {number} in the register": "登记册中没有证书或检测报告 {number}",
 }
 
 
@@ -218,15 +229,84 @@ def test_the_command_lines_draft_message(samples_dir, tmp_path, capsys, zh_catal
                         approver="") == 0
         said[key] = capsys.readouterr().err
     if language == "en":
-        assert (f"Test report written to {tmp_path / 'positioning-draft.pdf'} (DRAFT: certificate "
+        # a test report's number is its report number (it said "certificate number")
+        assert (f"Test report written to {tmp_path / 'positioning-draft.pdf'} (DRAFT: report "
                 "number, approver missing; nothing was recorded in the register)") in said["positioning"]
         assert (f"Certificate written to {tmp_path / 'polygon-draft.pdf'} (DRAFT: certificate "
                 "number, approver missing; nothing was recorded in the register)") in said["polygon"]
     else:
-        assert (f"检测报告已写入 {tmp_path / 'positioning-draft.pdf'}（草稿：缺少证书编号、批准人；未记入"
+        assert (f"检测报告已写入 {tmp_path / 'positioning-draft.pdf'}（草稿：缺少报告编号、批准人；未记入"
                 "登记册）" in said["positioning"]), said["positioning"]
         assert (f"证书已写入 {tmp_path / 'polygon-draft.pdf'}（草稿：缺少证书编号、批准人；未记入登记册）"
                 in said["polygon"]), said["polygon"]
+
+
+def _incomplete_polygon(samples_dir, tmp_path) -> str:
+    """The polygon's sample with its last set only begun (3 of 24 readings)."""
+    lines = (samples_dir / "polygon_sample.csv").read_text(encoding="utf-8").splitlines()
+    header, rows = lines[0], lines[1:]
+    path = tmp_path / "partial.csv"
+    path.write_text("\n".join([header, *rows[:-21]]) + "\n", encoding="utf-8")
+    return str(path)
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_the_command_lines_refusals_call_a_test_report_one(samples_dir, tmp_path, capsys,
+                                                           zh_catalogue, language):
+    """A test report asked for and refused before it is written (a run in progress, readings
+    doubted) was "no certificate was written"; a certificate's refusal is as before, with
+    the same exit code."""
+    from tests.models.readings.test_hostile_input import _polygon_text
+
+    partial = _incomplete_polygon(samples_dir, tmp_path)
+    doubted = tmp_path / "doubted.csv"
+    doubted.write_text(_polygon_text(samples_dir, 1.0), encoding="utf-8")
+    said = {}
+    for asked in ("test", "calibration"):
+        details = tmp_path / f"{asked}.json"
+        details.write_text(json.dumps(_details(samples_dir, "polygon",
+                                               document_type=asked).to_dict()), encoding="utf-8")
+        for name, path in (("incomplete", partial), ("doubted", str(doubted))):
+            pdf = tmp_path / f"{asked}-{name}.pdf"
+            assert main(["analyze", "polygon", path, "--metadata", str(details),
+                         "--certificate", str(pdf), "--language", language]) == 2
+            said[asked, name] = capsys.readouterr().err
+            assert not pdf.exists()
+    if language == "en":
+        assert f"{partial}: no test report was written: " in said["test", "incomplete"]
+        assert "a test report waits for it" in said["test", "incomplete"]
+        assert f"{doubted}: no test report was written: " in said["test", "doubted"]
+        assert "run again with --confirm-implausible" in said["test", "doubted"]
+        assert f"{partial}: no certificate was written: " in said["calibration", "incomplete"]
+        assert "a certificate waits for it" in said["calibration", "incomplete"]
+        assert f"{doubted}: no certificate was written: " in said["calibration", "doubted"]
+        assert not any("certificate was written" in said["test", name]
+                       for name in ("incomplete", "doubted")), said
+    else:
+        assert f"{partial}：未写出检测报告：" in said["test", "incomplete"]
+        assert "检测报告须待其完成" in said["test", "incomplete"]
+        assert f"{doubted}：未写出检测报告：" in said["test", "doubted"]
+        assert f"{partial}：未写出证书：" in said["calibration", "incomplete"]
+        assert f"{doubted}：未写出证书：" in said["calibration", "doubted"]
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_a_number_not_in_the_register_is_no_certificate_or_test_report(tmp_path, capsys,
+                                                                       zh_catalogue, language):
+    """A test report's number not found was "no certificate N in the register"."""
+    assert main(["register", "show", "AB-2026-0099", "--language", language]) == 2
+    err = capsys.readouterr().err
+    assert ("no certificate or test report AB-2026-0099 in the register" if language == "en"
+            else "登记册中没有证书或检测报告 AB-2026-0099") in err, err
+
+
+def test_the_export_dialogs_title_names_a_test_report(samples_dir, tmp_path):
+    """File › Export certificate's file dialog was titled "Export certificate" for a test
+    report too."""
+    view, presenter = _presenter()
+    for key, title in (("positioning", "Export test report"), ("polygon", "Export certificate")):
+        assert _export(presenter, view, samples_dir, key, tmp_path / f"{key}.pdf")
+        assert view.choose_save_path.call_args.args[0] == title, key
 
 
 @pytest.mark.parametrize("language", ["en", "zh_CN"])

@@ -213,29 +213,95 @@ def test_the_standards_table_shows_its_headers_and_three_rows(qtbot):
     assert "\n" in table.horizontalHeaderItem(4).text()  # "Stated as\n(U95, MPE, u)"
 
 
-@pytest.mark.parametrize("size", [(1254, 662), (1100, 760), (627, 331)],
-                         ids=["1280x720", "the screenshot's 1100x760", "200% on 1280x720"])
-def test_every_detail_is_read_whole_without_scrolling_sideways(qtbot, size):
+@pytest.mark.parametrize("size, language", [
+    ((1254, 662), "en"), ((1100, 760), "en"), ((627, 331), "en"), ((1134, 662), "zh_CN"),
+    ((627, 331), "zh_CN")], ids=["1280x720", "the screenshot's 1100x760", "200% on 1280x720",
+                                 "1280x720, Chinese", "200% on 1280x720, Chinese"])
+def test_every_detail_is_read_whole_without_scrolling_sideways(qtbot, size, language):
     """The groups two a row were 1198 px wide: in the 1100 px screenshot and at 200 %
     on a 1280×720 screen (627 px of dialog) the Laboratory column was behind a horizontal
     scroll bar; the DCC fields' hints were cut ("…TRUSTED_CERTIFICATE, else the…"). Now
     one group below the other where two have no room, long rows' fields below their
-    captions, every hint whole."""
+    captions, every hint whole — in Chinese too, at the size the dialog takes there (the
+    hints measured as QLineEdit draws them: test_a_hint_cut_by_a_pixel_or_two_is_seen)."""
     from PySide6.QtWidgets import QApplication
 
     from tests.small_screen_probe import cut_texts
+    from widgets.i18n import install_language
 
-    dialog = CertificateDialog(CertificateMetadata.from_dict({
-        "lab_name": "精密角度计量实验室 Precision Angle Lab", "customer_name": "Changchun Optics",
-        "standards": [{"description": "Autocollimating theodolite", "uncertainty": 0.5}]}))
-    qtbot.addWidget(dialog)
-    dialog.show()
-    dialog.resize(*size)
+    install_language(language)
+    try:
+        dialog = CertificateDialog(CertificateMetadata.from_dict({
+            "lab_name": "精密角度计量实验室 Precision Angle Lab", "customer_name": "Changchun Optics",
+            "standards": [{"description": "Autocollimating theodolite", "uncertainty": 0.5}]}))
+        qtbot.addWidget(dialog)
+        dialog.show()
+        dialog.resize(*size)
+        QApplication.processEvents()
+        assert dialog.details_area.horizontalScrollBar().maximum() == 0
+        assert cut_texts(dialog) == []
+        # two a row where they have room (the dialog is no taller than it must be)
+        assert dialog.sections.columns == (1 if size[0] < 800 else 2)
+    finally:
+        install_language("en")
+
+
+def _drawn_whole(edit, hint: str) -> bool:
+    """Whether ``edit`` draws ``hint`` whole: its pixels, frame aside, as the same hint
+    drawn in a field wide enough for it (QLineEdit elides a hint with no room: "…")."""
+    from PySide6.QtCore import QRect, Qt
+    from PySide6.QtGui import QImage
+    from PySide6.QtWidgets import QApplication, QLineEdit
+
+    wide = QLineEdit()
+    wide.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # no cursor, no focus frame
+    wide.setFont(edit.font())
+    wide.setPlaceholderText(hint)
+    wide.resize(edit.width() + 200, edit.height())
+    wide.show()
     QApplication.processEvents()
-    assert dialog.details_area.horizontalScrollBar().maximum() == 0
-    assert cut_texts(dialog) == []
-    # two a row where they have room (the dialog is no taller than it must be)
-    assert dialog.sections.columns == (1 if size[0] < 800 else 2)
+    inside = QRect(2, 2, edit.width() - 6, edit.height() - 4)  # the frame aside
+    rgb = QImage.Format.Format_RGB32  # a child's and a window's grabs differ in format only
+    drawn = edit.grab().toImage().convertToFormat(rgb).copy(inside)
+    whole = wide.grab().toImage().convertToFormat(rgb).copy(inside)
+    wide.deleteLater()
+    return drawn == whole
+
+
+@pytest.mark.parametrize("hint", ["留空：使用 ANGLEBENCH_DCC_TRUSTED_CERTIFICATE，否则使用签名证书",
+                                  "系统时区（例如 Asia/Shanghai）",
+                                  "empty: ANGLEBENCH_DCC_TRUSTED_CERTIFICATE, else the signing "
+                                  "certificate"])
+def test_a_hint_cut_by_a_pixel_or_two_is_seen(qtbot, window, hint):
+    """The check of the dialogs' hints (tests/small_screen_probe.cut_texts) counted the
+    field's frame as room for the hint: a hint QLineEdit draws cut ("…签名证…") by up to 2 px
+    passed as whole — the zh hint of the trusted certificate for a standard's DCC had no
+    room to spare in the Chinese dialog at 1280×720 (its 431 px counted 433). Now the room
+    is what QLineEdit paints in; here checked against what it draws, at the widest width
+    that cuts the hint and the narrowest that does not."""
+    from PySide6.QtWidgets import QApplication, QLineEdit, QWidget
+
+    from tests.small_screen_probe import cut_texts
+
+    box = QWidget()
+    qtbot.addWidget(box)
+    edit = QLineEdit(box)
+    edit.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+    edit.setPlaceholderText(hint)
+    box.show()
+    need = edit.fontMetrics().horizontalAdvance(hint)
+    width = need + 20
+    while True:  # narrower until the field draws the hint cut
+        edit.resize(width, edit.sizeHint().height())
+        QApplication.processEvents()
+        if not _drawn_whole(edit, hint):
+            break
+        width -= 1
+    assert width > need  # cut where its width still exceeds the hint's advance
+    assert cut_texts(box) != [], (width, need)
+    edit.resize(width + 1, edit.height())
+    QApplication.processEvents()
+    assert _drawn_whole(edit, hint) and cut_texts(box) == [], (width + 1, need)
 
 
 def test_a_tolerance_and_a_standard_are_typed_with_their_unit(qtbot):

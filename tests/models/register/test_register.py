@@ -159,7 +159,7 @@ def test_an_amendment_references_the_original_which_stays_unchanged(register):
     replacement, _ = register.issue(request(), render, supersedes=second.number,
                                     replacement=True, change_note="re-issued")
     assert replacement.number == "AB-2026-0002" and replacement.revision == "replacement"
-    with pytest.raises(RegisterError, match="no certificate XX-1"):
+    with pytest.raises(RegisterError, match="no certificate or test report XX-1 in the register"):
         register.issue(request(), render, supersedes="XX-1")
 
 

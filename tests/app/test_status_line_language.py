@@ -1,0 +1,71 @@
+"""The status line after a change of language (View › Language): its message is said again
+in the new language, from its source text and arguments, for the time it had left. Before,
+it kept the language it was shown in ("Imported polygon_sample.csv: 50 row(s) …" in the
+Chinese window) until the next message."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from models.messages import QT_TR_NOOP, message
+from widgets.i18n import tr, translated
+
+HAN = re.compile(r"[\u4e00-\u9fff]")
+
+
+def choose_language(window, key: str) -> None:
+    """View › Language › ``key``, as the user picks it."""
+    action = next(a for a in window.menus.language_actions.actions() if a.data() == key)
+    action.trigger()
+
+
+@pytest.fixture
+def switched_back(window):
+    yield window
+    choose_language(window, "en")
+
+
+def test_a_message_is_said_again_in_the_language_chosen(switched_back, samples_dir):
+    window = switched_back
+    window.tabs.setCurrentIndex(1)
+    assert window.import_file(samples_dir / "polygon_sample.csv")  # File › Import, as typed
+    said = window.statusBar().currentMessage()
+    assert said.startswith(f"Imported {samples_dir / 'polygon_sample.csv'} (Edit › Undo")
+    choose_language(window, "zh_CN")
+    chinese = window.statusBar().currentMessage()
+    assert chinese == f"已导入 {samples_dir / 'polygon_sample.csv'}（编辑 › 撤销 可恢复原读数）", chinese
+    choose_language(window, "en")
+    assert window.statusBar().currentMessage() == said  # and back, the same figures
+
+
+def test_a_message_of_translated_parts_is_said_again_whole(switched_back):
+    """A model's message as an argument, and a second text joined to the first (the
+    certificate's "…; its DCC written to …")."""
+    window = switched_back
+    what = translated(message(QT_TR_NOOP("Readings")))
+    window.statusBar().showMessage(tr("{what} written").format(what=what)
+                                   + tr("; its DCC (validated) written to {path}").format(path="/tmp/a.xml"),
+                                   8000)
+    assert window.statusBar().currentMessage() == ("Readings written; its DCC (validated) written "
+                                                   "to /tmp/a.xml")
+    choose_language(window, "zh_CN")
+    chinese = window.statusBar().currentMessage()
+    assert chinese.endswith("/tmp/a.xml") and "written" not in chinese, chinese
+    assert not re.search(r"[A-Za-z]{4,}", chinese.replace("/tmp/a.xml", "")), chinese
+    assert HAN.search(chinese), chinese
+
+
+def test_the_message_keeps_the_time_it_had_left(switched_back, qtbot):
+    window = switched_back
+    window.load_all_samples()
+    assert window.statusBar().currentMessage() == "Bundled samples loaded in every workbench"
+    choose_language(window, "zh_CN")
+    assert window.statusBar().currentMessage() == "已在每个工作台载入自带示例"
+    window.statusBar().showMessage(tr("Printed"), 4000)
+    choose_language(window, "en")
+    assert window.statusBar().currentMessage() == "Printed"
+    # then gone when its time is up (not made a message that stays)
+    qtbot.waitUntil(lambda: window.statusBar().currentMessage() == "", timeout=15000)
+

@@ -1,0 +1,44 @@
+"""The main window's status line: a message shown is said again in the new language after
+a change of language (View › Language), for the time it had left, from its source text and
+arguments (widgets.i18n.said_again: ``tr(…).format(…)``, a model's message translated, two
+joined); a text of no language (a message of its own, a path) stays as it is. Before, the
+message stayed in the language it was shown in."""
+
+from __future__ import annotations
+
+import time
+
+from PySide6.QtWidgets import QStatusBar, QWidget
+
+from widgets.i18n import on_language_change, said_again
+
+__all__ = ["StatusLine"]
+
+
+class StatusLine(QStatusBar):
+    """A :class:`QStatusBar` that keeps the last message shown through it (its text and
+    when its time is up) to say it again after a change of language."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._shown: tuple[str, float | None] | None = None  # text, when its time is up
+        on_language_change(self, self._say_again)
+
+    def showMessage(self, text: str, timeout: int = 0) -> None:  # noqa: N802 - Qt's name
+        self._shown = (text, time.monotonic() + timeout / 1000 if timeout > 0 else None)
+        super().showMessage(text, timeout)
+
+    def _say_again(self) -> None:
+        """The message in sight in the language now installed, for the time it had left
+        (one gone, or replaced from Qt itself, as a menu's tip, is not brought back)."""
+        if self._shown is None:
+            return
+        text, until = self._shown
+        if not text or self.currentMessage() != text:
+            return
+        again = said_again(text)
+        left = 0 if until is None else round((until - time.monotonic()) * 1000)
+        if until is not None and left <= 0:
+            return  # its time is up this instant: it goes as it would have
+        super().showMessage(again, left)
+        self._shown = (again, until)
