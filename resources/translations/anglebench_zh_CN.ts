@@ -1714,6 +1714,10 @@
         <translation>没有写入或记录任何证书：{numbers} 已报告这次校准。要更正它，请在 文件 › 证书登记册 中选中它，然后按“修订…”或“替代…”。</translation>
     </message>
     <message>
+        <source>Export test report</source>
+        <translation>导出检测报告</translation>
+    </message>
+    <message>
         <source>Draft test report written to {path} — DRAFT: {missing} missing; nothing was recorded in the register</source>
         <translation>检测报告草稿已写入 {path} — 草稿：缺少 {missing}；未在登记册中记录</translation>
     </message>
@@ -2648,6 +2652,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>检测报告</translation>
     </message>
     <message>
+        <source>report number</source>
+        <translation>报告编号</translation>
+    </message>
+    <message>
         <source>certificate field &apos;{field_name}&apos; must be text</source>
         <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides, U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned code points What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard).</extracomment>
         <translation>证书字段 &apos;{field_name}&apos; 必须是文本</translation>
@@ -2764,6 +2772,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>certificate number</source>
+        <extracomment>the document&apos;s number as a missing field names it: a calibration certificate&apos;s, a test report&apos;s (``missing_fields(report=True)``)</extracomment>
         <translation>证书编号</translation>
     </message>
     <message>
@@ -3587,7 +3596,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>empty: ANGLEBENCH_DCC_TRUSTED_CERTIFICATE, else the signing certificate</source>
-        <translation>留空：使用 ANGLEBENCH_DCC_TRUSTED_CERTIFICATE，否则使用签名证书</translation>
+        <translation>留空：用 ANGLEBENCH_DCC_TRUSTED_CERTIFICATE，否则用签名证书</translation>
     </message>
     <message>
         <source>A signature on a DCC read in (a standard&apos;s, a polygon&apos;s) is checked against this certificate</source>
@@ -5551,6 +5560,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>检测报告 {number} 已签发：已写入 {path} 并记入登记册（sha256 {sha}…）</translation>
     </message>
     <message>
+        <source>{file}: no test report was written: {progress} is not complete; a test report waits for it (the complete ones are analysed above)</source>
+        <translation>{file}：未写出检测报告：{progress} 尚未完成；检测报告须待其完成（上面已分析已完成的部分）</translation>
+    </message>
+    <message>
+        <source>{file}: no test report was written: {reason} If the readings are right, run again with --confirm-implausible</source>
+        <translation>{file}：未写出检测报告：{reason} 若读数无误，请加上 --confirm-implausible 重新运行</translation>
+    </message>
+    <message>
         <source>Certificate {number} issued: written to {path} and recorded in the register (sha256 {sha}…)</source>
         <translation>证书 {number} 已签发：已写入 {path} 并记入登记册（sha256 {sha}…）</translation>
     </message>
@@ -6165,6 +6182,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{path}：项目文件已损坏（不是 UTF-8 文本）</translation>
     </message>
     <message>
+        <source>no certificate or test report {number} in the register</source>
+        <translation>登记册中没有证书或检测报告 {number}</translation>
+    </message>
+    <message>
         <source>the number scheme &apos;{scheme}&apos; has no {{seq}}: the register cannot number certificates with it</source>
         <translation>编号方案 &apos;{scheme}&apos; 中没有 {{seq}}：登记册无法用它为证书编号</translation>
     </message>
@@ -6325,10 +6346,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>the lab requires the approver to differ from the operator: {name} cannot approve a calibration they made</source>
         <translation>实验室要求批准人不同于校准员：{name} 不能批准自己所做的校准</translation>
-    </message>
-    <message>
-        <source>no certificate {number} in the register</source>
-        <translation>登记册中没有证书 {number}</translation>
     </message>
     <message>
         <source>certificate {number} was issued without a digital calibration certificate (DCC)</source>
