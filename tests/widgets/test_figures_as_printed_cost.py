@@ -1,0 +1,87 @@
+"""The window's figures as the certificate prints them (review 62, F2) cost the GUI thread
+little: the cross-calibration's tilt effect is worked out once for every budget an edit asks
+for (it was five times an edit: 0.25 s of the window's time on the sample)."""
+
+from __future__ import annotations
+
+import json
+import threading
+
+import pytest
+
+import models.pyramidal
+from models.certificate.metadata import CertificateMetadata
+from models.display_units import ANGLE_UNITS
+from tests.widgets.test_readings_table_gui import type_cell
+from tests.widgets.test_screen_as_printed import _figures, _statistics
+from widgets.crosscal.presenter import CrossCalPresenter
+
+pytestmark = pytest.mark.slow  # a sample analysed with its certificate details (seconds)
+
+
+def _sample(qtbot, presenter, samples_dir, key: str):
+    """``presenter`` shown, with the sample's readings and its certificate details."""
+    qtbot.addWidget(presenter.view)
+    presenter.view.show()
+    details = CertificateMetadata.from_dict(json.loads(
+        (samples_dir / f"certificate_{key}.json").read_text(encoding="utf-8")))
+    presenter.certificate_details = lambda: details
+    presenter.load_sample()
+    assert presenter.result is not None and presenter.analyse_if_due()
+    return details
+
+
+def _counted(monkeypatch, module, name: str) -> list[str]:
+    """Calls of ``module.name`` from now on, each by the name of the thread that made it."""
+    calls: list[str] = []
+    original = getattr(module, name)
+
+    def spy(*args, **kwargs):
+        calls.append(threading.current_thread().name)
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(module, name, spy)
+    return calls
+
+
+def _typed(qtbot, presenter, row: int, column: str, text: str) -> None:
+    """``text`` typed into a cell of the readings table, and its analysis shown."""
+    before = presenter.result
+    keys = [c.key for c in presenter.kind.columns]
+    type_cell(qtbot, presenter.view.table, row, keys.index(column), text)
+    qtbot.waitUntil(lambda: presenter.result is not before and presenter.analyse_if_due(),
+                    timeout=60000)
+
+
+def _printed_figures_shown(presenter, details) -> None:
+    """The window's figures table shows what the certificate of its result prints."""
+    document = presenter.kind.certificate_document(presenter.result, details, "",
+                                                   presenter.result_settings)
+    printed = {name.split(":")[0]: cells[0] for name, cells in _statistics(document).items()
+               if ":" in name}
+    figures = _figures(presenter.view)
+    for key in ("A", "R", "B"):
+        assert figures[f"{key} (\")"] == printed[key].rstrip("\""), key
+
+
+def test_a_crosscal_edit_works_out_the_tilt_effect_once(qtbot, monkeypatch, samples_dir):
+    """Each budget (the encoder's and the faces', with and without the certificate details,
+    the faces' from face 1) took the unmeasured tilt's effect again: 72 directions of every
+    mounting, 4320 evaluations of models.pyramidal, ~0.05 s each time."""
+    presenter = CrossCalPresenter()
+    details = _sample(qtbot, presenter, samples_dir, "crosscal")
+    evaluated = _counted(monkeypatch, models.pyramidal, "pyramidal_correction_arcsec")
+    shown_u = presenter.view.verdict.text()
+    _typed(qtbot, presenter, 0, "ac_x_arcsec", "4.265")
+    solution = presenter.result.solution
+    assert solution.tilts is None or all(t is None for t in solution.tilts)
+    assert len(evaluated) == 72 * len(solution.mountings)
+    presenter.set_angle_unit(ANGLE_UNITS["urad"])  # shown again: no budget worked out again
+    presenter.set_angle_unit(ANGLE_UNITS["arcsec"])
+    assert len(evaluated) == 72 * len(solution.mountings)
+    document = presenter.kind.certificate_document(presenter.result, details, "",
+                                                   presenter.result_settings)
+    u = next(cells[0] for name, cells in _statistics(document).items()
+             if name.startswith("Expanded"))
+    assert f"(U ≤ {u})" in presenter.view.verdict.text()
+    assert shown_u != presenter.view.verdict.text()  # the edit's figures, not the sample's
