@@ -1,6 +1,8 @@
 """The window's figures as the certificate prints them (review 62, F2) cost the GUI thread
-little: the cross-calibration's tilt effect is worked out once for every budget an edit asks
-for (it was five times an edit: 0.25 s of the window's time on the sample)."""
+little: the positioning's bootstrap of the readings without the reference standards' U is
+drawn once for the summary's intervals and the certificate's (which unites them with its
+own: each was drawn again, four bootstraps an edit), and the cross-calibration's tilt effect
+is worked out once for every budget an edit asks for (five times an edit)."""
 
 from __future__ import annotations
 
@@ -10,11 +12,13 @@ import threading
 import pytest
 
 import models.pyramidal
+import models.uncertainty.figure_intervals
 from models.certificate.metadata import CertificateMetadata
 from models.display_units import ANGLE_UNITS
 from tests.widgets.test_readings_table_gui import type_cell
 from tests.widgets.test_screen_as_printed import _figures, _statistics
 from widgets.crosscal.presenter import CrossCalPresenter
+from widgets.positioning.presenter import PositioningPresenter
 
 pytestmark = pytest.mark.slow  # a sample analysed with its certificate details (seconds)
 
@@ -62,6 +66,22 @@ def _printed_figures_shown(presenter, details) -> None:
     figures = _figures(presenter.view)
     for key in ("A", "R", "B"):
         assert figures[f"{key} (\")"] == printed[key].rstrip("\""), key
+
+
+def test_a_positioning_edit_draws_two_bootstraps_not_four(qtbot, monkeypatch, samples_dir):
+    """The readings' own (the summary's intervals) and the certificate's with its reference
+    standard's U; the certificate's part without that U is the readings' own, drawn once."""
+    presenter = PositioningPresenter()
+    details = _sample(qtbot, presenter, samples_dir, "positioning")
+    drawn = _counted(monkeypatch, models.uncertainty.figure_intervals, "_ensemble")
+    _typed(qtbot, presenter, 0, "deviation", "-1.55")
+    assert presenter.result.deviations[0] == pytest.approx(-1.55)
+    assert len(drawn) == 2  # one _ensemble world per bootstrap
+    _printed_figures_shown(presenter, details)
+    presenter.set_angle_unit(ANGLE_UNITS["urad"])  # shown again: nothing drawn again
+    presenter.set_angle_unit(ANGLE_UNITS["arcsec"])
+    assert len(drawn) == 2
+    _printed_figures_shown(presenter, details)
 
 
 def test_a_crosscal_edit_works_out_the_tilt_effect_once(qtbot, monkeypatch, samples_dir):
