@@ -815,6 +815,7 @@ class WorkbenchPresenter(QObject):
                                              if parsed.errors else ""))
         self.view.set_next_row(next_text)
         if result is None:
+            self.shown = None  # (a million-sample result is not kept for nothing)
             self.clear_result()
             error = self.in_unit_text(error)
             no_result = tr("No result: {reason}").format(reason=error) if error else ""

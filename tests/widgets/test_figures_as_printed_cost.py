@@ -8,8 +8,10 @@ too, never on the GUI thread. Each edit blocked the window 0.25–0.37 s on the 
 
 from __future__ import annotations
 
+import gc
 import json
 import threading
+import weakref
 
 import pytest
 
@@ -128,3 +130,17 @@ def test_a_take_is_shown_as_printed_with_no_bootstrap_on_the_gui_thread(
     assert rounded and gui not in rounded, rounded
     assert drawn and gui not in drawn, drawn
     _printed_figures_shown(presenter, details)
+
+
+def test_the_kept_texts_hold_no_result_once_the_readings_give_none(qtbot, samples_dir):
+    """The texts as printed are kept with their result (a new unit shows them again); once
+    the readings give no result, they hold the last one no longer (a million-sample fringe
+    result would be kept for nothing)."""
+    presenter = PositioningPresenter()
+    _sample(qtbot, presenter, samples_dir, "positioning")
+    earlier = weakref.ref(presenter.result)
+    presenter.table_model.replace_all([], "cleared")
+    presenter.refresh()
+    assert presenter.result is None and presenter.problem
+    gc.collect()
+    assert earlier() is None
