@@ -6,6 +6,7 @@ from __future__ import annotations
 import gc
 import logging
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -73,14 +74,15 @@ class _AnalysisTask(QRunnable):
 
     def __init__(self, kind: Workbench, sheet: ReadingsSheet, settings: dict[str, Any],
                  generation: int, signals: _TaskSignals, prepare, current, workers: Workers,
-                 reading_keys: tuple[str, ...] = (), planned: int | None = None) -> None:
+                 reading_keys: tuple[str, ...] = (), planned: int | None = None,
+                 details: Any = None) -> None:
         super().__init__()
         self._args = (kind, sheet, settings, generation, signals, prepare, current, workers,
-                      reading_keys, planned)
+                      reading_keys, planned, details)
 
     def run(self) -> None:
         (kind, sheet, settings, generation, signals, prepare, current, workers, reading_keys,
-         planned) = self._args
+         planned, details) = self._args
         # a newer edit (come while this waited in the queue or ran) cancels this analysis at
         # its next checkpoint: the newer one has its thread and the interpreter to itself
         try:
@@ -96,11 +98,15 @@ class _AnalysisTask(QRunnable):
                 result, error = _run_analysis(kind, parsed, settings)
                 checkpoint()
                 display = _prepare_display(prepare, result)
+                checkpoint()
+                # the figures as the certificate prints them, here too: its coverage
+                # intervals are a bootstrap (the GUI thread paused 0.2-0.3 s for each take)
+                shown = _shown_on_worker(kind, result, details, settings)
         except AnalysisCancelled:
             emit_if_alive(signals.cancelled, generation)
             return
-        emit_if_alive(signals.finished, generation, (parsed, result, display, settings, sheet),
-                      error)
+        emit_if_alive(signals.finished, generation,
+                      (parsed, result, display, settings, sheet, shown), error)
 
 
 def _without_waiting_rows(parsed: ParsedReadings, sheet: ReadingsSheet,
@@ -118,6 +124,56 @@ def _without_waiting_rows(parsed: ParsedReadings, sheet: ReadingsSheet,
         return all(not sheet.text(row, c).strip() for c in columns)
 
     return without_waiting_rows(parsed, reading_keys, blank_reading, planned)[0]
+
+
+@dataclass(frozen=True)
+class ShownAsPrinted:
+    """What the window shows of ``result`` as its certificate prints it: the summary, the
+    verdict and the headline figures ({name: text}), rounded as the certificate made with
+    ``details`` (None: none yet) and the result's ``settings`` rounds them (the kind's
+    printed_rounding, review 62 F2). Made with the result where it was analysed (on the
+    worker for a large sheet or a take), and kept: a new language or unit shows it again."""
+
+    result: Any
+    details: Any
+    settings: dict[str, Any]
+    summary: Any
+    verdict: Any
+    printed: dict[str, str]
+
+    def of(self, result: Any, details: Any, settings: dict[str, Any]) -> bool:
+        """Whether this is what ``result`` with ``details`` and ``settings`` shows."""
+        return self.result is result and self.details == details and self.settings == settings
+
+
+def shown_as_printed(kind: Workbench, result: Any, details: Any,
+                     settings: dict[str, Any]) -> ShownAsPrinted:
+    """:class:`ShownAsPrinted` of ``result`` (models only: safe on a worker thread). The
+    certificate's rounding may be costly (the positioning's coverage intervals with the
+    reference standards' U are a bootstrap, the cross-calibration's budgets): computed
+    once here, never again on the GUI thread for the same result and details."""
+    from models.certificate.metadata import CertificateMetadata
+
+    printed_as = kind.printed_rounding(
+        result, details if details is not None else CertificateMetadata(), settings)
+    rounded = {} if printed_as is None else {"printed": printed_as}
+    summary = kind.summary(result, **rounded)
+    verdict = kind.verdict(result, **rounded) if isinstance(kind, ShowsHeadline) else ""
+    return ShownAsPrinted(result, details, dict(settings), summary, verdict,
+                          kind.printed_headline(result, printed_as))
+
+
+def _shown_on_worker(kind: Workbench, result: Any, details: Any,
+                     settings: dict[str, Any]) -> ShownAsPrinted | None:
+    """:func:`shown_as_printed` on a worker; None (the GUI thread then makes it) where there
+    is no result or making it failed (logged: a failure must not leave the window busy)."""
+    if result is None:
+        return None
+    try:
+        return shown_as_printed(kind, result, details, settings)
+    except Exception:  # noqa: BLE001 - the GUI thread makes it again, and says what fails
+        log.exception("the figures as printed failed on the worker")
+        return None
 
 
 def _prepare_display(prepare, result: Any) -> Any:
@@ -242,6 +298,7 @@ class WorkbenchPresenter(QObject):
         # a certificate records these with its figures, never the sheet's rows of the moment
         self.result_sheet: ReadingsSheet = self.sheet.snapshot()
         self.display: Any = None  # prepare_display(result)
+        self.shown: ShownAsPrinted | None = None  # the texts of ``result`` as printed
         self.parsed: ParsedReadings | None = None
         self.problem = ""
         self.plan_problem = ""  # why the entry plan set cannot be made ("" when it can)
@@ -362,18 +419,21 @@ class WorkbenchPresenter(QObject):
         return tolerance, {name: getattr(b, "expanded", None) for name, b in budgets.items()}, \
             str(getattr(meta, "decision_quantity", "half_range"))
 
-    def printed_rounding(self, result: Any) -> Any:
-        """How the certificate of ``result`` rounds what the window shows too, with the
-        details it would be made with (none yet: the inputs the readings give), so that the
-        summary, verdict and figures show what it prints (the kind's printed_rounding)."""
-        of = getattr(self.kind, "printed_rounding", None)
-        if of is None:
-            return None
-        from models.certificate.metadata import CertificateMetadata
-
-        meta = self.certificate_details()
-        return of(result, meta if meta is not None else CertificateMetadata(),
-                  self.result_settings)
+    def shown_as_printed(self, result: Any, made: ShownAsPrinted | None = None
+                         ) -> ShownAsPrinted:
+        """The summary, verdict and figures of ``result`` as its certificate prints them,
+        with the details it would be made with now (none yet: the inputs the readings
+        give): ``made`` (the worker's) or the last ones shown where they are of this result,
+        these details and the result's settings; else made here, on the GUI thread (a
+        sheet analysed here, or new certificate details)."""
+        details = self.certificate_details()
+        for shown in (made, self.shown):
+            if shown is not None and shown.of(result, details, self.result_settings):
+                break
+        else:
+            shown = shown_as_printed(self.kind, result, details, self.result_settings)
+        self.shown = shown
+        return shown
 
     def in_unit_text(self, text: str) -> str:
         """A model's text in the chosen unit (converted from its figures), then in the
@@ -694,7 +754,7 @@ class WorkbenchPresenter(QObject):
                               self._signals, self.prepare_display, lambda: self._generation,
                               self.workers,
                               self._reading_keys() if sheet.row_count <= PLAN_ROWS else (),
-                              planned))
+                              planned, self.certificate_details()))
             return
         parsed = self._without_waiting_rows(sheet.parse(), sheet, planned)
         settings = dict(self._settings)
@@ -732,10 +792,10 @@ class WorkbenchPresenter(QObject):
         if generation == self._generation:  # a newer edit supersedes this result
             if not self._import_pending:  # a file being read keeps the window busy
                 self._set_busy(False)
-            parsed, result, display, settings, sheet = payload
+            parsed, result, display, settings, sheet, shown = payload
             self._shown_generation = generation
             self.result_settings, self.result_sheet = settings, sheet
-            self._finish(parsed, result, error, display)
+            self._finish(parsed, result, error, display, shown)
 
     def _next_text(self) -> str:
         """"next: target 120°, run 3 ↓" with a plan; "next: row 57" without."""
@@ -749,7 +809,8 @@ class WorkbenchPresenter(QObject):
         done, total = plan.progress(got[0], self._reading_keys())
         return f"{text} ({done}/{total})"
 
-    def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None) -> None:
+    def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None,
+                shown: ShownAsPrinted | None = None) -> None:
         self.parsed = parsed
         self.display = display
         self.result = result
@@ -771,6 +832,7 @@ class WorkbenchPresenter(QObject):
                                              if parsed.errors else ""))
         self.view.set_next_row(next_text)
         if result is None:
+            self.shown = None  # (a million-sample result is not kept for nothing)
             self.clear_result()
             error = self.in_unit_text(error)
             no_result = tr("No result: {reason}").format(reason=error) if error else ""
@@ -785,18 +847,15 @@ class WorkbenchPresenter(QObject):
             incomplete = getattr(result, "incomplete", None)
             progress = (unit_text(incomplete.progress()) + "\n") if incomplete else ""
             # the figures the certificate prints, as it prints them (F2 of review 62)
-            printed_as = self.printed_rounding(result)
-            rounded = {} if printed_as is None else {"printed": printed_as}
-            self.view.set_summary(progress + unit_text(self.kind.summary(result, **rounded)))
-            self.view.set_verdict(unit_text(self.kind.verdict(result, **rounded))
-                                  if isinstance(self.kind, ShowsHeadline)
-                                  else "")
-            printed_of = getattr(self.kind, "printed_headline", None)
+            shown = self.shown_as_printed(result, shown)
+            self.view.set_summary(progress + unit_text(shown.summary))
+            self.view.set_verdict(unit_text(shown.verdict)
+                                  if isinstance(self.kind, ShowsHeadline) else "")
             printed = {}  # by the name shown; a figure shown in another unit: its value
-            for name, text in (printed_of(result, printed_as) if printed_of else {}).items():
-                shown, factor = header_in_unit(name, self.angle_unit)
+            for name, text in shown.printed.items():
+                header, factor = header_in_unit(name, self.angle_unit)
                 if factor == 1.0:
-                    printed[shown] = text
+                    printed[header] = text
             self.view.set_figures(figures_in_unit(self.kind.headline_figures(result),
                                                   self.angle_unit), printed)
             self.view.set_warnings(input_warnings + [unit_text(w) for w in

@@ -139,28 +139,48 @@ def tilt_effect_arcsec(solution: CrossCalibration, mounting, position, bound_arc
     tilts are independent, so their half-widths add in quadrature (each rectangular). Mountings
     whose tilt was fitted from vertical readings are left out. Of ``combine``·(E, d) when
     given."""
-    from models.pyramidal import pyramidal_correction_arcsec
-
-    n = solution.faces
-    mounting = np.asarray(mounting)
-    theta = (np.asarray(position, dtype=int) - 1) * 360.0 / n
     gain = _gain(solution, combine)
     total = np.zeros(gain.shape[0])
     if not bound_arcsec > 0:
         return total
-    for j, tilt in zip(solution.mountings, solution.tilts or (None,) * len(solution.mountings),
-                       strict=True):
-        if tilt is not None:  # fitted and removed
-            continue
-        rows = np.flatnonzero(mounting == j)
+    for rows, patterns in _tilt_patterns(solution, mounting, position, bound_arcsec,
+                                         directions):
         g = gain[:, rows]
         worst = np.zeros(gain.shape[0])
-        for omega in np.arange(directions) * 360.0 / directions:
-            eps = pyramidal_correction_arcsec(theta[rows], bound_arcsec, omega, 0.0,
-                                              solution.ac_alignment)
+        for eps in patterns:
             worst = np.maximum(worst, np.abs(g @ eps))
         total += worst**2
     return np.sqrt(total)
+
+
+def _tilt_patterns(solution: CrossCalibration, mounting, position, bound_arcsec: float,
+                   directions: int) -> list[tuple[np.ndarray, list[np.ndarray]]]:
+    """Per mounting whose tilt was not fitted: (its rows, the readings' change ε(ω) of a
+    tilt ``bound_arcsec`` towards each of ``directions`` directions ω), the part of
+    :func:`tilt_effect_arcsec` that neither the item nor ``combine`` changes. Kept with
+    ``solution``: an edit's window and a certificate ask for it five times (each item's
+    budget with and without the certificate details, the values from the first), and each
+    was 4300 evaluations of models.pyramidal (~0.05 s)."""
+    from models.pyramidal import pyramidal_correction_arcsec
+
+    mounting = np.asarray(mounting)
+    position = np.asarray(position, dtype=int)
+    key = (mounting.dtype.str, mounting.tobytes(), position.tobytes(), float(bound_arcsec),
+           int(directions))
+    cache = solution.__dict__.setdefault("_tilt_patterns", {})  # frozen: no attribute set
+    if key not in cache:
+        theta = (position - 1) * 360.0 / solution.faces
+        out = []
+        for j, tilt in zip(solution.mountings,
+                           solution.tilts or (None,) * len(solution.mountings), strict=True):
+            if tilt is not None:  # fitted and removed
+                continue
+            rows = np.flatnonzero(mounting == j)
+            out.append((rows, [pyramidal_correction_arcsec(theta[rows], bound_arcsec, omega,
+                                                           0.0, solution.ac_alignment)
+                               for omega in np.arange(directions) * 360.0 / directions]))
+        cache[key] = out
+    return cache[key]
 
 
 def tilt_fit_effect_arcsec(solution: CrossCalibration, mounting, position) -> np.ndarray:

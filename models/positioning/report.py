@@ -327,7 +327,10 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
             {name: stats.runs for name, _, stats in present},
             budget.probability, u_b,
             readings_seed(result.targets, result.directions, result.deviations),
-            figures=figures, pair_u=pair)
+            figures=figures, pair_u=pair,
+            # the bootstrap without the Type B inputs, drawn once for the window's intervals
+            # and the certificate's (which unites them with its own)
+            cache=result.__dict__.setdefault("_figure_bootstraps", {}))
     return cache[key]
 
 

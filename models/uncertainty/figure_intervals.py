@@ -406,8 +406,8 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
                      type_b_u: np.ndarray | float | None = None, seed: int = 0,
                      trials: int = INTERVAL_TRIALS, figures: dict[str, float] | None = None,
                      outer: int = OUTER_TRIALS, inner: int = INNER_TRIALS,
-                     pair_u: float | None = None, model_modes: np.ndarray | None = None
-                     ) -> dict[str, FigureInterval]:
+                     pair_u: float | None = None, model_modes: np.ndarray | None = None,
+                     cache: dict | None = None) -> dict[str, FigureInterval]:
     """The coverage interval of every axis figure.
 
     Parameters
@@ -438,7 +438,57 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         z @ model_modes, z ~ N(0, I_k) (a set-up model whose fit left parameter errors).
         Drawn so in every trial, and, unlike ``type_b_u`` (a certificate's envelope whose
         correlation is not known), no union: its covariance is the fit's own.
+    cache : dict, optional
+        Where the bootstrap of these readings is kept (kept with the result they are of:
+        models.positioning.report.figure_uncertainties). The draws do not depend on the
+        probability, and the readings without the Type B inputs are drawn for the window's
+        intervals and again inside a certificate's (twice: at the probability and at its
+        half tail): with a cache each is drawn once, the same draws as without it.
     """
+    drawn = _simulation(means, stds, runs, type_b_u, seed, trials, figures, outer, inner,
+                        model_modes, cache)
+    out = _intervals(drawn, probability)
+    u_b = drawn.shared.u
+    if np.any(u_b):
+        # the reference perfect: the same readings without the Type B inputs
+        plain = _simulation(means, stds, runs, None, seed, trials, figures, outer, inner,
+                            drawn.shared.modes, cache)
+        bare = _intervals(plain, probability)
+        # the reference's errors shaped as the curve's worst (a once-a-turn error that lowers
+        # the crests and raises the troughs): the figure of the readings without them, at
+        # half the tail each side, widened by the largest difference of two targets' errors
+        tail = 0.5 * (1.0 - probability)
+        pair = 2.0 * float(np.max(u_b)) if pair_u is None else float(pair_u)
+        wide = _intervals(plain, 1.0 - tail) if pair > 0.0 else bare
+        shift = float(ndtri(1.0 - 0.5 * tail)) * pair
+        for key in TYPE_B_FIGURES & out.keys() & bare.keys() & wide.keys():
+            here, there, far = out[key], bare[key], wide[key]
+            out[key] = FigureInterval(here.value, max(min(here.low, there.low,
+                                                          far.low - shift), 0.0),
+                                      max(here.high, there.high, far.high + shift),
+                                      here.probability)
+    return out
+
+
+@dataclass(frozen=True)
+class _Simulation:
+    """The bootstrap of one set of readings (:func:`_simulation`): all that
+    :func:`figure_intervals` draws, none of which depends on the probability."""
+
+    x: dict[str, np.ndarray]
+    sig_mean: dict[str, np.ndarray]
+    n: dict[str, np.ndarray]
+    shared: SharedErrors
+    measured: dict[str, float]
+    pivots: dict[str, np.ndarray]  # the ranges' (RANGE_FIGURES) from the triple-goal world
+    scores: dict[str, np.ndarray] | None  # the calibration's (None: not calibrated)
+    raw_pivots: dict[str, np.ndarray]  # the unshrunk world's
+
+
+def _simulation(means, stds, runs, type_b_u, seed, trials, figures, outer, inner,
+                model_modes, cache: dict | None) -> _Simulation:
+    """The bootstrap of :func:`figure_intervals`' readings (its arguments), from ``cache``
+    when these were drawn before (kept there by everything they are drawn from)."""
     keys = list(means)
     m = means[keys[0]].size
     n = {k: np.asarray(runs[k], float) for k in keys}
@@ -447,6 +497,15 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
     u_b = np.zeros(m) if type_b_u is None else np.broadcast_to(
         np.asarray(type_b_u, float), (m,)).copy()
     modes = None if model_modes is None else np.asarray(model_modes, float).reshape(-1, m)
+    key = None
+    if cache is not None:
+        key = ("figure_intervals", tuple((k, x[k].tobytes(), s[k].tobytes(), n[k].tobytes())
+                                         for k in keys),
+               u_b.tobytes(), None if modes is None else (modes.shape, modes.tobytes()),
+               int(seed), int(trials), int(outer), int(inner),
+               None if figures is None else tuple(sorted(figures.items())))
+        if key in cache:
+            return cache[key]
     shared = SharedErrors(u_b, modes)
     measured = figures if figures is not None else world_truth(x, s)
     mu_w, sig_w, sig_mean = _world(x, s, n, shared)
@@ -455,11 +514,8 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
     drawn = _draw(mu_w, sig_w, sig_mean, n, shared, (trials,), rng)
     sims = axis_figures(drawn)
     pivots = {k: sims[k] - truth[k] for k in sims}
-    tail = 0.5 * (1.0 - probability)
-    levels = {k: (tail, 1.0 - tail) for k in sims}
-    if outer and inner:
-        levels = _calibrated_levels(drawn, pivots, n, shared, outer, inner, tail, rng)
-    guard = _reversal_guard(x, sig_mean, n, tail) if "up" in x and "down" in x else None
+    scores = (_calibration_scores(drawn, pivots, n, shared, outer, inner, rng)
+              if outer and inner else None)
     # the unshrunk world (the measured means as the truth): where the scatter hides one
     # target far off, the shrunk world flattens it and its interval falls short above
     raw_truth = world_truth(x, sig_w)
@@ -468,17 +524,34 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
     ens_mu = _world_means(x, sig_mean, n, shared, level=_ensemble)
     ens_truth = world_truth(ens_mu, sig_w)
     ens_sims = axis_figures(_draw(ens_mu, sig_w, sig_mean, n, shared, (trials,), rng))
-    for key in RANGE_FIGURES & ens_sims.keys():
-        pivots[key] = ens_sims[key] - ens_truth[key]
+    for k in RANGE_FIGURES & ens_sims.keys():
+        pivots[k] = ens_sims[k] - ens_truth[k]
+    out = _Simulation(x, sig_mean, n, shared, dict(measured), pivots, scores,
+                      {k: raw_sims[k] - raw_truth[k] for k in raw_sims})
+    if cache is not None:
+        cache[key] = out
+    return out
+
+
+def _intervals(drawn: _Simulation, probability: float) -> dict[str, FigureInterval]:
+    """The intervals at ``probability`` of a bootstrap (without the union with the
+    readings' own without the Type B inputs, which :func:`figure_intervals` makes)."""
+    x, sig_mean, n, shared, pivots = drawn.x, drawn.sig_mean, drawn.n, drawn.shared, drawn.pivots
+    tail = 0.5 * (1.0 - probability)
+    levels = {k: (tail, 1.0 - tail) for k in pivots}
+    if drawn.scores is not None:
+        levels = _calibrated_levels(drawn.scores, tail)
+    guard = _reversal_guard(x, sig_mean, n, tail) if "up" in x and "down" in x else None
+    for key in RANGE_FIGURES & pivots.keys():
         levels[key] = (tail, 1.0 - tail)
     out = {}
-    for key, value in measured.items():
-        if key not in sims or value is None or not math.isfinite(value):
+    for key, value in drawn.measured.items():
+        if key not in pivots or value is None or not math.isfinite(value):
             continue
         q_lo, q_hi = np.quantile(pivots[key], levels[key])
         low, high = value - q_hi, value - q_lo
         if key in UNION_FIGURES:
-            r_lo, r_hi = np.quantile(raw_sims[key] - raw_truth[key], (tail, 1.0 - tail))
+            r_lo, r_hi = np.quantile(drawn.raw_pivots[key], (tail, 1.0 - tail))
             low, high = min(low, value - r_hi), max(high, value - r_lo)
         if guard is not None and key in ("B", "U_max"):
             low, high = min(low, guard[0]), max(high, guard[1])
@@ -488,23 +561,6 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
             high = _range_bound(*_range_terms(key, x, sig_mean, n, shared), tail)
         out[key] = FigureInterval(float(value), float(low), float(high),
                                   min(probability, ACHIEVED.get(key, probability)))
-    if np.any(u_b):
-        # the reference perfect: the same readings without the Type B inputs
-        bare = figure_intervals(means, stds, runs, probability, None, seed, trials, figures,
-                                outer, inner, model_modes=modes)
-        # the reference's errors shaped as the curve's worst (a once-a-turn error that lowers
-        # the crests and raises the troughs): the figure of the readings without them, at
-        # half the tail each side, widened by the largest difference of two targets' errors
-        pair = 2.0 * float(np.max(u_b)) if pair_u is None else float(pair_u)
-        wide = (figure_intervals(means, stds, runs, 1.0 - tail, None, seed, trials, figures,
-                                 outer, inner, model_modes=modes) if pair > 0.0 else bare)
-        shift = float(ndtri(1.0 - 0.5 * tail)) * pair
-        for key in TYPE_B_FIGURES & out.keys() & bare.keys() & wide.keys():
-            here, there, far = out[key], bare[key], wide[key]
-            out[key] = FigureInterval(here.value, max(min(here.low, there.low,
-                                                          far.low - shift), 0.0),
-                                      max(here.high, there.high, far.high + shift),
-                                      here.probability)
     return out
 
 
@@ -569,7 +625,7 @@ def _reversal_guard(x, sig_mean, n, tail) -> tuple[float, float]:
             float(np.max(reversal + float(ndtri(1.0 - tail)) * se)))
 
 
-def _calibrated_levels(drawn, pivots, n, shared, outer, inner, tail, rng):
+def _calibration_scores(drawn, pivots, n, shared, outer, inner, rng) -> dict[str, np.ndarray]:
     """The levels of the pivot's quantiles that make the interval cover at the probability
     asked for, by the iterated bootstrap (prepivoting, Beran 1987, Biometrika 74:457;
     Hall & Martin 1988): each outer test drawn from the world gets its own world and its
@@ -577,7 +633,8 @@ def _calibrated_levels(drawn, pivots, n, shared, outer, inner, tail, rng):
     inner pivots' mean and standard deviation, is N(0, 1) when the interval is exact. The
     mean and the standard deviation of those standardised pivots over the outer tests (the
     normal form of the prepivot: two moments, steadier than its tail quantiles) give the
-    levels that correct it."""
+    levels that correct it (:func:`_calibrated_levels`): here each figure's standardised
+    pivots over the outer tests."""
     scores: dict[str, list[np.ndarray]] = {}
     outer = min(outer, next(iter(pivots.values())).size)
     for start in range(0, outer, _CHUNK):
@@ -597,10 +654,16 @@ def _calibrated_levels(drawn, pivots, n, shared, outer, inner, tail, rng):
             z = np.divide(pivots[key][sl] - centre, spread,
                           out=np.zeros_like(centre), where=spread > 0)
             scores.setdefault(key, []).append(z)
+    return {key: np.concatenate(parts) for key, parts in scores.items()}
+
+
+def _calibrated_levels(scores: dict[str, np.ndarray], tail: float
+                       ) -> dict[str, tuple[float, float]]:
+    """The levels of the pivot's quantiles, each side ``tail`` asked for, from the mean and
+    the standard deviation of the standardised pivots (:func:`_calibration_scores`)."""
     z_tail = float(ndtri(1.0 - tail))
     levels = {}
-    for key, parts in scores.items():
-        z = np.concatenate(parts)
+    for key, z in scores.items():
         shift, scale = float(np.mean(z)), max(float(np.std(z, ddof=1)), 1.0)
         levels[key] = (float(ndtr(shift - z_tail * scale)), float(ndtr(shift + z_tail * scale)))
     return levels
