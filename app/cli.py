@@ -365,12 +365,15 @@ def run_analyze(argv: list[str]) -> int:
     try:
         check_outputs(outputs, _protected(inputs))
         # an issued file (any certificate's PDF, DCC or results file) is never replaced, by
-        # an issue (checked again there) or a draft, a specimen, results or a table (rev62 F8)
-        from app.issued_outputs import refuse_issued_outputs
-        from models.register.location import register_url
+        # an issue (checked again there) or a draft, a specimen, results or a table (rev62 F8);
+        # its module (hashlib, logging, tempfile, shutil: a tenth of numpy's import) only for
+        # a run that writes something: a plain analyze has nothing to check
+        if any(out for _flag, out in outputs):
+            from app.issued_outputs import refuse_issued_outputs
+            from models.register.location import register_url
 
-        for said in refuse_issued_outputs(register_url(), outputs):  # a results file kept
-            _say(f"anglebench analyze: {rendered(said, words)}")
+            for said in refuse_issued_outputs(register_url(), outputs):  # a results file kept
+                _say(f"anglebench analyze: {rendered(said, words)}")
     except OutputRefused as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT

@@ -1,8 +1,10 @@
 """No output replaces a file the register issued: the PDF, the DCC or the results file of
 any certificate, found by its SHA-256 (rev62 F8: a second certificate's ``--results`` replaced
 the first's results file, of which the register keeps only the SHA-256, and ``--results`` onto
-an issued PDF replaced it with a CSV). Light: a plain ``analyze`` imports it only when an
-output names a file that exists, or a killed save's temporary file beside one.
+an issued PDF replaced it with a CSV). ``analyze`` imports it only when an output is named
+(its hashlib, logging and tempfile cost a plain analyze a tenth of numpy's import:
+tests/app/test_cli_imports.py), and opens the register only when an output names a file
+that exists, or a killed save's temporary file beside one.
 
 A results file is written to a temporary file, recorded, then named (app/certificate_issue.py):
 an issue killed between the last two leaves the only copy of a recorded file under the

@@ -95,7 +95,10 @@ def _sniff_delimiter(text: str) -> str:
             continue
         # the delimiter appears the same number of times on most lines (a title line above
         # the table may have none: it does not count against the table's delimiter)
-        usual = Counter(counts).most_common(1)[0][0]
+        # (the first counted of the most frequent, as Counter.most_common(1) gives, without
+        # the heapq it imports: a plain analyze starts without it)
+        tally = Counter(counts)
+        usual = max(tally, key=tally.__getitem__)
         score = sum(1 for c in counts if c == usual) * 10 + usual
         if score > best_score:
             best, best_score = delim, score

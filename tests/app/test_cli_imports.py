@@ -24,13 +24,16 @@ HEAVY = ("PySide6", "shiboken6", "pyqtgraph", "sqlalchemy", "psycopg", "fpdf", "
 #: and a certificate load them), the plot declarations, the entry plan and the capture
 #: guide (the window's), json (--json and the details), and what argparse's help would
 #: bring (shutil with the compression modules, locale through gettext), tempfile (an
-#: atomic write)
+#: atomic write); and, with no output named, the check that no output replaces an issued
+#: file (app/issued_outputs.py, with hashlib, logging, tempfile and shutil: some 15 ms of
+#: CPU, a tenth of the polygon's whole run), and heapq (Counter.most_common, for a delimiter)
 NOT_FOR_A_SUMMARY = ("models.certificate.metadata", "models.certificate.document",
                      "models.certificate.builder", "models.uncertainty.budget",
                      "models.uncertainty.conformity", "models.plots",
                      "models.readings.entry_plan", "models.capture.guidance",
                      "models.register.store", "models.project.file", "app.writers", "json",
-                     "shutil", "locale", "tempfile")
+                     "shutil", "locale", "tempfile", "app.issued_outputs",
+                     "models.project.atomic_write", "hashlib", "logging", "heapq")
 
 #: what even --json (whose U comes with the certificate's figures and budgets, so
 #: scipy.special) never needs: the PDF, the spreadsheet, the register, the window's texts
