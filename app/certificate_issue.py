@@ -56,7 +56,7 @@ def _write_results(register: Register, record: CertificateRecord, path: str,
     import tempfile
     from pathlib import Path
 
-    from models.project.atomic_write import _mode_for, _temp_prefix, fsync_directory
+    from models.project.atomic_write import _mode_for, _temp_prefix
     from models.project.output_guard import refuse_database
     from models.register.store import RegisterError
 
@@ -92,7 +92,6 @@ def _write_results(register: Register, record: CertificateRecord, path: str,
     except OSError as exc:
         raise IssuedNotWritten(record, path, exc, "results", recorded=True,
                                kept=keep_in_sight(temp, target, record.number)) from exc
-    fsync_directory(target.parent)
 
 
 def _place(register: Register, temp: str, target) -> None:
@@ -103,17 +102,16 @@ def _place(register: Register, temp: str, target) -> None:
     when ``target`` exists; then ``target`` is replaced only when it is no issued file (a
     file that was there at the check, as before). Refused (OutputRefused, an OSError), the
     bytes stay in ``temp``. Where hard links cannot be made (some network and FAT file
-    systems) the issued-file check is made again just before the rename."""
-    import contextlib
+    systems) the issued-file check is made again just before the rename. Either way the
+    new name is made for good (models/project/durable_rename.py: the folder fsync'ed, on
+    Windows a write-through move) before the issue is reported done."""
+    from models.project.durable_rename import rename_new_durably, replace_durably
 
     try:
-        os.link(temp, target)
+        rename_new_durably(temp, target)
     except OSError:  # the name is taken (FileExistsError), or no hard links here
         refuse_issued_files(register, [("", os.fspath(target))])
-        os.replace(temp, target)
-        return
-    with contextlib.suppress(OSError):  # placed: a temporary name left is harmless
-        os.unlink(temp)
+        replace_durably(temp, target)
 
 
 def draft_reasons(metadata: CertificateMetadata) -> list[str]:

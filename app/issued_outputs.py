@@ -22,7 +22,8 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from models.messages import QT_TR_NOOP, Message, message, separated
-from models.project.atomic_write import fsync_directory, stale_temporaries
+from models.project.atomic_write import stale_temporaries
+from models.project.durable_rename import fsync_directory, rename_new_durably
 from models.project.output_guard import OutputRefused, sqlite_path_of_url
 from models.register.wording import issued_file_words
 
@@ -48,15 +49,15 @@ def keep_in_sight(temp: str | os.PathLike[str], target, number: str) -> str:
     """A recorded results file that is not in place, moved from its temporary name (which a
     later save of the same name clears as a killed save's leftover after ten minutes: the
     only copy, the register keeps its SHA-256 alone) to one beside ``target`` that names its
-    certificate, ``r.AB-2026-0002.xlsx``: a hard link, else a copy, never replacing a file
-    (``r.AB-2026-0002-2.xlsx`` when that is taken); then the temporary name removed. The
-    temporary name when neither can be made."""
+    certificate, ``r.AB-2026-0002.xlsx``: a hard link (Windows: a write-through move), else a
+    copy, never replacing a file (``r.AB-2026-0002-2.xlsx`` when that is taken); then the
+    temporary name removed. The temporary name when neither can be made."""
     target, temp = Path(target), os.fspath(temp)
     for n in range(1, 100):
         tail = "" if n == 1 else f"-{n}"
         name = target.with_name(f"{target.stem}.{number}{tail}{target.suffix}")
         try:
-            os.link(temp, name)
+            rename_new_durably(temp, name)  # never over a file; for good
         except FileExistsError:
             continue
         except OSError:  # no hard links here (some network and FAT file systems): a copy
@@ -66,9 +67,9 @@ def keep_in_sight(temp: str | os.PathLike[str], target, number: str) -> str:
                 continue
             except OSError:
                 return temp
-        fsync_directory(name.parent)
-        with contextlib.suppress(OSError):
-            os.unlink(temp)
+            fsync_directory(name.parent)
+            with contextlib.suppress(OSError):
+                os.unlink(temp)
         return os.fspath(name)
     return temp
 

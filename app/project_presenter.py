@@ -32,7 +32,7 @@ from models.project.file import (
     save_project,
 )
 from models.project.recovery import RecoveryStore
-from models.project.save_lock import LockInTheWay, ProjectFileBusy, SaveLock
+from models.project.save_lock import STALE_SECONDS, LockInTheWay, ProjectFileBusy, SaveLock
 from models.readings.sheet import NumericRows
 from widgets.i18n import explained, tr, translated
 from widgets.workbench_presenter import WorkbenchPresenter
@@ -72,6 +72,16 @@ def _in_the_way(exc: LockInTheWay) -> str:
             "delete {lock}, then save again, or save under another name (File › Save "
             "as).").format(lock=exc.path, minutes=int((exc.age or 0) // 60),
                             owner=exc.owner, error=exc.error)
+    if exc.kind == "future":
+        return tr(
+            "{lock} is dated {date}, later than this computer's clock (a computer whose clock "
+            "is ahead made it, or this clock was set back), so its age cannot be told. "
+            "Nothing was written; your readings are still here. If no other window or "
+            "computer is saving this project, delete {lock} and save again; otherwise save "
+            "again in {minutes} minutes: a lock left unchanged that long is taken as left "
+            "over.").format(lock=exc.path, minutes=int(STALE_SECONDS // 60),
+                            date=time.strftime("%Y-%m-%d %H:%M:%S",
+                                               time.localtime(exc.dated or 0)))
     kind = {"link": tr("a link"), "pipe": tr("a named pipe"),
             "folder": tr("a folder")}.get(exc.kind, tr("not a regular file"))
     return tr(

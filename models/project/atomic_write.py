@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import contextlib
 import glob
-import logging
 import os
 import stat
 import tempfile
@@ -12,41 +11,10 @@ import time
 from collections.abc import Iterable
 from pathlib import Path
 
+from models.project.durable_rename import fsync_directory, replace_durably
 from models.project.output_guard import refuse_database
 
 __all__ = ["fsync_directory", "stale_temporaries", "write_bytes_atomic", "write_text_atomic"]
-
-log = logging.getLogger(__name__)
-
-
-def fsync_directory(folder: str | os.PathLike[str]) -> bool:
-    """Make the renames done in ``folder`` survive a power loss (POSIX: fsync the folder;
-    the file's own fsync does not make its new name durable, and on a file system that
-    does not order the two, e.g. ext4 without data=ordered or XFS, the rename can be lost
-    after the save was reported done).
-
-    False where it cannot be done: Windows cannot open a folder (no ``O_DIRECTORY``), and
-    some file systems (network shares, FUSE) refuse to open or fsync one. That is logged,
-    never raised: the rename has happened and every program already reads the new file;
-    calling it a failed save would send the user to save again, or elsewhere, for a file
-    that is there (and on such a share every save would fail)."""
-    flag = getattr(os, "O_DIRECTORY", None)
-    if flag is None:
-        return False
-    try:
-        fd = os.open(folder, os.O_RDONLY | flag)
-    except OSError as exc:
-        log.warning("cannot open %s to make a rename in it durable: %s", folder, exc)
-        return False
-    try:
-        os.fsync(fd)
-    except OSError as exc:
-        log.warning("cannot fsync %s (a rename in it may not survive a power loss): %s",
-                    folder, exc)
-        return False
-    finally:
-        os.close(fd)
-    return True
 
 
 def _mode_for(target: Path) -> int:
@@ -109,9 +77,10 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[byte
     so that readers see the old or the new file, never half.
 
     The temporary file is created in the target's folder (so the rename stays on
-    one file system), flushed and fsync'ed before ``os.replace``; the folder is fsync'ed
-    after it (:func:`fsync_directory`: the new name survives a power loss; where the
-    folder cannot be fsync'ed the file is written all the same). On any error before the
+    one file system), flushed and fsync'ed before it is renamed into place for good
+    (:func:`~models.project.durable_rename.replace_durably`: the folder fsync'ed after
+    it, or on Windows a write-through rename, so the new name survives a power loss;
+    where the folder cannot be fsync'ed the file is written all the same). On any error before the
     rename the temporary file is removed and the old file is left untouched. A target that is a
     SQLite database or one of its journals (a certificate register) is refused
     (OutputRefused, an OSError) before anything is written.
@@ -130,12 +99,11 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[byte
                 handle.write(piece)
             handle.flush()
             os.fsync(handle.fileno())
-        os.replace(tmp_name, target)
+        replace_durably(tmp_name, target)
     except BaseException:
         with contextlib.suppress(OSError):
             os.unlink(tmp_name)
         raise
-    fsync_directory(target.parent)
 
 
 def write_text_atomic(path: str | os.PathLike[str], text: str | Iterable[str],

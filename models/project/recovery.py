@@ -17,7 +17,7 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
-from models.project.atomic_write import fsync_directory
+from models.project.durable_rename import replace_durably
 from models.project.file import Project, ProjectFileError, load_project, save_project
 
 try:  # POSIX: a lock the kernel drops when the process dies
@@ -160,8 +160,7 @@ class RecoveryStore:
                     with contextlib.suppress(OSError):
                         pending.unlink()
                     return False
-                os.replace(pending, self.path)
-                fsync_directory(self.folder)  # renamed for good before the orphans go
+                replace_durably(pending, self.path)  # for good before the orphans go
                 for orphan in self._adopted:  # their work is in this window's autosave now
                     with contextlib.suppress(FileNotFoundError):
                         orphan.unlink()
@@ -215,8 +214,7 @@ class RecoveryStore:
         stamp = time.strftime("%Y%m%d-%H%M%S")
         target = path.with_name(f"{path.name}.{why}-{stamp}-{uuid.uuid4().hex[:6]}.json")
         with contextlib.suppress(OSError):
-            path.replace(target)
-            fsync_directory(target.parent)
+            replace_durably(path, target)
         self._drop_lock_of(path)
         return target
 
@@ -230,8 +228,7 @@ class RecoveryStore:
         if not self.exists():
             try:
                 with self._publish_lock:
-                    os.replace(path, self.path)
-                    fsync_directory(self.folder)  # before its lock goes
+                    replace_durably(path, self.path)  # for good before its lock goes
             except OSError:
                 pass
             else:

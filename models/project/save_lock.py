@@ -22,6 +22,14 @@ saving for good. It is stale:
   for :data:`STALE_SECONDS`. A live save touches it every :data:`TOUCH_SECONDS` between
   blocks of rows, so a live one is never that old; the margin covers the final fsync of
   a large file on a slow share and the clocks of two workstations set a little apart.
+- dated more than :data:`FUTURE_TOLERANCE_SECONDS` ahead of this computer's clock (made
+  by a computer whose clock is ahead, or this clock was set back since): its age cannot
+  be told from its date (now − date is negative, and such a lock was never stale, every
+  save refused until that date came). It is stale once this process has seen it
+  unchanged (same file, size, date and content) for :data:`STALE_SECONDS` of its own
+  monotonic clock: a live save touches it, which changes its date. A save that gives up
+  waiting on one says so (:class:`LockInTheWay` "future", naming its date), so that the
+  user can remove it or save again once it has been seen unchanged for that long.
 
 Taking a lock that a live save holds waits up to :data:`WAIT_SECONDS` (a save of 150,000
 rows takes about 0.3 s), then gives up with :class:`ProjectFileBusy`: the save is not
@@ -52,6 +60,7 @@ import logging
 import os
 import socket
 import stat
+import threading
 import time
 from pathlib import Path
 
@@ -65,6 +74,8 @@ __all__ = ["LockInTheWay", "ProjectFileBusy", "SaveLock", "lock_path_of"]
 log = logging.getLogger(__name__)
 
 STALE_SECONDS = 120.0
+#: a lock dated further ahead than this is of unknown age (a clock ahead, or set back)
+FUTURE_TOLERANCE_SECONDS = 30.0
 TOUCH_SECONDS = 2.0
 WAIT_SECONDS = 15.0
 _POLL_SECONDS = 0.02
@@ -91,18 +102,55 @@ class ProjectFileBusy(OSError):
 class LockInTheWay(OSError):
     """A file at the lock's name that stops every save and that the user must remove:
     ``kind`` "link", "pipe", "folder" or "other" (not a regular file: not a lock any
-    AngleBench made), or "stale" (a lock untouched for ``age`` seconds that may not be
-    removed from here, ``error`` saying why); ``owner`` the user it belongs to (a name,
-    or a user id when the name is not known here)."""
+    AngleBench made), "stale" (a lock untouched for ``age`` seconds that may not be
+    removed from here, ``error`` saying why), or "future" (a lock ``dated`` ahead of this
+    computer's clock, seconds since the epoch, not yet seen unchanged for
+    :data:`STALE_SECONDS`: its age cannot be told); ``owner`` the user it belongs to (a
+    name, or a user id when the name is not known here)."""
 
     def __init__(self, path: Path, kind: str, owner: str, age: float | None = None,
-                 error: str = "") -> None:
+                 error: str = "", dated: float | None = None) -> None:
         super().__init__(errno.EEXIST, "in the way of the project's lock", str(path))
         self.path = Path(path)
         self.kind = kind
         self.owner = owner
         self.age = age
         self.error = error
+        self.dated = dated
+
+
+#: lock path -> (what it was when first seen so, time.monotonic() then): the age of a
+#: lock dated in the future is how long this process has seen it unchanged
+_seen: dict[str, tuple[tuple[object, ...], float]] = {}
+_seen_lock = threading.Lock()
+
+
+def _unchanged_for(path: Path, identity: tuple[object, ...]) -> float:
+    """How long (this process's monotonic clock) the lock at ``path`` has been seen as
+    ``identity``; 0 the first time, and each time it changed."""
+    now = time.monotonic()
+    with _seen_lock:
+        seen = _seen.get(str(path))
+        if seen is None or seen[0] != identity:
+            _seen[str(path)] = (identity, now)
+            return 0.0
+        return now - seen[1]
+
+
+def _forget(path: Path) -> None:
+    with _seen_lock:
+        _seen.pop(str(path), None)
+
+
+def _age(path: Path, info: os.stat_result, content: tuple[str, ...] = ()) -> tuple[float, bool]:
+    """The lock's age in seconds, and whether it is dated in the future (then the age is
+    how long it has been seen unchanged here, :func:`_unchanged_for`)."""
+    age = time.time() - info.st_mtime
+    if age >= -FUTURE_TOLERANCE_SECONDS:
+        _forget(path)
+        return age, False
+    identity = (info.st_dev, info.st_ino, info.st_size, info.st_mtime_ns, content)
+    return _unchanged_for(path, identity), True
 
 
 def _owner(uid: int) -> str:
@@ -171,6 +219,8 @@ class SaveLock:
         self.wait = WAIT_SECONDS if wait is None else wait
         self._fd: int | None = None
         self._touched = 0.0
+        #: (date, owner) of the lock last found in the way when it is dated in the future
+        self._future: tuple[float, str] | None = None
 
     @property
     def held(self) -> bool:
@@ -209,6 +259,9 @@ class SaveLock:
                     continue
                 holder = ("", "", None)  # the deadline holds whatever lies there
             if time.monotonic() >= deadline:
+                if self._future is not None:  # its age cannot be told: said, with its date
+                    dated, owner = self._future
+                    raise LockInTheWay(self.path, "future", owner, dated=dated)
                 raise ProjectFileBusy(self.path, *holder)
             time.sleep(_POLL_SECONDS)
 
@@ -236,6 +289,7 @@ class SaveLock:
         """Who holds the existing lock (host, pid, since); None when it was stale and is
         removed (or is gone already). :class:`LockInTheWay` when what lies there is not
         a lock file, or is a stale one that may not be removed."""
+        self._future = None
         try:  # never through a link, never waiting for a writer (a named pipe)
             fd = os.open(self.path, os.O_RDONLY | _NOFOLLOW | _NONBLOCK)
         except FileNotFoundError:
@@ -256,12 +310,17 @@ class SaveLock:
             except FileNotFoundError:
                 return None
             host, pid, _since = holder
-            age = time.time() - os.fstat(fd).st_mtime
+            now = os.fstat(fd)
+            age, future = _age(self.path, now, tuple(self._read(fd)))
             stale = bool(locked and pid.isdigit() and host == _host()) or age > STALE_SECONDS
             if not stale:
+                if future:
+                    self._future = (now.st_mtime, _owner(now.st_uid))
                 return holder
-            log.warning("removing the stale lock %s (host %s, process %s, untouched for %.0f s)",
-                        self.path, host or "?", pid or "?", age)
+            log.warning("removing the stale lock %s (host %s, process %s, untouched for %.0f s%s)",
+                        self.path, host or "?", pid or "?", age,
+                        ", dated in the future" if future else "")
+            _forget(self.path)
             if fcntl is not None:  # removed while our flock keeps other removers out
                 try:
                     os.unlink(self.path)
@@ -287,9 +346,12 @@ class SaveLock:
             return "", "", None
         if not stat.S_ISREG(info.st_mode):
             raise LockInTheWay(self.path, _kind(info.st_mode), _owner(info.st_uid)) from exc
-        age = time.time() - info.st_mtime
+        age, future = _age(self.path, info)
         if age <= STALE_SECONDS:  # another user's live save (its holder unreadable)
+            if future:
+                self._future = (info.st_mtime, _owner(info.st_uid))
             return "", "", None
+        _forget(self.path)
         log.warning("removing the stale lock %s (unreadable: %s; user %s, untouched for %.0f s)",
                     self.path, exc.strerror or exc, _owner(info.st_uid), age)
         try:  # no flock to keep other removers out: still that file?

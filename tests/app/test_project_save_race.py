@@ -205,3 +205,38 @@ def test_a_file_in_the_way_of_the_lock_is_named_and_nothing_is_lost(qtbot, tmp_p
     monkeypatch.undo()
     assert a.save() and not a.is_modified  # may be removed now: taken over, saved
     assert load_project(path).workbenches["theodolite"].rows[0][:3] == ["-20", "21.56", "0.5"]
+
+
+def test_a_lock_dated_in_the_future_is_said_with_its_date_and_nothing_is_lost(
+        qtbot, tmp_path, monkeypatch):
+    """#63 winlock: a lock dated a day ahead (a computer whose clock is ahead made it) made
+    every Save say "being saved from another window … save again in a moment" until that
+    date came. Now the Save says the lock's date is in the future, what to do, and nothing
+    is written; once it has been seen unchanged for STALE_SECONDS, Save takes it over."""
+    from models.project import save_lock
+
+    monkeypatch.setattr(save_lock, "WAIT_SECONDS", 0.3)  # 15 s: a save of millions of rows
+    monkeypatch.setattr(save_lock, "STALE_SECONDS", 1.0)  # two minutes
+    path = tmp_path / "job.anglebench.json"
+    a, view, (bench, _) = make(qtbot, tmp_path / "a")
+    bench.table_model.set_cells([(0, 0, "-20"), (0, 1, "21.56")])
+    assert a.save_to(path)
+    before = path.read_bytes()
+    bench.table_model.set_cells([(0, 2, "0.5")])
+    lock = lock_path_of(path)
+    tomorrow = time.time() + 86400
+    lock.write_text(f"4242 bench-7 {tomorrow:.3f}\n")
+    os.utime(lock, (tomorrow, tomorrow))
+    assert a.save() is False
+    date = time.strftime("%Y-%m-%d %H:%M:%S", time.localtime(tomorrow))
+    view.tell.assert_called_once_with("Cannot save", (
+        f"{lock} is dated {date}, later than this computer's clock (a computer whose clock is "
+        f"ahead made it, or this clock was set back), so its age cannot be told. Nothing was "
+        f"written; your readings are still here. If no other window or computer is saving "
+        f"this project, delete {lock} and save again; otherwise save again in 2 minutes: a "
+        f"lock left unchanged that long is taken as left over."))
+    assert path.read_bytes() == before and a.is_modified and lock.exists()
+    time.sleep(1.1)  # unchanged since the first Save saw it: its save is gone
+    assert a.save() and not a.is_modified
+    assert load_project(path).workbenches["theodolite"].rows[0][:3] == ["-20", "21.56", "0.5"]
+    assert not lock.exists()

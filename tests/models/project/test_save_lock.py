@@ -260,3 +260,47 @@ def test_a_lock_made_with_umask_077_is_readable_by_another_users_saver(tmp_path)
             assert lock.path.stat().st_mode & 0o777 == 0o644
     finally:
         os.umask(old)
+
+
+def test_a_lock_dated_in_the_future_is_said_then_stale_once_seen_unchanged_for_long(
+        tmp_path, monkeypatch):
+    """#63 winlock: a lock dated a day ahead (made by a computer whose clock is ahead, or
+    this clock was set back) has a negative age, and was never stale: every save was
+    refused as "being saved from another window" until that date came. Its age cannot be
+    told from its date: the save says so, naming the date; it is stale once this process
+    has seen it unchanged for STALE_SECONDS of its own clock (a live save touches it)."""
+    monkeypatch.setattr(save_lock, "STALE_SECONDS", 0.6)
+    path = tmp_path / "job.anglebench.json"
+    lock_file = lock_path_of(path)
+    tomorrow = time.time() + 86400
+    lock_file.write_text(f"4242 bench-7 {tomorrow:.3f}\n")
+    os.utime(lock_file, (tomorrow, tomorrow))
+    me = __import__("pwd").getpwuid(os.getuid()).pw_name
+    with pytest.raises(LockInTheWay) as caught:
+        SaveLock(path, wait=0.2).acquire()
+    assert (caught.value.kind, caught.value.owner, caught.value.path) == ("future", me,
+                                                                          lock_file)
+    assert caught.value.dated == pytest.approx(tomorrow, abs=0.01)
+    assert lock_file.read_text() == f"4242 bench-7 {tomorrow:.3f}\n"
+    time.sleep(0.3)
+    os.utime(lock_file, (tomorrow + 2, tomorrow + 2))  # touched: a live save, its clock ahead
+    time.sleep(0.4)  # 0.7 s since first seen, only 0.4 s since it changed: not stale
+    with pytest.raises(LockInTheWay):
+        SaveLock(path, wait=0).acquire()
+    time.sleep(0.7)  # left alone for longer than STALE_SECONDS: the save that made it is gone
+    with SaveLock(path, wait=0) as lock:
+        assert lock.path.read_text().split()[:2] == [str(os.getpid()), socket.gethostname()]
+    assert not lock_file.exists()
+
+
+def test_a_lock_a_few_seconds_ahead_is_judged_by_its_date(tmp_path):
+    """Two workstations' clocks a few seconds apart: a fresh lock is a live save's, waited
+    for and said as one (not "dated in the future")."""
+    path = tmp_path / "job.anglebench.json"
+    lock_file = lock_path_of(path)
+    soon = time.time() + save_lock.FUTURE_TOLERANCE_SECONDS / 2
+    lock_file.write_text(f"4242 bench-7 {soon:.3f}\n")
+    os.utime(lock_file, (soon, soon))
+    with pytest.raises(ProjectFileBusy) as caught:
+        SaveLock(path, wait=0.1).acquire()
+    assert caught.value.holder == "bench-7, process 4242"
