@@ -7,8 +7,8 @@ written in the unit the user chose to read them in (arcseconds unless told),
 each header naming it.
 
 Numbers are written as numbers; on the *Results* sheet each point's figures three decimals
-finer than the certificate prints them (models/certificate/export_resolution.py). The *Parameters*, *Statistics* and *Uncertainty
-budget* tables are printed text on the certificate ("+3.77627 V", "-0.12\" … +0.34\"");
+finer than the certificate prints them (models/certificate/export_resolution.py). The
+*Parameters*, *Statistics* and *Uncertainty budget* tables are printed text on the certificate ("+3.77627 V", "-0.12\" … +0.34\"");
 on the sheets each figure becomes a number cell, its unit goes to the column's header
 (or, where the rows' units differ, to a unit column next to it), and a range, a pair
 or a value ± U is split into columns (see :func:`split_figures`). Any text cell that starts with ``=``, ``+``,

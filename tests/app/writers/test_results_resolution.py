@@ -17,7 +17,6 @@ from models.certificate.document import table_decimals
 from models.uncertainty.rounding import uncertainty_decimals
 from tests.app.writers.test_certificate_export import _analysed, _meta
 
-
 EXTRA_DECIMALS = 3  # the documented rule (docs/certificates-and-register.md), stated here
 OTHER_SIGNIFICANT = 10
 
