@@ -8,13 +8,13 @@ each header naming it.
 
 Numbers are written as numbers; on the *Results* sheet each point's figures three decimals
 finer than the certificate prints them (models/certificate/export_resolution.py). The
-*Parameters*, *Statistics* and *Uncertainty budget* tables are printed text on the certificate ("+3.77627 V", "-0.12\" … +0.34\"");
-on the sheets each figure becomes a number cell, its unit goes to the column's header
-(or, where the rows' units differ, to a unit column next to it), and a range, a pair
-or a value ± U is split into columns (see :func:`split_figures`). Any text cell that starts with ``=``, ``+``,
-``-``, ``@``, a tab or a carriage return is prefixed with an apostrophe so a
-spreadsheet shows it as text instead of running it as a formula (CSV/formula
-injection, OWASP). Files are written atomically.
+*Parameters*, *Statistics* and *Uncertainty budget* tables are printed text on the
+certificate ("+3.77627 V", "-0.12\" … +0.34\""); on the sheets each figure becomes a
+number cell, its unit goes to the column's header (or, where the rows' units differ, to a
+unit column next to it), and a range, a pair or a value ± U is split into columns (see
+:func:`split_figures`). Any text cell that starts with ``=``, ``+``, ``-``, ``@``, a tab
+or a carriage return is prefixed with an apostrophe so a spreadsheet shows it as text
+instead of running it as a formula (CSV/formula injection, OWASP). Files are written atomically.
 """
 
 from __future__ import annotations
