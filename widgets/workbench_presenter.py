@@ -17,6 +17,7 @@ from models.capture.take_cells import waiting_row
 from models.display_units import (
     ANGLE_UNITS,
     AngleUnit,
+    decimals_in_unit,
     figure_in_unit,
     figures_in_unit,
     header_in_unit,
@@ -371,6 +372,17 @@ class WorkbenchPresenter(QObject):
         meta = self.certificate_details()
         return of(result, meta if meta is not None else CertificateMetadata(),
                   self.result_settings)
+
+    def _show_readout_decimals(self, printed_as: Any) -> None:
+        """The error plot's readout under the cursor to the decimals the certificate prints
+        the errors to (a kind whose printed rounding is one decimal, in arcseconds), in the
+        unit shown; else the plot's own (the data's)."""
+        plot = getattr(self.view, "error_plot", None)
+        if plot is None or not hasattr(plot, "set_readout_decimals"):
+            return
+        printed = isinstance(printed_as, int) and not isinstance(printed_as, bool)
+        plot.set_readout_decimals(decimals_in_unit(printed_as, self.angle_unit)
+                                  if printed else None)
 
     def in_unit_text(self, text: str) -> str:
         """A model's text in the chosen unit (converted from its figures), then in the
@@ -770,6 +782,7 @@ class WorkbenchPresenter(QObject):
             # the figures the certificate prints, as it prints them (F2 of review 62)
             printed_as = self.printed_rounding(result)
             rounded = {} if printed_as is None else {"printed": printed_as}
+            self._show_readout_decimals(printed_as)
             self.view.set_summary(progress + unit_text(self.kind.summary(result, **rounded)))
             self.view.set_verdict(unit_text(self.kind.verdict(result, **rounded))
                                   if isinstance(self.kind, ShowsHeadline)
