@@ -36,6 +36,7 @@ __all__ = [
     "ANGLE_UNITS",
     "AngleUnit",
     "angle_unit",
+    "decimals_in_unit",
     "figure_in_unit",
     "figures_in_unit",
     "header_in_unit",
@@ -88,6 +89,13 @@ def _places(value: float, decimals: int, factor: float) -> int:
     if value != 0.0 and math.isfinite(value):
         places = max(places, 2 - math.floor(math.log10(abs(value))))
     return max(0, places)
+
+
+def decimals_in_unit(decimals: int, unit: AngleUnit) -> int:
+    """The decimals a figure printed to ``decimals`` in arcseconds is shown to in ``unit``:
+    its resolution carried over (0.01″ is 0.01 µrad, 0.001 mdeg), as :func:`text_in_unit`
+    converts a printed figure."""
+    return max(0, decimals + max(0, math.ceil(-math.log10(unit.per_arcsec))))
 
 
 def _factor(spelt: str, unit: AngleUnit) -> float:

@@ -18,6 +18,7 @@ from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 from models.plot_style import ROLE_STYLES
 from models.plots import PlotFigure, PlotSeries
 from models.tolerance_band import TOLERANCE_ROLE, UNCERTAINTY_ROLE
+from models.uncertainty.rounding import significant_decimals
 from widgets.figure_plot import FigureRenderer
 from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
@@ -62,6 +63,8 @@ class ErrorPlot(QWidget):
                  residual_label: str = "residual (\")") -> None:
         super().__init__(parent)
         self.unit = "\""  # of the errors drawn, for the readout under the cursor
+        #: the decimals the readout shows the errors to: the certificate's (None: the data's)
+        self.decimals: int | None = None
         self._setup_ui(x_label, residual_label)
         self._layout()
 
@@ -225,6 +228,27 @@ class ErrorPlot(QWidget):
             self.set_axis_label(self.residual_plot, "left", _with_unit(
                 self.axis_label(self.residual_plot), _unit_of(residuals_label)))
 
+    def set_readout_decimals(self, decimals: int | None) -> None:
+        """The decimals the readout under the cursor shows the errors to: those the
+        certificate prints them to, in the unit drawn (None: three significant digits of
+        the curves' span, :meth:`readout_decimals`)."""
+        self.decimals = decimals
+
+    def readout_decimals(self) -> int:
+        """The decimals of the readout: the certificate's when told; else three significant
+        digits of the span of the curves drawn (a 0.98″ curve to 0.001″, a 723″ one to 0.1″;
+        it showed 0.001″ of every curve, and of µrad or mdeg as well)."""
+        if self.decimals is not None:
+            return self.decimals
+        values = [np.asarray(curve.getData()[1], dtype=float) for curve in
+                  (self.raw_curve, self.model_curve, self.corrected_curve)
+                  if curve.getData()[1] is not None]
+        values = np.concatenate(values) if values else np.empty(0)
+        values = values[np.isfinite(values)]
+        span = float(values.max() - values.min()) if values.size else 0.0
+        decimals = significant_decimals(span)  # two significant digits of the span: a third
+        return 2 if decimals is None else decimals + 1
+
     def set_residuals(self, x, residuals) -> None:
         if residuals is None:
             self.residual_renderer.clear()
@@ -246,11 +270,12 @@ class ErrorPlot(QWidget):
         self.vline.setPos(point.x())
         self.vline.show()
         parts = [f"x = {point.x():.4g}"]
+        decimals = self.readout_decimals()
         for curve in (self.raw_curve, self.model_curve, self.corrected_curve):
             xs, ys = curve.getData()
             if xs is None or len(xs) == 0:
                 continue
             i = int(np.argmin(np.abs(xs - point.x())))
             gap = "" if self.unit == "\"" else " "
-            parts.append(f"{curve.opts['name']} {ys[i]:+.3f}{gap}{self.unit} @ {xs[i]:.4g}")
+            parts.append(f"{curve.opts['name']} {ys[i]:+.{decimals}f}{gap}{self.unit} @ {xs[i]:.4g}")
         self.readout.setText("   ".join(parts))

@@ -8,7 +8,15 @@ from collections.abc import Callable
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QHBoxLayout, QLabel, QLineEdit, QVBoxLayout, QWidget
+from PySide6.QtWidgets import (
+    QBoxLayout,
+    QComboBox,
+    QFormLayout,
+    QLabel,
+    QLineEdit,
+    QVBoxLayout,
+    QWidget,
+)
 
 from widgets.i18n import live, on_language_change, tr
 from widgets.legend_placement import place_legend
@@ -19,6 +27,11 @@ from widgets.settings_form import SettingsForm
 # at least ΔE*ab 67 apart (pyqtgraph's 9 hues gave ω = 90° and 135° two greens 32 apart)
 PALETTE = ("#1f5fbf", "#e07000", "#1b9e3e", "#c2185b", "#000000", "#8c564b", "#17becf",
            "#7f7f7f", "#bcbd22", "#9467bd")
+
+#: the width (px) the plots want beside the form; narrower, the form goes above them
+PLOTS_BESIDE = 300
+#: characters a choice shows at least (the whole text where there is room, and in its list)
+CHOICE_CHARACTERS = 14
 
 # (parameters) -> (x, top curve, bottom curve)
 FamilyModel = Callable[[dict], tuple[np.ndarray, np.ndarray, np.ndarray]]
@@ -78,9 +91,90 @@ class FamilySimulation(QWidget):
         plots = QVBoxLayout()
         plots.addWidget(self.top_plot)
         plots.addWidget(self.bottom_plot)
-        layout = QHBoxLayout(self)
-        layout.addWidget(self.form)
-        layout.addLayout(plots, 1)
+        self._fit_form()
+        self.body = QBoxLayout(QBoxLayout.Direction.LeftToRight, self)
+        self.body.addWidget(self.form)
+        self.body.addLayout(plots, 1)
+
+    def _fit_form(self) -> None:
+        """The form as narrow as its narrowest useful field: a choice shows
+        :data:`CHOICE_CHARACTERS` characters at least (all of its text where there is
+        room; its list is as wide as its longest); where the tab is narrower than its captions
+        and fields side by side, each caption goes above its field (:meth:`resizeEvent`).
+        Docked beside the instrument
+        panel at 1280×720 the polygon's What-if tab needed a horizontal scroll bar (its
+        set-up choice "vertical along the polygon's axis (rolled with the tilt)" held the
+        form at 486 px of the tab's 494)."""
+        self.form.layout().setFieldGrowthPolicy(
+            QFormLayout.FieldGrowthPolicy.AllNonFixedFieldsGrow)
+        for choice in self.form.findChildren(QComboBox):
+            # as wide as its text where there is room (its size hint), never held wider
+            # than CHOICE_CHARACTERS characters (its minimum), its list as wide as its
+            # longest entry
+            narrow = choice.fontMetrics().horizontalAdvance("x" * CHOICE_CHARACTERS)
+            choice.setMinimumWidth(min(choice.minimumSizeHint().width(),
+                                       narrow + choice.iconSize().width() + 24))
+            view = choice.view()
+            view.setMinimumWidth(view.sizeHintForColumn(0) + 2 * view.frameWidth())
+        self.sweep_values.setMinimumWidth(0)
+
+    def _form_width_beside(self) -> int:
+        """The form's width with every caption beside its field, each shown whole."""
+        form = self.form.layout()
+        labels = fields = spans = 0
+        for row in range(form.rowCount()):
+            for role, in_column in ((QFormLayout.ItemRole.LabelRole, "label"),
+                                    (QFormLayout.ItemRole.FieldRole, "field"),
+                                    (QFormLayout.ItemRole.SpanningRole, "span")):
+                item = form.itemAt(row, role)
+                if item is None or item.widget() is not None and item.widget().isHidden():
+                    continue
+                width = item.sizeHint().width()
+                if in_column == "label":
+                    labels = max(labels, width)
+                elif in_column == "field":
+                    fields = max(fields, width)
+                else:
+                    spans = max(spans, width)
+        margins = form.contentsMargins()
+        spacing = max(0, form.horizontalSpacing())
+        return max(labels + spacing + fields, spans) + margins.left() + margins.right()
+
+    def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        """The form beside the plots where both have room, above them where not (a
+        docked panel's narrow tab: the plots keep the width); where the form's captions
+        and fields have no room side by side either, each caption above its field (every
+        choice's text shown whole)."""
+        width = event.size().width()
+        form_width = self._form_width_beside()
+        beside = width >= form_width + PLOTS_BESIDE
+        direction = (QBoxLayout.Direction.LeftToRight if beside
+                     else QBoxLayout.Direction.TopToBottom)
+        if self.body.direction() != direction:
+            self.body.setDirection(direction)
+        margins = self.body.contentsMargins()
+        wrap = (QFormLayout.RowWrapPolicy.WrapAllRows
+                if not beside and width - margins.left() - margins.right() < form_width
+                else QFormLayout.RowWrapPolicy.DontWrapRows)
+        form = self.form.layout()
+        if form.rowWrapPolicy() != wrap:
+            form.setRowWrapPolicy(wrap)
+        self._keep_height()
+        super().resizeEvent(event)
+
+    def setMinimumHeight(self, height: int) -> None:  # noqa: N802 - Qt's name
+        """The least height of the plots (a plot tab keeps each panel's); the form above
+        them, when it is, is added to it (a minimum set on the widget is the layout's
+        floor: the stacked form and plots were squeezed flat into the plots' 300 px)."""
+        self._plots_height = max(0, int(height))
+        self._keep_height()
+
+    def _keep_height(self) -> None:
+        plots = getattr(self, "_plots_height", 0)
+        above = 0
+        if self.body.direction() == QBoxLayout.Direction.TopToBottom:
+            above = self.form.sizeHint().height() + max(0, self.body.spacing())
+        super().setMinimumHeight(plots + above)
 
     def swept_values(self) -> list[float]:
         out = []

@@ -80,13 +80,18 @@ def _entry(sample, label) -> tuple[str, str]:
 
 
 def _title_width(plot_item) -> float:
-    """The width the title line may take: the view's (a title is never wider than its plot
-    may be: pyqtgraph widens the plot to its title, and the view then cuts off its right,
-    the last targets with it — review 62, F13)."""
+    """The width the title line may take: the view's less the plot's y axis and margins
+    (a title is never wider than its plot may be: pyqtgraph widens the plot to its title,
+    and the view then cuts off its right, the last targets with it — review 62, F13; the
+    margins include the room kept at the right for the x axis' last tick label,
+    widgets/plot_grid.py make_end_labels_fit)."""
     scene = plot_item.scene()
     views = scene.views() if scene is not None else []
     width = views[0].viewport().width() if views else plot_item.width()
-    return max(float(width) - 24.0, 60.0)
+    left, _top, right, _bottom = plot_item.layout.getContentsMargins()
+    axis = plot_item.getAxis("left")
+    beside = axis.width() if axis.isVisible() else 0.0
+    return max(float(width) - beside - left - right - 4.0, 60.0)
 
 
 def _wrapped(entries: list[tuple[str, str]], width: float) -> str:

@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 import pyqtgraph as pg
+from PySide6.QtGui import QFontMetrics
 
-__all__ = ["IntegerAxis", "TEXT_COLOUR", "show_grid"]
+__all__ = ["IntegerAxis", "TEXT_COLOUR", "end_label_room", "make_end_labels_fit", "show_grid"]
 
 #: the plots' text (axis titles, tick labels, legends, titles): 10:1 on white. pyqtgraph's
 #: own grey (150, 150, 150) is 3:1, under WCAG's 4.5:1 for text (#31)
@@ -31,10 +32,57 @@ GRID_TICK_LEVELS = 1
 
 
 def show_grid(plot, x: bool = True, y: bool = True) -> None:
-    """Grid lines on a PlotItem or PlotWidget, along ``x`` and/or ``y``."""
+    """Grid lines on a PlotItem or PlotWidget, along ``x`` and/or ``y``; the x axis' tick
+    labels at its ends drawn whole (:func:`make_end_labels_fit`)."""
     plot.showGrid(x=x, y=y, alpha=GRID_ALPHA)
     for name in ("left", "bottom"):
         plot.getAxis(name).setStyle(maxTickLevel=GRID_TICK_LEVELS)
+    make_end_labels_fit(plot)
+
+
+#: the widest tick label an x axis makes room for at its ends: an angle's "-330.5"
+END_LABEL = "-000.00"
+
+
+def end_label_room(axis) -> int:
+    """Half the width (px) of :data:`END_LABEL` in ``axis``' tick font, and two pixels."""
+    font = axis.style["tickFont"] or axis.font()
+    return QFontMetrics(font).horizontalAdvance(END_LABEL) // 2 + 2
+
+
+def make_end_labels_fit(plot) -> None:
+    """A tick label centred on a tick at either end of the x axis is drawn whole: pyqtgraph
+    left out, or clipped to the view's edge, any label reaching past it ("330", the last
+    face's angle, was cut to "3" at the right end). The axis may draw half a label past
+    each end, and the plot keeps that room at its right (the left has the y axis)."""
+    item = plot.getPlotItem() if hasattr(plot, "getPlotItem") else plot
+    axis = item.getAxis("bottom")
+    room = end_label_room(axis)
+    if getattr(axis, "end_label_room", 0) == room:
+        return
+    axis.end_label_room = room
+    axis.prepareGeometryChange()
+    left, top, _right, bottom = item.layout.getContentsMargins()
+    item.layout.setContentsMargins(left, top, room, bottom)
+    axis.picture = None  # drawn again, with its end labels
+    axis.update()
+
+
+_axis_bounds = pg.AxisItem.boundingRect
+
+
+def _bounds_with_end_labels(self):
+    """pyqtgraph's bounds of an axis (its labels are left out past them, and clipped to
+    them), along an x axis made room for by :func:`make_end_labels_fit` half a label wider
+    at each end, also where the grid is drawn (pyqtgraph then gave the view's own edges)."""
+    rect = _axis_bounds(self)
+    room = getattr(self, "end_label_room", 0)
+    if room and self.orientation in ("top", "bottom"):
+        rect = rect.united(self.mapRectFromParent(self.geometry()).adjusted(-room, 0, room, 0))
+    return rect
+
+
+pg.AxisItem.boundingRect = _bounds_with_end_labels
 
 
 

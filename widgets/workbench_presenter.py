@@ -18,6 +18,7 @@ from models.capture.take_cells import waiting_row
 from models.display_units import (
     ANGLE_UNITS,
     AngleUnit,
+    decimals_in_unit,
     figure_in_unit,
     figures_in_unit,
     header_in_unit,
@@ -140,6 +141,9 @@ class ShownAsPrinted:
     summary: Any
     verdict: Any
     printed: dict[str, str]
+    #: the kind's printed_rounding of the result (None: the kind has none), which the
+    #: plot's readout under the cursor follows
+    rounding: Any = None
 
     def of(self, result: Any, details: Any, settings: dict[str, Any]) -> bool:
         """Whether this is what ``result`` with ``details`` and ``settings`` shows."""
@@ -160,7 +164,7 @@ def shown_as_printed(kind: Workbench, result: Any, details: Any,
     summary = kind.summary(result, **rounded)
     verdict = kind.verdict(result, **rounded) if isinstance(kind, ShowsHeadline) else ""
     return ShownAsPrinted(result, details, dict(settings), summary, verdict,
-                          kind.printed_headline(result, printed_as))
+                          kind.printed_headline(result, printed_as), printed_as)
 
 
 def _shown_on_worker(kind: Workbench, result: Any, details: Any,
@@ -426,7 +430,7 @@ class WorkbenchPresenter(QObject):
         give): ``made`` (the worker's) or the last ones shown where they are of this result,
         these details and the result's settings; else made here, on the GUI thread (a
         sheet analysed here, or new certificate details)."""
-        details = self.certificate_details()
+        details = self.printed_details()
         for shown in (made, self.shown):
             if shown is not None and shown.of(result, details, self.result_settings):
                 break
@@ -434,6 +438,27 @@ class WorkbenchPresenter(QObject):
             shown = shown_as_printed(self.kind, result, details, self.result_settings)
         self.shown = shown
         return shown
+
+    def printed_details(self) -> Any:
+        """The certificate details the window's figures are rounded with: those its
+        certificate would be made with now (None: none yet)."""
+        return self.certificate_details()
+
+    def printed_rounding(self, result: Any) -> Any:
+        """How the certificate of ``result`` rounds (the kind's printed_rounding with
+        :meth:`printed_details`; None: the kind has none)."""
+        return self.shown_as_printed(result).rounding
+
+    def _show_readout_decimals(self, printed_as: Any) -> None:
+        """The error plot's readout under the cursor to the decimals the certificate prints
+        the errors to (a kind whose printed rounding is one decimal, in arcseconds), in the
+        unit shown; else the plot's own (the data's)."""
+        plot = getattr(self.view, "error_plot", None)
+        if plot is None or not hasattr(plot, "set_readout_decimals"):
+            return
+        printed = isinstance(printed_as, int) and not isinstance(printed_as, bool)
+        plot.set_readout_decimals(decimals_in_unit(printed_as, self.angle_unit)
+                                  if printed else None)
 
     def in_unit_text(self, text: str) -> str:
         """A model's text in the chosen unit (converted from its figures), then in the
@@ -754,7 +779,7 @@ class WorkbenchPresenter(QObject):
                               self._signals, self.prepare_display, lambda: self._generation,
                               self.workers,
                               self._reading_keys() if sheet.row_count <= PLAN_ROWS else (),
-                              planned, self.certificate_details()))
+                              planned, self.printed_details()))
             return
         parsed = self._without_waiting_rows(sheet.parse(), sheet, planned)
         settings = dict(self._settings)
@@ -848,6 +873,7 @@ class WorkbenchPresenter(QObject):
             progress = (unit_text(incomplete.progress()) + "\n") if incomplete else ""
             # the figures the certificate prints, as it prints them (F2 of review 62)
             shown = self.shown_as_printed(result, shown)
+            self._show_readout_decimals(shown.rounding)
             self.view.set_summary(progress + unit_text(shown.summary))
             self.view.set_verdict(unit_text(shown.verdict)
                                   if isinstance(self.kind, ShowsHeadline) else "")

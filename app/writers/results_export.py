@@ -6,14 +6,15 @@ plus *Parameters*, *Uncertainty budget* and *Certificate* sheets. Angles are
 written in the unit the user chose to read them in (arcseconds unless told),
 each header naming it.
 
-Numbers are written as numbers. The *Parameters*, *Statistics* and *Uncertainty
-budget* tables are printed text on the certificate ("+3.77627 V", "-0.12\" … +0.34\"");
-on the sheets each figure becomes a number cell, its unit goes to the column's header
-(or, where the rows' units differ, to a unit column next to it), and a range, a pair
-or a value ± U is split into columns (see :func:`split_figures`). Any text cell that starts with ``=``, ``+``,
-``-``, ``@``, a tab or a carriage return is prefixed with an apostrophe so a
-spreadsheet shows it as text instead of running it as a formula (CSV/formula
-injection, OWASP). Files are written atomically.
+Numbers are written as numbers; on the *Results* sheet each point's figures three decimals
+finer than the certificate prints them (models/certificate/export_resolution.py). The
+*Parameters*, *Statistics* and *Uncertainty budget* tables are printed text on the
+certificate ("+3.77627 V", "-0.12\" … +0.34\""); on the sheets each figure becomes a
+number cell, its unit goes to the column's header (or, where the rows' units differ, to a
+unit column next to it), and a range, a pair or a value ± U is split into columns (see
+:func:`split_figures`). Any text cell that starts with ``=``, ``+``, ``-``, ``@``, a tab
+or a carriage return is prefixed with an apostrophe so a spreadsheet shows it as text
+instead of running it as a formula (CSV/formula injection, OWASP). Files are written atomically.
 """
 
 from __future__ import annotations
@@ -29,6 +30,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 
 from models.certificate.document import CertificateDocument, budget_table
+from models.certificate.export_resolution import rounded_point_columns
 from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_in_unit, text_in_unit
 from models.messages import Message, joined, message, separated
 from models.project.atomic_write import write_bytes_atomic
@@ -423,7 +425,9 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
     # the sheets keep their documented names in every language (docs: certificates-and-
     # register.md), as the Results sheet its columns' names (those of the JSON)
     sheet = book.create_sheet("Results")
-    point_columns = _point_columns(document, unit)
+    # each figure three decimals beyond those the certificate prints it to, not the binary
+    # noise of its computation (-3.456836534665442e-05 where +0.00" is printed)
+    point_columns = rounded_point_columns(_point_columns(document, unit))
     sheet.append([neutralise(name) for name, _ in point_columns])
     columns = [values for _, values in point_columns]
     if columns:

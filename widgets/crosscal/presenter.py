@@ -41,12 +41,10 @@ class CrossCalPresenter(WorkbenchPresenter):
         return tuple(getattr(budgets.get(name), "expanded", None)  # type: ignore[return-value]
                      for name in ("encoder_error_arcsec", "polygon_deviation_arcsec"))
 
-    def printed_rounding(self, result: Any) -> Any:
+    def printed_details(self) -> Any:
         """As the certificate rounds, with the details it would be issued with now (the lab
         defaults in: :meth:`certified_u`), so the summary's U is the bands'."""
-        details = self.issue_details()
-        return super().printed_rounding(result) if details is None else \
-            self.kind.printed_rounding(result, details, self.result_settings)
+        return self.issue_details()
 
     def show_result(self, result: CrossCalResult) -> None:
         self.table_model.set_highlight_rows({int(i) for i in result.readings.sheet_rows[

@@ -169,7 +169,9 @@ def test_results_csv_and_xlsx():
     book = load_workbook(io.BytesIO(results_xlsx_bytes(doc)))
     assert book.sheetnames == ["Results", "Parameters", "Statistics", "Uncertainty budget",
                                "Certificate"]
-    assert book["Results"].cell(2, 4).value == pytest.approx(result.corrected_error_arcsec[0])
+    # to the sheet's resolution: three decimals beyond the printed 0.1" (U 0.x")
+    assert book["Results"].cell(2, 4).value == pytest.approx(result.corrected_error_arcsec[0],
+                                                             abs=0.00005)
     values = [row[1] for row in book["Certificate"].iter_rows(values_only=True)]
     notes = next(v for v in values if isinstance(v, str) and "calc" in v)
     assert notes.startswith("'=")
