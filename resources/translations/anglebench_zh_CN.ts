@@ -2241,6 +2241,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{lock} 是 {minutes} 分钟前已结束的一次保存留下的锁，但它属于用户 {owner}，无法从这里删除（{error}）。未写入任何内容；您的读数仍在。请 {owner} 或管理员删除 {lock} 后再保存，或以其他名称保存（文件 › 另存为）。</translation>
     </message>
     <message>
+        <source>{lock} is dated {date}, later than this computer&apos;s clock (a computer whose clock is ahead made it, or this clock was set back), so its age cannot be told. Nothing was written; your readings are still here. If no other window or computer is saving this project, delete {lock} and save again; otherwise save again in {minutes} minutes: a lock left unchanged that long is taken as left over.</source>
+        <translation>{lock} 的日期为 {date}，晚于本机时钟（由时钟偏快的计算机创建，或本机时钟被调回），因此无法判断它存在了多久。未写入任何内容；您的读数仍在。若没有其他窗口或计算机正在保存该项目，请删除 {lock} 后再保存；否则请在 {minutes} 分钟后再保存：保持不变这么久的锁会被视为残留。</translation>
+    </message>
+    <message>
         <source>a link</source>
         <translation>一个链接</translation>
     </message>
@@ -3704,6 +3708,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Values of the swept parameter, separated by commas</source>
+        <extracomment>the width (px) the plots want beside the form; narrower, the form goes above them characters a choice shows at least (the whole text where there is room, and in its list)</extracomment>
         <translation>扫描参数的取值，以逗号分隔</translation>
     </message>
     <message>
@@ -4244,7 +4249,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Set-up: {names}</source>
-        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41)</extracomment>
+        <extracomment>the kind&apos;s printed_rounding of the result (None: the kind has none), which the plot&apos;s readout under the cursor follows the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41)</extracomment>
         <translation>设置：{names}</translation>
     </message>
     <message>
