@@ -187,7 +187,8 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                          columns_of: Callable[[str], Sequence[tuple[str, int | None]]],
                          values_of: Callable[[str, bytes], tuple[float, ...] | None],
                          cache: dict | None = None, workbench: str = "",
-                         turn_of_row: Callable[[Sequence[str]], float | None] | None = None
+                         turn_of_row: Callable[[Sequence[str]], float | None] | None = None,
+                         number_in: Callable[[int, str], float | None] | None = None
                          ) -> list[EditedReading]:
     """Every cell of a taken reading that differs now from the reading its frames give;
     then every captured reading whose row was deleted, every take none of whose frames
@@ -201,7 +202,13 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
     dict kept between calls, the frames' readings by session and take (they never change).
     ``turn_of_row(cells)``: the angle (degrees) a take wrote a row's reading in the turn of
     (models/capture/take_cells.py in_turn_of: positioning's target on a rotary axis; None:
-    as sent): the reading in that turn is the reading as captured too."""
+    as sent): the reading in that turn is the reading as captured too.
+    ``number_in(column, text)``: the number a cell of the sheet's column ``column`` holds,
+    read as the analysis reads that column (None: none) — an angle column's D°M′S″ by the
+    angle parser, whichever instrument wrote it (a readout's reading in a D°M′S″ column was
+    "edited or cleared after capture": its value, not an angle by its key, was read with
+    ``float``). Not given: a cell is read as a decimal number, or as an angle where the
+    instrument's values are angles."""
     edited: dict[tuple[int, str], EditedReading] = {}
     # the takes superseded by a newer one into their rows: by the newer's key (take_rows.py);
     # in a file from before, a take of an instrument claiming a row a later take of it claims
@@ -235,6 +242,12 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
         # compared as the numbers a take writes (_forms: never another turn, review 62 M3)
         angles = bool(targets) and all(key.endswith("_deg") for key, _ in targets)
         steps = _steps(session)
+
+        def number(column: int, text: str, angles: bool = angles) -> float | None:
+            if not text.strip():
+                return None
+            return number_in(column, text) if number_in is not None else _number(text, angles)
+
         for take, stored in enumerate(session["takes"]):
             row, first, last = (int(v) for v in stored[:3])
             step = steps[take] if take < len(steps) else 0.0
@@ -277,16 +290,17 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                     continue
                 if column is None:
                     # which cell held it is not known: edited or cleared, never "→ —"
-                    if not any(_as_captured(_number(c, angles), forms, step) for c in cells):
+                    if not any(_as_captured(number(i, c), forms, step)
+                               for i, c in enumerate(cells)):
                         edited[(row, key)] = EditedReading(row, key, _shown(None, forms), "",
                                                            "missing")
                     continue
                 now = cells[column] if column < len(cells) else ""
-                number = _number(now, angles)
-                if _as_captured(number, forms, step):
+                held = number(column, now)
+                if _as_captured(held, forms, step):
                     edited.pop((row, key), None)  # taken again later: as captured
                 else:
-                    edited[(row, key)] = EditedReading(row, key, _shown(number, forms),
+                    edited[(row, key)] = EditedReading(row, key, _shown(held, forms),
                                                        now.strip(),
                                                        "edited" if now.strip() else "cleared")
     return sorted(edited.values(), key=lambda e: (e.row, e.column)) + sorted(
