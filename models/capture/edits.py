@@ -30,7 +30,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from models.capture.take_cells import in_turn_of
+from models.capture.take_cells import cell_text, column_is_dms, in_turn_of
 from models.capture.take_rows import deleted_at, superseded_by
 from models.messages import QT_TR_NOOP, Message, message
 from models.readings.angles import parse_angle_deg
@@ -170,9 +170,15 @@ def _as_captured(cell: float | None, forms: tuple[float, ...], step: float) -> b
     return any(_same(cell, form, step) for form in forms)
 
 
-def _shown(cell: float | None, forms: tuple[float, ...]) -> str:
-    """The captured reading as said beside an edit: in the form nearest the cell's."""
+def _shown(cell: float | None, forms: tuple[float, ...], now: str = "",
+           step_deg: float = 0.0) -> str:
+    """The captured reading as said beside an edit: in the form nearest the cell's; as
+    D°M′S″ to the step the take wrote it to where the cell ``now`` is D°M′S″ (an angle in
+    degrees, written to a step), so that it reads beside the cell ("30°00′00.4″ →
+    30°00′01.4″", not "30.000123398 → 30°00′01.4″")."""
     form = forms[0] if cell is None else min(forms, key=lambda f: abs(cell - f))
+    if step_deg > 0.0 and column_is_dms([now]):
+        return cell_text(form, "deg", step_deg * 3600.0, dms=True)
     return f"{form:.12g}"
 
 
@@ -300,7 +306,8 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                 if _as_captured(held, forms, step):
                     edited.pop((row, key), None)  # taken again later: as captured
                 else:
-                    edited[(row, key)] = EditedReading(row, key, _shown(held, forms),
+                    captured = _shown(held, forms, now, step if key.endswith("_deg") else 0.0)
+                    edited[(row, key)] = EditedReading(row, key, captured,
                                                        now.strip(),
                                                        "edited" if now.strip() else "cleared")
     return sorted(edited.values(), key=lambda e: (e.row, e.column)) + sorted(

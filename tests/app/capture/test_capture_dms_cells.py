@@ -36,6 +36,11 @@ def _type_in_editor(window, qtbot, bench, row: int, key: str, text: str) -> None
     """The cell double-clicked, its editor's text selected and ``text`` typed over it,
     Return."""
     table, model = bench.view.table, bench.table_model
+    # the analysis of the last change finished first: its marks repainted over an open
+    # editor put the cell's text back into it, what was typed lost (a defect of the
+    # table's own, reported apart: ReadingsTableModel's range dataChanged)
+    with qtbot.waitSignal(bench.analysed, timeout=10000):
+        bench.refresh()
     index = model.index(row, [c.key for c in model.sheet.columns].index(key))
     table.scrollTo(index)
     where = table.visualRect(index).center()
@@ -110,7 +115,8 @@ def test_a_readouts_reading_in_a_dms_column_is_no_edit_until_the_cell_changes(
 def test_a_theodolites_dms_cells_hold_its_reading_to_the_step_they_show(window, qtbot):
     """The theodolite (0.1″) into A and E kept in D°M′S″: a cell written to 0.1″ holds the
     reading within 0.05″ (30.0001234° is 30°00′00.444″, written 30°00′00.4″); 1″ more, or
-    the cell cleared, is an edit, marked in the table and said."""
+    the cell cleared, is an edit, marked in the table and said — the captured reading in
+    D°M′S″ beside a D°M′S″ cell."""
     from widgets.readings_table_model import EDITED_BRUSH
 
     window.show()
@@ -132,9 +138,10 @@ def test_a_theodolites_dms_cells_hold_its_reading_to_the_step_they_show(window, 
     assert (azimuth, elevation) == ("30°00'00.4\"", "2°20'44.5\"")  # E = 90° − V
     assert _said(window, bench) == [] and model.edited_cells == {}
     _type_in_editor(window, qtbot, bench, 3, "azimuth_deg", "30°00'01.4\"")
-    (said,) = _said(window, bench)
-    captured, now = said.removeprefix("reading of row 4 edited after capture: ").split(" → ")
-    assert float(captured) == pytest.approx(30.0001234, abs=1e-7) and now == "30°00'01.4\""
+    # the captured reading said as the take wrote it beside the cell (was "30.000123398 →
+    # 30°00'01.4\"")
+    assert _said(window, bench) == [
+        "reading of row 4 edited after capture: 30°00'00.4\" → 30°00'01.4\""]
     index = model.index(3, keys.index("azimuth_deg"))
     assert model.data(index, Qt.ItemDataRole.BackgroundRole) is EDITED_BRUSH
     _type_in_editor(window, qtbot, bench, 3, "azimuth_deg", azimuth)  # put back

@@ -362,3 +362,29 @@ def test_a_readouts_reading_in_a_dms_cell_is_read_as_the_analysis_reads_the_colu
     assert said([[*row[:1], "90°00'01.432\"", *row[2:]]]) == [missing]  # 1″ more
     assert said([[*row[:1], "90°00'00.434\"", *row[2:]]]) == [missing]  # 2 of its 0.001″
     assert said([[*row[:1], "", *row[2:]]]) == [missing]  # cleared
+
+
+def test_an_edit_of_a_dms_cell_says_the_captured_reading_as_the_take_wrote_it():
+    """Beside a cell typed in D°M′S″ the captured reading is said in D°M′S″ to the step the
+    take wrote it to (it was "30.000123398 → 30°00'01.4\"", the customer left to convert);
+    beside a decimal cell, or one cleared, as before."""
+    hz = 30.0001234  # 30°00'00.444"
+    line = f"%R1P,0,1:0,{hz * 3.141592653589793 / 180:.12f},1.535889741755".encode()
+    session = session_json("theodolite", "tcp://x:1", 9600, "2026-12-02T01:02:03+00:00",
+                           [(0.0, line, True)], [[0, 0, 0]])
+    session["steps"] = [0.1 / 3600]
+    kind = KINDS["theodolite"]
+
+    def said(azimuth):
+        rows = [["30", azimuth, "2°00'00.0\"", "", ""]]
+        return [(e.captured, e.now, e.what)
+                for e in readings_edited_after_capture(kind, {}, rows, [session])
+                if e.column == "azimuth_deg"]
+
+    assert said("30°00'00.4\"") == said("30 00 00.44") == []
+    assert said("30°00'01.4\"") == [("30°00'00.4\"", "30°00'01.4\"", "edited")]
+    assert said("-30°00'00.4\"") == [("30°00'00.4\"", "-30°00'00.4\"", "edited")]
+    ((captured, now, what),) = said("30.0004")
+    assert (float(captured), now, what) == (pytest.approx(hz, abs=1e-8), "30.0004", "edited")
+    ((captured, now, what),) = said("")
+    assert (float(captured), now, what) == (pytest.approx(hz, abs=1e-8), "", "cleared")
