@@ -177,9 +177,20 @@ def readings_edited_after_capture(kind, settings: Mapping[str, Any], rows, sessi
                 continue
         return None
 
+    def number_in(column: int, text: str) -> float | None:
+        """The number the analysis reads in a cell of the column: D°M′S″ in an angle
+        column (a readout's reading there was "edited or cleared after capture")."""
+        if column >= len(kind.columns):
+            return None
+        try:
+            value = kind.columns[column].parse(text)
+        except (ValueError, TypeError, OverflowError):
+            return None
+        return float(value) if isinstance(value, int | float) else None
+
     # a session recorded on another workbench is said, not checked (review 61 F7)
     return edited_after_capture(sessions or [], rows, columns, values, cache, kind.key,
-                                turn_of_row if turns else None)
+                                turn_of_row if turns else None, number_in)
 
 
 def sign_if_configured(xml: bytes, key_file: str = "", cert_file: str = "") -> bytes:

@@ -30,7 +30,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from models.capture.take_cells import in_turn_of
+from models.capture.take_cells import cell_text, column_is_dms, in_turn_of
 from models.capture.take_rows import deleted_at, superseded_by
 from models.messages import QT_TR_NOOP, Message, message
 from models.readings.angles import parse_angle_deg
@@ -170,9 +170,15 @@ def _as_captured(cell: float | None, forms: tuple[float, ...], step: float) -> b
     return any(_same(cell, form, step) for form in forms)
 
 
-def _shown(cell: float | None, forms: tuple[float, ...]) -> str:
-    """The captured reading as said beside an edit: in the form nearest the cell's."""
+def _shown(cell: float | None, forms: tuple[float, ...], now: str = "",
+           step_deg: float = 0.0) -> str:
+    """The captured reading as said beside an edit: in the form nearest the cell's; as
+    D°M′S″ to the step the take wrote it to where the cell ``now`` is D°M′S″ (an angle in
+    degrees, written to a step), so that it reads beside the cell ("30°00′00.4″ →
+    30°00′01.4″", not "30.000123398 → 30°00′01.4″")."""
     form = forms[0] if cell is None else min(forms, key=lambda f: abs(cell - f))
+    if step_deg > 0.0 and column_is_dms([now]):
+        return cell_text(form, "deg", step_deg * 3600.0, dms=True)
     return f"{form:.12g}"
 
 
@@ -187,7 +193,8 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                          columns_of: Callable[[str], Sequence[tuple[str, int | None]]],
                          values_of: Callable[[str, bytes], tuple[float, ...] | None],
                          cache: dict | None = None, workbench: str = "",
-                         turn_of_row: Callable[[Sequence[str]], float | None] | None = None
+                         turn_of_row: Callable[[Sequence[str]], float | None] | None = None,
+                         number_in: Callable[[int, str], float | None] | None = None
                          ) -> list[EditedReading]:
     """Every cell of a taken reading that differs now from the reading its frames give;
     then every captured reading whose row was deleted, every take none of whose frames
@@ -201,7 +208,13 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
     dict kept between calls, the frames' readings by session and take (they never change).
     ``turn_of_row(cells)``: the angle (degrees) a take wrote a row's reading in the turn of
     (models/capture/take_cells.py in_turn_of: positioning's target on a rotary axis; None:
-    as sent): the reading in that turn is the reading as captured too."""
+    as sent): the reading in that turn is the reading as captured too.
+    ``number_in(column, text)``: the number a cell of the sheet's column ``column`` holds,
+    read as the analysis reads that column (None: none) — an angle column's D°M′S″ by the
+    angle parser, whichever instrument wrote it (a readout's reading in a D°M′S″ column was
+    "edited or cleared after capture": its value, not an angle by its key, was read with
+    ``float``). Not given: a cell is read as a decimal number, or as an angle where the
+    instrument's values are angles."""
     edited: dict[tuple[int, str], EditedReading] = {}
     # the takes superseded by a newer one into their rows: by the newer's key (take_rows.py);
     # in a file from before, a take of an instrument claiming a row a later take of it claims
@@ -235,6 +248,12 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
         # compared as the numbers a take writes (_forms: never another turn, review 62 M3)
         angles = bool(targets) and all(key.endswith("_deg") for key, _ in targets)
         steps = _steps(session)
+
+        def number(column: int, text: str, angles: bool = angles) -> float | None:
+            if not text.strip():
+                return None
+            return number_in(column, text) if number_in is not None else _number(text, angles)
+
         for take, stored in enumerate(session["takes"]):
             row, first, last = (int(v) for v in stored[:3])
             step = steps[take] if take < len(steps) else 0.0
@@ -277,16 +296,18 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                     continue
                 if column is None:
                     # which cell held it is not known: edited or cleared, never "→ —"
-                    if not any(_as_captured(_number(c, angles), forms, step) for c in cells):
+                    if not any(_as_captured(number(i, c), forms, step)
+                               for i, c in enumerate(cells)):
                         edited[(row, key)] = EditedReading(row, key, _shown(None, forms), "",
                                                            "missing")
                     continue
                 now = cells[column] if column < len(cells) else ""
-                number = _number(now, angles)
-                if _as_captured(number, forms, step):
+                held = number(column, now)
+                if _as_captured(held, forms, step):
                     edited.pop((row, key), None)  # taken again later: as captured
                 else:
-                    edited[(row, key)] = EditedReading(row, key, _shown(number, forms),
+                    captured = _shown(held, forms, now, step if key.endswith("_deg") else 0.0)
+                    edited[(row, key)] = EditedReading(row, key, captured,
                                                        now.strip(),
                                                        "edited" if now.strip() else "cleared")
     return sorted(edited.values(), key=lambda e: (e.row, e.column)) + sorted(

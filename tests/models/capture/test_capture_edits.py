@@ -332,3 +332,59 @@ def test_a_mean_across_zero_is_as_captured_in_the_turn_a_take_writes_and_no_othe
             assert edited_after_capture([session], [["10", azimuth, "90"]], columns,
                                         lambda _i, line: tuple(map(float, line.split()))) \
                 == [], (hair, azimuth)
+
+
+def test_a_readouts_reading_in_a_dms_cell_is_read_as_the_analysis_reads_the_column():
+    """A readout's reading (its key "value", not an angle's) taken into the polygon's encoder
+    column kept in D°M′S″: the cell was read with float(), which reads no D°M′S″, and the
+    certificate said "edited or cleared after capture" of a cell nobody touched. Each cell
+    is read now as the analysis reads its column: an angle column by the angle parser, a
+    number column with its decimal comma."""
+    kind = KINDS["polygon"]
+    keys = [c.key for c in kind.columns]
+    readout = session_json("readout", "tcp://127.0.0.1:47002", 9600, "t",
+                           [(0.0, b"+90.00012 deg", True)], [[0, 0, 0]])
+    readout["steps"] = [0.001 / 3600]  # as sent, written as D°M′S″ to 0.001″
+    ac = _session([(0.381, -3.2)], [[0, 0, 0]])
+    ac["steps"] = [0.01]
+    row = ["4", "90°00'00.432\"", "0", "0.38", "-3.20", "1", "+"]
+    assert len(row) == len(keys)
+
+    def said(rows):
+        return [e.text() for e in readings_edited_after_capture(kind, {}, rows, [readout, ac])]
+
+    assert said([row]) == []
+    for spelled in ("90 00 00.432", "90:00:00,432", "90°00′00.432″"):
+        assert said([[*row[:1], spelled, *row[2:]]]) == [], spelled
+    assert said([[*row[:3], "0,38", *row[4:]]]) == []  # the analysis reads 0.38
+    missing = ("reading of row 1 edited or cleared after capture: no cell of the row holds "
+               "90.00012 now")
+    assert said([[*row[:1], "90°00'01.432\"", *row[2:]]]) == [missing]  # 1″ more
+    assert said([[*row[:1], "90°00'00.434\"", *row[2:]]]) == [missing]  # 2 of its 0.001″
+    assert said([[*row[:1], "", *row[2:]]]) == [missing]  # cleared
+
+
+def test_an_edit_of_a_dms_cell_says_the_captured_reading_as_the_take_wrote_it():
+    """Beside a cell typed in D°M′S″ the captured reading is said in D°M′S″ to the step the
+    take wrote it to (it was "30.000123398 → 30°00'01.4\"", the customer left to convert);
+    beside a decimal cell, or one cleared, as before."""
+    hz = 30.0001234  # 30°00'00.444"
+    line = f"%R1P,0,1:0,{hz * 3.141592653589793 / 180:.12f},1.535889741755".encode()
+    session = session_json("theodolite", "tcp://x:1", 9600, "2026-12-02T01:02:03+00:00",
+                           [(0.0, line, True)], [[0, 0, 0]])
+    session["steps"] = [0.1 / 3600]
+    kind = KINDS["theodolite"]
+
+    def said(azimuth):
+        rows = [["30", azimuth, "2°00'00.0\"", "", ""]]
+        return [(e.captured, e.now, e.what)
+                for e in readings_edited_after_capture(kind, {}, rows, [session])
+                if e.column == "azimuth_deg"]
+
+    assert said("30°00'00.4\"") == said("30 00 00.44") == []
+    assert said("30°00'01.4\"") == [("30°00'00.4\"", "30°00'01.4\"", "edited")]
+    assert said("-30°00'00.4\"") == [("30°00'00.4\"", "-30°00'00.4\"", "edited")]
+    ((captured, now, what),) = said("30.0004")
+    assert (float(captured), now, what) == (pytest.approx(hz, abs=1e-8), "30.0004", "edited")
+    ((captured, now, what),) = said("")
+    assert (float(captured), now, what) == (pytest.approx(hz, abs=1e-8), "", "cleared")
