@@ -5,7 +5,9 @@ issue) and of the record's own fields as issued — the PDF's SHA-256 among them
 or a PDF and its hash, changed in the database afterwards no longer gives the stored
 chain; neither does a record deleted or inserted before the last. What changes lawfully
 after issue — the status and ``superseded_by`` when an amendment or replacement is issued —
-is outside the chain and checked against the record that supersedes it, which is in it.
+is outside the chain and checked against the record that supersedes it, which is in it;
+so is a withdrawal's status and ``withdrawn_reason``, a copy of the reason its chained
+withdrawal entry holds (compared with it: rev64 F9).
 
 Since schema version 4 the chain also runs through the register's other records (the
 ``entries`` table: calibration intervals, numbering continued, withdrawals), in one order

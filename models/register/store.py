@@ -1580,6 +1580,15 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
                 by=by and message(QT_TR_NOOP("superseded by {number}"), number=by)
                 or (message(QT_TR_NOOP("withdrawn")) if row.number in withdrawn else
                     message(QT_TR_NOOP("issued, superseded by none")))))
+        # the reason is the withdrawal entry's, which the chain covers; the record's copy of
+        # it (shown by show and verify) must read the same (rev64 F9: rewritten unnoticed)
+        if row.withdrawn_reason != withdrawn.get(row.number):
+            problems.append(message(QT_TR_NOOP(
+                "record {number}: its reason for withdrawal reads \"{reason}\", but the "
+                "register's withdrawal record says {recorded}: changed after it was recorded"),
+                number=row.number, reason=row.withdrawn_reason or "—",
+                recorded=f"\"{withdrawn[row.number]}\"" if row.number in withdrawn
+                else message(QT_TR_NOOP("it was never withdrawn"))))
     return problems
 
 

@@ -200,6 +200,28 @@ def test_a_withdrawn_certificate_is_a_chained_record_and_set_back_is_found(issue
                for p in found(url))
 
 
+def test_a_withdrawal_reason_rewritten_or_added_by_hand_is_found(issued):
+    """rev64 F9: the record's withdrawn_reason is a copy of the chained withdrawal entry's
+    reason; rewritten with SQL it passed verify and issuing went on."""
+    url, numbers, _ = issued
+    with _open(url) as register:
+        register.withdraw(numbers[0], "wrong standard used")
+    sql(url, "UPDATE certificates SET withdrawn_reason = 'at the customer''s request' "
+        "WHERE number = :n", n=numbers[0])
+    problems = found(url)  # found on opening and by audit, and issuing is refused
+    assert any(f"record {numbers[0]}: its reason for withdrawal reads \"at the customer's "
+               f"request\", but the register's withdrawal record says \"wrong standard used\""
+               in p for p in problems), problems
+    sql(url, "UPDATE certificates SET withdrawn_reason = 'wrong standard used' "
+        "WHERE number = :n", n=numbers[0])
+    assert found(url) == []  # put back: nothing else was changed
+    # a reason given to a certificate that was never withdrawn
+    sql(url, "UPDATE certificates SET withdrawn_reason = 'void' WHERE number = :n",
+        n=numbers[1])
+    assert any(f"record {numbers[1]}: its reason for withdrawal reads \"void\"" in p
+               and "it was never withdrawn" in p for p in found(url))
+
+
 def test_a_whole_chain_recomputed_is_found_only_by_a_head_noted_outside(issued):
     """Honest limit: with the algorithm public, an intruder can recompute every chain value
     and the state; the database then agrees with itself. A head noted before (the lab's log,
