@@ -262,8 +262,9 @@ class Register:
     """Open (creating or migrating) the register at ``url``: ``sqlite:///path`` or
     ``postgresql://user@host/db``. Opening takes no write lock unless the schema version
     asks for a migration; it checks the hash chain, the state and the counters (not the
-    stored PDFs: :meth:`audit` with ``pdfs``). A SQLite file that cannot be written is opened
-    read-only (listed and verified, never issued into)."""
+    stored PDFs: :meth:`audit` with ``pdfs``; :meth:`issue` re-hashes them before it issues).
+    A SQLite file that cannot be written is opened read-only (listed and verified, never
+    issued into)."""
 
     def __init__(self, url: str, *, timezone: str = "", key_file: str = "") -> None:
         import os
@@ -741,11 +742,14 @@ class Register:
                 "certificate number {number}: numbers beginning SPECIMEN are kept for specimen "
                 "certificates, which are never recorded"), number=number))
         meta = dataclasses.replace(meta, certificate_number=number, item_serial=serial)
-        if self.problems:
+        # the stored PDFs and DCCs too, which opening does not re-hash: what verify reports,
+        # issuing refuses (rev64 F12: a PDF replaced in the database did not stop issuing)
+        problems = self.problems or self._stored_file_problems()
+        if problems:
             raise RegisterError(message(QT_TR_NOOP(
                 "the register's records were changed after issue ({problem}): nothing is "
                 "recorded into a broken chain; see 'anglebench register verify'"),
-                problem=self.problems[0]))
+                problem=problems[0]))
         self._check_approval(meta)
         certificates = self._schema.CERTIFICATES
         user = _os_user()
@@ -1247,6 +1251,30 @@ class Register:
                 "or added after issue"), recorded=state.get("records", "?"),
                 head=(state.get("head") or "?")[:16], count=count, actual=previous[:16]))
         problems += _cross_checks(rows, notes, counters, intervals)
+        return problems
+
+    def _stored_file_problems(self) -> list:
+        """Each stored PDF and DCC against the SHA-256 recorded at issue (in the chain): what
+        :meth:`audit` with ``pdfs`` finds of the files themselves, read one record at a time
+        (a server-side cursor on PostgreSQL), for :meth:`issue` to refuse as it refuses every
+        other change made after issue."""
+        sa, certificates = self._sa, self._schema.CERTIFICATES
+        c = certificates.c
+        problems: list = []
+        with self._read() as conn:
+            rows = conn.execution_options(stream_results=True, yield_per=20).execute(
+                sa.select(c.number, c.pdf, c.pdf_sha256, c.dcc, c.dcc_sha256)
+                .order_by(c.seq, c.id))
+            for row in rows:
+                if hashlib.sha256(bytes(row.pdf)).hexdigest() != row.pdf_sha256:
+                    problems.append(message(QT_TR_NOOP(
+                        "record {number}: the stored PDF does not match the SHA-256 "
+                        "recorded at issue"), number=row.number))
+                if row.dcc is not None and row.dcc_sha256 is not None and hashlib.sha256(
+                        bytes(row.dcc)).hexdigest() != row.dcc_sha256:
+                    problems.append(message(QT_TR_NOOP(
+                        "record {number}: the stored DCC does not match the SHA-256 recorded "
+                        "at issue"), number=row.number))
         return problems
 
     def _signature_problems(self, links: list) -> list:

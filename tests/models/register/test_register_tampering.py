@@ -7,6 +7,7 @@ every certificate's foot)."""
 
 from __future__ import annotations
 
+import dataclasses
 import datetime as dt
 import json
 
@@ -220,6 +221,29 @@ def test_a_withdrawal_reason_rewritten_or_added_by_hand_is_found(issued):
         n=numbers[1])
     assert any(f"record {numbers[1]}: its reason for withdrawal reads \"void\"" in p
                and "it was never withdrawn" in p for p in found(url))
+
+
+def test_a_stored_pdf_replaced_by_hand_stops_issuing(issued):
+    """rev64 F12: verify found a stored PDF replaced in the database, but issuing went on
+    (opening does not re-hash the PDFs); every other hand edit stops the next issue."""
+    url, numbers, _ = issued
+    sql(url, "UPDATE certificates SET pdf = (SELECT pdf FROM certificates WHERE number = :o) "
+        "WHERE number = :n", o=numbers[1], n=numbers[0])
+    with _open(url) as register:
+        assert any(f"record {numbers[0]}: the stored PDF does not match" in str(p)
+                   for p in register.audit(pdfs=True))
+        before = register.chain_records()
+        with pytest.raises(RegisterError, match=f"record {numbers[0]}: the stored PDF does not "
+                                                "match the SHA-256 recorded at issue.*nothing "
+                                                "is recorded into a broken chain"):
+            register.issue(IssueRequest("polygon", META, PROJECT), render)
+        assert register.chain_records() == before  # nothing recorded, no number used
+    with _open(url) as register:  # the PDF put back: issuing goes on
+        genuine = render(dataclasses.replace(META, certificate_number=numbers[0]),
+                         head=register.chain_before(numbers[0]))
+    sql(url, "UPDATE certificates SET pdf = :p WHERE number = :n", p=genuine, n=numbers[0])
+    with _open(url) as register:
+        assert register.issue(IssueRequest("polygon", META, PROJECT), render)[0].number
 
 
 def test_a_whole_chain_recomputed_is_found_only_by_a_head_noted_outside(issued):
