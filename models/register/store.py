@@ -1609,8 +1609,10 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
                 or (message(QT_TR_NOOP("withdrawn")) if row.number in withdrawn else
                     message(QT_TR_NOOP("issued, superseded by none")))))
         # the reason is the withdrawal entry's, which the chain covers; the record's copy of
-        # it (shown by show and verify) must read the same (rev64 F9: rewritten unnoticed)
-        if row.withdrawn_reason != withdrawn.get(row.number):
+        # it (shown by show and verify) must read the same (rev64 F9: rewritten unnoticed);
+        # a withdrawal undone with its reason is said once, by its status above
+        if row.withdrawn_reason != withdrawn.get(row.number) and not (
+                row.withdrawn_reason is None and row.status != "withdrawn"):
             problems.append(message(QT_TR_NOOP(
                 "record {number}: its reason for withdrawal reads \"{reason}\", but the "
                 "register's withdrawal record says {recorded}: changed after it was recorded"),
