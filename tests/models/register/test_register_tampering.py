@@ -357,6 +357,24 @@ def test_a_certificate_carries_the_head_before_it(issued):
             "certificate_number"] == record.number
 
 
+def test_the_number_a_certificate_pdf_names_in_its_title():
+    """What verify --head-from names a certificate by when its record is gone: its title's
+    last word, a title fpdf2 writes as a literal string or, beyond Latin-1, as UTF-16."""
+    from fpdf import FPDF
+
+    from models.register.chain import number_in_pdf
+
+    for title, number in (("Calibration certificate AB-2026-0001-A1", "AB-2026-0001-A1"),
+                          ("校准证书 AB-2026-0002", "AB-2026-0002"),
+                          ("Test report (draft) T\\1", "T\\1")):
+        pdf = FPDF()
+        pdf.set_title(title)
+        pdf.add_page()
+        assert number_in_pdf(bytes(pdf.output())) == number
+    assert number_in_pdf(b"%PDF no title") == ""
+    assert number_in_pdf(b"%PDF /Title (AB-1)") == ""  # one word: no number told from a label
+
+
 def test_authorised_signatories_and_a_distinct_approver(register_url):
     with _open(register_url) as register:
         assert register.signatories() == ([], False)
