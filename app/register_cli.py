@@ -10,7 +10,8 @@
                                                written with one), byte for byte, one we issued?
                                                --head VALUE (or
                                                --head-from CERT.pdf): does the register still
-                                               hold the history up to that head?
+                                               hold the history up to that head (and, right
+                                               after it, that certificate's record)?
     anglebench register head                   the chain's head now, for the lab's log
     anglebench register withdraw NUMBER --reason TEXT   withdraw (void) a certificate
     anglebench register signatories [NAME …] [--distinct] [--clear]   the lab's authorised
@@ -94,7 +95,7 @@ def _parser(words) -> argparse.ArgumentParser:
         "history up to it")))
     verify.add_argument("--head-from", default="", metavar="CERT.pdf", help=words(QT_TR_NOOP(
         "the chain head printed on a certificate (the head before it): the register must "
-        "still hold the history up to it")))
+        "still hold the history up to it, and the certificate's own record right after it")))
     head = sub.add_parser("head", help=words(QT_TR_NOOP(
         "the register's chain head now (note it in the lab's log)")))
     withdraw = sub.add_parser("withdraw", help=words(QT_TR_NOOP(
@@ -257,8 +258,10 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
                                "file(s) recorded at issue"), certificates=len(register.list()),
                     results=len(register.results_records())))
     failed = bool(problems)
+    certificate = b""
     if head_from:
-        head = head_in_pdf(_read(head_from))
+        certificate = _read(head_from)
+        head = head_in_pdf(certificate)
         if not head:
             raise RegisterError(message(QT_TR_NOOP(
                 "{path}: no register chain head printed in it (a draft, a specimen, or issued "
@@ -274,6 +277,8 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
             out(message(QT_TR_NOOP(
                 "head {head}: in the register's chain at record {seq}; the history up to it "
                 "is still there"), head=found[1], seq=found[0]))
+            if certificate and not _in_its_place(register, head_from, certificate, out):
+                failed = True
     if not path:
         return 1 if failed else 0
     data = _read(path)
@@ -294,6 +299,9 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
             "another register)") if is_dcc else QT_TR_NOOP(
             "{path}: NOT in the register (no issued PDF has its SHA-256: altered, a "
             "draft, or from another register)"), path=path))
+        if not is_dcc and head_in_pdf(data) and register.find_head(head_in_pdf(data)):
+            # it prints a head of this chain, so its record followed that head: is it gone?
+            _in_its_place(register, path, data, out)
         return 1
     out(message(_by_kind(record, QT_TR_NOOP(
         "{path}: certificate {number}, issued {issued_at}, {status}; identical to "
@@ -312,6 +320,62 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
             number=record.number, actual=register.chain_before(record.number)))
         failed = True
     return 1 if failed else 0
+
+
+def _in_its_place(register, path: str, data: bytes, out) -> bool:
+    """A certificate's PDF whose printed head (the chain before it) is in the register's
+    chain: its own record, its number and SHA-256, must be the next one (rev64 F8: a tail
+    deleted with its state row set back left "the history up to it is still there" said of
+    a certificate the register no longer held, and its number free). Its record gone — the
+    chain ending at that head, no record with its SHA-256 — is recorded in the register
+    (Register.record_missing), which then issues nothing until it is restored from a
+    backup. False when it is not in its place."""
+    from models.register.store import RegisterError
+
+    check = register.printed_head(data)
+    if check is None or check.place is None:
+        return False
+    name = check.number or message(QT_TR_NOOP("SHA-256 {sha}…"), sha=check.sha256[:16])
+    place = check.place + 1
+    if check.there:
+        out(message(QT_TR_NOOP(
+            "{path}: {number} is record {seq}, right after that head, identical to the record "
+            "(SHA-256)"), path=path, number=check.record.number, seq=place))
+        return True
+    if check.recorded_missing:
+        out(message(QT_TR_NOOP(
+            "CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after "
+            "the head it prints; its record was found deleted and that is recorded (see "
+            "above)"), path=path, number=name, seq=place))
+        return False
+    if check.missing:
+        out(message(QT_TR_NOOP(
+            "CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after "
+            "the head it prints, but the register's chain ends at that head and no record has "
+            "its SHA-256: its record was deleted after issue"), path=path, number=name,
+            seq=place))
+        if register.problems:
+            return False  # issuing is refused already
+        try:
+            register.record_missing(check)
+        except RegisterError as exc:
+            out(message(QT_TR_NOOP(
+                "  it could not be recorded in the register ({reason}): issuing is not "
+                "stopped by it"), reason=reason_of(exc)))
+        else:
+            out(message(QT_TR_NOOP(
+                "  recorded in the register: nothing is issued, its number not again, until "
+                "the register is restored from a backup")))
+        return False
+    other = (check.record.number if check.record is not None else check.after
+             or message(QT_TR_NOOP("not there")))
+    out(message(QT_TR_NOOP(
+        "CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but "
+        "record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, "
+        "or the register's record of it was replaced"), path=path, number=name, seq=place,
+        other=other, elsewhere=message(QT_TR_NOOP(" (its SHA-256 is record {numbers}'s)"),
+                                       numbers=check.elsewhere) if check.elsewhere else ""))
+    return False
 
 
 def _by_kind(record, certificate: str, report: str, unknown: str) -> str:

@@ -5,7 +5,9 @@ issue) and of the record's own fields as issued — the PDF's SHA-256 among them
 or a PDF and its hash, changed in the database afterwards no longer gives the stored
 chain; neither does a record deleted or inserted before the last. What changes lawfully
 after issue — the status and ``superseded_by`` when an amendment or replacement is issued —
-is outside the chain and checked against the record that supersedes it, which is in it.
+is outside the chain and checked against the record that supersedes it, which is in it;
+so is a withdrawal's status and ``withdrawn_reason``, a copy of the reason its chained
+withdrawal entry holds (compared with it: rev64 F9).
 
 Since schema version 4 the chain also runs through the register's other records (the
 ``entries`` table: calibration intervals, numbering continued, withdrawals), in one order
@@ -34,7 +36,7 @@ from collections.abc import Mapping
 from typing import Any
 
 __all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "CHAINED_V4", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK",
-           "head_in_pdf", "link", "link_entry"]
+           "head_in_pdf", "link", "link_entry", "number_in_pdf"]
 
 #: a record's fields as issued, in the chain (status and superseded_by change later)
 CHAINED = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
@@ -88,3 +90,28 @@ def head_in_pdf(data: bytes) -> str:
 
     found = re.search(HEAD_MARK.encode() + rb"([0-9a-f]{64})", data)
     return found.group(1).decode() if found else ""
+
+
+def number_in_pdf(data: bytes) -> str:
+    """The certificate number a certificate's PDF names in its document information (its
+    title, "Calibration certificate AB-2026-0001" in any language: the last word), or ""
+    when it has no title that can be read (a number is never guessed further)."""
+    import re
+
+    found = re.search(rb"/Title\s*(?:<([0-9A-Fa-f\s]*)>|\(((?:\\.|[^\\)])*)\))", data,
+                      re.DOTALL)
+    if not found:
+        return ""
+    if found.group(1) is not None:
+        try:
+            raw = bytes.fromhex(found.group(1).decode("ascii"))
+        except ValueError:
+            return ""
+    else:
+        escapes = {b"n": b"\n", b"r": b"\r", b"t": b"\t", b"b": b"\b", b"f": b"\f"}
+        raw = re.sub(rb"\\(.)", lambda m: escapes.get(m.group(1), m.group(1)),
+                     found.group(2), flags=re.DOTALL)
+    text = (raw[2:].decode("utf-16-be", "replace") if raw.startswith(b"\xfe\xff")
+            else raw.decode("latin-1"))
+    words = text.split()
+    return words[-1] if len(words) > 1 else ""

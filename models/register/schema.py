@@ -85,7 +85,9 @@ ENTRIES = sa.Table(
     "entries", METADATA,
     sa.Column("id", sa.Integer, primary_key=True, autoincrement=True),
     sa.Column("seq", sa.Integer, nullable=False, unique=True),
-    sa.Column("kind", sa.String(40), nullable=False),  # interval | numbering | withdrawal
+    # interval | numbering | withdrawal | results | signatories | missing (a certificate shown
+    # to verify whose record was gone: Register.record_missing)
+    sa.Column("kind", sa.String(40), nullable=False),
     sa.Column("subject", sa.String(200), nullable=False),  # serial, counter or number
     sa.Column("body_json", sa.Text, nullable=False),
     sa.Column("recorded_at", sa.String(40), nullable=False),

@@ -45,8 +45,8 @@ from models.register.wording import DOCUMENT_KINDS, kind_words
 if TYPE_CHECKING:
     from sqlalchemy.engine import Connection
 
-__all__ = ["CertificateRecord", "IssueRequest", "NotTheSameCalibration", "Register", "RegisterError",
-           "RegisterTampered", "SameCalibrationIssued", "lab_timezone", "software_versions"]
+__all__ = ["CertificateRecord", "IssueRequest", "NotTheSameCalibration", "PrintedHead", "Register",
+           "RegisterError", "RegisterTampered", "SameCalibrationIssued", "lab_timezone", "software_versions"]
 
 LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
              "psycopg")
@@ -183,6 +183,36 @@ class CertificateRecord:
 _RECORD_COLUMNS = tuple(f.name for f in dataclasses.fields(CertificateRecord))
 
 
+@dataclass(frozen=True)
+class PrintedHead:
+    """A certificate's PDF against the place in the chain its printed head gives it (the
+    head *before* it: its own record is the next one, :meth:`Register.printed_head`)."""
+
+    head: str  # the head the PDF prints
+    sha256: str  # the PDF's SHA-256
+    number: str  # the number its title names ("" when it has none that can be read)
+    place: int | None  # where the chain passed through the head; None: not in the chain
+    record: CertificateRecord | None = None  # the certificate at place + 1, if one is there
+    after: str = ""  # what else is at place + 1 ("entry withdrawal AB-…"); "": nothing
+    #: the register already recorded that this PDF's record is missing (the "missing"
+    #: entry at place + 1)
+    recorded_missing: bool = False
+    #: a record elsewhere in the chain has this PDF's SHA-256 (the head printed is not its)
+    elsewhere: str = ""
+
+    @property
+    def there(self) -> bool:
+        """The certificate's own record is at its place: number and SHA-256."""
+        return self.record is not None and self.record.pdf_sha256 == self.sha256
+
+    @property
+    def missing(self) -> bool:
+        """The chain ends at the head this PDF prints and no record has its SHA-256: its own
+        record, which followed that head, was deleted (the tail truncated; rev64 F8)."""
+        return (self.place is not None and self.record is None and not self.after
+                and not self.recorded_missing and not self.elsewhere)
+
+
 def _normalise_url(url: str) -> str:
     if url.startswith(("postgresql://", "postgres://")):
         return "postgresql+psycopg://" + url.split("://", 1)[1]
@@ -262,8 +292,9 @@ class Register:
     """Open (creating or migrating) the register at ``url``: ``sqlite:///path`` or
     ``postgresql://user@host/db``. Opening takes no write lock unless the schema version
     asks for a migration; it checks the hash chain, the state and the counters (not the
-    stored PDFs: :meth:`audit` with ``pdfs``). A SQLite file that cannot be written is opened
-    read-only (listed and verified, never issued into)."""
+    stored PDFs: :meth:`audit` with ``pdfs``; :meth:`issue` re-hashes them before it issues).
+    A SQLite file that cannot be written is opened read-only (listed and verified, never
+    issued into)."""
 
     def __init__(self, url: str, *, timezone: str = "", key_file: str = "") -> None:
         import os
@@ -741,11 +772,14 @@ class Register:
                 "certificate number {number}: numbers beginning SPECIMEN are kept for specimen "
                 "certificates, which are never recorded"), number=number))
         meta = dataclasses.replace(meta, certificate_number=number, item_serial=serial)
-        if self.problems:
+        # the stored PDFs and DCCs too, which opening does not re-hash: what verify reports,
+        # issuing refuses (rev64 F12: a PDF replaced in the database did not stop issuing)
+        problems = self.problems or self._stored_file_problems()
+        if problems:
             raise RegisterError(message(QT_TR_NOOP(
                 "the register's records were changed after issue ({problem}): nothing is "
                 "recorded into a broken chain; see 'anglebench register verify'"),
-                problem=self.problems[0]))
+                problem=problems[0]))
         self._check_approval(meta)
         certificates = self._schema.CERTIFICATES
         user = _os_user()
@@ -1249,6 +1283,30 @@ class Register:
         problems += _cross_checks(rows, notes, counters, intervals)
         return problems
 
+    def _stored_file_problems(self) -> list:
+        """Each stored PDF and DCC against the SHA-256 recorded at issue (in the chain): what
+        :meth:`audit` with ``pdfs`` finds of the files themselves, read one record at a time
+        (a server-side cursor on PostgreSQL), for :meth:`issue` to refuse as it refuses every
+        other change made after issue."""
+        sa, certificates = self._sa, self._schema.CERTIFICATES
+        c = certificates.c
+        problems: list = []
+        with self._read() as conn:
+            rows = conn.execution_options(stream_results=True, yield_per=20).execute(
+                sa.select(c.number, c.pdf, c.pdf_sha256, c.dcc, c.dcc_sha256)
+                .order_by(c.seq, c.id))
+            for row in rows:
+                if hashlib.sha256(bytes(row.pdf)).hexdigest() != row.pdf_sha256:
+                    problems.append(message(QT_TR_NOOP(
+                        "record {number}: the stored PDF does not match the SHA-256 "
+                        "recorded at issue"), number=row.number))
+                if row.dcc is not None and row.dcc_sha256 is not None and hashlib.sha256(
+                        bytes(row.dcc)).hexdigest() != row.dcc_sha256:
+                    problems.append(message(QT_TR_NOOP(
+                        "record {number}: the stored DCC does not match the SHA-256 recorded "
+                        "at issue"), number=row.number))
+        return problems
+
     def _signature_problems(self, links: list) -> list:
         """With the lab's key: every signature must be the key's; from the first signed
         record on every record must be signed, the last one always (a record forged and
@@ -1309,6 +1367,62 @@ class Register:
                 "head '{value}' fits {n} records: give more of its digits"), value=value,
                 n=len(found)))
         return (found[0].seq or 0, found[0].chain_sha256) if found else None
+
+    def printed_head(self, pdf: bytes) -> PrintedHead | None:
+        """Where a certificate's PDF belongs in the chain: the head it prints is the chain
+        before it, so its own record — its number and its SHA-256 — is the next one. None
+        when it prints no head (a draft, a specimen, issued before heads were printed)."""
+        from models.register.chain import head_in_pdf, number_in_pdf
+
+        head = head_in_pdf(pdf)
+        if not head:
+            return None
+        found = self.find_head(head)
+        check = PrintedHead(head=head, sha256=hashlib.sha256(pdf).hexdigest(),
+                            number=number_in_pdf(pdf), place=found[0] if found else None)
+        if found is None:
+            return check
+        with self._read() as conn:
+            return self._at_place(conn, check)
+
+    def _at_place(self, conn, check: PrintedHead) -> PrintedHead:
+        """``check`` with what the register holds right after its head."""
+        sa, certificates, entries = self._sa, self._schema.CERTIFICATES, self._schema.ENTRIES
+        assert check.place is not None
+        place = check.place + 1
+        row = conn.execute(sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS)).where(
+            certificates.c.seq == place)).first()
+        record = CertificateRecord(**row._asdict()) if row is not None else None
+        entry = conn.execute(sa.select(entries.c.kind, entries.c.subject, entries.c.body_json)
+                             .where(entries.c.seq == place)).first()
+        after, recorded = "", False
+        if entry is not None:
+            body = json.loads(entry.body_json or "{}")
+            recorded = entry.kind == "missing" and body.get("pdf_sha256") == check.sha256
+            after = message(QT_TR_NOOP("entry {kind} {subject}"), kind=entry.kind,
+                            subject=entry.subject)
+        elsewhere = ", ".join(conn.execute(sa.select(certificates.c.number).where(
+            certificates.c.pdf_sha256 == check.sha256, sa.or_(
+                certificates.c.seq.is_(None), certificates.c.seq != place))).scalars())
+        return dataclasses.replace(check, record=record, after=after,
+                                   recorded_missing=recorded, elsewhere=elsewhere)
+
+    def record_missing(self, check: PrintedHead) -> str:
+        """Record, as a chained entry, that the certificate ``check`` was presented (its PDF
+        printing the head before it) while the register no longer held its record
+        (:attr:`PrintedHead.missing`): from then on the audit reports it, so nothing is issued
+        — its number not again — until the register is restored from a backup (rev64 F8: a
+        tail deleted with its state row set back agreed with itself). Checked again under the
+        write lock; returns the entry's chain value, or "" when it is not missing."""
+        with self._write() as conn:
+            if not self.is_sqlite:
+                conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
+                             {"k": _CHAIN_LOCK})
+            if check.place is None or not self._at_place(conn, check).missing:
+                return ""
+            return self._append_entry(conn, "missing", check.number or check.sha256[:16], {
+                "pdf_sha256": check.sha256, "place": check.place + 1,
+                "head_before": check.head, "number": check.number})
 
     def list(self, search: str = "", limit: int = 10_000) -> list[CertificateRecord]:
         """Newest first; ``search`` matches the number, the serial or the customer (any case)."""
@@ -1561,6 +1675,16 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
     for note in notes:  # one results file per certificate, recorded at its issue (rev62 F7)
         if note.kind == "results":
             results[note.subject] = results.get(note.subject, 0) + 1
+    for note in notes:  # a certificate shown to verify whose record was gone (rev64 F8)
+        if note.kind == "missing":
+            body = json.loads(note.body_json or "{}")
+            problems.append(message(QT_TR_NOOP(
+                "certificate {number}: its PDF (SHA-256 {sha}…), shown to 'register verify' on "
+                "{date}, was issued as record {place} of the chain (it prints the head before "
+                "it), but the register no longer held its record: deleted after issue; nothing "
+                "is issued until the register is restored from a backup"),
+                number=body.get("number") or "—", sha=str(body.get("pdf_sha256", ""))[:16],
+                date=note.recorded_at[:10], place=body.get("place", "?")))
     for number, count in sorted(results.items()):
         if count > 1:
             problems.append(message(QT_TR_NOOP(
@@ -1580,6 +1704,17 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
                 by=by and message(QT_TR_NOOP("superseded by {number}"), number=by)
                 or (message(QT_TR_NOOP("withdrawn")) if row.number in withdrawn else
                     message(QT_TR_NOOP("issued, superseded by none")))))
+        # the reason is the withdrawal entry's, which the chain covers; the record's copy of
+        # it (shown by show and verify) must read the same (rev64 F9: rewritten unnoticed);
+        # a withdrawal undone with its reason is said once, by its status above
+        if row.withdrawn_reason != withdrawn.get(row.number) and not (
+                row.withdrawn_reason is None and row.status != "withdrawn"):
+            problems.append(message(QT_TR_NOOP(
+                "record {number}: its reason for withdrawal reads \"{reason}\", but the "
+                "register's withdrawal record says {recorded}: changed after it was recorded"),
+                number=row.number, reason=row.withdrawn_reason or "—",
+                recorded=f"\"{withdrawn[row.number]}\"" if row.number in withdrawn
+                else message(QT_TR_NOOP("it was never withdrawn"))))
     return problems
 
 

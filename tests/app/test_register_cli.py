@@ -17,7 +17,7 @@ from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url
 from models.register.schema import CERTIFICATES
-from models.register.store import IssueRequest, Register
+from models.register.store import IssueRequest, Register, RegisterError
 
 
 def issue(samples_dir, tmp_path, name, capsys, **changes):
@@ -207,6 +207,83 @@ def test_head_verify_head_show_and_withdraw(tmp_path, capsys):
     assert f"{numbers[1]}\twithdrawn" in capsys.readouterr().out
     assert main(["register", "withdraw", numbers[1], "--reason", "again"]) == 2
     assert "was withdrawn" in capsys.readouterr().err
+
+
+def _titled(number_of_records: int) -> list[str]:
+    """Certificates whose stand-in PDF carries its head in its keywords and its number in
+    its title, as a certificate's document information does."""
+    from models.register.chain import HEAD_MARK
+
+    meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
+                               item_serial="RX-1")
+    with Register(register_url()) as register:
+        return [register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                               lambda m, head="": f"%PDF /Title (Calibration certificate "
+                               f"{m.certificate_number}) /Keywords ({HEAD_MARK}{head})"
+                               .encode())[0].number for _ in range(number_of_records)]
+
+
+def _truncate_consistently(number: str) -> None:
+    """The last record deleted by hand, the counter and the state row set back to the
+    record before it: the register agrees with itself (rev64 F8, f_truncate.sh)."""
+    _sql(f"UPDATE register_state SET value = (SELECT chain_sha256 FROM certificates WHERE seq "
+         f"= (SELECT seq - 1 FROM certificates WHERE number = '{number}')) WHERE name = 'head'",
+         f"UPDATE register_state SET value = (SELECT seq - 1 FROM certificates WHERE number = "
+         f"'{number}') WHERE name = 'records'",
+         "UPDATE counters SET last_value = last_value - 1",
+         f"DELETE FROM certificates WHERE number = '{number}'")
+
+
+def test_a_certificate_whose_record_was_deleted_is_named_by_its_head_and_stops_issuing(
+        tmp_path, capsys):
+    """rev64 F8: verify --head-from CERT.pdf said "the history up to it is still there" of a
+    certificate whose own record was deleted, and its number was issued again."""
+    numbers = _titled(3)
+    for n, number in enumerate(numbers, 1):
+        assert main(["register", "show", number, "--pdf", str(tmp_path / f"{n}.pdf")]) == 0
+    assert main(["register", "verify", "--head-from", str(tmp_path / "3.pdf")]) == 0
+    capsys.readouterr()
+    _truncate_consistently(numbers[2])
+    assert main(["register", "verify"]) == 0  # the register agrees with itself
+    capsys.readouterr()
+    assert main(["register", "verify", "--head-from", str(tmp_path / "3.pdf")]) == 1
+    out = capsys.readouterr().out
+    assert (f"CHANGED AFTER ISSUE: {tmp_path / '3.pdf'} ({numbers[2]}) was issued as record "
+            "3, right after the head it prints, but the register's chain ends at that head "
+            "and no record has its SHA-256: its record was deleted after issue") in out
+    assert "recorded in the register: nothing is issued" in out
+    assert main(["register", "verify"]) == 1  # from now on, on every opening
+    assert f"certificate {numbers[2]}: its PDF (SHA-256" in capsys.readouterr().out
+    meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
+                               item_serial="RX-2")
+    with Register(register_url()) as register, pytest.raises(  # its number not issued again
+            RegisterError, match=f"certificate {numbers[2]}: its PDF.*nothing is recorded "
+                                 "into a broken chain"):
+        register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                       lambda m, head="": b"%PDF again")
+    assert main(["register", "verify", "--head-from", str(tmp_path / "2.pdf")]) == 1
+    assert f"2.pdf: {numbers[1]} is record 2, right after that head" in capsys.readouterr().out
+
+
+def test_a_certificate_whose_record_was_replaced_after_deletion_is_named(tmp_path, capsys):
+    """The record deleted and its number issued again before anyone looked: the PDF in hand
+    is not what the register holds at its place, said as either (nothing recorded)."""
+    numbers = _titled(2)
+    assert main(["register", "show", numbers[1], "--pdf", str(tmp_path / "2.pdf")]) == 0
+    _truncate_consistently(numbers[1])
+    meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-02",
+                               item_serial="RX-1")
+    with Register(register_url()) as register:
+        again = register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                               lambda m, head="": b"%PDF another")[0].number
+    assert again == numbers[1]
+    capsys.readouterr()
+    for args in (["--head-from", str(tmp_path / "2.pdf")], [str(tmp_path / "2.pdf")]):
+        assert main(["register", "verify", *args]) == 1
+        assert (f"prints the head before record 2, but record 2 is {numbers[1]}, not this PDF: "
+                "the PDF was altered after issue, or the register's record of it was replaced"
+                ) in capsys.readouterr().out
+    assert main(["register", "verify"]) == 0  # nothing recorded: the cause is not known
 
 
 def test_a_read_only_sqlite_register_is_listed_and_verified(monkeypatch, capsys):

@@ -7,6 +7,7 @@ every certificate's foot)."""
 
 from __future__ import annotations
 
+import dataclasses
 import datetime as dt
 import json
 
@@ -200,6 +201,51 @@ def test_a_withdrawn_certificate_is_a_chained_record_and_set_back_is_found(issue
                for p in found(url))
 
 
+def test_a_withdrawal_reason_rewritten_or_added_by_hand_is_found(issued):
+    """rev64 F9: the record's withdrawn_reason is a copy of the chained withdrawal entry's
+    reason; rewritten with SQL it passed verify and issuing went on."""
+    url, numbers, _ = issued
+    with _open(url) as register:
+        register.withdraw(numbers[0], "wrong standard used")
+    sql(url, "UPDATE certificates SET withdrawn_reason = 'at the customer''s request' "
+        "WHERE number = :n", n=numbers[0])
+    problems = found(url)  # found on opening and by audit, and issuing is refused
+    assert any(f"record {numbers[0]}: its reason for withdrawal reads \"at the customer's "
+               f"request\", but the register's withdrawal record says \"wrong standard used\""
+               in p for p in problems), problems
+    sql(url, "UPDATE certificates SET withdrawn_reason = 'wrong standard used' "
+        "WHERE number = :n", n=numbers[0])
+    assert found(url) == []  # put back: nothing else was changed
+    # a reason given to a certificate that was never withdrawn
+    sql(url, "UPDATE certificates SET withdrawn_reason = 'void' WHERE number = :n",
+        n=numbers[1])
+    assert any(f"record {numbers[1]}: its reason for withdrawal reads \"void\"" in p
+               and "it was never withdrawn" in p for p in found(url))
+
+
+def test_a_stored_pdf_replaced_by_hand_stops_issuing(issued):
+    """rev64 F12: verify found a stored PDF replaced in the database, but issuing went on
+    (opening does not re-hash the PDFs); every other hand edit stops the next issue."""
+    url, numbers, _ = issued
+    sql(url, "UPDATE certificates SET pdf = (SELECT pdf FROM certificates WHERE number = :o) "
+        "WHERE number = :n", o=numbers[1], n=numbers[0])
+    with _open(url) as register:
+        assert any(f"record {numbers[0]}: the stored PDF does not match" in str(p)
+                   for p in register.audit(pdfs=True))
+        before = register.chain_records()
+        with pytest.raises(RegisterError, match=f"record {numbers[0]}: the stored PDF does not "
+                                                "match the SHA-256 recorded at issue.*nothing "
+                                                "is recorded into a broken chain"):
+            register.issue(IssueRequest("polygon", META, PROJECT), render)
+        assert register.chain_records() == before  # nothing recorded, no number used
+    with _open(url) as register:  # the PDF put back: issuing goes on
+        genuine = render(dataclasses.replace(META, certificate_number=numbers[0]),
+                         head=register.chain_before(numbers[0]))
+    sql(url, "UPDATE certificates SET pdf = :p WHERE number = :n", p=genuine, n=numbers[0])
+    with _open(url) as register:
+        assert register.issue(IssueRequest("polygon", META, PROJECT), render)[0].number
+
+
 def test_a_whole_chain_recomputed_is_found_only_by_a_head_noted_outside(issued):
     """Honest limit: with the algorithm public, an intruder can recompute every chain value
     and the state; the database then agrees with itself. A head noted before (the lab's log,
@@ -309,6 +355,24 @@ def test_a_certificate_carries_the_head_before_it(issued):
         assert register.chain_before(record.number) == head  # after the interval's entry
         assert json.loads(record.project_json)["metadata"]["certificates"]["polygon"][
             "certificate_number"] == record.number
+
+
+def test_the_number_a_certificate_pdf_names_in_its_title():
+    """What verify --head-from names a certificate by when its record is gone: its title's
+    last word, a title fpdf2 writes as a literal string or, beyond Latin-1, as UTF-16."""
+    from fpdf import FPDF
+
+    from models.register.chain import number_in_pdf
+
+    for title, number in (("Calibration certificate AB-2026-0001-A1", "AB-2026-0001-A1"),
+                          ("校准证书 AB-2026-0002", "AB-2026-0002"),
+                          ("Test report (draft) T\\1", "T\\1")):
+        pdf = FPDF()
+        pdf.set_title(title)
+        pdf.add_page()
+        assert number_in_pdf(bytes(pdf.output())) == number
+    assert number_in_pdf(b"%PDF no title") == ""
+    assert number_in_pdf(b"%PDF /Title (AB-1)") == ""  # one word: no number told from a label
 
 
 def test_authorised_signatories_and_a_distinct_approver(register_url):
