@@ -2898,10 +2898,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>此前记下的链头（12 至 64 位十六进制数字）：登记册必须仍保有截至该链头的历史</translation>
     </message>
     <message>
-        <source>the chain head printed on a certificate (the head before it): the register must still hold the history up to it</source>
-        <translation>证书上印的链头（该证书之前的链头）：登记册必须仍保有截至该链头的历史</translation>
-    </message>
-    <message>
         <source>the register&apos;s chain head now (note it in the lab&apos;s log)</source>
         <translation>登记册当前的链头（请记入实验室日志）</translation>
     </message>
@@ -3062,12 +3058,52 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{path}：文件 {number}，签发于 {issued_at}，{status}；与记录一致（SHA-256）</translation>
     </message>
     <message>
+        <source>SHA-256 {sha}…</source>
+        <translation>SHA-256 {sha}…</translation>
+    </message>
+    <message>
+        <source>{path}: {number} is record {seq}, right after that head, identical to the record (SHA-256)</source>
+        <translation>{path}：{number} 是第 {seq} 条记录，紧随该链头之后，与记录一致（SHA-256）</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after the head it prints; its record was found deleted and that is recorded (see above)</source>
+        <translation>签发后被改动：{path}（{number}）作为第 {seq} 条记录签发，紧随其所印的链头之后；已发现其记录被删除，并已记入登记册（见上文）</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after the head it prints, but the register&apos;s chain ends at that head and no record has its SHA-256: its record was deleted after issue</source>
+        <translation>签发后被改动：{path}（{number}）作为第 {seq} 条记录签发，紧随其所印的链头之后，但登记册的哈希链止于该链头，且没有记录具有其 SHA-256：其记录在签发后被删除</translation>
+    </message>
+    <message>
+        <source>  it could not be recorded in the register ({reason}): issuing is not stopped by it</source>
+        <translation>  无法将此记入登记册（{reason}）：签发不会因此停止</translation>
+    </message>
+    <message>
+        <source>  recorded in the register: nothing is issued, its number not again, until the register is restored from a backup</source>
+        <translation>  已记入登记册：在从备份恢复登记册之前不再签发任何内容，其编号也不会再次使用</translation>
+    </message>
+    <message>
+        <source>not there</source>
+        <translation>不存在</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, or the register&apos;s record of it was replaced</source>
+        <translation>签发后被改动：{path}（{number}）印有第 {seq} 条记录之前的链头，但第 {seq} 条记录是 {other}，不是此 PDF{elsewhere}：PDF 在签发后被改动，或登记册中它的记录被替换</translation>
+    </message>
+    <message>
+        <source> (its SHA-256 is record {numbers}&apos;s)</source>
+        <translation>（其 SHA-256 属于记录 {numbers}）</translation>
+    </message>
+    <message>
         <source>{path}: {number} is no longer valid: withdrawn ({reason})</source>
         <translation>{path}：{number} 已不再有效：已作废（{reason}）</translation>
     </message>
     <message>
         <source>CHANGED AFTER ISSUE: {path} prints the chain head {printed} before it, but the register&apos;s chain before {number} is now {actual}</source>
         <translation>签发后被改动：{path} 印有其前的链头 {printed}，但登记册中 {number} 之前的链值现为 {actual}</translation>
+    </message>
+    <message>
+        <source>the chain head printed on a certificate (the head before it): the register must still hold the history up to it, and the certificate&apos;s own record right after it</source>
+        <translation>证书上印的链头（该证书之前的链头）：登记册必须仍保有截至该链头的历史，且紧随其后的是该证书自身的记录</translation>
     </message>
     <message>
         <source>{path}: NOT in the register (no results file written with an issued certificate has its SHA-256: altered, written without issuing one, or from another register)</source>
@@ -6192,6 +6228,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>the number scheme &apos;{scheme}&apos; has no {{seq}}: the register cannot number certificates with it</source>
+        <extracomment>the register already recorded that this PDF&apos;s record is missing (the &quot;missing&quot; entry at place + 1) a record elsewhere in the chain has this PDF&apos;s SHA-256 (the head printed is not its)</extracomment>
         <translation>编号方案 &apos;{scheme}&apos; 中没有 {{seq}}：登记册无法用它为证书编号</translation>
     </message>
     <message>
@@ -7596,6 +7633,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>仪器 {serial}：校准间隔 {days} 天，但登记册的记录设定为 {recorded}：记录后被改动</translation>
     </message>
     <message>
+        <source>certificate {number}: its PDF (SHA-256 {sha}…), shown to &apos;register verify&apos; on {date}, was issued as record {place} of the chain (it prints the head before it), but the register no longer held its record: deleted after issue; nothing is issued until the register is restored from a backup</source>
+        <translation>证书 {number}：其 PDF（SHA-256 {sha}…）于 {date} 提交给 &apos;register verify&apos; 核验，它作为哈希链的第 {place} 条记录签发（印有其之前的链头），但登记册已不再保有其记录：签发后被删除；在从备份恢复登记册之前不再签发任何内容</translation>
+    </message>
+    <message>
         <source>certificate {number}: {count} results files recorded, where a certificate has one (recorded at its issue): all but the first were added after issue</source>
         <translation>证书 {number}：记录了 {count} 个结果文件，而一份证书只有一个（在签发时记录）：除第一个外其余都是签发后添加的</translation>
     </message>
@@ -7614,6 +7655,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>issued, superseded by none</source>
         <translation>已签发，未被取代</translation>
+    </message>
+    <message>
+        <source>record {number}: its reason for withdrawal reads &quot;{reason}&quot;, but the register&apos;s withdrawal record says {recorded}: changed after it was recorded</source>
+        <translation>记录 {number}：其作废理由为“{reason}”，但登记册的作废记录表明{recorded}：记录之后被改动</translation>
+    </message>
+    <message>
+        <source>it was never withdrawn</source>
+        <translation>它从未被作废</translation>
     </message>
     <message>
         <source>record {number}: it carries a DCC SHA-256, but it was issued without a DCC (its chain does not cover one): added after issue</source>
