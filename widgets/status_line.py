@@ -14,6 +14,10 @@ from widgets.i18n import on_language_change, said_again
 
 __all__ = ["StatusLine"]
 
+#: the clock a message's time left is read from (a test holds it still: on a loaded machine
+#: the window's own retranslation may outlast a message's seconds)
+_clock = time.monotonic
+
 
 class StatusLine(QStatusBar):
     """A :class:`QStatusBar` that keeps the last message shown through it (its text and
@@ -25,7 +29,7 @@ class StatusLine(QStatusBar):
         on_language_change(self, self._say_again)
 
     def showMessage(self, text: str, timeout: int = 0) -> None:  # noqa: N802 - Qt's name
-        self._shown = (text, time.monotonic() + timeout / 1000 if timeout > 0 else None)
+        self._shown = (text, _clock() + timeout / 1000 if timeout > 0 else None)
         super().showMessage(text, timeout)
 
     def _say_again(self) -> None:
@@ -37,8 +41,12 @@ class StatusLine(QStatusBar):
         if not text or self.currentMessage() != text:
             return
         again = said_again(text)
-        left = 0 if until is None else round((until - time.monotonic()) * 1000)
+        left = 0 if until is None else round((until - _clock()) * 1000)
         if until is not None and left <= 0:
-            return  # its time is up this instant: it goes as it would have
+            # its time is up (the event loop has not run since to take it away): it goes
+            # now, never left in sight in the language it was shown in
+            self.clearMessage()
+            self._shown = None
+            return
         super().showMessage(again, left)
         self._shown = (again, until)
