@@ -26,8 +26,8 @@ from models.project.atomic_write import fsync_directory, stale_temporaries
 from models.project.output_guard import OutputRefused, sqlite_path_of_url
 from models.register.wording import issued_file_words
 
-__all__ = ["keep_in_sight", "keep_recorded_temporaries", "refuse_issued_files",
-           "refuse_issued_outputs"]
+__all__ = ["kept_name", "keep_in_sight", "keep_recorded_temporaries",
+           "refuse_issued_files", "refuse_issued_outputs", "written_names"]
 
 log = logging.getLogger(__name__)
 
@@ -44,6 +44,35 @@ def _sha256(path: str | os.PathLike[str]) -> str:
     return digest.hexdigest()
 
 
+#: what a file name cannot hold on some file system a lab uses (Windows, a FAT stick, a
+#: share): a certificate number printed "AB/2026/0001" or "AB:1" named no file (rev64 F13:
+#: Path.with_name raised ValueError on every later write of that name)
+_NOT_IN_A_NAME = frozenset('/\\:*?"<>|')
+
+
+def kept_name(target: str | os.PathLike[str], number: str, n: int = 1) -> Path:
+    """The name beside ``target`` a recorded results file of certificate ``number`` is kept
+    under: ``r.AB-2026-0002.xlsx`` (``-2``, ``-3``… after it when ``n`` > 1), every
+    character of the number a file name cannot hold (a path separator, ``:``, a control
+    character) written ``-``."""
+    target = Path(target)
+    safe = "".join("-" if c in _NOT_IN_A_NAME or ord(c) < 32 else c for c in number)
+    tail = "" if n == 1 else f"-{n}"
+    return target.with_name(f"{target.stem}.{safe.strip('. ') or '-'}{tail}{target.suffix}")
+
+
+def written_names(out: str | os.PathLike[str]) -> list[str]:
+    """The names a write of ``out`` writes and clears killed saves' leftovers beside: ``out``,
+    and where it is a symbolic link the file it points to (models/project/atomic_write.py
+    writes through the link: rev64 F2, a write of ``latest.xlsx -> r.xlsx`` cleared the
+    ``.r.xlsx.*.tmp`` the keeping never looked at)."""
+    names = [os.fspath(out)]
+    with contextlib.suppress(OSError, RuntimeError):
+        if os.path.islink(out):
+            names.append(os.fspath(Path(out).resolve()))
+    return names
+
+
 def keep_in_sight(temp: str | os.PathLike[str], target, number: str) -> str:
     """A recorded results file that is not in place, moved from its temporary name (which a
     later save of the same name clears as a killed save's leftover after ten minutes: the
@@ -53,8 +82,7 @@ def keep_in_sight(temp: str | os.PathLike[str], target, number: str) -> str:
     temporary name when neither can be made."""
     target, temp = Path(target), os.fspath(temp)
     for n in range(1, 100):
-        tail = "" if n == 1 else f"-{n}"
-        name = target.with_name(f"{target.stem}.{number}{tail}{target.suffix}")
+        name = kept_name(target, number, n)
         try:
             os.link(temp, name)
         except FileExistsError:
@@ -99,10 +127,11 @@ def keep_recorded_temporaries(register, outputs: Iterable[tuple[str, str | None]
     is to be written then: the save would clear it)."""
     said: list[Message] = []
     recorded: dict[str, str] | None = None
-    for _flag, out in outputs:
-        if not out:
+    for _flag, given in outputs:
+        if not given:
             continue
-        for temp in stale_temporaries(out):
+        for out, temp in ((out, temp) for out in written_names(given)
+                          for temp in stale_temporaries(out)):
             if recorded is None:
                 recorded = {}
                 for entry in register.results_records():
@@ -132,8 +161,7 @@ def keep_recorded_temporaries(register, outputs: Iterable[tuple[str, str | None]
 def _named(digest: str, out: str, number: str) -> bool:
     """Whether the recorded file of SHA-256 ``digest`` is at ``out`` or at the name
     :func:`keep_in_sight` gives it."""
-    target = Path(out)
-    for name in (target, target.with_name(f"{target.stem}.{number}{target.suffix}")):
+    for name in (Path(out), kept_name(out, number)):
         with contextlib.suppress(OSError):
             if name.is_file() and _sha256(name) == digest:
                 return True
@@ -172,7 +200,8 @@ def refuse_issued_outputs(url: str, outputs: Iterable[tuple[str, str | None]]
     be (a SQLite register not made yet, a server that does not answer: then nothing can be
     found in it). Returns what was said of recorded results files kept."""
     outputs = [(flag, os.fspath(out)) for flag, out in outputs if out]
-    if not _existing(outputs) and not any(stale_temporaries(out) for _flag, out in outputs):
+    if not _existing(outputs) and not any(stale_temporaries(name) for _flag, out in outputs
+                                          for name in written_names(out)):
         return []
     database = sqlite_path_of_url(url)
     if database is not None and not database.is_file():
