@@ -26,7 +26,7 @@ from models.project.atomic_write import fsync_directory, stale_temporaries
 from models.project.output_guard import OutputRefused, sqlite_path_of_url
 from models.register.wording import issued_file_words
 
-__all__ = ["kept_name", "keep_in_sight", "keep_recorded_temporaries",
+__all__ = ["kept_name", "keep_in_sight", "keep_recorded_temporaries", "place_new",
            "refuse_issued_files", "refuse_issued_outputs", "written_names"]
 
 log = logging.getLogger(__name__)
@@ -190,6 +190,30 @@ def refuse_issued_files(register, outputs: Iterable[tuple[str, str | None]]) -> 
                 flag=f"{flag} " if flag else "", out=os.fspath(out),
                 what=separated([issued_file_words(kind, number) for number, kind in found])))
     return said
+
+
+def place_new(register, temp: str | os.PathLike[str], target: str | os.PathLike[str]) -> None:
+    """``temp`` renamed to ``target`` without replacing a file the register issued, checked
+    at the moment of placing, not only before the issue (rev63 F7 for results files; rev64
+    F7: two issues naming the same PDF both passed the check before, and the later one's
+    rename replaced the earlier's PDF, whose issuer was told it was there). The name is taken
+    with a hard link, which fails when ``target`` exists; a file there is replaced only when
+    it is no issued file, checked and replaced under the file's save lock
+    (models/project/save_lock.py), so that of two issuers finding the same file there the
+    second finds the first's, issued, and is refused. Refused (OutputRefused, an OSError,
+    or the lock's ProjectFileBusy), the bytes stay in ``temp``. Where hard links cannot be
+    made (some network and FAT file systems) the same check and replacement under the lock."""
+    try:
+        os.link(temp, target)
+    except OSError:  # the name is taken (FileExistsError), or no hard links here
+        from models.project.save_lock import SaveLock
+
+        with SaveLock(target):
+            refuse_issued_files(register, [("", os.fspath(target))])
+            os.replace(temp, target)
+        return
+    with contextlib.suppress(OSError):  # placed: a temporary name left is harmless
+        os.unlink(temp)
 
 
 def refuse_issued_outputs(url: str, outputs: Iterable[tuple[str, str | None]]

@@ -208,3 +208,41 @@ def test_the_windows_save_through_a_link_and_save_pdf_never_replace_an_issued_fi
     assert (f"{xlsx} is the results file of certificate {number}, as issued"
             in register_view.tell.call_args.args[1])
     assert {path: _sha(path) for path in kept} == kept
+
+
+@pytest.mark.slow
+def test_the_later_of_two_issues_naming_one_pdf_never_replaces_the_first(
+        samples_dir, tmp_path, capsys):
+    """rev64 F7: two issues naming the same --certificate c.pdf both passed the check made
+    before issuing; the later one's rename replaced the earlier's PDF, whose issuer had been
+    told it was there. Forced interleaving: the other issue records and places c.pdf between
+    this one's commit and its placing; this one is refused at the moment of placing."""
+    pdf = tmp_path / "c.pdf"
+    issue = Register.issue
+    other = []
+
+    def meanwhile(self, *args, **kwargs):  # after this one's commit, the other issues
+        outcome = issue(self, *args, **kwargs)
+        if not other:
+            other.append(outcome[0].number)
+            assert _issue(samples_dir, tmp_path, "--certificate", str(pdf),
+                          separate="the other bench's run") == 0
+        return outcome
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(Register, "issue", meanwhile)
+        assert _issue(samples_dir, tmp_path, "--certificate", str(pdf)) == 2
+    said = capsys.readouterr().err
+    with Register(register_url()) as register:
+        records = {r.number: r for r in register.list()}
+    (mine,) = other
+    (theirs,) = set(records) - {mine}
+    assert f"Certificate {theirs} issued: written to {pdf}" in said
+    assert _sha(pdf) == records[theirs].pdf_sha256  # the first placed stays
+    assert (f"certificate {mine} is issued and recorded, but not written: {pdf} became another "
+            "certificate's issued file meanwhile, which is never replaced; save it with "
+            f"'anglebench register show {mine} --pdf OUT.pdf'") in said
+    assert not list(tmp_path.glob(".c.pdf.*"))  # no temporary file left
+    capsys.readouterr()
+    assert main(["register", "verify", str(pdf)]) == 0
+    assert f"certificate {theirs}" in capsys.readouterr().out
