@@ -130,8 +130,8 @@ def keep_recorded_temporaries(register, outputs: Iterable[tuple[str, str | None]
     for _flag, given in outputs:
         if not given:
             continue
-        for out, temp in ((out, temp) for out in written_names(given)
-                          for temp in stale_temporaries(out)):
+        for out, temp in ((name, temp) for name in written_names(given)
+                          for temp in stale_temporaries(name)):
             if recorded is None:
                 recorded = {}
                 for entry in register.results_records():
