@@ -13,13 +13,12 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from app.capture.instruments import INSTRUMENTS, frame_values, reading_columns
-from app.issued_outputs import keep_in_sight, refuse_issued_files
+from app.issued_outputs import keep_in_sight, place_new, refuse_issued_files
 from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
 from models.capture.take_cells import elevation_from_zenith_deg
 from models.certificate.metadata import NUMBER_FIELDS, CertificateMetadata
-from models.project.atomic_write import write_bytes_atomic
 from models.project.file import READINGS_SOURCE, Project, WorkbenchState, project_to_json
 from models.project.output_guard import check_output, register_files
 from models.readings.angles import parse_angle_deg
@@ -95,23 +94,43 @@ def _write_results(register: Register, record: CertificateRecord, path: str,
 
 
 def _place(register: Register, temp: str, target) -> None:
-    """``temp`` renamed to ``target`` without replacing a file the register issued there
-    since the check before the issue (rev63 F7: two issuers naming the same results file
-    both passed the check, and the later rename replaced the first's results file, of which
-    the register keeps only the SHA-256). The name is taken with a hard link, which fails
-    when ``target`` exists; then ``target`` is replaced only when it is no issued file (a
-    file that was there at the check, as before). Refused (OutputRefused, an OSError), the
-    bytes stay in ``temp``. Where hard links cannot be made (some network and FAT file
-    systems) the issued-file check is made again just before the rename. Either way the
-    new name is made for good (models/project/durable_rename.py: the folder fsync'ed, on
-    Windows a write-through move) before the issue is reported done."""
-    from models.project.durable_rename import rename_new_durably, replace_durably
+    """``temp`` renamed to ``target`` without replacing a file the register issued since
+    the check before the issue (rev63 F7: two issuers naming the same results file both
+    passed the check, and the later rename replaced the first's results file, of which the
+    register keeps only the SHA-256): :func:`app.issued_outputs.place_new`."""
+    place_new(register, temp, target)
 
+
+def _write_new(register: Register, path: str, data: bytes) -> None:
+    """The PDF or the DCC of a certificate just recorded written to ``path``: a temporary
+    file beside it, fsync'ed, then placed without replacing a file the register issued
+    (:func:`app.issued_outputs.place_new`; rev64 F7: the second of two issues naming the
+    same PDF replaced the first's). Nothing left on failure; the register holds the file."""
+    import contextlib
+    import tempfile
+    from pathlib import Path
+
+    from models.project.atomic_write import _mode_for, _temp_prefix, fsync_directory
+    from models.project.output_guard import refuse_database
+
+    target = Path(path)
+    refuse_database(target)
+    if target.is_symlink():  # written through the link, as every output
+        target = target.resolve()
+    fd, temp = tempfile.mkstemp(prefix=_temp_prefix(target), suffix=".tmp", dir=target.parent)
     try:
-        rename_new_durably(temp, target)
-    except OSError:  # the name is taken (FileExistsError), or no hard links here
-        refuse_issued_files(register, [("", os.fspath(target))])
-        replace_durably(temp, target)
+        with os.fdopen(fd, "wb") as handle:
+            if hasattr(os, "fchmod"):
+                os.fchmod(handle.fileno(), _mode_for(target))
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
+        place_new(register, temp, target)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(temp)
+        raise
+    fsync_directory(target.parent)
 
 
 def draft_reasons(metadata: CertificateMetadata) -> list[str]:
@@ -286,12 +305,12 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                                  render_dcc=(lambda _final, _pdf: made["dcc"])
                                  if dcc is not None else None)
     try:
-        write_bytes_atomic(path, pdf)
+        _write_new(register, path, pdf)
     except OSError as exc:
         raise IssuedNotWritten(record, path, exc, "pdf") from exc
     if dcc is not None and dcc_path:
         try:
-            write_bytes_atomic(dcc_path, made["dcc"])
+            _write_new(register, dcc_path, made["dcc"])
         except OSError as exc:
             raise IssuedNotWritten(record, dcc_path, exc, "dcc") from exc
     if results is not None and results_path:

@@ -725,6 +725,14 @@ def _not_written(exc) -> Message:
     kept there (its SHA-256 only), so it is said whether the register records it (rev62 F6:
     the advice named the PDF whatever file was missing)."""
     number = exc.record.number
+    if exc.what in ("pdf", "dcc") and isinstance(exc.__cause__, OutputRefused):
+        # another issue put its certificate at that name meanwhile (rev64 F7): never replaced
+        return message(QT_TR_NOOP(
+            "anglebench analyze: certificate {number} is issued and recorded, but not written: "
+            "{path} became another certificate's issued file meanwhile, which is never "
+            "replaced; save it with 'anglebench register show {number} {flag} {out}'"),
+            number=number, path=exc.path, flag=f"--{exc.what}",
+            out="OUT.xml" if exc.what == "dcc" else "OUT.pdf")
     if exc.what == "dcc":
         return message(QT_TR_NOOP(
             "anglebench analyze: certificate {number} is issued and recorded, but {reason}: "

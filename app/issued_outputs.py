@@ -23,12 +23,12 @@ from pathlib import Path
 
 from models.messages import QT_TR_NOOP, Message, message, separated
 from models.project.atomic_write import stale_temporaries
-from models.project.durable_rename import fsync_directory, rename_new_durably
+from models.project.durable_rename import fsync_directory, rename_new_durably, replace_durably
 from models.project.output_guard import OutputRefused, sqlite_path_of_url
 from models.register.wording import issued_file_words
 
-__all__ = ["keep_in_sight", "keep_recorded_temporaries", "refuse_issued_files",
-           "refuse_issued_outputs"]
+__all__ = ["kept_name", "keep_in_sight", "keep_recorded_temporaries", "place_new",
+           "refuse_issued_files", "refuse_issued_outputs", "written_names"]
 
 log = logging.getLogger(__name__)
 
@@ -45,6 +45,35 @@ def _sha256(path: str | os.PathLike[str]) -> str:
     return digest.hexdigest()
 
 
+#: what a file name cannot hold on some file system a lab uses (Windows, a FAT stick, a
+#: share): a certificate number printed "AB/2026/0001" or "AB:1" named no file (rev64 F13:
+#: Path.with_name raised ValueError on every later write of that name)
+_NOT_IN_A_NAME = frozenset('/\\:*?"<>|')
+
+
+def kept_name(target: str | os.PathLike[str], number: str, n: int = 1) -> Path:
+    """The name beside ``target`` a recorded results file of certificate ``number`` is kept
+    under: ``r.AB-2026-0002.xlsx`` (``-2``, ``-3``… after it when ``n`` > 1), every
+    character of the number a file name cannot hold (a path separator, ``:``, a control
+    character) written ``-``."""
+    target = Path(target)
+    safe = "".join("-" if c in _NOT_IN_A_NAME or ord(c) < 32 else c for c in number)
+    tail = "" if n == 1 else f"-{n}"
+    return target.with_name(f"{target.stem}.{safe.strip('. ') or '-'}{tail}{target.suffix}")
+
+
+def written_names(out: str | os.PathLike[str]) -> list[str]:
+    """The names a write of ``out`` writes and clears killed saves' leftovers beside: ``out``,
+    and where it is a symbolic link the file it points to (models/project/atomic_write.py
+    writes through the link: rev64 F2, a write of ``latest.xlsx -> r.xlsx`` cleared the
+    ``.r.xlsx.*.tmp`` the keeping never looked at)."""
+    names = [os.fspath(out)]
+    with contextlib.suppress(OSError, RuntimeError):
+        if os.path.islink(out):
+            names.append(os.fspath(Path(out).resolve()))
+    return names
+
+
 def keep_in_sight(temp: str | os.PathLike[str], target, number: str) -> str:
     """A recorded results file that is not in place, moved from its temporary name (which a
     later save of the same name clears as a killed save's leftover after ten minutes: the
@@ -54,8 +83,7 @@ def keep_in_sight(temp: str | os.PathLike[str], target, number: str) -> str:
     temporary name removed. The temporary name when neither can be made."""
     target, temp = Path(target), os.fspath(temp)
     for n in range(1, 100):
-        tail = "" if n == 1 else f"-{n}"
-        name = target.with_name(f"{target.stem}.{number}{tail}{target.suffix}")
+        name = kept_name(target, number, n)
         try:
             rename_new_durably(temp, name)  # never over a file; for good
         except FileExistsError:
@@ -100,10 +128,11 @@ def keep_recorded_temporaries(register, outputs: Iterable[tuple[str, str | None]
     is to be written then: the save would clear it)."""
     said: list[Message] = []
     recorded: dict[str, str] | None = None
-    for _flag, out in outputs:
-        if not out:
+    for _flag, given in outputs:
+        if not given:
             continue
-        for temp in stale_temporaries(out):
+        for out, temp in ((name, temp) for name in written_names(given)
+                          for temp in stale_temporaries(name)):
             if recorded is None:
                 recorded = {}
                 for entry in register.results_records():
@@ -133,8 +162,7 @@ def keep_recorded_temporaries(register, outputs: Iterable[tuple[str, str | None]
 def _named(digest: str, out: str, number: str) -> bool:
     """Whether the recorded file of SHA-256 ``digest`` is at ``out`` or at the name
     :func:`keep_in_sight` gives it."""
-    target = Path(out)
-    for name in (target, target.with_name(f"{target.stem}.{number}{target.suffix}")):
+    for name in (Path(out), kept_name(out, number)):
         with contextlib.suppress(OSError):
             if name.is_file() and _sha256(name) == digest:
                 return True
@@ -165,6 +193,27 @@ def refuse_issued_files(register, outputs: Iterable[tuple[str, str | None]]) -> 
     return said
 
 
+def place_new(register, temp: str | os.PathLike[str], target: str | os.PathLike[str]) -> None:
+    """``temp`` renamed to ``target`` without replacing a file the register issued, checked
+    at the moment of placing, not only before the issue (rev63 F7 for results files; rev64
+    F7: two issues naming the same PDF both passed the check before, and the later one's
+    rename replaced the earlier's PDF, whose issuer was told it was there). The name is taken
+    with a hard link, which fails when ``target`` exists; a file there is replaced only when
+    it is no issued file, checked and replaced under the file's save lock
+    (models/project/save_lock.py), so that of two issuers finding the same file there the
+    second finds the first's, issued, and is refused. Refused (OutputRefused, an OSError,
+    or the lock's ProjectFileBusy), the bytes stay in ``temp``. Where hard links cannot be
+    made (some network and FAT file systems) the same check and replacement under the lock."""
+    try:  # for good: the folder fsync'ed, on Windows a write-through move (durable_rename)
+        rename_new_durably(temp, target)
+    except OSError:  # the name is taken (FileExistsError), or no hard links here
+        from models.project.save_lock import SaveLock
+
+        with SaveLock(target):
+            refuse_issued_files(register, [("", os.fspath(target))])
+            replace_durably(temp, target)
+
+
 def refuse_issued_outputs(url: str, outputs: Iterable[tuple[str, str | None]]
                           ) -> list[Message]:
     """:func:`refuse_issued_files` for a run that issues nothing (a draft, a specimen, the
@@ -173,7 +222,8 @@ def refuse_issued_outputs(url: str, outputs: Iterable[tuple[str, str | None]]
     be (a SQLite register not made yet, a server that does not answer: then nothing can be
     found in it). Returns what was said of recorded results files kept."""
     outputs = [(flag, os.fspath(out)) for flag, out in outputs if out]
-    if not _existing(outputs) and not any(stale_temporaries(out) for _flag, out in outputs):
+    if not _existing(outputs) and not any(stale_temporaries(name) for _flag, out in outputs
+                                          for name in written_names(out)):
         return []
     database = sqlite_path_of_url(url)
     if database is not None and not database.is_file():

@@ -152,6 +152,9 @@ class ProjectPresenter(QObject):
         #: SHA-256 of ``path`` as this window last read or wrote it (None: not known): a
         #: save over a file changed since (another window, a colleague, a program) asks
         self.disk_sha256: str | None = None
+        #: raises OutputRefused when a path is a file the register issued, a certificate's
+        #: PDF, DCC or results file (the window sets it: app/issued_outputs.py)
+        self.refuse_issued: Callable[[str], None] = lambda _path: None
         self.metadata: dict = {}
         #: the instruments' raw frames, saved and opened with the project (the window sets
         #: its capture panel's raw_capture and load_raw_capture)
@@ -376,6 +379,12 @@ class ProjectPresenter(QObject):
             try:
                 current = self._disk_sha256() if same else None
                 if current is None or current == agreed:
+                    # a file this window did not read or write as its project may be an
+                    # issued one, or a link to one (rev64 F1: a Save through the link
+                    # p.anglebench.json -> r1.xlsx replaced an issued results file)
+                    if (current is None or current != self.disk_sha256) \
+                            and not self._may_replace(path):
+                        return False
                     digest = self._write(path, lock)
                     if digest is None:
                         return False
@@ -399,6 +408,18 @@ class ProjectPresenter(QObject):
         self._add_recent(self.path)
         self.update_title()
         self.view.show_status(tr("Saved {path}").format(path=path), 5000)
+        return True
+
+    def _may_replace(self, path: str | Path) -> bool:
+        """Whether ``path`` is no file the register issued (else told, nothing written)."""
+        from models.project.output_guard import OutputRefused
+
+        try:
+            self.refuse_issued(os.fspath(path))
+        except OutputRefused as exc:
+            self.view.tell(tr("Cannot save"), tr("{path}: {reason}. Your readings are still here.")
+                           .format(path=path, reason=explained(exc)))
+            return False
         return True
 
     def _write(self, path: str | Path, lock: SaveLock) -> str | None:

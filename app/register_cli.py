@@ -37,6 +37,7 @@ import io
 import os
 import sys
 import zipfile
+from pathlib import Path
 
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
@@ -194,6 +195,9 @@ def _print_record(record, register, words) -> None:
             else QT_TR_NOOP("  results file: {file}, SHA-256 {sha256}, recorded {recorded_at} "
                             "(a second one: CHANGED AFTER ISSUE, a certificate has one)"),
             file=entry["file"], sha256=entry["sha256"], recorded_at=entry["recorded_at"]))
+        # the file of that name here, when it is not the recorded one, and the recorded one
+        # beside it (rev64 F15: after a killed issue, r.xlsx held another certificate's)
+        lines += _results_elsewhere(entry, Path.cwd(), "  ")
     due = register.due_date(record.item_serial) if record.item_serial else None
     if due:
         lines.append(message(QT_TR_NOOP("  next calibration of {serial} due: {date}"),
@@ -396,6 +400,49 @@ def _say_if_no_longer_valid(record, path: str, out) -> None:
                     path=path, number=record.number, reason=record.withdrawn_reason or "—"))
 
 
+def _results_elsewhere(entry: dict, folder: Path, indent: str = "") -> list:
+    """What to say of the recorded results file ``entry`` (``register.results_records``) in
+    ``folder``: when the file there of the name it was recorded under is not it (another
+    file written under that name since), and where a file beside it is — the temporary
+    name an issue stopped before naming it left (``.r.xlsx.*.tmp``), or the name it was
+    kept under (``r.AB-2026-0002.xlsx``, app/issued_outputs.keep_in_sight). rev64 F15:
+    within ten minutes of a killed issue nothing pointed at the only copy, and ``register
+    show`` named a file that held another certificate's results."""
+    import glob
+    import hashlib
+
+    from app.issued_outputs import kept_name
+    from models.project.atomic_write import _temp_prefix
+
+    def sha256(file: Path) -> str | None:
+        try:
+            return hashlib.sha256(file.read_bytes()).hexdigest() if file.is_file() else None
+        except OSError:
+            return None
+
+    named = folder / entry["file"]
+    actual = sha256(named)
+    if actual == entry["sha256"]:
+        return []
+    kept = kept_name(named, entry["number"])
+    beside = sorted(folder.glob(f"{glob.escape(_temp_prefix(named))}*.tmp")) + sorted(
+        folder.glob(f"{glob.escape(kept.stem)}*{glob.escape(kept.suffix)}"))
+    found = [file for file in beside if sha256(file) == entry["sha256"]]
+    said = []
+    if actual is not None:
+        said.append(message(QT_TR_NOOP(
+            "{indent}{path} is not the results file recorded under that name with "
+            "certificate {number} (its SHA-256 is {sha256}: another file written under the "
+            "name since)"), indent=indent, path=str(named), number=entry["number"],
+            sha256=actual))
+    if found:
+        said.append(message(QT_TR_NOOP(
+            "{indent}the results file recorded with certificate {number} is {path} (SHA-256 "
+            "as recorded): give it a name of its own"), indent=indent, number=entry["number"],
+            path=str(found[0])))
+    return said
+
+
 def _verify_results(register, path: str, data: bytes, out) -> int:
     """A results file (CSV or XLSX): the certificate it was recorded with when issued, or
     1 when the register holds no results file with its SHA-256, when it is recorded under
@@ -406,12 +453,20 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
     from app.writers.results_export import issue_stated, neutralise
 
     digest = hashlib.sha256(data).hexdigest()
-    found = [entry for entry in register.results_records() if entry["sha256"] == digest]
+    records = register.results_records()
+    found = [entry for entry in records if entry["sha256"] == digest]
+    # recorded under this name, but this is another file: said, and where the recorded one
+    # is when it is beside it (rev64 F15)
+    elsewhere = [said for entry in records
+                 if entry["file"] == os.path.basename(path) and entry["sha256"] != digest
+                 for said in _results_elsewhere(entry, Path(path).parent)]
     if not found:
         out(message(QT_TR_NOOP(
             "{path}: NOT in the register (no results file written with an issued certificate "
             "has its SHA-256: altered, written without issuing one, or from another "
             "register)"), path=path))
+        for said in elsewhere:
+            out(said)
         return 1
     failed = False
     numbers = sorted({entry["number"] for entry in found})
@@ -454,6 +509,8 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
             "{status}; identical to the record (SHA-256)")), path=path, number=record.number,
             recorded_at=entry["recorded_at"], status=status_words(record.status)))
         _say_if_no_longer_valid(record, path, out)
+    for said in elsewhere:
+        out(said)
     return 1 if failed else 0
 
 

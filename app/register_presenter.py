@@ -194,6 +194,9 @@ class RegisterPresenter:
 
         try:
             check_output(path, self.certificates.protected())
+            # nor a file the register issued (rev64 F1: a certificate's PDF saved over another
+            # certificate's results file, the only copy, replaced it)
+            self.certificates.refuse_issued(path)
             with self._register() as register:
                 write_bytes_atomic(path, register.pdf(record.number))
         except (RegisterError, OSError) as exc:

@@ -20,7 +20,7 @@ from pathlib import Path
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
 from models.certificate.document import Table
-from models.messages import QT_TR_NOOP, in_language, joined, message
+from models.messages import QT_TR_NOOP, in_language, joined, message, reason_of
 from models.project.atomic_write import write_bytes_atomic
 from models.validation.cases import ValidationCase
 from models.validation.run import run_validation
@@ -318,6 +318,27 @@ def validation_pdf_bytes(cases: list[ValidationCase], run_at: dt.datetime, trial
         close_fonts(pdf)
 
 
+
+def _refused(pdf: str, say) -> bool:
+    """Whether ``--pdf`` names a file no output may replace, said: the register (or one of
+    its files) or a file it issued, a certificate's PDF, DCC or results file (rev64 F1:
+    ``validate --pdf r.xlsx`` replaced an issued results file, the only copy, and then
+    ``register verify`` called the real one "NOT in the register"); a recorded results file
+    left under a temporary name beside it is kept first (app/issued_outputs.py)."""
+    from app.issued_outputs import refuse_issued_outputs
+    from models.project.output_guard import OutputRefused, check_output, register_files
+    from models.register.location import register_url
+
+    url = register_url()
+    try:
+        check_output(pdf, register_files(url), "--pdf")
+        for said in refuse_issued_outputs(url, [("--pdf", pdf)]):
+            _say(say(joined(("anglebench validate: ", said))))
+    except OutputRefused as exc:
+        _say(say(joined(("anglebench validate: ", reason_of(exc)))))
+        return True
+    return False
+
 def _parser(words) -> argparse.ArgumentParser:
     parser = Parser(prog="anglebench validate",
                     description=words(QT_TR_NOOP("Run the method validation cases")))
@@ -340,6 +361,8 @@ def run_validate(argv: list[str]) -> int:
 
     if not 100 <= args.trials <= 100_000:
         _say(say(QT_TR_NOOP("anglebench validate: --trials must be 100 to 100000")))
+        return EXIT_BAD_INPUT
+    if args.pdf and _refused(args.pdf, say):
         return EXIT_BAD_INPUT
     run_at = dt.datetime.now(dt.timezone.utc).replace(second=0, microsecond=0)
     cases = run_validation(args.trials) + software_cases()

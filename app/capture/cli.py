@@ -254,7 +254,15 @@ def run_capture(argv: list[str]) -> int:
         return EXIT_BAD_INPUT
     instrument.set_range(args.range)
     try:
-        check_outputs((("--out", args.out), ("--raw", args.raw)), register_files(register_url()))
+        outputs = (("--out", args.out), ("--raw", args.raw))
+        check_outputs(outputs, register_files(register_url()))
+        # nor a file the register issued, a certificate's PDF, DCC or results file (rev64 F1:
+        # --out r.csv replaced an issued results file, the only copy); a recorded results
+        # file left under a temporary name beside one is kept first
+        from app.issued_outputs import refuse_issued_outputs
+
+        for said in refuse_issued_outputs(register_url(), outputs):
+            say(joined(("anglebench capture: ", said)))
     except OutputRefused as exc:
         say(joined(("anglebench capture: ", reason_of(exc))))
         return EXIT_BAD_INPUT

@@ -138,3 +138,111 @@ def test_the_windows_table_exports_never_replace_an_issued_results_file(
     assert {path: _sha(path) for path in kept} == kept
     fringe = next(p for p in window.presenters if p.kind.key == "fringe")
     assert fringe.export_table(str(tmp_path / "table.csv"))  # another name: written
+
+
+# -- rev64: every writer spares the register's files; a recorded leftover is never lost -----
+
+def _issued(samples_dir, tmp_path):
+    """A certificate issued with its PDF c.pdf and its results file r.xlsx: (number, the
+    paths with their SHA-256)."""
+    pdf, xlsx = tmp_path / "c.pdf", tmp_path / "r.xlsx"
+    assert _issue(samples_dir, tmp_path, "--certificate", str(pdf), "--results", str(xlsx)) == 0
+    (number,) = _results()
+    return number, {pdf: _sha(pdf), xlsx: _sha(xlsx)}
+
+
+@pytest.mark.slow
+def test_validate_and_capture_never_replace_an_issued_file(samples_dir, tmp_path, capsys):
+    """rev64 F1: 'validate --pdf r.xlsx' and 'capture --out r.xlsx' (no instrument needed:
+    refused before one is asked) replaced the issued results file, the only copy, exit 0;
+    'register verify' then called the real one NOT in the register."""
+    number, kept = _issued(samples_dir, tmp_path)
+    xlsx, pdf = tmp_path / "r.xlsx", tmp_path / "c.pdf"
+    capsys.readouterr()
+    assert main(["validate", "--trials", "100", "--pdf", str(xlsx)]) == 2
+    assert (f"anglebench validate: --pdf {xlsx} is the results file of certificate {number}, "
+            "as issued; an issued file is never replaced") in capsys.readouterr().err
+    link = tmp_path / "latest.pdf"
+    link.symlink_to(pdf)
+    assert main(["validate", "--trials", "100", "--pdf", str(link)]) == 2  # through a link
+    assert f"is the PDF of certificate {number}, as issued" in capsys.readouterr().err
+    for out in (xlsx, pdf):
+        assert main(["capture", "autocollimator", "tcp://127.0.0.1:9", "--out", str(out),
+                     "--readings", "3"]) == 2
+        assert (f"anglebench capture: --out {out} is the "
+                f"{'results file' if out == xlsx else 'PDF'} of certificate {number}, as "
+                "issued") in capsys.readouterr().err
+    assert {path: _sha(path) for path in kept} == kept
+    assert main(["register", "verify", str(xlsx)]) == 0
+
+
+@pytest.mark.slow
+def test_the_windows_save_through_a_link_and_save_pdf_never_replace_an_issued_file(
+        samples_dir, tmp_path, window, qtbot):
+    """rev64 F1: File › Save as… onto p.anglebench.json, a link to an issued results file,
+    wrote the project into the results file; the register window's Save PDF… checked the
+    register's own files only."""
+    from unittest import mock
+
+    from app.register_presenter import RegisterPresenter, RegisterView
+
+    number, kept = _issued(samples_dir, tmp_path)
+    xlsx = tmp_path / "r.xlsx"
+    link = tmp_path / "p.anglebench.json"
+    link.symlink_to(xlsx)
+    window.projects.view.ask_save_path = lambda _folder: str(link)
+    window.menus.save_as_action.trigger()
+    assert window.told[-1].startswith(f"{link}: ")
+    assert (f"is the results file of certificate {number}, as issued; an issued file is never "
+            "replaced") in window.told[-1]
+    assert window.told[-1].endswith("Your readings are still here.")
+    assert window.projects.path is None
+    window.projects.view.ask_save_path = lambda _folder: str(tmp_path / "p2.anglebench.json")
+    window.menus.save_as_action.trigger()  # another name: saved
+    assert window.projects.path == tmp_path / "p2.anglebench.json"
+    register_view = mock.create_autospec(RegisterView, instance=True)
+    presenter = RegisterPresenter(register_view, window.certificates, lambda *a: True)
+    presenter.selected = lambda: mock.Mock(number=number)
+    register_view.ask_pdf_path.return_value = str(xlsx)
+    assert not presenter.save_pdf()
+    assert (f"{xlsx} is the results file of certificate {number}, as issued"
+            in register_view.tell.call_args.args[1])
+    assert {path: _sha(path) for path in kept} == kept
+
+
+@pytest.mark.slow
+def test_the_later_of_two_issues_naming_one_pdf_never_replaces_the_first(
+        samples_dir, tmp_path, capsys):
+    """rev64 F7: two issues naming the same --certificate c.pdf both passed the check made
+    before issuing; the later one's rename replaced the earlier's PDF, whose issuer had been
+    told it was there. Forced interleaving: the other issue records and places c.pdf between
+    this one's commit and its placing; this one is refused at the moment of placing."""
+    pdf = tmp_path / "c.pdf"
+    issue = Register.issue
+    other = []
+
+    def meanwhile(self, *args, **kwargs):  # after this one's commit, the other issues
+        outcome = issue(self, *args, **kwargs)
+        if not other:
+            other.append(outcome[0].number)
+            assert _issue(samples_dir, tmp_path, "--certificate", str(pdf),
+                          separate="the other bench's run") == 0
+        return outcome
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(Register, "issue", meanwhile)
+        assert _issue(samples_dir, tmp_path, "--certificate", str(pdf)) == 2
+    said = capsys.readouterr().err
+    with Register(register_url()) as register:
+        records = {r.number: r for r in register.list()}
+    (mine,) = other
+    (theirs,) = set(records) - {mine}
+    assert f"Certificate {theirs} issued: written to {pdf}" in said
+    assert _sha(pdf) == records[theirs].pdf_sha256  # the first placed stays
+    assert (f"certificate {mine} is issued and recorded, but not written: {pdf} became another "
+            "certificate's issued file meanwhile, which is never replaced; save it with "
+            f"'anglebench register show {mine} --pdf OUT.pdf'") in said
+    assert not list(tmp_path.glob(".c.pdf.*"))  # no temporary file left
+    capsys.readouterr()
+    assert main(["register", "verify", str(pdf)]) == 0
+    assert f"certificate {theirs}" in capsys.readouterr().out

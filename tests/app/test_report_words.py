@@ -167,14 +167,14 @@ def test_the_windows_draft_messages_call_a_test_report_one(samples_dir, tmp_path
     assert "is not a certificate," in window.ask.call_args.args[1]
 
 
-def full_disk(path, data):
+def full_disk(*_args):
     raise OSError(28, "No space left on device")
 
 
 def test_the_windows_issued_but_not_written_calls_a_test_report_one(samples_dir, tmp_path,
                                                                     monkeypatch):
     view, presenter = _presenter()
-    monkeypatch.setattr("app.certificate_issue.write_bytes_atomic", full_disk)
+    monkeypatch.setattr("app.certificate_issue._write_new", full_disk)
     for key, number, said in (("positioning", REPORT, "Test report"),
                               ("polygon", CERTIFICATE, "Certificate")):
         assert not _export(presenter, view, samples_dir, key, tmp_path / f"{key}.pdf")
@@ -312,7 +312,7 @@ def test_the_export_dialogs_title_names_a_test_report(samples_dir, tmp_path):
 @pytest.mark.parametrize("language", ["en", "zh_CN"])
 def test_the_command_lines_issued_but_not_written(samples_dir, tmp_path, capsys, monkeypatch,
                                                   zh_catalogue, language):
-    monkeypatch.setattr("app.certificate_issue.write_bytes_atomic", full_disk)
+    monkeypatch.setattr("app.certificate_issue._write_new", full_disk)
     for key, number in (("positioning", REPORT), ("polygon", CERTIFICATE)):
         out = tmp_path / f"{key}.pdf"
         assert _analyze(samples_dir, tmp_path, key, "--certificate", str(out),

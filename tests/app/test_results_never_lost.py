@@ -469,3 +469,101 @@ def test_a_recorded_leftover_is_copied_where_no_hard_link_can_be_made_and_never_
         with pytest.raises(OutputRefused, match="could not be kept under another name"):
             keep_recorded_temporaries(Recorded(), [("", str(xlsx))])
     assert temp.read_bytes() == b"recorded"
+
+
+def _killed_before_named(samples_dir, tmp_path, xlsx, stale=True):
+    """An issue killed between recording its results file ``xlsx`` and naming it: the only
+    copy left as ``.r.xlsx.*.tmp`` (eleven minutes old when ``stale``); (entry, temp)."""
+    import app.certificate_issue
+
+    def killed(*_args, **_kwargs):
+        raise _Killed
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(app.certificate_issue, "_place", killed)
+        with pytest.raises(_Killed):
+            _issue(samples_dir, tmp_path, "--certificate", str(tmp_path / "c.pdf"),
+                   "--results", str(xlsx))
+    (entry,) = _results()
+    (temp,) = tmp_path.glob(f".{xlsx.name}.*.tmp")
+    if stale:
+        os.utime(temp, (temp.stat().st_mtime - 660,) * 2)
+    return entry, temp
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("writer", ["link", "validate"])
+def test_a_recorded_leftover_is_kept_from_a_write_through_a_link_and_from_validate(
+        samples_dir, tmp_path, capsys, writer):
+    """rev64 F2: the keeping looked beside the name given, the atomic write cleared the
+    leftovers beside the link's target: a draft's results written to latest.xlsx ->
+    r.xlsx deleted the only copy of a recorded results file; so did 'validate --pdf
+    r.xlsx' (no check at all)."""
+    xlsx = tmp_path / "r.xlsx"
+    entry, temp = _killed_before_named(samples_dir, tmp_path, xlsx)
+    capsys.readouterr()
+    if writer == "link":
+        latest = tmp_path / "latest.xlsx"
+        latest.symlink_to(xlsx)
+        assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                     "--results", str(latest)]) == 0
+    else:
+        assert main(["validate", "--trials", "100", "--pdf", str(xlsx)]) in (0, 1)
+    kept = tmp_path / f"r.{entry['number']}.xlsx"
+    assert [p.name for p in tmp_path.iterdir() if p.is_file() and _sha(p) == entry["sha256"]] \
+        == [kept.name]
+    assert not temp.exists() and xlsx.is_file()
+    assert f"kept as {kept}" in capsys.readouterr().err
+    assert main(["register", "verify", str(kept)]) == 0
+
+
+@pytest.mark.parametrize("number", ["AB/2026/0007", "AB\\2026\\0007", "AB:2026:0007"])
+def test_a_recorded_leftover_is_kept_under_a_name_a_file_can_have(tmp_path, number):
+    """rev64 F13: a certificate number holding "/" made the kept name r.AB/2026/0007.xlsx:
+    ValueError on every later write of r.xlsx (and in place of IssuedNotWritten when the
+    placing failed); "\\" and ":" name no file on Windows or a FAT stick."""
+    from app.issued_outputs import keep_in_sight, keep_recorded_temporaries
+    from models.project.atomic_write import write_bytes_atomic
+
+    class Recorded:
+        def results_records(self):
+            return [{"number": number, "sha256": hashlib.sha256(b"recorded").hexdigest()}]
+
+    xlsx = tmp_path / "r.xlsx"
+    temp = tmp_path / ".r.xlsx.abcdefgh.tmp"
+    temp.write_bytes(b"recorded")
+    os.utime(temp, (temp.stat().st_mtime - 660,) * 2)
+    (said,) = keep_recorded_temporaries(Recorded(), [("", str(xlsx))])
+    kept = tmp_path / "r.AB-2026-0007.xlsx"
+    assert kept.read_bytes() == b"recorded" and f"kept as {kept}" in said
+    assert keep_recorded_temporaries(Recorded(), [("", str(xlsx))]) == []  # named already
+    write_bytes_atomic(xlsx, b"the next save")
+    assert kept.read_bytes() == b"recorded"
+    again = tmp_path / ".r.xlsx.ijklmnop.tmp"  # a placing that failed: kept at once
+    again.write_bytes(b"recorded")
+    assert keep_in_sight(again, xlsx, number) == str(tmp_path / "r.AB-2026-0007-2.xlsx")
+
+
+@pytest.mark.slow
+def test_show_and_verify_say_when_the_results_file_named_is_not_the_recorded_one(
+        samples_dir, tmp_path, capsys, monkeypatch):
+    """rev64 F15: within ten minutes of a killed issue nothing pointed at the only copy of
+    its recorded results file, and 'register show' named r.xlsx, which another write had
+    filled since: both now say r.xlsx is not it, and where the recorded one is."""
+    xlsx = tmp_path / "r.xlsx"
+    entry, temp = _killed_before_named(samples_dir, tmp_path, xlsx, stale=False)
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                 "--results", str(xlsx)]) == 0  # a draft's, at once
+    assert temp.is_file() and _sha(xlsx) != entry["sha256"]
+    monkeypatch.chdir(tmp_path)
+    capsys.readouterr()
+    assert main(["register", "show", entry["number"]]) == 0
+    shown = capsys.readouterr().out
+    assert (f"  {xlsx} is not the results file recorded under that name with certificate "
+            f"{entry['number']} (its SHA-256 is {_sha(xlsx)}") in shown
+    assert (f"  the results file recorded with certificate {entry['number']} is {temp} "
+            "(SHA-256 as recorded): give it a name of its own") in shown
+    assert main(["register", "verify", str(xlsx)]) == 1
+    said = capsys.readouterr().out
+    assert f"{xlsx}: NOT in the register" in said
+    assert f"the results file recorded with certificate {entry['number']} is {temp}" in said
