@@ -843,10 +843,10 @@ class WorkbenchPresenter(QObject):
         input_warnings = []
         if parsed.errors:
             rows = sorted({e.row + 1 for e in parsed.errors})
-            shown = ", ".join(map(str, rows[:8])) + (" …" if len(rows) > 8 else "")
+            listed = ", ".join(map(str, rows[:8])) + (" …" if len(rows) > 8 else "")
             input_warnings.append(
                 tr("{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point "
-                   "at a red cell to see why.").format(cells=len(parsed.errors), rows=shown))
+                   "at a red cell to see why.").format(cells=len(parsed.errors), rows=listed))
         next_text = self._next_text()
         if self.plan_problem:
             input_warnings.append(tr("Entry plan: {reason}").format(
