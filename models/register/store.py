@@ -547,17 +547,27 @@ class Register:
     # -- issuing --------------------------------------------------------------------------
     def _next_value(self, conn, scheme: str, date: dt.date) -> tuple[str, str, int | None, int]:
         """The counter of ``scheme`` on ``date``, its value now (None: no row yet), the value
-        the next number takes (numbers typed by hand before are skipped) and that number."""
+        the next number takes and that number. A number issued before that is the next one
+        by any key the commit's check refuses by (:meth:`_check_free`: "AB-2026-2" typed by
+        hand is AB-2026-0002, so is "ab/2026/0002") is skipped, to the next free one (#64
+        review F3: only the same text was skipped, and the commit then refused the number
+        allocated, for every issue of the scheme)."""
+        from models.register.identifiers import identifier_keys
+
         sa, schema = self._sa, self._schema
         name = _counter_name(scheme, date)
         before = conn.execute(sa.select(schema.COUNTERS.c.last_value).where(
             schema.COUNTERS.c.name == name)).scalar_one_or_none()
+        issued = conn.execute(sa.select(schema.CERTIFICATES.c.number)).scalars().all()
+        # each key of every number issued, by the key's place (a key meets its own kind)
+        taken = [set(keys) for keys in zip(*(identifier_keys(n) for n in issued), strict=True)]
+        exact = set(issued)
         value = (before or 0) + 1
         for _ in range(10_000):
             number = format_certificate_number(scheme, value, date)
-            taken = conn.execute(sa.select(schema.CERTIFICATES.c.id).where(
-                schema.CERTIFICATES.c.number == number)).first()
-            if taken is None:
+            if number not in exact and not any(
+                    key in keys for key, keys in zip(identifier_keys(number), taken,
+                                                     strict=False)):
                 return name, number, before, value
             value += 1
         raise RegisterError(message(
@@ -590,24 +600,30 @@ class Register:
             self._append_entry(conn, "numbering", name, {"last_value": next_sequence - 1})
         return format_certificate_number(scheme, next_sequence, date)
 
-    def _check_free(self, conn, number: str) -> None:
-        """Raise RegisterError if ``number``, or one that prints alike (identifier_key), was
-        issued."""
+    def _check_free(self, conn, number: str, typed: bool = True) -> None:
+        """Raise RegisterError if ``number``, or one that prints alike (same_identifier), was
+        issued. ``typed``: the number was typed (the message says to leave it empty); else
+        the register allocated it (the message names ``register continue``)."""
         from models.register.identifiers import same_identifier
 
         c = self._schema.CERTIFICATES.c
         row = next((r for r in conn.execute(self._sa.select(
             c.number, c.issued_at, c.workbench, c.item_serial).order_by(c.id))
             if r.number == number or same_identifier(r.number, number)), None)
-        if row is not None:
-            raise RegisterError(
-                message(
-                QT_TR_NOOP("certificate number {number} was issued on {issued_at} ({workbench}, serial "
-                           "{value}): a number is issued once; leave the number empty and the register "
-                           "allocates the next"),
-                number=row.number if row.number == number else f"{number} ({row.number})",
-                issued_at=row.issued_at[:10], workbench=row.workbench,
-                value=row.item_serial or '—'))
+        if row is None:
+            return
+        said = {"number": row.number if row.number == number else f"{number} ({row.number})",
+                "issued_at": row.issued_at[:10], "workbench": row.workbench,
+                "value": row.item_serial or "—"}
+        if typed:
+            raise RegisterError(message(QT_TR_NOOP(
+                "certificate number {number} was issued on {issued_at} ({workbench}, serial "
+                "{value}): a number is issued once; leave the number empty and the register "
+                "allocates the next"), **said))
+        raise RegisterError(message(QT_TR_NOOP(
+            "certificate number {number} was issued on {issued_at} ({workbench}, serial "
+            "{value}): a number is issued once; move the numbering past it with 'anglebench "
+            "register continue SCHEME NEXT'"), **said))
 
     def _taken(self, conn, number: str) -> bool:
         try:
@@ -820,7 +836,8 @@ class Register:
                             current = self._current(conn, original.number)
                             if current.status != "issued":
                                 continue
-                        self._check_free(conn, plan.number)
+                        self._check_free(conn, plan.number, typed=plan.counter is None
+                                         and not supersedes)
                         conn.execute(certificates.insert().values(
                             **dataclasses.asdict(record), pdf=pdf,
                             dcc=None if dcc is None else bytes(dcc)))

@@ -258,6 +258,24 @@ def test_numbering_continues_after_hand_issued_numbers_and_never_goes_back(regis
     assert register.issue(request(), render)[0].number == "AB-2026-0100"
 
 
+def test_numbering_steps_over_hand_typed_numbers_that_are_the_next_by_key(register):
+    """#64 review F3: a hand-typed "AB-2026-2" was skipped by the allocator only if typed
+    "AB-2026-0002" exactly; the commit refused AB-2026-0002 as that number, and every
+    automatic issue of the scheme after it, telling the user to leave the number empty."""
+    from models.register.identifiers import same_identifier
+
+    typed = ["AB-2026-2", "ab/2026/0003", "\u0410\u0412-2026-0005", "AB-2026-06"]
+    for number in typed:
+        register.issue(request(_meta(certificate_number=number)), render)
+    allocated = [register.issue(request(), render)[0].number for _ in range(4)]
+    assert allocated == ["AB-2026-0001", "AB-2026-0004", "AB-2026-0007", "AB-2026-0008"]
+    numbers = [r.number for r in register.list()]
+    assert len(numbers) == 8
+    for number in allocated:
+        assert [n for n in numbers if same_identifier(n, number)] == [number]
+    assert register.audit() == []
+
+
 def test_an_issued_certificate_needs_an_approver(register):
     with pytest.raises(RegisterError, match="approves it"):
         register.issue(request(CertificateMetadata(**{**META.to_dict(), "standards": (),
@@ -621,6 +639,42 @@ def test_a_serial_of_look_alikes_or_other_separators_is_the_same_item(register, 
         register.issue(request(_meta(item_serial=serial)), render, separate_calibration="")
     assert refused.value.numbers == ("AB-2026-0001",)
     assert [r.number for r in register.list()] == ["AB-2026-0001"]
+
+
+@pytest.mark.parametrize("serial", ["lr\u0430-0815", "LRA\u4e000815", "LRA\u30fc0815",
+                                    "LRA\u31610815", "LRA\uff700815"])
+def test_a_serial_of_case_and_look_alikes_together_or_a_cjk_dash_is_the_same_item(register,
+                                                                                  serial):
+    """#64 review F4: "lrа-0815" (lower case and a Cyrillic "а") matched neither key and
+    was issued as a second original of LRA-0815's calibration; so were "LRA一0815" and the
+    other dashes of Chinese, Japanese and Korean input methods."""
+    from models.register.store import SameCalibrationIssued
+
+    register.issue(request(_meta(item_serial="LRA-0815")), render, separate_calibration="")
+    with pytest.raises(SameCalibrationIssued) as refused:
+        register.issue(request(_meta(item_serial=serial)), render, separate_calibration="")
+    assert refused.value.numbers == ("AB-2026-0001",)
+    assert [r.number for r in register.list()] == ["AB-2026-0001"]
+
+
+def test_case_and_look_alikes_together_keep_apart_what_prints_otherwise(register):
+    """#64 review F4: the keys joined case and look-alikes together, and still keep apart
+    "SN-L5" and "SN-I5" (rev63 F10), and a CJK dash stand-in among CJK characters."""
+    from models.register.identifiers import same_identifier, same_serial
+
+    assert same_identifier("AB-2026-0001", "\u0430b-2026-0001")
+    assert same_identifier("AB-2026-0001", "ab-2026-OOO1") and same_serial("SN-105", "sn-IO5")
+    assert not same_serial("SN-L5", "SN-I5") and not same_serial("SN-L5", "SN-15")
+    assert not same_serial("\u7b2c\u4e00-7", "\u7b2c-7")  # 第一: "one" among CJK
+    assert not same_serial("\u30bb\u30f3\u30b5\u30fc7", "\u30bb\u30f3\u30b5-7")  # センサー
+    assert not same_serial("\u4e00815", "-815")  # at the start: a character
+    register.issue(request(), render)
+    with pytest.raises(RegisterError, match="\u0430b-2026-0001 \\(AB-2026-0001\\) was issued"):
+        register.issue(request(_meta(certificate_number="\u0430b-2026-0001",
+                                     item_serial="OTHER")), render)
+    register.issue(request(_meta(item_serial="SN-L5")), render, separate_calibration="")
+    assert register.issue(request(_meta(item_serial="SN-I5")), render,
+                          separate_calibration="")[0].number == "AB-2026-0003"
 
 
 @pytest.mark.parametrize(("char", "name"), [
