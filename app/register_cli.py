@@ -193,7 +193,8 @@ def _print_record(record, register, words) -> None:
             else QT_TR_NOOP("  results file: {file}, SHA-256 {sha256}, recorded {recorded_at} "
                             "(a second one: CHANGED AFTER ISSUE, a certificate has one)"),
             file=entry["file"], sha256=entry["sha256"], recorded_at=entry["recorded_at"]))
-    due = register.due_date(record.item_serial) if record.item_serial else None
+    due = register.due_date(record.item_serial, record.item_manufacturer or "") \
+        if record.item_serial else None
     if due:
         lines.append(message(QT_TR_NOOP("  next calibration of {serial} due: {date}"),
                              serial=record.item_serial, date=due.isoformat()))

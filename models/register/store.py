@@ -1366,17 +1366,23 @@ class Register:
         found = self.verify_all(pdf)
         return found[0] if found else None
 
-    def history(self, serial: str) -> builtins.list[CertificateRecord]:
+    def history(self, serial: str, manufacturer: str = "") -> builtins.list[CertificateRecord]:
         """Every certificate of an instrument, oldest calibration first: of every serial
         number the one-calibration check takes for this item's (same_serial: "AB-10 5" and
         "ab105" are one item at issue, so one history), or, for a serial that says there is
-        none ("", "n/a": no_serial), of that serial as kept."""
+        none ("", "n/a": no_serial), of that serial as kept; with ``manufacturer``, of that
+        manufacturer's item (printing alike, case aside: same_identifier) where a record
+        names one — a serial is unique only within its maker (#64 review F6: Acme's "001"
+        and Zeta's "001" were one history, the older one's due date from the other's later
+        calibration); a record or a call naming none matches by the serial alone."""
         certificates = self._schema.CERTIFICATES
         c = certificates.c
         serial = _alike(serial)
         with self._read() as conn:
-            ids = [row.id for row in conn.execute(self._sa.select(c.id, c.item_serial))
-                   if _same_instrument(row.item_serial, serial)]
+            ids = [row.id for row in conn.execute(self._sa.select(
+                c.id, c.item_serial, c.item_manufacturer))
+                   if _same_instrument(row.item_serial, serial)
+                   and _same_maker(row.item_manufacturer, manufacturer)]
             if not ids:
                 return []
             rows = conn.execute(self._sa.select(*(c[name] for name in _RECORD_COLUMNS))
@@ -1429,10 +1435,12 @@ class Register:
                 .order_by(entries.c.seq.desc()).limit(1)).scalar_one_or_none()
             return found.get(last, found.get(serial))
 
-    def due_date(self, serial: str) -> dt.date | None:
-        """The last calibration of the serial plus its interval (None without either)."""
+    def due_date(self, serial: str, manufacturer: str = "") -> dt.date | None:
+        """The last calibration of the serial (of ``manufacturer``'s item, as
+        :meth:`history` tells it) plus the serial's interval (None without either)."""
         days = self.interval(serial)
-        dates = [r.calibration_date for r in self.history(serial) if r.calibration_date]
+        dates = [r.calibration_date for r in self.history(serial, manufacturer)
+                 if r.calibration_date]
         if not days or not dates:
             return None
         return dt.date.fromisoformat(max(dates)) + dt.timedelta(days=days)
@@ -1518,6 +1526,16 @@ def _same_instrument(kept: str, serial: str) -> bool:
     if kept == serial:
         return True
     return not no_serial(serial) and not no_serial(kept) and same_serial(kept, serial)
+
+
+def _same_maker(kept: str | None, manufacturer: str) -> bool:
+    """Whether a record's manufacturer is ``manufacturer``'s, for an instrument's history:
+    printing alike, case aside (same_identifier); a record or a call naming none is any."""
+    from models.register.identifiers import same_identifier
+
+    if not (kept or "").strip() or not (manufacturer or "").strip():
+        return True
+    return same_identifier(kept or "", manufacturer)
 
 
 def _parse_time(text: str) -> dt.datetime:

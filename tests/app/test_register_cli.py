@@ -406,3 +406,22 @@ def test_analyze_refuses_a_customer_description_or_maker_that_prints_nothing(
     assert "no certificate was written" in err
     with Register(register_url()) as register:
         assert register.list() == []
+
+
+def test_show_gives_the_due_date_of_that_makers_item(capsys):
+    """#64 review F6: with Acme's "001" calibrated 2025-06-01 and Zeta's "001" on
+    2026-11-20, ``register show`` of Acme's certificate gave "due: 2027-11-20" (Zeta's
+    calibration) for an instrument overdue since 2026-06-01."""
+    numbers = []
+    with Register(register_url()) as register:
+        for maker, day in (("Acme Optics", "2025-06-01"), ("Zeta Instruments", "2026-11-20")):
+            meta = CertificateMetadata(approver="Dr. Li", calibration_date=day,
+                                       item_serial="001", item_manufacturer=maker)
+            numbers.append(register.issue(IssueRequest("polygon", meta, "{}"),
+                                          lambda meta: b"%PDF")[0].number)
+    assert main(["register", "interval", "001", "365"]) == 0
+    capsys.readouterr()
+    assert main(["register", "show", numbers[0]]) == 0
+    assert "next calibration of 001 due: 2026-06-01" in capsys.readouterr().out
+    assert main(["register", "show", numbers[1]]) == 0
+    assert "next calibration of 001 due: 2027-11-20" in capsys.readouterr().out

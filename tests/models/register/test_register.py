@@ -797,6 +797,31 @@ def test_history_and_due_date_of_a_serial_typed_another_way_are_the_items(regist
     assert register.audit() == []  # each interval cleared is in the chain
 
 
+def test_history_and_due_date_of_one_serial_of_two_makers_are_each_makers(register):
+    """#64 review F6: Acme's rotary table "001" (calibrated 2025-06-01) and Zeta's
+    indexing head "001" (2026-11-20) were one history: Acme's due date followed Zeta's
+    calibration (2027-11-20, in date) where it was overdue (2026-06-01)."""
+    acme = _meta(item_serial="001", item_manufacturer="Acme Optics",
+                 item_description="Rotary table RT-300", calibration_date="2025-06-01",
+                 customer_name="Customer A")
+    zeta = _meta(item_serial="001", item_manufacturer="Zeta Instruments",
+                 item_description="Indexing head IH-2", calibration_date="2026-11-20",
+                 customer_name="Customer B")
+    a, _ = register.issue(request(acme), render, separate_calibration="")
+    b, _ = register.issue(request(zeta), render, separate_calibration="")
+    unnamed, _ = register.issue(request(_meta(item_serial="001", item_manufacturer="",
+                                              calibration_date="2024-01-10")), render)
+    register.set_interval("001", 365)
+    assert register.due_date("001", "Acme Optics") == dt.date(2026, 6, 1)
+    assert register.due_date("001", "ACME optics") == dt.date(2026, 6, 1)  # case aside
+    assert register.due_date("001", "Zeta Instruments") == dt.date(2027, 11, 20)
+    assert [r.number for r in register.history("001", "Acme Optics")] == [unnamed.number,
+                                                                          a.number]
+    # no maker named, on either side: by the serial alone
+    assert [r.number for r in register.history("001")] == [unnamed.number, a.number, b.number]
+    assert register.due_date("001") == dt.date(2027, 11, 20)
+
+
 @pytest.mark.parametrize(("field", "what", "typed", "at"), [
     ("customer_name", "customer", "ACME\u200b Ltd", 5),
     ("item_description", "item description", "Rotary\u00ad encoder", 7),
