@@ -1099,6 +1099,8 @@ class Register:
                                {"names": cleaned, "distinct": bool(distinct)})
 
     def _check_approval(self, meta: CertificateMetadata) -> None:
+        from models.register.identifiers import same_name
+
         names, distinct = self.signatories()
         approver = " ".join(meta.approver.split())
         if names and approver.casefold() not in {n.casefold() for n in names}:
@@ -1106,7 +1108,9 @@ class Register:
                 "\"{approver}\" is not one of the lab's authorised signatories ({names}): "
                 "the certificate is approved by one of them"),
                 approver=approver, names=", ".join(names)))
-        if distinct and approver.casefold() == " ".join(meta.operator.split()).casefold():
+        # by the look-alike keys, spaces collapsed (#64 review F10: an operator "Dr. Lі",
+        # a Cyrillic "і", printed "Dr. Li" twice and passed as another person)
+        if distinct and same_name(approver, meta.operator):
             raise RegisterError(message(QT_TR_NOOP(
                 "the lab requires the approver to differ from the operator: {name} cannot "
                 "approve a calibration they made"), name=approver))

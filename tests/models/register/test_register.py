@@ -285,6 +285,20 @@ def test_an_issued_certificate_needs_an_approver(register):
                                                 "approver": ""}).missing_fields()
 
 
+@pytest.mark.parametrize("operator", ["Dr. L\u0456", "DR. L\u0456", "dr.\u00a0 \u13deI",
+                                      "Dr. \u029fi"])
+def test_the_approver_is_not_the_operator_under_a_look_alike_name(register, operator):
+    """#64 review F10: with ``signatories "Dr. Li" --distinct``, an operator "Dr. Lі" (a
+    Cyrillic "і") printed "Dr. Li" twice and was issued as another person's calibration;
+    the names were compared case folded only."""
+    register.set_signatories(["Dr. Li"], distinct=True)
+    with pytest.raises(RegisterError, match="Dr. Li cannot approve a calibration they made"):
+        register.issue(request(_meta(operator=operator)), render)
+    assert register.list() == []
+    record, _ = register.issue(request(_meta(operator="Dr. Liu")), render)
+    assert (record.approver, record.operator) == ("Dr. Li", "Dr. Liu")
+
+
 def test_the_date_of_issue_is_the_day_the_register_issues_it(register):
     typed = CertificateMetadata(**{**META.to_dict(), "standards": (),
                                    "issue_date": "2026-11-01", "calibration_date": "2026-10-20",
