@@ -729,12 +729,13 @@ class Register:
         original's workbench, for its item (the serial compared as printed, never by its
         look-alike key, which only asks or refuses: rev63 F2; an item of no serial by its
         description and maker too: rev63 F1) and date of calibration, else
-        :class:`NotTheSameCalibration`. What else it changes (the customer's name or
-        address, the description of an item with a serial, readings, results) is what the
-        change note says. A corrected serial number, date of calibration, or description or
-        maker of an item of no serial is issued only with ``correction_confirmed`` and is
-        then stated on it, before the change note ("serial number corrected from LRA-0815
-        (on AB-2026-0001) to LRA-0816"); never
+        :class:`NotTheSameCalibration`. What else it changes (the customer's address,
+        readings, results) is what the change note says. A corrected serial number, date of
+        calibration, manufacturer, customer's name, or description of an item of no serial
+        is issued only with ``correction_confirmed`` and is then stated on it, before the
+        change note ("serial number corrected from LRA-0815 (on AB-2026-0001) to LRA-0816",
+        "customer corrected from …"; #64 review F5); a changed description of an item with a
+        serial is stated unasked ("item description changed from …"); never
         onto the item and date of another current certificate. The workbench is never
         corrected: a calibration on another workbench is an original."""
         from models.register.identifiers import IdentifierError, normalise_identifier, refuse_unprinted
@@ -944,10 +945,46 @@ class Register:
                 old=_item_text(original.item_description, original.item_manufacturer),
                 number=original.number,
                 new=_item_text(meta.item_description, meta.item_manufacturer)))
-        if not changes:
-            return ()
-        if not confirmed and unnamed:
+        # the maker and the customer are the calibration's as the serial is: a serial is
+        # unique only within its maker, and the customer is whose calibration it is (#64
+        # review F5: an amendment moved LRA-0815's calibration onto another maker's item
+        # and another customer's name, unasked and unsaid); compared as printed, spaces
+        # collapsed. A changed description of an item with a serial is said, not asked.
+        owned = []
+        if not unnamed and _printed(original.item_manufacturer) \
+                != _printed(meta.item_manufacturer):
+            owned.append(message(QT_TR_NOOP(
+                "manufacturer corrected from {old} (on {number}) to {new}"),
+                old=_printed(original.item_manufacturer) or "—", number=original.number,
+                new=_printed(meta.item_manufacturer) or "—"))
+        if _printed(original.customer) != _printed(meta.customer_name):
+            owned.append(message(QT_TR_NOOP(
+                "customer corrected from {old} (on {number}) to {new}"),
+                old=_printed(original.customer) or "—", number=original.number,
+                new=_printed(meta.customer_name) or "—"))
+        said = []
+        if not unnamed and _printed(original.item_description) \
+                != _printed(meta.item_description):
+            said.append(message(QT_TR_NOOP(
+                "item description changed from {old} (on {number}) to {new}"),
+                old=_printed(original.item_description) or "—", number=original.number,
+                new=_printed(meta.item_description) or "—"))
+        if not changes and not owned:
+            return tuple(said)
+        if not confirmed and not changes:
             raise NotTheSameCalibration(message(QT_TR_NOOP(
+                "{number}: these details change what it reports: {changes}. An amendment or "
+                "replacement corrects the same calibration (ISO/IEC 17025 7.8.8): another "
+                "manufacturer's item or another customer's calibration is an original; a "
+                "corrected manufacturer or customer is issued only when confirmed, and is then "
+                "stated on it"), number=original.number, changes=separated(owned)),
+                tuple(owned))
+        # said after the question about the serial, the item or the date, when asked
+        also = message(QT_TR_NOOP("It also corrects: {changes}."),
+                       changes=separated(owned)) if owned else ""
+        refused = None
+        if not confirmed and unnamed:
+            refused = (message(QT_TR_NOOP(
                 "{number} reports {item}, which has no serial number, calibrated {date}; these "
                 "details give {new_item}, calibrated {new_date}. An amendment or replacement "
                 "corrects the same calibration (ISO/IEC 17025 7.8.8): another item's or another "
@@ -957,9 +994,9 @@ class Register:
                 item=_item_text(original.item_description, original.item_manufacturer),
                 date=original.calibration_date or "—",
                 new_item=_item_text(meta.item_description, meta.item_manufacturer),
-                new_date=meta.calibration_date or "—"), tuple(changes))
-        if not confirmed:
-            raise NotTheSameCalibration(message(QT_TR_NOOP(
+                new_date=meta.calibration_date or "—"))
+        elif not confirmed:
+            refused = (message(QT_TR_NOOP(
                 "{number} reports serial number {serial}, calibrated {date}; these details give "
                 "serial number {new_serial}, calibrated {new_date}. An amendment or replacement "
                 "corrects the same calibration (ISO/IEC 17025 7.8.8): another item's or another "
@@ -967,9 +1004,13 @@ class Register:
                 "calibration is issued only when confirmed, and is then stated on it"),
                 number=original.number, serial=original.item_serial or "—",
                 date=original.calibration_date or "—", new_serial=meta.item_serial or "—",
-                new_date=meta.calibration_date or "—"), tuple(changes))
-        others = tuple(n for n in self._same_calibration(conn, workbench, meta)
-                       if n != original.number)
+                new_date=meta.calibration_date or "—"))
+        identity, changes = bool(changes), [*changes, *owned]
+        if refused is not None:
+            raise NotTheSameCalibration(separated([refused, also], " "), tuple(changes))
+        # the item or the date corrected: never onto another current certificate's
+        others = () if not identity else tuple(
+            n for n in self._same_calibration(conn, workbench, meta) if n != original.number)
         if others:
             raise NotTheSameCalibration(message(QT_TR_NOOP(
                 "{numbers} already reports serial number {serial}, calibrated {date}: a "
@@ -977,7 +1018,7 @@ class Register:
                 "amend or replace {numbers} instead"),
                 numbers=", ".join(others), serial=meta.item_serial or "—",
                 date=meta.calibration_date or "—", number=original.number))
-        return tuple(changes)
+        return (*changes, *said)
 
     def _current(self, conn, number: str) -> CertificateRecord:
         record = self._get(conn, number)
@@ -1716,6 +1757,14 @@ def _same_item(description: str, manufacturer: str, meta: CertificateMetadata) -
 
     return same_identifier(description or "", meta.item_description or "") \
         and same_identifier(manufacturer or "", meta.item_manufacturer or "")
+
+
+def _printed(text: str | None) -> str:
+    """``text`` as a certificate prints it (as_printed), spaces collapsed: a name or a
+    description typed otherwise is a changed one."""
+    from models.register.identifiers import as_printed
+
+    return " ".join(as_printed(text or "").split())
 
 
 def _item_text(description: str, manufacturer: str) -> str:

@@ -425,3 +425,26 @@ def test_show_gives_the_due_date_of_that_makers_item(capsys):
     assert "next calibration of 001 due: 2026-06-01" in capsys.readouterr().out
     assert main(["register", "show", numbers[1]]) == 0
     assert "next calibration of 001 due: 2027-11-20" in capsys.readouterr().out
+
+
+def test_show_states_a_corrected_customer_maker_and_description(capsys):
+    """#64 review F5: an amendment that changed the manufacturer, description and customer
+    of an item with a serial said nothing of it but the note; ``show`` now gives each."""
+    item = {"approver": "Dr. Li", "calibration_date": "2026-11-20", "item_serial": "LRA-0815",
+            "item_manufacturer": "Example Instruments", "customer_name": "Acme Optics",
+            "item_description": "Limited-rotation axis"}
+    other = {**item, "item_manufacturer": "Other Corp", "customer_name": "Another Customer Ltd",
+             "item_description": "24-face polygon"}
+    with Register(register_url()) as register:
+        first = register.issue(IssueRequest("polygon", CertificateMetadata(**item), "{}"),
+                               lambda meta: b"%PDF")[0].number
+        amended = register.issue(IssueRequest("polygon", CertificateMetadata(**other), "{}"),
+                                 lambda meta: b"%PDF A1", supersedes=first, change_note="typo",
+                                 correction_confirmed=True)[0].number
+    capsys.readouterr()
+    assert main(["register", "show", amended]) == 0
+    shown = capsys.readouterr().out
+    assert (f"change_note: manufacturer corrected from Example Instruments (on {first}) to "
+            f"Other Corp; customer corrected from Acme Optics (on {first}) to Another Customer "
+            f"Ltd; item description changed from Limited-rotation axis (on {first}) to 24-face "
+            "polygon; typo") in shown

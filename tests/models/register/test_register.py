@@ -759,6 +759,48 @@ def test_an_item_without_a_serial_is_the_same_item_by_its_description_and_maker(
                  item_serial="RT5-0001") == "AB-2026-0003"  # a serial: another question
 
 
+def test_an_amendment_asks_about_a_changed_maker_or_customer_and_states_them(register):
+    """#64 review F5: an amendment of LRA-0815's certificate changed its manufacturer,
+    description and customer unasked, stating nothing but the free note ("typo"): a serial
+    is unique only within its maker, and the customer is whose calibration it is."""
+    from models.register.store import NotTheSameCalibration
+
+    item = {"item_serial": "LRA-0815", "item_manufacturer": "Example Instruments",
+            "item_description": "Limited-rotation axis", "customer_name": "Acme Optics"}
+    first, _ = register.issue(request(_meta(**item)), render, separate_calibration="")
+    other = {**item, "item_manufacturer": "Other Corp", "customer_name": "Another Customer Ltd",
+             "item_description": "24-face polygon"}
+    for changed, said in (({"item_manufacturer": "Other Corp"}, "manufacturer corrected from "
+                           "Example Instruments \\(on AB-2026-0001\\) to Other Corp"),
+                          ({"customer_name": "Another Customer Ltd"}, "customer corrected from "
+                           "Acme Optics \\(on AB-2026-0001\\) to Another Customer Ltd")):
+        with pytest.raises(NotTheSameCalibration, match=f"AB-2026-0001: these details change "
+                           f"what it reports: {said}\\. An amendment"):
+            register.issue(request(_meta(**{**item, **changed})), render,
+                           supersedes=first.number, change_note="typo", separate_calibration="")
+    assert [r.number for r in register.list()] == [first.number]  # nothing issued
+    # the same maker and customer, spaced otherwise: no question, nothing stated
+    spaced, _ = register.issue(request(_meta(**{**item, "customer_name": " Acme  Optics"})),
+                               render, supersedes=first.number, change_note="typo",
+                               separate_calibration="")
+    assert spaced.change_note == "typo"
+    amended, pdf = register.issue(request(_meta(**other)), render, supersedes=spaced.number,
+                                  change_note="typo", separate_calibration="",
+                                  correction_confirmed=True)
+    assert amended.change_note == (
+        f"manufacturer corrected from Example Instruments (on {spaced.number}) to Other Corp; "
+        f"customer corrected from Acme Optics (on {spaced.number}) to Another Customer Ltd; "
+        f"item description changed from Limited-rotation axis (on {spaced.number}) to 24-face "
+        "polygon; typo")
+    assert (amended.item_manufacturer, amended.customer) == ("Other Corp", "Another Customer Ltd")
+    # a description alone: said, not asked
+    again, _ = register.issue(request(_meta(**{**other, "item_description": "Polygon"})),
+                              render, supersedes=amended.number, change_note="",
+                              separate_calibration="")
+    assert again.change_note == (f"item description changed from 24-face polygon (on "
+                                 f"{amended.number}) to Polygon")
+
+
 def test_amendments_count_only_amendments(register):
     """#61 review: a number typed as "ab-2026-0001-a1" for another item made the first real
     amendment of AB-2026-0001 "Amendment 2" (counted by a case-blind LIKE), and a typed
