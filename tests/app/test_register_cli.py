@@ -124,9 +124,13 @@ def test_verify_names_the_replacement_and_show_refuses_a_changed_pdf(samples_dir
     assert issue(samples_dir, tmp_path, "a", capsys, certificate_number="")[0] == 0
     with Register(register_url()) as register:
         original = register.list()[0].number
-        # a replacement is of the same item (rev62 F1): the original's serial number
+        # a replacement is of the same item (rev62 F1): the original's serial number, and
+        # (#64 review F5) its maker and customer
+        kept = register.get(original)
         meta = CertificateMetadata(approver="Dr. Li", calibration_date="2026-11-20",
-                                   item_serial=register.get(original).item_serial)
+                                   item_serial=kept.item_serial,
+                                   item_manufacturer=kept.item_manufacturer,
+                                   customer_name=kept.customer)
         record, _ = register.issue(
             IssueRequest("polygon", meta, register.get(original).project_json),
             lambda meta: b"%PDF replacement", supersedes=original, replacement=True,
