@@ -198,7 +198,8 @@ def _print_record(record, register, words) -> None:
         # the file of that name here, when it is not the recorded one, and the recorded one
         # beside it (rev64 F15: after a killed issue, r.xlsx held another certificate's)
         lines += _results_elsewhere(entry, Path.cwd(), "  ")
-    due = register.due_date(record.item_serial) if record.item_serial else None
+    due = register.due_date(record.item_serial, record.item_manufacturer or "") \
+        if record.item_serial else None
     if due:
         lines.append(message(QT_TR_NOOP("  next calibration of {serial} due: {date}"),
                              serial=record.item_serial, date=due.isoformat()))

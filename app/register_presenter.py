@@ -74,6 +74,9 @@ class RegisterPresenter:
         self.open_project_state = open_project_state
         self.records: list[CertificateRecord] = []
         self.search = ""
+        #: the instrument whose history is shown: its serial and manufacturer (#64 review
+        #: F6: two makers' items of one serial are two histories)
+        self._instrument = ("", "")
 
     def _register(self):
         return self.certificates.open_register()
@@ -259,12 +262,13 @@ class RegisterPresenter:
         record = self.selected()
         if record is None or not record.item_serial:
             return
-        self._history(record.item_serial)
+        self._history(record.item_serial, record.item_manufacturer or "")
 
-    def _history(self, serial: str) -> None:
+    def _history(self, serial: str, manufacturer: str = "") -> None:
+        self._instrument = (serial, manufacturer)
         with self._register() as register:
-            records = register.history(serial)
-            due = register.due_date(serial)
+            records = register.history(serial, manufacturer)
+            due = register.due_date(serial, manufacturer)
             interval = register.interval(serial) or 0
         series: dict[str, tuple[list[float], list[float]]] = {}
         for r in records:
@@ -282,4 +286,5 @@ class RegisterPresenter:
         except RegisterError as exc:
             self.view.tell(tr("Register"), explained(exc))
             return
-        self._history(serial)
+        shown, manufacturer = self._instrument
+        self._history(serial, manufacturer if shown == serial else "")

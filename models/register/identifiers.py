@@ -15,7 +15,7 @@ a certificate is uniquely identified; #61 and #62 reviews):
    before it to mark (first, or after a space).
 2. **Kept** as typed otherwise, normalised: Unicode NFKC, every dash and hyphen as "-", every
    space as one " ".
-3. **Compared** by two keys, never chained (:func:`same_identifier`, :func:`same_serial`):
+3. **Compared** by four keys, never chained (:func:`same_identifier`, :func:`same_serial`):
    the UTS #39 skeleton, case-sensitive as UTS #39 defines it (:func:`identifier_key`,
    :func:`serial_key`), and the text case folded with nothing else made alike
    (:func:`folded_identifier_key`, :func:`folded_serial_key`). Both: NFKC;
@@ -30,7 +30,13 @@ a certificate is uniquely identified; #61 and #62 reviews):
    look-alikes of digits within Latin ("O" as 0; "l", "I" and "|" as 1) and "rn" as "m",
    as UTS #39 has them. Case is not folded in the skeleton: "L" prints otherwise than "I"
    and "i" otherwise than "1" (rev63 F10: case folded before the look-alikes made
-   "SN-L5" one with "SN-I5"). A key only ever asks a question or refuses a number — never
+   "SN-L5" one with "SN-I5"). Case and look-alikes at once (#64 review F4) by two keys
+   more (:func:`identifier_keys`, :func:`serial_keys`): the skeleton case folded
+   ("ab-2026-OOO1"), and the prototypes without the digit look-alikes case folded
+   ("lrа-0815", a Cyrillic "а"); a letter read as a digit is never folded, so "SN-L5" is
+   neither "SN-I5" nor "SN-15". The dash stand-ins of CJK input methods ("一", "ー",
+   "ㅡ") between letters or digits of other scripts are "-" in every key
+   (:func:`_cjk_dashes`). A key only ever asks a question or refuses a number — never
    issues a second one, and never lets a change through (what prints otherwise is
    compared as printed, :func:`as_printed`; rev63 F2).
    - A certificate number's separators (any run of punctuation, symbols and spaces: "-",
@@ -54,8 +60,9 @@ from models.messages import QT_TR_NOOP, message
 from models.register._identifier_tables import CONFUSABLES, DEFAULT_IGNORABLE
 
 __all__ = ["IdentifierError", "as_printed", "folded_identifier_key", "folded_serial_key",
-           "identifier_key", "no_serial", "normalise_identifier", "refuse_unprinted",
-           "same_identifier", "same_serial", "serial_key"]
+           "identifier_key", "identifier_keys", "no_serial", "normalise_identifier",
+           "refuse_unprinted", "same_identifier", "same_name", "same_serial", "serial_key",
+           "serial_keys"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
 _DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
@@ -146,31 +153,92 @@ def _is_separator(char: str) -> bool:
     return unicodedata.category(char)[0] in "PSZ"
 
 
+#: what Chinese, Japanese and Korean input methods give for "-" (as NFKC keeps them): the
+#: ideograph one "一" (and the Kangxi radical "⼀"), the prolonged sound mark "ー" (and the
+#: half-width "ｰ"), the Hangul vowel "ㅡ" (NFKC: U+1173)
+_DASH_STAND_INS = frozenset("\u4e00\u30fc\u1173")
+_CJK_NAMES = ("CJK ", "HIRAGANA", "KATAKANA", "HANGUL", "BOPOMOFO", "IDEOGRAPHIC", "KANGXI",
+              "HALFWIDTH KATAKANA", "HALFWIDTH HANGUL")
+
+
+def _stands_in_a_word(char: str) -> bool:
+    """Whether ``char`` is a letter or digit of a script other than Chinese, Japanese or
+    Korean (a dash stand-in between two of them is a dash)."""
+    return unicodedata.category(char)[0] in "LN" and char not in _DASH_STAND_INS \
+        and not unicodedata.name(char, "").startswith(_CJK_NAMES)
+
+
+def _cjk_dashes(text: str) -> str:
+    """``text`` with every run of dash stand-ins (:data:`_DASH_STAND_INS`) that stands
+    between two letters or digits of other scripts as "-" (#64 review F4: "LRA一0815" is
+    LRA-0815); between or beside Chinese, Japanese or Korean characters, or at either end,
+    each is the character it is ("一" is one in "第一", "ー" lengthens "センサー")."""
+    if not _DASH_STAND_INS.intersection(text):
+        return text
+    out, i = [], 0
+    while i < len(text):
+        j = i
+        while j < len(text) and text[j] in _DASH_STAND_INS:
+            j += 1
+        if j == i:
+            out.append(text[i])
+            i += 1
+            continue
+        between = i > 0 and j < len(text) and _stands_in_a_word(text[i - 1]) \
+            and _stands_in_a_word(text[j])
+        out.append("-" if between else text[i:j])
+        i = j
+    return "".join(out)
+
+
 def _digits(text: str) -> str:
-    """NFKC, no default-ignorable code point, decimal digits as ASCII ones."""
+    """NFKC, no default-ignorable code point, decimal digits as ASCII ones, the dash
+    stand-ins of CJK input methods between letters or digits of other scripts as "-"."""
     kept = []
     for char in unicodedata.normalize("NFKC", text or ""):
         if _ignorable(char):
             continue
         digit = unicodedata.decimal(char, None)
         kept.append(str(digit) if digit is not None else char)
-    return "".join(kept)
+    return _cjk_dashes("".join(kept))
+
+
+def _prototypes(text: str) -> str:
+    """``text`` (as :func:`_digits` gives it) in NFD with every character that prints as a
+    Latin letter, digit or sign as its UTS #39 prototype: NFD, so that a composed Cyrillic
+    or Greek letter meets its Latin look-alike ("Ӧ" is "О" and a diaeresis, "Ö" is "O" and
+    one; rev63 F3)."""
+    return "".join(CONFUSABLES.get(char, char)
+                   for char in unicodedata.normalize("NFD", _digits(text)))
 
 
 def _skeleton(text: str) -> str:
-    """``text``'s UTS #39 skeleton, case-sensitive as UTS #39 defines it: NFD (so that a
-    composed Cyrillic or Greek letter meets its Latin look-alike: "Ӧ" is "О" and a
-    diaeresis, "Ö" is "O" and one; rev63 F3), the prototypes, the digit look-alikes as
-    digits, then NFC again (separators and "rn" are left to the caller)."""
-    text = unicodedata.normalize("NFD", _digits(text))
-    text = "".join(CONFUSABLES.get(char, char) for char in text)
-    return unicodedata.normalize("NFC", text.translate(_DIGIT_LIKE))
+    """``text``'s UTS #39 skeleton, case-sensitive as UTS #39 defines it: the prototypes,
+    the digit look-alikes as digits, then NFC again (separators and "rn" are left to the
+    caller)."""
+    return unicodedata.normalize("NFC", _prototypes(text).translate(_DIGIT_LIKE))
 
 
 def _folded(text: str) -> str:
     """``text`` case folded, and nothing else made alike (no prototype, no digit
     look-alike: a chain of the two made "L" one with "I"; rev63 F10)."""
     return unicodedata.normalize("NFC", _digits(text).casefold())
+
+
+def _skeleton_folded(text: str) -> str:
+    """The skeleton, then case folded (#64 review F4: "ab-2026-OOO1" is AB-2026-0001, and
+    "sn-IO5" is SN-105, which neither key alone joined). Folded after the digit
+    look-alikes, so "I" is still "1" and "L" still "l": "SN-I5" is not "SN-L5"."""
+    return unicodedata.normalize("NFC", _skeleton(text).casefold())
+
+
+def _prototypes_folded(text: str) -> str:
+    """The prototypes without the digit look-alikes, then case folded (#64 review F4:
+    "lrа-0815", with a Cyrillic "а", is LRA-0815; the skeleton reads its lower-case "l"
+    as "1", the upper-case "L" as itself, so the skeleton folded kept them apart). No
+    digit look-alike: "SN-L5" (folded "sn-l5") is neither "SN-I5" ("sn-i5") nor "SN-15"."""
+    return unicodedata.normalize("NFC", unicodedata.normalize("NFC", _prototypes(text))
+                                 .casefold())
 
 
 def _zeros_dropped(text: str) -> str:
@@ -202,11 +270,20 @@ def folded_identifier_key(text: str) -> str:
     return _number_key(_folded(text))
 
 
+@functools.lru_cache(maxsize=1 << 16)
+def identifier_keys(text: str) -> tuple[str, str, str, str]:
+    """Every key an identifier is compared by (the module's principle 3), each to the same
+    key of another: the skeleton, the case folded text, the skeleton case folded and the
+    prototypes case folded (:func:`same_identifier`)."""
+    return (identifier_key(text), folded_identifier_key(text),
+            _number_key(_skeleton_folded(text)), _number_key(_prototypes_folded(text)))
+
+
 def same_identifier(one: str, other: str) -> bool:
-    """Whether two identifiers are one: their skeletons are equal, or they are equal case
-    aside; never a chain of both (rev63 F10)."""
-    return identifier_key(one) == identifier_key(other) \
-        or folded_identifier_key(one) == folded_identifier_key(other)
+    """Whether two identifiers are one: one of their keys (:func:`identifier_keys`) is
+    equal; never a chain of two keys (rev63 F10)."""
+    return any(a == b for a, b in zip(identifier_keys(one), identifier_keys(other),
+                                      strict=True))
 
 
 @functools.lru_cache(maxsize=1 << 16)
@@ -224,11 +301,18 @@ def folded_serial_key(text: str) -> str:
     return _serial_key(_folded(text))
 
 
+@functools.lru_cache(maxsize=1 << 16)
+def serial_keys(text: str) -> tuple[str, str, str, str]:
+    """Every key a serial number is compared by, as :func:`identifier_keys` (separators
+    dropped: :func:`serial_key`)."""
+    return (serial_key(text), folded_serial_key(text),
+            _serial_key(_skeleton_folded(text)), _serial_key(_prototypes_folded(text)))
+
+
 def same_serial(one: str, other: str) -> bool:
-    """Whether two serial numbers are one item's: by their skeletons, or case aside; never
-    a chain of both (rev63 F10: "SN-L5" and "SN-I5" are two items)."""
-    return serial_key(one) == serial_key(other) \
-        or folded_serial_key(one) == folded_serial_key(other)
+    """Whether two serial numbers are one item's: one of their keys (:func:`serial_keys`)
+    is equal; never a chain of two keys (rev63 F10: "SN-L5" and "SN-I5" are two items)."""
+    return any(a == b for a, b in zip(serial_keys(one), serial_keys(other), strict=True))
 
 
 def as_printed(text: str) -> str:
@@ -241,11 +325,23 @@ def as_printed(text: str) -> str:
 #: what labs write in the serial's field for an item that has none
 _NO_SERIAL_WORDS = ("", "n/a", "na", "n.a.", "none", "no serial", "unknown", "nil", "null",
                     "keine", "无", "没有", "不详", "未知")
-_NO_SERIAL = frozenset(key(word) for word in _NO_SERIAL_WORDS
-                       for key in (folded_serial_key, serial_key))
+_NO_SERIAL = frozenset(key for word in _NO_SERIAL_WORDS for key in serial_keys(word))
 
 
 def no_serial(text: str) -> bool:
     """Whether ``text``, in the serial number's field, says the item has none (principle
     4): empty, separators only ("-"), or a word for none ("n/a")."""
-    return folded_serial_key(text) in _NO_SERIAL or serial_key(text) in _NO_SERIAL
+    return not _NO_SERIAL.isdisjoint(serial_keys(text))
+
+
+def _name_keys(text: str) -> tuple[str, ...]:
+    spaced = " ".join(_digits(text).split())
+    return (_skeleton(spaced), _folded(spaced), _skeleton_folded(spaced),
+            _prototypes_folded(spaced))
+
+
+def same_name(one: str, other: str) -> bool:
+    """Whether two people's names print alike: spaces collapsed, one of the keys of
+    :func:`identifier_keys` equal, punctuation and zeros kept as typed (#64 review F10: an
+    operator "Dr. Lі", with a Cyrillic "і", approved the calibration of approver "Dr. Li")."""
+    return any(a == b for a, b in zip(_name_keys(one), _name_keys(other), strict=True))

@@ -578,17 +578,27 @@ class Register:
     # -- issuing --------------------------------------------------------------------------
     def _next_value(self, conn, scheme: str, date: dt.date) -> tuple[str, str, int | None, int]:
         """The counter of ``scheme`` on ``date``, its value now (None: no row yet), the value
-        the next number takes (numbers typed by hand before are skipped) and that number."""
+        the next number takes and that number. A number issued before that is the next one
+        by any key the commit's check refuses by (:meth:`_check_free`: "AB-2026-2" typed by
+        hand is AB-2026-0002, so is "ab/2026/0002") is skipped, to the next free one (#64
+        review F3: only the same text was skipped, and the commit then refused the number
+        allocated, for every issue of the scheme)."""
+        from models.register.identifiers import identifier_keys
+
         sa, schema = self._sa, self._schema
         name = _counter_name(scheme, date)
         before = conn.execute(sa.select(schema.COUNTERS.c.last_value).where(
             schema.COUNTERS.c.name == name)).scalar_one_or_none()
+        issued = conn.execute(sa.select(schema.CERTIFICATES.c.number)).scalars().all()
+        # each key of every number issued, by the key's place (a key meets its own kind)
+        taken = [set(keys) for keys in zip(*(identifier_keys(n) for n in issued), strict=True)]
+        exact = set(issued)
         value = (before or 0) + 1
         for _ in range(10_000):
             number = format_certificate_number(scheme, value, date)
-            taken = conn.execute(sa.select(schema.CERTIFICATES.c.id).where(
-                schema.CERTIFICATES.c.number == number)).first()
-            if taken is None:
+            if number not in exact and not any(
+                    key in keys for key, keys in zip(identifier_keys(number), taken,
+                                                     strict=False)):
                 return name, number, before, value
             value += 1
         raise RegisterError(message(
@@ -621,24 +631,30 @@ class Register:
             self._append_entry(conn, "numbering", name, {"last_value": next_sequence - 1})
         return format_certificate_number(scheme, next_sequence, date)
 
-    def _check_free(self, conn, number: str) -> None:
-        """Raise RegisterError if ``number``, or one that prints alike (identifier_key), was
-        issued."""
+    def _check_free(self, conn, number: str, typed: bool = True) -> None:
+        """Raise RegisterError if ``number``, or one that prints alike (same_identifier), was
+        issued. ``typed``: the number was typed (the message says to leave it empty); else
+        the register allocated it (the message names ``register continue``)."""
         from models.register.identifiers import same_identifier
 
         c = self._schema.CERTIFICATES.c
         row = next((r for r in conn.execute(self._sa.select(
             c.number, c.issued_at, c.workbench, c.item_serial).order_by(c.id))
             if r.number == number or same_identifier(r.number, number)), None)
-        if row is not None:
-            raise RegisterError(
-                message(
-                QT_TR_NOOP("certificate number {number} was issued on {issued_at} ({workbench}, serial "
-                           "{value}): a number is issued once; leave the number empty and the register "
-                           "allocates the next"),
-                number=row.number if row.number == number else f"{number} ({row.number})",
-                issued_at=row.issued_at[:10], workbench=row.workbench,
-                value=row.item_serial or '—'))
+        if row is None:
+            return
+        said = {"number": row.number if row.number == number else f"{number} ({row.number})",
+                "issued_at": row.issued_at[:10], "workbench": row.workbench,
+                "value": row.item_serial or "—"}
+        if typed:
+            raise RegisterError(message(QT_TR_NOOP(
+                "certificate number {number} was issued on {issued_at} ({workbench}, serial "
+                "{value}): a number is issued once; leave the number empty and the register "
+                "allocates the next"), **said))
+        raise RegisterError(message(QT_TR_NOOP(
+            "certificate number {number} was issued on {issued_at} ({workbench}, serial "
+            "{value}): a number is issued once; move the numbering past it with 'anglebench "
+            "register continue SCHEME NEXT'"), **said))
 
     def _taken(self, conn, number: str) -> bool:
         try:
@@ -744,12 +760,13 @@ class Register:
         original's workbench, for its item (the serial compared as printed, never by its
         look-alike key, which only asks or refuses: rev63 F2; an item of no serial by its
         description and maker too: rev63 F1) and date of calibration, else
-        :class:`NotTheSameCalibration`. What else it changes (the customer's name or
-        address, the description of an item with a serial, readings, results) is what the
-        change note says. A corrected serial number, date of calibration, or description or
-        maker of an item of no serial is issued only with ``correction_confirmed`` and is
-        then stated on it, before the change note ("serial number corrected from LRA-0815
-        (on AB-2026-0001) to LRA-0816"); never
+        :class:`NotTheSameCalibration`. What else it changes (the customer's address,
+        readings, results) is what the change note says. A corrected serial number, date of
+        calibration, manufacturer, customer's name, or description of an item of no serial
+        is issued only with ``correction_confirmed`` and is then stated on it, before the
+        change note ("serial number corrected from LRA-0815 (on AB-2026-0001) to LRA-0816",
+        "customer corrected from …"; #64 review F5); a changed description of an item with a
+        serial is stated unasked ("item description changed from …"); never
         onto the item and date of another current certificate. The workbench is never
         corrected: a calibration on another workbench is an original."""
         from models.register.identifiers import IdentifierError, normalise_identifier, refuse_unprinted
@@ -854,7 +871,8 @@ class Register:
                             current = self._current(conn, original.number)
                             if current.status != "issued":
                                 continue
-                        self._check_free(conn, plan.number)
+                        self._check_free(conn, plan.number, typed=plan.counter is None
+                                         and not supersedes)
                         conn.execute(certificates.insert().values(
                             **dataclasses.asdict(record), pdf=pdf,
                             dcc=None if dcc is None else bytes(dcc)))
@@ -961,10 +979,46 @@ class Register:
                 old=_item_text(original.item_description, original.item_manufacturer),
                 number=original.number,
                 new=_item_text(meta.item_description, meta.item_manufacturer)))
-        if not changes:
-            return ()
-        if not confirmed and unnamed:
+        # the maker and the customer are the calibration's as the serial is: a serial is
+        # unique only within its maker, and the customer is whose calibration it is (#64
+        # review F5: an amendment moved LRA-0815's calibration onto another maker's item
+        # and another customer's name, unasked and unsaid); compared as printed, spaces
+        # collapsed. A changed description of an item with a serial is said, not asked.
+        owned = []
+        if not unnamed and _printed(original.item_manufacturer) \
+                != _printed(meta.item_manufacturer):
+            owned.append(message(QT_TR_NOOP(
+                "manufacturer corrected from {old} (on {number}) to {new}"),
+                old=_printed(original.item_manufacturer) or "—", number=original.number,
+                new=_printed(meta.item_manufacturer) or "—"))
+        if _printed(original.customer) != _printed(meta.customer_name):
+            owned.append(message(QT_TR_NOOP(
+                "customer corrected from {old} (on {number}) to {new}"),
+                old=_printed(original.customer) or "—", number=original.number,
+                new=_printed(meta.customer_name) or "—"))
+        said = []
+        if not unnamed and _printed(original.item_description) \
+                != _printed(meta.item_description):
+            said.append(message(QT_TR_NOOP(
+                "item description changed from {old} (on {number}) to {new}"),
+                old=_printed(original.item_description) or "—", number=original.number,
+                new=_printed(meta.item_description) or "—"))
+        if not changes and not owned:
+            return tuple(said)
+        if not confirmed and not changes:
             raise NotTheSameCalibration(message(QT_TR_NOOP(
+                "{number}: these details change what it reports: {changes}. An amendment or "
+                "replacement corrects the same calibration (ISO/IEC 17025 7.8.8): another "
+                "manufacturer's item or another customer's calibration is an original; a "
+                "corrected manufacturer or customer is issued only when confirmed, and is then "
+                "stated on it"), number=original.number, changes=separated(owned)),
+                tuple(owned))
+        # said after the question about the serial, the item or the date, when asked
+        also = message(QT_TR_NOOP("It also corrects: {changes}."),
+                       changes=separated(owned)) if owned else ""
+        refused = None
+        if not confirmed and unnamed:
+            refused = (message(QT_TR_NOOP(
                 "{number} reports {item}, which has no serial number, calibrated {date}; these "
                 "details give {new_item}, calibrated {new_date}. An amendment or replacement "
                 "corrects the same calibration (ISO/IEC 17025 7.8.8): another item's or another "
@@ -974,9 +1028,9 @@ class Register:
                 item=_item_text(original.item_description, original.item_manufacturer),
                 date=original.calibration_date or "—",
                 new_item=_item_text(meta.item_description, meta.item_manufacturer),
-                new_date=meta.calibration_date or "—"), tuple(changes))
-        if not confirmed:
-            raise NotTheSameCalibration(message(QT_TR_NOOP(
+                new_date=meta.calibration_date or "—"))
+        elif not confirmed:
+            refused = (message(QT_TR_NOOP(
                 "{number} reports serial number {serial}, calibrated {date}; these details give "
                 "serial number {new_serial}, calibrated {new_date}. An amendment or replacement "
                 "corrects the same calibration (ISO/IEC 17025 7.8.8): another item's or another "
@@ -984,9 +1038,13 @@ class Register:
                 "calibration is issued only when confirmed, and is then stated on it"),
                 number=original.number, serial=original.item_serial or "—",
                 date=original.calibration_date or "—", new_serial=meta.item_serial or "—",
-                new_date=meta.calibration_date or "—"), tuple(changes))
-        others = tuple(n for n in self._same_calibration(conn, workbench, meta)
-                       if n != original.number)
+                new_date=meta.calibration_date or "—"))
+        identity, changes = bool(changes), [*changes, *owned]
+        if refused is not None:
+            raise NotTheSameCalibration(separated([refused, also], " "), tuple(changes))
+        # the item or the date corrected: never onto another current certificate's
+        others = () if not identity else tuple(
+            n for n in self._same_calibration(conn, workbench, meta) if n != original.number)
         if others:
             raise NotTheSameCalibration(message(QT_TR_NOOP(
                 "{numbers} already reports serial number {serial}, calibrated {date}: a "
@@ -994,7 +1052,7 @@ class Register:
                 "amend or replace {numbers} instead"),
                 numbers=", ".join(others), serial=meta.item_serial or "—",
                 date=meta.calibration_date or "—", number=original.number))
-        return tuple(changes)
+        return (*changes, *said)
 
     def _current(self, conn, number: str) -> CertificateRecord:
         record = self._get(conn, number)
@@ -1116,6 +1174,8 @@ class Register:
                                {"names": cleaned, "distinct": bool(distinct)})
 
     def _check_approval(self, meta: CertificateMetadata) -> None:
+        from models.register.identifiers import same_name
+
         names, distinct = self.signatories()
         approver = " ".join(meta.approver.split())
         if names and approver.casefold() not in {n.casefold() for n in names}:
@@ -1123,7 +1183,9 @@ class Register:
                 "\"{approver}\" is not one of the lab's authorised signatories ({names}): "
                 "the certificate is approved by one of them"),
                 approver=approver, names=", ".join(names)))
-        if distinct and approver.casefold() == " ".join(meta.operator.split()).casefold():
+        # by the look-alike keys, spaces collapsed (#64 review F10: an operator "Dr. Lі",
+        # a Cyrillic "і", printed "Dr. Li" twice and passed as another person)
+        if distinct and same_name(approver, meta.operator):
             raise RegisterError(message(QT_TR_NOOP(
                 "the lab requires the approver to differ from the operator: {name} cannot "
                 "approve a calibration they made"), name=approver))
@@ -1463,17 +1525,23 @@ class Register:
         found = self.verify_all(pdf)
         return found[0] if found else None
 
-    def history(self, serial: str) -> builtins.list[CertificateRecord]:
+    def history(self, serial: str, manufacturer: str = "") -> builtins.list[CertificateRecord]:
         """Every certificate of an instrument, oldest calibration first: of every serial
         number the one-calibration check takes for this item's (same_serial: "AB-10 5" and
         "ab105" are one item at issue, so one history), or, for a serial that says there is
-        none ("", "n/a": no_serial), of that serial as kept."""
+        none ("", "n/a": no_serial), of that serial as kept; with ``manufacturer``, of that
+        manufacturer's item (printing alike, case aside: same_identifier) where a record
+        names one — a serial is unique only within its maker (#64 review F6: Acme's "001"
+        and Zeta's "001" were one history, the older one's due date from the other's later
+        calibration); a record or a call naming none matches by the serial alone."""
         certificates = self._schema.CERTIFICATES
         c = certificates.c
         serial = _alike(serial)
         with self._read() as conn:
-            ids = [row.id for row in conn.execute(self._sa.select(c.id, c.item_serial))
-                   if _same_instrument(row.item_serial, serial)]
+            ids = [row.id for row in conn.execute(self._sa.select(
+                c.id, c.item_serial, c.item_manufacturer))
+                   if _same_instrument(row.item_serial, serial)
+                   and _same_maker(row.item_manufacturer, manufacturer)]
             if not ids:
                 return []
             rows = conn.execute(self._sa.select(*(c[name] for name in _RECORD_COLUMNS))
@@ -1526,10 +1594,12 @@ class Register:
                 .order_by(entries.c.seq.desc()).limit(1)).scalar_one_or_none()
             return found.get(last, found.get(serial))
 
-    def due_date(self, serial: str) -> dt.date | None:
-        """The last calibration of the serial plus its interval (None without either)."""
+    def due_date(self, serial: str, manufacturer: str = "") -> dt.date | None:
+        """The last calibration of the serial (of ``manufacturer``'s item, as
+        :meth:`history` tells it) plus the serial's interval (None without either)."""
         days = self.interval(serial)
-        dates = [r.calibration_date for r in self.history(serial) if r.calibration_date]
+        dates = [r.calibration_date for r in self.history(serial, manufacturer)
+                 if r.calibration_date]
         if not days or not dates:
             return None
         return dt.date.fromisoformat(max(dates)) + dt.timedelta(days=days)
@@ -1615,6 +1685,16 @@ def _same_instrument(kept: str, serial: str) -> bool:
     if kept == serial:
         return True
     return not no_serial(serial) and not no_serial(kept) and same_serial(kept, serial)
+
+
+def _same_maker(kept: str | None, manufacturer: str) -> bool:
+    """Whether a record's manufacturer is ``manufacturer``'s, for an instrument's history:
+    printing alike, case aside (same_identifier); a record or a call naming none is any."""
+    from models.register.identifiers import same_identifier
+
+    if not (kept or "").strip() or not (manufacturer or "").strip():
+        return True
+    return same_identifier(kept or "", manufacturer)
 
 
 def _parse_time(text: str) -> dt.datetime:
@@ -1812,6 +1892,14 @@ def _same_item(description: str, manufacturer: str, meta: CertificateMetadata) -
 
     return same_identifier(description or "", meta.item_description or "") \
         and same_identifier(manufacturer or "", meta.item_manufacturer or "")
+
+
+def _printed(text: str | None) -> str:
+    """``text`` as a certificate prints it (as_printed), spaces collapsed: a name or a
+    description typed otherwise is a changed one."""
+    from models.register.identifiers import as_printed
+
+    return " ".join(as_printed(text or "").split())
 
 
 def _item_text(description: str, manufacturer: str) -> str:

@@ -92,9 +92,11 @@ def test_the_register_refuses_another_items_details_and_another_workbench(two, t
         assert str(refused.value).startswith(
             f"{a} reports serial number LRA-0815, calibrated 2026-11-20; these details give "
             "serial number XY-99, calibrated 2026-11-02.")
-        assert refused.value.corrections == (
+        assert refused.value.corrections[:2] == (
             f"serial number corrected from LRA-0815 (on {a}) to XY-99",
             f"date of calibration corrected from 2026-11-20 (on {a}) to 2026-11-02")
+        # B's customer too (#64 review F5)
+        assert refused.value.corrections[2].startswith("customer corrected from ")
         # confirmed as a correction: still refused, XY-99 of 2026-11-02 is B's calibration
         with pytest.raises(NotTheSameCalibration, match=f"{b} already reports serial number "
                            "XY-99, calibrated 2026-11-02: a correction of " + a):
@@ -190,6 +192,40 @@ def test_a_corrected_serial_is_asked_and_then_stated(window, qtbot, two, tmp_pat
         assert register.get(a + "-A1").change_note == (
             f"serial number corrected from LRA-0815 (on {a}) to LRA-0816; typo in the address")
         assert register.problems == []
+
+
+def test_a_corrected_customer_or_maker_is_asked_and_then_stated(window, qtbot, two, tmp_path,
+                                                                capsys):
+    """#64 review F5: Amend… of LRA-0815's certificate with another manufacturer and another
+    customer was issued unasked, and nothing but the note ("typo") said so."""
+    a, _b = two
+    with Register(register_url()) as register:
+        customer, maker = register.get(a).customer, register.get(a).item_manufacturer
+    asked: list = []
+    _amend(window, qtbot, tmp_path, a, asked, item_manufacturer="Other Corp",
+           customer_name="Another Customer Ltd")
+    window.certificates.view.confirm_correction = lambda revision, reason: \
+        asked.append(("confirm", reason)) or False
+    assert not window.export_certificate()
+    assert asked[-2][0] == "confirm" and asked[-2][1].startswith(
+        f"{a}: these details change what it reports: manufacturer corrected from {maker} (on "
+        f"{a}) to Other Corp; customer corrected from {customer} (on {a}) to Another Customer "
+        "Ltd.")
+    assert window.certificates.pending is None and len(_records()) == 2
+    asked.clear()
+    _amend(window, qtbot, tmp_path, a, asked, item_manufacturer="Other Corp",
+           customer_name="Another Customer Ltd")
+    window.certificates.view.confirm_correction = lambda revision, reason: True
+    assert window.export_certificate()
+    text = _pdf_text(tmp_path / "exported.pdf")
+    assert (f"Changed: manufacturer corrected from {maker} (on {a}) to Other Corp; customer "
+            f"corrected from {customer} (on {a}) to Another Customer Ltd; typo in the "
+            "address") in text
+    capsys.readouterr()
+    assert main(["register", "show", a + "-A1"]) == 0
+    assert (f"change_note: manufacturer corrected from {maker} (on {a}) to Other Corp; "
+            f"customer corrected from {customer} (on {a}) to Another Customer Ltd; typo in "
+            "the address") in capsys.readouterr().out
 
 
 @pytest.mark.slow

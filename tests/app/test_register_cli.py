@@ -124,9 +124,13 @@ def test_verify_names_the_replacement_and_show_refuses_a_changed_pdf(samples_dir
     assert issue(samples_dir, tmp_path, "a", capsys, certificate_number="")[0] == 0
     with Register(register_url()) as register:
         original = register.list()[0].number
-        # a replacement is of the same item (rev62 F1): the original's serial number
+        # a replacement is of the same item (rev62 F1): the original's serial number, and
+        # (#64 review F5) its maker and customer
+        kept = register.get(original)
         meta = CertificateMetadata(approver="Dr. Li", calibration_date="2026-11-20",
-                                   item_serial=register.get(original).item_serial)
+                                   item_serial=kept.item_serial,
+                                   item_manufacturer=kept.item_manufacturer,
+                                   customer_name=kept.customer)
         record, _ = register.issue(
             IssueRequest("polygon", meta, register.get(original).project_json),
             lambda meta: b"%PDF replacement", supersedes=original, replacement=True,
@@ -483,3 +487,45 @@ def test_analyze_refuses_a_customer_description_or_maker_that_prints_nothing(
     assert "no certificate was written" in err
     with Register(register_url()) as register:
         assert register.list() == []
+
+
+def test_show_gives_the_due_date_of_that_makers_item(capsys):
+    """#64 review F6: with Acme's "001" calibrated 2025-06-01 and Zeta's "001" on
+    2026-11-20, ``register show`` of Acme's certificate gave "due: 2027-11-20" (Zeta's
+    calibration) for an instrument overdue since 2026-06-01."""
+    numbers = []
+    with Register(register_url()) as register:
+        for maker, day in (("Acme Optics", "2025-06-01"), ("Zeta Instruments", "2026-11-20")):
+            meta = CertificateMetadata(approver="Dr. Li", calibration_date=day,
+                                       item_serial="001", item_manufacturer=maker)
+            numbers.append(register.issue(IssueRequest("polygon", meta, "{}"),
+                                          lambda meta: b"%PDF")[0].number)
+    assert main(["register", "interval", "001", "365"]) == 0
+    capsys.readouterr()
+    assert main(["register", "show", numbers[0]]) == 0
+    assert "next calibration of 001 due: 2026-06-01" in capsys.readouterr().out
+    assert main(["register", "show", numbers[1]]) == 0
+    assert "next calibration of 001 due: 2027-11-20" in capsys.readouterr().out
+
+
+def test_show_states_a_corrected_customer_maker_and_description(capsys):
+    """#64 review F5: an amendment that changed the manufacturer, description and customer
+    of an item with a serial said nothing of it but the note; ``show`` now gives each."""
+    item = {"approver": "Dr. Li", "calibration_date": "2026-11-20", "item_serial": "LRA-0815",
+            "item_manufacturer": "Example Instruments", "customer_name": "Acme Optics",
+            "item_description": "Limited-rotation axis"}
+    other = {**item, "item_manufacturer": "Other Corp", "customer_name": "Another Customer Ltd",
+             "item_description": "24-face polygon"}
+    with Register(register_url()) as register:
+        first = register.issue(IssueRequest("polygon", CertificateMetadata(**item), "{}"),
+                               lambda meta: b"%PDF")[0].number
+        amended = register.issue(IssueRequest("polygon", CertificateMetadata(**other), "{}"),
+                                 lambda meta: b"%PDF A1", supersedes=first, change_note="typo",
+                                 correction_confirmed=True)[0].number
+    capsys.readouterr()
+    assert main(["register", "show", amended]) == 0
+    shown = capsys.readouterr().out
+    assert (f"change_note: manufacturer corrected from Example Instruments (on {first}) to "
+            f"Other Corp; customer corrected from Acme Optics (on {first}) to Another Customer "
+            f"Ltd; item description changed from Limited-rotation axis (on {first}) to 24-face "
+            "polygon; typo") in shown

@@ -116,6 +116,35 @@ def test_the_history_of_an_item_holds_its_serial_typed_another_way(window, sampl
         assert len(y) == 2 and x[1] - x[0] == 3 * 86400.0
 
 
+def test_the_history_of_a_serial_is_its_makers_item_only(window, samples_dir, tmp_path,
+                                                          qtbot):
+    """#64 review F6: Acme's "001" (calibrated 2025-06-01) and Zeta's "001" (2026-11-20)
+    were one history in the window, Acme's due date 2027-11-20 (Zeta's calibration + 365
+    days) where it was overdue since 2026-06-01; setting the interval kept that."""
+    with window.certificates.open_register() as register:
+        issue_polygon(register, samples_dir, tmp_path, "a", item_serial="001",
+                      item_manufacturer="Acme Optics", calibration_date="2025-06-01")
+        issue_polygon(register, samples_dir, tmp_path, "b", item_serial="001",
+                      item_manufacturer="Zeta Instruments", calibration_date="2026-11-20")
+    window.show_register()
+    dialog = window.register_window
+    assert [dialog.table.item(row, 0).text() for row in range(2)] == ["AB-2026-0002",
+                                                                      "AB-2026-0001"]
+    qtbot.mouseClick(dialog.table.viewport(), Qt.MouseButton.LeftButton,
+                     pos=dialog.table.visualItemRect(dialog.table.item(1, 0)).center())
+    dialog.buttons["history"].click()
+    dialog.interval.lineEdit().selectAll()  # the user types the interval and sets it
+    qtbot.keyClicks(dialog.interval.lineEdit(), "365")
+    assert dialog.interval.value() == 365
+    dialog.interval_button.click()
+    assert "next due 2026-06-01" in dialog.history_title.text()
+    assert len(dialog.history_curves[0].getData()[1]) == 1  # Acme's calibration only
+    qtbot.mouseClick(dialog.table.viewport(), Qt.MouseButton.LeftButton,
+                     pos=dialog.table.visualItemRect(dialog.table.item(0, 0)).center())
+    dialog.buttons["history"].click()
+    assert "next due 2027-11-20" in dialog.history_title.text()
+
+
 def test_chinese_in_the_window_is_drawn_not_boxed(window):
     """Without a system CJK font the window registers the bundled one, which has the glyphs
     of a Chinese customer's name."""

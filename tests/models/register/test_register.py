@@ -258,6 +258,24 @@ def test_numbering_continues_after_hand_issued_numbers_and_never_goes_back(regis
     assert register.issue(request(), render)[0].number == "AB-2026-0100"
 
 
+def test_numbering_steps_over_hand_typed_numbers_that_are_the_next_by_key(register):
+    """#64 review F3: a hand-typed "AB-2026-2" was skipped by the allocator only if typed
+    "AB-2026-0002" exactly; the commit refused AB-2026-0002 as that number, and every
+    automatic issue of the scheme after it, telling the user to leave the number empty."""
+    from models.register.identifiers import same_identifier
+
+    typed = ["AB-2026-2", "ab/2026/0003", "\u0410\u0412-2026-0005", "AB-2026-06"]
+    for number in typed:
+        register.issue(request(_meta(certificate_number=number)), render)
+    allocated = [register.issue(request(), render)[0].number for _ in range(4)]
+    assert allocated == ["AB-2026-0001", "AB-2026-0004", "AB-2026-0007", "AB-2026-0008"]
+    numbers = [r.number for r in register.list()]
+    assert len(numbers) == 8
+    for number in allocated:
+        assert [n for n in numbers if same_identifier(n, number)] == [number]
+    assert register.audit() == []
+
+
 def test_an_issued_certificate_needs_an_approver(register):
     with pytest.raises(RegisterError, match="approves it"):
         register.issue(request(CertificateMetadata(**{**META.to_dict(), "standards": (),
@@ -265,6 +283,20 @@ def test_an_issued_certificate_needs_an_approver(register):
     assert register.list() == []
     assert "approver" in CertificateMetadata(**{**META.to_dict(), "standards": (),
                                                 "approver": ""}).missing_fields()
+
+
+@pytest.mark.parametrize("operator", ["Dr. L\u0456", "DR. L\u0456", "dr.\u00a0 \u13deI",
+                                      "Dr. \u029fi"])
+def test_the_approver_is_not_the_operator_under_a_look_alike_name(register, operator):
+    """#64 review F10: with ``signatories "Dr. Li" --distinct``, an operator "Dr. Lі" (a
+    Cyrillic "і") printed "Dr. Li" twice and was issued as another person's calibration;
+    the names were compared case folded only."""
+    register.set_signatories(["Dr. Li"], distinct=True)
+    with pytest.raises(RegisterError, match="Dr. Li cannot approve a calibration they made"):
+        register.issue(request(_meta(operator=operator)), render)
+    assert register.list() == []
+    record, _ = register.issue(request(_meta(operator="Dr. Liu")), render)
+    assert (record.approver, record.operator) == ("Dr. Li", "Dr. Liu")
 
 
 def test_the_date_of_issue_is_the_day_the_register_issues_it(register):
@@ -623,6 +655,42 @@ def test_a_serial_of_look_alikes_or_other_separators_is_the_same_item(register, 
     assert [r.number for r in register.list()] == ["AB-2026-0001"]
 
 
+@pytest.mark.parametrize("serial", ["lr\u0430-0815", "LRA\u4e000815", "LRA\u30fc0815",
+                                    "LRA\u31610815", "LRA\uff700815"])
+def test_a_serial_of_case_and_look_alikes_together_or_a_cjk_dash_is_the_same_item(register,
+                                                                                  serial):
+    """#64 review F4: "lrа-0815" (lower case and a Cyrillic "а") matched neither key and
+    was issued as a second original of LRA-0815's calibration; so were "LRA一0815" and the
+    other dashes of Chinese, Japanese and Korean input methods."""
+    from models.register.store import SameCalibrationIssued
+
+    register.issue(request(_meta(item_serial="LRA-0815")), render, separate_calibration="")
+    with pytest.raises(SameCalibrationIssued) as refused:
+        register.issue(request(_meta(item_serial=serial)), render, separate_calibration="")
+    assert refused.value.numbers == ("AB-2026-0001",)
+    assert [r.number for r in register.list()] == ["AB-2026-0001"]
+
+
+def test_case_and_look_alikes_together_keep_apart_what_prints_otherwise(register):
+    """#64 review F4: the keys joined case and look-alikes together, and still keep apart
+    "SN-L5" and "SN-I5" (rev63 F10), and a CJK dash stand-in among CJK characters."""
+    from models.register.identifiers import same_identifier, same_serial
+
+    assert same_identifier("AB-2026-0001", "\u0430b-2026-0001")
+    assert same_identifier("AB-2026-0001", "ab-2026-OOO1") and same_serial("SN-105", "sn-IO5")
+    assert not same_serial("SN-L5", "SN-I5") and not same_serial("SN-L5", "SN-15")
+    assert not same_serial("\u7b2c\u4e00-7", "\u7b2c-7")  # 第一: "one" among CJK
+    assert not same_serial("\u30bb\u30f3\u30b5\u30fc7", "\u30bb\u30f3\u30b5-7")  # センサー
+    assert not same_serial("\u4e00815", "-815")  # at the start: a character
+    register.issue(request(), render)
+    with pytest.raises(RegisterError, match="\u0430b-2026-0001 \\(AB-2026-0001\\) was issued"):
+        register.issue(request(_meta(certificate_number="\u0430b-2026-0001",
+                                     item_serial="OTHER")), render)
+    register.issue(request(_meta(item_serial="SN-L5")), render, separate_calibration="")
+    assert register.issue(request(_meta(item_serial="SN-I5")), render,
+                          separate_calibration="")[0].number == "AB-2026-0003"
+
+
 @pytest.mark.parametrize(("char", "name"), [
     ("\u034f", "COMBINING GRAPHEME JOINER"), ("\ufe0f", "VARIATION SELECTOR-16"),
     ("\u2800", "BRAILLE PATTERN BLANK"), ("\u3164", "HANGUL FILLER")])
@@ -691,6 +759,48 @@ def test_an_item_without_a_serial_is_the_same_item_by_its_description_and_maker(
                  item_serial="RT5-0001") == "AB-2026-0003"  # a serial: another question
 
 
+def test_an_amendment_asks_about_a_changed_maker_or_customer_and_states_them(register):
+    """#64 review F5: an amendment of LRA-0815's certificate changed its manufacturer,
+    description and customer unasked, stating nothing but the free note ("typo"): a serial
+    is unique only within its maker, and the customer is whose calibration it is."""
+    from models.register.store import NotTheSameCalibration
+
+    item = {"item_serial": "LRA-0815", "item_manufacturer": "Example Instruments",
+            "item_description": "Limited-rotation axis", "customer_name": "Acme Optics"}
+    first, _ = register.issue(request(_meta(**item)), render, separate_calibration="")
+    other = {**item, "item_manufacturer": "Other Corp", "customer_name": "Another Customer Ltd",
+             "item_description": "24-face polygon"}
+    for changed, said in (({"item_manufacturer": "Other Corp"}, "manufacturer corrected from "
+                           "Example Instruments \\(on AB-2026-0001\\) to Other Corp"),
+                          ({"customer_name": "Another Customer Ltd"}, "customer corrected from "
+                           "Acme Optics \\(on AB-2026-0001\\) to Another Customer Ltd")):
+        with pytest.raises(NotTheSameCalibration, match=f"AB-2026-0001: these details change "
+                           f"what it reports: {said}\\. An amendment"):
+            register.issue(request(_meta(**{**item, **changed})), render,
+                           supersedes=first.number, change_note="typo", separate_calibration="")
+    assert [r.number for r in register.list()] == [first.number]  # nothing issued
+    # the same maker and customer, spaced otherwise: no question, nothing stated
+    spaced, _ = register.issue(request(_meta(**{**item, "customer_name": " Acme  Optics"})),
+                               render, supersedes=first.number, change_note="typo",
+                               separate_calibration="")
+    assert spaced.change_note == "typo"
+    amended, pdf = register.issue(request(_meta(**other)), render, supersedes=spaced.number,
+                                  change_note="typo", separate_calibration="",
+                                  correction_confirmed=True)
+    assert amended.change_note == (
+        f"manufacturer corrected from Example Instruments (on {spaced.number}) to Other Corp; "
+        f"customer corrected from Acme Optics (on {spaced.number}) to Another Customer Ltd; "
+        f"item description changed from Limited-rotation axis (on {spaced.number}) to 24-face "
+        "polygon; typo")
+    assert (amended.item_manufacturer, amended.customer) == ("Other Corp", "Another Customer Ltd")
+    # a description alone: said, not asked
+    again, _ = register.issue(request(_meta(**{**other, "item_description": "Polygon"})),
+                              render, supersedes=amended.number, change_note="",
+                              separate_calibration="")
+    assert again.change_note == (f"item description changed from 24-face polygon (on "
+                                 f"{amended.number}) to Polygon")
+
+
 def test_amendments_count_only_amendments(register):
     """#61 review: a number typed as "ab-2026-0001-a1" for another item made the first real
     amendment of AB-2026-0001 "Amendment 2" (counted by a case-blind LIKE), and a typed
@@ -741,6 +851,31 @@ def test_history_and_due_date_of_a_serial_typed_another_way_are_the_items(regist
     register.set_interval("ab105", None)
     assert register.due_date("AB-10 5") is None and register.interval("AB-10 5") is None
     assert register.audit() == []  # each interval cleared is in the chain
+
+
+def test_history_and_due_date_of_one_serial_of_two_makers_are_each_makers(register):
+    """#64 review F6: Acme's rotary table "001" (calibrated 2025-06-01) and Zeta's
+    indexing head "001" (2026-11-20) were one history: Acme's due date followed Zeta's
+    calibration (2027-11-20, in date) where it was overdue (2026-06-01)."""
+    acme = _meta(item_serial="001", item_manufacturer="Acme Optics",
+                 item_description="Rotary table RT-300", calibration_date="2025-06-01",
+                 customer_name="Customer A")
+    zeta = _meta(item_serial="001", item_manufacturer="Zeta Instruments",
+                 item_description="Indexing head IH-2", calibration_date="2026-11-20",
+                 customer_name="Customer B")
+    a, _ = register.issue(request(acme), render, separate_calibration="")
+    b, _ = register.issue(request(zeta), render, separate_calibration="")
+    unnamed, _ = register.issue(request(_meta(item_serial="001", item_manufacturer="",
+                                              calibration_date="2024-01-10")), render)
+    register.set_interval("001", 365)
+    assert register.due_date("001", "Acme Optics") == dt.date(2026, 6, 1)
+    assert register.due_date("001", "ACME optics") == dt.date(2026, 6, 1)  # case aside
+    assert register.due_date("001", "Zeta Instruments") == dt.date(2027, 11, 20)
+    assert [r.number for r in register.history("001", "Acme Optics")] == [unnamed.number,
+                                                                          a.number]
+    # no maker named, on either side: by the serial alone
+    assert [r.number for r in register.history("001")] == [unnamed.number, a.number, b.number]
+    assert register.due_date("001") == dt.date(2027, 11, 20)
 
 
 @pytest.mark.parametrize(("field", "what", "typed", "at"), [

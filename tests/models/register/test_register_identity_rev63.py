@@ -76,7 +76,10 @@ def test_f1_an_item_without_serial_is_not_amended_with_another_items_details(reg
         "calibrated 2026-11-20.")
     assert refused.value.corrections == (
         f"item (no serial number) corrected from Rotary table RT-1 (Acme Rotary) (on "
-        f"{a.number}) to Autocollimator AC-9 (Other Optics)",)
+        f"{a.number}) to Autocollimator AC-9 (Other Optics)",
+        f"customer corrected from Acme (on {a.number}) to Other Customer")  # #64 review F5
+    assert str(refused.value).endswith(
+        f"It also corrects: customer corrected from Acme (on {a.number}) to Other Customer.")
     # confirmed: still refused, that is B's calibration
     with pytest.raises(NotTheSameCalibration, match=f"{b.number} already reports"):
         _amend(register, a.number, confirmed=True, **b_details)
