@@ -24,7 +24,16 @@ from widgets.shortcuts import key_sequences
 
 class _TypingDelegate(QStyledItemDelegate):
     """The default editor, watched: what is typed in it before it is entered can be
-    autosaved (a reading being typed is not lost with the window)."""
+    autosaved (a reading being typed is not lost with the window), and no repaint of the
+    table puts the cell's text back over it.
+
+    Qt gives an open editor the cell's text again at every ``dataChanged`` that covers its
+    cell, whatever the roles (QAbstractItemView::dataChanged → setEditorData): a row
+    highlight, the shading after an analysis, a take into another cell of the row put the
+    old text back, what was typed but not yet entered lost (and typing on wrote a wrong
+    number). An editor typed into since it was filled (``QLineEdit.isModified``) keeps its
+    text; a real change of its cell meanwhile is the view's
+    (:meth:`ReadingsTableView.dataChanged`)."""
 
     typing = Signal()
 
@@ -32,6 +41,8 @@ class _TypingDelegate(QStyledItemDelegate):
         super().__init__(parent)
         self.editor: QLineEdit | None = None
         self.index = QPersistentModelIndex()
+        #: the cell's text the open editor was last filled with ("" when none is open)
+        self.loaded = ""
 
     def createEditor(self, parent, option, index):  # noqa: N802 - Qt's name
         editor = super().createEditor(parent, option, index)
@@ -41,13 +52,25 @@ class _TypingDelegate(QStyledItemDelegate):
             editor.destroyed.connect(self._editor_gone)
         return editor
 
+    def setEditorData(self, editor, index) -> None:  # noqa: N802 - Qt's name
+        if isinstance(editor, QLineEdit) and editor.isModified():
+            return  # typed into: a repaint never puts the cell's text back over it
+        super().setEditorData(editor, index)
+        if editor is self.editor:
+            self.loaded = editor.text()
+
+    def typed(self) -> QLineEdit | None:
+        """The open editor when it was typed into since it was filled, else None."""
+        editor = self.editor
+        return editor if editor is not None and editor.isModified() else None
+
     def destroyEditor(self, editor, index) -> None:  # noqa: N802 - Qt's name
         if editor is self.editor:
             self._editor_gone()
         super().destroyEditor(editor, index)
 
     def _editor_gone(self, *_args) -> None:
-        self.editor, self.index = None, QPersistentModelIndex()
+        self.editor, self.index, self.loaded = None, QPersistentModelIndex(), ""
 
 
 class ReadingsTableView(QTableView):
