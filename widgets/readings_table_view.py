@@ -151,12 +151,14 @@ class ReadingsTableView(QTableView):
             self.next_row(row)
 
     def next_row(self, row: int) -> None:
+        """After a reading entered in ``row`` (Return, or a take): the cursor to the cell the
+        next reading goes to — unless a value is being typed in another cell (a take made
+        while the technician types): moving would enter what is typed so far (Qt commits an
+        open editor when the current cell changes), so the cursor stays with the editor."""
         if self.plan_return is not None:
             target_row = self.plan_return(row)
             if target_row is not None:
-                target = self.readings_model().index(target_row, self.entry_column)
-                self.setCurrentIndex(target)
-                self.scrollTo(target)
+                self._go_to(self.readings_model().index(target_row, self.entry_column))
                 return
         model = self.readings_model()
         sheet = model.sheet
@@ -176,9 +178,14 @@ class ReadingsTableView(QTableView):
         # technician types the nominal too: the row's first column
         stepped = self.nominal_step and nominal is not None
         column = self.entry_column if stepped or nominal is None else nominal
-        target = model.index(row + 1, column)
-        self.setCurrentIndex(target)
-        self.scrollTo(target)
+        self._go_to(model.index(row + 1, column))
+
+    def _go_to(self, target) -> None:
+        """The cursor to ``target``, unless a value is being typed (asked after the cells
+        this entry fills are written: one written into the editor's own cell closed it)."""
+        if self.pending_edit() is None:
+            self.setCurrentIndex(target)
+            self.scrollTo(target)
 
     def _point_complete(self, row: int, text: str) -> bool:
         """Whether ``row`` is the last of its point's ``readings_per_point`` readings (the rows

@@ -129,3 +129,20 @@ def test_every_workbench_keeps_typed_text_through_its_repaints(qtbot, presenter_
     assert editor.text() == "12.3"
     qtbot.keyClicks(editor, "4")
     _enter(qtbot, bench, editor, 1, column, "12.34")
+
+
+def test_a_take_moves_no_cursor_away_from_a_cell_being_typed_in(qtbot):
+    """After a take the cursor goes on to the next row (ReadingsTableView.next_row); with a
+    value being typed elsewhere that move entered what was typed so far ("21.7") and closed
+    the editor, the rest typed going to the next row. Now the cursor stays."""
+    bench = _bench(qtbot)
+    table = bench.view.table
+    column = _column(bench, KEY)
+    editor = _start_typing(qtbot, bench, ROW, column, "21.7")
+    bench.table_model.set_cells([(ROW + 5, column, "30.00")], "Take reading (row 8)")
+    table.next_row(ROW + 5)  # as the capture panel's take does
+    assert table.state() == table.State.EditingState
+    assert table.currentIndex() == bench.table_model.index(ROW, column)
+    assert bench.sheet.text(ROW, column) == "21.56"  # nothing entered yet
+    qtbot.keyClicks(editor, "7")
+    _enter(qtbot, bench, editor, ROW, column, "21.77")
