@@ -82,6 +82,10 @@ class ReadingsTableView(QTableView):
     selected rows.
     """
 
+    #: a message for the status line (the workbench's view shows it): the cell being typed
+    #: in was changed by another path, what was typed not entered (:meth:`dataChanged`)
+    notice = Signal(str)
+
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
         self.nominal_column: int | None = None  # filled from the step as rows are added
@@ -115,6 +119,32 @@ class ReadingsTableView(QTableView):
         if text == ("" if shown is None else str(shown)):
             return None
         return index.row(), index.column(), text
+
+    def dataChanged(self, top_left, bottom_right, roles=()) -> None:  # noqa: N802 - Qt's name
+        """Cells changed or repainted. An editor typed into keeps its text through any
+        repaint (the delegate's setEditorData); but when its own cell's text was changed
+        by another path meanwhile (a take into the cell being typed in, an undo), the
+        change stands: the editor is closed without entering what was typed, and the
+        status line says both (never a typed number silently written over a reading, nor a
+        reading silently replaced by one)."""
+        delegate = self._typing_delegate
+        editor, index = delegate.typed(), delegate.index
+        if editor is not None and index.isValid() and \
+                top_left.row() <= index.row() <= bottom_right.row() and \
+                top_left.column() <= index.column() <= bottom_right.column():
+            shown = index.data(Qt.ItemDataRole.EditRole)
+            now = "" if shown is None else str(shown)
+            typed = editor.text()
+            if now not in (delegate.loaded, typed):  # not a repaint, nor its own commit
+                row, column = index.row(), index.column()
+                self.closeEditor(editor, QAbstractItemDelegate.EndEditHint.NoHint)
+                header = self.model().headerData(column, Qt.Orientation.Horizontal,
+                                                 Qt.ItemDataRole.DisplayRole)
+                self.notice.emit(tr("Row {row}, {column} was changed to “{value}” while you "
+                                    "were typing in it; what you typed (“{typed}”) was not "
+                                    "entered").format(row=row + 1, column=header, value=now,
+                                                      typed=typed))
+        super().dataChanged(top_left, bottom_right, list(roles))
 
     def _setup_ui(self) -> None:
         self.setSelectionMode(QAbstractItemView.SelectionMode.ExtendedSelection)

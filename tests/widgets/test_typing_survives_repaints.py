@@ -131,6 +131,25 @@ def test_every_workbench_keeps_typed_text_through_its_repaints(qtbot, presenter_
     _enter(qtbot, bench, editor, 1, column, "12.34")
 
 
+def test_a_change_of_the_cell_being_typed_in_stands_and_is_said(qtbot):
+    """A take into the very cell being typed in: the reading goes in, the editor is closed
+    with what was typed not entered, and the status line says both (before: the editor
+    took the take's text without a word, what was typed gone)."""
+    bench = _bench(qtbot)
+    table = bench.view.table
+    column = _column(bench, KEY)
+    editor = _start_typing(qtbot, bench, ROW, column, "21.7")
+    bench.table_model.set_cells([(ROW, column, "19.25")], "Take reading (row 3)")
+    assert bench.sheet.text(ROW, column) == "19.25"
+    assert table.state() != table.State.EditingState
+    assert table._typing_delegate.editor is None or not editor.isVisible()
+    assert "“19.25”" in bench.view.last_status and "“21.7”" in bench.view.last_status
+    assert "Row 3" in bench.view.last_status
+    # undone: the reading back as it was, no editor to write over
+    bench.undo_stack.undo()
+    assert bench.sheet.text(ROW, column) == "21.56"
+
+
 def test_a_take_moves_no_cursor_away_from_a_cell_being_typed_in(qtbot):
     """After a take the cursor goes on to the next row (ReadingsTableView.next_row); with a
     value being typed elsewhere that move entered what was typed so far ("21.7") and closed

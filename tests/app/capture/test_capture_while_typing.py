@@ -68,3 +68,22 @@ def test_a_take_into_another_row_leaves_the_typing_alone(window, qtbot):
     qtbot.waitUntil(lambda: sheet.text(1, index.column()) == "12.34", timeout=3000)
     assert sheet.text(3, encoder) == "90.00012"
     window.capture_panel.close()
+
+
+def test_a_take_into_the_cell_being_typed_in_stands_and_says_what_was_typed(window, qtbot):
+    window.show()
+    bench = _show(window, "polygon")
+    _typed_rows(bench, "encoder_deg", TYPED)
+    sheet, table = bench.sheet, bench.view.table
+    with ReadoutSimulator("pty", positions=[(READING,)]) as ro:
+        panel = _connected(window, qtbot, ro)
+        _, index = _start_typing(qtbot, bench, 3, "encoder_deg", "90.5")
+        assert panel.take_reading() == "row 4"
+        panel.disconnect_instrument()
+    # the reading in, the editor closed without entering what was typed, and said (was:
+    # the editor silently showed the reading instead, "90.5" gone without a word)
+    assert sheet.text(3, index.column()) == "90.00012"
+    assert table.state() != table.State.EditingState
+    said = window.statusBar().currentMessage()
+    assert "Row 4" in said and "“90.00012”" in said and "“90.5”" in said, said
+    window.capture_panel.close()
