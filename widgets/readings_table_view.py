@@ -24,7 +24,16 @@ from widgets.shortcuts import key_sequences
 
 class _TypingDelegate(QStyledItemDelegate):
     """The default editor, watched: what is typed in it before it is entered can be
-    autosaved (a reading being typed is not lost with the window)."""
+    autosaved (a reading being typed is not lost with the window), and no repaint of the
+    table puts the cell's text back over it.
+
+    Qt gives an open editor the cell's text again at every ``dataChanged`` that covers its
+    cell, whatever the roles (QAbstractItemView::dataChanged → setEditorData): a row
+    highlight, the shading after an analysis, a take into another cell of the row put the
+    old text back, what was typed but not yet entered lost (and typing on wrote a wrong
+    number). An editor typed into since it was filled (``QLineEdit.isModified``) keeps its
+    text; a real change of its cell meanwhile is the view's
+    (:meth:`ReadingsTableView.dataChanged`)."""
 
     typing = Signal()
 
@@ -32,6 +41,8 @@ class _TypingDelegate(QStyledItemDelegate):
         super().__init__(parent)
         self.editor: QLineEdit | None = None
         self.index = QPersistentModelIndex()
+        #: the cell's text the open editor was last filled with ("" when none is open)
+        self.loaded = ""
 
     def createEditor(self, parent, option, index):  # noqa: N802 - Qt's name
         editor = super().createEditor(parent, option, index)
@@ -41,13 +52,25 @@ class _TypingDelegate(QStyledItemDelegate):
             editor.destroyed.connect(self._editor_gone)
         return editor
 
+    def setEditorData(self, editor, index) -> None:  # noqa: N802 - Qt's name
+        if isinstance(editor, QLineEdit) and editor.isModified():
+            return  # typed into: a repaint never puts the cell's text back over it
+        super().setEditorData(editor, index)
+        if editor is self.editor:
+            self.loaded = editor.text()
+
+    def typed(self) -> QLineEdit | None:
+        """The open editor when it was typed into since it was filled, else None."""
+        editor = self.editor
+        return editor if editor is not None and editor.isModified() else None
+
     def destroyEditor(self, editor, index) -> None:  # noqa: N802 - Qt's name
         if editor is self.editor:
             self._editor_gone()
         super().destroyEditor(editor, index)
 
     def _editor_gone(self, *_args) -> None:
-        self.editor, self.index = None, QPersistentModelIndex()
+        self.editor, self.index, self.loaded = None, QPersistentModelIndex(), ""
 
 
 class ReadingsTableView(QTableView):
@@ -58,6 +81,10 @@ class ReadingsTableView(QTableView):
     cells; the row commands insert above the current row or delete the
     selected rows.
     """
+
+    #: a message for the status line (the workbench's view shows it): the cell being typed
+    #: in was changed by another path, what was typed not entered (:meth:`dataChanged`)
+    notice = Signal(str)
 
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
@@ -92,6 +119,32 @@ class ReadingsTableView(QTableView):
         if text == ("" if shown is None else str(shown)):
             return None
         return index.row(), index.column(), text
+
+    def dataChanged(self, top_left, bottom_right, roles=()) -> None:  # noqa: N802 - Qt's name
+        """Cells changed or repainted. An editor typed into keeps its text through any
+        repaint (the delegate's setEditorData); but when its own cell's text was changed
+        by another path meanwhile (a take into the cell being typed in, an undo), the
+        change stands: the editor is closed without entering what was typed, and the
+        status line says both (never a typed number silently written over a reading, nor a
+        reading silently replaced by one)."""
+        delegate = self._typing_delegate
+        editor, index = delegate.typed(), delegate.index
+        if editor is not None and index.isValid() and \
+                top_left.row() <= index.row() <= bottom_right.row() and \
+                top_left.column() <= index.column() <= bottom_right.column():
+            shown = index.data(Qt.ItemDataRole.EditRole)
+            now = "" if shown is None else str(shown)
+            typed = editor.text()
+            if now not in (delegate.loaded, typed):  # not a repaint, nor its own commit
+                row, column = index.row(), index.column()
+                self.closeEditor(editor, QAbstractItemDelegate.EndEditHint.NoHint)
+                header = self.model().headerData(column, Qt.Orientation.Horizontal,
+                                                 Qt.ItemDataRole.DisplayRole)
+                self.notice.emit(tr("Row {row}, {column} was changed to “{value}” while you "
+                                    "were typing in it; what you typed (“{typed}”) was not "
+                                    "entered").format(row=row + 1, column=header, value=now,
+                                                      typed=typed))
+        super().dataChanged(top_left, bottom_right, list(roles))
 
     def _setup_ui(self) -> None:
         self.setSelectionMode(QAbstractItemView.SelectionMode.ExtendedSelection)
@@ -128,12 +181,14 @@ class ReadingsTableView(QTableView):
             self.next_row(row)
 
     def next_row(self, row: int) -> None:
+        """After a reading entered in ``row`` (Return, or a take): the cursor to the cell the
+        next reading goes to — unless a value is being typed in another cell (a take made
+        while the technician types): moving would enter what is typed so far (Qt commits an
+        open editor when the current cell changes), so the cursor stays with the editor."""
         if self.plan_return is not None:
             target_row = self.plan_return(row)
             if target_row is not None:
-                target = self.readings_model().index(target_row, self.entry_column)
-                self.setCurrentIndex(target)
-                self.scrollTo(target)
+                self._go_to(self.readings_model().index(target_row, self.entry_column))
                 return
         model = self.readings_model()
         sheet = model.sheet
@@ -153,9 +208,14 @@ class ReadingsTableView(QTableView):
         # technician types the nominal too: the row's first column
         stepped = self.nominal_step and nominal is not None
         column = self.entry_column if stepped or nominal is None else nominal
-        target = model.index(row + 1, column)
-        self.setCurrentIndex(target)
-        self.scrollTo(target)
+        self._go_to(model.index(row + 1, column))
+
+    def _go_to(self, target) -> None:
+        """The cursor to ``target``, unless a value is being typed (asked after the cells
+        this entry fills are written: one written into the editor's own cell closed it)."""
+        if self.pending_edit() is None:
+            self.setCurrentIndex(target)
+            self.scrollTo(target)
 
     def _point_complete(self, row: int, text: str) -> bool:
         """Whether ``row`` is the last of its point's ``readings_per_point`` readings (the rows

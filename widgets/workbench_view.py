@@ -78,6 +78,7 @@ class WorkbenchView(QWidget):
 
     def _setup_ui(self) -> None:
         self.table = ReadingsTableView()
+        self.table.notice.connect(self.show_status)
         self.settings = SettingsForm()
         self.readings_label = QLabel()
         live(self.readings_label.setText, tr("Readings"))

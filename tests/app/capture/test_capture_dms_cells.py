@@ -36,9 +36,9 @@ def _type_in_editor(window, qtbot, bench, row: int, key: str, text: str) -> None
     """The cell double-clicked, its editor's text selected and ``text`` typed over it,
     Return."""
     table, model = bench.view.table, bench.table_model
-    # the analysis of the last change finished first: its marks repainted over an open
-    # editor put the cell's text back into it, what was typed lost (a defect of the
-    # table's own, reported apart: ReadingsTableModel's range dataChanged)
+    # the analysis of the last change finished first (its marks repainted over an open
+    # editor once put the cell's text back into it; no longer:
+    # tests/widgets/test_typing_survives_repaints.py)
     with qtbot.waitSignal(bench.analysed, timeout=10000):
         bench.refresh()
     index = model.index(row, [c.key for c in model.sheet.columns].index(key))
