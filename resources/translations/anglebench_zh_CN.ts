@@ -1783,7 +1783,7 @@
     </message>
     <message>
         <source>Autosave is off: {reason}</source>
-        <extracomment>an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) another project was put in the window (New, Open, Recover, a register record): the window ends a pending Amend… or Replace… with it (rev62 F1) what the window is doing with this project, shown in its title (&quot;&quot; nothing: the window sets it to the pending Amend… or Replace…, rev62 F3) where the readings of an untitled project came from, as the certificate it was issued with named them (the register&apos;s record; None: typed in the window) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
+        <extracomment>an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks raises OutputRefused when a path is a file the register issued, a certificate&apos;s PDF, DCC or results file (the window sets it: app/issued_outputs.py) the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) another project was put in the window (New, Open, Recover, a register record): the window ends a pending Amend… or Replace… with it (rev62 F1) what the window is doing with this project, shown in its title (&quot;&quot; nothing: the window sets it to the pending Amend… or Replace…, rev62 F3) where the readings of an untitled project came from, as the certificate it was issued with named them (the register&apos;s record; None: typed in the window) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
         <translation>自动保存已关闭：{reason}</translation>
     </message>
     <message>
@@ -2370,6 +2370,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Register</source>
+        <extracomment>the instrument whose history is shown: its serial and manufacturer (#64 review F6: two makers&apos; items of one serial are two histories)</extracomment>
         <translation>登记册</translation>
     </message>
     <message>
@@ -3104,6 +3105,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>the chain head printed on a certificate (the head before it): the register must still hold the history up to it, and the certificate&apos;s own record right after it</source>
         <translation>证书上印的链头（该证书之前的链头）：登记册必须仍保有截至该链头的历史，且紧随其后的是该证书自身的记录</translation>
+    </message>
+    <message>
+        <source>{indent}{path} is not the results file recorded under that name with certificate {number} (its SHA-256 is {sha256}: another file written under the name since)</source>
+        <translation>{indent}{path} 不是以该名称随证书 {number} 登记的结果文件（其 SHA-256 为 {sha256}：此后另有文件以该名称写入）</translation>
+    </message>
+    <message>
+        <source>{indent}the results file recorded with certificate {number} is {path} (SHA-256 as recorded): give it a name of its own</source>
+        <translation>{indent}随证书 {number} 登记的结果文件是 {path}（SHA-256 与登记的相同）：请给它一个自己的名称</translation>
     </message>
     <message>
         <source>{path}: NOT in the register (no results file written with an issued certificate has its SHA-256: altered, written without issuing one, or from another register)</source>
@@ -3971,7 +3980,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Copy</source>
-        <extracomment>a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
         <translation>复制</translation>
     </message>
     <message>
@@ -4085,6 +4093,11 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Row {row}: the outer band must contain the inside band (outer high {outer} is below inside high {inside})</source>
         <translation>第 {row} 行：外带必须包含内带（外带上限 {outer} 小于内带上限 {inside}）</translation>
+    </message>
+    <message>
+        <source>Row {row}, {column} was changed to “{value}” while you were typing in it; what you typed (“{typed}”) was not entered</source>
+        <extracomment>the cell&apos;s text the open editor was last filled with (&quot;&quot; when none is open) a message for the status line (the workbench&apos;s view shows it): the cell being typed in was changed by another path, what was typed not entered (:meth:`dataChanged`) a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
+        <translation>第 {row} 行 {column} 在您输入时被改为“{value}”；您输入的内容（“{typed}”）未被确认</translation>
     </message>
     <message>
         <source>Paste</source>
@@ -5573,6 +5586,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>anglebench analyze：{reason}；未写入证书</translation>
     </message>
     <message>
+        <source>anglebench analyze: certificate {number} is issued and recorded, but not written: {path} became another certificate&apos;s issued file meanwhile, which is never replaced; save it with &apos;anglebench register show {number} {flag} {out}&apos;</source>
+        <translation>anglebench analyze：证书 {number} 已签发并登记，但未写出：{path} 在此期间已成为另一份证书签发的文件，签发的文件绝不被替换；请用 &apos;anglebench register show {number} {flag} {out}&apos; 保存</translation>
+    </message>
+    <message>
         <source>anglebench analyze: certificate {number} is issued and recorded, but {reason}: save its DCC with &apos;anglebench register show {number} --dcc OUT.xml&apos;</source>
         <translation>anglebench analyze：证书 {number} 已签发并记录，但{reason}：请用 &apos;anglebench register show {number} --dcc OUT.xml&apos; 保存其 DCC</translation>
     </message>
@@ -6306,6 +6323,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>证书编号 {number} 已于 {issued_at} 签发（{workbench}，出厂编号 {value}）：一个编号只签发一次；请将编号留空，由登记册分配下一个</translation>
     </message>
     <message>
+        <source>certificate number {number} was issued on {issued_at} ({workbench}, serial {value}): a number is issued once; move the numbering past it with &apos;anglebench register continue SCHEME NEXT&apos;</source>
+        <translation>证书编号 {number} 已于 {issued_at} 签发（{workbench}，出厂编号 {value}）：一个编号只签发一次；请用 &apos;anglebench register continue SCHEME NEXT&apos; 让编号越过它</translation>
+    </message>
+    <message>
         <source>the computer&apos;s clock says {now}, before the register&apos;s last record ({number}, issued {then}): the clock was set back; nothing is issued until it is right</source>
         <translation>计算机时钟为 {now}，早于登记册的最后一条记录（{number}，签发于 {then}）：时钟被回拨；在时钟正确之前不签发</translation>
     </message>
@@ -6352,6 +6373,26 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>item (no serial number) corrected from {old} (on {number}) to {new}</source>
         <translation>被校件（无序列号）由 {old}（见 {number}）更正为 {new}</translation>
+    </message>
+    <message>
+        <source>manufacturer corrected from {old} (on {number}) to {new}</source>
+        <translation>制造商由 {old}（见 {number}）更正为 {new}</translation>
+    </message>
+    <message>
+        <source>customer corrected from {old} (on {number}) to {new}</source>
+        <translation>委托方由 {old}（见 {number}）更正为 {new}</translation>
+    </message>
+    <message>
+        <source>item description changed from {old} (on {number}) to {new}</source>
+        <translation>被校件描述由 {old}（见 {number}）改为 {new}</translation>
+    </message>
+    <message>
+        <source>{number}: these details change what it reports: {changes}. An amendment or replacement corrects the same calibration (ISO/IEC 17025 7.8.8): another manufacturer&apos;s item or another customer&apos;s calibration is an original; a corrected manufacturer or customer is issued only when confirmed, and is then stated on it</source>
+        <translation>{number}：这些信息改变了它所报告的内容：{changes}。修改或替代更正的是同一次校准（ISO/IEC 17025 7.8.8）：另一制造商的物品或另一委托方的校准是原始证书；更正后的制造商或委托方只有经确认才会签发，并在证书上写明</translation>
+    </message>
+    <message>
+        <source>It also corrects: {changes}.</source>
+        <translation>它还更正了：{changes}。</translation>
     </message>
     <message>
         <source>{number} reports {item}, which has no serial number, calibrated {date}; these details give {new_item}, calibrated {new_date}. An amendment or replacement corrects the same calibration (ISO/IEC 17025 7.8.8): another item&apos;s or another day&apos;s calibration is an original; a corrected description, manufacturer or date of calibration is issued only when confirmed, and is then stated on it</source>
@@ -11034,6 +11075,7 @@ Replace it?</source>
     </message>
     <message>
         <source>{temp} is the results file recorded with certificate {number}, left under a temporary name by an issue stopped before it was named, and it could not be kept under another name: nothing was written; move it first</source>
+        <extracomment>what a file name cannot hold on some file system a lab uses (Windows, a FAT stick, a share): a certificate number printed &quot;AB/2026/0001&quot; or &quot;AB:1&quot; named no file (rev64 F13: Path.with_name raised ValueError on every later write of that name)</extracomment>
         <translation>{temp} 是与证书 {number} 一起记录的结果文件，因签发在为其命名之前被终止而留在临时名下，且无法以其他名称保存：未写出任何文件；请先移走它</translation>
     </message>
     <message>
