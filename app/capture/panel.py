@@ -684,8 +684,7 @@ class CapturePanel(QDockWidget):
         self.stability = QLabel("")
         self.allan = QLabel("")
         self.take_button = QPushButton()
-        live(self.take_button.setText, tr("Take reading (F9)"))
-        self.take_button.setShortcut(QKeySequence(TAKE_READING_KEY))
+        live(self._set_take_text, tr("Take reading (F9)"))
         self.take_button.clicked.connect(lambda: self.take_reading())
         self.take_button.setEnabled(False)
         # auto-take: the stability gate's window and dwell
@@ -1404,6 +1403,13 @@ class CapturePanel(QDockWidget):
             return
         self.measured_columns.setdefault(presenter.kind.key, set()).update(
             key for t_link, _, key in self._targets(presenter) if t_link is link)
+
+    def _set_take_text(self, text: str) -> None:
+        """The take button's text in the language now, and its key again: Qt's setText puts
+        the text's mnemonic (none) in place of the shortcut, so after View › Language F9 — a
+        foot switch — took nothing and said nothing (day review 64)."""
+        self.take_button.setText(text)
+        self.take_button.setShortcut(QKeySequence(TAKE_READING_KEY))
 
     def take_reading(self, values: tuple[float, ...] | None = None,
                      frames: tuple[int, int] | None = None) -> str:
