@@ -21,14 +21,15 @@ import os
 from collections.abc import Iterable
 from pathlib import Path
 
-from models.messages import QT_TR_NOOP, Message, message, separated
+from models.messages import QT_TR_NOOP, Message, message, reason_of, separated
 from models.project.atomic_write import stale_temporaries
 from models.project.durable_rename import fsync_directory, rename_new_durably, replace_durably
 from models.project.output_guard import OutputRefused, sqlite_path_of_url
 from models.register.wording import issued_file_words
 
 __all__ = ["kept_name", "keep_in_sight", "keep_recorded_temporaries", "place_new",
-           "refuse_issued_files", "refuse_issued_outputs", "written_names"]
+           "refuse_issued_files", "refuse_issued_outputs", "write_sparing_issued",
+           "written_names"]
 
 log = logging.getLogger(__name__)
 
@@ -235,3 +236,50 @@ def refuse_issued_outputs(url: str, outputs: Iterable[tuple[str, str | None]]
             return refuse_issued_files(register, outputs)
     except RegisterError:
         return []
+
+
+def write_sparing_issued(url: str, path: str | os.PathLike[str], data: bytes) -> None:
+    """``data`` written to ``path``, an output of a run that issues nothing, checked against
+    the files the register at ``url`` issued at the moment it is placed, not only when the
+    run started (a capture may last hours: a certificate, DCC or results file issued under
+    that name meanwhile was replaced by its final write): a temporary file beside it,
+    fsync'ed, then :func:`place_new`. Written through a symbolic link, as every output.
+    Where the register is not there or cannot be opened nothing can be found in it (as
+    :func:`refuse_issued_outputs`): the file is replaced as an atomic write does; a register
+    that fails while checking refuses it (OutputRefused, its reason). Refused or failed
+    (OSError), nothing is left but what was there."""
+    import tempfile
+
+    from models.project.atomic_write import _mode_for, _temp_prefix
+    from models.project.output_guard import refuse_database
+    from models.register.store import Register, RegisterError
+
+    target = Path(path)
+    refuse_database(target)
+    if target.is_symlink():  # written through the link, as every output
+        target = target.resolve()
+    fd, temp = tempfile.mkstemp(prefix=_temp_prefix(target), suffix=".tmp", dir=target.parent)
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            if hasattr(os, "fchmod"):  # POSIX
+                os.fchmod(handle.fileno(), _mode_for(target))
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
+        database = sqlite_path_of_url(url)
+        register = None
+        if database is None or database.is_file():
+            with contextlib.suppress(RegisterError):  # a database error is a RegisterError
+                register = Register(url)
+        if register is None:
+            replace_durably(temp, target)
+            return
+        with register:
+            try:
+                place_new(register, temp, target)
+            except RegisterError as exc:  # not known to be no issued file: not replaced
+                raise OutputRefused(reason_of(exc)) from exc
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(temp)
+        raise

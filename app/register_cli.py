@@ -247,6 +247,7 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     """The register's hash chain and stored PDFs; then, if given, the PDF at ``path`` and
     the head ``head`` (or the one printed on the certificate ``head_from``)."""
     from models.register.chain import head_in_pdf
+    from models.register.printed_place import head_before_changed, in_this_chain, say_its_place
     from models.register.store import RegisterError
 
     def out(text) -> None:
@@ -282,7 +283,7 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
             out(message(QT_TR_NOOP(
                 "head {head}: in the register's chain at record {seq}; the history up to it "
                 "is still there"), head=found[1], seq=found[0]))
-            if certificate and not _in_its_place(register, head_from, certificate, out):
+            if certificate and not say_its_place(register, head_from, certificate, out):
                 failed = True
     if not path:
         return 1 if failed else 0
@@ -304,9 +305,9 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
             "another register)") if is_dcc else QT_TR_NOOP(
             "{path}: NOT in the register (no issued PDF has its SHA-256: altered, a "
             "draft, or from another register)"), path=path))
-        if not is_dcc and head_in_pdf(data) and register.find_head(head_in_pdf(data)):
+        if not is_dcc and in_this_chain(register, data):
             # it prints a head of this chain, so its record followed that head: is it gone?
-            _in_its_place(register, path, data, out)
+            say_its_place(register, path, data, out)
         return 1
     out(message(_by_kind(record, QT_TR_NOOP(
         "{path}: certificate {number}, issued {issued_at}, {status}; identical to "
@@ -317,70 +318,11 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
         "the record (SHA-256)")), path=path, number=record.number,
         issued_at=record.issued_at, status=status_words(record.status)))
     _say_if_no_longer_valid(record, path, out)
-    printed = "" if is_dcc else head_in_pdf(data)
-    if printed and printed != register.chain_before(record.number):
-        out(message(QT_TR_NOOP(
-            "CHANGED AFTER ISSUE: {path} prints the chain head {printed} before it, but the "
-            "register's chain before {number} is now {actual}"), path=path, printed=printed,
-            number=record.number, actual=register.chain_before(record.number)))
+    moved = None if is_dcc else head_before_changed(register, path, data, record)
+    if moved is not None:
+        out(moved)
         failed = True
     return 1 if failed else 0
-
-
-def _in_its_place(register, path: str, data: bytes, out) -> bool:
-    """A certificate's PDF whose printed head (the chain before it) is in the register's
-    chain: its own record, its number and SHA-256, must be the next one (rev64 F8: a tail
-    deleted with its state row set back left "the history up to it is still there" said of
-    a certificate the register no longer held, and its number free). Its record gone — the
-    chain ending at that head, no record with its SHA-256 — is recorded in the register
-    (Register.record_missing), which then issues nothing until it is restored from a
-    backup. False when it is not in its place."""
-    from models.register.store import RegisterError
-
-    check = register.printed_head(data)
-    if check is None or check.place is None:
-        return False
-    name = check.number or message(QT_TR_NOOP("SHA-256 {sha}…"), sha=check.sha256[:16])
-    place = check.place + 1
-    if check.there:
-        out(message(QT_TR_NOOP(
-            "{path}: {number} is record {seq}, right after that head, identical to the record "
-            "(SHA-256)"), path=path, number=check.record.number, seq=place))
-        return True
-    if check.recorded_missing:
-        out(message(QT_TR_NOOP(
-            "CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after "
-            "the head it prints; its record was found deleted and that is recorded (see "
-            "above)"), path=path, number=name, seq=place))
-        return False
-    if check.missing:
-        out(message(QT_TR_NOOP(
-            "CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after "
-            "the head it prints, but the register's chain ends at that head and no record has "
-            "its SHA-256: its record was deleted after issue"), path=path, number=name,
-            seq=place))
-        if register.problems:
-            return False  # issuing is refused already
-        try:
-            register.record_missing(check)
-        except RegisterError as exc:
-            out(message(QT_TR_NOOP(
-                "  it could not be recorded in the register ({reason}): issuing is not "
-                "stopped by it"), reason=reason_of(exc)))
-        else:
-            out(message(QT_TR_NOOP(
-                "  recorded in the register: nothing is issued, its number not again, until "
-                "the register is restored from a backup")))
-        return False
-    other = (check.record.number if check.record is not None else check.after
-             or message(QT_TR_NOOP("not there")))
-    out(message(QT_TR_NOOP(
-        "CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but "
-        "record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, "
-        "or the register's record of it was replaced"), path=path, number=name, seq=place,
-        other=other, elsewhere=message(QT_TR_NOOP(" (its SHA-256 is record {numbers}'s)"),
-                                       numbers=check.elsewhere) if check.elsewhere else ""))
-    return False
 
 
 def _by_kind(record, certificate: str, report: str, unknown: str) -> str:

@@ -221,21 +221,37 @@ class RegisterPresenter:
             return 0
 
     def verify_pdf(self) -> CertificateRecord | None:
+        """A PDF chosen by the user: the record that issued it, byte for byte, and what the
+        register says of the place its printed head gives it — the findings of ``anglebench
+        register verify FILE.pdf`` (models/register/printed_place.py): a record deleted
+        after issue is named by that head and recorded as missing when the register can be
+        written; another record in its place is said; a record found whose chain before it
+        was rewritten is said."""
+        from models.register.printed_place import head_before_changed, in_this_chain, say_its_place
+
         path = self.view.ask_pdf_to_verify()
         if not path:
             return None
+        findings: list[str] = []
         try:
             with open(path, "rb") as handle:
                 data = handle.read()
             with self._register() as register:
                 found = register.verify_all(data)
                 problems = register.audit(pdfs=True)  # the stored PDFs too, on demand
+                if len(found) == 1:
+                    moved = head_before_changed(register, path, data, found[0])
+                    findings += [moved] if moved is not None else []
+                elif not found and in_this_chain(register, data):
+                    # it prints a head of this chain, so its record followed it: is it gone?
+                    say_its_place(register, path, data, findings.append)
         except (OSError, RegisterError) as exc:
             self.view.tell(tr("Cannot verify"), explained(exc))
             return None
         if problems:
             self.view.tell(tr("Register changed after issue"), "\n".join(
                 translated(p) for p in problems[:20]))
+        said = "".join("\n" + translated(line) for line in findings)
         record = found[0] if len(found) == 1 else None
         if len(found) > 1:
             self.view.tell(tr("Not in the register"), tr(
@@ -245,9 +261,10 @@ class RegisterPresenter:
         elif record is None:
             self.view.tell(tr("Not in the register"), tr(
                 "{path}: no certificate issued from this register has this PDF (SHA-256): it "
-                "was altered, is a draft, or comes from another register.").format(path=path))
+                "was altered, is a draft, or comes from another register.").format(path=path)
+                + said)
         else:
-            self.view.tell(tr("Verified"), tr(
+            self.view.tell(tr("Register changed after issue") if findings else tr("Verified"), tr(
                 "{path} is certificate {number} as issued on {date} ({status}), byte for byte.")
                 .format(path=path, number=record.number, date=record.issued_at,
                         status=translated(status_words(record.status)))
@@ -255,7 +272,7 @@ class RegisterPresenter:
                     "It is no longer valid: superseded by {by}.").format(by=record.superseded_by))
                 + ("" if record.status != "withdrawn" else "\n" + tr(
                     "It is no longer valid: withdrawn ({reason}).").format(
-                    reason=record.withdrawn_reason or "—")))
+                    reason=record.withdrawn_reason or "—")) + said)
         return record
 
     def show_history(self) -> None:

@@ -1,18 +1,26 @@
 """Right-click on any plot: "Copy image" and "Save image…", named after the plot's tab
-(pyqtgraph's own export dialog lists its items as "Plot", "Plot", "Plot")."""
+(pyqtgraph's own export dialog lists its items as "Plot", "Plot", "Plot"). The image is
+written atomically, through the write its owner gives (a workbench's: the checks every
+other output goes through, a file the register issued never replaced)."""
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 import pyqtgraph as pg
-from PySide6.QtWidgets import QApplication, QWidget
+from PySide6.QtCore import QBuffer, QIODevice
+from PySide6.QtWidgets import QApplication, QMessageBox, QWidget
 
-from widgets.i18n import live, tr
+from models.project.atomic_write import write_bytes_atomic
+from widgets.i18n import explained, live, tr
 from widgets.save_file import ask_save_file
 
-__all__ = ["add_image_actions", "copy_image", "image_file_name", "localise_plot_menu",
-           "localise_plot_menus", "plot_panels"]
+__all__ = ["ImageWrite", "add_image_actions", "copy_image", "image_file_name",
+           "localise_plot_menu", "localise_plot_menus", "plot_panels", "png_bytes", "write_png"]
+
+#: writes a plot's image: ``(path, PNG bytes)``
+ImageWrite = Callable[[str, bytes], object]
 
 
 def plot_panels(widget: QWidget) -> int:
@@ -30,11 +38,38 @@ def copy_image(widget: QWidget) -> None:
     QApplication.clipboard().setImage(widget.grab().toImage())
 
 
-def _save_image(widget: QWidget, title: str) -> None:
+def png_bytes(widget: QWidget) -> bytes:
+    """The widget as it is drawn, a PNG image."""
+    buffer = QBuffer()
+    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
+    widget.grab().save(buffer, "PNG")
+    return bytes(buffer.data().data())
+
+
+def _save_image(widget: QWidget, title: str, write: ImageWrite | None = None) -> None:
+    """The file dialog, then the image written by ``write(path, data)`` (a workbench's: it
+    checks the name as every export does and writes atomically); without one, written
+    atomically (rev64: it was written in place, through a ``.png`` link to an issued PDF)."""
     path = ask_save_file(widget, tr("Save image"), image_file_name(title),
                          tr("PNG image (*.png)"))
-    if path:
-        widget.grab().save(path)
+    if not path:
+        return
+    data = png_bytes(widget)
+    if write is not None:
+        write(path, data)
+    else:
+        write_png(widget, path, data)
+
+
+def write_png(parent: QWidget, path: str, data: bytes) -> bool:
+    """``data`` written to ``path`` atomically (readers see the old file or the new one);
+    a failure told in a message box of ``parent``'s. False when nothing was written."""
+    try:
+        write_bytes_atomic(path, data)
+    except OSError as exc:
+        QMessageBox.warning(parent, tr("Cannot save the image"), explained(exc))
+        return False
+    return True
 
 
 def _graphics_views(widget: QWidget) -> list[pg.GraphicsView]:
@@ -89,9 +124,10 @@ def localise_plot_menus(widget: QWidget) -> int:
     return count
 
 
-def add_image_actions(widget: QWidget, title: str) -> int:
+def add_image_actions(widget: QWidget, title: str, write: ImageWrite | None = None) -> int:
     """Add the two actions to the right-click menu of every plot inside ``widget``; the
-    image is the whole widget (all its panels). Returns how many menus got them."""
+    image is the whole widget (all its panels), saved through ``write`` (see
+    :func:`_save_image`). Returns how many menus got them."""
     count = 0
     for view in _graphics_views(widget):  # the fringe's plots are tabs of their own
         for item in view.scene().items():
@@ -102,7 +138,8 @@ def add_image_actions(widget: QWidget, title: str) -> int:
                 copy.triggered.connect(lambda _=False, w=widget: copy_image(w))
                 save = item.menu.addAction(tr("Save image…"))
                 live(save.setText, tr("Save image…"))
-                save.triggered.connect(lambda _=False, w=widget, t=title: _save_image(w, t))
+                save.triggered.connect(
+                    lambda _=False, w=widget, t=title: _save_image(w, t, write))
                 localise_plot_menu(item)
                 count += 1
     return count

@@ -360,6 +360,23 @@ class WorkbenchPresenter(QObject):
             return True
         return False
 
+    def save_image(self, path: str, data: bytes) -> bool:
+        """A plot's "Save image…" (widgets/plot_image.py): refused like any export of the
+        workbench (:meth:`output_refused`: the register, the open project, an input, a file
+        the register issued), else written atomically. rev64: it was written in place, so a
+        ``.png`` link or hard link to an issued PDF, XLSX or DCC replaced the issued file."""
+        from models.project.atomic_write import write_bytes_atomic
+
+        title = tr("Cannot save the image")
+        if self.output_refused(path, title):
+            return False
+        try:
+            write_bytes_atomic(path, data)
+        except OSError as exc:
+            self.view.tell(title, explained(exc))
+            return False
+        return True
+
     def build_settings(self) -> None:
         """The set-up fields, one per declared setting of the kind."""
         for parameter in self.kind.parameters:

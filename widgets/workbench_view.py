@@ -34,7 +34,7 @@ from PySide6.QtWidgets import (
 from models.readings.tabular_import import header_signature
 from widgets.column_mapping_dialog import ColumnMappingDialog
 from widgets.i18n import Tr, declared, live, on_language_change, tr
-from widgets.plot_image import add_image_actions, plot_panels
+from widgets.plot_image import ImageWrite, add_image_actions, plot_panels, write_png
 from widgets.readings_table_view import ReadingsTableView
 from widgets.settings_form import SettingsForm
 
@@ -72,6 +72,9 @@ class WorkbenchView(QWidget):
         super().__init__(parent)
         self.title = title
         self.last_status = ""
+        #: writes a plot's image (path, PNG bytes): atomically; once subscribed, the
+        #: presenter's write, which checks the name first as every export does
+        self.write_image: ImageWrite = lambda path, data: write_png(self, path, data)
         self._setup_ui()
         self._layout()
         self._retranslate()
@@ -287,6 +290,7 @@ class WorkbenchView(QWidget):
     def subscribe(self, presenter) -> None:
         """Wire the user's actions to the presenter (a workbench's view adds its own)."""
         self.settings.changed.connect(presenter.settings_edited)
+        self.write_image = presenter.save_image  # a plot's "Save image…"
 
     def attach_table_model(self, model) -> None:
         self.table.setModel(model)
@@ -403,7 +407,10 @@ class WorkbenchView(QWidget):
         scroll.setWidget(widget)
         self.plot_tabs.addTab(scroll, title)
         self._plot_titles.append(title)
-        add_image_actions(widget, f"{self.title} {title.source}")
+        # through the presenter's checked write once it is subscribed (rev64: in place, over
+        # an issued file a .png link named)
+        add_image_actions(widget, f"{self.title} {title.source}",
+                          lambda path, data: self.write_image(path, data))
 
     def plot_widget(self, index: int) -> QWidget:
         """The plot of tab ``index`` (inside its scroll area)."""

@@ -364,6 +364,32 @@ def run_capture(argv: list[str]) -> int:
     return status
 
 
+def _kept_path(path: Path) -> Path:
+    return path.with_name(f"{path.stem}.captured-{time.strftime('%Y%m%dT%H%M%S')}"
+                          f"{path.suffix or '.csv'}")
+
+
+def _write_output(path: Path, text: str, say) -> Path:
+    """``text`` written to ``path``, checked against the files the register issued when it
+    is placed (app/issued_outputs.write_sparing_issued): the check at the start is as old
+    as the capture, hours maybe, and a certificate, DCC or results file issued under that
+    name meanwhile was replaced by this write. Refused, the readings go to a name of their
+    own beside it (``out.captured-STAMP.csv``), said. The name written; OSError when
+    neither can be written."""
+    from app.issued_outputs import write_sparing_issued
+
+    data = text.encode("utf-8")
+    try:
+        write_sparing_issued(register_url(), path, data)
+        return path
+    except OutputRefused as exc:
+        other = _kept_path(path)
+        write_sparing_issued(register_url(), other, data)
+        say(message(QT_TR_NOOP("anglebench capture: {reason}; written to {path} instead"),
+                    reason=reason_of(exc), path=str(other)))
+        return other
+
+
 def _finish(args, columns, rows, worker, journal, failure, say, dwells=None) -> int:
     """The readings (and the raw lines) written; the journal removed once they are. With
     ``dwells`` (--stable: each reading's first and last line), a raw line is marked as
@@ -388,14 +414,18 @@ def _finish(args, columns, rows, worker, journal, failure, say, dwells=None) -> 
     if args.raw:  # written even when no reading was taken: then it is all there is
         raw_target = Path(args.raw) if failure is None else _partial_path(args.raw)
         writes.append((raw_target, _raw_text_of(frames)))
+    written: dict[Path, Path] = {}
     for path, text in writes:
         try:
-            write_text_atomic(path, text)
+            written[path] = _write_output(path, text, say)
         except OSError as exc:
             say(message(QT_TR_NOOP("anglebench capture: cannot write {path}: {reason}; the {n} "
                                    "readings taken are kept in {journal}"), path=str(path),
-                        reason=exc.strerror or str(exc), n=len(rows), journal=str(journal.path)))
+                        reason=exc.strerror or reason_of(exc), n=len(rows),
+                        journal=str(journal.path)))
             return 1
+    target = written.get(target, target)
+    raw_target = written.get(raw_target, raw_target) if raw_target is not None else None
     journal.remove()
     if failure is not None and not rows:
         if raw_target is not None:

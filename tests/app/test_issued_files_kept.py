@@ -246,3 +246,48 @@ def test_the_later_of_two_issues_naming_one_pdf_never_replaces_the_first(
     capsys.readouterr()
     assert main(["register", "verify", str(pdf)]) == 0
     assert f"certificate {theirs}" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("link", ["symbolic", "hard"])
+def test_a_plots_save_image_never_replaces_an_issued_file(window, tmp_path, monkeypatch,
+                                                          link):
+    """A plot's right-click "Save image…" wrote in place, unchecked: ``plot.png``, a link
+    (or hard link) to an issued PDF, had the PDF replaced by a picture. It goes through the
+    check of every other export now (the main window's hook), told, the PDF unchanged; and
+    writes atomically (another name: a PNG)."""
+    import os
+
+    import pyqtgraph as pg
+    from PySide6.QtWidgets import QFileDialog
+
+    from models.certificate.metadata import CertificateMetadata
+    from models.register.store import IssueRequest
+
+    meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
+                               item_serial="RX-1")
+    issued = b"%PDF- the certificate as issued"
+    with window.certificates.open_register() as register:
+        number = register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                                lambda m, head="": issued)[0].number
+    pdf, png = tmp_path / "c.pdf", tmp_path / "plot.png"
+    pdf.write_bytes(issued)
+    png.symlink_to(pdf) if link == "symbolic" else os.link(pdf, png)
+    presenter = window.presenter("theodolite")
+    told: list[str] = []
+    presenter.view.tell = lambda title, text: told.append(text)
+    chosen = [str(png)]
+    monkeypatch.setattr(QFileDialog, "getSaveFileName",
+                        lambda *a, **k: (chosen[0], "PNG image (*.png)"))
+    plot = presenter.view.error_plot
+    save = next(action for view in [plot, *plot.findChildren(pg.GraphicsView)]
+                if isinstance(view, pg.GraphicsView) for item in view.scene().items()
+                if isinstance(item, pg.ViewBox) and getattr(item, "menu", None) is not None
+                for action in item.menu.actions() if action.text() == "Save image…")
+    save.trigger()  # the plot's right-click menu, "Save image…", plot.png chosen
+    assert told and (f"{png} is the PDF of certificate {number}, as issued; an issued file "
+                     "is never replaced") in told[-1]
+    assert pdf.read_bytes() == issued and png.read_bytes() == issued
+    chosen[0] = str(tmp_path / "error.png")
+    save.trigger()
+    assert (tmp_path / "error.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert len(told) == 1 and not list(tmp_path.glob(".*.tmp"))

@@ -268,3 +268,106 @@ def test_opening_checks_the_stored_pdfs_in_the_background(window, qtbot):
     assert sorted(r.number for r in window.register_presenter.records) == sorted(numbers)
     for thread in window.register_window.background:
         thread.join(5)
+
+
+def _titled_in(window, count: int) -> list[str]:
+    """Certificates in the window's register whose stand-in PDF carries its head in its
+    keywords and its number in its title, as a certificate's document information does."""
+    from models.register.chain import HEAD_MARK
+    from models.register.store import IssueRequest
+
+    meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
+                               item_serial="RX-1")
+    with window.certificates.open_register() as register:
+        return [register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                               lambda m, head="": f"%PDF /Title (Calibration certificate "
+                               f"{m.certificate_number}) /Keywords ({HEAD_MARK}{head})"
+                               .encode())[0].number for _ in range(count)]
+
+
+def _truncate_consistently(window, number: str) -> None:
+    """The last record deleted by hand, the counter and the state row set back to the
+    record before it: the register agrees with itself (rev64 F8, f_truncate.sh; as
+    tests/app/test_register_cli.py makes it)."""
+    import sqlalchemy as sa
+
+    engine = sa.create_engine(window.certificates.register_url())
+    with engine.begin() as conn:
+        for statement in (
+                "UPDATE register_state SET value = (SELECT chain_sha256 FROM certificates "
+                "WHERE seq = (SELECT seq - 1 FROM certificates WHERE number = :n)) "
+                "WHERE name = 'head'",
+                "UPDATE register_state SET value = (SELECT seq - 1 FROM certificates WHERE "
+                "number = :n) WHERE name = 'records'",
+                "UPDATE counters SET last_value = last_value - 1",
+                "DELETE FROM certificates WHERE number = :n"):
+            conn.execute(sa.text(statement), {"n": number})
+    engine.dispose()
+
+
+def _verify_in_the_window(window, qtbot, monkeypatch, path) -> list[tuple[str, str]]:
+    """The register window opened, "Verify a PDF…" clicked and ``path`` chosen in its file
+    dialog: what the window told, (title, text) each."""
+    import widgets.register_window as register_window
+
+    told: list[tuple[str, str]] = []
+    monkeypatch.setattr(register_window.RegisterWindow, "tell",
+                        lambda self, title, text: told.append((title, text)))
+    monkeypatch.setattr(register_window.QFileDialog, "getOpenFileName",
+                        lambda *a, **k: (str(path), "PDF (*.pdf)"))
+    window.show_register()
+    dialog = window.register_window
+    qtbot.waitUntil(lambda: "Checking" not in dialog.pdf_check.text(), timeout=20000)
+    qtbot.mouseClick(dialog.buttons["verify"], Qt.MouseButton.LeftButton)
+    for thread in dialog.background:
+        thread.join(5)
+    return told
+
+
+def test_verify_in_the_window_names_a_deleted_record_by_its_head_and_records_it(
+        window, qtbot, monkeypatch, tmp_path):
+    """rev64 F8 in the window: "Verify a PDF…" of a certificate whose record was deleted
+    (the register agreeing with itself) said only "not in the register"; now it says what
+    ``anglebench register verify`` says — issued as record 3, deleted after issue — and
+    records it, so the register issues nothing (its number not again)."""
+    from models.register.store import Register
+
+    numbers = _titled_in(window, 3)
+    with window.certificates.open_register() as register:
+        (tmp_path / "3.pdf").write_bytes(register.pdf(numbers[2]))
+    _truncate_consistently(window, numbers[2])
+    with Register(window.certificates.register_url()) as register:
+        assert not register.problems and not register.audit()  # agrees with itself
+    told = _verify_in_the_window(window, qtbot, monkeypatch, tmp_path / "3.pdf")
+    title, text = told[-1]
+    assert title == "Not in the register"
+    assert (f"CHANGED AFTER ISSUE: {tmp_path / '3.pdf'} ({numbers[2]}) was issued as record "
+            "3, right after the head it prints, but the register's chain ends at that head "
+            "and no record has its SHA-256: its record was deleted after issue") in text
+    assert "recorded in the register: nothing is issued, its number not again" in text
+    with Register(window.certificates.register_url()) as register:  # recorded: on every opening
+        assert any(f"certificate {numbers[2]}: its PDF (SHA-256" in p for p in register.problems)
+
+
+def test_verify_in_the_window_says_another_record_is_in_its_place(window, qtbot, monkeypatch,
+                                                                   tmp_path):
+    """The record deleted and its number issued again before anyone looked: the window says
+    the PDF is not what the register holds at its place, as the command line does, and
+    records nothing (the cause is not known)."""
+    from models.register.store import IssueRequest, Register
+
+    numbers = _titled_in(window, 2)
+    with window.certificates.open_register() as register:
+        (tmp_path / "2.pdf").write_bytes(register.pdf(numbers[1]))
+    _truncate_consistently(window, numbers[1])
+    meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-02",
+                               item_serial="RX-1")
+    with window.certificates.open_register() as register:
+        assert register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                              lambda m, head="": b"%PDF another")[0].number == numbers[1]
+    told = _verify_in_the_window(window, qtbot, monkeypatch, tmp_path / "2.pdf")
+    assert (f"prints the head before record 2, but record 2 is {numbers[1]}, not this PDF: the "
+            "PDF was altered after issue, or the register's record of it was replaced"
+            ) in told[-1][1]
+    with Register(window.certificates.register_url()) as register:
+        assert not register.problems

@@ -230,3 +230,41 @@ def test_the_raw_record_traces_every_reading_to_the_instruments_line(tmp_path):
     assert refused and all(r.split()[1] in ("001", "002", "000") for r in refused)
     # the record holds the frames the simulator sent, in order, none left out
     assert [r[1] == "1" for r in lines[1:]] == [None not in f for f in sim.sent[:len(lines) - 1]]
+
+
+def test_a_results_file_issued_under_out_during_the_capture_is_never_replaced(
+        tmp_path, capsys, monkeypatch):
+    """--out was checked against the issued files at the start only: a results file issued
+    under that name while the capture ran (a certificate's --results r.csv) was replaced by
+    the final write, the only copy. Checked again when placed: kept, the readings written
+    beside it under a name of their own, said."""
+    import app.capture.cli as capture_cli
+    from models.certificate.metadata import CertificateMetadata
+    from models.register.location import register_url
+    from models.register.store import IssueRequest, Register
+
+    out = tmp_path / "r.csv"
+    issued = b"number,figure\nAB-1,0.25\n"
+    real_finish = capture_cli._finish
+
+    def issued_meanwhile(*args, **kwargs):
+        meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
+                                   item_serial="RX-1")
+        with Register(register_url()) as register:  # an issue writing r.csv, recorded
+            number = register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                                    lambda m, head="": b"%PDF stand-in")[0].number
+            register.record_results(number, issued, out.name)
+        out.write_bytes(issued)
+        return real_finish(*args, **kwargs)
+
+    monkeypatch.setattr(capture_cli, "_finish", issued_meanwhile)
+    with AutocollimatorSimulator("pty", positions=[(12.5, -3.25)]) as sim:
+        assert main(["capture", "autocollimator", sim.port, "--readings", "5",
+                     "--out", str(out), *FAST]) == 0
+    err = capsys.readouterr().err
+    assert out.read_bytes() == issued
+    (kept,) = tmp_path.glob("r.captured-*.csv")
+    assert [tuple(map(float, r[1:])) for r in rows_of(kept)[1:]] == [(12.5, -3.25)] * 5
+    assert f"{out} is the results file of certificate AB-" in err
+    assert f"written to {kept} instead" in err and f"5 readings written to {kept}" in err
+    assert not list(tmp_path.glob(".*.tmp")) and not list(tmp_path.glob("*journal*"))

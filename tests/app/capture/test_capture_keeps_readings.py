@@ -226,12 +226,12 @@ def test_a_full_disk_at_the_end_keeps_the_readings_in_the_journal(tmp_path, caps
                                                                    monkeypatch):
     import errno
 
-    import app.capture.cli as capture_cli
+    import app.issued_outputs as issued_outputs
 
-    def full(path, text):
+    def full(url, path, data):  # the final write (checked against the issued files)
         raise OSError(errno.ENOSPC, "No space left on device")
 
-    monkeypatch.setattr(capture_cli, "write_text_atomic", full)
+    monkeypatch.setattr(issued_outputs, "write_sparing_issued", full)
     out = tmp_path / "ro.csv"
     with ReadoutSimulator("pty", positions=[(1.5,)]) as sim:
         assert main(["capture", "readout", sim.port, "--readings", "4", "--out", str(out),

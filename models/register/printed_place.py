@@ -1,0 +1,95 @@
+"""A certificate's PDF presented for verification against the place in the register's chain
+its printed head gives it: its own record there, deleted (then recorded as missing), or
+another record in its place; and a PDF found in the register whose printed head is no
+longer the chain before its record. What is found is said through ``out`` as Message
+lines; ``anglebench register verify`` (app/register_cli.py) prints them and the register
+window's "Verify a PDF…" (app/register_presenter.py) shows them, the same findings from
+the same checks (rev64 F8)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from models.messages import QT_TR_NOOP, Message, message, reason_of
+from models.register.chain import head_in_pdf
+from models.register.store import CertificateRecord, Register, RegisterError
+
+__all__ = ["head_before_changed", "in_this_chain", "say_its_place"]
+
+
+def say_its_place(register: Register, path: str, data: bytes,
+                  out: Callable[[Message], None]) -> bool:
+    """A certificate's PDF whose printed head (the chain before it) is in the register's
+    chain: its own record, its number and SHA-256, must be the next one (rev64 F8: a tail
+    deleted with its state row set back left "the history up to it is still there" said of
+    a certificate the register no longer held, and its number free). Its record gone — the
+    chain ending at that head, no record with its SHA-256 — is recorded in the register
+    (Register.record_missing), which then issues nothing until it is restored from a
+    backup. False when it is not in its place (or prints no head of this chain)."""
+    check = register.printed_head(data)
+    if check is None or check.place is None:
+        return False
+    name = check.number or message(QT_TR_NOOP("SHA-256 {sha}…"), sha=check.sha256[:16])
+    place = check.place + 1
+    if check.there:
+        assert check.record is not None
+        out(message(QT_TR_NOOP(
+            "{path}: {number} is record {seq}, right after that head, identical to the record "
+            "(SHA-256)"), path=path, number=check.record.number, seq=place))
+        return True
+    if check.recorded_missing:
+        out(message(QT_TR_NOOP(
+            "CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after "
+            "the head it prints; its record was found deleted and that is recorded (see "
+            "above)"), path=path, number=name, seq=place))
+        return False
+    if check.missing:
+        out(message(QT_TR_NOOP(
+            "CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after "
+            "the head it prints, but the register's chain ends at that head and no record has "
+            "its SHA-256: its record was deleted after issue"), path=path, number=name,
+            seq=place))
+        if register.problems:
+            return False  # issuing is refused already
+        try:
+            register.record_missing(check)
+        except RegisterError as exc:
+            out(message(QT_TR_NOOP(
+                "  it could not be recorded in the register ({reason}): issuing is not "
+                "stopped by it"), reason=reason_of(exc)))
+        else:
+            out(message(QT_TR_NOOP(
+                "  recorded in the register: nothing is issued, its number not again, until "
+                "the register is restored from a backup")))
+        return False
+    other = (check.record.number if check.record is not None else check.after
+             or message(QT_TR_NOOP("not there")))
+    out(message(QT_TR_NOOP(
+        "CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but "
+        "record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, "
+        "or the register's record of it was replaced"), path=path, number=name, seq=place,
+        other=other, elsewhere=message(QT_TR_NOOP(" (its SHA-256 is record {numbers}'s)"),
+                                       numbers=check.elsewhere) if check.elsewhere else ""))
+    return False
+
+
+def in_this_chain(register: Register, data: bytes) -> bool:
+    """The PDF prints a head the register's chain passed through (its record followed
+    it): worth :func:`say_its_place` when the register holds no record of it."""
+    printed = head_in_pdf(data)
+    return bool(printed) and register.find_head(printed) is not None
+
+
+def head_before_changed(register: Register, path: str, data: bytes,
+                        record: CertificateRecord) -> Message | None:
+    """Of a PDF found in the register as ``record``: the head it prints is the chain before
+    that record as issued; a different chain before it now is said (the history before it
+    rewritten). None when it prints no head or the same one."""
+    printed = head_in_pdf(data)
+    actual = register.chain_before(record.number)
+    if not printed or printed == actual:
+        return None
+    return message(QT_TR_NOOP(
+        "CHANGED AFTER ISSUE: {path} prints the chain head {printed} before it, but the "
+        "register's chain before {number} is now {actual}"), path=path, printed=printed,
+        number=record.number, actual=actual)
