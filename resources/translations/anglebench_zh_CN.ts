@@ -3818,11 +3818,17 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Save image</source>
+        <extracomment>writes a plot&apos;s image: ``(path, PNG bytes)``</extracomment>
         <translation>保存图像</translation>
     </message>
     <message>
         <source>PNG image (*.png)</source>
         <translation>PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <source>Cannot save the image</source>
+        <extracomment>the kind&apos;s printed_rounding of the result (None: the kind has none), which the plot&apos;s readout under the cursor follows the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41)</extracomment>
+        <translation>无法保存图像</translation>
     </message>
     <message>
         <source>Copy image</source>
@@ -4298,7 +4304,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Set-up: {names}</source>
-        <extracomment>the kind&apos;s printed_rounding of the result (None: the kind has none), which the plot&apos;s readout under the cursor follows the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41)</extracomment>
         <translation>设置：{names}</translation>
     </message>
     <message>
@@ -4477,6 +4482,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Readings</source>
+        <extracomment>writes a plot&apos;s image (path, PNG bytes): atomically; once subscribed, the presenter&apos;s write, which checks the name first as every export does</extracomment>
         <translation>读数</translation>
     </message>
     <message>
@@ -8715,6 +8721,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>cannot write {path} ({reason})</source>
         <translation>无法写入 {path}（{reason}）</translation>
+    </message>
+    <message>
+        <source>anglebench capture: {reason}; written to {path} instead</source>
+        <translation>anglebench capture：{reason}；改为写入 {path}</translation>
     </message>
     <message>
         <source>anglebench capture: cannot write {path}: {reason}; the {n} readings taken are kept in {journal}</source>
