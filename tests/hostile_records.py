@@ -147,9 +147,15 @@ def twins(picks: Picks, kind: str) -> tuple[bytes, bytes]:
             text = _dms(float(r[c]), comma)
             text = text.replace("°", "度").replace("'", "分").replace('"', "秒") if chinese else text
             r[c] = _full_width(text) if wide else text
+    from openpyxl.cell.cell import ILLEGAL_CHARACTERS_RE
+
     for _ in range(picks.integer(0, 2)):
         r = picks.integer(1, len(rows) - 1)
-        rows[r][picks.choice(ANGLE_COLUMNS[kind])] = picks.choice(HOSTILE[:50])
+        # the same cell in both: a worksheet cannot hold a control character such as NUL, so
+        # the XLSX twin's cell lost it and the two were no longer one record (a NUL in the
+        # encoder of the closure row: the CSV refused it, the XLSX read a closure not measured)
+        rows[r][picks.choice(ANGLE_COLUMNS[kind])] = ILLEGAL_CHARACTERS_RE.sub(
+            "", picks.choice(HOSTILE[:50]))
     text = "\n".join(";".join(_quoted(c, ";") for c in cells) for cells in rows) + "\n"
     return text.encode("utf-8"), _xlsx(rows)
 
