@@ -209,7 +209,7 @@ def readings_edited_after_capture(kind, settings: Mapping[str, Any], rows, sessi
 
     # a session recorded on another workbench is said, not checked (review 61 F7)
     return edited_after_capture(sessions or [], rows, columns, values, cache, kind.key,
-                                turn_of_row if turns else None, number_in)
+                                turn_of_row if turns else None, number_in, keys)
 
 
 def sign_if_configured(xml: bytes, key_file: str = "", cert_file: str = "") -> bytes:

@@ -33,7 +33,11 @@ from app.certificate_presenter import CertificatePresenter
 from app.main_menus import MainMenus
 from app.project_dialogs import ProjectDialogs
 from app.project_presenter import ProjectPresenter, default_recovery_store
-from app.reference_sender import watch_sent_references
+from app.reference_sender import (
+    check_sent_references,
+    sent_reference_source,
+    watch_sent_references,
+)
 from app.run_overlay_actions import RunOverlayActions
 from models import __version__
 from models.display_units import ANGLE_UNITS, AngleUnit
@@ -486,7 +490,7 @@ class MainWindow(QMainWindow):
         # form's: the certificate states what it computed with, and the register records
         # the readings that give its figures
         result = self._current_result()
-        if result is None:
+        if result is None or not self._sent_reference_current():
             return False
         analysed = self.current.result_state()
         issued = self.certificates.export_certificate(
@@ -498,6 +502,26 @@ class MainWindow(QMainWindow):
                 and self.register_window.isVisible():
             self.register_presenter.refresh(self.register_presenter.search)
         return issued
+
+    def _sent_reference_current(self) -> bool:
+        """Whether the reference the workbench in front holds, sent from another workbench
+        (File › Send as reference), is what its source would send now; told why not. No
+        certificate is issued on a stale reference column (day review 64 P2): the
+        technician sends it again (the notice's *Send again*) or loads the reference's own
+        certificate, and exports then."""
+        source = sent_reference_source(self, self.current)
+        if source is None:
+            return True
+        if not self.result_is_current(source):  # an edit there still being analysed
+            return False
+        check_sent_references(self)
+        notice = self.current.view.reference_notice
+        if not notice.stale:
+            return True
+        self.tell(tr("Reference not current"), tr(
+            "{workbench}: no certificate is issued on this reference column. {notice}").format(
+            workbench=declared(self.current.kind.title), notice=notice.label.text()))
+        return False
 
     def export_results(self) -> bool:
         result = self._current_result()

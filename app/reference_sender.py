@@ -19,7 +19,7 @@ from models.workbench import AcceptsReference, SendsReference
 from widgets.i18n import declared, explained, tr, translated
 
 __all__ = ["SENT_REFERENCES", "check_sent_references", "receiver_of", "send_reference",
-           "watch_sent_references"]
+           "sent_reference_source", "watch_sent_references"]
 
 #: the project metadata's record of each reference sent, by the receiver's key: the
 #: sender's key, what was sent and its digest (models.workbench.SentReference.digest), so
@@ -152,12 +152,19 @@ def check_sent_references(window: Any) -> None:
                                  source=declared(source.kind.title)))
 
 
-def _send_again(window: Any, target: Any) -> None:
-    """The notice's *Send again*: the reference sent from its source once more."""
+def sent_reference_source(window: Any, target: Any) -> Any:
+    """The presenter ``target``'s sent reference came from (None: nothing sent to it)."""
+    if not isinstance(target.kind, AcceptsReference):
+        return None
     sent = window.projects.metadata.get(SENT_REFERENCES)
     record = sent.get(target.kind.key) if isinstance(sent, dict) else None
-    source = next((p for p in window.presenters if isinstance(record, dict)
-                   and p.kind.key == record.get("source")), None)
+    return next((p for p in window.presenters if isinstance(record, dict)
+                 and p.kind.key == record.get("source")), None)
+
+
+def _send_again(window: Any, target: Any) -> None:
+    """The notice's *Send again*: the reference sent from its source once more."""
+    source = sent_reference_source(window, target)
     if source is None:
         return
     window.tabs.setCurrentIndex(window.presenters.index(source))

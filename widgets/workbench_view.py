@@ -181,6 +181,7 @@ class WorkbenchView(QWidget):
         fit_layout.addWidget(self.busy)
         fit_layout.addWidget(self.verdict)
         fit_layout.addWidget(self.warnings)  # every warning, above the text, never scrolled
+        self._fit_layout = fit_layout
         details = QHBoxLayout()
         details.addWidget(self.summary, 1)
         details.addWidget(self.figures)
@@ -459,6 +460,13 @@ class WorkbenchView(QWidget):
             item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
             self.figures.setItem(row, 1, item)
         self.figures.setVisible(bool(figures))
+
+    def add_result_notice(self, notice: QWidget) -> None:
+        """``notice`` under the warnings, at the top of the result strip: in sight at any
+        window size, never in the set-up's scrolled form (day review 64 P2: a stale
+        reference's notice there sat at y = 936 in a 720-px window)."""
+        layout = self._fit_layout
+        layout.insertWidget(layout.indexOf(self.warnings) + 1, notice)
 
     def set_warnings(self, warnings: list[str]) -> None:
         self.warnings.setText("\n".join(f"⚠ {w}" for w in warnings))

@@ -361,6 +361,9 @@ class _Session:
         self.takes: list[list[int]] = []
         #: per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS)
         self.steps: list[float] = []
+        #: a readout's: per take, the key of the column its value went to (raw_record's
+        #: OPTIONAL_KEYS; the cell is chosen at the time, so the record says which)
+        self.columns: list[str] = []
 
     def _end(self) -> int:
         """The raw index after this session's last line (the worker's newest while open)."""
@@ -386,7 +389,8 @@ class _Session:
         return {"instrument": self.kind, "port": self.worker.port, "baud": int(self.worker.baud),
                 "started_utc": self.started_utc, "frames": self.frames.snapshot(),
                 "takes": [list(t) for t in self.takes], "steps": list(self.steps),
-                "workbench": self.workbench}
+                "workbench": self.workbench,
+                **({"columns": list(self.columns)} if self.kind == "readout" else {})}
 
 
 class InstrumentLink:
@@ -997,7 +1001,8 @@ class CapturePanel(QDockWidget):
         # session's takes in place, in the window's thread, while an autosave thread may be
         # writing these sessions (its digest then did not match the text it wrote)
         out = [{**s, "takes": [list(t) for t in s["takes"]],
-                **({"steps": list(s["steps"])} if "steps" in s else {})}
+                **({"steps": list(s["steps"])} if "steps" in s else {}),
+                **({"columns": list(s["columns"])} if "columns" in s else {})}
                for s in self.sessions.get(workbench, [])]
         for link in self.links:
             if link.session is not None and link.session.workbench == workbench \
@@ -1538,6 +1543,9 @@ class CapturePanel(QDockWidget):
         for link, session, take in new_takes:
             session.takes.append(take)
             session.steps.append(steps.get(link.slot, 0.0))
+            if link.kind == "readout":  # the cell it wrote, for the check after (P3)
+                session.columns.append(next((key for t_link, _, key in targets
+                                             if t_link is link), ""))
             link.taken_frame = max(link.taken_frame, take[2] + session.first)
         keyed = [(link, take_key(session.kind, session.worker.port, session.started_utc, take))
                  for link, session, take in new_takes]

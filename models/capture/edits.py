@@ -194,8 +194,8 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                          values_of: Callable[[str, bytes], tuple[float, ...] | None],
                          cache: dict | None = None, workbench: str = "",
                          turn_of_row: Callable[[Sequence[str]], float | None] | None = None,
-                         number_in: Callable[[int, str], float | None] | None = None
-                         ) -> list[EditedReading]:
+                         number_in: Callable[[int, str], float | None] | None = None,
+                         keys: Sequence[str] = ()) -> list[EditedReading]:
     """Every cell of a taken reading that differs now from the reading its frames give;
     then every captured reading whose row was deleted, every take none of whose frames
     reads, and (``workbench`` given) every session recorded on another workbench.
@@ -214,7 +214,11 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
     angle parser, whichever instrument wrote it (a readout's reading in a D°M′S″ column was
     "edited or cleared after capture": its value, not an angle by its key, was read with
     ``float``). Not given: a cell is read as a decimal number, or as an angle where the
-    instrument's values are angles."""
+    instrument's values are angles.
+    ``keys``: the sheet's column keys. A session that records, per take, the column a
+    readout's value went to (``columns``, raw_record.OPTIONAL_KEYS) has that cell checked
+    as any other captured cell ("edited …: 30°00′00.4″ → 30°00′01.4″", "cleared"; marked in
+    the table), not searched for in the row (day review 64 P3)."""
     edited: dict[tuple[int, str], EditedReading] = {}
     # the takes superseded by a newer one into their rows: by the newer's key (take_rows.py);
     # in a file from before, a take of an instrument claiming a row a later take of it claims
@@ -248,6 +252,8 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
         # compared as the numbers a take writes (_forms: never another turn, review 62 M3)
         angles = bool(targets) and all(key.endswith("_deg") for key, _ in targets)
         steps = _steps(session)
+        written = session.get("columns")
+        written = written if isinstance(written, list) else []
 
         def number(column: int, text: str, angles: bool = angles) -> float | None:
             if not text.strip():
@@ -288,8 +294,14 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                 continue
             cells = list(rows[row]) if row < len(rows) else []
             near = turn_of_row(cells) if turn_of_row is not None else None
+            cell_key = written[take] if take < len(written) else ""
             for (key, column), value in zip(targets, values, strict=False):
                 forms = _forms(value, angles, key)
+                # a readout's step is in its value's unit: degrees where it wrote D°M′S″
+                in_degrees = key.endswith("_deg")
+                if column is None and cell_key and cell_key in keys:
+                    key, column = cell_key, list(keys).index(cell_key)  # the cell it wrote
+                    in_degrees = True  # said as D°M′S″ only where the cell is D°M′S″
                 if near is not None and in_turn_of(value, near) != value:
                     forms += (in_turn_of(value, near),)  # written in its target's turn
                 if column is not None and column < 0:  # no column for it in this sheet
@@ -306,7 +318,7 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                 if _as_captured(held, forms, step):
                     edited.pop((row, key), None)  # taken again later: as captured
                 else:
-                    captured = _shown(held, forms, now, step if key.endswith("_deg") else 0.0)
+                    captured = _shown(held, forms, now, step if in_degrees else 0.0)
                     edited[(row, key)] = EditedReading(row, key, captured,
                                                        now.strip(),
                                                        "edited" if now.strip() else "cleared")

@@ -61,8 +61,11 @@ KEYS = ("instrument", "port", "baud", "started_utc", "frames", "takes")
 #: the keys a session may have after them: ``steps``, per take, the step its cells were
 #: rounded to (the instrument's resolution in the reading's unit; 0: every digit), since
 #: #41 — a session without it wrote every digit; ``workbench``, the key of the workbench it
-#: was recorded on (review 61 F7) — a session without it (0.8.10) is read as before
-OPTIONAL_KEYS = ("steps", "workbench")
+#: was recorded on (review 61 F7) — a session without it (0.8.10) is read as before;
+#: ``columns``, per take, the key of the column a readout's value was written into (the
+#: cell chosen at the time: "Readout into", or the current cell's), since day review 64 P3 —
+#: a session without it is checked as before, its reading searched for in the row's cells
+OPTIONAL_KEYS = ("steps", "workbench", "columns")
 
 
 def frame_text(line: bytes) -> str:
@@ -255,6 +258,9 @@ def raw_sessions_from_json(data: Any, where: str) -> list[dict[str, Any]]:
             and all(isinstance(s, int | float) and not isinstance(s, bool) and math.isfinite(s)
                     and s >= 0 for s in steps) if "steps" in session else ok
         ok = ok and isinstance(session.get("workbench", ""), str)
+        columns = session.get("columns", [])
+        ok = ok and isinstance(columns, list) and len(columns) == len(session["takes"]) \
+            and all(isinstance(c, str) for c in columns) if "columns" in session else ok
         if not ok:
             raise ValueError(message(QT_TR_NOOP("{where}, session {i}: a frame or a take is "
                                                 "not as stored by AngleBench"),

@@ -88,7 +88,8 @@ class PolygonView(WorkbenchView):
         self.harmonics = HarmonicBars()
         self.sets_plot = FigurePlot()  # each set beside the mean, the set in progress, ±T
         self.simulation = PolygonSimulation()
-        # a sent reference (a cross-calibration's face deviations) gone stale: said here
+        # a sent reference (a cross-calibration's face deviations) gone stale: said under
+        # the result's warnings, where the technician looks (not the set-up's last row)
         self.reference_notice = ReferenceNotice()
         self.certificate_button = QPushButton()
         live(self.certificate_button.setText, tr("Load polygon certificate…"))
@@ -105,7 +106,7 @@ class PolygonView(WorkbenchView):
     def subscribe(self, presenter) -> None:
         super().subscribe(presenter)
         self.settings.layout().addRow(self.certificate_button)
-        self.settings.layout().addRow(self.reference_notice)
+        self.add_result_notice(self.reference_notice)
         self.certificate_button.clicked.connect(presenter.load_certificate_dialog)
 
     def show_figures(self, errors, residuals, tilt, harmonics, sets=None) -> None:

@@ -29,7 +29,11 @@ pytestmark = pytest.mark.slow  # a window and an instrument for seconds
 TYPED = ["0°00'00.000\"", "30°00'00.036\"", "60°00'00.072\""]
 #: the readout's reading (its line "+90.00012 deg") and the cell the take writes of it
 READING, CELL = 90.00012, "90°00'00.432\""
-MISSING = "reading of row 4 edited or cleared after capture: no cell of the row holds {} now"
+#: what is said of it: the cell the take wrote, checked as any captured cell, the reading
+#: beside a D°M′S″ cell in D°M′S″ (was "edited or cleared after capture: no cell of the row
+#: holds 90.00012 now", day review 64 P3)
+EDITED = "reading of row 4 edited after capture: {} → {}"
+CLEARED = "reading of row 4 cleared after capture: {}"
 
 
 def _type_in_editor(window, qtbot, bench, row: int, key: str, text: str) -> None:
@@ -101,14 +105,14 @@ def test_a_readouts_reading_in_a_dms_column_is_no_edit_until_the_cell_changes(
     assert _said(window, bench) == []
     # the cell changed by 1″: said
     _type_in_editor(window, qtbot, bench, 3, column, "90°00'01.432\"")
-    assert _said(window, bench) == [MISSING.format(READING)]
+    assert _said(window, bench) == [EDITED.format(CELL, "90°00'01.432\"")]
     # typed back as the take wrote it, in another spelling the analysis reads: as captured
     _type_in_editor(window, qtbot, bench, 3, column, "90 00 00.432")
     assert _said(window, bench) == []
     # cleared: said
     _clear(bench, 3, [column])
     assert bench.sheet.text(3, keys.index(column)) == ""
-    assert _said(window, bench) == [MISSING.format(READING)]
+    assert _said(window, bench) == [CLEARED.format(READING)]
     window.capture_panel.close()
 
 
@@ -207,7 +211,46 @@ def test_the_certificate_of_an_encoder_read_into_dms_says_no_change(window, qtbo
     _type_in_editor(window, qtbot, bench, last, "encoder_deg", "123°23'45.448\"")
     text = _issued_text(kind, bench, sessions, samples_dir, tmp_path, "edited")
     assert text.count("Changes after capture") == 1
-    said = MISSING.replace("row 4", f"row {last + 1}").format(f"{value:.12g}")
+    said = EDITED.replace("row 4", f"row {last + 1}").format("123°23'44.448\"",
+                                                             "123°23'45.448\"")
     assert said in text.replace("采集后变动 ", "").replace("Changes after capture ", "")
     assert AGAIN.format(row=last + 1) not in text
+    window.capture_panel.close()
+
+
+@pytest.mark.parametrize("workbench,column", [("polygon", "encoder_deg"),
+                                               ("positioning", "measured")])
+def test_a_readouts_cell_edited_or_cleared_is_marked_in_the_table(window, qtbot, workbench,
+                                                                  column):
+    """The readout's cell ("Readout into: encoder a"), untouched: no mark; 1″ off, then
+    cleared: orange, with the same tooltip as any captured cell. Was never marked (day review
+    64 P3): the take's reading was recorded with no column ("a cell chosen at the time") and
+    the window's marks keep only edits of a column, while the certificate said the change."""
+    from widgets.readings_table_model import EDITED_BRUSH
+
+    window.show()
+    bench = _show(window, workbench)
+    model = bench.table_model
+    keys = [c.key for c in model.sheet.columns]
+    _typed_rows(bench, column, TYPED)
+    _take_readout(window, qtbot, bench, 3, column, READING)
+    index = model.index(3, keys.index(column))
+    assert model.sheet.text(3, index.column()) == CELL
+    assert model.edited_cells == {}
+    assert model.data(index, Qt.ItemDataRole.BackgroundRole) is not EDITED_BRUSH
+    # 1″ more, typed in the cell's editor: orange, the change in its tooltip
+    _type_in_editor(window, qtbot, bench, 3, column, "90°00'01.432\"")
+    edited = EDITED.format(CELL, "90°00'01.432\"")
+    qtbot.waitUntil(lambda: set(model.edited_cells) == {(3, index.column())}, timeout=3000)
+    assert model.data(index, Qt.ItemDataRole.BackgroundRole) is EDITED_BRUSH
+    assert edited in model.data(index, Qt.ItemDataRole.ToolTipRole)
+    # typed back as captured: no mark
+    _type_in_editor(window, qtbot, bench, 3, column, CELL)
+    qtbot.waitUntil(lambda: model.edited_cells == {}, timeout=3000)
+    assert model.data(index, Qt.ItemDataRole.BackgroundRole) is not EDITED_BRUSH
+    # cleared with the table's Clear cells: orange, said cleared
+    _clear(bench, 3, [column])
+    qtbot.waitUntil(lambda: set(model.edited_cells) == {(3, index.column())}, timeout=3000)
+    assert model.data(index, Qt.ItemDataRole.BackgroundRole) is EDITED_BRUSH
+    assert CLEARED.format(READING) in model.data(index, Qt.ItemDataRole.ToolTipRole)
     window.capture_panel.close()

@@ -91,10 +91,11 @@ def test_a_row_cleared_and_taken_again_is_said_captured_again_never_edited(windo
         _clear(bench, row, ["encoder_deg", X, Y])
         cleared = ["reading of row 3 cleared after capture: 1.51",
                    "reading of row 3 cleared after capture: 0.25",
-                   "reading of row 3 edited or cleared after capture: no cell of the row holds "
-                   "90.00002 now"]
+                   "reading of row 3 cleared after capture: 90.00002"]  # the readout's cell
         assert said() == cleared
-        assert set(model.edited_cells) == {(row, columns.index(X)), (row, columns.index(Y))}
+        # the readout's encoder cell marked too (day review 64 P3: it was never marked)
+        assert set(model.edited_cells) == {(row, columns.index(X)), (row, columns.index(Y)),
+                                           (row, columns.index("encoder_deg"))}
         assert model.edited_cells[(row, columns.index(X))] == cleared[0]
 
         # taken again at face 3: the plan sends it back to row 3
@@ -122,7 +123,8 @@ def test_a_row_cleared_and_taken_again_is_said_captured_again_never_edited(windo
         while model.sheet.text(row, columns.index(X)):
             undo.trigger()
         assert said() == cleared
-        assert set(model.edited_cells) == {(row, columns.index(X)), (row, columns.index(Y))}
+        assert set(model.edited_cells) == {(row, columns.index(X)), (row, columns.index(Y)),
+                                           (row, columns.index("encoder_deg"))}
         assert [t for s in panel.raw_sessions("polygon") for t in s["takes"] if len(t) > 3] == []
         assert [t[0] for s in panel.raw_sessions("polygon") for t in s["takes"]] == \
             [0, 1, 2, -1] * 2

@@ -388,3 +388,45 @@ def test_an_edit_of_a_dms_cell_says_the_captured_reading_as_the_take_wrote_it():
     assert (float(captured), now, what) == (pytest.approx(hz, abs=1e-8), "30.0004", "edited")
     ((captured, now, what),) = said("")
     assert (float(captured), now, what) == (pytest.approx(hz, abs=1e-8), "", "cleared")
+
+
+def test_a_readouts_cell_recorded_with_its_take_is_checked_as_any_captured_cell():
+    """A session that records the column each readout take wrote (``columns``): that cell
+    is checked, an edit said beside a D°M′S″ cell in D°M′S″ ("→", as the other columns,
+    day review 64 P3: "no cell of the row holds 90.00012 now"), a cleared cell "cleared",
+    with the column's key (the window marks it); another cell of the row holding the number
+    does not make it as captured."""
+    from models.capture.raw_record import raw_sessions_from_json
+
+    kind = KINDS["polygon"]
+    keys = [c.key for c in kind.columns]
+    readout = session_json("readout", "tcp://127.0.0.1:47002", 9600, "t",
+                           [(0.0, b"+90.00012 deg", True)], [[0, 0, 0]])
+    readout["steps"] = [0.001 / 3600]
+    readout["columns"] = ["encoder_deg"]
+    (readout,) = raw_sessions_from_json([readout], "test")  # the key is kept as stored
+    assert readout["columns"] == ["encoder_deg"]
+    row = ["4", "90°00'00.432\"", "0", "0", "0", "1", "+"]
+    assert len(row) == len(keys)
+
+    def said(rows):
+        return [(e.column, e.what, str(e.text())) for e in readings_edited_after_capture(
+            kind, {}, rows, [readout])]
+
+    assert said([row]) == []
+    assert said([[*row[:1], "90°00'01.432\"", *row[2:]]]) == [(
+        "encoder_deg", "edited",
+        "reading of row 1 edited after capture: 90°00'00.432\" → 90°00'01.432\"")]
+    assert said([[*row[:1], "", *row[2:]]]) == [(
+        "encoder_deg", "cleared", "reading of row 1 cleared after capture: 90.00012")]
+    # the number moved to another cell of the row: not the cell the take wrote
+    assert said([[*row[:1], "", "90.00012", *row[3:]]])[0][:2] == ("encoder_deg", "cleared")
+
+
+def test_a_sessions_columns_must_be_one_key_a_take():
+    from models.capture.raw_record import raw_sessions_from_json
+
+    readout = session_json("readout", "p", 9600, "t", [(0.0, b"+1 deg", True)], [[0, 0, 0]])
+    for bad in (["a", "b"], [1], "encoder_deg"):
+        with pytest.raises(ValueError, match="not as stored"):
+            raw_sessions_from_json([{**readout, "columns": bad}], "test")
