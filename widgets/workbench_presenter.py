@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
 
@@ -324,6 +325,10 @@ class WorkbenchPresenter(QObject):
         #: analysed off the GUI thread and the columns are not re-measured (the panel widens
         #: the ones it fills), so the window never pauses for a take (#41)
         self.capturing = False
+        #: the row the capture sends the next take to (the capture panel's, while its
+        #: instruments are connected to this workbench; None: none): without an entry plan,
+        #: it waits for its reading as the plan's row does (day review 64 P4)
+        self.take_row: Callable[[], int] | None = None
         self._timer = QTimer(self)
         self._timer.setSingleShot(True)
         self._timer.setInterval(0)
@@ -748,9 +753,17 @@ class WorkbenchPresenter(QObject):
         """The row of the table the entry plan sends the next reading to — a row pre-filled
         with the next point, or one in the middle whose reading was cleared (a take thrown
         away) — that waits for its reading as the rows at the end do: never a bad row.
-        None without a plan, when the plan is complete or its next point is a new row."""
+        Without a plan, the row the capture sends the next take to (:attr:`take_row`, the
+        row its guidance names: one cleared in the middle too, day review 64 P4). None
+        without either, when the plan is complete or the next point is a new row."""
         place = self.plan_placement()
-        return place.row if place is not None and place.row < self.sheet.row_count else None
+        if place is not None:
+            row: int | None = place.row
+        elif self.take_row is not None and self.sheet.row_count <= PLAN_ROWS:
+            row = self.take_row()
+        else:
+            row = None
+        return row if row is not None and row < self.sheet.row_count else None
 
     def _without_waiting_rows(self, parsed: ParsedReadings,
                               sheet: ReadingsSheet | None = None,
@@ -851,6 +864,22 @@ class WorkbenchPresenter(QObject):
         done, total = plan.progress(got[0], self._reading_keys())
         return f"{text} ({done}/{total})"
 
+    def _waiting_in_the_middle(self, parsed: ParsedReadings) -> int | None:
+        """The row the next reading goes to (:meth:`planned_row`) when it is one in the
+        middle whose reading was cleared, left out of ``parsed`` while rows after it are in:
+        said in the result strip, as the reason it is not in the result (day review 64 P4).
+        None otherwise (the rows at the end waiting are the usual next points)."""
+        row = self.planned_row()
+        if row is None or parsed.n == 0:
+            return None
+        rows = np.asarray(parsed.row_index)
+        if (rows == row).any() or not (rows > row).any():
+            return None
+        columns = self.table_model.reading_columns
+        if not columns or any(self.sheet.text(row, c).strip() for c in columns):
+            return None
+        return row
+
     def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None,
                 shown: ShownAsPrinted | None = None) -> None:
         self.parsed = parsed
@@ -864,6 +893,11 @@ class WorkbenchPresenter(QObject):
             input_warnings.append(
                 tr("{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point "
                    "at a red cell to see why.").format(cells=len(parsed.errors), rows=listed))
+        waiting = self._waiting_in_the_middle(parsed)
+        if waiting is not None:
+            input_warnings.append(tr("The next reading goes to row {row}: row {row} waits for "
+                                     "its reading and is left out until then.").format(
+                                         row=waiting + 1))
         next_text = self._next_text()
         if self.plan_problem:
             input_warnings.append(tr("Entry plan: {reason}").format(

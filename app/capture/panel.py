@@ -101,6 +101,7 @@ from models.capture.take_cells import (
     MICRORADIAN_ARCSEC,
     cell_step,
     cell_text,
+    cleared_row,
     column_is_dms,
     elevation_from_zenith_deg,
     fixed_text,
@@ -921,6 +922,38 @@ class CapturePanel(QDockWidget):
         for presenter in getattr(self.window_, "presenters", []):
             if hasattr(presenter, "set_capturing"):
                 presenter.set_capturing(connected and presenter is current)
+            if hasattr(presenter, "take_row"):
+                # the row the next take goes to waits for its reading, plan or none
+                # (day review 64 P4); the guidance follows the cursor
+                taking = connected and presenter is current
+                if taking == (presenter.take_row is not None):
+                    continue
+                presenter.take_row = (lambda p=presenter: self.target_row(p)) if taking \
+                    else None
+                self._follow_cursor(presenter)
+                presenter.table_model.forget_waiting()
+                presenter.schedule_refresh()
+
+    def _follow_cursor(self, presenter) -> None:
+        """The guidance, and the row waiting for the take, worked out again when the cursor
+        moves (it may choose another row the take goes to): never a guidance that names a
+        row the take does not go to (day review 64 P4)."""
+        selection = presenter.view.table.selectionModel()
+        if selection is None or getattr(selection, "_follows_capture", False):
+            return
+        selection._follows_capture = True
+        selection.currentChanged.connect(lambda *_: self._cursor_moved(presenter))
+
+    def _cursor_moved(self, presenter) -> None:
+        if presenter is not getattr(self.window_, "current", None) \
+                or not any(link.connected for link in self.links):
+            return
+        self.update_guide()
+        seen = (presenter, presenter.planned_row())
+        if seen != getattr(self, "_take_row_seen", None):
+            self._take_row_seen = seen  # the row waiting changed: repainted, analysed again
+            presenter.table_model.forget_waiting()
+            presenter.schedule_refresh()
 
     def clear_statistics(self) -> None:
         """The first instrument's spread and Allan deviation off the screen (its link ended:
@@ -1163,8 +1196,11 @@ class CapturePanel(QDockWidget):
     def target_row(self, presenter=None, placement=None) -> int:
         """The row the next take goes to: with an entry plan, the row of the plan's next point
         (``placement``, else the presenter's); without one, the current row when the cells
-        it fills are blank, else the next empty point below it, else a new row. Never a row
-        whose cells the take fills are filled."""
+        it fills are blank; else a row above it whose reading was cleared (a take thrown
+        away: :func:`~models.capture.take_cells.cleared_row`), else the next empty point
+        below it, else a new row. Never a row whose cells the take fills are filled. The
+        guidance names this row, and it waits for its reading (not a bad row): a click on
+        a filled row does not move the take away from a cleared one (day review 64 P4)."""
         presenter = presenter or self.window_.current
         sheet = presenter.table_model.sheet
         index = presenter.view.table.currentIndex()
@@ -1183,6 +1219,12 @@ class CapturePanel(QDockWidget):
         columns = [keys.index(key) for _, _, key in self._targets(presenter)]
         if not columns:
             return row
+        if place is None and (row >= sheet.row_count
+                              or any(sheet.text(row, c).strip() for c in columns)):
+            cleared = cleared_row(min(row, sheet.row_count), sheet.column_count, columns,
+                                  presenter.table_model.reading_columns, sheet.text)
+            if cleared is not None:
+                return cleared
         return next_empty_point(sheet.row_count, row, columns, sheet.text)
 
     def _cell(self, presenter, link: InstrumentLink, i: int, key: str, value: float,

@@ -8,6 +8,11 @@
   rows at the end of the table that have their point (θ, target, face) but no reading yet —
   typing θ and Return with a nominal step leaves two such rows: the first is the next point
   (#41 review: the take filled row 2 while row 1 waited and the guidance named row 1's θ).
+* **A row cleared in the middle** (:func:`cleared_row`): without a plan, the first row used
+  whose cells the take fills and whose reading cells are all blank (a take thrown away).
+  With the cursor on a filled row or below the last, the next take goes there, and the
+  guidance names it (day review 64 P4: the guidance named the cleared row while a click on
+  another row sent the take to a new row, warned about as at the wrong face).
 * **The text of a cell** (:func:`cell_text`): the value rounded to the instrument's
   resolution (arcseconds, e.g. 0.01″, 0.1″, 1 µrad = 0.206265″), written in the column's
   angle format — D°M′S″ where the column's cells are written so, else decimal degrees — or
@@ -32,7 +37,7 @@ from decimal import Decimal
 from models.readings.angles import format_dms
 
 __all__ = ["RESOLUTIONS_ARCSEC", "cell_step", "cell_text", "column_is_dms", "decimals_for",
-           "elevation_from_zenith_deg", "fixed_text", "in_turn_of", "next_empty_point",
+           "cleared_row", "elevation_from_zenith_deg", "fixed_text", "in_turn_of", "next_empty_point",
            "rounded", "waiting_row"]
 
 #: one microradian in arcseconds
@@ -53,6 +58,21 @@ def next_empty_point(row_count: int, start: int, columns: Sequence[int],
         if all(not text(r, c).strip() for c in columns):
             return r
     return max(start, row_count)
+
+
+def cleared_row(before: int, column_count: int, take_columns: Sequence[int],
+                reading_columns: Sequence[int], text: Callable[[int, int], str]) -> int | None:
+    """The first row above ``before`` that is used (some cell filled) but whose cells of
+    ``take_columns`` and ``reading_columns`` are all blank: a row whose reading was cleared
+    (a take thrown away), waiting for it. None when there is none (or no take column)."""
+    if not take_columns:
+        return None
+    empty = tuple(take_columns) + tuple(reading_columns)
+    for r in range(max(0, before)):
+        if all(not text(r, c).strip() for c in empty) \
+                and any(text(r, c).strip() for c in range(column_count)):
+            return r
+    return None
 
 
 def waiting_row(row_count: int, column_count: int, reading_columns: Sequence[int],

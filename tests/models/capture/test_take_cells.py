@@ -122,3 +122,21 @@ def test_the_row_waiting_is_the_first_of_the_last_rows_without_a_reading():
     assert waiting_row(3, 3, [1, 2], _text([["10", "", ""], ["12", "1", ""], ["14", "", ""]])) == 2
     assert waiting_row(0, 3, [1, 2], _text([])) is None
     assert waiting_row(1, 3, [], _text([["10", "", ""]])) is None
+
+
+def test_cleared_row_is_the_first_used_row_without_its_reading():
+    """A row in the middle whose reading was cleared (its face and set kept) is where the
+    next take goes, without a plan (day review 64 P4); a blank row or one with a reading
+    is not, nor a row at or below ``before``."""
+    from models.capture.take_cells import cleared_row
+
+    rows = [["1", "0.0", "0.5"], ["2", "", ""], ["", "", ""], ["3", "", ""], ["4", "90", "1"]]
+
+    def text(r: int, c: int) -> str:
+        return rows[r][c]
+
+    assert cleared_row(5, 3, [2], [1, 2], text) == 1
+    assert cleared_row(1, 3, [2], [1, 2], text) is None  # only rows above ``before``
+    rows[1][1] = "30.0"  # its encoder typed again: it has a reading
+    assert cleared_row(5, 3, [2], [1, 2], text) == 3
+    assert cleared_row(5, 3, [], [1, 2], text) is None  # no column the take fills
