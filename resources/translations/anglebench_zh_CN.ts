@@ -2115,6 +2115,14 @@ Yes: replace it with this window&apos;s project. No: save this window&apos;s pro
         <translation>尚未导出</translation>
     </message>
     <message>
+        <source>Reference not current</source>
+        <translation>参考值不是当前的</translation>
+    </message>
+    <message>
+        <source>{workbench}: no certificate is issued on this reference column. {notice}</source>
+        <translation>{workbench}：不以此参考列出具证书。{notice}</translation>
+    </message>
+    <message>
         <source>The project could not be saved ({reason}). The window stays open with your readings.</source>
         <translation>项目无法保存（{reason}）。窗口保持打开，您的读数仍在其中。</translation>
     </message>
@@ -3827,7 +3835,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Cannot save the image</source>
-        <extracomment>the kind&apos;s printed_rounding of the result (None: the kind has none), which the plot&apos;s readout under the cursor follows the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41)</extracomment>
+        <extracomment>the kind&apos;s printed_rounding of the result (None: the kind has none), which the plot&apos;s readout under the cursor follows the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41) the row the capture sends the next take to (the capture panel&apos;s, while its instruments are connected to this workbench; None: none): without an entry plan, it waits for its reading as the plan&apos;s row does (day review 64 P4)</extracomment>
         <translation>无法保存图像</translation>
     </message>
     <message>
@@ -4329,6 +4337,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point at a red cell to see why.</source>
         <translation>{cells} 个单元格无法读取（第 {rows} 行）；这些行被略去。将鼠标指向红色单元格可查看原因。</translation>
+    </message>
+    <message>
+        <source>The next reading goes to row {row}: row {row} waits for its reading and is left out until then.</source>
+        <translation>下一个读数将填入第 {row} 行：第 {row} 行在等待其读数，在此之前不参与分析。</translation>
     </message>
     <message>
         <source>Entry plan: {reason}</source>
@@ -8494,7 +8506,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
-        <extracomment>where the demonstration instrument points in turn (8 s each) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short)</extracomment>
+        <extracomment>where the demonstration instrument points in turn (8 s each) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short)</extracomment>
         <translation>仪器</translation>
     </message>
     <message>
@@ -9022,7 +9034,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>{where}: the raw frames must be a list of sessions</source>
-        <extracomment>a session&apos;s keys, in the order they are stored the keys a session may have after them: ``steps``, per take, the step its cells were rounded to (the instrument&apos;s resolution in the reading&apos;s unit; 0: every digit), since #41 — a session without it wrote every digit; ``workbench``, the key of the workbench it was recorded on (review 61 F7) — a session without it (0.8.10) is read as before frames a block of :class:`FrameBlocks` holds once full (then encoded, never again)</extracomment>
+        <extracomment>a session&apos;s keys, in the order they are stored the keys a session may have after them: ``steps``, per take, the step its cells were rounded to (the instrument&apos;s resolution in the reading&apos;s unit; 0: every digit), since #41 — a session without it wrote every digit; ``workbench``, the key of the workbench it was recorded on (review 61 F7) — a session without it (0.8.10) is read as before; ``columns``, per take, the key of the column a readout&apos;s value was written into (the cell chosen at the time: &quot;Readout into&quot;, or the current cell&apos;s), since day review 64 P3 — a session without it is checked as before, its reading searched for in the row&apos;s cells frames a block of :class:`FrameBlocks` holds once full (then encoded, never again)</extracomment>
         <translation>{where}：原始数据帧必须是采集会话的列表</translation>
     </message>
     <message>
