@@ -525,9 +525,14 @@ class MainWindow(QMainWindow):
 
     def export_results(self) -> bool:
         result = self._current_result()
-        return result is not None and self.certificates.export_results(
+        if result is None:
+            return False
+        # the readings the result was analysed from, and the instrument's sessions behind
+        # them: the results say which rows were captured (day review 64 P8)
+        return self.certificates.export_results(
             self.current.kind, result, self.current.result_settings, self._source_name(),
-            self.current.angle_unit)
+            self.current.angle_unit, self.current.result_state().rows,
+            self.capture_panel.raw_sessions(self.current.kind.key))
 
     def closeEvent(self, event: QCloseEvent) -> None:  # noqa: N802
         try:
