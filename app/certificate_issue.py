@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import dataclasses
 import os
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from app.capture.instruments import INSTRUMENTS, frame_values, reading_columns
@@ -19,6 +19,7 @@ from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
 from models.capture.take_cells import elevation_from_zenith_deg
 from models.certificate.metadata import NUMBER_FIELDS, CertificateMetadata
+from models.certificate.readings_origin import captured_rows, filled_rows, readings_origin
 from models.project.file import READINGS_SOURCE, Project, WorkbenchState, project_to_json
 from models.project.output_guard import check_output, register_files
 from models.readings.angles import parse_angle_deg
@@ -221,6 +222,22 @@ def sign_if_configured(xml: bytes, key_file: str = "", cert_file: str = "") -> b
     return sign(xml, key_file, cert_file)
 
 
+def readings_stated(workbench: str, source_name: str, rows: Sequence[Sequence[str]],
+                    raw_capture: Sequence[dict[str, Any]] | None) -> tuple[str, str]:
+    """The certificate's "Readings:" (``source_name``, and the rows captured from the
+    instruments: day review 64 P8) and the instrument output's SHA-256 ("" when no reading
+    was taken from it)."""
+    # the instrument output is the readings' origin only when a reading was taken from it:
+    # a session with no take (the tab was in front while instruments were connected) is
+    # kept with the record, not named on the certificate (rev62day F15: "Instrument output:
+    # SHA-256 …" on a report none of whose readings was captured)
+    sessions = list(raw_capture or ())
+    taken = any(session.get("takes") for session in sessions)
+    origin = readings_origin(source_name, captured_rows(sessions, rows, workbench),
+                             len(filled_rows(rows)))
+    return origin, raw_digest(sessions) if taken else ""
+
+
 def issue_certificate(register: Register, kind, result: Any, metadata: CertificateMetadata,
                       settings: Mapping[str, Any], rows: list[list[str]], source_name: str,
                       path: str, *, supersedes: str = "", change_note: str = "",
@@ -259,12 +276,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                       {"certificates": {kind.key: metadata.to_dict()},
                        READINGS_SOURCE: source_name},
                       {kind.key: raw_capture} if raw_capture else {})
-    # the instrument output is the readings' origin only when a reading was taken from it:
-    # a session with no take (the tab was in front while instruments were connected) is
-    # kept with the record, not named on the certificate (rev62day F15: "Instrument output:
-    # SHA-256 …" on a report none of whose readings was captured)
-    taken = any(session.get("takes") for session in raw_capture or ())
-    digest = raw_digest(raw_capture) if taken else ""
+    # "Readings:" as the rows came (typed, or which captured) and the instrument output
+    origin, digest = readings_stated(kind.key, source_name, rows, raw_capture)
     edited = tuple(e.text() for e in readings_edited_after_capture(
         kind, settings, rows, raw_capture)) if raw_capture else ()
     request = IssueRequest(kind.key, metadata, project_to_json(project),
@@ -274,7 +287,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
 
     def render(final: CertificateMetadata, head: str = "") -> bytes:
         document = dataclasses.replace(
-            kind.certificate_document(result, final, source_name, settings),
+            kind.certificate_document(result, final, origin, settings),
             raw_data_sha256=digest, edited_readings=edited, register_head=head)
         pdf = certificate_pdf_bytes(document)
         made["document"] = document  # the last one rendered is the one recorded

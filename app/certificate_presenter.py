@@ -465,7 +465,7 @@ class CertificatePresenter:
         """Ask for the details and a file; a complete certificate is issued through the
         register (number allocated there, record kept), a draft is written and nothing
         recorded."""
-        from app.certificate_issue import draft_reasons
+        from app.certificate_issue import draft_reasons, readings_stated
 
         incomplete = getattr(result, "incomplete", None)
         if incomplete is not None:  # before any dialog: a certificate needs every unit
@@ -558,11 +558,14 @@ class CertificatePresenter:
             if self._dcc_path(path):
                 check_output(self._dcc_path(path), self.protected())
             self._refuse_issued((("", path), ("", self._dcc_path(path))))
+            # a draft and a specimen say where the readings came from as the issued one would
+            origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture)
             if entered.example:
-                return self._specimen(kind, result, entered, settings, source_name, path)
+                return self._specimen(kind, result, entered, settings, origin, path, digest)
             if draft:
-                self._write_pdf_and_dcc(kind, result, kind.certificate_document(
-                    result, entered, source_name, settings), path, settings)
+                self._write_pdf_and_dcc(kind, result, dataclasses.replace(
+                    kind.certificate_document(result, entered, origin, settings),
+                    raw_data_sha256=digest), path, settings)
                 # a test report's draft is called one (ISO/IEC 17025 7.8.2.1 a))
                 said = (tr("Draft test report written to {path} — DRAFT: {missing} missing; "
                            "nothing was recorded in the register") if report else
@@ -580,13 +583,14 @@ class CertificatePresenter:
         finally:
             self.view.wait_cursor(False)
 
-    def _specimen(self, kind, result, entered, settings, source_name, path) -> bool:
+    def _specimen(self, kind, result, entered, settings, origin, path, digest="") -> bool:
         """The training switch: a SPECIMEN written, nothing recorded (as ``"example": true``
         on the command line)."""
         from app.certificate_issue import specimen_document
 
-        document = specimen_document(kind.certificate_document(result, entered, source_name,
-                                                               settings))
+        document = specimen_document(dataclasses.replace(
+            kind.certificate_document(result, entered, origin, settings),
+            raw_data_sha256=digest))
         self._write_pdf_and_dcc(kind, result, document, path, settings)
         self.view.show_status(self._with_dcc(tr(
             "SPECIMEN {number} written to {path} (training): watermarked SPECIMEN, not a "
@@ -722,7 +726,14 @@ class CertificatePresenter:
             record.workbench != revision.workbench
 
     def export_results(self, kind, result, settings: dict, source_name: str,
-                       unit: AngleUnit = ANGLE_UNITS["arcsec"]) -> bool:
+                       unit: AngleUnit = ANGLE_UNITS["arcsec"],
+                       rows: list[list[str]] | None = None,
+                       raw_capture: list | None = None) -> bool:
+        """Write the results (CSV or XLSX) of the result in front, not issued: where its
+        readings came from (``rows`` and the instrument's sessions ``raw_capture``) stated
+        as the certificate states it (day review 64 P8)."""
+        from app.certificate_issue import readings_stated
+
         path = self.view.choose_save_path(tr("Export results"), f"{kind.key}-results.csv",
                                           tr("CSV (*.csv);;Excel workbook (*.xlsx)"))
         if not path:
@@ -730,8 +741,9 @@ class CertificatePresenter:
         try:
             check_output(path, self.protected())
             self._refuse_issued((("", path),))  # rev62 F8
-            document = kind.certificate_document(result, self.details(kind.key), source_name,
-                                                 settings)
+            origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture)
+            document = dataclasses.replace(kind.certificate_document(
+                result, self.details(kind.key), origin, settings), raw_data_sha256=digest)
             if path.lower().endswith(".xlsx"):
                 write_results_xlsx(path, document, unit)
             else:

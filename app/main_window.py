@@ -200,6 +200,16 @@ class MainWindow(QMainWindow):
                 lambda k=presenter.kind.key: self.capture_panel.takes_of(k))
             presenter.table_model.sheet_changed.connect(
                 lambda p=presenter: self.mark_edited_readings(p))
+            # the sheet replaced (an import, a sample, File › New or Open): the take note
+            # and a status message about its rows go with the rows (day review 64 P7)
+            presenter.table_model.modelReset.connect(
+                lambda p=presenter: self._sheet_replaced(p))
+
+    def _sheet_replaced(self, presenter) -> None:
+        self.capture_panel.sheet_replaced(presenter.kind.key)
+        bar = self.statusBar()
+        if isinstance(bar, StatusLine):
+            bar.forget(presenter.view)
 
     def _load_raw_capture(self, raw: dict) -> None:
         self.capture_panel.load_raw_capture(raw)
@@ -525,9 +535,14 @@ class MainWindow(QMainWindow):
 
     def export_results(self) -> bool:
         result = self._current_result()
-        return result is not None and self.certificates.export_results(
+        if result is None:
+            return False
+        # the readings the result was analysed from, and the instrument's sessions behind
+        # them: the results say which rows were captured (day review 64 P8)
+        return self.certificates.export_results(
             self.current.kind, result, self.current.result_settings, self._source_name(),
-            self.current.angle_unit)
+            self.current.angle_unit, self.current.result_state().rows,
+            self.capture_panel.raw_sessions(self.current.kind.key))
 
     def closeEvent(self, event: QCloseEvent) -> None:  # noqa: N802
         try:

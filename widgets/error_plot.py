@@ -116,6 +116,11 @@ class ErrorPlot(QWidget):
         self.main_plot.addItem(self.vline, ignoreBounds=True)
         self.readout = QLabel(" ")
         self.readout.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        # on as many lines as the plot's width needs: on one line the readout of three
+        # curves (738 px in Chinese, 790 in English) held the plot wider than its area
+        # beside the docked instrument panel at 1280 px, which then scrolled sideways and
+        # cut off the legend and the curves past ~200° (day review 64 P5)
+        self.readout.setWordWrap(True)
         self.graphics.scene().sigMouseMoved.connect(self._on_mouse_moved)
 
     def _layout(self) -> None:

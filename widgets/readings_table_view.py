@@ -83,8 +83,10 @@ class ReadingsTableView(QTableView):
     """
 
     #: a message for the status line (the workbench's view shows it): the cell being typed
-    #: in was changed by another path, what was typed not entered (:meth:`dataChanged`)
-    notice = Signal(str)
+    #: in was changed by another path, what was typed not entered (:meth:`dataChanged`).
+    #: An object, not a str: a ``Signal(str)`` gave the slot a plain copy of the message,
+    #: which the status line could not say again after View › Language (day review 64 P6)
+    notice = Signal(object)
 
     def __init__(self, parent=None) -> None:
         super().__init__(parent)

@@ -26,11 +26,27 @@ class StatusLine(QStatusBar):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._shown: tuple[str, float | None] | None = None  # text, when its time is up
+        self._about: object | None = None  # what the message in sight is about (show_about)
         on_language_change(self, self._say_again)
 
     def showMessage(self, text: str, timeout: int = 0) -> None:  # noqa: N802 - Qt's name
         self._shown = (text, _clock() + timeout / 1000 if timeout > 0 else None)
+        self._about = None
         super().showMessage(text, timeout)
+
+    def show_about(self, text: str, timeout: int, about: object) -> None:
+        """A message about the rows of one sheet (``about``: its view), taken away by
+        :meth:`forget` when that sheet is replaced (day review 64 P7: "Row 4 … was not
+        entered" stayed through File › New)."""
+        self.showMessage(text, timeout)
+        self._about = about
+
+    def forget(self, about: object) -> None:
+        """The message in sight goes if it is about ``about`` (its sheet replaced)."""
+        if self._about is about and about is not None:
+            if self._shown is not None and self.currentMessage() == self._shown[0]:
+                self.clearMessage()
+            self._shown, self._about = None, None
 
     def _say_again(self) -> None:
         """The message in sight in the language now installed, for the time it had left

@@ -81,7 +81,7 @@ class WorkbenchView(QWidget):
 
     def _setup_ui(self) -> None:
         self.table = ReadingsTableView()
-        self.table.notice.connect(self.show_status)
+        self.table.notice.connect(self.show_row_status)
         self.settings = SettingsForm()
         self.readings_label = QLabel()
         live(self.readings_label.setText, tr("Readings"))
@@ -376,6 +376,19 @@ class WorkbenchView(QWidget):
         top = self.window()
         if isinstance(top, QMainWindow):
             top.statusBar().showMessage(text, 10_000)
+
+    def show_row_status(self, text: str) -> None:
+        """A message about a row of this sheet (what was typed and not entered): as
+        :meth:`show_status`, and taken away when the sheet is replaced (the window's
+        ``StatusLine.forget``)."""
+        self.last_status = text
+        top = self.window()
+        if isinstance(top, QMainWindow):
+            bar = top.statusBar()
+            if hasattr(bar, "show_about"):
+                bar.show_about(text, 10_000, self)
+            else:
+                bar.showMessage(text, 10_000)
 
     def set_next_row(self, text: str) -> None:
         self.next_label.setText(text)

@@ -437,7 +437,9 @@ class InstrumentLink:
         self.connect_button.clicked.connect(lambda: panel.connect_dialog(slot))
         self.disconnect_button = QPushButton()
         live(self.disconnect_button.setText, tr("Disconnect"))
-        self.disconnect_button.clicked.connect(self.disconnect)
+        # through the panel: the last one disconnected takes the take note with it
+        self.disconnect_button.clicked.connect(
+            lambda: self.panel.disconnect_instrument(self.slot))
         self.disconnect_button.setEnabled(False)
         self.resolution = QComboBox()
         for value, name in RESOLUTION_CHOICES:
@@ -720,6 +722,7 @@ class CapturePanel(QDockWidget):
         self.auto_state = QLabel("")
         #: why a take was refused, or auto-take switched off (until the next take)
         self.take_note = _ShownWhenSaid("")
+        self.take_note_of: str | None = None  # the workbench whose take it is of
         self.take_note.setStyleSheet("color: #b00020;")
         self.take_note.setVisible(False)
         # wide enough to wrap by words (a bottom-docked panel at 200 % squeezed it to a few
@@ -878,9 +881,24 @@ class CapturePanel(QDockWidget):
         self.timer.start()
 
     def disconnect_instrument(self, slot: int | None = None) -> None:
-        """Disconnect one instrument (``slot``) or both."""
+        """Disconnect one instrument (``slot``) or both; with none left connected, the take
+        note goes (day review 64 P7: "Row 50: encoder a … is −75.0° from …" stayed in red
+        after both were disconnected)."""
         for link in (self.links if slot is None else [self.links[slot]]):
             link.disconnect()
+        if not any(link.connected for link in self.links):
+            self.clear_take_note()
+
+    def clear_take_note(self) -> None:
+        """No take note (what the last take could not place, or took off the plan)."""
+        self.take_note.setText("")
+        self.take_note_of = None
+
+    def sheet_replaced(self, workbench: str) -> None:
+        """``workbench``'s sheet was replaced (an import, a sample, a project opened or
+        new): a take note of its rows is of rows that are gone."""
+        if self.take_note_of == workbench:
+            self.clear_take_note()
 
     def start_demonstration(self, kind: str, noise: float = 0.05, drift: float = 0.0,
                             faults: tuple[str, ...] = (), slot: int | None = None) -> str:
@@ -1079,6 +1097,7 @@ class CapturePanel(QDockWidget):
             if link.session is not None:
                 self._next_session(link, link.session.workbench)
         self.measured_columns = {}  # another project's rows
+        self.clear_take_note()  # of another project's rows (day review 64 P7)
 
     # ------------------------------------------------------------ auto-take
     def _gate_changed(self, *_args) -> None:
@@ -1467,6 +1486,9 @@ class CapturePanel(QDockWidget):
         connected has no reading to give (:meth:`waiting_for`)."""
         first = self.links[0]
         presenter = self.window_.current
+        # the take note (set below) is of this workbench's sheet: it goes when that sheet
+        # is replaced (sheet_replaced)
+        self.take_note_of = presenter.kind.key
         # an auto-take's frames are the first link's, live (it is marked so only after the
         # batch that brought it back: asked, a take at the end of that batch was refused
         # while the gate counted it taken)

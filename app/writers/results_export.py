@@ -264,7 +264,11 @@ def _metadata_rows(document: CertificateDocument,
         ("Certificate PDF SHA-256", issued.pdf_sha256 if issued else None),
         ("DCC SHA-256", issued.dcc_sha256 if issued else None),
         (SHEET_TEST, document.kind_title),  # "Test": 校准项目 or 检测项目 (not the PDF's 检测)
-        ("Readings", document.source_name), ("Laboratory", meta.lab_name),
+        ("Readings", document.source_name),
+        # the instrument's raw output behind the captured rows, as the PDF gives it (day
+        # review 64 P8: the sheet said nothing of it)
+        ("Instrument output SHA-256", document.raw_data_sha256 or None),
+        ("Laboratory", meta.lab_name),
         ("Customer", meta.customer_name), ("Item under test", meta.item_description),
         ("Serial number", meta.item_serial), ("Grade", meta.item_grade),
         ("Date of calibration", meta.calibration_date),

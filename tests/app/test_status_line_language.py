@@ -88,3 +88,28 @@ def test_a_message_whose_time_is_up_goes_with_the_language_it_was_shown_in(windo
         assert window.statusBar().currentMessage() == ""
     finally:
         choose_language(window, "en")
+
+
+def test_what_was_typed_and_not_entered_is_said_again(switched_back, qtbot):
+    """A take into the cell being typed in: "Row 3, AC x ["] was changed to “19.25” while
+    you were typing in it; …" is said again in Chinese after View › Language, and back
+    (day review 64 P6: it stayed in English; the table's signal gave the status line a
+    plain copy of the message)."""
+    from tests.widgets.test_typing_survives_repaints import _start_typing
+
+    window = switched_back
+    bench = window.presenter("polygon")
+    window.tabs.setCurrentIndex(window.presenters.index(bench))
+    bench.load_sample()
+    column = [c.key for c in bench.sheet.columns].index("ac_x_arcsec")
+    _start_typing(qtbot, bench, 2, column, "21.7")
+    bench.table_model.set_cells([(2, column, "19.25")], "Take reading (row 3)")
+    said = window.statusBar().currentMessage()
+    assert said.startswith("Row 3, AC x") and "“19.25”" in said and "“21.7”" in said, said
+    choose_language(window, "zh_CN")
+    chinese = window.statusBar().currentMessage()
+    assert chinese.startswith("第 3 行 ") and "“19.25”" in chinese and "未被确认" in chinese, \
+        chinese
+    assert "typing" not in chinese and "AC x" not in chinese, chinese
+    choose_language(window, "en")
+    assert window.statusBar().currentMessage() == said

@@ -28,7 +28,7 @@ CHINESE = {
     "Report number": "报告编号", "Date of test": "检测日期", "Place of test": "检测地点",
     # the results file's (XLSX) own labels and statements (app/writers/results_export.py):
     # its *Certificate* sheet's rows, and the columns a printed figure is split into
-    "Status": "状态", "Revision": "版次",
+    "Status": "状态", "Revision": "版次", "Instrument output SHA-256": "仪器原始输出的 SHA-256",
     "Separate calibration from certificate(s), which stay valid": "独立校准，有别于以下证书（仍然有效）",
     "Why it is a calibration of its own": "作为独立校准的理由",
     "Separate test from report(s), which stay valid": "独立检测，有别于以下报告（仍然有效）",

@@ -1,0 +1,74 @@
+"""Where a certificate's readings came from, as its "Readings:" line says it: the project's
+file (or "readings typed in AngleBench") and, when rows were taken from the instruments,
+which (day review 64 P8: "readings typed in AngleBench" was printed of rows captured from
+the instruments, the PDF's "Instrument output SHA-256" line the only hint)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+from models.messages import QT_TR_NOOP, message
+
+__all__ = ["TYPED", "captured_rows", "filled_rows", "readings_origin", "row_spans"]
+
+#: the readings' source when they are in no project file: typed (or pasted) into the sheet
+TYPED = QT_TR_NOOP("readings typed in AngleBench")
+
+
+def filled_rows(rows: Sequence[Sequence[str]]) -> list[int]:
+    """The sheet's rows (0-based) that hold a reading: any cell not blank."""
+    return [i for i, row in enumerate(rows) if any(str(cell).strip() for cell in row)]
+
+
+def captured_rows(sessions: Iterable[dict[str, Any]], rows: Sequence[Sequence[str]],
+                  workbench: str = "") -> list[int]:
+    """The filled sheet rows (0-based, ascending) whose reading a take of ``sessions``
+    (stored as in models/capture/raw_record.py) is in now: a take undone, superseded or
+    whose row was deleted (a stored row below 0, models/capture/take_rows.py) is behind no
+    row, and a session recorded on another workbench than ``workbench`` is not this
+    sheet's."""
+    filled = set(filled_rows(rows))
+    taken: set[int] = set()
+    for session in sessions:
+        if workbench and session.get("workbench", workbench) != workbench:
+            continue
+        taken.update(int(take[0]) for take in session.get("takes", ()) if int(take[0]) in filled)
+    return sorted(taken)
+
+
+def row_spans(rows: Sequence[int]) -> str:
+    """Rows (0-based, ascending) as a technician counts them, runs joined: "3–50, 52"."""
+    spans: list[str] = []
+    start = previous = None
+    for row in [*rows, None]:
+        if row is not None and previous is not None and row == previous + 1:
+            previous = row
+            continue
+        if start is not None and previous is not None:
+            spans.append(f"{start + 1}" if start == previous else f"{start + 1}–{previous + 1}")
+        start = previous = row
+    return ", ".join(spans)
+
+
+def readings_origin(source: str, captured: Sequence[int], row_count: int) -> str:
+    """The "Readings:" line: ``source`` (a project file's name, or :data:`TYPED`) and the
+    rows taken from the instruments (``captured``, 0-based, of ``row_count`` rows) — all of
+    them, or which. ``source`` alone when none was."""
+    if not captured:
+        return message(source) if source == TYPED else source
+    if len(captured) >= row_count:
+        if source == TYPED:
+            return message(QT_TR_NOOP("all {count} rows captured from the instruments"),
+                           count=row_count)
+        return message(QT_TR_NOOP("{source}; all {count} rows captured from the instruments"),
+                       source=source, count=row_count)
+    if source == TYPED:
+        return message(QT_TR_NOOP("readings typed in AngleBench, except rows {rows} "
+                                  "({captured} of {count}), captured from the instruments"),
+                       rows=row_spans(captured), captured=len(captured), count=row_count)
+    return message(QT_TR_NOOP("{source}; rows {rows} ({captured} of {count}) captured from "
+                              "the instruments"),
+                   source=source, rows=row_spans(captured), captured=len(captured),
+                   count=row_count)
+
