@@ -4110,7 +4110,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {column} was changed to “{value}” while you were typing in it; what you typed (“{typed}”) was not entered</source>
-        <extracomment>the cell&apos;s text the open editor was last filled with (&quot;&quot; when none is open) a message for the status line (the workbench&apos;s view shows it): the cell being typed in was changed by another path, what was typed not entered (:meth:`dataChanged`) a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
+        <extracomment>the cell&apos;s text the open editor was last filled with (&quot;&quot; when none is open) a message for the status line (the workbench&apos;s view shows it): the cell being typed in was changed by another path, what was typed not entered (:meth:`dataChanged`). An object, not a str: a ``Signal(str)`` gave the slot a plain copy of the message, which the status line could not say again after View › Language (day review 64 P6) a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
         <translation>第 {row} 行 {column} 在您输入时被改为“{value}”；您输入的内容（“{typed}”）未被确认</translation>
     </message>
     <message>
@@ -8250,6 +8250,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>readings typed in AngleBench</source>
+        <extracomment>the readings&apos; source when they are in no project file: typed (or pasted) into the sheet</extracomment>
         <translation>在 AngleBench 中录入的读数</translation>
     </message>
     <message>
@@ -11111,6 +11112,22 @@ Replace it?</source>
     <message>
         <source>Send again</source>
         <translation>重新发送</translation>
+    </message>
+    <message>
+        <source>all {count} rows captured from the instruments</source>
+        <translation>全部 {count} 行采集自仪器</translation>
+    </message>
+    <message>
+        <source>{source}; all {count} rows captured from the instruments</source>
+        <translation>{source}；全部 {count} 行采集自仪器</translation>
+    </message>
+    <message>
+        <source>readings typed in AngleBench, except rows {rows} ({captured} of {count}), captured from the instruments</source>
+        <translation>读数在 AngleBench 中录入，但第 {rows} 行（共 {count} 行中的 {captured} 行）采集自仪器</translation>
+    </message>
+    <message>
+        <source>{source}; rows {rows} ({captured} of {count}) captured from the instruments</source>
+        <translation>{source}；第 {rows} 行（共 {count} 行中的 {captured} 行）采集自仪器</translation>
     </message>
 </context>
 </TS>
