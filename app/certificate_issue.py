@@ -13,7 +13,7 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from app.capture.instruments import INSTRUMENTS, frame_values, reading_columns
-from app.issued_outputs import keep_in_sight, place_new, refuse_issued_files
+from app.issued_outputs import keep_in_sight, place_new, refuse_issued_files, written_beside
 from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
@@ -108,30 +108,14 @@ def _write_new(register: Register, path: str, data: bytes) -> None:
     (:func:`app.issued_outputs.place_new`; rev64 F7: the second of two issues naming the
     same PDF replaced the first's). Nothing left on failure; the register holds the file."""
     import contextlib
-    import tempfile
-    from pathlib import Path
 
-    from models.project.atomic_write import _mode_for, _temp_prefix, fsync_directory
-    from models.project.output_guard import refuse_database
-
-    target = Path(path)
-    refuse_database(target)
-    if target.is_symlink():  # written through the link, as every output
-        target = target.resolve()
-    fd, temp = tempfile.mkstemp(prefix=_temp_prefix(target), suffix=".tmp", dir=target.parent)
-    try:
-        with os.fdopen(fd, "wb") as handle:
-            if hasattr(os, "fchmod"):
-                os.fchmod(handle.fileno(), _mode_for(target))
-            handle.write(data)
-            handle.flush()
-            os.fsync(handle.fileno())
+    target, temp = written_beside(path, data)
+    try:  # placed for good: the durable renames fsync the folder
         place_new(register, temp, target)
     except BaseException:
         with contextlib.suppress(OSError):
             os.unlink(temp)
         raise
-    fsync_directory(target.parent)
 
 
 def draft_reasons(metadata: CertificateMetadata) -> list[str]:

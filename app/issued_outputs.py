@@ -28,7 +28,7 @@ from models.project.output_guard import OutputRefused, sqlite_path_of_url
 from models.register.wording import issued_file_words
 
 __all__ = ["kept_name", "keep_in_sight", "keep_recorded_temporaries", "place_new",
-           "refuse_issued_files", "refuse_issued_outputs", "write_sparing_issued",
+           "refuse_issued_files", "refuse_issued_outputs", "write_sparing_issued", "written_beside",
            "written_names"]
 
 log = logging.getLogger(__name__)
@@ -238,6 +238,34 @@ def refuse_issued_outputs(url: str, outputs: Iterable[tuple[str, str | None]]
         return []
 
 
+def written_beside(path: str | os.PathLike[str], data: bytes) -> tuple[Path, str]:
+    """``data`` in a temporary file beside the file ``path`` names (through a symbolic link,
+    as every output; never the register's database), fsync'ed, for :func:`place_new`:
+    (the target, the temporary file's name). Nothing is left when writing it fails."""
+    import tempfile
+
+    from models.project.atomic_write import _mode_for, _temp_prefix
+    from models.project.output_guard import refuse_database
+
+    target = Path(path)
+    refuse_database(target)
+    if target.is_symlink():
+        target = target.resolve()
+    fd, temp = tempfile.mkstemp(prefix=_temp_prefix(target), suffix=".tmp", dir=target.parent)
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            if hasattr(os, "fchmod"):  # POSIX
+                os.fchmod(handle.fileno(), _mode_for(target))
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(temp)
+        raise
+    return target, temp
+
+
 def write_sparing_issued(url: str, path: str | os.PathLike[str], data: bytes) -> None:
     """``data`` written to ``path``, an output of a run that issues nothing, checked against
     the files the register at ``url`` issued at the moment it is placed, not only when the
@@ -248,24 +276,10 @@ def write_sparing_issued(url: str, path: str | os.PathLike[str], data: bytes) ->
     :func:`refuse_issued_outputs`): the file is replaced as an atomic write does; a register
     that fails while checking refuses it (OutputRefused, its reason). Refused or failed
     (OSError), nothing is left but what was there."""
-    import tempfile
-
-    from models.project.atomic_write import _mode_for, _temp_prefix
-    from models.project.output_guard import refuse_database
     from models.register.store import Register, RegisterError
 
-    target = Path(path)
-    refuse_database(target)
-    if target.is_symlink():  # written through the link, as every output
-        target = target.resolve()
-    fd, temp = tempfile.mkstemp(prefix=_temp_prefix(target), suffix=".tmp", dir=target.parent)
+    target, temp = written_beside(path, data)
     try:
-        with os.fdopen(fd, "wb") as handle:
-            if hasattr(os, "fchmod"):  # POSIX
-                os.fchmod(handle.fileno(), _mode_for(target))
-            handle.write(data)
-            handle.flush()
-            os.fsync(handle.fileno())
         database = sqlite_path_of_url(url)
         register = None
         if database is None or database.is_file():
