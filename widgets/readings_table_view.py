@@ -111,10 +111,12 @@ class ReadingsTableView(QTableView):
 
     def pending_edit(self) -> tuple[int, int, str] | None:
         """(row, column, text) of a cell's editor whose text differs from the cell's, while
-        it is open; None otherwise."""
+        it is open; None otherwise. Open is the delegate's editor, not the view's state: rows
+        deleted elsewhere leave the view's state at NoState with the editor open (Qt), and
+        what was typed in it was then neither autosaved nor looked after."""
         delegate = self._typing_delegate
         editor, index = delegate.editor, delegate.index
-        if editor is None or not index.isValid() or self.state() != self.State.EditingState:
+        if editor is None or not index.isValid():
             return None
         shown = index.data(Qt.ItemDataRole.EditRole)
         text = editor.text()
