@@ -37,6 +37,10 @@ class ReadingsTableModel(QAbstractTableModel):
     """
 
     sheet_changed = Signal()
+    #: the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over
+    #: the sheet, an import, the fringe's live take), with the step's label: the view enters
+    #: what is being typed in a cell first (widgets/readings_table_view.py)
+    replacing = Signal(object)
 
     def __init__(self, sheet: ReadingsSheet, undo_stack: QUndoStack, parent=None) -> None:
         super().__init__(parent)
@@ -258,9 +262,11 @@ class ReadingsTableModel(QAbstractTableModel):
                     checked: bool = False, replaces: str = "") -> None:
         """Replace every row (one undo step); ``checked``: rows already fit the columns;
         ``replaces``: the instrument whose earlier takes the rows replace, in the same step
-        (the fringe's live take: widgets/table_commands.py ReplaceAllCommand)."""
-        self.undo_stack.push(ReplaceAllCommand(self, rows, label or tr("Replace readings"),
-                                               checked, replaces))
+        (the fringe's live take: widgets/table_commands.py ReplaceAllCommand). What is being
+        typed in a cell is entered before, as its own step (:attr:`replacing`)."""
+        label = label or tr("Replace readings")
+        self.replacing.emit(label)
+        self.undo_stack.push(ReplaceAllCommand(self, rows, label, checked, replaces))
 
     # -- raw operations used by the commands ------------------------------
     def apply_cells(self, changes: list[tuple[int, int, str]]) -> None:

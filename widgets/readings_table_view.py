@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QPersistentModelIndex, Qt, Signal
+from PySide6.QtCore import QPersistentModelIndex, Qt, QTimer, Signal
 from PySide6.QtGui import QAction, QGuiApplication, QKeySequence
 from PySide6.QtWidgets import (
     QAbstractItemDelegate,
@@ -111,16 +111,91 @@ class ReadingsTableView(QTableView):
 
     def pending_edit(self) -> tuple[int, int, str] | None:
         """(row, column, text) of a cell's editor whose text differs from the cell's, while
-        it is open; None otherwise."""
+        it is open; None otherwise. Open is the delegate's editor, not the view's state: rows
+        deleted elsewhere leave the view's state at NoState with the editor open (Qt), and
+        what was typed in it was then neither autosaved nor looked after."""
         delegate = self._typing_delegate
         editor, index = delegate.editor, delegate.index
-        if editor is None or not index.isValid() or self.state() != self.State.EditingState:
+        if editor is None or not index.isValid():
             return None
         shown = index.data(Qt.ItemDataRole.EditRole)
         text = editor.text()
         if text == ("" if shown is None else str(shown)):
             return None
         return index.row(), index.column(), text
+
+    def setModel(self, model) -> None:  # noqa: N802 - Qt's name
+        super().setModel(model)
+        if isinstance(model, ReadingsTableModel):
+            model.replacing.connect(self._enter_before_replacement)
+            model.modelAboutToBeReset.connect(self._before_reset)
+
+    def _typed_edit(self) -> tuple[QLineEdit, int, int, str] | None:
+        """The open editor typed into, its row, column and text, when the text differs from
+        its cell's (what a change of the cells would lose); None otherwise."""
+        editor, pending = self._typing_delegate.typed(), self.pending_edit()
+        return None if editor is None or pending is None else (editor, *pending)
+
+    def _header(self, column: int):
+        return self.model().headerData(column, Qt.Orientation.Horizontal,
+                                       Qt.ItemDataRole.DisplayRole)
+
+    def _say_after(self, text) -> None:
+        """``text`` to the status line once the change under way is done: after the
+        window's own handling of a replaced sheet (which takes away the messages about the
+        old sheet's rows) and after the message of what replaced it."""
+        QTimer.singleShot(0, self, lambda: self.notice.emit(text))
+
+    def _enter_before_replacement(self, label) -> None:
+        """The sheet is about to be replaced as one undo step (``label``: a paste over the
+        sheet, the fringe's live take, an import). What is typed in a cell and reads as its
+        column's value is entered first, as Return would enter it (its own undo step, before
+        the replacement's: Edit › Undo of the replacement shows it), and the status line
+        says so; what does not read is left to :meth:`_before_reset` (before: the reset
+        closed the editor and what was typed was gone without a word)."""
+        typed = self._typed_edit()
+        if typed is None:
+            return
+        editor, row, column, text = typed
+        try:
+            self.readings_model().sheet.columns[column].parse(text)
+        except ValueError:
+            return
+        header = self._header(column)
+        self.commitData(editor)
+        self.closeEditor(editor, QAbstractItemDelegate.EndEditHint.NoHint)
+        self._say_after(tr("Row {row}, {column}: what you typed (“{typed}”) was entered, then "
+                           "the readings were replaced ({what})").format(
+            row=row + 1, column=header, typed=text, what=label))
+
+    def _before_reset(self) -> None:
+        """Every row is about to be replaced by a path that cannot enter what is typed first
+        (File › New or Open, Edit › Undo or Redo of a replacement) or with a text that does
+        not read: the editor is closed, nothing entered, and the status line says what was
+        typed (Qt's reset closed it without a word)."""
+        typed = self._typed_edit()
+        if typed is None:
+            return
+        editor, row, column, text = typed
+        header = self._header(column)
+        self.closeEditor(editor, QAbstractItemDelegate.EndEditHint.NoHint)
+        self._say_after(tr("Row {row}, {column}: what you typed (“{typed}”) was not entered: "
+                           "the readings were replaced while you were typing in it").format(
+            row=row + 1, column=header, typed=text))
+
+    def rowsAboutToBeRemoved(self, parent, start: int, end: int) -> None:  # noqa: N802
+        """Rows deleted (Delete rows, Edit › Undo of an insert): an editor typed into in one
+        of them is closed, nothing entered (its row is going), and the status line says what
+        was typed (Qt closed it without a word)."""
+        typed = self._typed_edit()
+        if typed is not None and not parent.isValid() and start <= typed[1] <= end:
+            editor, row, column, text = typed
+            header = self._header(column)
+            self.closeEditor(editor, QAbstractItemDelegate.EndEditHint.NoHint)
+            self._say_after(tr("Row {row}, {column}: what you typed (“{typed}”) was not "
+                               "entered: the row was removed while you were typing in it")
+                            .format(row=row + 1, column=header, typed=text))
+        super().rowsAboutToBeRemoved(parent, start, end)
 
     def dataChanged(self, top_left, bottom_right, roles=()) -> None:  # noqa: N802 - Qt's name
         """Cells changed or repainted. An editor typed into keeps its text through any
