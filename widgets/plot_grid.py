@@ -8,7 +8,7 @@ import pyqtgraph as pg
 from PySide6.QtGui import QFontMetrics
 
 __all__ = ["IntegerAxis", "TEXT_COLOUR", "axis_title_height", "end_label_room",
-           "make_end_labels_fit", "show_grid"]
+           "keep_axis_title_room", "make_end_labels_fit", "show_grid"]
 
 #: the plots' text (axis titles, tick labels, legends, titles): 10:1 on white. pyqtgraph's
 #: own grey (150, 150, 150) is 3:1, under WCAG's 4.5:1 for text (#31)
@@ -74,6 +74,38 @@ def axis_title_height(plot) -> int:
     else:  # not laid out in the widget yet
         around = item.getAxis("bottom").height() + 20
     return int(math.ceil(length + max(0.0, around))) + 2
+
+
+def keep_axis_title_room(panel, floor: int) -> None:
+    """``panel`` (a plot tab's widget holding one PlotWidget, or that PlotWidget) at least
+    ``floor`` px tall and as tall as its plot's y axis title needs
+    (:func:`axis_title_height`, with what the panel holds around the plot), followed as the
+    plot is laid out again (its legend moved above it, a title in another language). At
+    200 % on a 1280×720 screen beside the docked instrument panel the polygon's "AC vertical
+    − zero (\")" had 62 px of axis for its 131 px (day review 65). A panel of several plots
+    keeps its own heights (widgets/family_simulation.py)."""
+    from PySide6.QtCore import QTimer
+
+    plots = [panel] if isinstance(panel, pg.PlotWidget) else panel.findChildren(pg.PlotWidget)
+    if len(plots) != 1:
+        return
+    plot = plots[0]
+    pending = [False]
+
+    def keep() -> None:
+        pending[0] = False
+        around = 0 if plot is panel else max(0, panel.height() - plot.height())
+        want = max(int(floor), axis_title_height(plot) + around)
+        if panel.minimumHeight() != want:
+            panel.setMinimumHeight(want)
+
+    def later(*_) -> None:  # once the plot's layout is done, not inside it
+        if not pending[0]:
+            pending[0] = True
+            QTimer.singleShot(0, panel, keep)  # not after the panel is gone
+
+    plot.getPlotItem().getViewBox().sigResized.connect(later)
+    later()
 
 
 def end_label_room(axis) -> int:
