@@ -69,10 +69,9 @@ def axis_title_height(plot) -> int:
     if not length:
         return 0
     along = axis.geometry().height()
-    if 0 < along < plot.height():
-        around = plot.height() - along
-    else:  # not laid out in the widget yet
-        around = item.getAxis("bottom").height() + 20
+    # not laid out in the widget yet: the bottom axis and a margin
+    around = (plot.height() - along if 0 < along < plot.height()
+              else item.getAxis("bottom").height() + 20)
     return int(math.ceil(length + max(0.0, around))) + 2
 
 
