@@ -113,29 +113,55 @@ def _size_reader(words):
     return size
 
 
-# Qt's X11 platform needs these system libraries (Debian/Ubuntu package names); without
-# them Qt aborts with "could not load the Qt platform plugin xcb".
+# Qt's X11 platform needs these system libraries (Debian/Ubuntu package names): those the
+# xcb platform plugin (plugins/platforms/libqxcb.so) and its libQt6XcbQpa load
+# (``readelf -d``: NEEDED; tests/app/test_x11_libraries.py checks the installed plugin
+# against this list) and libEGL/fontconfig, which Qt's GUI module loads. Without one of them
+# Qt aborts with "could not load the Qt platform plugin xcb". (Before day review 65 the
+# xcb core, util, randr, shm, sync, xfixes, render, shape and xkb libraries, X11's, GL's and
+# GLib's were not named: a machine lacking one got Qt's abort, not the apt-get line.)
 X11_LIBRARIES = {"libxcb-cursor.so.0": "libxcb-cursor0", "libxcb-icccm.so.4": "libxcb-icccm4",
                  "libxcb-keysyms.so.1": "libxcb-keysyms1", "libxcb-image.so.0": "libxcb-image0",
                  "libxcb-render-util.so.0": "libxcb-render-util0",
-                 "libxkbcommon-x11.so.0": "libxkbcommon-x11-0", "libEGL.so.1": "libegl1",
-                 "libfontconfig.so.1": "libfontconfig1"}
+                 "libxcb-util.so.1": "libxcb-util1", "libxcb-randr.so.0": "libxcb-randr0",
+                 "libxcb-shm.so.0": "libxcb-shm0", "libxcb-sync.so.1": "libxcb-sync1",
+                 "libxcb-xfixes.so.0": "libxcb-xfixes0", "libxcb-render.so.0": "libxcb-render0",
+                 "libxcb-shape.so.0": "libxcb-shape0", "libxcb-xkb.so.1": "libxcb-xkb1",
+                 "libxcb.so.1": "libxcb1", "libX11-xcb.so.1": "libx11-xcb1",
+                 "libX11.so.6": "libx11-6", "libxkbcommon.so.0": "libxkbcommon0",
+                 "libxkbcommon-x11.so.0": "libxkbcommon-x11-0", "libGL.so.1": "libgl1",
+                 "libglib-2.0.so.0": "libglib2.0-0", "libgthread-2.0.so.0": "libglib2.0-0",
+                 "libEGL.so.1": "libegl1", "libfontconfig.so.1": "libfontconfig1"}
+
+
+def xcb_platform_chosen(environ=None) -> bool:
+    """Whether Qt will start the window on its X11 (xcb) platform: QT_QPA_PLATFORM's first
+    platform (``xcb``, ``xcb:option=…``, ``xcb;wayland``) when it is set, else X11 when
+    there is a display (DISPLAY) and no Wayland session (Qt 6 prefers Wayland there). Not
+    for ``offscreen``, ``wayland``, ``vnc`` and the others."""
+    env = os.environ if environ is None else environ
+    asked = env.get("QT_QPA_PLATFORM", "").strip()
+    if asked:
+        return asked.split(";")[0].split(":")[0].strip().lower() == "xcb"
+    wayland = bool(env.get("WAYLAND_DISPLAY")) or env.get("XDG_SESSION_TYPE") == "wayland"
+    return bool(env.get("DISPLAY")) and not wayland
 
 
 def missing_x11_packages() -> list[str]:
-    """The Debian packages Qt's X11 platform needs and this machine lacks (Linux with a
-    display only; empty elsewhere)."""
+    """The Debian packages Qt's X11 platform needs and this machine lacks, each once, in the
+    order of :data:`X11_LIBRARIES` (Linux, when the window will start on X11 only: empty
+    elsewhere and offscreen)."""
     import ctypes
 
-    if not sys.platform.startswith("linux") or not os.environ.get("DISPLAY") or \
-            os.environ.get("QT_QPA_PLATFORM", "xcb") != "xcb":
+    if not sys.platform.startswith("linux") or not xcb_platform_chosen():
         return []
-    missing = []
+    missing: list[str] = []
     for soname, package in X11_LIBRARIES.items():
         try:
             ctypes.CDLL(soname)
         except OSError:
-            missing.append(package)
+            if package not in missing:
+                missing.append(package)
     return missing
 
 

@@ -7,7 +7,7 @@ from collections.abc import Callable
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtWidgets import (
     QBoxLayout,
     QComboBox,
@@ -20,7 +20,7 @@ from PySide6.QtWidgets import (
 
 from widgets.i18n import live, on_language_change, tr
 from widgets.legend_placement import place_legend
-from widgets.plot_grid import show_grid
+from widgets.plot_grid import axis_title_height, show_grid
 from widgets.settings_form import SettingsForm
 
 # the swept curves' colours, told apart at a glance: the first five (a default sweep)
@@ -77,6 +77,9 @@ class FamilySimulation(QWidget):
             show_grid(plot)
             plot.getAxis("left").enableAutoSIPrefix(False)
             plot.addLegend(offset=(-10, 10))
+            # the room around a plot's y axis changes with its legend's place (above the
+            # view when cramped): its least height follows
+            plot.getPlotItem().getViewBox().sigResized.connect(self._keep_height_later)
         self.top_curves: list[pg.PlotDataItem] = []
         self.bottom_curves: list[pg.PlotDataItem] = []
 
@@ -86,9 +89,35 @@ class FamilySimulation(QWidget):
         self.bottom_plot.setLabel("left", bottom_label)
         for plot in (self.top_plot, self.bottom_plot):
             plot.setLabel("bottom", x_label)
+        if hasattr(self, "_plots_layout"):
+            self._keep_height()  # a title in another language: another length
+
+    def _keep_height_later(self, *_) -> None:
+        """:meth:`_keep_height` once the plots' layout is done (not inside it)."""
+        if not getattr(self, "_keep_pending", False) and hasattr(self, "_plots_layout"):
+            self._keep_pending = True
+            QTimer.singleShot(0, self, self._keep_height_now)  # not after it is gone
+
+    def _keep_height_now(self) -> None:
+        self._keep_pending = False
+        self._keep_height()
+
+    def _plots_least_height(self) -> int:
+        """The plots' least height: each as tall as its y axis' title needs to be shown
+        whole (widgets/plot_grid.axis_title_height), the two with the space between them.
+        Beside the docked instrument panel at 1280×720 each plot had 138 px, its y axis
+        68 px, and the polygon's titles "ε_x induced error (\")" (126 px) and
+        "ε_y vertical (\")" (91 px) were cut at both ends (day review 65)."""
+        least = 0
+        for plot in (self.top_plot, self.bottom_plot):
+            need = axis_title_height(plot)
+            if plot.minimumHeight() != need:
+                plot.setMinimumHeight(need)
+            least += need
+        return least + max(0, self._plots_layout.spacing())
 
     def _layout(self) -> None:
-        plots = QVBoxLayout()
+        plots = self._plots_layout = QVBoxLayout()
         plots.addWidget(self.top_plot)
         plots.addWidget(self.bottom_plot)
         self._fit_form()
@@ -170,11 +199,15 @@ class FamilySimulation(QWidget):
         self._keep_height()
 
     def _keep_height(self) -> None:
-        plots = getattr(self, "_plots_height", 0)
+        plots = max(getattr(self, "_plots_height", 0), self._plots_least_height())
         above = 0
         if self.body.direction() == QBoxLayout.Direction.TopToBottom:
             above = self.form.sizeHint().height() + max(0, self.body.spacing())
-        super().setMinimumHeight(plots + above)
+        # and the layout's margins: without them the plots had 18 px less than their least
+        # height once they kept their titles whole (the lower one's legend over the upper
+        # one's x axis title)
+        margins = self.body.contentsMargins()
+        super().setMinimumHeight(plots + above + margins.top() + margins.bottom())
 
     def swept_values(self) -> list[float]:
         out = []
@@ -221,3 +254,4 @@ class FamilySimulation(QWidget):
             # in a free corner, or above the plot when it is cramped (at 1280×720 the
             # legend covered the curves and lost its last entry)
             place_legend(item, item.legend)
+        self._keep_height()  # the legends' rows above a plot take room from its y axis

@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+import math
+
 import pyqtgraph as pg
 from PySide6.QtGui import QFontMetrics
 
-__all__ = ["IntegerAxis", "TEXT_COLOUR", "end_label_room", "make_end_labels_fit", "show_grid"]
+__all__ = ["IntegerAxis", "TEXT_COLOUR", "axis_title_height", "end_label_room",
+           "keep_axis_title_room", "make_end_labels_fit", "show_grid"]
 
 #: the plots' text (axis titles, tick labels, legends, titles): 10:1 on white. pyqtgraph's
 #: own grey (150, 150, 150) is 3:1, under WCAG's 4.5:1 for text (#31)
@@ -42,6 +45,66 @@ def show_grid(plot, x: bool = True, y: bool = True) -> None:
 
 #: the widest tick label an x axis makes room for at its ends: an angle's "-330.5"
 END_LABEL = "-000.00"
+
+
+def axis_title_length(axis) -> int:
+    """The length (px) of ``axis``' title along the axis (its text, the text item's margins
+    aside); 0 when it shows none."""
+    if not axis.isVisible() or not axis.labelText or not axis.label.isVisible():
+        return 0
+    label = axis.label
+    return math.ceil(label.boundingRect().width() - 2 * label.document().documentMargin())
+
+
+def axis_title_height(plot) -> int:
+    """The least height (px) of ``plot`` (a PlotWidget) that shows its left axis' title whole:
+    the title's length, plus what the plot holds above and below that axis (the bottom axis
+    with its title, a legend placed above the view, margins) as laid out now — before its
+    first layout, the bottom axis' height and 20 px. The title is drawn centred on the axis:
+    on an axis shorter than it, both of its ends were cut ("…uced error (")" in the polygon's
+    What-if beside the docked instrument panel at 1280×720, day review 65)."""
+    item = plot.getPlotItem()
+    axis = item.getAxis("left")
+    length = axis_title_length(axis)
+    if not length:
+        return 0
+    along = axis.geometry().height()
+    # not laid out in the widget yet: the bottom axis and a margin
+    around = (plot.height() - along if 0 < along < plot.height()
+              else item.getAxis("bottom").height() + 20)
+    return int(math.ceil(length + max(0.0, around))) + 2
+
+
+def keep_axis_title_room(panel, floor: int) -> None:
+    """``panel`` (a plot tab's widget holding one PlotWidget, or that PlotWidget) at least
+    ``floor`` px tall and as tall as its plot's y axis title needs
+    (:func:`axis_title_height`, with what the panel holds around the plot), followed as the
+    plot is laid out again (its legend moved above it, a title in another language). At
+    200 % on a 1280×720 screen beside the docked instrument panel the polygon's "AC vertical
+    − zero (\")" had 62 px of axis for its 131 px (day review 65). A panel of several plots
+    keeps its own heights (widgets/family_simulation.py)."""
+    from PySide6.QtCore import QTimer
+
+    plots = [panel] if isinstance(panel, pg.PlotWidget) else panel.findChildren(pg.PlotWidget)
+    if len(plots) != 1:
+        return
+    plot = plots[0]
+    pending = [False]
+
+    def keep() -> None:
+        pending[0] = False
+        around = 0 if plot is panel else max(0, panel.height() - plot.height())
+        want = max(int(floor), axis_title_height(plot) + around)
+        if panel.minimumHeight() != want:
+            panel.setMinimumHeight(want)
+
+    def later(*_) -> None:  # once the plot's layout is done, not inside it
+        if not pending[0]:
+            pending[0] = True
+            QTimer.singleShot(0, panel, keep)  # not after the panel is gone
+
+    plot.getPlotItem().getViewBox().sigResized.connect(later)
+    later()
 
 
 def end_label_room(axis) -> int:

@@ -34,6 +34,7 @@ from PySide6.QtWidgets import (
 from models.readings.tabular_import import header_signature
 from widgets.column_mapping_dialog import ColumnMappingDialog
 from widgets.i18n import Tr, declared, live, on_language_change, tr
+from widgets.plot_grid import keep_axis_title_room
 from widgets.plot_image import ImageWrite, add_image_actions, plot_panels, write_png
 from widgets.readings_table_view import ReadingsTableView
 from widgets.settings_form import SettingsForm
@@ -415,6 +416,8 @@ class WorkbenchView(QWidget):
     def add_plot_tab(self, widget: QWidget, title: Tr) -> None:
         panels = max(1, plot_panels(widget))
         widget.setMinimumHeight(self.PANEL_MIN_HEIGHT * panels)
+        # and, one plot's panel, as tall as its y axis' title needs (shown whole)
+        keep_axis_title_room(widget, self.PANEL_MIN_HEIGHT * panels)
         scroll = QScrollArea()
         scroll.setWidgetResizable(True)
         scroll.setFrameShape(QFrame.Shape.NoFrame)

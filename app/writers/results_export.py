@@ -6,8 +6,9 @@ plus *Parameters*, *Uncertainty budget* and *Certificate* sheets. Angles are
 written in the unit the user chose to read them in (arcseconds unless told),
 each header naming it.
 
-Numbers are written as numbers; on the *Results* sheet each point's figures three decimals
-finer than the certificate prints them (models/certificate/export_resolution.py). The
+Numbers are written as numbers; in the CSV and on the *Results* sheet each point's figures
+three decimals finer than the certificate prints them, the same figures in both
+(models/certificate/export_resolution.py). The
 *Parameters*, *Statistics* and *Uncertainty budget* tables are printed text on the
 certificate ("+3.77627 V", "-0.12\" … +0.34\""); on the sheets each figure becomes a
 number cell, its unit goes to the column's header (or, where the rows' units differ, to a
@@ -181,16 +182,32 @@ def _point_columns(document: CertificateDocument,
     return out
 
 
+def _figure_text(value: float) -> str:
+    """A figure rounded to the results' resolution as the CSV writes it: its shortest
+    digits (the number the XLSX cell holds), in positional notation ("0.00003", not
+    "3e-05"; "12", not "12.0"); "" when it is not finite."""
+    if not math.isfinite(value):
+        return ""
+    text = repr(value)  # the shortest digits; positional unless very small or large
+    if "e" in text:
+        return np.format_float_positional(value, unique=True, trim="-")
+    return text[:-2] if text.endswith(".0") else text
+
+
 def results_csv_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC) -> bytes:
+    """The point columns as the XLSX *Results* sheet holds them (day review 65: the CSV
+    wrote every figure to ten significant digits, ``%.10g``, so a correction of
+    −3.456836534665442e-05″ where +0.00″ is printed was −3.456836535e-05, while the sheet
+    wrote −0.00003): the errors' columns three decimals beyond those the certificate
+    prints them to, the others (a face's number, a nominal angle, a reading) to ten
+    significant digits (models/certificate/export_resolution.py)."""
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\r\n")
-    point_columns = _point_columns(document, unit)
+    point_columns = rounded_point_columns(_point_columns(document, unit))
     writer.writerow([neutralise(h) for h, _ in point_columns])
-    columns = [values for _, values in point_columns]
+    columns = [[_figure_text(v) for v in values.tolist()] for _, values in point_columns]
     if columns:
-        text = np.char.mod("%.10g", np.column_stack(columns))
-        text[~np.isfinite(np.column_stack(columns))] = ""
-        writer.writerows(text.tolist())
+        writer.writerows(zip(*columns, strict=True))
     return ("\ufeff" + out.getvalue()).encode("utf-8")
 
 

@@ -26,6 +26,7 @@ the later take is the row's.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -33,7 +34,7 @@ from typing import Any
 from models.capture.take_cells import cell_text, column_is_dms, in_turn_of
 from models.capture.take_rows import deleted_at, superseded_by
 from models.messages import QT_TR_NOOP, Message, message
-from models.readings.angles import parse_angle_deg
+from models.readings.angles import format_dms, parse_angle_deg
 
 __all__ = ["EditedReading", "captured_values", "edited_after_capture"]
 
@@ -170,15 +171,33 @@ def _as_captured(cell: float | None, forms: tuple[float, ...], step: float) -> b
     return any(_same(cell, form, step) for form in forms)
 
 
+def _seconds_decimals(texts: Sequence[str]) -> int:
+    """The most decimals of seconds a column's D°M′S″ cells are written with (1: none
+    written so)."""
+    decimals = [len(m.group(1)) for t in texts
+                if column_is_dms([t]) and (m := _SECONDS.search(t))]
+    return max(decimals, default=1)
+
+
+#: the decimals of a D°M′S″ cell's seconds: 12°34′56.789″, 12 34 56.789
+_SECONDS = re.compile(r"\d[.,](\d+)\s*[\"″]?\s*$")
+
+
 def _shown(cell: float | None, forms: tuple[float, ...], now: str = "",
-           step_deg: float = 0.0) -> str:
+           step_deg: float = 0.0, column: Sequence[str] = ()) -> str:
     """The captured reading as said beside an edit: in the form nearest the cell's; as
     D°M′S″ to the step the take wrote it to where the cell ``now`` is D°M′S″ (an angle in
     degrees, written to a step), so that it reads beside the cell ("30°00′00.4″ →
-    30°00′01.4″", not "30.000123398 → 30°00′01.4″")."""
+    30°00′01.4″", not "30.000123398 → 30°00′01.4″"). A cell emptied (``now`` "") is said
+    as its ``column`` (the column's cells now) writes it: D°M′S″ where the column is kept so,
+    to the step the take wrote it to, or (a take that recorded none) to the decimals of the
+    column's seconds (day review 65: "cleared after capture: 90.00012" of a D°M′S″ cell)."""
     form = forms[0] if cell is None else min(forms, key=lambda f: abs(cell - f))
-    if step_deg > 0.0 and column_is_dms([now]):
+    written = [now] if now.strip() else list(column)
+    if step_deg > 0.0 and column_is_dms(written):
         return cell_text(form, "deg", step_deg * 3600.0, dms=True)
+    if not now.strip() and column_is_dms(written):
+        return format_dms(form, _seconds_decimals(written))
     return f"{form:.12g}"
 
 
@@ -318,7 +337,14 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                 if _as_captured(held, forms, step):
                     edited.pop((row, key), None)  # taken again later: as captured
                 else:
-                    captured = _shown(held, forms, now, step if in_degrees else 0.0)
+                    # a cell emptied is said as its column writes it (D°M′S″ or decimal)
+                    # (its rows about this one, as a take reads the column's form)
+                    near_rows = range(max(0, row - 50), min(len(rows), row + 50))
+                    written = [cells_r[column] for cells_r in (rows[r] for r in near_rows)
+                               if column < len(cells_r)] \
+                        if in_degrees and not now.strip() else []
+                    captured = _shown(held, forms, now, step if in_degrees else 0.0,
+                                      written)
                     edited[(row, key)] = EditedReading(row, key, captured,
                                                        now.strip(),
                                                        "edited" if now.strip() else "cleared")

@@ -1,4 +1,5 @@
-"""The resolution the XLSX results sheet writes each point's figures to.
+"""The resolution the results XLSX sheet and the results CSV write each point's figures to
+(the same figures in both, since day review 65: the CSV wrote ``%.10g``).
 
 The certificate prints a point's figures to the decimal of its U (two significant
 digits, GUM 7.2.6; a point whose U is zero or not stated to the table's reference
@@ -8,7 +9,8 @@ there, and three more, but no binary noise (a correction of −3.456836534665442
 where the certificate prints +0.00″ is written −0.00003). The columns in the errors'
 unit (those named with the unit of an ``expanded_uncertainty_*`` column) are rounded so;
 the others (a face's number, a nominal angle in degrees, a reading) to
-:data:`OTHER_SIGNIFICANT` significant digits, as the CSV writes every figure.
+:data:`OTHER_SIGNIFICANT` significant digits (a reading typed with no more is written as
+typed).
 
 No printed figure is changed: rounded to the printed decimal (half up, half to even, as a
 spreadsheet's ROUND or Python does), the sheet's figure is the certificate's. A figure
@@ -18,6 +20,7 @@ decimals again (−0.5949996), until it is not."""
 
 from __future__ import annotations
 
+import math
 from decimal import Decimal
 
 import numpy as np
@@ -30,7 +33,7 @@ __all__ = ["EXTRA_DECIMALS", "OTHER_SIGNIFICANT", "UNCERTAINTY_PREFIX", "printed
 
 #: decimals the sheet keeps beyond those the certificate prints a point's figures to
 EXTRA_DECIMALS = 3
-#: significant digits of a column not in the errors' unit (the CSV's ``%.10g``)
+#: significant digits of a column not in the errors' unit (as the CSV's ``%.10g`` was)
 OTHER_SIGNIFICANT = 10
 #: how an expanded uncertainty's column is named (``expanded_uncertainty_arcsec``, …)
 UNCERTAINTY_PREFIX = "expanded_uncertainty"
@@ -44,17 +47,21 @@ def printed_decimals(uncertainties: list[np.ndarray], points: int
                      ) -> tuple[np.ndarray, np.ndarray]:
     """Each point's printed decimals, coarsest and finest: those its U columns print it to
     (a U of zero or not finite: its column's reference decimal; no U column: two)."""
-    coarsest = np.full(points, 99, dtype=int)
-    finest = np.full(points, -1, dtype=int)
+    coarsest = [99] * points
+    finest = [-1] * points
     for u in uncertainties:
         reference = table_decimals(u)
-        for k, value in enumerate(np.asarray(u, dtype=float)):
-            d = significant_decimals(float(value))
-            d = reference if d is None else d
+        # a U repeats over the points (one per range, or one for all): each worked out once
+        said: dict[float, int] = {}
+        for k, value in enumerate(np.asarray(u, dtype=float).tolist()):
+            d = said.get(value)
+            if d is None:
+                d = significant_decimals(value)
+                d = said[value] = reference if d is None else d
             coarsest[k], finest[k] = min(coarsest[k], d), max(finest[k], d)
     if not uncertainties:
-        coarsest[:] = finest[:] = table_decimals(np.empty(0))
-    return coarsest, finest
+        coarsest = finest = [table_decimals(np.empty(0))] * points
+    return np.array(coarsest, dtype=int), np.array(finest, dtype=int)
 
 
 def _unambiguous(value: float, printed: tuple[int, int]) -> float:
@@ -68,7 +75,10 @@ def _unambiguous(value: float, printed: tuple[int, int]) -> float:
         rounded = round(value, decimals)
         if decimals >= 15 or rounded == value:
             return rounded
-        digits = Decimal(repr(rounded)).normalize().as_tuple()
+        text = repr(rounded)
+        if "e" not in text and not text.endswith("5"):
+            return rounded  # its last digit is not a 5: half-way between no two steps
+        digits = Decimal(text).normalize().as_tuple()
         half_way = (bool(digits.digits) and digits.digits[-1] == 5
                     and coarsest + 1 <= -int(digits.exponent) <= finest + 1)
         if not half_way:
@@ -100,9 +110,12 @@ def rounded_point_columns(columns: list[tuple[str, np.ndarray]]
     for name, values in columns:
         values = np.asarray(values, dtype=float)
         if _unit_of(name) in units:
-            rounded = np.array([_unambiguous(float(v), (int(lo), int(hi))) if np.isfinite(v)
-                                else v for v, lo, hi in zip(values, coarsest, finest,
-                                                            strict=True)], dtype=float)
+            # as Python numbers: a numpy scalar's test and conversion cost more than the
+            # rounding (the CSV of a million points)
+            rounded = np.array([_unambiguous(v, (lo, hi)) if math.isfinite(v) else v
+                                for v, lo, hi in zip(values.tolist(), coarsest.tolist(),
+                                                     finest.tolist(), strict=True)],
+                               dtype=float)
         else:
             rounded = _significant(values, OTHER_SIGNIFICANT)
         out.append((name, rounded + 0.0))

@@ -112,7 +112,8 @@ def test_a_readouts_reading_in_a_dms_column_is_no_edit_until_the_cell_changes(
     # cleared: said
     _clear(bench, 3, [column])
     assert bench.sheet.text(3, keys.index(column)) == ""
-    assert _said(window, bench) == [CLEARED.format(READING)]
+    # said as the column writes it (was "cleared after capture: 90.00012")
+    assert _said(window, bench) == [CLEARED.format(CELL)]
     window.capture_panel.close()
 
 
@@ -152,7 +153,8 @@ def test_a_theodolites_dms_cells_hold_its_reading_to_the_step_they_show(window, 
     assert _said(window, bench) == [] and model.edited_cells == {}
     _clear(bench, 3, ["elevation_deg"])
     (said,) = _said(window, bench)
-    assert said.startswith("reading of row 4 cleared after capture: 2.3457")
+    # in D°M′S″ to the 0.1″ the take wrote, as the column has it (was "2.3457…")
+    assert said == "reading of row 4 cleared after capture: 2°20'44.5\""
     assert set(model.edited_cells) == {(3, keys.index("elevation_deg"))}
     window.capture_panel.close()
 
@@ -252,5 +254,6 @@ def test_a_readouts_cell_edited_or_cleared_is_marked_in_the_table(window, qtbot,
     _clear(bench, 3, [column])
     qtbot.waitUntil(lambda: set(model.edited_cells) == {(3, index.column())}, timeout=3000)
     assert model.data(index, Qt.ItemDataRole.BackgroundRole) is EDITED_BRUSH
-    assert CLEARED.format(READING) in model.data(index, Qt.ItemDataRole.ToolTipRole)
+    # the tooltip says the reading in D°M′S″, as the column has it (was "90.00012")
+    assert CLEARED.format(CELL) in model.data(index, Qt.ItemDataRole.ToolTipRole)
     window.capture_panel.close()

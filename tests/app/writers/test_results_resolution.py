@@ -1,6 +1,7 @@
-"""The XLSX *Results* sheet writes each point's figures three decimals finer than the
-certificate prints them, not their binary noise (a correction of -3.456836534665442e-05″
-where +0.00″ is printed), and never changes a printed figure."""
+"""The XLSX *Results* sheet and the results CSV write each point's figures three decimals
+finer than the certificate prints them, not their binary noise (a correction of
+-3.456836534665442e-05″ where +0.00″ is printed), and never change a printed figure; the CSV
+holds the sheet's figures (day review 65: it wrote ten significant digits, -3.456836535e-05)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ import numpy as np
 import pytest
 from openpyxl import load_workbook
 
-from app.writers.results_export import results_xlsx_bytes
+from app.writers.results_export import results_csv_bytes, results_xlsx_bytes
 from models.certificate.document import table_decimals
 from models.uncertainty.rounding import uncertainty_decimals
 from tests.app.writers.test_certificate_export import _analysed, _meta
@@ -88,3 +89,42 @@ def test_the_sheet_rounds_to_every_printed_figure(key):
                 assert f"{again:+.{d}f}" in (printed, printed.replace("-", "+")), (name, k)
             assert abs(row[at] - columns[name][k]) <= 0.5 * 10.0 ** -(d + EXTRA_DECIMALS) + 1e-12
     assert np.isfinite([r[header.index("expanded_uncertainty_arcsec")] for r in rows]).all()
+
+
+def _noisy(key: str):
+    """The workbench's certificate, a correction of it the float noise of a reference-near
+    one (the certificate prints +0.00″ or +0.0″ there)."""
+    kind, result = _analysed(key)
+    document = kind.certificate_document(result, _meta(key))
+    noisy = dict(document.point_columns)["correction_arcsec"].copy()
+    noisy[1] = -3.456836534665442e-05
+    return replace(document, point_columns=tuple(
+        (name, noisy if name == "correction_arcsec" else values)
+        for name, values in document.point_columns))
+
+
+@pytest.mark.parametrize("key", ["polygon", "theodolite"])
+def test_the_csv_holds_the_sheets_figures(key):
+    """Cell for cell, the CSV's figure is the number the *Results* sheet holds, written in
+    its shortest digits and never in scientific notation: the noisy correction is -0.00003
+    (or -0.00003457, half-way guarded) in both, not -3.456836535e-05; a face's number 1,
+    not 1.0; the readings' columns (a nominal or θ in degrees) to ten significant digits,
+    as typed when they have no more."""
+    document = _noisy(key)
+    header, rows = _sheet(document)
+    text = results_csv_bytes(document).decode("utf-8-sig").splitlines()
+    assert text[0].split(",") == header
+    csv_rows = [line.split(",") for line in text[1:]]
+    assert len(csv_rows) == len(rows)
+    for row, figures in zip(rows, csv_rows, strict=True):
+        for name, value, figure in zip(header, row, figures, strict=True):
+            assert "e" not in figure.lower(), (name, figure)
+            assert (figure == "") if value is None else (float(figure) == value), (name, figure)
+    at = header.index("correction_arcsec")
+    assert csv_rows[1][at] in ("-0.00003", "-0.000035", "0")
+    # a reading as typed (θ), a nominal angle: to ten significant digits, as before
+    name = "nominal_deg" if key == "polygon" else "theta_deg"
+    column = dict(document.point_columns)[name]
+    assert [r[header.index(name)] for r in csv_rows] == [f"{v:.10g}" for v in column]
+    if key == "polygon":
+        assert [r[0] for r in csv_rows[:3]] == ["1", "2", "3"]  # a face's number

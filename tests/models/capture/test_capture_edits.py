@@ -423,6 +423,38 @@ def test_a_readouts_cell_recorded_with_its_take_is_checked_as_any_captured_cell(
     assert said([[*row[:1], "", "90.00012", *row[3:]]])[0][:2] == ("encoder_deg", "cleared")
 
 
+def test_a_cleared_dms_cell_is_said_as_its_column_writes_it():
+    """A readout's cell in a column kept in D°M′S″, cleared: the captured reading is said in
+    D°M′S″ to the step the take wrote it to, as the cell was — it was said in decimal degrees
+    ("cleared after capture: 90.00012" beside a column of 30°00'00.036\" cells, in the
+    table's tooltip and on the certificate). A take that recorded no step (a file from
+    before #41) is said to the decimals of the column's seconds; in a decimal column, or a
+    column with no other cell to say how it is written, in decimal degrees as before."""
+    kind = KINDS["polygon"]
+    keys = [c.key for c in kind.columns]
+    readout = session_json("readout", "tcp://127.0.0.1:47002", 9600, "t",
+                           [(0.0, b"+90.00012 deg", True)], [[1, 0, 0]])
+    readout["steps"] = [0.001 / 3600]
+    readout["columns"] = ["encoder_deg"]
+
+    def said(encoder: list[str], session=readout):
+        rows = [[str(i + 1), text, "0", "0", "0", "1", "+"] for i, text in enumerate(encoder)]
+        assert len(rows[0]) == len(keys)
+        return [str(e.text()) for e in readings_edited_after_capture(kind, {}, rows, [session])]
+
+    assert said(["0°00'00.000\"", "90°00'00.432\""]) == []
+    assert said(["0°00'00.000\"", ""]) == [
+        "reading of row 2 cleared after capture: 90°00'00.432\""]
+    # no step recorded: to the column's decimals of seconds
+    before = {k: v for k, v in readout.items() if k != "steps"}
+    assert said(["0°00'00.00\"", ""], before) == [
+        "reading of row 2 cleared after capture: 90°00'00.43\""]
+    assert said(["0 00 00.0", ""], before) == [
+        "reading of row 2 cleared after capture: 90°00'00.4\""]
+    # a decimal column: in decimal degrees
+    assert said(["0.00000", ""]) == ["reading of row 2 cleared after capture: 90.00012"]
+
+
 def test_a_sessions_columns_must_be_one_key_a_take():
     from models.capture.raw_record import raw_sessions_from_json
 
