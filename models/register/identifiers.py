@@ -41,7 +41,8 @@ a certificate is uniquely identified; #61 and #62 reviews):
    compared as printed, :func:`as_printed`; rev63 F2).
    - A certificate number's separators (any run of punctuation, symbols and spaces: "-",
      "·", ",", "#", "/", ".") are one separator, none at either end ("AB·2026·0001" and
-     "AB-2026-0001." are AB-2026-0001; the amendment form "-A<n>" is read from this key).
+     "AB-2026-0001." are AB-2026-0001; the amendment form "-A<n>" is read from these keys,
+     a separator or none between "A" and n: :func:`reads_as_amendment`).
    - A serial number's separators are dropped altogether before its zeros
      ("RX260815" is "RX-26-0815"; "LRA#0815" is "LRA-0815").
 4. **No serial**: an empty serial, one of separators only ("-", "—") and the words labs
@@ -61,8 +62,8 @@ from models.register._identifier_tables import CONFUSABLES, DEFAULT_IGNORABLE
 
 __all__ = ["IdentifierError", "as_printed", "folded_identifier_key", "folded_serial_key",
            "identifier_key", "identifier_keys", "no_serial", "normalise_identifier",
-           "refuse_unprinted", "same_identifier", "same_name", "same_serial", "serial_key",
-           "serial_keys"]
+           "reads_as_amendment", "refuse_unprinted", "same_identifier", "same_name",
+           "same_serial", "serial_key", "serial_keys"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
 _DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
@@ -313,6 +314,22 @@ def same_serial(one: str, other: str) -> bool:
     """Whether two serial numbers are one item's: one of their keys (:func:`serial_keys`)
     is equal; never a chain of two keys (rev63 F10: "SN-L5" and "SN-I5" are two items)."""
     return any(a == b for a, b in zip(serial_keys(one), serial_keys(other), strict=True))
+
+
+#: an amendment's number as a key gives it: a number, "-A" (any case), a separator or none,
+#: a count (the register numbers amendments "<number>-A<n>": store._root)
+_AMENDMENT_KEY = re.compile(r".+-a-?[0-9]+", re.IGNORECASE)
+
+
+def reads_as_amendment(number: str) -> bool:
+    """Whether certificate number ``number`` reads as an amendment's number, "<a number>-A<n>",
+    by any key it is compared by (:func:`identifier_keys`): its separators, case, look-alikes
+    and zeros aside, a separator or none between "A" and the count ("AB-2026-0001-A 1",
+    "AB-2026-0001-a-1", "AB-2026-0001-А1" with a Cyrillic "А", "AB-2026-0001－A1" with a
+    full-width dash, "AB-2026-0001-Al"; stop 63: a new certificate so numbered read to a
+    customer as an amendment of AB-2026-0001 that never happened). The register's own
+    amendments are numbered so; any other number of that form is refused."""
+    return any(_AMENDMENT_KEY.fullmatch(key) for key in (number, *identifier_keys(number)))
 
 
 def as_printed(text: str) -> str:

@@ -665,8 +665,6 @@ class Register:
 
     def _plan(self, conn, meta: CertificateMetadata, supersedes: str, replacement: bool,
               issue_date: dt.date, now: dt.datetime) -> _Plan:
-        from models.register.identifiers import folded_identifier_key, identifier_key
-
         sa, certificates = self._sa, self._schema.CERTIFICATES
         records, head = self._state(conn)
         last = conn.execute(sa.select(certificates.c.issued_at, certificates.c.number)
@@ -690,6 +688,7 @@ class Register:
                 revision = "replacement"
                 counter, number, before, value = self._next_value(conn, meta.number_scheme,
                                                                   issue_date)
+                _refuse_amendment_form(number, meta.number_scheme)
             else:
                 n = _amendment_count(conn, self, original) + 1
                 while self._taken(conn, f"{_root(original)}-A{n}"):  # typed in older registers
@@ -697,15 +696,12 @@ class Register:
                 revision, number = f"amendment {n}", f"{_root(original)}-A{n}"
         elif meta.certificate_number:
             number = meta.certificate_number
-            if any(_AMENDMENT_FORM.search(key) for key in (
-                    number, identifier_key(number), folded_identifier_key(number))):
-                raise RegisterError(message(QT_TR_NOOP(
-                    "certificate number {number}: numbers ending -A and a number are kept for "
-                    "amendments, which the register numbers itself"), number=number))
+            _refuse_amendment_form(number)
             self._check_free(conn, number)
         else:
             counter, number, before, value = self._next_value(conn, meta.number_scheme,
                                                               issue_date)
+            _refuse_amendment_form(number, meta.number_scheme)
         return _Plan(number, records + 1, head, counter, before, value, original, revision)
 
     def _unchanged(self, conn, plan: _Plan) -> bool:
@@ -1882,7 +1878,28 @@ def _root(record: CertificateRecord) -> str:
         else record.number
 
 
-_AMENDMENT_FORM = re.compile(r"-A\d+$", re.IGNORECASE)
+def _refuse_amendment_form(number: str, scheme: str = "") -> None:
+    """RegisterError when ``number``, typed or (``scheme``) allocated by a number scheme, for
+    an original or a replacement, reads as an amendment's number by any key the commit's
+    check compares by (reads_as_amendment: "AB-2026-0001-A 1", "-a-1", a Cyrillic "А", a
+    full-width dash; stop 63): a customer would read it as an amendment of a certificate
+    that was never amended. The register's amendments are numbered so only by Amend…."""
+    from models.register.identifiers import reads_as_amendment
+
+    if not reads_as_amendment(number):
+        return
+    if scheme:
+        raise RegisterError(message(QT_TR_NOOP(
+            "the number scheme '{scheme}' gives {number}, which reads as an amendment's "
+            "number (a number, then -A and a count: AB-2026-0001-A1 is the first amendment of "
+            "AB-2026-0001): numbers of that form are kept for amendments, which the register "
+            "numbers itself; change the scheme"), scheme=scheme, number=number))
+    raise RegisterError(message(QT_TR_NOOP(
+        "certificate number {number} reads as an amendment's number (a number, then -A and a "
+        "count, whatever the separators, case or look-alike letters: AB-2026-0001-A1 is the "
+        "first amendment of AB-2026-0001): numbers of that form are kept for amendments, which "
+        "the register numbers itself when a certificate is amended; type another number, or "
+        "leave it empty and the register allocates the next"), number=number))
 
 
 def _same_item(description: str, manufacturer: str, meta: CertificateMetadata) -> bool:
