@@ -920,7 +920,10 @@ class Register:
                           ) -> tuple[str, ...]:
         """The current certificates (issued, not superseded or withdrawn) of ``workbench``
         reporting the item and date of calibration of ``meta``: a serial number that prints
-        alike or differs by case, separators aside (same_serial). Where there is none
+        alike or differs by case, separators aside (same_serial), of a manufacturer that
+        does too (same_identifier; a record or ``meta`` naming none is any: a serial is
+        unique only within its maker, so Acme's "001" and Zeta's "001" are two items, as in
+        :meth:`history`; stop 63: compared by the serial alone). Where there is none
         (no_serial: empty, "-", "n/a" …), an item of no serial whose description and
         manufacturer print alike (same_identifier; #62 review: "rotary table" was another
         item than "Rotary table", and a serial "-" was every item without one)."""
@@ -936,7 +939,8 @@ class Register:
                          if no_serial(row.item_serial) and _same_item(
                              row.item_description, row.item_manufacturer, meta))
         return tuple(row.number for row in conn.execute(query.order_by(c.id))
-                     if same_serial(row.item_serial, meta.item_serial))
+                     if same_serial(row.item_serial, meta.item_serial)
+                     and _same_maker(row.item_manufacturer, meta.item_manufacturer))
 
     def _corrections(self, conn, original: CertificateRecord, workbench: str,
                      meta: CertificateMetadata, confirmed: bool) -> tuple[Any, ...]:
@@ -981,8 +985,9 @@ class Register:
         # and another customer's name, unasked and unsaid); compared as printed, spaces
         # collapsed. A changed description of an item with a serial is said, not asked.
         owned = []
-        if not unnamed and _printed(original.item_manufacturer) \
-                != _printed(meta.item_manufacturer):
+        maker_changed = not unnamed and _printed(original.item_manufacturer) \
+            != _printed(meta.item_manufacturer)
+        if maker_changed:
             owned.append(message(QT_TR_NOOP(
                 "manufacturer corrected from {old} (on {number}) to {new}"),
                 old=_printed(original.item_manufacturer) or "—", number=original.number,
@@ -1035,7 +1040,11 @@ class Register:
                 number=original.number, serial=original.item_serial or "—",
                 date=original.calibration_date or "—", new_serial=meta.item_serial or "—",
                 new_date=meta.calibration_date or "—"))
-        identity, changes = bool(changes), [*changes, *owned]
+        # the maker is the item's as the serial is (a serial is unique only within its
+        # maker, and the one-calibration check compares both): a corrected maker is a
+        # corrected item too (stop 65: Zeta's "001" amended to Acme's maker made a second
+        # current certificate of Acme's "001" calibrated that day)
+        identity, changes = bool(changes) or maker_changed, [*changes, *owned]
         if refused is not None:
             raise NotTheSameCalibration(separated([refused, also], " "), tuple(changes))
         # the item or the date corrected: never onto another current certificate's
