@@ -315,6 +315,9 @@ class Register:
         self.url = _normalise_url(url)
         self.is_sqlite = self.url.startswith("sqlite")
         self.read_only = False
+        #: a read-only register at schema version 6, read without migrating: its intervals
+        #: are per serial (every maker's item's)
+        self._intervals_per_serial = False
         self.timezone = lab_timezone(timezone)
         self._sqlite_path = ""
         try:
@@ -420,6 +423,10 @@ class Register:
                 self._check_version(conn, version)
         if version == schema.LATEST:
             return  # nothing to do: no write lock taken
+        if self.read_only and version in schema.READ_AS_IS:
+            # read as it is: its tables are this version's but for the intervals' key
+            self._intervals_per_serial = True
+            return
         if self.read_only:
             raise RegisterError(message(QT_TR_NOOP(
                 "register {display_url} is read-only and at schema version {version}: it must "
@@ -1297,8 +1304,8 @@ class Register:
             state = dict(conn.execute(sa.select(schema.STATE.c.name, schema.STATE.c.value)).all())
             counters = dict(conn.execute(sa.select(schema.COUNTERS.c.name,
                                                    schema.COUNTERS.c.last_value)).all())
-            intervals = dict(conn.execute(sa.select(schema.INSTRUMENTS.c.serial,
-                                                    schema.INSTRUMENTS.c.interval_days)).all())
+            intervals = {(row.serial, row.manufacturer): row.interval_days
+                         for row in self._intervals(conn)}
             links = sorted([(r.seq, 0, r) for r in rows if r.seq is not None]
                            + [(e.seq, 1, e) for e in notes], key=lambda t: (t[0], t[1]))
             for row in rows:
@@ -1555,59 +1562,116 @@ class Register:
             return [CertificateRecord(**row._asdict()) for row in rows]
 
     # -- calibration intervals -------------------------------------------------------------
-    def set_interval(self, serial: str, days: int | None) -> None:
-        """Set (or with None or 0 clear) an instrument's interval: a chained entry."""
-        from models.register.identifiers import IdentifierError, normalise_identifier
+    def set_interval(self, serial: str, days: int | None, manufacturer: str = "") -> None:
+        """Set (or with None or 0 clear) the interval of ``manufacturer``'s item of ``serial``
+        (schema version 7; stop 63: two makers' "001" shared one interval): a chained entry
+        (its body names the maker; none for "", every maker's item of the serial that has
+        no interval of its own, as every interval set before version 7)."""
+        from models.register.identifiers import IdentifierError, normalise_identifier, refuse_unprinted
 
         try:
             serial = normalise_identifier(serial, message(QT_TR_NOOP("serial number")))
+            refuse_unprinted(manufacturer, message(QT_TR_NOOP("manufacturer")))
         except IdentifierError as exc:
             raise RegisterError(reason_of(exc)) from None
+        maker = " ".join((manufacturer or "").split())
         if days is not None and days < 0:
             raise RegisterError(message(
                 QT_TR_NOOP("a calibration interval is a positive number of days")))
         instruments = self._schema.INSTRUMENTS
+        c = instruments.c
         with self._write() as conn:
             if not self.is_sqlite:
                 conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
                              {"k": _CHAIN_LOCK})
             # one item, one interval: one set under a serial that is this item's by the
-            # one-calibration check ("AB-10 5" for "ab105") is cleared, each in the chain
-            for other in conn.execute(self._sa.select(instruments.c.serial)).scalars().all():
-                if other != serial and _same_instrument(other, serial):
-                    conn.execute(instruments.delete().where(instruments.c.serial == other))
-                    self._append_entry(conn, "interval", other, {"days": None})
-            conn.execute(instruments.delete().where(instruments.c.serial == serial))
+            # one-calibration check ("AB-10 5" for "ab105"), of a maker that prints alike
+            # ("ACME optics" for Acme Optics), is cleared, each in the chain
+            for other in conn.execute(self._sa.select(c.serial, c.manufacturer)).all():
+                if (other.serial, other.manufacturer) != (serial, maker) \
+                        and _same_instrument(other.serial, serial) \
+                        and _one_maker(other.manufacturer, maker):
+                    conn.execute(instruments.delete().where(
+                        c.serial == other.serial, c.manufacturer == other.manufacturer))
+                    self._append_entry(conn, "interval", other.serial,
+                                       _interval_body(None, other.manufacturer))
+            conn.execute(instruments.delete().where(c.serial == serial,
+                                                    c.manufacturer == maker))
             if days:
-                conn.execute(instruments.insert().values(serial=serial, interval_days=int(days)))
-            self._append_entry(conn, "interval", serial, {"days": int(days) if days else None})
+                conn.execute(instruments.insert().values(serial=serial, manufacturer=maker,
+                                                         interval_days=int(days)))
+            self._append_entry(conn, "interval", serial,
+                               _interval_body(int(days) if days else None, maker))
 
-    def interval(self, serial: str) -> int | None:
-        """The instrument's interval, set under its serial or under one that is this item's
-        by the one-calibration check (same_serial); of several (set before setting one
-        cleared the others: :meth:`set_interval`), the one set last."""
-        instruments, entries = self._schema.INSTRUMENTS, self._schema.ENTRIES
-        serial = _alike(serial)
+    def interval(self, serial: str, manufacturer: str = "") -> int | None:
+        """The interval of ``manufacturer``'s item of ``serial``: set for it (its serial, or
+        one that is this item's by the one-calibration check, same_serial; its maker
+        printing alike, case aside, same_identifier), else the one set for every maker's
+        item of the serial (manufacturer ""); never another maker's. Without
+        ``manufacturer`` (an item whose certificate names none), the one set for every
+        maker's item, else any maker's. Of several, the one set last."""
+        entries = self._schema.ENTRIES
+        serial, maker = _alike(serial), " ".join((manufacturer or "").split())
         with self._read() as conn:
-            found = {row.serial: row.interval_days for row in conn.execute(self._sa.select(
-                instruments.c.serial, instruments.c.interval_days))
-                if _same_instrument(row.serial, serial)}
-            if len(found) < 2:
-                return next(iter(found.values()), None)
-            last = conn.execute(self._sa.select(entries.c.subject).where(
-                entries.c.kind == "interval", entries.c.subject.in_(builtins.list(found)))
-                .order_by(entries.c.seq.desc()).limit(1)).scalar_one_or_none()
-            return found.get(last, found.get(serial))
+            found = {(row.serial, row.manufacturer): row.interval_days
+                     for row in self._intervals(conn)
+                     if _same_instrument(row.serial, serial)}
+            own = {k: v for k, v in found.items() if maker and k[1]
+                   and _one_maker(k[1], maker)}
+            every = {k: v for k, v in found.items() if not k[1]}
+            chosen = own or every or ({} if maker else found)
+            if len(chosen) < 2:
+                return next(iter(chosen.values()), None)
+            notes = conn.execute(self._sa.select(entries.c.subject, entries.c.body_json).where(
+                entries.c.kind == "interval",
+                entries.c.subject.in_(sorted({k[0] for k in chosen})))
+                .order_by(entries.c.seq.desc())).all()
+        for note in notes:
+            key = (note.subject, _interval_maker(note.body_json))
+            if key in chosen:
+                return chosen[key]
+        return chosen.get((serial, maker), next(iter(chosen.values())))
+
+    def _intervals(self, conn) -> builtins.list[Any]:
+        """Every interval set: serial, manufacturer ("" in a register read at schema version
+        6, whose intervals are per serial: :attr:`_intervals_per_serial`), interval_days."""
+        c, sa = self._schema.INSTRUMENTS.c, self._sa
+        maker = sa.literal("").label("manufacturer") if self._intervals_per_serial \
+            else c.manufacturer
+        return conn.execute(sa.select(c.serial, maker, c.interval_days)).all()
 
     def due_date(self, serial: str, manufacturer: str = "") -> dt.date | None:
         """The last calibration of the serial (of ``manufacturer``'s item, as
-        :meth:`history` tells it) plus the serial's interval (None without either)."""
-        days = self.interval(serial)
+        :meth:`history` tells it) plus that item's interval (:meth:`interval`; None without
+        either)."""
+        days = self.interval(serial, manufacturer)
         dates = [r.calibration_date for r in self.history(serial, manufacturer)
                  if r.calibration_date]
         if not days or not dates:
             return None
         return dt.date.fromisoformat(max(dates)) + dt.timedelta(days=days)
+
+
+def _interval_body(days: int | None, manufacturer: str) -> dict:
+    """An interval entry's body: the days, and the maker when it is one maker's item's."""
+    return {"days": days, "manufacturer": manufacturer} if manufacturer else {"days": days}
+
+
+def _interval_maker(body_json: str | None) -> str:
+    """The maker an interval entry was set for ("" : every maker's item, as every entry
+    recorded before schema version 7)."""
+    maker = json.loads(body_json or "{}").get("manufacturer")
+    return maker if isinstance(maker, str) else ""
+
+
+def _one_maker(kept: str, manufacturer: str) -> bool:
+    """Whether an interval's maker is ``manufacturer``: both none (every maker's item), or
+    both named and printing alike, case aside (same_identifier)."""
+    from models.register.identifiers import same_identifier
+
+    if not kept.strip() or not manufacturer.strip():
+        return not kept.strip() and not manufacturer.strip()
+    return kept == manufacturer or same_identifier(kept, manufacturer)
 
 
 class _Turn:
@@ -1742,20 +1806,24 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
             problems.append(message(QT_TR_NOOP(
                 "counter {name}: it stands at {value}, but no record was numbered {value}: "
                 "the record was deleted after issue"), name=name, value=value))
-    last_interval: dict[str, int | None] = {}
+    # per (serial, maker) since schema version 7: an entry recorded before names no maker,
+    # as the rows migration 7 copied (every maker's item of the serial)
+    last_interval: dict[tuple[str, str], int | None] = {}
     withdrawn: dict[str, str] = {}
     for note in notes:
         body = json.loads(note.body_json or "{}")
         if note.kind == "interval":
-            last_interval[note.subject] = body.get("days")
+            last_interval[(note.subject, _interval_maker(note.body_json))] = body.get("days")
         elif note.kind == "withdrawal":
             withdrawn[note.subject] = body.get("reason", "")
-    for serial in sorted(set(last_interval) | set(intervals)):
-        if intervals.get(serial) != last_interval.get(serial):
+    for serial, maker in sorted(set(last_interval) | set(intervals)):
+        if intervals.get((serial, maker)) != last_interval.get((serial, maker)):
             problems.append(message(QT_TR_NOOP(
                 "instrument {serial}: calibration interval {days} day(s), but the register's "
-                "records set {recorded}: changed after it was recorded"), serial=serial,
-                days=intervals.get(serial) or "—", recorded=last_interval.get(serial) or "—"))
+                "records set {recorded}: changed after it was recorded"),
+                serial=f"{serial} ({maker})" if maker else serial,
+                days=intervals.get((serial, maker)) or "—",
+                recorded=last_interval.get((serial, maker)) or "—"))
     results: dict[str, int] = {}
     for note in notes:  # one results file per certificate, recorded at its issue (rev62 F7)
         if note.kind == "results":
