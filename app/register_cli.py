@@ -120,6 +120,9 @@ def _parser(words) -> argparse.ArgumentParser:
         "set an instrument's calibration interval")))
     interval.add_argument("serial", help=words(QT_TR_NOOP("the instrument's serial number")))
     interval.add_argument("days", type=int, help=words(QT_TR_NOOP("0 clears it")))
+    interval.add_argument("--manufacturer", default="", help=words(QT_TR_NOOP(
+        "the manufacturer whose item it is (a serial is unique only within its maker); "
+        "without it: every maker's item of the serial that has no interval of its own")))
     signatories = sub.add_parser("signatories", help=words(QT_TR_NOOP(
         "the lab's authorised signatories: an approver must be one of them")))
     signatories.add_argument("names", nargs="*", help=words(QT_TR_NOOP(
@@ -575,7 +578,7 @@ def run_register(argv: list[str]) -> int:
                     number=number), words) + "\n")
                 return 0
             if args.command == "interval":
-                register.set_interval(args.serial, args.days or None)
+                register.set_interval(args.serial, args.days or None, args.manufacturer)
                 return 0
             from app.certificate_issue import refuse_issued_files
 

@@ -286,7 +286,7 @@ class RegisterPresenter:
         with self._register() as register:
             records = register.history(serial, manufacturer)
             due = register.due_date(serial, manufacturer)
-            interval = register.interval(serial) or 0
+            interval = register.interval(serial, manufacturer) or 0
         series: dict[str, tuple[list[float], list[float]]] = {}
         for r in records:
             for name, value in r.headline.items():
@@ -297,11 +297,14 @@ class RegisterPresenter:
                                due.isoformat() if due else "", interval)
 
     def set_interval(self, serial: str, days: int) -> None:
+        """The interval of the instrument whose history is shown: its serial's item of its
+        certificate's manufacturer (stop 63: set per serial, two makers' "001" shared it)."""
+        shown, manufacturer = self._instrument
+        manufacturer = manufacturer if shown == serial else ""
         try:
             with self._register() as register:
-                register.set_interval(serial, days or None)
+                register.set_interval(serial, days or None, manufacturer)
         except RegisterError as exc:
             self.view.tell(tr("Register"), explained(exc))
             return
-        shown, manufacturer = self._instrument
-        self._history(serial, manufacturer if shown == serial else "")
+        self._history(serial, manufacturer)

@@ -34,14 +34,20 @@ a certificate is uniquely identified; #61 and #62 reviews):
    more (:func:`identifier_keys`, :func:`serial_keys`): the skeleton case folded
    ("ab-2026-OOO1"), and the prototypes without the digit look-alikes case folded
    ("lrа-0815", a Cyrillic "а"); a letter read as a digit is never folded, so "SN-L5" is
-   neither "SN-I5" nor "SN-15". The dash stand-ins of CJK input methods ("一", "ー",
+   neither "SN-I5" nor "SN-15". And a fifth (stop 65, :func:`_digits_in_numbers_folded`):
+   the digit look-alikes read only where a run of them touches a digit, a capital that
+   prints as "I" read as "I", then case folded ("lra-O815" is LRA-0815, "lrІ-0815" with a
+   capital Cyrillic "І" is LRI-0815); it reads a letter as a digit only where the skeleton
+   does and folds only afterwards, so of two serials in one case it joins none the skeleton
+   keeps apart, and "SN-L5" stays apart from "SN-15". The dash stand-ins of CJK input methods ("一", "ー",
    "ㅡ") between letters or digits of other scripts are "-" in every key
    (:func:`_cjk_dashes`). A key only ever asks a question or refuses a number — never
    issues a second one, and never lets a change through (what prints otherwise is
    compared as printed, :func:`as_printed`; rev63 F2).
    - A certificate number's separators (any run of punctuation, symbols and spaces: "-",
      "·", ",", "#", "/", ".") are one separator, none at either end ("AB·2026·0001" and
-     "AB-2026-0001." are AB-2026-0001; the amendment form "-A<n>" is read from this key).
+     "AB-2026-0001." are AB-2026-0001; the amendment form "-A<n>" is read from these keys,
+     a separator or none between "A" and n: :func:`reads_as_amendment`).
    - A serial number's separators are dropped altogether before its zeros
      ("RX260815" is "RX-26-0815"; "LRA#0815" is "LRA-0815").
 4. **No serial**: an empty serial, one of separators only ("-", "—") and the words labs
@@ -61,8 +67,8 @@ from models.register._identifier_tables import CONFUSABLES, DEFAULT_IGNORABLE
 
 __all__ = ["IdentifierError", "as_printed", "folded_identifier_key", "folded_serial_key",
            "identifier_key", "identifier_keys", "no_serial", "normalise_identifier",
-           "refuse_unprinted", "same_identifier", "same_name", "same_serial", "serial_key",
-           "serial_keys"]
+           "reads_as_amendment", "refuse_unprinted", "same_identifier", "same_name",
+           "same_serial", "serial_key", "serial_keys"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
 _DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
@@ -241,6 +247,33 @@ def _prototypes_folded(text: str) -> str:
                                  .casefold())
 
 
+#: the digit look-alikes (:data:`_DIGIT_LIKE`) in a run that touches a digit
+_DIGIT_LIKE_RUN = re.compile(r"(?<=[0-9])[OlI|]+|[OlI|]+(?=[0-9])")
+
+
+def _capital_i(char: str, prototype: str) -> str:
+    """A capital letter whose prototype is "l" is a capital I look-alike (Cyrillic "І",
+    Greek "Ι", Cyrillic "Ӏ"): read as "I", which case folds to "i" as the letter's own
+    lower case does (Cyrillic "і"), not to "l" (UTS #39 gives "I" itself the prototype "l",
+    which this module reads only as a digit)."""
+    return "I" if prototype == "l" and unicodedata.category(char) == "Lu" else prototype
+
+
+def _digits_in_numbers_folded(text: str) -> str:
+    """The fifth key (stop 65): the prototypes (a capital I look-alike as "I"), the digit
+    look-alikes as digits only where a run of them touches a digit ("lra-O815": the "O"
+    before "815" is 0, the "l" before "ra" stays a letter), then case folded. Case and a
+    letter for a digit at once are one serial ("lra-O815" is LRA-0815), and a capital
+    Cyrillic "І" is "I" ("lrІ-0815" is LRI-0815). Folded after the digit look-alikes and
+    reading them case-sensitively, as the skeleton does, so "L" is never "l" and never "1":
+    "SN-L5" is neither "SN-15" nor "SN-I5" (rev63 F10)."""
+    prototypes = "".join(_capital_i(char, CONFUSABLES.get(char, char))
+                         for char in unicodedata.normalize("NFD", _digits(text)))
+    prototypes = unicodedata.normalize("NFC", prototypes)
+    digits = _DIGIT_LIKE_RUN.sub(lambda run: run.group().translate(_DIGIT_LIKE), prototypes)
+    return unicodedata.normalize("NFC", digits.casefold())
+
+
 def _zeros_dropped(text: str) -> str:
     """"rn" as "m" (UTS #39), and no zero before a number."""
     # not int(): it refuses more than 4,300 digits (rev63 M4)
@@ -271,12 +304,14 @@ def folded_identifier_key(text: str) -> str:
 
 
 @functools.lru_cache(maxsize=1 << 16)
-def identifier_keys(text: str) -> tuple[str, str, str, str]:
+def identifier_keys(text: str) -> tuple[str, str, str, str, str]:
     """Every key an identifier is compared by (the module's principle 3), each to the same
-    key of another: the skeleton, the case folded text, the skeleton case folded and the
-    prototypes case folded (:func:`same_identifier`)."""
+    key of another: the skeleton, the case folded text, the skeleton case folded, the
+    prototypes case folded, and the digit look-alikes read in numbers only, case folded
+    (:func:`same_identifier`)."""
     return (identifier_key(text), folded_identifier_key(text),
-            _number_key(_skeleton_folded(text)), _number_key(_prototypes_folded(text)))
+            _number_key(_skeleton_folded(text)), _number_key(_prototypes_folded(text)),
+            _number_key(_digits_in_numbers_folded(text)))
 
 
 def same_identifier(one: str, other: str) -> bool:
@@ -302,17 +337,34 @@ def folded_serial_key(text: str) -> str:
 
 
 @functools.lru_cache(maxsize=1 << 16)
-def serial_keys(text: str) -> tuple[str, str, str, str]:
+def serial_keys(text: str) -> tuple[str, str, str, str, str]:
     """Every key a serial number is compared by, as :func:`identifier_keys` (separators
     dropped: :func:`serial_key`)."""
     return (serial_key(text), folded_serial_key(text),
-            _serial_key(_skeleton_folded(text)), _serial_key(_prototypes_folded(text)))
+            _serial_key(_skeleton_folded(text)), _serial_key(_prototypes_folded(text)),
+            _serial_key(_digits_in_numbers_folded(text)))
 
 
 def same_serial(one: str, other: str) -> bool:
     """Whether two serial numbers are one item's: one of their keys (:func:`serial_keys`)
     is equal; never a chain of two keys (rev63 F10: "SN-L5" and "SN-I5" are two items)."""
     return any(a == b for a, b in zip(serial_keys(one), serial_keys(other), strict=True))
+
+
+#: an amendment's number as a key gives it: a number, "-A" (any case), a separator or none,
+#: a count (the register numbers amendments "<number>-A<n>": store._root)
+_AMENDMENT_KEY = re.compile(r".+-a-?[0-9]+", re.IGNORECASE)
+
+
+def reads_as_amendment(number: str) -> bool:
+    """Whether certificate number ``number`` reads as an amendment's number, "<a number>-A<n>",
+    by any key it is compared by (:func:`identifier_keys`): its separators, case, look-alikes
+    and zeros aside, a separator or none between "A" and the count ("AB-2026-0001-A 1",
+    "AB-2026-0001-a-1", "AB-2026-0001-А1" with a Cyrillic "А", "AB-2026-0001－A1" with a
+    full-width dash, "AB-2026-0001-Al"; stop 63: a new certificate so numbered read to a
+    customer as an amendment of AB-2026-0001 that never happened). The register's own
+    amendments are numbered so; any other number of that form is refused."""
+    return any(_AMENDMENT_KEY.fullmatch(key) for key in (number, *identifier_keys(number)))
 
 
 def as_printed(text: str) -> str:

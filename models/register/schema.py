@@ -5,7 +5,9 @@ migration in one transaction, so an old register opens in a newer AngleBench. A 
 made by a newer AngleBench than this one is refused, not guessed at; so is a version set
 back (the structures of a later version are there, or the copy of the version in
 ``register_state`` differs): a migration never recomputes a chain over records that have
-one (migration 4 proves the existing chain first and keeps its values).
+one (migration 4 proves the existing chain first and keeps its values). The transaction
+makes each opening's migrations all or nothing: one that fails or is killed half-way
+(migration 7 makes a table anew) leaves the register at its old version, whole.
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ from collections.abc import Callable
 import sqlalchemy as sa
 
 __all__ = ["CERTIFICATES", "COUNTERS", "ENTRIES", "INSTRUMENTS", "LATEST", "METADATA",
-           "MIGRATIONS", "SCHEMA_VERSION", "STATE", "downgrade_evidence"]
+           "MIGRATIONS", "READ_AS_IS", "SCHEMA_VERSION", "STATE", "downgrade_evidence"]
 
 METADATA = sa.MetaData()
 
@@ -105,12 +107,21 @@ STATE = sa.Table(
     sa.Column("value", sa.Text, nullable=False),
 )
 
-#: per instrument serial: the calibration interval (migration 2)
+#: per instrument, its serial and manufacturer, the calibration interval (migration 2, per
+#: serial; migration 7 per maker's serial: "" is every maker's item of the serial, as an
+#: interval set before it or without a maker)
 INSTRUMENTS = sa.Table(
     "instruments", METADATA,
     sa.Column("serial", sa.String(200), primary_key=True),
+    sa.Column("manufacturer", sa.Text, primary_key=True, nullable=False, server_default=""),
     sa.Column("interval_days", sa.Integer, nullable=False),
 )
+
+
+def _v2_instruments() -> sa.Table:
+    """The intervals' table as version 2 made it: per serial."""
+    return sa.Table("instruments", sa.MetaData(), sa.Column("serial", sa.String(200), primary_key=True),
+                    sa.Column("interval_days", sa.Integer, nullable=False))
 
 
 _V1_CERTIFICATE_COLUMNS = (
@@ -128,7 +139,7 @@ def _v1(conn: sa.Connection) -> None:
 
 
 def _v2(conn: sa.Connection) -> None:
-    INSTRUMENTS.create(conn)
+    _v2_instruments().create(conn)  # as version 2 made it (migration 7 adds the maker)
     conn.execute(sa.text("CREATE INDEX certificates_item_serial ON certificates (item_serial)"))
 
 
@@ -206,10 +217,39 @@ def _v6(conn: sa.Connection) -> None:
     conn.execute(sa.text("ALTER TABLE certificates ADD COLUMN document_kind VARCHAR(20)"))
 
 
+def _v7(conn: sa.Connection) -> None:
+    """The calibration interval per maker's serial: the instruments' key becomes (serial,
+    manufacturer) (stop 63: two makers' serial "001" shared one interval). A key cannot be
+    changed in place on SQLite, so the table is made anew beside the old one, the rows
+    copied with manufacturer "" (every maker's item of the serial: what they meant), the
+    old one dropped and the new one renamed — all in the migration's one transaction, so a
+    migration killed or failing half-way leaves version 6 as it was. No record's or entry's
+    chain value is touched: the interval entries already chained (subject the serial, no
+    maker in their body) are the intervals of maker "" the audit's cross-check compares the
+    table with, so the chain and the cross-check verify as before. Refused when the column
+    exists already (a version set back)."""
+    columns = {c["name"] for c in sa.inspect(conn).get_columns("instruments")}
+    if "manufacturer" in columns:
+        raise ValueError("the column of version 7 exists already")
+    old = _v2_instruments()
+    rows = conn.execute(sa.select(old.c.serial, old.c.interval_days)).all()
+    fresh = sa.Table("instruments_v7", sa.MetaData(),
+                     *(column._copy() for column in INSTRUMENTS.columns))
+    fresh.create(conn)
+    if rows:
+        conn.execute(fresh.insert(), [{"serial": r.serial, "manufacturer": "",
+                                       "interval_days": r.interval_days} for r in rows])
+    old.drop(conn)
+    conn.execute(sa.text("ALTER TABLE instruments_v7 RENAME TO instruments"))
+
+
 #: version → the migration that brings a register to it from the version before
 MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2, 3: _v3, 4: _v4,
-                                                          5: _v5, 6: _v6}
+                                                          5: _v5, 6: _v6, 7: _v7}
 LATEST = max(MIGRATIONS)
+#: versions a read-only register (which cannot be migrated) is read at as it is: version 6
+#: differs from 7 only by the intervals' key, read as every maker's item's (store._intervals)
+READ_AS_IS = frozenset({6})
 
 
 def downgrade_evidence(conn: sa.Connection, version: int) -> str:
@@ -242,6 +282,9 @@ def downgrade_evidence(conn: sa.Connection, version: int) -> str:
         if version < 3 and "chain_sha256" in columns and conn.execute(sa.text(
                 "SELECT COUNT(*) FROM certificates WHERE chain_sha256 IS NOT NULL")).scalar_one():
             return "the records carry the hash chain of version 3"
+    if version < 7 and "instruments" in tables and "manufacturer" in {
+            c["name"] for c in inspector.get_columns("instruments")}:
+        return "the column of version 7 exists"
     return ""
 
 
@@ -283,10 +326,11 @@ def append_baseline(conn, records: int) -> None:
     baseline = [("numbering", name, {"last_value": value, "baseline": True})
                 for name, value in conn.execute(sa.select(COUNTERS.c.name, COUNTERS.c.last_value)
                                                 .order_by(COUNTERS.c.name))]
+    instruments = _v2_instruments()  # as version 4 finds it
     baseline += [("interval", serial, {"days": days, "baseline": True})
                  for serial, days in conn.execute(sa.select(
-                     INSTRUMENTS.c.serial, INSTRUMENTS.c.interval_days)
-                     .order_by(INSTRUMENTS.c.serial))]
+                     instruments.c.serial, instruments.c.interval_days)
+                     .order_by(instruments.c.serial))]
     for kind, subject, body in baseline:
         seq += 1
         entry = {"seq": seq, "kind": kind, "subject": subject,

@@ -315,6 +315,9 @@ class Register:
         self.url = _normalise_url(url)
         self.is_sqlite = self.url.startswith("sqlite")
         self.read_only = False
+        #: a read-only register at schema version 6, read without migrating: its intervals
+        #: are per serial (every maker's item's)
+        self._intervals_per_serial = False
         self.timezone = lab_timezone(timezone)
         self._sqlite_path = ""
         try:
@@ -420,6 +423,10 @@ class Register:
                 self._check_version(conn, version)
         if version == schema.LATEST:
             return  # nothing to do: no write lock taken
+        if self.read_only and version in schema.READ_AS_IS:
+            # read as it is: its tables are this version's but for the intervals' key
+            self._intervals_per_serial = True
+            return
         if self.read_only:
             raise RegisterError(message(QT_TR_NOOP(
                 "register {display_url} is read-only and at schema version {version}: it must "
@@ -665,8 +672,6 @@ class Register:
 
     def _plan(self, conn, meta: CertificateMetadata, supersedes: str, replacement: bool,
               issue_date: dt.date, now: dt.datetime) -> _Plan:
-        from models.register.identifiers import folded_identifier_key, identifier_key
-
         sa, certificates = self._sa, self._schema.CERTIFICATES
         records, head = self._state(conn)
         last = conn.execute(sa.select(certificates.c.issued_at, certificates.c.number)
@@ -690,6 +695,7 @@ class Register:
                 revision = "replacement"
                 counter, number, before, value = self._next_value(conn, meta.number_scheme,
                                                                   issue_date)
+                _refuse_amendment_form(number, meta.number_scheme)
             else:
                 n = _amendment_count(conn, self, original) + 1
                 while self._taken(conn, f"{_root(original)}-A{n}"):  # typed in older registers
@@ -697,15 +703,12 @@ class Register:
                 revision, number = f"amendment {n}", f"{_root(original)}-A{n}"
         elif meta.certificate_number:
             number = meta.certificate_number
-            if any(_AMENDMENT_FORM.search(key) for key in (
-                    number, identifier_key(number), folded_identifier_key(number))):
-                raise RegisterError(message(QT_TR_NOOP(
-                    "certificate number {number}: numbers ending -A and a number are kept for "
-                    "amendments, which the register numbers itself"), number=number))
+            _refuse_amendment_form(number)
             self._check_free(conn, number)
         else:
             counter, number, before, value = self._next_value(conn, meta.number_scheme,
                                                               issue_date)
+            _refuse_amendment_form(number, meta.number_scheme)
         return _Plan(number, records + 1, head, counter, before, value, original, revision)
 
     def _unchanged(self, conn, plan: _Plan) -> bool:
@@ -924,7 +927,10 @@ class Register:
                           ) -> tuple[str, ...]:
         """The current certificates (issued, not superseded or withdrawn) of ``workbench``
         reporting the item and date of calibration of ``meta``: a serial number that prints
-        alike or differs by case, separators aside (same_serial). Where there is none
+        alike or differs by case, separators aside (same_serial), of a manufacturer that
+        does too (same_identifier; a record or ``meta`` naming none is any: a serial is
+        unique only within its maker, so Acme's "001" and Zeta's "001" are two items, as in
+        :meth:`history`; stop 63: compared by the serial alone). Where there is none
         (no_serial: empty, "-", "n/a" …), an item of no serial whose description and
         manufacturer print alike (same_identifier; #62 review: "rotary table" was another
         item than "Rotary table", and a serial "-" was every item without one)."""
@@ -940,7 +946,8 @@ class Register:
                          if no_serial(row.item_serial) and _same_item(
                              row.item_description, row.item_manufacturer, meta))
         return tuple(row.number for row in conn.execute(query.order_by(c.id))
-                     if same_serial(row.item_serial, meta.item_serial))
+                     if same_serial(row.item_serial, meta.item_serial)
+                     and _same_maker(row.item_manufacturer, meta.item_manufacturer))
 
     def _corrections(self, conn, original: CertificateRecord, workbench: str,
                      meta: CertificateMetadata, confirmed: bool) -> tuple[Any, ...]:
@@ -985,8 +992,9 @@ class Register:
         # and another customer's name, unasked and unsaid); compared as printed, spaces
         # collapsed. A changed description of an item with a serial is said, not asked.
         owned = []
-        if not unnamed and _printed(original.item_manufacturer) \
-                != _printed(meta.item_manufacturer):
+        maker_changed = not unnamed and _printed(original.item_manufacturer) \
+            != _printed(meta.item_manufacturer)
+        if maker_changed:
             owned.append(message(QT_TR_NOOP(
                 "manufacturer corrected from {old} (on {number}) to {new}"),
                 old=_printed(original.item_manufacturer) or "—", number=original.number,
@@ -1039,7 +1047,11 @@ class Register:
                 number=original.number, serial=original.item_serial or "—",
                 date=original.calibration_date or "—", new_serial=meta.item_serial or "—",
                 new_date=meta.calibration_date or "—"))
-        identity, changes = bool(changes), [*changes, *owned]
+        # the maker is the item's as the serial is (a serial is unique only within its
+        # maker, and the one-calibration check compares both): a corrected maker is a
+        # corrected item too (stop 65: Zeta's "001" amended to Acme's maker made a second
+        # current certificate of Acme's "001" calibrated that day)
+        identity, changes = bool(changes) or maker_changed, [*changes, *owned]
         if refused is not None:
             raise NotTheSameCalibration(separated([refused, also], " "), tuple(changes))
         # the item or the date corrected: never onto another current certificate's
@@ -1292,8 +1304,8 @@ class Register:
             state = dict(conn.execute(sa.select(schema.STATE.c.name, schema.STATE.c.value)).all())
             counters = dict(conn.execute(sa.select(schema.COUNTERS.c.name,
                                                    schema.COUNTERS.c.last_value)).all())
-            intervals = dict(conn.execute(sa.select(schema.INSTRUMENTS.c.serial,
-                                                    schema.INSTRUMENTS.c.interval_days)).all())
+            intervals = {(row.serial, row.manufacturer): row.interval_days
+                         for row in self._intervals(conn)}
             links = sorted([(r.seq, 0, r) for r in rows if r.seq is not None]
                            + [(e.seq, 1, e) for e in notes], key=lambda t: (t[0], t[1]))
             for row in rows:
@@ -1550,59 +1562,116 @@ class Register:
             return [CertificateRecord(**row._asdict()) for row in rows]
 
     # -- calibration intervals -------------------------------------------------------------
-    def set_interval(self, serial: str, days: int | None) -> None:
-        """Set (or with None or 0 clear) an instrument's interval: a chained entry."""
-        from models.register.identifiers import IdentifierError, normalise_identifier
+    def set_interval(self, serial: str, days: int | None, manufacturer: str = "") -> None:
+        """Set (or with None or 0 clear) the interval of ``manufacturer``'s item of ``serial``
+        (schema version 7; stop 63: two makers' "001" shared one interval): a chained entry
+        (its body names the maker; none for "", every maker's item of the serial that has
+        no interval of its own, as every interval set before version 7)."""
+        from models.register.identifiers import IdentifierError, normalise_identifier, refuse_unprinted
 
         try:
             serial = normalise_identifier(serial, message(QT_TR_NOOP("serial number")))
+            refuse_unprinted(manufacturer, message(QT_TR_NOOP("manufacturer")))
         except IdentifierError as exc:
             raise RegisterError(reason_of(exc)) from None
+        maker = " ".join((manufacturer or "").split())
         if days is not None and days < 0:
             raise RegisterError(message(
                 QT_TR_NOOP("a calibration interval is a positive number of days")))
         instruments = self._schema.INSTRUMENTS
+        c = instruments.c
         with self._write() as conn:
             if not self.is_sqlite:
                 conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
                              {"k": _CHAIN_LOCK})
             # one item, one interval: one set under a serial that is this item's by the
-            # one-calibration check ("AB-10 5" for "ab105") is cleared, each in the chain
-            for other in conn.execute(self._sa.select(instruments.c.serial)).scalars().all():
-                if other != serial and _same_instrument(other, serial):
-                    conn.execute(instruments.delete().where(instruments.c.serial == other))
-                    self._append_entry(conn, "interval", other, {"days": None})
-            conn.execute(instruments.delete().where(instruments.c.serial == serial))
+            # one-calibration check ("AB-10 5" for "ab105"), of a maker that prints alike
+            # ("ACME optics" for Acme Optics), is cleared, each in the chain
+            for other in conn.execute(self._sa.select(c.serial, c.manufacturer)).all():
+                if (other.serial, other.manufacturer) != (serial, maker) \
+                        and _same_instrument(other.serial, serial) \
+                        and _one_maker(other.manufacturer, maker):
+                    conn.execute(instruments.delete().where(
+                        c.serial == other.serial, c.manufacturer == other.manufacturer))
+                    self._append_entry(conn, "interval", other.serial,
+                                       _interval_body(None, other.manufacturer))
+            conn.execute(instruments.delete().where(c.serial == serial,
+                                                    c.manufacturer == maker))
             if days:
-                conn.execute(instruments.insert().values(serial=serial, interval_days=int(days)))
-            self._append_entry(conn, "interval", serial, {"days": int(days) if days else None})
+                conn.execute(instruments.insert().values(serial=serial, manufacturer=maker,
+                                                         interval_days=int(days)))
+            self._append_entry(conn, "interval", serial,
+                               _interval_body(int(days) if days else None, maker))
 
-    def interval(self, serial: str) -> int | None:
-        """The instrument's interval, set under its serial or under one that is this item's
-        by the one-calibration check (same_serial); of several (set before setting one
-        cleared the others: :meth:`set_interval`), the one set last."""
-        instruments, entries = self._schema.INSTRUMENTS, self._schema.ENTRIES
-        serial = _alike(serial)
+    def interval(self, serial: str, manufacturer: str = "") -> int | None:
+        """The interval of ``manufacturer``'s item of ``serial``: set for it (its serial, or
+        one that is this item's by the one-calibration check, same_serial; its maker
+        printing alike, case aside, same_identifier), else the one set for every maker's
+        item of the serial (manufacturer ""); never another maker's. Without
+        ``manufacturer`` (an item whose certificate names none), the one set for every
+        maker's item, else any maker's. Of several, the one set last."""
+        entries = self._schema.ENTRIES
+        serial, maker = _alike(serial), " ".join((manufacturer or "").split())
         with self._read() as conn:
-            found = {row.serial: row.interval_days for row in conn.execute(self._sa.select(
-                instruments.c.serial, instruments.c.interval_days))
-                if _same_instrument(row.serial, serial)}
-            if len(found) < 2:
-                return next(iter(found.values()), None)
-            last = conn.execute(self._sa.select(entries.c.subject).where(
-                entries.c.kind == "interval", entries.c.subject.in_(builtins.list(found)))
-                .order_by(entries.c.seq.desc()).limit(1)).scalar_one_or_none()
-            return found.get(last, found.get(serial))
+            found = {(row.serial, row.manufacturer): row.interval_days
+                     for row in self._intervals(conn)
+                     if _same_instrument(row.serial, serial)}
+            own = {k: v for k, v in found.items() if maker and k[1]
+                   and _one_maker(k[1], maker)}
+            every = {k: v for k, v in found.items() if not k[1]}
+            chosen = own or every or ({} if maker else found)
+            if len(chosen) < 2:
+                return next(iter(chosen.values()), None)
+            notes = conn.execute(self._sa.select(entries.c.subject, entries.c.body_json).where(
+                entries.c.kind == "interval",
+                entries.c.subject.in_(sorted({k[0] for k in chosen})))
+                .order_by(entries.c.seq.desc())).all()
+        for note in notes:
+            key = (note.subject, _interval_maker(note.body_json))
+            if key in chosen:
+                return chosen[key]
+        return chosen.get((serial, maker), next(iter(chosen.values())))
+
+    def _intervals(self, conn) -> builtins.list[Any]:
+        """Every interval set: serial, manufacturer ("" in a register read at schema version
+        6, whose intervals are per serial: :attr:`_intervals_per_serial`), interval_days."""
+        c, sa = self._schema.INSTRUMENTS.c, self._sa
+        maker = sa.literal("").label("manufacturer") if self._intervals_per_serial \
+            else c.manufacturer
+        return conn.execute(sa.select(c.serial, maker, c.interval_days)).all()
 
     def due_date(self, serial: str, manufacturer: str = "") -> dt.date | None:
         """The last calibration of the serial (of ``manufacturer``'s item, as
-        :meth:`history` tells it) plus the serial's interval (None without either)."""
-        days = self.interval(serial)
+        :meth:`history` tells it) plus that item's interval (:meth:`interval`; None without
+        either)."""
+        days = self.interval(serial, manufacturer)
         dates = [r.calibration_date for r in self.history(serial, manufacturer)
                  if r.calibration_date]
         if not days or not dates:
             return None
         return dt.date.fromisoformat(max(dates)) + dt.timedelta(days=days)
+
+
+def _interval_body(days: int | None, manufacturer: str) -> dict:
+    """An interval entry's body: the days, and the maker when it is one maker's item's."""
+    return {"days": days, "manufacturer": manufacturer} if manufacturer else {"days": days}
+
+
+def _interval_maker(body_json: str | None) -> str:
+    """The maker an interval entry was set for ("" : every maker's item, as every entry
+    recorded before schema version 7)."""
+    maker = json.loads(body_json or "{}").get("manufacturer")
+    return maker if isinstance(maker, str) else ""
+
+
+def _one_maker(kept: str, manufacturer: str) -> bool:
+    """Whether an interval's maker is ``manufacturer``: both none (every maker's item), or
+    both named and printing alike, case aside (same_identifier)."""
+    from models.register.identifiers import same_identifier
+
+    if not kept.strip() or not manufacturer.strip():
+        return not kept.strip() and not manufacturer.strip()
+    return kept == manufacturer or same_identifier(kept, manufacturer)
 
 
 class _Turn:
@@ -1737,20 +1806,24 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
             problems.append(message(QT_TR_NOOP(
                 "counter {name}: it stands at {value}, but no record was numbered {value}: "
                 "the record was deleted after issue"), name=name, value=value))
-    last_interval: dict[str, int | None] = {}
+    # per (serial, maker) since schema version 7: an entry recorded before names no maker,
+    # as the rows migration 7 copied (every maker's item of the serial)
+    last_interval: dict[tuple[str, str], int | None] = {}
     withdrawn: dict[str, str] = {}
     for note in notes:
         body = json.loads(note.body_json or "{}")
         if note.kind == "interval":
-            last_interval[note.subject] = body.get("days")
+            last_interval[(note.subject, _interval_maker(note.body_json))] = body.get("days")
         elif note.kind == "withdrawal":
             withdrawn[note.subject] = body.get("reason", "")
-    for serial in sorted(set(last_interval) | set(intervals)):
-        if intervals.get(serial) != last_interval.get(serial):
+    for serial, maker in sorted(set(last_interval) | set(intervals)):
+        if intervals.get((serial, maker)) != last_interval.get((serial, maker)):
             problems.append(message(QT_TR_NOOP(
                 "instrument {serial}: calibration interval {days} day(s), but the register's "
-                "records set {recorded}: changed after it was recorded"), serial=serial,
-                days=intervals.get(serial) or "—", recorded=last_interval.get(serial) or "—"))
+                "records set {recorded}: changed after it was recorded"),
+                serial=f"{serial} ({maker})" if maker else serial,
+                days=intervals.get((serial, maker)) or "—",
+                recorded=last_interval.get((serial, maker)) or "—"))
     results: dict[str, int] = {}
     for note in notes:  # one results file per certificate, recorded at its issue (rev62 F7)
         if note.kind == "results":
@@ -1882,7 +1955,28 @@ def _root(record: CertificateRecord) -> str:
         else record.number
 
 
-_AMENDMENT_FORM = re.compile(r"-A\d+$", re.IGNORECASE)
+def _refuse_amendment_form(number: str, scheme: str = "") -> None:
+    """RegisterError when ``number``, typed or (``scheme``) allocated by a number scheme, for
+    an original or a replacement, reads as an amendment's number by any key the commit's
+    check compares by (reads_as_amendment: "AB-2026-0001-A 1", "-a-1", a Cyrillic "А", a
+    full-width dash; stop 63): a customer would read it as an amendment of a certificate
+    that was never amended. The register's amendments are numbered so only by Amend…."""
+    from models.register.identifiers import reads_as_amendment
+
+    if not reads_as_amendment(number):
+        return
+    if scheme:
+        raise RegisterError(message(QT_TR_NOOP(
+            "the number scheme '{scheme}' gives {number}, which reads as an amendment's "
+            "number (a number, then -A and a count: AB-2026-0001-A1 is the first amendment of "
+            "AB-2026-0001): numbers of that form are kept for amendments, which the register "
+            "numbers itself; change the scheme"), scheme=scheme, number=number))
+    raise RegisterError(message(QT_TR_NOOP(
+        "certificate number {number} reads as an amendment's number (a number, then -A and a "
+        "count, whatever the separators, case or look-alike letters: AB-2026-0001-A1 is the "
+        "first amendment of AB-2026-0001): numbers of that form are kept for amendments, which "
+        "the register numbers itself when a certificate is amended; type another number, or "
+        "leave it empty and the register allocates the next"), number=number))
 
 
 def _same_item(description: str, manufacturer: str, meta: CertificateMetadata) -> bool:

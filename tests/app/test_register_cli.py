@@ -179,7 +179,7 @@ def test_verify_and_opening_find_a_version_set_back_and_a_truncated_tail(capsys)
     assert "CHANGED AFTER ISSUE" in capsys.readouterr().out
     assert main(["register", "list"]) == 2
     assert "schema version 2 was set back" in capsys.readouterr().err
-    _sql("UPDATE schema_version SET version = 6",  # the version it was at
+    _sql("UPDATE schema_version SET version = 7",  # the version it was at
          f"DELETE FROM certificates WHERE number = '{numbers[-1]}'")
     assert main(["register", "verify"]) == 1
     out = capsys.readouterr().out

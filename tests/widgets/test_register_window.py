@@ -120,7 +120,9 @@ def test_the_history_of_a_serial_is_its_makers_item_only(window, samples_dir, tm
                                                           qtbot):
     """#64 review F6: Acme's "001" (calibrated 2025-06-01) and Zeta's "001" (2026-11-20)
     were one history in the window, Acme's due date 2027-11-20 (Zeta's calibration + 365
-    days) where it was overdue since 2026-06-01; setting the interval kept that."""
+    days) where it was overdue since 2026-06-01; setting the interval kept that. Stop 63:
+    the interval set in Acme's history was Zeta's too (one per serial); each maker's item
+    has its own now."""
     with window.certificates.open_register() as register:
         issue_polygon(register, samples_dir, tmp_path, "a", item_serial="001",
                       item_manufacturer="Acme Optics", calibration_date="2025-06-01")
@@ -142,7 +144,20 @@ def test_the_history_of_a_serial_is_its_makers_item_only(window, samples_dir, tm
     qtbot.mouseClick(dialog.table.viewport(), Qt.MouseButton.LeftButton,
                      pos=dialog.table.visualItemRect(dialog.table.item(0, 0)).center())
     dialog.buttons["history"].click()
-    assert "next due 2027-11-20" in dialog.history_title.text()
+    assert "no due date" in dialog.history_title.text() and dialog.interval.value() == 0
+    dialog.interval.lineEdit().selectAll()  # Zeta's item's own interval
+    qtbot.keyClicks(dialog.interval.lineEdit(), "730")
+    dialog.interval_button.click()
+    assert "next due 2028-11-19" in dialog.history_title.text()
+    qtbot.mouseClick(dialog.table.viewport(), Qt.MouseButton.LeftButton,
+                     pos=dialog.table.visualItemRect(dialog.table.item(1, 0)).center())
+    dialog.buttons["history"].click()  # Acme's kept its own
+    assert "next due 2026-06-01" in dialog.history_title.text()
+    assert dialog.interval.value() == 365
+    with window.certificates.open_register() as register:
+        assert register.interval("001", "Acme Optics") == 365
+        assert register.interval("001", "ZETA instruments") == 730
+        assert register.audit() == []
 
 
 def test_chinese_in_the_window_is_drawn_not_boxed(window):

@@ -198,3 +198,43 @@ def test_the_amendment_form_is_read_from_the_key():
     ("RX-1", False)])
 def test_what_says_there_is_no_serial(serial, none):
     assert no_serial(serial) is none
+
+
+# -- stop 65: case and a letter for a digit at once; a capital Cyrillic "І" ------------------
+@pytest.mark.parametrize(("typed", "alike"), [
+    ("LRA-0815", "lra-O815"), ("LRA-0815", "Lra-O815"),
+    ("LRA-0815", "lr\u0430-O815"),  # a Cyrillic "а" as well
+    ("LRI-0815", "LR\u0406-0815"), ("LRI-0815", "lr\u0406-0815"),  # capital Cyrillic "І"
+    ("lri-0815", "LR\u0406-O815"), ("AB-2026-0001", "ab-2026-OOO1"),
+    ("SN-105", "sn-I05")])
+def test_case_and_a_letter_for_a_digit_at_once_are_one_serial(typed, alike):
+    """Each was another serial before (stop 63's note: "lra-O815", case, a Cyrillic letter
+    and a letter for a digit at once; a capital Cyrillic "І" for the "i" of "lri")."""
+    assert same_serial(alike, typed) and same_identifier(alike, typed)
+
+
+@pytest.mark.parametrize(("one", "other"), [
+    ("SN-L5", "SN-15"), ("SN-L5", "SN-I5"), ("sn-L5", "SN-15"), ("SN-L5", "sn-15"),
+    ("LRA-0815", "LRA-L815"), ("AL-15", "A1-15"), ("Ai55", "A155"), ("SN-Ч5", "SN-45")])
+def test_a_letter_that_prints_otherwise_than_a_digit_stays_a_letter(one, other):
+    """rev63 F10: the naive join (case folded, then the digit look-alikes) made "SN-L5" one
+    with "SN-15"; the fifth key reads the look-alikes before folding and only in numbers."""
+    assert not same_serial(one, other) and not same_identifier(one, other)
+
+
+def test_the_fifth_key_joins_no_serials_in_one_case_the_skeleton_keeps_apart():
+    """Every 4-character serial of capitals (or of small letters), the letters that print
+    like digits and digits:
+    two that the fifth key joins, the skeleton joins too (what it adds is only case and a
+    letter for a digit at once)."""
+    import itertools
+
+    from models.register.identifiers import serial_keys
+
+    for alphabet in ("LIOA01", "lioa01"):  # capitals and digits; small letters and digits
+        by_key: dict[str, set[str]] = {}
+        for chars in itertools.product(alphabet, repeat=4):
+            serial = "".join(chars)
+            by_key.setdefault(serial_keys(serial)[4], set()).add(serial)
+        for serials in by_key.values():
+            assert len({serial_key(s) for s in serials}) == 1, serials

@@ -140,7 +140,8 @@ def test_the_pdf_inside_the_dcc_must_be_the_stored_pdf(register_url):
 def _as_version_4(url: str) -> str:
     """The register as schema version 4 left it: its records of chain format 2, chained by
     that format's rule (SHA-256 over the previous value and the issued fields as sorted
-    JSON, written out here), no DCC or kind columns; the head returned."""
+    JSON, written out here), no DCC or kind columns, the intervals per serial; the head
+    returned."""
     import json
 
     from models.register.chain import CHAINED, CHAINED_V2
@@ -158,6 +159,10 @@ def _as_version_4(url: str) -> str:
         for statement in ("ALTER TABLE certificates DROP COLUMN dcc",
                           "ALTER TABLE certificates DROP COLUMN dcc_sha256",
                           "ALTER TABLE certificates DROP COLUMN document_kind",
+                          # the intervals per serial, as version 2 made them (no interval set)
+                          "DROP TABLE instruments",
+                          "CREATE TABLE instruments (serial VARCHAR(200) PRIMARY KEY, "
+                          "interval_days INTEGER NOT NULL)",
                           "UPDATE schema_version SET version = 4",
                           "UPDATE register_state SET value = '4' WHERE name = 'schema_version'"):
             conn.execute(sa.text(statement))
@@ -175,7 +180,7 @@ def test_a_version_4_register_migrates_keeping_its_chain(register_url):
                for _ in range(3)]
     head = _as_version_4(register_url)
     with _open(register_url) as register:
-        assert register.version == schema.LATEST == 6
+        assert register.version == schema.LATEST == 7
         assert register.problems == [] and register.find_head(head) == (3, head)
         kept = [register.get(r.number) for r in old]
         assert kept[-1].chain_sha256 == head and {r.chain_format for r in kept} == {2}
