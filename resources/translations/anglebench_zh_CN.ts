@@ -2959,6 +2959,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>0 表示清除</translation>
     </message>
     <message>
+        <source>the manufacturer whose item it is (a serial is unique only within its maker); without it: every maker&apos;s item of the serial that has no interval of its own</source>
+        <translation>被校件的制造商（序列号只在同一制造商内唯一）；不指定时：该序列号每个没有自己间隔的制造商的被校件</translation>
+    </message>
+    <message>
         <source>the lab&apos;s authorised signatories: an approver must be one of them</source>
         <translation>实验室的授权签字人：批准人必须是其中之一</translation>
     </message>
@@ -3964,7 +3968,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
+        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -4109,8 +4113,20 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>第 {row} 行：外带必须包含内带（外带上限 {outer} 小于内带上限 {inside}）</translation>
     </message>
     <message>
-        <source>Row {row}, {column} was changed to “{value}” while you were typing in it; what you typed (“{typed}”) was not entered</source>
+        <source>Row {row}, {column}: what you typed (“{typed}”) was entered, then the readings were replaced ({what})</source>
         <extracomment>the cell&apos;s text the open editor was last filled with (&quot;&quot; when none is open) a message for the status line (the workbench&apos;s view shows it): the cell being typed in was changed by another path, what was typed not entered (:meth:`dataChanged`). An object, not a str: a ``Signal(str)`` gave the slot a plain copy of the message, which the status line could not say again after View › Language (day review 64 P6) a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
+        <translation>第 {row} 行 {column}：您输入的内容（“{typed}”）已被确认，随后读数被替换（{what}）</translation>
+    </message>
+    <message>
+        <source>Row {row}, {column}: what you typed (“{typed}”) was not entered: the readings were replaced while you were typing in it</source>
+        <translation>第 {row} 行 {column}：您输入的内容（“{typed}”）未被确认：您输入时读数被替换了</translation>
+    </message>
+    <message>
+        <source>Row {row}, {column}: what you typed (“{typed}”) was not entered: the row was removed while you were typing in it</source>
+        <translation>第 {row} 行 {column}：您输入的内容（“{typed}”）未被确认：您输入时该行被删除了</translation>
+    </message>
+    <message>
+        <source>Row {row}, {column} was changed to “{value}” while you were typing in it; what you typed (“{typed}”) was not entered</source>
         <translation>第 {row} 行 {column} 在您输入时被改为“{value}”；您输入的内容（“{typed}”）未被确认</translation>
     </message>
     <message>
@@ -6273,7 +6289,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>register {display_url}: {reason}</source>
-        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
+        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
         <translation>登记册 {display_url}：{reason}</translation>
     </message>
     <message>
@@ -6347,10 +6363,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>the computer&apos;s clock says {now}, before the register&apos;s last record ({number}, issued {then}): the clock was set back; nothing is issued until it is right</source>
         <translation>计算机时钟为 {now}，早于登记册的最后一条记录（{number}，签发于 {then}）：时钟被回拨；在时钟正确之前不签发</translation>
-    </message>
-    <message>
-        <source>certificate number {number}: numbers ending -A and a number are kept for amendments, which the register numbers itself</source>
-        <translation>证书编号 {number}：以 -A 加数字结尾的编号保留给修订版，由登记册自行编号</translation>
     </message>
     <message>
         <source>serial number</source>
@@ -6495,6 +6507,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>a calibration interval is a positive number of days</source>
         <translation>校准间隔必须是正的天数</translation>
+    </message>
+    <message>
+        <source>the number scheme &apos;{scheme}&apos; gives {number}, which reads as an amendment&apos;s number (a number, then -A and a count: AB-2026-0001-A1 is the first amendment of AB-2026-0001): numbers of that form are kept for amendments, which the register numbers itself; change the scheme</source>
+        <translation>编号规则“{scheme}”给出 {number}，它读起来像修订版编号（一个编号加 -A 和序号：AB-2026-0001-A1 是 AB-2026-0001 的第一个修订版）：这种形式的编号保留给修订版，由登记册自行编号；请更改编号规则</translation>
+    </message>
+    <message>
+        <source>certificate number {number} reads as an amendment&apos;s number (a number, then -A and a count, whatever the separators, case or look-alike letters: AB-2026-0001-A1 is the first amendment of AB-2026-0001): numbers of that form are kept for amendments, which the register numbers itself when a certificate is amended; type another number, or leave it empty and the register allocates the next</source>
+        <translation>证书编号 {number} 读起来像修订版编号（一个编号加 -A 和序号，不论分隔符、大小写或形似字母：AB-2026-0001-A1 是 AB-2026-0001 的第一个修订版）：这种形式的编号保留给修订版，由登记册在修订证书时自行编号；请输入另一个编号，或留空由登记册分配下一个</translation>
     </message>
     <message>
         <source>Cannot export the compensation table</source>
