@@ -404,6 +404,16 @@ class Register:
                 "register {display_url}: schema version {version} is no version AngleBench "
                 "ever made: it was changed outside AngleBench; the register is not opened"),
                 display_url=self.display_url, version=version))
+        if version == schema.LATEST:
+            # a table of the register gone (dropped outside AngleBench): said as a change
+            # after issue, not as a register that cannot be read ("no such table: entries")
+            held = set(self._sa.inspect(conn).get_table_names())
+            missing = sorted(name for name in schema.METADATA.tables if name not in held)
+            if missing:
+                raise RegisterTampered(message(QT_TR_NOOP(
+                    "register {display_url}: its table(s) {tables} are gone: deleted outside "
+                    "AngleBench; the register is not opened; restore it from a backup"),
+                    display_url=self.display_url, tables=", ".join(missing)))
         evidence = schema.downgrade_evidence(conn, version)
         if evidence:
             raise RegisterTampered(message(QT_TR_NOOP(
