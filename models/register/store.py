@@ -22,6 +22,7 @@ from __future__ import annotations
 import builtins
 import dataclasses
 import datetime as dt
+import errno
 import hashlib
 import importlib.metadata
 import json
@@ -37,7 +38,7 @@ from typing import TYPE_CHECKING, Any, BinaryIO
 
 from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
-from models.messages import QT_TR_NOOP, message, reason_of, separated
+from models.messages import QT_TR_NOOP, Message, message, reason_of, separated
 from models.project.output_guard import TURN_FILE_SUFFIX
 from models.register.chain import CHAINED, CHAINED_V2, CHAINED_V3, CHAINED_V4, GENESIS, link
 from models.register.wording import DOCUMENT_KINDS, kind_words
@@ -498,7 +499,13 @@ class Register:
                     conn.execute(self._sa.text(
                         f"SET LOCAL lock_timeout = '{LOCK_TIMEOUT_S}s'"))
                 yield conn
+        except OSError as exc:
+            if exc.errno in _DISK_FULL:  # rolled back: said in words, not "[Errno 28] …"
+                raise RegisterError(self._disk_full(exc.filename)) from None
+            raise
         except self._sa.exc.SQLAlchemyError as exc:  # a unique number taken meanwhile too
+            if _is_disk_full(exc):
+                raise RegisterError(self._disk_full()) from None
             reason = _reason(exc)
             if getattr(getattr(exc, "orig", None), "sqlstate", "") == "55P03":
                 reason = message(QT_TR_NOOP(
@@ -507,6 +514,16 @@ class Register:
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=reason)) from None
+
+    def _disk_full(self, path: str | None = None) -> Message:
+        """What a write that found the disk full says: where (the file the system named, or
+        the register's file; a server's register by its URL), and that the transaction was
+        rolled back: nothing recorded, the register as it was (it said "[Errno 28] No space
+        left on device", stop 63)."""
+        where = str(path or self._sqlite_path or self.display_url)
+        return message(QT_TR_NOOP(
+            "the disk is full at {path}: nothing was recorded; the register is unchanged "
+            "(free some space and try again)"), path=where)
 
     def _lock_holders(self) -> str:
         """PostgreSQL: the sessions holding the register's locks (user, program, client,
@@ -1939,6 +1956,23 @@ def _with_metadata(project_json: str, workbench: str, meta: CertificateMetadata)
     certificates[workbench] = meta.to_dict()
     data.setdefault("metadata", {})["certificates"] = certificates
     return json.dumps(data, ensure_ascii=False)
+
+
+#: the errors of a write that found no room: the disk full, the user's quota used up
+_DISK_FULL = frozenset(code for code in (errno.ENOSPC, getattr(errno, "EDQUOT", None))
+                       if code is not None)
+
+
+def _is_disk_full(exc: Exception) -> bool:
+    """A database error that is a full disk: SQLite's SQLITE_FULL ("database or disk is
+    full"), PostgreSQL's disk_full (53100), or an OSError of :data:`_DISK_FULL` under it."""
+    orig = getattr(exc, "orig", None)
+    if isinstance(orig, OSError) and orig.errno in _DISK_FULL:
+        return True
+    if getattr(orig, "sqlstate", "") == "53100" or getattr(orig, "pgcode", "") == "53100":
+        return True
+    return getattr(orig, "sqlite_errorname", "") == "SQLITE_FULL" or (
+        "database or disk is full" in str(orig or ""))
 
 
 def _reason(exc: Exception) -> str:
