@@ -313,6 +313,9 @@ class Register:
             raise RegisterError(reason_of(exc)) from None
 
         self._sa, self._schema = sa, schema
+        #: the numbers :meth:`issue` issued through this object whose results file is not
+        #: recorded yet: the only ones :meth:`record_results` records for (stop 63)
+        self._results_due: set[str] = set()
         self.url = _normalise_url(url)
         self.is_sqlite = self.url.startswith("sqlite")
         self.read_only = False
@@ -917,6 +920,8 @@ class Register:
                             conn.execute(certificates.update().where(
                                 certificates.c.number == original.number).values(
                                 status="superseded", superseded_by=plan.number))
+                        # its results file may now be recorded, by this issuer only
+                        self._results_due.add(plan.number)
                         return record, pdf
                 turn.take()  # another issue came first: render again, in turn
         raise RegisterError(message(QT_TR_NOOP(
@@ -1119,7 +1124,17 @@ class Register:
         the current one (issued, not superseded or withdrawn) and have no results file yet:
         one per certificate, recorded at its issue (a corrected results file comes with the
         certificate's amendment, under the amendment's number; rev62 F7: a later call made
-        any file "identical to the record"). Returns the entry's chain value."""
+        any file "identical to the record"). Only the issuer records it: ``number`` must have
+        been issued by :meth:`issue` of this object (stop 63: any caller could give a
+        certificate issued earlier without one any file, which ``verify`` then called "the
+        results file of certificate N, identical to the record"). Returns the entry's chain
+        value."""
+        if number not in self._results_due:
+            raise RegisterError(message(QT_TR_NOOP(
+                "no results file is recorded for {number}: a results file is recorded by the "
+                "issue of its certificate, right after it, and {number} was not issued by "
+                "this issue (a certificate without one gets one with its amendment)"),
+                number=number))
         entry = {"sha256": hashlib.sha256(data).hexdigest(), "file": name}
         entries = self._schema.ENTRIES
         with self._write() as conn:
@@ -1135,7 +1150,9 @@ class Register:
                     "{recorded_at}: a certificate has one, recorded when it is issued (a "
                     "corrected one comes with its amendment)"), number=number,
                     recorded_at=earlier.recorded_at))
-            return self._append_entry(conn, "results", number, entry)
+            chain = self._append_entry(conn, "results", number, entry)
+        self._results_due.discard(number)
+        return chain
 
     def results_records(self, number: str = "") -> builtins.list[dict]:
         """The results files recorded (every certificate's, or ``number``'s), in the chain's
