@@ -1,7 +1,9 @@
 """``anglebench register``: the certificate register for audits, without a window.
 
-    anglebench register list [SEARCH]          newest first (number, status, certificate or test
-                                               report, date, workbench, serial, customer);
+    anglebench register list [SEARCH] [--json] newest first, aligned under a header (number,
+                                               date of issue, workbench / document, customer,
+                                               serial, state: issued, withdrawn, amended or
+                                               replaced by …; app/register_listing.py);
                                                SEARCH in number, serial, customer
     anglebench register show NUMBER            the record (--pdf OUT, --dcc OUT.xml, --project OUT
                                                to extract), its chain value and the head before it
@@ -91,6 +93,8 @@ def _parser(words) -> argparse.ArgumentParser:
     listing.add_argument("search", nargs="?", default="",
                          help=words(QT_TR_NOOP("text to find in the number, the serial or the "
                                                "customer")))
+    listing.add_argument("--json", action="store_true",  # the register's own English words
+                         help=words(QT_TR_NOOP("print JSON instead of a summary")))
     show = sub.add_parser("show", help=words(QT_TR_NOOP("one certificate's record")))
     show.add_argument("number", help=words(QT_TR_NOOP("the certificate number")))
     show.add_argument("--pdf", metavar="OUT.pdf",
@@ -555,11 +559,27 @@ def run_register(argv: list[str]) -> int:
                     _say(rendered(message(QT_TR_NOOP("anglebench register: WARNING: {problem}"),
                                           problem=problem), words))
             if args.command == "list":
-                for r in register.list(args.search):
-                    status = rendered(status_words(r.status), words)
-                    kind = rendered(kind_words(r.document_kind), words)
-                    sys.stdout.write(f"{r.number}\t{status}\t{kind}\t{r.issue_date}\t"
-                                     f"{r.workbench}\t{r.item_serial}\t{r.customer}\n")
+                from app.register_listing import listing_json, listing_lines
+
+                records = register.list(args.search)
+                revisions = {r.number: r.revision for r in records}
+
+                def revision_of(number: str) -> str:  # of the one that superseded a record
+                    if number not in revisions:
+                        try:
+                            revisions[number] = register.get(number).revision
+                        except RegisterError:
+                            revisions[number] = ""
+                    return revisions[number]
+
+                if args.json:
+                    import json
+
+                    sys.stdout.write(json.dumps(listing_json(records, revision_of), indent=1,
+                                                ensure_ascii=False) + "\n")
+                    return 0
+                for line in listing_lines(records, revision_of, words):
+                    sys.stdout.write(line + "\n")
                 return 0
             if args.command == "show":
                 record = register.get(args.number)

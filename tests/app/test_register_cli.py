@@ -40,9 +40,9 @@ def test_issue_list_show_verify_export(samples_dir, tmp_path, capsys):
     assert code == 0 and "AB-2026-0042" in err
     code, err = issue(samples_dir, tmp_path, "c", capsys, item_serial="RX-26-0817")  # once only
     assert code == 2 and "AB-2026-0042 was issued on" in err and not (tmp_path / "c.pdf").exists()
-    assert main(["register", "list", "RX-26"]) == 0
-    listed = capsys.readouterr().out.splitlines()
-    assert [line.split("\t")[0] for line in listed] == ["AB-2026-0042", f"AB-{year}-0001"]
+    assert main(["register", "list", "RX-26", "--json"]) == 0
+    listed = json.loads(capsys.readouterr().out)
+    assert [r["number"] for r in listed] == ["AB-2026-0042", f"AB-{year}-0001"]
     assert main(["register", "show", f"AB-{year}-0001", "--pdf", str(tmp_path / "copy.pdf"),
                  "--project", str(tmp_path / "p.json")]) == 0
     shown = capsys.readouterr().out
@@ -207,8 +207,9 @@ def test_head_verify_head_show_and_withdraw(tmp_path, capsys):
     assert main(["register", "verify", str(tmp_path / "2.pdf")]) == 0
     out = capsys.readouterr().out
     assert f"{numbers[1]} is no longer valid: withdrawn (wrong item)" in out
-    assert main(["register", "list"]) == 0
-    assert f"{numbers[1]}\twithdrawn" in capsys.readouterr().out
+    assert main(["register", "list", "--json"]) == 0
+    assert {r["number"]: r["state"] for r in json.loads(capsys.readouterr().out)}[
+        numbers[1]] == "withdrawn"
     assert main(["register", "withdraw", numbers[1], "--reason", "again"]) == 2
     assert "was withdrawn" in capsys.readouterr().err
 
