@@ -300,7 +300,7 @@ def test_a_read_only_sqlite_register_is_listed_and_verified(monkeypatch, capsys)
     monkeypatch.setattr(os, "access", lambda p, mode, **k: False if (
         mode == os.W_OK and str(p) in (path, os.path.dirname(path))) else real(p, mode, **k))
     assert main(["register", "list"]) == 0
-    assert capsys.readouterr().out.count("\n") == 3
+    assert capsys.readouterr().out.count("\n") == 4  # the header and three
     assert main(["register", "verify"]) == 0
     assert main(["register", "withdraw", numbers[0], "--reason", "x"]) == 2
     assert "read-only" in capsys.readouterr().err
