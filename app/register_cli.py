@@ -657,6 +657,16 @@ def run_register(argv: list[str]) -> int:
         _say(f"anglebench register: {rendered(reason_of(exc), words)}")
         return EXIT_BAD_INPUT
     except OSError as exc:
+        import errno
+
+        if exc.errno in (errno.ENOSPC, getattr(errno, "EDQUOT", errno.ENOSPC)):
+            # said in words, where (the folder written into), not "[Errno 28] …" (stop 63)
+            folder = os.path.dirname(os.path.abspath(exc.filename)) if exc.filename else "?"
+            _say(rendered(message(QT_TR_NOOP(
+                "anglebench register: the disk is full at {path}: nothing was written there; "
+                "the register is unchanged (free some space and try again)"), path=folder),
+                words))
+            return 1
         _say(rendered(message(QT_TR_NOOP("anglebench register: cannot write: {reason}"),
                               reason=str(exc)), words))
         return 1

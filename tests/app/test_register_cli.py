@@ -572,3 +572,25 @@ def test_verify_says_a_table_deleted_from_the_register_is_a_change(capsys):
     out = capsys.readouterr().out
     assert "CHANGED AFTER ISSUE" in out and "table(s) entries are gone" in out
     assert main(["register", "list"]) == 2  # any other command refuses to open it
+
+
+def test_a_full_disk_when_export_writes_is_said_in_words(tmp_path, monkeypatch, capsys):
+    """stop 63: 'cannot write: [Errno 28] No space left on device: …'; now where, and that
+    nothing was written and the register is unchanged."""
+    import errno
+
+    import app.register_cli as register_cli
+
+    _three()
+    before = main(["register", "head"]), capsys.readouterr().out
+
+    def full(path, data):
+        raise OSError(errno.ENOSPC, "No space left on device", str(tmp_path / ".all.zip.tmp"))
+
+    monkeypatch.setattr(register_cli, "write_bytes_atomic", full)
+    assert main(["register", "export", str(tmp_path / "all.zip")]) == 1
+    err = capsys.readouterr().err
+    assert (f"the disk is full at {tmp_path}: nothing was written there; the register is "
+            "unchanged") in err and "Errno" not in err
+    assert not (tmp_path / "all.zip").exists()
+    assert (main(["register", "head"]), capsys.readouterr().out) == before
