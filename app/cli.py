@@ -102,6 +102,13 @@ def _parser(words, kinds: tuple[str, ...] | None = None,
                    help=words(QT_TR_NOOP("certificate metadata (lab, customer, item, "
                                          "standards…); without it the certificate is marked "
                                          "DRAFT")))
+    p.add_argument("--capture-record", metavar="RAW.csv", default="", help=words(QT_TR_NOOP(
+        "the instrument's output that 'anglebench capture --raw' wrote for these readings: "
+        "the certificate says which rows were captured and names its SHA-256; a captured "
+        "row that differs from it is refused")))
+    p.add_argument("--edited-after-capture", action="store_true", help=words(QT_TR_NOOP(
+        "with --capture-record: captured readings were edited on purpose; the certificate "
+        "lists every edit")))
     p.add_argument("--separate-calibration", metavar="REASON", default="",
                    help=words(QT_TR_NOOP("with --certificate: the item and date of calibration "
                                          "are those of a certificate still valid, and this is a "
@@ -330,6 +337,7 @@ def run_analyze(argv: list[str]) -> int:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
     inputs = [args.file] + ([args.metadata] if args.metadata else []) + (
+        [args.capture_record] if args.capture_record else []) + (
         [args.compare_after] if args.compare_after else []) + (
         [args.reference_dcc] if args.reference_dcc else [])
     if args.reference_dcc:
@@ -355,6 +363,14 @@ def run_analyze(argv: list[str]) -> int:
         return EXIT_BAD_INPUT
     if getattr(args, "signal_presets", None):
         inputs.append(args.signal_presets)
+    if (args.capture_record or args.edited_after_capture) and not args.certificate:
+        _say(words(QT_TR_NOOP("anglebench analyze: --capture-record and "
+                              "--edited-after-capture are for a certificate (--certificate)")))
+        return EXIT_BAD_INPUT
+    if args.edited_after_capture and not args.capture_record:
+        _say(words(QT_TR_NOOP("anglebench analyze: --edited-after-capture needs "
+                              "--capture-record (the capture the readings were edited after)")))
+        return EXIT_BAD_INPUT
     if args.dcc and not args.certificate:
         _say(words(QT_TR_NOOP("anglebench analyze: --dcc needs --certificate (the DCC embeds the "
                               "PDF certificate)")))
@@ -619,14 +635,59 @@ def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
         raise MetadataError(message("{path}: {reason}", path=path, reason=reason_of(exc))) from None
 
 
-def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows, report=False):
+def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows, report=False,
+           raw_capture: list | None = None):
     """Issue through the register (the number allocated there unless the details give one);
-    None after saying why it was refused."""
+    None after saying why it was refused. ``raw_capture``: the capture sessions behind the
+    rows (--capture-record), recorded with them and named on the certificate."""
     from models.register.location import register_url
 
     words = translator(args.language)
     return _issue_into(register_url(), args, kind, result, metadata, settings, rows, words,
-                       report)
+                       report, raw_capture)
+
+
+def _capture_record(args: argparse.Namespace, kind, settings, rows: list[list[str]]
+                    ) -> list[dict[str, Any]]:
+    """The capture session of --capture-record behind ``rows`` (app/capture_record.py),
+    checked against them as the window checks its sheet: a captured reading the file does
+    not hold as the instrument sent it is refused (CaptureRecordError naming the file and
+    the row), unless --edited-after-capture declares the edits (the certificate lists
+    them)."""
+    from app.capture_record import CaptureRecordError, capture_session
+    from app.certificate_issue import readings_edited_after_capture
+
+    path = args.capture_record
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read()
+    except OSError as exc:
+        raise CaptureRecordError(message(QT_TR_NOOP("{path}: cannot read ({value})"),
+                                         path=path, value=exc.strerror)) from None
+    table = read_table(args.file)
+    header = [str(cell).strip().lower() for cell in (table.header or [])]
+    same = len(table.rows) == len(rows)  # the file's rows are the sheet's (no own layout)
+    times = ([row[header.index("time_s")] if header.index("time_s") < len(row) else ""
+              for row in table.rows] if same and "time_s" in header else None)
+    keys = [c.key for c in kind.columns]
+    session = capture_session(path, data, Path(args.file).name, kind.key, keys, rows, times)
+    if args.edited_after_capture:
+        return [session]
+    for edit in readings_edited_after_capture(kind, kind.settings_with_defaults(settings), rows,
+                                              [session]):
+        line = table.line_numbers[edit.row] if same and 0 <= edit.row < len(rows) \
+            else edit.row + 1
+        if edit.what in ("edited", "cleared"):
+            raise CaptureRecordError(message(QT_TR_NOOP(
+                "{file}: row {row}, column '{column}': {now} here, {captured} in the capture "
+                "record {record}: nothing was issued (readings edited on purpose: run again "
+                "with --edited-after-capture, and the certificate lists each edit)"),
+                file=args.file, row=line, column=edit.column, now=edit.now or "—",
+                captured=edit.captured, record=path))
+        raise CaptureRecordError(message(QT_TR_NOOP(
+            "{file}: row {row}: {edit} (the capture record {record}): nothing was issued"),
+            file=args.file, row=line, edit=edit.text(), record=path))
+    return [session]
 
 
 def _write_pdf_and_dcc(args: argparse.Namespace, kind, result, document, words, settings) -> None:
@@ -676,7 +737,8 @@ def _specimen(args: argparse.Namespace, kind, result, document, words, settings)
         "recorded in no register"), number=number, path=args.certificate), words))
 
 
-def _issue_into(url, args, kind, result, metadata, settings, rows, words, report=False):
+def _issue_into(url, args, kind, result, metadata, settings, rows, words, report=False,
+                raw_capture: list | None = None):
     """``report``: the document is a test report, and is called one (ISO/IEC 17025 7.8.2.1 a))."""
     from app.certificate_issue import IssuedNotWritten, issue_certificate
     from models.register.store import Register, RegisterError
@@ -692,7 +754,8 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
                                        dcc=dcc, dcc_path=args.dcc or "",
                                        separate_calibration=getattr(args, "separate_calibration", ""),
                                        results=_issued_results(args) if args.results else None,
-                                       results_path=args.results or "")
+                                       results_path=args.results or "",
+                                       raw_capture=raw_capture)
     except RegisterError as exc:
         _say(rendered(message(QT_TR_NOOP("anglebench analyze: {reason}; no certificate was "
                                          "written"), reason=reason_of(exc)), words))
@@ -792,8 +855,27 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
     except MetadataError as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
+    raw_capture = None
+    if args.capture_record:
+        from app.capture_record import CaptureRecordError
+
+        try:
+            raw_capture = _capture_record(args, kind, settings, rows())
+        except CaptureRecordError as exc:
+            _say(f"anglebench analyze: {_why(exc, words)}")
+            return EXIT_BAD_INPUT
     try:
         document = kind.certificate_document(result, metadata, Path(args.file).name, settings)
+        if raw_capture:  # a draft or a specimen names the capture as the issue does
+            from app.certificate_issue import readings_edited_after_capture, readings_stated
+
+            origin, digest = readings_stated(kind.key, Path(args.file).name, rows(),
+                                             raw_capture)
+            document = dataclasses.replace(
+                kind.certificate_document(result, metadata, origin, settings),
+                raw_data_sha256=digest, edited_readings=tuple(
+                    e.text() for e in readings_edited_after_capture(
+                        kind, kind.settings_with_defaults(settings), rows(), raw_capture)))
     except MetadataError as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
@@ -802,7 +884,7 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
             _specimen(args, kind, result, document, words, settings)
         elif args.certificate and not draft_reasons(metadata):
             record = _issue(args, kind, result, metadata, settings, rows(),
-                            document.is_test_report)
+                            document.is_test_report, raw_capture)
             if record is None:
                 return EXIT_BAD_INPUT
             return 0  # the results file too, issued and recorded with it

@@ -1,7 +1,9 @@
 """``anglebench register``: the certificate register for audits, without a window.
 
-    anglebench register list [SEARCH]          newest first (number, status, certificate or test
-                                               report, date, workbench, serial, customer);
+    anglebench register list [SEARCH] [--json] newest first, aligned under a header (number,
+                                               date of issue, workbench / document, customer,
+                                               serial, state: issued, withdrawn, amended or
+                                               replaced by …; app/register_listing.py);
                                                SEARCH in number, serial, customer
     anglebench register show NUMBER            the record (--pdf OUT, --dcc OUT.xml, --project OUT
                                                to extract), its chain value and the head before it
@@ -22,8 +24,12 @@
 
 ``--register URL`` (or ANGLEBENCH_REGISTER) chooses the register; the default is the
 SQLite file in the user's data folder. Exit 2 with one line for a refusal; ``verify``
-exits 1 for a PDF the register does not know or a register whose records were changed after
-issue (the hash chain, checked on every opening: each command warns). What it prints, its help included, is in
+exits 0 when everything it checked is as issued, 1 for a file (PDF, DCC, results file) the
+register did not issue (altered, a draft, another register's), 2 for a command it cannot
+carry out (the arguments, a file that cannot be read, a register that cannot be reached) and
+3 for a register whose records were changed after issue (the hash chain, the stored files,
+a head no longer in the chain; checked on every opening: each command warns) — 3 before 1
+when both are found. What it prints, its help included, is in
 the language of ``--language`` (default: the system's); the listing's workbench keys and
 the export's ``index.csv`` keep the register's own English words.
 """
@@ -47,6 +53,17 @@ from models.project.output_guard import OutputRefused, check_outputs, register_f
 from models.register.location import register_url
 from models.register.wording import kind_words, revision_words, status_words
 from models.spreadsheet_cell import spreadsheet_safe
+
+#: ``verify``'s exit status when everything it checked is as issued
+EXIT_VERIFIED = 0
+#: ``verify``'s exit status for a file (PDF, DCC, results file) the register did not issue
+EXIT_NOT_ISSUED = 1
+#: ``verify``'s exit status for a register whose records were changed after issue ("CHANGED
+#: AFTER ISSUE"): it wins over :data:`EXIT_NOT_ISSUED` (a command that cannot be carried
+#: out — the arguments, an unreadable file, an unreachable register — is EXIT_BAD_INPUT, 2)
+EXIT_REGISTER_CHANGED = 3
+#: how every finding of a change after issue begins (the English text of its message)
+CHANGED_AFTER_ISSUE = "CHANGED AFTER ISSUE"
 
 #: what ``show`` lists of a record, named as the register's columns (translated as names)
 SHOWN = (QT_TR_NOOP("supersedes"), QT_TR_NOOP("superseded_by"), QT_TR_NOOP("issue_date"),
@@ -76,6 +93,8 @@ def _parser(words) -> argparse.ArgumentParser:
     listing.add_argument("search", nargs="?", default="",
                          help=words(QT_TR_NOOP("text to find in the number, the serial or the "
                                                "customer")))
+    listing.add_argument("--json", action="store_true",  # the register's own English words
+                         help=words(QT_TR_NOOP("print JSON instead of a summary")))
     show = sub.add_parser("show", help=words(QT_TR_NOOP("one certificate's record")))
     show.add_argument("number", help=words(QT_TR_NOOP("the certificate number")))
     show.add_argument("--pdf", metavar="OUT.pdf",
@@ -248,13 +267,46 @@ def _export(register, out: str, words) -> int:
 
 def _verify(register, path: str, words, head: str = "", head_from: str = "") -> int:
     """The register's hash chain and stored PDFs; then, if given, the PDF at ``path`` and
-    the head ``head`` (or the one printed on the certificate ``head_from``)."""
+    the head ``head`` (or the one printed on the certificate ``head_from``). The exit
+    status: :data:`EXIT_REGISTER_CHANGED` when any finding is a change after issue, else
+    :data:`EXIT_NOT_ISSUED` for a file the register did not issue, else
+    :data:`EXIT_VERIFIED`. The files named are read first: one that cannot be read (or a
+    certificate that prints no head) is a RegisterError, said before anything is checked
+    (exit 2), never after the register's own findings (they were: a tampered register and a
+    mistyped file name both exited 2)."""
     from models.register.chain import head_in_pdf
-    from models.register.printed_place import head_before_changed, in_this_chain, say_its_place
+    from models.register.printed_place import ALTERED_OR_REPLACED
     from models.register.store import RegisterError
 
+    changed = False
+
     def out(text) -> None:
+        nonlocal changed
+        # a PDF altered or its record replaced (the register cannot tell which): the file
+        changed = changed or (str(text).startswith(CHANGED_AFTER_ISSUE) and getattr(
+            text, "template", "") != ALTERED_OR_REPLACED)
         sys.stdout.write(rendered(text, words) + "\n")
+
+    certificate = _read(head_from) if head_from else b""
+    if head_from:
+        head = head_in_pdf(certificate)
+        if not head:
+            raise RegisterError(message(QT_TR_NOOP(
+                "{path}: no register chain head printed in it (a draft, a specimen, or issued "
+                "before AngleBench printed the head)"), path=head_from))
+    data = _read(path) if path else b""
+    status = _verify_findings(register, path, data, out, head, head_from, certificate)
+    if changed or status == EXIT_REGISTER_CHANGED:
+        return EXIT_REGISTER_CHANGED
+    return EXIT_NOT_ISSUED if status else EXIT_VERIFIED
+
+
+def _verify_findings(register, path: str, data: bytes, out, head: str, head_from: str,
+                     certificate: bytes) -> int:
+    """What :func:`_verify` finds, said through ``out``: 1 when something is not as issued
+    (:data:`EXIT_REGISTER_CHANGED` when the register's records say they were changed in a
+    line that does not begin "CHANGED AFTER ISSUE"), else 0."""
+    from models.register.printed_place import head_before_changed, in_this_chain, say_its_place
 
     problems = register.audit(pdfs=True)
     for problem in problems:
@@ -267,14 +319,6 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
                                "file(s) recorded at issue"), certificates=len(register.list()),
                     results=len(register.results_records())))
     failed = bool(problems)
-    certificate = b""
-    if head_from:
-        certificate = _read(head_from)
-        head = head_in_pdf(certificate)
-        if not head:
-            raise RegisterError(message(QT_TR_NOOP(
-                "{path}: no register chain head printed in it (a draft, a specimen, or issued "
-                "before AngleBench printed the head)"), path=head_from))
     if head:
         found = register.find_head(head)
         if found is None:
@@ -290,7 +334,6 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
                 failed = True
     if not path:
         return 1 if failed else 0
-    data = _read(path)
     if path.lower().endswith((".xlsx", ".csv")):  # a results file issued with a certificate
         return _verify_results(register, path, data, out) or int(failed)
     is_dcc = path.lower().endswith(".xml")  # a digital calibration certificate received
@@ -300,7 +343,7 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
             "{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued once, "
             "so all but one were copied into the register after issue"), path=path,
             n=len(found), numbers=", ".join(r.number for r in found)))
-        return 1
+        return EXIT_REGISTER_CHANGED  # the register's records, not the file, were changed
     record = found[0] if found else None
     if record is None:
         out(message(QT_TR_NOOP(
@@ -501,6 +544,10 @@ def run_register(argv: list[str]) -> int:
         _say(f"anglebench register: {rendered(reason_of(exc), words)}")
         return EXIT_BAD_INPUT
     try:
+        if args.command == "verify":  # a file that cannot be read: exit 2, nothing checked
+            for named in (args.pdf, args.head_from):
+                if named:
+                    _read(named)
         try:
             register = Register(url)
         except RegisterTampered as exc:
@@ -508,18 +555,34 @@ def run_register(argv: list[str]) -> int:
                 raise
             sys.stdout.write(rendered(message(QT_TR_NOOP("CHANGED AFTER ISSUE: {problem}"),
                                               problem=reason_of(exc)), words) + "\n")
-            return 1
+            return EXIT_REGISTER_CHANGED
         with register:
             if args.command != "verify":
                 for problem in register.problems:
                     _say(rendered(message(QT_TR_NOOP("anglebench register: WARNING: {problem}"),
                                           problem=problem), words))
             if args.command == "list":
-                for r in register.list(args.search):
-                    status = rendered(status_words(r.status), words)
-                    kind = rendered(kind_words(r.document_kind), words)
-                    sys.stdout.write(f"{r.number}\t{status}\t{kind}\t{r.issue_date}\t"
-                                     f"{r.workbench}\t{r.item_serial}\t{r.customer}\n")
+                from app.register_listing import listing_json, listing_lines
+
+                records = register.list(args.search)
+                revisions = {r.number: r.revision for r in records}
+
+                def revision_of(number: str) -> str:  # of the one that superseded a record
+                    if number not in revisions:
+                        try:
+                            revisions[number] = register.get(number).revision
+                        except RegisterError:
+                            revisions[number] = ""
+                    return revisions[number]
+
+                if args.json:
+                    import json
+
+                    sys.stdout.write(json.dumps(listing_json(records, revision_of), indent=1,
+                                                ensure_ascii=False) + "\n")
+                    return 0
+                for line in listing_lines(records, revision_of, words):
+                    sys.stdout.write(line + "\n")
                 return 0
             if args.command == "show":
                 record = register.get(args.number)
@@ -597,6 +660,16 @@ def run_register(argv: list[str]) -> int:
         _say(f"anglebench register: {rendered(reason_of(exc), words)}")
         return EXIT_BAD_INPUT
     except OSError as exc:
+        import errno
+
+        if exc.errno in (errno.ENOSPC, getattr(errno, "EDQUOT", errno.ENOSPC)):
+            # said in words, where (the folder written into), not "[Errno 28] …" (stop 63)
+            folder = os.path.dirname(os.path.abspath(exc.filename)) if exc.filename else "?"
+            _say(rendered(message(QT_TR_NOOP(
+                "anglebench register: the disk is full at {path}: nothing was written there; "
+                "the register is unchanged (free some space and try again)"), path=folder),
+                words))
+            return 1
         _say(rendered(message(QT_TR_NOOP("anglebench register: cannot write: {reason}"),
                               reason=str(exc)), words))
         return 1

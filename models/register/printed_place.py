@@ -14,7 +14,15 @@ from models.messages import QT_TR_NOOP, Message, message, reason_of
 from models.register.chain import head_in_pdf
 from models.register.store import CertificateRecord, Register, RegisterError
 
-__all__ = ["head_before_changed", "in_this_chain", "say_its_place"]
+__all__ = ["ALTERED_OR_REPLACED", "head_before_changed", "in_this_chain", "say_its_place"]
+
+#: a PDF that prints a head of the chain whose next record is another: the PDF altered, or
+#: the record replaced — which, the register cannot tell (``register verify`` counts it as
+#: a file it did not issue, exit 1, unless the register's own checks find a change)
+ALTERED_OR_REPLACED = QT_TR_NOOP(
+    "CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but "
+    "record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, "
+    "or the register's record of it was replaced")
 
 
 def say_its_place(register: Register, path: str, data: bytes,
@@ -64,10 +72,7 @@ def say_its_place(register: Register, path: str, data: bytes,
         return False
     other = (check.record.number if check.record is not None else check.after
              or message(QT_TR_NOOP("not there")))
-    out(message(QT_TR_NOOP(
-        "CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but "
-        "record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, "
-        "or the register's record of it was replaced"), path=path, number=name, seq=place,
+    out(message(ALTERED_OR_REPLACED, path=path, number=name, seq=place,
         other=other, elsewhere=message(QT_TR_NOOP(" (its SHA-256 is record {numbers}'s)"),
                                        numbers=check.elsewhere) if check.elsewhere else ""))
     return False

@@ -22,6 +22,7 @@ from __future__ import annotations
 import builtins
 import dataclasses
 import datetime as dt
+import errno
 import hashlib
 import importlib.metadata
 import json
@@ -37,7 +38,7 @@ from typing import TYPE_CHECKING, Any, BinaryIO
 
 from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
-from models.messages import QT_TR_NOOP, message, reason_of, separated
+from models.messages import QT_TR_NOOP, Message, message, reason_of, separated
 from models.project.output_guard import TURN_FILE_SUFFIX
 from models.register.chain import CHAINED, CHAINED_V2, CHAINED_V3, CHAINED_V4, GENESIS, link
 from models.register.wording import DOCUMENT_KINDS, kind_words
@@ -312,6 +313,9 @@ class Register:
             raise RegisterError(reason_of(exc)) from None
 
         self._sa, self._schema = sa, schema
+        #: the numbers :meth:`issue` issued through this object whose results file is not
+        #: recorded yet: the only ones :meth:`record_results` records for (stop 63)
+        self._results_due: set[str] = set()
         self.url = _normalise_url(url)
         self.is_sqlite = self.url.startswith("sqlite")
         self.read_only = False
@@ -407,6 +411,16 @@ class Register:
                 "register {display_url}: schema version {version} is no version AngleBench "
                 "ever made: it was changed outside AngleBench; the register is not opened"),
                 display_url=self.display_url, version=version))
+        if version == schema.LATEST:
+            # a table of the register gone (dropped outside AngleBench): said as a change
+            # after issue, not as a register that cannot be read ("no such table: entries")
+            held = set(self._sa.inspect(conn).get_table_names())
+            missing = sorted(name for name in schema.METADATA.tables if name not in held)
+            if missing:
+                raise RegisterTampered(message(QT_TR_NOOP(
+                    "register {display_url}: its table(s) {tables} are gone: deleted outside "
+                    "AngleBench; the register is not opened; restore it from a backup"),
+                    display_url=self.display_url, tables=", ".join(missing)))
         evidence = schema.downgrade_evidence(conn, version)
         if evidence:
             raise RegisterTampered(message(QT_TR_NOOP(
@@ -495,7 +509,13 @@ class Register:
                     conn.execute(self._sa.text(
                         f"SET LOCAL lock_timeout = '{LOCK_TIMEOUT_S}s'"))
                 yield conn
+        except OSError as exc:
+            if exc.errno in _DISK_FULL:  # rolled back: said in words, not "[Errno 28] …"
+                raise RegisterError(self._disk_full(exc.filename)) from None
+            raise
         except self._sa.exc.SQLAlchemyError as exc:  # a unique number taken meanwhile too
+            if _is_disk_full(exc):
+                raise RegisterError(self._disk_full()) from None
             reason = _reason(exc)
             if getattr(getattr(exc, "orig", None), "sqlstate", "") == "55P03":
                 reason = message(QT_TR_NOOP(
@@ -504,6 +524,16 @@ class Register:
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=reason)) from None
+
+    def _disk_full(self, path: str | None = None) -> Message:
+        """What a write that found the disk full says: where (the file the system named, or
+        the register's file; a server's register by its URL), and that the transaction was
+        rolled back: nothing recorded, the register as it was (it said "[Errno 28] No space
+        left on device", stop 63)."""
+        where = str(path or self._sqlite_path or self.display_url)
+        return message(QT_TR_NOOP(
+            "the disk is full at {path}: nothing was recorded; the register is unchanged "
+            "(free some space and try again)"), path=where)
 
     def _lock_holders(self) -> str:
         """PostgreSQL: the sessions holding the register's locks (user, program, client,
@@ -893,6 +923,8 @@ class Register:
                             conn.execute(certificates.update().where(
                                 certificates.c.number == original.number).values(
                                 status="superseded", superseded_by=plan.number))
+                        # its results file may now be recorded, by this issuer only
+                        self._results_due.add(plan.number)
                         return record, pdf
                 turn.take()  # another issue came first: render again, in turn
         raise RegisterError(message(QT_TR_NOOP(
@@ -1104,7 +1136,17 @@ class Register:
         the current one (issued, not superseded or withdrawn) and have no results file yet:
         one per certificate, recorded at its issue (a corrected results file comes with the
         certificate's amendment, under the amendment's number; rev62 F7: a later call made
-        any file "identical to the record"). Returns the entry's chain value."""
+        any file "identical to the record"). Only the issuer records it: ``number`` must have
+        been issued by :meth:`issue` of this object (stop 63: any caller could give a
+        certificate issued earlier without one any file, which ``verify`` then called "the
+        results file of certificate N, identical to the record"). Returns the entry's chain
+        value."""
+        if number not in self._results_due:
+            raise RegisterError(message(QT_TR_NOOP(
+                "no results file is recorded for {number}: a results file is recorded by the "
+                "issue of its certificate, right after it, and {number} was not issued by "
+                "this issue (a certificate without one gets one with its amendment)"),
+                number=number))
         entry = {"sha256": hashlib.sha256(data).hexdigest(), "file": name}
         entries = self._schema.ENTRIES
         with self._write() as conn:
@@ -1120,7 +1162,9 @@ class Register:
                     "{recorded_at}: a certificate has one, recorded when it is issued (a "
                     "corrected one comes with its amendment)"), number=number,
                     recorded_at=earlier.recorded_at))
-            return self._append_entry(conn, "results", number, entry)
+            chain = self._append_entry(conn, "results", number, entry)
+        self._results_due.discard(number)
+        return chain
 
     def results_records(self, number: str = "") -> builtins.list[dict]:
         """The results files recorded (every certificate's, or ``number``'s), in the chain's
@@ -2023,6 +2067,23 @@ def _with_metadata(project_json: str, workbench: str, meta: CertificateMetadata)
     certificates[workbench] = meta.to_dict()
     data.setdefault("metadata", {})["certificates"] = certificates
     return json.dumps(data, ensure_ascii=False)
+
+
+#: the errors of a write that found no room: the disk full, the user's quota used up
+_DISK_FULL = frozenset(code for code in (errno.ENOSPC, getattr(errno, "EDQUOT", None))
+                       if code is not None)
+
+
+def _is_disk_full(exc: Exception) -> bool:
+    """A database error that is a full disk: SQLite's SQLITE_FULL ("database or disk is
+    full"), PostgreSQL's disk_full (53100), or an OSError of :data:`_DISK_FULL` under it."""
+    orig = getattr(exc, "orig", None)
+    if isinstance(orig, OSError) and orig.errno in _DISK_FULL:
+        return True
+    if getattr(orig, "sqlstate", "") == "53100" or getattr(orig, "pgcode", "") == "53100":
+        return True
+    return getattr(orig, "sqlite_errorname", "") == "SQLITE_FULL" or (
+        "database or disk is full" in str(orig or ""))
 
 
 def _reason(exc: Exception) -> str:

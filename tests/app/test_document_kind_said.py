@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import datetime as dt
 import json
+import re
 from unittest import mock
 
 import pytest
@@ -85,9 +86,10 @@ def test_register_list_and_show_say_which_is_a_test_report(samples_dir, tmp_path
     err = capsys.readouterr().err
     assert f"Test report {REPORT} issued" in err and f"Certificate {CERTIFICATE} issued" in err
     assert main(["register", "list"]) == 0
-    listed = [line.split("\t")[:4] for line in capsys.readouterr().out.splitlines()]
-    assert listed == [[CERTIFICATE, "issued", "Calibration certificate", listed[0][3]],
-                      [REPORT, "issued", "Test report", listed[1][3]]]
+    listed = [re.split(r"\s{2,}", line) for line in capsys.readouterr().out.splitlines()[1:]]
+    assert [(row[0], row[2], row[-1]) for row in listed] == [
+        (CERTIFICATE, "polygon / Calibration certificate", "issued"),
+        (REPORT, "positioning / Test report", "issued")]
     assert main(["register", "show", REPORT]) == 0
     shown = capsys.readouterr().out.splitlines()
     assert shown[:2] == [f"{REPORT}  (issued)", "  Document: Test report"]

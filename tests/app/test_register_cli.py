@@ -40,9 +40,9 @@ def test_issue_list_show_verify_export(samples_dir, tmp_path, capsys):
     assert code == 0 and "AB-2026-0042" in err
     code, err = issue(samples_dir, tmp_path, "c", capsys, item_serial="RX-26-0817")  # once only
     assert code == 2 and "AB-2026-0042 was issued on" in err and not (tmp_path / "c.pdf").exists()
-    assert main(["register", "list", "RX-26"]) == 0
-    listed = capsys.readouterr().out.splitlines()
-    assert [line.split("\t")[0] for line in listed] == ["AB-2026-0042", f"AB-{year}-0001"]
+    assert main(["register", "list", "RX-26", "--json"]) == 0
+    listed = json.loads(capsys.readouterr().out)
+    assert [r["number"] for r in listed] == ["AB-2026-0042", f"AB-{year}-0001"]
     assert main(["register", "show", f"AB-{year}-0001", "--pdf", str(tmp_path / "copy.pdf"),
                  "--project", str(tmp_path / "p.json")]) == 0
     shown = capsys.readouterr().out
@@ -147,7 +147,7 @@ def test_verify_names_the_replacement_and_show_refuses_a_changed_pdf(samples_dir
     assert main(["register", "show", original, "--pdf", str(tmp_path / "out.pdf")]) == 2
     assert "no longer matches the SHA-256" in capsys.readouterr().err
     assert not (tmp_path / "out.pdf").exists()
-    assert main(["register", "verify"]) == 1
+    assert main(["register", "verify"]) == 3
     assert "stored PDF does not match" in capsys.readouterr().out
 
 
@@ -175,13 +175,13 @@ def _sql(*statements: str) -> None:
 def test_verify_and_opening_find_a_version_set_back_and_a_truncated_tail(capsys):
     numbers = _three()
     _sql("UPDATE schema_version SET version = 2")
-    assert main(["register", "verify"]) == 1
+    assert main(["register", "verify"]) == 3
     assert "CHANGED AFTER ISSUE" in capsys.readouterr().out
     assert main(["register", "list"]) == 2
     assert "schema version 2 was set back" in capsys.readouterr().err
     _sql("UPDATE schema_version SET version = 7",  # the version it was at
          f"DELETE FROM certificates WHERE number = '{numbers[-1]}'")
-    assert main(["register", "verify"]) == 1
+    assert main(["register", "verify"]) == 3
     out = capsys.readouterr().out
     assert "records were deleted" in out and "no record was numbered 3" in out
     assert main(["register", "list"]) == 0
@@ -196,7 +196,7 @@ def test_head_verify_head_show_and_withdraw(tmp_path, capsys):
     assert len(head) == 64
     assert main(["register", "verify", "--head", head[:16]]) == 0
     assert "the history up to it is still there" in capsys.readouterr().out
-    assert main(["register", "verify", "--head", "f" * 20]) == 1
+    assert main(["register", "verify", "--head", "f" * 20]) == 3
     assert "is not in the register's chain" in capsys.readouterr().out
     assert main(["register", "show", numbers[1], "--pdf", str(tmp_path / "2.pdf")]) == 0
     shown = capsys.readouterr().out
@@ -207,8 +207,9 @@ def test_head_verify_head_show_and_withdraw(tmp_path, capsys):
     assert main(["register", "verify", str(tmp_path / "2.pdf")]) == 0
     out = capsys.readouterr().out
     assert f"{numbers[1]} is no longer valid: withdrawn (wrong item)" in out
-    assert main(["register", "list"]) == 0
-    assert f"{numbers[1]}\twithdrawn" in capsys.readouterr().out
+    assert main(["register", "list", "--json"]) == 0
+    assert {r["number"]: r["state"] for r in json.loads(capsys.readouterr().out)}[
+        numbers[1]] == "withdrawn"
     assert main(["register", "withdraw", numbers[1], "--reason", "again"]) == 2
     assert "was withdrawn" in capsys.readouterr().err
 
@@ -250,13 +251,13 @@ def test_a_certificate_whose_record_was_deleted_is_named_by_its_head_and_stops_i
     _truncate_consistently(numbers[2])
     assert main(["register", "verify"]) == 0  # the register agrees with itself
     capsys.readouterr()
-    assert main(["register", "verify", "--head-from", str(tmp_path / "3.pdf")]) == 1
+    assert main(["register", "verify", "--head-from", str(tmp_path / "3.pdf")]) == 3
     out = capsys.readouterr().out
     assert (f"CHANGED AFTER ISSUE: {tmp_path / '3.pdf'} ({numbers[2]}) was issued as record "
             "3, right after the head it prints, but the register's chain ends at that head "
             "and no record has its SHA-256: its record was deleted after issue") in out
     assert "recorded in the register: nothing is issued" in out
-    assert main(["register", "verify"]) == 1  # from now on, on every opening
+    assert main(["register", "verify"]) == 3  # from now on, on every opening
     assert f"certificate {numbers[2]}: its PDF (SHA-256" in capsys.readouterr().out
     meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
                                item_serial="RX-2")
@@ -265,7 +266,7 @@ def test_a_certificate_whose_record_was_deleted_is_named_by_its_head_and_stops_i
                                  "into a broken chain"):
         register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
                        lambda m, head="": b"%PDF again")
-    assert main(["register", "verify", "--head-from", str(tmp_path / "2.pdf")]) == 1
+    assert main(["register", "verify", "--head-from", str(tmp_path / "2.pdf")]) == 3
     assert f"2.pdf: {numbers[1]} is record 2, right after that head" in capsys.readouterr().out
 
 
@@ -299,7 +300,7 @@ def test_a_read_only_sqlite_register_is_listed_and_verified(monkeypatch, capsys)
     monkeypatch.setattr(os, "access", lambda p, mode, **k: False if (
         mode == os.W_OK and str(p) in (path, os.path.dirname(path))) else real(p, mode, **k))
     assert main(["register", "list"]) == 0
-    assert capsys.readouterr().out.count("\n") == 3
+    assert capsys.readouterr().out.count("\n") == 4  # the header and three
     assert main(["register", "verify"]) == 0
     assert main(["register", "withdraw", numbers[0], "--reason", "x"]) == 2
     assert "read-only" in capsys.readouterr().err
@@ -313,7 +314,7 @@ def test_a_pdf_copied_into_a_second_record_is_said(tmp_path, capsys):
          f"'{numbers[0]}'), pdf_sha256 = (SELECT pdf_sha256 FROM certificates WHERE number = "
          f"'{numbers[0]}') WHERE number = '{numbers[2]}'")
     capsys.readouterr()
-    assert main(["register", "verify", str(tmp_path / "1.pdf")]) == 1
+    assert main(["register", "verify", str(tmp_path / "1.pdf")]) == 3
     out = capsys.readouterr().out
     assert f"its SHA-256 is in 2 records ({numbers[0]}, {numbers[2]})" in out
 
@@ -398,7 +399,7 @@ def test_show_writes_the_dcc_as_issued_and_verify_checks_it(tmp_path, capsys):
     assert main(["register", "show", number, "--dcc", str(tmp_path / "changed.xml")]) == 2
     assert "stored DCC of" in capsys.readouterr().err
     assert not (tmp_path / "changed.xml").exists()
-    assert main(["register", "verify"]) == 1
+    assert main(["register", "verify"]) == 3
     assert "stored DCC does not match" in capsys.readouterr().out
 
 
@@ -529,3 +530,67 @@ def test_show_states_a_corrected_customer_maker_and_description(capsys):
             f"Other Corp; customer corrected from Acme Optics (on {first}) to Another Customer "
             f"Ltd; item description changed from Limited-rotation axis (on {first}) to 24-face "
             "polygon; typo") in shown
+
+
+def test_verify_tells_a_changed_register_from_a_wrong_command_line(tmp_path, capsys):
+    """stop 63: ``register verify`` exited 2 both for a register whose records were changed
+    after issue and for a command line it could not carry out; a file read after the
+    register's findings made a tampered register exit 2. Now: 0 verified, 1 a file the
+    register did not issue, 2 the command line (nothing checked), 3 the register changed
+    (before 1 when both)."""
+    numbers = _three()
+    assert main(["register", "show", numbers[0], "--pdf", str(tmp_path / "1.pdf")]) == 0
+    (tmp_path / "other.pdf").write_bytes(b"%PDF not issued here")
+    capsys.readouterr()
+    assert main(["register", "verify", str(tmp_path / "1.pdf")]) == 0
+    assert main(["register", "verify", str(tmp_path / "other.pdf")]) == 1
+    capsys.readouterr()
+    with pytest.raises(SystemExit) as refused:
+        main(["register", "verify", "--nonsense"])
+    assert refused.value.code == 2
+    for wrong in (["verify", str(tmp_path / "missing.pdf")],
+                  ["verify", "--head-from", str(tmp_path / "other.pdf")]):
+        assert main(["register", *wrong]) == 2, wrong
+        assert "CHANGED AFTER ISSUE" not in capsys.readouterr().out
+    _sql(f"UPDATE certificates SET customer = 'Someone else' WHERE number = '{numbers[1]}'")
+    assert main(["register", "verify"]) == 3
+    assert "CHANGED AFTER ISSUE: record" in capsys.readouterr().out
+    assert main(["register", "verify", str(tmp_path / "other.pdf")]) == 3  # before 1
+    assert "NOT in the register" in capsys.readouterr().out
+    # the command line still comes first: nothing is checked, exit 2, the file named
+    assert main(["register", "verify", str(tmp_path / "missing.pdf")]) == 2
+    captured = capsys.readouterr()
+    assert "missing.pdf: cannot read" in captured.err and captured.out == ""
+
+
+def test_verify_says_a_table_deleted_from_the_register_is_a_change(capsys):
+    """A table dropped outside AngleBench was "register …: no such table: entries", exit 2
+    (a register that cannot be reached); it is a change after issue, exit 3."""
+    _three()
+    _sql("DROP TABLE entries")
+    assert main(["register", "verify"]) == 3
+    out = capsys.readouterr().out
+    assert "CHANGED AFTER ISSUE" in out and "table(s) entries are gone" in out
+    assert main(["register", "list"]) == 2  # any other command refuses to open it
+
+
+def test_a_full_disk_when_export_writes_is_said_in_words(tmp_path, monkeypatch, capsys):
+    """stop 63: 'cannot write: [Errno 28] No space left on device: …'; now where, and that
+    nothing was written and the register is unchanged."""
+    import errno
+
+    import app.register_cli as register_cli
+
+    _three()
+    before = main(["register", "head"]), capsys.readouterr().out
+
+    def full(path, data):
+        raise OSError(errno.ENOSPC, "No space left on device", str(tmp_path / ".all.zip.tmp"))
+
+    monkeypatch.setattr(register_cli, "write_bytes_atomic", full)
+    assert main(["register", "export", str(tmp_path / "all.zip")]) == 1
+    err = capsys.readouterr().err
+    assert (f"the disk is full at {tmp_path}: nothing was written there; the register is "
+            "unchanged") in err and "Errno" not in err
+    assert not (tmp_path / "all.zip").exists()
+    assert (main(["register", "head"]), capsys.readouterr().out) == before

@@ -14,6 +14,7 @@ report; the polygon's is a calibration certificate."""
 from __future__ import annotations
 
 import datetime as dt
+import hashlib
 import json
 import re
 import shutil
@@ -380,7 +381,10 @@ def test_register_verify_of_a_record_issued_before_kinds_were_recorded(tmp_path,
     number = "AB-2026-0001-A1"  # issued by 0.8.11: its kind not recorded
     with Register(url_for_path(str(url))) as register:
         assert register.get(number).document_kind is None
-        register.record_results(number, b"face,deviation\r\n1,0.1\r\n", "r.csv")
+        with register._write() as conn:  # a results record of 0.8.11, as it wrote it
+            register._append_entry(conn, "results", number, {
+                "sha256": hashlib.sha256(b"face,deviation\r\n1,0.1\r\n").hexdigest(),
+                "file": "r.csv"})
     (tmp_path / "r.csv").write_bytes(b"face,deviation\r\n1,0.1\r\n")
     assert main(["register", "show", number, "--pdf", str(tmp_path / "a1.pdf")]) == 0
     capsys.readouterr()

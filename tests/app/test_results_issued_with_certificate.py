@@ -131,5 +131,5 @@ def test_a_results_record_changed_after_issue_breaks_the_chain(samples_dir, tmp_
     engine.dispose()
     (tmp_path / "altered.xlsx").write_bytes(altered)
     capsys.readouterr()
-    assert main(["register", "verify", str(tmp_path / "altered.xlsx")]) == 1
+    assert main(["register", "verify", str(tmp_path / "altered.xlsx")]) == 3
     assert "CHANGED AFTER ISSUE" in capsys.readouterr().out

@@ -300,14 +300,17 @@ def test_a_results_file_is_one_certificates_and_verify_says_whose(samples_dir, t
     edited = one.read_bytes() + b"\0"
     with Register(register_url()) as register:
         for data in (edited, two.read_bytes()):  # a second results file of a certificate
-            with pytest.raises(RegisterError, match=(
-                    f"certificate {first} already has its results file, recorded .*: a "
-                    "certificate has one, recorded when it is issued")):
+            with pytest.raises(RegisterError, match=(  # only its issue records one
+                    f"no results file is recorded for {first}: a results file is recorded "
+                    "by the issue of its certificate")):
                 register.record_results(first, data, "one.xlsx")
-        # what an API call may still do: a certificate without one given another's file
-        register.record_results(third, two.read_bytes(), "two.xlsx")
+        # what a script writing into the database may still do (record_results refuses a
+        # certificate it did not just issue): a certificate without one given another's file
+        with register._write() as conn:
+            register._append_entry(conn, "results", third,
+                                   {"sha256": _sha(two), "file": "two.xlsx"})
     capsys.readouterr()
-    assert main(["register", "verify", str(two)]) == 1
+    assert main(["register", "verify", str(two)]) == 3
     out = capsys.readouterr().out
     assert (f"CHANGED AFTER ISSUE: {two}: its SHA-256 is recorded as the results file of 2 "
             f"certificates ({second}, {third}): a results file is written with one "
@@ -338,7 +341,7 @@ def test_a_second_results_record_of_a_certificate_is_found(samples_dir, tmp_path
         register._append_entry(conn, "results", number,  # what record_results did before
                                {"sha256": _sha(edited), "file": "one.xlsx"})
     capsys.readouterr()
-    assert main(["register", "verify", str(edited)]) == 1
+    assert main(["register", "verify", str(edited)]) == 3
     out = capsys.readouterr().out
     assert (f"CHANGED AFTER ISSUE: certificate {number}: 2 results files recorded, where a "
             "certificate has one (recorded at its issue): all but the first were added after "

@@ -1,0 +1,80 @@
+"""A full disk during a register write (stop 63: it was reported as "[Errno 28] No space
+left on device", or SQLite's "database or disk is full"): said in words — where, that
+nothing was recorded, that the register is unchanged — and the register is unchanged."""
+
+from __future__ import annotations
+
+import errno
+
+import pytest
+import sqlalchemy as sa
+
+from app.main import main
+from models.certificate.metadata import CertificateMetadata
+from models.register.location import register_url
+from models.register.store import IssueRequest, Register, RegisterError
+
+META = CertificateMetadata(approver="Dr. Li", calibration_date="2026-01-01",
+                           item_serial="RX-1")
+
+
+def _issued(register: Register, n: int = 1) -> list[str]:
+    return [register.issue(IssueRequest("polygon", META, '{"workbenches": {}}'),
+                           lambda m, head="": f"%PDF {m.certificate_number}".encode()
+                           )[0].number for _ in range(n)]
+
+
+def _state(register: Register) -> tuple:
+    """What the register holds: its head, its record count, each record's status."""
+    return (register.chain_head(), register.chain_records(),
+            [(r.number, r.status) for r in register.list()])
+
+
+def test_enospc_on_a_register_write_is_said_in_words_and_records_nothing(monkeypatch,
+                                                                         capsys):
+    with Register(register_url()) as register:
+        number = _issued(register)[0]
+        before = _state(register)
+    path = register_url().split("///", 1)[1]
+    kept = Register._set_state
+
+    def full(self, conn, records, head):  # the entry is written; the state's write fails
+        kept(self, conn, records, head)
+        raise OSError(errno.ENOSPC, "No space left on device", path)
+
+    monkeypatch.setattr(Register, "_set_state", full)
+    assert main(["register", "withdraw", number, "--reason", "wrong item"]) == 2
+    err = capsys.readouterr().err
+    assert (f"the disk is full at {path}: nothing was recorded; the register is "
+            "unchanged") in err
+    assert "Errno" not in err and "28" not in err.replace(path, "")
+    monkeypatch.setattr(Register, "_set_state", kept)
+    with Register(register_url()) as register:
+        assert _state(register) == before and register.problems == []
+    assert main(["register", "verify"]) == 0
+
+
+def test_sqlites_disk_full_on_an_issue_is_said_in_words(capsys):
+    """SQLite reports ENOSPC as SQLITE_FULL: the same words, the issue not recorded."""
+    with Register(register_url()) as register:
+        _issued(register)
+        before = _state(register)
+        path = register_url().split("///", 1)[1]
+
+        @sa.event.listens_for(register.engine, "connect")
+        def no_room(dbapi_connection, _record) -> None:  # the file may grow no more
+            pages = dbapi_connection.execute("PRAGMA page_count").fetchone()[0]
+            dbapi_connection.execute(f"PRAGMA max_page_count = {pages}")
+
+        register.engine.dispose()  # new connections: with the limit
+        big = CertificateMetadata(approver="Dr. Li", calibration_date="2026-01-02",
+                                  item_serial="RX-2")
+        with pytest.raises(RegisterError) as refused:
+            register.issue(IssueRequest("polygon", big, '{"workbenches": {}}'),
+                           lambda m, head="": b"%PDF " + bytes(200_000))
+        assert str(refused.value) == (f"the disk is full at {path}: nothing was recorded; "
+                                      "the register is unchanged (free some space and try "
+                                      "again)")
+        sa.event.remove(register.engine, "connect", no_room)
+        register.engine.dispose()
+        assert _state(register) == before
