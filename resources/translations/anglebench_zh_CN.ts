@@ -2346,7 +2346,37 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Number</source>
+        <extracomment>the columns&apos; headers, in their order</extracomment>
         <translation>编号</translation>
+    </message>
+    <message>
+        <source>Date of issue</source>
+        <translation>签发日期</translation>
+    </message>
+    <message>
+        <source>Workbench / document</source>
+        <translation>工作台 / 文件</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>amended by {number}</source>
+        <extracomment>between two columns</extracomment>
+        <translation>已由 {number} 修订</translation>
+    </message>
+    <message>
+        <source>replaced by {number}</source>
+        <translation>已由 {number} 替代</translation>
+    </message>
+    <message>
+        <source>amended</source>
+        <translation>已修订</translation>
+    </message>
+    <message>
+        <source>replaced</source>
+        <translation>已替代</translation>
     </message>
     <message>
         <source>Status</source>
@@ -2794,7 +2824,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>supersedes</source>
-        <extracomment>what ``show`` lists of a record, named as the register&apos;s columns (translated as names)</extracomment>
+        <extracomment>``verify``&apos;s exit status when everything it checked is as issued ``verify``&apos;s exit status for a file (PDF, DCC, results file) the register did not issue ``verify``&apos;s exit status for a register whose records were changed after issue (&quot;CHANGED AFTER ISSUE&quot;): it wins over :data:`EXIT_NOT_ISSUED` (a command that cannot be carried out — the arguments, an unreadable file, an unreachable register — is EXIT_BAD_INPUT, 2) how every finding of a change after issue begins (the English text of its message) what ``show`` lists of a record, named as the register&apos;s columns (translated as names)</extracomment>
         <translation>取代</translation>
     </message>
     <message>
@@ -3100,6 +3130,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, or the register&apos;s record of it was replaced</source>
+        <extracomment>a PDF that prints a head of the chain whose next record is another: the PDF altered, or the record replaced — which, the register cannot tell (``register verify`` counts it as a file it did not issue, exit 1, unless the register&apos;s own checks find a change)</extracomment>
         <translation>签发后被改动：{path}（{number}）印有第 {seq} 条记录之前的链头，但第 {seq} 条记录是 {other}，不是此 PDF{elsewhere}：PDF 在签发后被改动，或登记册中它的记录被替换</translation>
     </message>
     <message>
@@ -3185,6 +3216,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>anglebench register: {out} exists; nothing was written: choose another name, or add --overwrite to replace it</source>
         <translation>anglebench register：{out} 已存在；未写入任何内容：请另选名称，或加上 --overwrite 以替换它</translation>
+    </message>
+    <message>
+        <source>anglebench register: the disk is full at {path}: nothing was written there; the register is unchanged (free some space and try again)</source>
+        <translation>anglebench register：{path} 处磁盘已满：未在该处写入任何内容；登记册未改变（请腾出空间后重试）</translation>
     </message>
     <message>
         <source>anglebench register: cannot write: {reason}</source>
@@ -5415,6 +5450,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>证书信息（实验室、委托方、被校对象、计量标准……）；缺少时证书标为草稿</translation>
     </message>
     <message>
+        <source>the instrument&apos;s output that &apos;anglebench capture --raw&apos; wrote for these readings: the certificate says which rows were captured and names its SHA-256; a captured row that differs from it is refused</source>
+        <translation>“anglebench capture --raw”为这些读数写出的仪器输出：证书会说明哪些行是采集的并给出其 SHA-256；与之不符的采集行会被拒绝</translation>
+    </message>
+    <message>
+        <source>with --capture-record: captured readings were edited on purpose; the certificate lists every edit</source>
+        <translation>与 --capture-record 同用：采集的读数是有意修改的；证书会列出每一处修改</translation>
+    </message>
+    <message>
         <source>with --certificate: the item and date of calibration are those of a certificate still valid, and this is a calibration of its own (e.g. as left after an adjustment): why, printed on it with the other&apos;s number (else it is refused: a correction is an amendment or a replacement)</source>
         <translation>与 --certificate 一起使用：被校件和校准日期与一份仍然有效的证书相同，而这是一次独立的校准（例如调整之后的交付状态）：说明理由，与另一份证书的编号一起印在证书上（否则予以拒绝：更正应为修订或替代）</translation>
     </message>
@@ -5564,6 +5607,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>anglebench analyze：--table：{workbench}没有修正表</translation>
     </message>
     <message>
+        <source>anglebench analyze: --capture-record and --edited-after-capture are for a certificate (--certificate)</source>
+        <translation>anglebench analyze：--capture-record 和 --edited-after-capture 用于证书（--certificate）</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: --edited-after-capture needs --capture-record (the capture the readings were edited after)</source>
+        <translation>anglebench analyze：--edited-after-capture 需要 --capture-record（读数在其之后被修改的那次采集）</translation>
+    </message>
+    <message>
         <source>anglebench analyze: --dcc needs --certificate (the DCC embeds the PDF certificate)</source>
         <translation>anglebench analyze：--dcc 需要 --certificate（数字证书内嵌 PDF 证书）</translation>
     </message>
@@ -5602,6 +5653,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{path}: not a certificate&apos;s details (nested too deep or a number too long)</source>
         <translation>{path}：不是证书信息（嵌套过深或数字过长）</translation>
+    </message>
+    <message>
+        <source>{file}: row {row}, column &apos;{column}&apos;: {now} here, {captured} in the capture record {record}: nothing was issued (readings edited on purpose: run again with --edited-after-capture, and the certificate lists each edit)</source>
+        <translation>{file}：第 {row} 行，列“{column}”：此处为 {now}，采集记录 {record} 中为 {captured}：未签发任何内容（若读数是有意修改的：加 --edited-after-capture 重新运行，证书会列出每一处修改）</translation>
+    </message>
+    <message>
+        <source>{file}: row {row}: {edit} (the capture record {record}): nothing was issued</source>
+        <translation>{file}：第 {row} 行：{edit}（采集记录 {record}）：未签发任何内容</translation>
     </message>
     <message>
         <source>DCC of {number} written to {path}</source>
@@ -6289,7 +6348,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>register {display_url}: {reason}</source>
-        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
+        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
         <translation>登记册 {display_url}：{reason}</translation>
     </message>
     <message>
@@ -6307,6 +6366,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>register {display_url}: schema version {version} is no version AngleBench ever made: it was changed outside AngleBench; the register is not opened</source>
         <translation>登记册 {display_url}：模式版本 {version} 不是 AngleBench 生成过的版本：它在 AngleBench 之外被改动；不打开该登记册</translation>
+    </message>
+    <message>
+        <source>register {display_url}: its table(s) {tables} are gone: deleted outside AngleBench; the register is not opened; restore it from a backup</source>
+        <translation>登记册 {display_url}：其数据表 {tables} 已不存在：在 AngleBench 之外被删除；登记册未打开；请从备份恢复</translation>
     </message>
     <message>
         <source>register {display_url}: schema version {version} was set back ({evidence}): a migration would rewrite the records&apos; hash chain, so the register is not opened; restore the version or the register from a backup</source>
@@ -6327,6 +6390,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>waited {s} s for the register&apos;s lock, held by {holder}</source>
         <translation>等待登记册的锁 {s} 秒，该锁由 {holder} 持有</translation>
+    </message>
+    <message>
+        <source>the disk is full at {path}: nothing was recorded; the register is unchanged (free some space and try again)</source>
+        <translation>{path} 处磁盘已满：未记录任何内容；登记册未改变（请腾出空间后重试）</translation>
     </message>
     <message>
         <source>the register&apos;s state row was changed or deleted: nothing is recorded into it until &apos;anglebench register verify&apos; is clean</source>
@@ -6447,6 +6514,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>a certificate is withdrawn with a reason (--reason)</source>
         <translation>作废证书须说明原因（--reason）</translation>
+    </message>
+    <message>
+        <source>no results file is recorded for {number}: a results file is recorded by the issue of its certificate, right after it, and {number} was not issued by this issue (a certificate without one gets one with its amendment)</source>
+        <translation>未为 {number} 记录结果文件：结果文件由签发其证书的那次签发在签发后立即记录，而 {number} 并非由这次签发签发（没有结果文件的证书可随其修订版获得一个）</translation>
     </message>
     <message>
         <source>certificate {number} already has its results file, recorded {recorded_at}: a certificate has one, recorded when it is issued (a corrected one comes with its amendment)</source>
@@ -11148,6 +11219,31 @@ Replace it?</source>
     <message>
         <source>{source}; rows {rows} ({captured} of {count}) captured from the instruments</source>
         <translation>{source}；第 {rows} 行（共 {count} 行中的 {captured} 行）采集自仪器</translation>
+    </message>
+    <message>
+        <source>{path}: not a capture record written by &apos;anglebench capture --raw&apos; (not UTF-8 text)</source>
+        <extracomment>the instruments whose every value has a column of its own in a workbench&apos;s sheet (a readout&apos;s value goes to a cell chosen when it is taken: not in a record&apos;s lines)</extracomment>
+        <translation>{path}：不是“anglebench capture --raw”写出的采集记录（不是 UTF-8 文本）</translation>
+    </message>
+    <message>
+        <source>{path}: not a capture record written by &apos;anglebench capture --raw&apos; (its first line is not time_s,reading,line)</source>
+        <translation>{path}：不是“anglebench capture --raw”写出的采集记录（第一行不是 time_s,reading,line）</translation>
+    </message>
+    <message>
+        <source>{path}: line {line} is not &apos;seconds,1 or 0,the line as sent&apos;</source>
+        <translation>{path}：第 {line} 行不是“秒数,1 或 0,发送的原行”</translation>
+    </message>
+    <message>
+        <source>{path}: the {workbench} workbench has no column for an autocollimator&apos;s or a theodolite&apos;s reading: a capture record cannot be checked against its rows</source>
+        <translation>{path}：{workbench} 工作台没有自准直仪或经纬仪读数的列：无法将采集记录与其各行核对</translation>
+    </message>
+    <message>
+        <source>{path}: no row of {file} is a reading of this capture record (no time_s of a row is the time of a reading in it): the record of another capture?</source>
+        <translation>{path}：{file} 中没有任何一行是此采集记录的读数（没有一行的 time_s 是其中某个读数的时间）：是另一次采集的记录？</translation>
+    </message>
+    <message>
+        <source>{path}: {n} readings in the capture record, {m} rows in {file}: which row holds which reading is not known (keep the capture&apos;s time_s column in the readings file)</source>
+        <translation>{path}：采集记录中有 {n} 个读数，{file} 中有 {m} 行：无法确定哪一行对应哪个读数（请在读数文件中保留采集的 time_s 列）</translation>
     </message>
 </context>
 </TS>
