@@ -336,11 +336,8 @@ class Register:
                     else:
                         file.parent.mkdir(parents=True, exist_ok=True)
                 if self.read_only:
-                    from urllib.parse import quote
-
-                    self.engine = sa.create_engine(
-                        f"sqlite:///file:{quote(path)}?mode=ro&immutable=1&uri=true",
-                        connect_args={"timeout": 60})
+                    self.engine = sa.create_engine(self._read_only_uri(file),
+                                                   connect_args={"timeout": 60})
                     sa.event.listen(self.engine, "connect", _sqlite_connect_read_only)
                 else:
                     self.engine = sa.create_engine(self.url, connect_args={"timeout": 60})
@@ -363,6 +360,9 @@ class Register:
                 self.engine.dispose()
                 raise
         except sa.exc.SQLAlchemyError as exc:
+            journal = Path(f"{self._sqlite_path}-wal")
+            if self.read_only and journal.exists() and journal.stat().st_size > 0:
+                raise RegisterError(self._unread_journal()) from None
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -370,6 +370,38 @@ class Register:
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {exc}"),
                 display_url=self.display_url, exc=reason_of(exc))) from None
+
+    def _read_only_uri(self, file: Path) -> str:
+        """The URI a register this user cannot write is opened by (rev65 F2). SQLite keeps
+        the latest commits in the "-wal" journal beside the file until a writer copies them
+        into it (a writer that stays open does so every ~1000 pages; one that crashed, never):
+        ``mode=ro`` reads the journal through its "-shm" index, which the writer left or the
+        reader creates. ``immutable=1`` reads the main file only: it is used only where
+        nothing is in the journal and the index cannot be made (a read-only folder), where
+        ``mode=ro`` cannot open the file at all. Where the journal holds commits and there
+        is no index to read them by, the register is not opened: what the main file alone
+        says (an issued certificate "NOT in the register", an old chain head) would be
+        wrong."""
+        import os
+        from urllib.parse import quote
+
+        journal, index = Path(f"{file}-wal"), Path(f"{file}-shm")
+        written = journal.exists() and journal.stat().st_size > 0
+        can_index = index.exists() or os.access(file.parent, os.W_OK)
+        if written and not can_index:
+            raise RegisterError(self._unread_journal())
+        flags = "mode=ro" if can_index else "mode=ro&immutable=1"
+        return f"sqlite:///file:{quote(str(file))}?{flags}&uri=true"
+
+    def _unread_journal(self) -> str:
+        return message(QT_TR_NOOP(
+            "register {display_url}: it has writes in its journal ({journal}) that a "
+            "read-only opening cannot read (its index {index} is missing and the folder "
+            "cannot be written); nothing is said from the main file alone, which lacks "
+            "them: open the register once by someone who can write its folder, or copy the "
+            "register with its -wal file into a folder you can write"),
+            display_url=self.display_url, journal=f"{Path(self._sqlite_path).name}-wal",
+            index=f"{Path(self._sqlite_path).name}-shm")
 
     @property
     def display_url(self) -> str:
