@@ -28,7 +28,8 @@ a certificate is uniquely identified; #61 and #62 reviews):
    capitals; :mod:`models.register._identifier_tables`, generated from Unicode's data by
    app/identifier_tables.py, no package offering the skeleton being a dependency); the
    look-alikes of digits within Latin ("O" as 0; "l", "I" and "|" as 1) and "rn" as "m",
-   as UTS #39 has them. Case is not folded in the skeleton: "L" prints otherwise than "I"
+   as UTS #39 has them; "rn" only as typed, case kept, in every key before it is case folded
+   and never after (rev65 F8: folded first, the capitals "RN-05" were the serial "M-05"). Case is not folded in the skeleton: "L" prints otherwise than "I"
    and "i" otherwise than "1" (rev63 F10: case folded before the look-alikes made
    "SN-L5" one with "SN-I5"). Case and look-alikes at once (#64 review F4) by two keys
    more (:func:`identifier_keys`, :func:`serial_keys`): the skeleton case folded
@@ -266,19 +267,41 @@ def _digits_in_numbers_folded(text: str) -> str:
     letter for a digit at once are one serial ("lra-O815" is LRA-0815), and a capital
     Cyrillic "І" is "I" ("lrІ-0815" is LRI-0815). Folded after the digit look-alikes and
     reading them case-sensitively, as the skeleton does, so "L" is never "l" and never "1":
-    "SN-L5" is neither "SN-15" nor "SN-I5" (rev63 F10)."""
+    "SN-L5" is neither "SN-15" nor "SN-I5" (rev63 F10). "rn" is "m" before the folding
+    (:func:`_rn_as_m`)."""
     prototypes = "".join(_capital_i(char, CONFUSABLES.get(char, char))
                          for char in unicodedata.normalize("NFD", _digits(text)))
     prototypes = unicodedata.normalize("NFC", prototypes)
     digits = _DIGIT_LIKE_RUN.sub(lambda run: run.group().translate(_DIGIT_LIKE), prototypes)
-    return unicodedata.normalize("NFC", digits.casefold())
+    return _fold(_rn_as_m(digits))
+
+
+def _fold(text: str) -> str:
+    return unicodedata.normalize("NFC", text.casefold())
+
+
+def _rn_as_m(text: str) -> str:
+    """"rn" as "m" (UTS #39's one look-alike of two letters), in the text as typed, case
+    kept: only small "rn" prints like "m". Never applied to a case folded text, where the
+    capitals "RN" (which print nothing like "M") are small letters already (rev65 F8:
+    "RN-05" was the serial "M-05", "KERN-12" was "KEM-12")."""
+    return text.replace("rn", "m")
 
 
 def _zeros_dropped(text: str) -> str:
-    """"rn" as "m" (UTS #39), and no zero before a number."""
+    """No zero before a number."""
     # not int(): it refuses more than 4,300 digits (rev63 M4)
-    return re.sub(r"[0-9]+", lambda digits: digits.group().lstrip("0") or "0",
-                  text.replace("rn", "m"))
+    return re.sub(r"[0-9]+", lambda digits: digits.group().lstrip("0") or "0", text)
+
+
+def _case_kept_and_folded(text: str) -> tuple[str, str, str, str, str]:
+    """The five texts an identifier's keys are made of (principle 3): the skeleton, the text
+    case folded, the skeleton case folded, the prototypes case folded and the fifth key's
+    text; "rn" read as "m" before any folding (:func:`_rn_as_m`), never after."""
+    skeleton = _rn_as_m(_skeleton(text))
+    prototypes = _rn_as_m(unicodedata.normalize("NFC", _prototypes(text)))
+    return (skeleton, _folded(text), _fold(skeleton), _fold(prototypes),
+            _digits_in_numbers_folded(text))
 
 
 def _number_key(printed: str) -> str:
@@ -294,7 +317,7 @@ def _serial_key(printed: str) -> str:
 def identifier_key(text: str) -> str:
     """The identifier's skeleton key (the module's principle 3): equal keys print alike,
     case aside. :func:`same_identifier` also joins what differs only by case."""
-    return _number_key(_skeleton(text))
+    return _number_key(_rn_as_m(_skeleton(text)))
 
 
 @functools.lru_cache(maxsize=1 << 16)
@@ -309,9 +332,9 @@ def identifier_keys(text: str) -> tuple[str, str, str, str, str]:
     key of another: the skeleton, the case folded text, the skeleton case folded, the
     prototypes case folded, and the digit look-alikes read in numbers only, case folded
     (:func:`same_identifier`)."""
-    return (identifier_key(text), folded_identifier_key(text),
-            _number_key(_skeleton_folded(text)), _number_key(_prototypes_folded(text)),
-            _number_key(_digits_in_numbers_folded(text)))
+    skeleton, folded, skeleton_folded, prototypes, fifth = _case_kept_and_folded(text)
+    return (_number_key(skeleton), _number_key(folded), _number_key(skeleton_folded),
+            _number_key(prototypes), _number_key(fifth))
 
 
 def same_identifier(one: str, other: str) -> bool:
@@ -327,7 +350,7 @@ def serial_key(text: str) -> str:
     separators a serial is typed with or without ("RX260815" is "RX-26-0815"; #61
     re-check: the same item issued again got past the one-calibration check that way).
     :func:`same_serial` also joins what differs only by case."""
-    return _serial_key(_skeleton(text))
+    return _serial_key(_rn_as_m(_skeleton(text)))
 
 
 @functools.lru_cache(maxsize=1 << 16)
@@ -340,9 +363,9 @@ def folded_serial_key(text: str) -> str:
 def serial_keys(text: str) -> tuple[str, str, str, str, str]:
     """Every key a serial number is compared by, as :func:`identifier_keys` (separators
     dropped: :func:`serial_key`)."""
-    return (serial_key(text), folded_serial_key(text),
-            _serial_key(_skeleton_folded(text)), _serial_key(_prototypes_folded(text)),
-            _serial_key(_digits_in_numbers_folded(text)))
+    skeleton, folded, skeleton_folded, prototypes, fifth = _case_kept_and_folded(text)
+    return (_serial_key(skeleton), _serial_key(folded), _serial_key(skeleton_folded),
+            _serial_key(prototypes), _serial_key(fifth))
 
 
 def same_serial(one: str, other: str) -> bool:
