@@ -651,8 +651,10 @@ class Register:
         by any key the commit's check refuses by (:meth:`_check_free`: "AB-2026-2" typed by
         hand is AB-2026-0002, so is "ab/2026/0002") is skipped, to the next free one (#64
         review F3: only the same text was skipped, and the commit then refused the number
-        allocated, for every issue of the scheme)."""
-        from models.register.identifiers import identifier_keys
+        allocated, for every issue of the scheme). So is a number that a number in the
+        register reads as an amendment of (:meth:`_check_amendment_form`: with
+        "AB-2026-0009-A1" typed, AB-2026-0009 is skipped)."""
+        from models.register.identifiers import amendment_form_keys, amendment_stems, identifier_keys
 
         sa, schema = self._sa, self._schema
         name = _counter_name(scheme, date)
@@ -661,13 +663,20 @@ class Register:
         issued = conn.execute(sa.select(schema.CERTIFICATES.c.number)).scalars().all()
         # each key of every number issued, by the key's place (a key meets its own kind)
         taken = [set(keys) for keys in zip(*(identifier_keys(n) for n in issued), strict=True)]
+        # the numbers the register's numbers read as amendments of, by the key's place
+        stems: list[set[str]] = [set() for _ in range(5)]
+        for n in issued:
+            for place, found in enumerate(amendment_stems(n)):
+                stems[place] |= found
         exact = set(issued)
         value = (before or 0) + 1
         for _ in range(10_000):
             number = format_certificate_number(scheme, value, date)
             if number not in exact and not any(
                     key in keys for key, keys in zip(identifier_keys(number), taken,
-                                                     strict=False)):
+                                                     strict=False)) and not any(
+                    key in found for key, found in zip(amendment_form_keys(number), stems,
+                                                       strict=True)):
                 return name, number, before, value
             value += 1
         raise RegisterError(message(
@@ -732,6 +741,55 @@ class Register:
             return True
         return False
 
+    def _check_amendment_form(self, conn, number: str, scheme: str = "") -> None:
+        """RegisterError when ``number``, typed or (``scheme``) allocated by a number scheme
+        for an original or a replacement, and a certificate of the register (issued,
+        withdrawn, any) read as an amendment and what it amends (reads_as_amendment_of, by
+        the commit check's keys, marks and dashes aside): ``number`` reads as an amendment
+        of one ("AB-2026-0001A1", "AB-2026-0001-Amendment 1" with AB-2026-0001 issued;
+        rev65 F5), or one, not a real amendment of ``number``, reads as an amendment of it
+        ("AB-2026-0009-A1" typed before AB-2026-0009). A customer would take the two for a
+        certificate and its amendment. A number of the form alone is issued: "KAL-2026-A17"
+        unless KAL-2026 is a certificate's number (rev65 F6: every number ending in "A" and
+        digits was refused, so were labs' schemes). The register's own amendments are
+        numbered "<number>-A<n>" by Amend…, not checked here."""
+        from models.register.identifiers import reads_as_amendment, reads_as_amendment_of
+
+        c = self._schema.CERTIFICATES.c
+        rows = conn.execute(self._sa.select(c.number, c.issued_at, c.revision)
+                            .order_by(c.id)).all()
+        if reads_as_amendment(number):
+            row = next((r for r in rows if reads_as_amendment_of(number, r.number)), None)
+            if row is not None and scheme:
+                raise RegisterError(message(QT_TR_NOOP(
+                    "the number scheme '{scheme}' gives {number}, which reads as an amendment's "
+                    "number of {other} (issued on {issued_at}): a number, then -A, -Amd, "
+                    "-Amendment or -Rev and a count is an amendment of that number, whatever the "
+                    "separators, case, marks or look-alike letters; amendments are numbered by "
+                    "the register itself; change the scheme"),
+                    scheme=scheme, number=number, other=row.number,
+                    issued_at=row.issued_at[:10]))
+            if row is not None:
+                raise RegisterError(message(QT_TR_NOOP(
+                    "certificate number {number} reads as an amendment's number of {other} "
+                    "(issued on {issued_at}): a number, then -A, -Amd, -Amendment or -Rev and a "
+                    "count is an amendment of that number, whatever the separators, case, marks "
+                    "or look-alike letters; amendments are numbered by the register itself when "
+                    "a certificate is amended; type another number, or leave it empty and the "
+                    "register allocates the next"),
+                    number=number, other=row.number, issued_at=row.issued_at[:10]))
+        row = next((r for r in rows if reads_as_amendment_of(r.number, number) and not (
+            r.revision.startswith("amendment") and re.sub(r"-A\d+$", "", r.number) == number)),
+            None)
+        if row is not None:
+            raise RegisterError(message(QT_TR_NOOP(
+                "certificate number {number}: {other}, issued on {issued_at}, reads as an "
+                "amendment's number of it (a number, then -A and a count, whatever the "
+                "separators, case, marks or look-alike letters): a customer would take them "
+                "for a certificate and its amendment; type another number, or leave it empty "
+                "and the register allocates the next"),
+                number=number, other=row.number, issued_at=row.issued_at[:10]))
+
     def _plan(self, conn, meta: CertificateMetadata, supersedes: str, replacement: bool,
               issue_date: dt.date, now: dt.datetime) -> _Plan:
         sa, certificates = self._sa, self._schema.CERTIFICATES
@@ -757,7 +815,7 @@ class Register:
                 revision = "replacement"
                 counter, number, before, value = self._next_value(conn, meta.number_scheme,
                                                                   issue_date)
-                _refuse_amendment_form(number, meta.number_scheme)
+                self._check_amendment_form(conn, number, meta.number_scheme)
             else:
                 n = _amendment_count(conn, self, original) + 1
                 while self._taken(conn, f"{_root(original)}-A{n}"):  # typed in older registers
@@ -765,12 +823,12 @@ class Register:
                 revision, number = f"amendment {n}", f"{_root(original)}-A{n}"
         elif meta.certificate_number:
             number = meta.certificate_number
-            _refuse_amendment_form(number)
             self._check_free(conn, number)
+            self._check_amendment_form(conn, number)
         else:
             counter, number, before, value = self._next_value(conn, meta.number_scheme,
                                                               issue_date)
-            _refuse_amendment_form(number, meta.number_scheme)
+            self._check_amendment_form(conn, number, meta.number_scheme)
         return _Plan(number, records + 1, head, counter, before, value, original, revision)
 
     def _unchanged(self, conn, plan: _Plan) -> bool:
@@ -2029,30 +2087,6 @@ def _root(record: CertificateRecord) -> str:
     """The number amendments count from: the original's, not an amendment's."""
     return re.sub(r"-A\d+$", "", record.number) if record.revision.startswith("amendment") \
         else record.number
-
-
-def _refuse_amendment_form(number: str, scheme: str = "") -> None:
-    """RegisterError when ``number``, typed or (``scheme``) allocated by a number scheme, for
-    an original or a replacement, reads as an amendment's number by any key the commit's
-    check compares by (reads_as_amendment: "AB-2026-0001-A 1", "-a-1", a Cyrillic "А", a
-    full-width dash; stop 63): a customer would read it as an amendment of a certificate
-    that was never amended. The register's amendments are numbered so only by Amend…."""
-    from models.register.identifiers import reads_as_amendment
-
-    if not reads_as_amendment(number):
-        return
-    if scheme:
-        raise RegisterError(message(QT_TR_NOOP(
-            "the number scheme '{scheme}' gives {number}, which reads as an amendment's "
-            "number (a number, then -A and a count: AB-2026-0001-A1 is the first amendment of "
-            "AB-2026-0001): numbers of that form are kept for amendments, which the register "
-            "numbers itself; change the scheme"), scheme=scheme, number=number))
-    raise RegisterError(message(QT_TR_NOOP(
-        "certificate number {number} reads as an amendment's number (a number, then -A and a "
-        "count, whatever the separators, case or look-alike letters: AB-2026-0001-A1 is the "
-        "first amendment of AB-2026-0001): numbers of that form are kept for amendments, which "
-        "the register numbers itself when a certificate is amended; type another number, or "
-        "leave it empty and the register allocates the next"), number=number))
 
 
 def _same_item(description: str, manufacturer: str, meta: CertificateMetadata) -> bool:
