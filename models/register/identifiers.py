@@ -28,8 +28,10 @@ a certificate is uniquely identified; #61 and #62 reviews):
    capitals; :mod:`models.register._identifier_tables`, generated from Unicode's data by
    app/identifier_tables.py, no package offering the skeleton being a dependency); the
    look-alikes of digits within Latin ("O" as 0; "l", "I" and "|" as 1) and "rn" as "m",
-   as UTS #39 has them. Case is not folded in the skeleton: "L" prints otherwise than "I"
-   and "i" otherwise than "1" (rev63 F10: case folded before the look-alikes made
+   as UTS #39 has them; "rn" only as typed, case kept, in every key before it is case
+   folded and never after (rev65 F8: folded first, the capitals "RN-05" were the serial
+   "M-05"). Case is not folded in the skeleton: "L" prints otherwise than "I" and "i"
+   otherwise than "1" (rev63 F10: case folded before the look-alikes made
    "SN-L5" one with "SN-I5"). Case and look-alikes at once (#64 review F4) by two keys
    more (:func:`identifier_keys`, :func:`serial_keys`): the skeleton case folded
    ("ab-2026-OOO1"), and the prototypes without the digit look-alikes case folded
@@ -46,8 +48,10 @@ a certificate is uniquely identified; #61 and #62 reviews):
    compared as printed, :func:`as_printed`; rev63 F2).
    - A certificate number's separators (any run of punctuation, symbols and spaces: "-",
      "·", ",", "#", "/", ".") are one separator, none at either end ("AB·2026·0001" and
-     "AB-2026-0001." are AB-2026-0001; the amendment form "-A<n>" is read from these keys,
-     a separator or none between "A" and n: :func:`reads_as_amendment`).
+     "AB-2026-0001." are AB-2026-0001; the amendment form "-A<n>" ("A<n>", "-Amendment n",
+     "-Rev n" …) is read from these keys with marks dropped and any dash as "-", a separator
+     or none between "A" and n, and is refused only as an amendment of a number in the
+     register: :func:`reads_as_amendment_of`; rev65 F5, F6).
    - A serial number's separators are dropped altogether before its zeros
      ("RX260815" is "RX-26-0815"; "LRA#0815" is "LRA-0815").
 4. **No serial**: an empty serial, one of separators only ("-", "—") and the words labs
@@ -65,10 +69,11 @@ import unicodedata
 from models.messages import QT_TR_NOOP, message
 from models.register._identifier_tables import CONFUSABLES, DEFAULT_IGNORABLE
 
-__all__ = ["IdentifierError", "as_printed", "folded_identifier_key", "folded_serial_key",
-           "identifier_key", "identifier_keys", "no_serial", "normalise_identifier",
-           "reads_as_amendment", "refuse_unprinted", "same_identifier", "same_name",
-           "same_serial", "serial_key", "serial_keys"]
+__all__ = ["IdentifierError", "amendment_form_keys", "amendment_stems", "as_printed",
+           "folded_identifier_key", "folded_serial_key", "identifier_key", "identifier_keys",
+           "no_serial", "normalise_identifier", "reads_as_amendment", "reads_as_amendment_of",
+           "refuse_unprinted", "same_identifier", "same_name", "same_serial", "serial_key",
+           "serial_keys"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
 _DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
@@ -266,19 +271,41 @@ def _digits_in_numbers_folded(text: str) -> str:
     letter for a digit at once are one serial ("lra-O815" is LRA-0815), and a capital
     Cyrillic "І" is "I" ("lrІ-0815" is LRI-0815). Folded after the digit look-alikes and
     reading them case-sensitively, as the skeleton does, so "L" is never "l" and never "1":
-    "SN-L5" is neither "SN-15" nor "SN-I5" (rev63 F10)."""
+    "SN-L5" is neither "SN-15" nor "SN-I5" (rev63 F10). "rn" is "m" before the folding
+    (:func:`_rn_as_m`)."""
     prototypes = "".join(_capital_i(char, CONFUSABLES.get(char, char))
                          for char in unicodedata.normalize("NFD", _digits(text)))
     prototypes = unicodedata.normalize("NFC", prototypes)
     digits = _DIGIT_LIKE_RUN.sub(lambda run: run.group().translate(_DIGIT_LIKE), prototypes)
-    return unicodedata.normalize("NFC", digits.casefold())
+    return _fold(_rn_as_m(digits))
+
+
+def _fold(text: str) -> str:
+    return unicodedata.normalize("NFC", text.casefold())
+
+
+def _rn_as_m(text: str) -> str:
+    """"rn" as "m" (UTS #39's one look-alike of two letters), in the text as typed, case
+    kept: only small "rn" prints like "m". Never applied to a case folded text, where the
+    capitals "RN" (which print nothing like "M") are small letters already (rev65 F8:
+    "RN-05" was the serial "M-05", "KERN-12" was "KEM-12")."""
+    return text.replace("rn", "m")
 
 
 def _zeros_dropped(text: str) -> str:
-    """"rn" as "m" (UTS #39), and no zero before a number."""
+    """No zero before a number."""
     # not int(): it refuses more than 4,300 digits (rev63 M4)
-    return re.sub(r"[0-9]+", lambda digits: digits.group().lstrip("0") or "0",
-                  text.replace("rn", "m"))
+    return re.sub(r"[0-9]+", lambda digits: digits.group().lstrip("0") or "0", text)
+
+
+def _case_kept_and_folded(text: str) -> tuple[str, str, str, str, str]:
+    """The five texts an identifier's keys are made of (principle 3): the skeleton, the text
+    case folded, the skeleton case folded, the prototypes case folded and the fifth key's
+    text; "rn" read as "m" before any folding (:func:`_rn_as_m`), never after."""
+    skeleton = _rn_as_m(_skeleton(text))
+    prototypes = _rn_as_m(unicodedata.normalize("NFC", _prototypes(text)))
+    return (skeleton, _folded(text), _fold(skeleton), _fold(prototypes),
+            _digits_in_numbers_folded(text))
 
 
 def _number_key(printed: str) -> str:
@@ -294,7 +321,7 @@ def _serial_key(printed: str) -> str:
 def identifier_key(text: str) -> str:
     """The identifier's skeleton key (the module's principle 3): equal keys print alike,
     case aside. :func:`same_identifier` also joins what differs only by case."""
-    return _number_key(_skeleton(text))
+    return _number_key(_rn_as_m(_skeleton(text)))
 
 
 @functools.lru_cache(maxsize=1 << 16)
@@ -309,9 +336,9 @@ def identifier_keys(text: str) -> tuple[str, str, str, str, str]:
     key of another: the skeleton, the case folded text, the skeleton case folded, the
     prototypes case folded, and the digit look-alikes read in numbers only, case folded
     (:func:`same_identifier`)."""
-    return (identifier_key(text), folded_identifier_key(text),
-            _number_key(_skeleton_folded(text)), _number_key(_prototypes_folded(text)),
-            _number_key(_digits_in_numbers_folded(text)))
+    skeleton, folded, skeleton_folded, prototypes, fifth = _case_kept_and_folded(text)
+    return (_number_key(skeleton), _number_key(folded), _number_key(skeleton_folded),
+            _number_key(prototypes), _number_key(fifth))
 
 
 def same_identifier(one: str, other: str) -> bool:
@@ -327,7 +354,7 @@ def serial_key(text: str) -> str:
     separators a serial is typed with or without ("RX260815" is "RX-26-0815"; #61
     re-check: the same item issued again got past the one-calibration check that way).
     :func:`same_serial` also joins what differs only by case."""
-    return _serial_key(_skeleton(text))
+    return _serial_key(_rn_as_m(_skeleton(text)))
 
 
 @functools.lru_cache(maxsize=1 << 16)
@@ -340,9 +367,9 @@ def folded_serial_key(text: str) -> str:
 def serial_keys(text: str) -> tuple[str, str, str, str, str]:
     """Every key a serial number is compared by, as :func:`identifier_keys` (separators
     dropped: :func:`serial_key`)."""
-    return (serial_key(text), folded_serial_key(text),
-            _serial_key(_skeleton_folded(text)), _serial_key(_prototypes_folded(text)),
-            _serial_key(_digits_in_numbers_folded(text)))
+    skeleton, folded, skeleton_folded, prototypes, fifth = _case_kept_and_folded(text)
+    return (_serial_key(skeleton), _serial_key(folded), _serial_key(skeleton_folded),
+            _serial_key(prototypes), _serial_key(fifth))
 
 
 def same_serial(one: str, other: str) -> bool:
@@ -351,20 +378,90 @@ def same_serial(one: str, other: str) -> bool:
     return any(a == b for a, b in zip(serial_keys(one), serial_keys(other), strict=True))
 
 
-#: an amendment's number as a key gives it: a number, "-A" (any case), a separator or none,
-#: a count (the register numbers amendments "<number>-A<n>": store._root)
-_AMENDMENT_KEY = re.compile(r".+-a-?[0-9]+", re.IGNORECASE)
+#: letters and signs drawn as a dash that are no punctuation (so no separator by their
+#: category), read as "-" where the amendment form is read (rev65 F5: "AB-2026-0001ᐨA1"):
+#: modifier letters (macron, low macron, minus), Canadian syllabics' short stroke, Coptic
+#: dialect-p ni, the CJK dash stand-ins (:data:`_DASH_STAND_INS`, and the Kangxi "⼀"), box
+#: drawing lines, the horizontal line extension and heavy minus
+_DASH_DRAWN = frozenset("\u02c9\u02cd\u02d7\u1428\u2cba\u2cbb\u30fc\uff70\u4e00\u2f00"
+                        "\u1173\u3161\uffda\u2500\u2501\u23af\u2796\u2212\u06d4")
+#: a Latin letter with a mark that Unicode does not decompose ("Ⱥ", "Ø"): its letter
+_LATIN_WITH = re.compile(r"LATIN (CAPITAL|SMALL) LETTER ([A-Z]) WITH ")
+#: what follows a number in an amendment's number, as a key gives it (separators "-", zeros
+#: dropped, any case): "-A", "A", "-Amd", "-Amendment", "-Rev" …, a separator or none, "No"
+#: or "Nr" or none, a count
+_AMENDMENT_SUFFIX = re.compile(
+    r"-?(?:a|amd|amdt|amend|amendment|rev|revision)-?(?:(?:no|nr|number)-?)?[0-9]+",
+    re.IGNORECASE)
+
+
+def _form_text(text: str) -> str:
+    """``text`` as the amendment form is read from it (rev65 F5): every combining mark
+    dropped ("Ạ", "A̲", "Â", "Ḁ" are "A"), a Latin letter with a mark Unicode does not
+    decompose as its letter ("Ⱥ"), every dash (Unicode's Pd) and every letter or sign drawn
+    as one (:data:`_DASH_DRAWN`, the skeleton's: what UTS #39 gives as "-") as "-"."""
+    kept = []
+    for char in unicodedata.normalize("NFD", _digits(text)):
+        category = unicodedata.category(char)
+        if category.startswith("M"):
+            continue
+        if category == "Pd" or char in _DASH_DRAWN or CONFUSABLES.get(char) == "-":
+            kept.append("-")
+            continue
+        base = _LATIN_WITH.match(unicodedata.name(char, ""))
+        if base:
+            char = base.group(2) if base.group(1) == "CAPITAL" else base.group(2).lower()
+        kept.append(char)
+    return unicodedata.normalize("NFC", "".join(kept))
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def amendment_form_keys(number: str) -> tuple[str, str, str, str, str]:
+    """The keys (:func:`identifier_keys`) of ``number`` with its marks dropped and its dashes
+    read as :func:`_form_text` reads them: what an amendment's stem is compared with."""
+    return identifier_keys(_form_text(number))
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def amendment_stems(number: str) -> tuple[frozenset[str], ...]:
+    """For each of :func:`amendment_form_keys`, every number ``number`` reads as an
+    amendment of: what precedes an amendment-like suffix (:data:`_AMENDMENT_SUFFIX`),
+    and the stems of those stems ("X-A1-A2" reads as an amendment of X-A1 and of X).
+    Empty sets: ``number`` has no amendment's form."""
+    stems = []
+    for key in amendment_form_keys(number):
+        found: set[str] = set()
+        todo = [key]
+        while todo:
+            text = todo.pop()
+            for at in range(1, len(text)):
+                stem = text[:at].rstrip("-")
+                if stem and stem not in found and _AMENDMENT_SUFFIX.fullmatch(text, at):
+                    found.add(stem)
+                    todo.append(stem)
+        stems.append(frozenset(found))
+    return tuple(stems)
 
 
 def reads_as_amendment(number: str) -> bool:
-    """Whether certificate number ``number`` reads as an amendment's number, "<a number>-A<n>",
-    by any key it is compared by (:func:`identifier_keys`): its separators, case, look-alikes
-    and zeros aside, a separator or none between "A" and the count ("AB-2026-0001-A 1",
-    "AB-2026-0001-a-1", "AB-2026-0001-А1" with a Cyrillic "А", "AB-2026-0001－A1" with a
-    full-width dash, "AB-2026-0001-Al"; stop 63: a new certificate so numbered read to a
-    customer as an amendment of AB-2026-0001 that never happened). The register's own
-    amendments are numbered so; any other number of that form is refused."""
-    return any(_AMENDMENT_KEY.fullmatch(key) for key in (number, *identifier_keys(number)))
+    """Whether certificate number ``number`` has an amendment's form: a number, then "-A",
+    "A", "-Amd", "-Amendment", "-Rev" … and a count, by any key it is compared by, its
+    separators, case, marks, look-alikes and zeros aside (:func:`amendment_stems`). The form
+    alone refuses nothing (rev65 F6: "KAL-2026-A17", "2026-A-0001", "D-K-15070-A-17" are
+    numbering schemes): :func:`reads_as_amendment_of` says of which number."""
+    return any(amendment_stems(number))
+
+
+def reads_as_amendment_of(number: str, other: str) -> bool:
+    """Whether ``number`` reads to a customer as an amendment of ``other``: a stem of it
+    (:func:`amendment_stems`) equals ``other`` by one of the keys the commit's check compares
+    by, each to the same key, marks dropped and dashes read as :func:`_form_text` reads
+    them ("AB-2026-0001A1", "AB-2026-0001-Amendment 1", "AB-2026-0001-Ạ1", "AB-2026-0001ᐨA1",
+    "AB-2026-0001-Â1" of AB-2026-0001; rev65 F5). The register refuses such a number for an
+    original or a replacement when ``other`` is in the register, and ``other`` when such a
+    number is."""
+    return any(key in stems for key, stems in zip(amendment_form_keys(other),
+                                                  amendment_stems(number), strict=True))
 
 
 def as_printed(text: str) -> str:

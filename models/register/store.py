@@ -336,11 +336,8 @@ class Register:
                     else:
                         file.parent.mkdir(parents=True, exist_ok=True)
                 if self.read_only:
-                    from urllib.parse import quote
-
-                    self.engine = sa.create_engine(
-                        f"sqlite:///file:{quote(path)}?mode=ro&immutable=1&uri=true",
-                        connect_args={"timeout": 60})
+                    self.engine = sa.create_engine(self._read_only_uri(file),
+                                                   connect_args={"timeout": 60})
                     sa.event.listen(self.engine, "connect", _sqlite_connect_read_only)
                 else:
                     self.engine = sa.create_engine(self.url, connect_args={"timeout": 60})
@@ -363,6 +360,9 @@ class Register:
                 self.engine.dispose()
                 raise
         except sa.exc.SQLAlchemyError as exc:
+            journal = Path(f"{self._sqlite_path}-wal")
+            if self.read_only and journal.exists() and journal.stat().st_size > 0:
+                raise RegisterError(self._unread_journal()) from None
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -370,6 +370,38 @@ class Register:
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {exc}"),
                 display_url=self.display_url, exc=reason_of(exc))) from None
+
+    def _read_only_uri(self, file: Path) -> str:
+        """The URI a register this user cannot write is opened by (rev65 F2). SQLite keeps
+        the latest commits in the "-wal" journal beside the file until a writer copies them
+        into it (a writer that stays open does so every ~1000 pages; one that crashed, never):
+        ``mode=ro`` reads the journal through its "-shm" index, which the writer left or the
+        reader creates. ``immutable=1`` reads the main file only: it is used only where
+        nothing is in the journal and the index cannot be made (a read-only folder), where
+        ``mode=ro`` cannot open the file at all. Where the journal holds commits and there
+        is no index to read them by, the register is not opened: what the main file alone
+        says (an issued certificate "NOT in the register", an old chain head) would be
+        wrong."""
+        import os
+        from urllib.parse import quote
+
+        journal, index = Path(f"{file}-wal"), Path(f"{file}-shm")
+        written = journal.exists() and journal.stat().st_size > 0
+        can_index = index.exists() or os.access(file.parent, os.W_OK)
+        if written and not can_index:
+            raise RegisterError(self._unread_journal())
+        flags = "mode=ro" if can_index else "mode=ro&immutable=1"
+        return f"sqlite:///file:{quote(str(file))}?{flags}&uri=true"
+
+    def _unread_journal(self) -> str:
+        return message(QT_TR_NOOP(
+            "register {display_url}: it has writes in its journal ({journal}) that a "
+            "read-only opening cannot read (its index {index} is missing and the folder "
+            "cannot be written); nothing is said from the main file alone, which lacks "
+            "them: open the register once by someone who can write its folder, or copy the "
+            "register with its -wal file into a folder you can write"),
+            display_url=self.display_url, journal=f"{Path(self._sqlite_path).name}-wal",
+            index=f"{Path(self._sqlite_path).name}-shm")
 
     @property
     def display_url(self) -> str:
@@ -619,8 +651,10 @@ class Register:
         by any key the commit's check refuses by (:meth:`_check_free`: "AB-2026-2" typed by
         hand is AB-2026-0002, so is "ab/2026/0002") is skipped, to the next free one (#64
         review F3: only the same text was skipped, and the commit then refused the number
-        allocated, for every issue of the scheme)."""
-        from models.register.identifiers import identifier_keys
+        allocated, for every issue of the scheme). So is a number that a number in the
+        register reads as an amendment of (:meth:`_check_amendment_form`: with
+        "AB-2026-0009-A1" typed, AB-2026-0009 is skipped)."""
+        from models.register.identifiers import amendment_form_keys, amendment_stems, identifier_keys
 
         sa, schema = self._sa, self._schema
         name = _counter_name(scheme, date)
@@ -629,13 +663,20 @@ class Register:
         issued = conn.execute(sa.select(schema.CERTIFICATES.c.number)).scalars().all()
         # each key of every number issued, by the key's place (a key meets its own kind)
         taken = [set(keys) for keys in zip(*(identifier_keys(n) for n in issued), strict=True)]
+        # the numbers the register's numbers read as amendments of, by the key's place
+        stems: list[set[str]] = [set() for _ in range(5)]
+        for n in issued:
+            for place, found in enumerate(amendment_stems(n)):
+                stems[place] |= found
         exact = set(issued)
         value = (before or 0) + 1
         for _ in range(10_000):
             number = format_certificate_number(scheme, value, date)
             if number not in exact and not any(
                     key in keys for key, keys in zip(identifier_keys(number), taken,
-                                                     strict=False)):
+                                                     strict=False)) and not any(
+                    key in found for key, found in zip(amendment_form_keys(number), stems,
+                                                       strict=True)):
                 return name, number, before, value
             value += 1
         raise RegisterError(message(
@@ -700,6 +741,55 @@ class Register:
             return True
         return False
 
+    def _check_amendment_form(self, conn, number: str, scheme: str = "") -> None:
+        """RegisterError when ``number``, typed or (``scheme``) allocated by a number scheme
+        for an original or a replacement, and a certificate of the register (issued,
+        withdrawn, any) read as an amendment and what it amends (reads_as_amendment_of, by
+        the commit check's keys, marks and dashes aside): ``number`` reads as an amendment
+        of one ("AB-2026-0001A1", "AB-2026-0001-Amendment 1" with AB-2026-0001 issued;
+        rev65 F5), or one, not a real amendment of ``number``, reads as an amendment of it
+        ("AB-2026-0009-A1" typed before AB-2026-0009). A customer would take the two for a
+        certificate and its amendment. A number of the form alone is issued: "KAL-2026-A17"
+        unless KAL-2026 is a certificate's number (rev65 F6: every number ending in "A" and
+        digits was refused, so were labs' schemes). The register's own amendments are
+        numbered "<number>-A<n>" by Amend…, not checked here."""
+        from models.register.identifiers import reads_as_amendment, reads_as_amendment_of
+
+        c = self._schema.CERTIFICATES.c
+        rows = conn.execute(self._sa.select(c.number, c.issued_at, c.revision)
+                            .order_by(c.id)).all()
+        if reads_as_amendment(number):
+            row = next((r for r in rows if reads_as_amendment_of(number, r.number)), None)
+            if row is not None and scheme:
+                raise RegisterError(message(QT_TR_NOOP(
+                    "the number scheme '{scheme}' gives {number}, which reads as an amendment's "
+                    "number of {other} (issued on {issued_at}): a number, then -A, -Amd, "
+                    "-Amendment or -Rev and a count is an amendment of that number, whatever the "
+                    "separators, case, marks or look-alike letters; amendments are numbered by "
+                    "the register itself; change the scheme"),
+                    scheme=scheme, number=number, other=row.number,
+                    issued_at=row.issued_at[:10]))
+            if row is not None:
+                raise RegisterError(message(QT_TR_NOOP(
+                    "certificate number {number} reads as an amendment's number of {other} "
+                    "(issued on {issued_at}): a number, then -A, -Amd, -Amendment or -Rev and a "
+                    "count is an amendment of that number, whatever the separators, case, marks "
+                    "or look-alike letters; amendments are numbered by the register itself when "
+                    "a certificate is amended; type another number, or leave it empty and the "
+                    "register allocates the next"),
+                    number=number, other=row.number, issued_at=row.issued_at[:10]))
+        row = next((r for r in rows if reads_as_amendment_of(r.number, number) and not (
+            r.revision.startswith("amendment") and re.sub(r"-A\d+$", "", r.number) == number)),
+            None)
+        if row is not None:
+            raise RegisterError(message(QT_TR_NOOP(
+                "certificate number {number}: {other}, issued on {issued_at}, reads as an "
+                "amendment's number of it (a number, then -A and a count, whatever the "
+                "separators, case, marks or look-alike letters): a customer would take them "
+                "for a certificate and its amendment; type another number, or leave it empty "
+                "and the register allocates the next"),
+                number=number, other=row.number, issued_at=row.issued_at[:10]))
+
     def _plan(self, conn, meta: CertificateMetadata, supersedes: str, replacement: bool,
               issue_date: dt.date, now: dt.datetime) -> _Plan:
         sa, certificates = self._sa, self._schema.CERTIFICATES
@@ -725,7 +815,7 @@ class Register:
                 revision = "replacement"
                 counter, number, before, value = self._next_value(conn, meta.number_scheme,
                                                                   issue_date)
-                _refuse_amendment_form(number, meta.number_scheme)
+                self._check_amendment_form(conn, number, meta.number_scheme)
             else:
                 n = _amendment_count(conn, self, original) + 1
                 while self._taken(conn, f"{_root(original)}-A{n}"):  # typed in older registers
@@ -733,12 +823,12 @@ class Register:
                 revision, number = f"amendment {n}", f"{_root(original)}-A{n}"
         elif meta.certificate_number:
             number = meta.certificate_number
-            _refuse_amendment_form(number)
             self._check_free(conn, number)
+            self._check_amendment_form(conn, number)
         else:
             counter, number, before, value = self._next_value(conn, meta.number_scheme,
                                                               issue_date)
-            _refuse_amendment_form(number, meta.number_scheme)
+            self._check_amendment_form(conn, number, meta.number_scheme)
         return _Plan(number, records + 1, head, counter, before, value, original, revision)
 
     def _unchanged(self, conn, plan: _Plan) -> bool:
@@ -1997,30 +2087,6 @@ def _root(record: CertificateRecord) -> str:
     """The number amendments count from: the original's, not an amendment's."""
     return re.sub(r"-A\d+$", "", record.number) if record.revision.startswith("amendment") \
         else record.number
-
-
-def _refuse_amendment_form(number: str, scheme: str = "") -> None:
-    """RegisterError when ``number``, typed or (``scheme``) allocated by a number scheme, for
-    an original or a replacement, reads as an amendment's number by any key the commit's
-    check compares by (reads_as_amendment: "AB-2026-0001-A 1", "-a-1", a Cyrillic "А", a
-    full-width dash; stop 63): a customer would read it as an amendment of a certificate
-    that was never amended. The register's amendments are numbered so only by Amend…."""
-    from models.register.identifiers import reads_as_amendment
-
-    if not reads_as_amendment(number):
-        return
-    if scheme:
-        raise RegisterError(message(QT_TR_NOOP(
-            "the number scheme '{scheme}' gives {number}, which reads as an amendment's "
-            "number (a number, then -A and a count: AB-2026-0001-A1 is the first amendment of "
-            "AB-2026-0001): numbers of that form are kept for amendments, which the register "
-            "numbers itself; change the scheme"), scheme=scheme, number=number))
-    raise RegisterError(message(QT_TR_NOOP(
-        "certificate number {number} reads as an amendment's number (a number, then -A and a "
-        "count, whatever the separators, case or look-alike letters: AB-2026-0001-A1 is the "
-        "first amendment of AB-2026-0001): numbers of that form are kept for amendments, which "
-        "the register numbers itself when a certificate is amended; type another number, or "
-        "leave it empty and the register allocates the next"), number=number))
 
 
 def _same_item(description: str, manufacturer: str, meta: CertificateMetadata) -> bool:

@@ -66,6 +66,7 @@ from models.register.identifiers import (  # noqa: E402
     same_identifier,
     same_serial,
     serial_key,
+    serial_keys,
 )
 
 #: every assigned default-ignorable code point (Python's own Unicode data), the blanks
@@ -238,3 +239,18 @@ def test_the_fifth_key_joins_no_serials_in_one_case_the_skeleton_keeps_apart():
             by_key.setdefault(serial_keys(serial)[4], set()).add(serial)
         for serials in by_key.values():
             assert len({serial_key(s) for s in serials}) == 1, serials
+
+
+@pytest.mark.parametrize(("one", "other"), [("RN-05", "M-05"), ("KERN-12", "KEM-12"),
+                                            ("TURN-5", "TUM-5"), ("Rn-05", "m-05")])
+def test_capital_rn_is_not_m(one, other):
+    """rev65 F8: "rn" read as "m" after case folding made the capitals "RN-05" the serial
+    "M-05" (histories merged, one item's interval replaced the other's)."""
+    assert not same_serial(one, other) and not same_identifier(one, other)
+    assert not set(serial_keys(one)) & set(serial_keys(other))
+
+
+@pytest.mark.parametrize(("one", "other"), [("rn-05", "m-05"), ("kern-12", "kem-12"),
+                                            ("kern-12", "KEM-12"), ("TURN-5", "TURN-5")])
+def test_small_rn_typed_is_still_m(one, other):
+    assert same_serial(one, other) and same_identifier(one, other)

@@ -19,7 +19,13 @@ import sqlalchemy as sa
 from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.register import schema
-from models.register.store import IssueRequest, Register, RegisterError, RegisterTampered
+from models.register.store import (
+    IssueRequest,
+    Register,
+    RegisterError,
+    RegisterTampered,
+    SameCalibrationIssued,
+)
 
 PROJECT = '{"format": "anglebench-project", "schema_version": 1, "workbenches": {}}'
 ISSUED = dt.datetime(2026, 11, 25, 10, 0, tzinfo=dt.timezone.utc)
@@ -247,3 +253,33 @@ def test_a_migration_killed_half_way_leaves_version_6(tmp_path):
         assert register.chain_head() == SCHEMA_6_HEAD
         assert register.interval("001", "Zeta Instruments") == 365
     assert _chains(url) == chains
+
+
+def test_capital_rn_and_m_are_two_items_of_one_maker(tmp_path):
+    """rev65 F8: "rn" read as "m" after case folding made Kern's "RN-05" and "M-05" one item:
+    M-05's calibration the same day refused as a second original, the histories merged, and
+    setting M-05's interval replaced RN-05's. Small "rn-05" typed is still M-05's look-alike."""
+    def meta(serial: str, day: str) -> CertificateMetadata:
+        return CertificateMetadata(item_serial=serial, item_manufacturer="Kern",
+                                   item_description="autocollimator", customer_name="X",
+                                   calibration_date=day, number_scheme="AB-{year}-{seq:04d}",
+                                   approver="Dr. Li")
+
+    with Register(f"sqlite:///{tmp_path / 'r.sqlite'}", timezone="UTC") as register:
+        register.clock = lambda: ISSUED
+        for serial, day in (("RN-05", "2026-11-20"), ("M-05", "2025-01-10")):
+            register.issue(IssueRequest("polygon", meta(serial, day), PROJECT), render,
+                           separate_calibration="")
+        register.set_interval("RN-05", 365, "Kern")
+        register.set_interval("M-05", 730, "Kern")
+        assert (register.interval("RN-05", "Kern"), register.interval("M-05", "Kern")) \
+            == (365, 730)
+        assert [(r.item_serial, r.calibration_date) for r in register.history("M-05", "Kern")] \
+            == [("M-05", "2025-01-10")]
+        assert str(register.due_date("M-05", "Kern")) == "2027-01-10"
+        issued = register.issue(IssueRequest("polygon", meta("M-05", "2026-11-20"), PROJECT),
+                                render, separate_calibration="")[0]  # not RN-05's: no reason
+        assert (issued.number, issued.revision) == ("AB-2026-0003", "original")
+        with pytest.raises(SameCalibrationIssued, match="AB-2026-0002"):  # typed small: M-05
+            register.issue(IssueRequest("polygon", meta("rn-05", "2025-01-10"), PROJECT), render,
+                           separate_calibration="")
