@@ -1679,10 +1679,13 @@ class Register:
     def _intervals(self, conn) -> builtins.list[Any]:
         """Every interval set: serial, manufacturer ("" in a register read at schema version
         6, whose intervals are per serial: :attr:`_intervals_per_serial`), interval_days."""
-        c, sa = self._schema.INSTRUMENTS.c, self._sa
-        maker = sa.literal("").label("manufacturer") if self._intervals_per_serial \
-            else c.manufacturer
-        return conn.execute(sa.select(c.serial, maker, c.interval_days)).all()
+        sa = self._sa
+        if self._intervals_per_serial:
+            c = self._schema.intervals_per_serial().c
+            return conn.execute(sa.select(c.serial, sa.literal("").label("manufacturer"),
+                                          c.interval_days)).all()
+        c = self._schema.INSTRUMENTS.c
+        return conn.execute(sa.select(c.serial, c.manufacturer, c.interval_days)).all()
 
     def due_date(self, serial: str, manufacturer: str = "") -> dt.date | None:
         """The last calibration of the serial (of ``manufacturer``'s item, as
