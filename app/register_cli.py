@@ -234,6 +234,14 @@ def _print_record(record, register, words) -> None:
     if due:
         lines.append(message(QT_TR_NOOP("  next calibration of {serial} due: {date}"),
                              serial=record.item_serial, date=due.isoformat()))
+    elif record.item_serial and register.maker_needed(record.item_serial,
+                                                      record.item_manufacturer or ""):
+        # a certificate naming no maker: another maker's due date is never borrowed (rev65 F4)
+        lines.append(message(QT_TR_NOOP(
+            "  next calibration of {serial}: not known — this certificate names no "
+            "manufacturer, and the serial's certificates name {makers}: the due date is "
+            "told per maker's item"), serial=record.item_serial,
+            makers=", ".join(register.maker_needed(record.item_serial, ""))))
     sys.stdout.write("\n".join(rendered(line, words) for line in lines) + "\n")
 
 

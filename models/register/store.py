@@ -1751,7 +1751,8 @@ class Register:
         printing alike, case aside, same_identifier), else the one set for every maker's
         item of the serial (manufacturer ""); never another maker's. Without
         ``manufacturer`` (an item whose certificate names none), the one set for every
-        maker's item, else any maker's. Of several, the one set last."""
+        maker's item only (rev65 F4: it took any maker's, so a makerless "001" was due by
+        Acme's interval). Of several, the one set last."""
         entries = self._schema.ENTRIES
         serial, maker = _alike(serial), " ".join((manufacturer or "").split())
         with self._read() as conn:
@@ -1761,7 +1762,7 @@ class Register:
             own = {k: v for k, v in found.items() if maker and k[1]
                    and _one_maker(k[1], maker)}
             every = {k: v for k, v in found.items() if not k[1]}
-            chosen = own or every or ({} if maker else found)
+            chosen = own or every
             if len(chosen) < 2:
                 return next(iter(chosen.values()), None)
             notes = conn.execute(self._sa.select(entries.c.subject, entries.c.body_json).where(
@@ -1785,10 +1786,35 @@ class Register:
         c = self._schema.INSTRUMENTS.c
         return conn.execute(sa.select(c.serial, c.manufacturer, c.interval_days)).all()
 
+    def makers_of(self, serial: str) -> tuple[str, ...]:
+        """The manufacturers the certificates of ``serial`` (as :meth:`history` tells the
+        serial) name, one name a maker (maker_names), in the order issued; none named: ()."""
+        from models.register.maker_names import same_maker_name
+
+        makers: builtins.list[str] = []
+        for record in sorted(self.history(serial), key=lambda r: r.issued_at or ""):
+            name = _printed(record.item_manufacturer)
+            if name and not any(same_maker_name(name, kept) for kept in makers):
+                makers.append(name)
+        return tuple(makers)
+
+    def maker_needed(self, serial: str, manufacturer: str = "") -> tuple[str, ...]:
+        """For an item named without its maker (``manufacturer`` blank): the makers the
+        serial's certificates name (:meth:`makers_of`); then its due date cannot be told
+        without the maker (rev65 F4: a makerless "001" last calibrated 2025-01-10 was due
+        2027-11-20, from Acme's "001"). () when a maker is given or none is named."""
+        if (manufacturer or "").strip():
+            return ()
+        return self.makers_of(serial)
+
     def due_date(self, serial: str, manufacturer: str = "") -> dt.date | None:
         """The last calibration of the serial (of ``manufacturer``'s item, as
         :meth:`history` tells it) plus that item's interval (:meth:`interval`; None without
-        either)."""
+        either). None too for an item named without its maker where the serial's
+        certificates name one (:meth:`maker_needed`): whose calibrations and interval would
+        count is not known, and another maker's are never borrowed (rev65 F4)."""
+        if self.maker_needed(serial, manufacturer):
+            return None
         days = self.interval(serial, manufacturer)
         dates = [r.calibration_date for r in self.history(serial, manufacturer)
                  if r.calibration_date]

@@ -1,14 +1,16 @@
 """The window and a maker's name (rev65): an original whose serial and date of calibration
 are those of a current certificate naming another maker asks whether it is another maker's
 item — No issues nothing, Yes issues it and the register records the answer (F1); the same
-maker spelt otherwise is the same calibration (asked for a separate calibration's reason).
-The real main window, driven as a user would."""
+maker spelt otherwise is the same calibration (asked for a separate calibration's reason);
+an item whose certificate names no maker shows no due date borrowed from another maker's
+(F4). The real main window and register window, driven as a user would."""
 
 from __future__ import annotations
 
 import json
 
 import pytest
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QMessageBox
 
 from app.certificate_issue import issue_certificate
@@ -92,3 +94,30 @@ def test_another_makers_serial_is_asked_and_the_answer_recorded(window, qtbot, s
         assert said["others"] == [{"number": first,
                                    "manufacturer": "Möller-Wedel Optical GmbH"}]
         assert register.audit() == []
+
+
+def test_an_item_without_a_maker_shows_no_borrowed_due_date(window, qtbot, samples_dir,
+                                                            tmp_path):
+    """rev65 F4: the makerless "001" (calibrated 2025-01-10) was shown due 2027-11-20, from
+    Acme's "001" calibrated 2026-11-20 and Acme's interval."""
+    with window.certificates.open_register() as register:
+        _issue(register, samples_dir, tmp_path, "a", item_serial="001", item_manufacturer="",
+               calibration_date="2025-01-10")
+        _issue(register, samples_dir, tmp_path, "b", item_serial="001",
+               item_manufacturer="Acme Optics", calibration_date="2026-11-20")
+        register.set_interval("001", 365, "Acme Optics")
+    window.show_register()
+    dialog = window.register_window
+    numbers = [dialog.table.item(row, 0).text() for row in range(2)]
+    assert numbers == ["AB-2026-0002", "AB-2026-0001"]
+    qtbot.mouseClick(dialog.table.viewport(), Qt.MouseButton.LeftButton,
+                     pos=dialog.table.visualItemRect(dialog.table.item(1, 0)).center())
+    dialog.buttons["history"].click()  # the makerless item's
+    title = dialog.history_title.text()
+    assert "next due" not in title and not dialog.due_line.isVisible()
+    assert "no due date: the certificate names no manufacturer, and this serial's name " \
+           "Acme Optics" in title
+    qtbot.mouseClick(dialog.table.viewport(), Qt.MouseButton.LeftButton,
+                     pos=dialog.table.visualItemRect(dialog.table.item(0, 0)).center())
+    dialog.buttons["history"].click()  # Acme's has its own
+    assert "next due 2027-11-20" in dialog.history_title.text()

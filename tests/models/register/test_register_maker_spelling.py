@@ -1,7 +1,8 @@
 """A maker's name spelt otherwise is the same maker (rev65): a second current certificate of
 one calibration is never issued by writing the maker another way (F1), nor for an item with
 no serial by leaving the maker out or adding its legal form (F9); a maker that really differs
-with the same serial and date is asked about, and the answer recorded in the register's chain."""
+with the same serial and date is asked about, and the answer recorded in the register's chain;
+an item named without its maker never borrows another maker's due date (F4)."""
 
 from __future__ import annotations
 
@@ -167,3 +168,31 @@ def test_an_item_without_a_serial_of_another_maker_is_asked_about(register):
     # another item altogether is no question
     issue(register, meta("Zeta", serial="", description="Dividing head DH-2"))
     assert len(register.list()) == 3 and register.audit() == []
+
+
+# -- F4: an item named without its maker -------------------------------------------------------
+def test_an_item_without_a_maker_never_takes_another_makers_due_date(register, capsys):
+    """rev65 F4: the makerless "001" last calibrated 2025-01-10 was due 2027-11-20, from
+    Acme's "001" calibrated 2026-11-20 and Acme's interval."""
+    blank = issue(register, meta("", serial="001", day="2025-01-10"))
+    acme = issue(register, meta("Acme Optics", serial="001", day="2026-11-20"))
+    register.set_interval("001", 365, "Acme Optics")
+    assert register.interval("001", "") is None  # not Acme's
+    assert register.due_date("001", "") is None
+    assert register.maker_needed("001", "") == ("Acme Optics",)
+    assert register.due_date("001", "Acme Optics") == dt.date(2027, 11, 20)
+    assert register.maker_needed("001", "Acme Optics") == ()
+    assert main(["register", "--register", register.url, "show", blank.number]) == 0
+    out = capsys.readouterr().out
+    assert "due:" not in out
+    assert ("next calibration of 001: not known — this certificate names no manufacturer, "
+            "and the serial's certificates name Acme Optics") in out
+    assert main(["register", "--register", register.url, "show", acme.number]) == 0
+    assert "next calibration of 001 due: 2027-11-20" in capsys.readouterr().out
+
+
+def test_an_item_whose_certificates_never_name_a_maker_keeps_its_due_date(register):
+    issue(register, meta("", serial="PG-12", day="2026-01-10"))
+    register.set_interval("PG-12", 180)
+    assert register.due_date("PG-12", "") == dt.date(2026, 7, 9)
+    assert register.maker_needed("PG-12", "") == ()
