@@ -125,6 +125,19 @@ class CertificateDialogs:
                                                  question.format(number=revision.number))
         return text if ok else ""
 
+    def confirm_another_maker(self, numbers, reason: str) -> bool:
+        """A current certificate of the serial and date names another manufacturer: is this
+        another maker's item? (rev65 F1; the answer Yes is recorded in the register)"""
+        answer = self.window.ask(
+            tr("Another manufacturer's item?"),
+            tr("{reason}.\n\nIs this item another manufacturer's than that of {numbers}? Yes: "
+               "issue it; the register records that you said so. No: nothing is issued (to "
+               "correct {numbers}, amend or replace it from File › Certificate register).")
+            .format(reason=reason, numbers=", ".join(numbers)),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No)
+        return answer == QMessageBox.StandardButton.Yes
+
     def ask_separate_calibration(self, numbers, reason: str) -> str:
         return self._multiline_answer(tr("A calibration already reported"), tr(
             "{reason}.\n\nIf this is a calibration of its own, say why (printed on the "

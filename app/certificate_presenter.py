@@ -88,6 +88,11 @@ class CertificateView(Protocol):
         """``numbers`` report the item and date of calibration already (``reason``, the
         register's words): why this is a calibration of its own (empty: not issued)."""
 
+    def confirm_another_maker(self, numbers: tuple[str, ...], reason: str) -> bool:
+        """``numbers`` report the serial and date of calibration under another
+        manufacturer's name (``reason``): is this another maker's item? (recorded when
+        issued; No: not issued)"""
+
     def confirm_correction(self, revision: PendingRevision, reason: str) -> bool:
         """An amendment or replacement with another serial number or date of calibration
         than ``revision.number``'s: a correction of it (stated on it)? No: not an amendment."""
@@ -602,12 +607,13 @@ class CertificatePresenter:
                note, raw_capture=None, separate: str = "") -> bool:
         from app.certificate_issue import IssuedNotWritten, issue_certificate
         from models.register.store import (
+            AnotherMakersItem,
             NotTheSameCalibration,
             RegisterError,
             SameCalibrationIssued,
         )
 
-        corrected = False
+        corrected = another_maker = False
         try:
             while True:
                 try:
@@ -617,6 +623,7 @@ class CertificatePresenter:
                             path, supersedes=revision.number if revision else "",
                             change_note=note, replacement=bool(revision and revision.replacement),
                             separate_calibration=separate, correction_confirmed=corrected,
+                            another_makers_item=another_maker,
                             raw_capture=raw_capture,
                             dcc=self._dcc_maker(kind, result, path, settings),
                             dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
@@ -631,6 +638,19 @@ class CertificatePresenter:
                     finally:
                         self.view.wait_cursor(True)
                     if not separate:
+                        raise
+                except AnotherMakersItem as exc:
+                    # a maker's name spelt otherwise is not another maker (rev65 F1): asked,
+                    # and a Yes recorded in the register
+                    if another_maker:
+                        raise
+                    self.view.wait_cursor(False)
+                    try:
+                        another_maker = self.view.confirm_another_maker(exc.numbers,
+                                                                        explained(exc))
+                    finally:
+                        self.view.wait_cursor(True)
+                    if not another_maker:
                         raise
                 except NotTheSameCalibration as exc:
                     # another item's or another day's details: a correction only when the

@@ -116,6 +116,11 @@ def _parser(words, kinds: tuple[str, ...] | None = None,
                                          "adjustment): why, printed on it with the other's "
                                          "number (else it is refused: a correction is an "
                                          "amendment or a replacement)")))
+    p.add_argument("--another-makers-item", action="store_true", help=words(QT_TR_NOOP(
+        "with --certificate: a certificate still valid reports the same serial number and "
+        "date of calibration under another manufacturer's name, and this is indeed another "
+        "maker's item (else it is refused: a maker's name spelt otherwise is the same "
+        "maker); recorded in the register that you said so")))
     p.add_argument("--results", metavar="OUT.csv|OUT.xlsx",
                    help=words(QT_TR_NOOP("also write the results per point (with U) as CSV or "
                                          "XLSX")))
@@ -753,6 +758,8 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
                                        Path(args.file).name, args.certificate,
                                        dcc=dcc, dcc_path=args.dcc or "",
                                        separate_calibration=getattr(args, "separate_calibration", ""),
+                                       another_makers_item=getattr(args, "another_makers_item",
+                                                                   False),
                                        results=_issued_results(args) if args.results else None,
                                        results_path=args.results or "",
                                        raw_capture=raw_capture)

@@ -220,11 +220,28 @@ def _print_record(record, register, words) -> None:
         # the file of that name here, when it is not the recorded one, and the recorded one
         # beside it (rev64 F15: after a killed issue, r.xlsx held another certificate's)
         lines += _results_elsewhere(entry, Path.cwd(), "  ")
+    # the user's word that the item is another maker's than that of a current certificate
+    # of the same serial and date (rev65 F1: a maker spelt otherwise passed unasked)
+    for entry in register.another_maker_confirmations(record.number):
+        lines.append(message(QT_TR_NOOP(
+            "  another maker's item, as {user} confirmed at issue ({recorded_at}): {maker}, not "
+            "the maker of {others}"), user=entry["os_user"] or "—",
+            recorded_at=entry["recorded_at"], maker=entry["manufacturer"] or "—",
+            others=", ".join(f"{o.get('number', '')} ({o.get('manufacturer', '')})"
+                             for o in entry["others"])))
     due = register.due_date(record.item_serial, record.item_manufacturer or "") \
         if record.item_serial else None
     if due:
         lines.append(message(QT_TR_NOOP("  next calibration of {serial} due: {date}"),
                              serial=record.item_serial, date=due.isoformat()))
+    elif record.item_serial and register.maker_needed(record.item_serial,
+                                                      record.item_manufacturer or ""):
+        # a certificate naming no maker: another maker's due date is never borrowed (rev65 F4)
+        lines.append(message(QT_TR_NOOP(
+            "  next calibration of {serial}: not known — this certificate names no "
+            "manufacturer, and the serial's certificates name {makers}: the due date is "
+            "told per maker's item"), serial=record.item_serial,
+            makers=", ".join(register.maker_needed(record.item_serial, ""))))
     sys.stdout.write("\n".join(rendered(line, words) for line in lines) + "\n")
 
 

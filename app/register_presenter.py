@@ -31,7 +31,10 @@ class RegisterView(Protocol):
     def selected_row(self) -> int: ...  # −1 when none
 
     def show_history(self, serial: str, series: dict[str, tuple[list[float], list[float]]],
-                     dates: list[str], due: str, interval_days: int) -> None: ...
+                     dates: list[str], due: str, interval_days: int,
+                     makers: tuple[str, ...] = ()) -> None:
+        """``makers``: the item's certificate names no maker and the serial's name these
+        (no due date without the maker)."""
 
     def ask_pdf_to_verify(self) -> str: ...
 
@@ -287,6 +290,7 @@ class RegisterPresenter:
             records = register.history(serial, manufacturer)
             due = register.due_date(serial, manufacturer)
             interval = register.interval(serial, manufacturer) or 0
+            makers = register.maker_needed(serial, manufacturer)
         series: dict[str, tuple[list[float], list[float]]] = {}
         for r in records:
             for name, value in r.headline.items():
@@ -294,7 +298,7 @@ class RegisterPresenter:
                 xs.append(_days(r.calibration_date or r.issue_date))
                 ys.append(value)
         self.view.show_history(serial, series, [r.calibration_date for r in records],
-                               due.isoformat() if due else "", interval)
+                               due.isoformat() if due else "", interval, makers)
 
     def set_interval(self, serial: str, days: int) -> None:
         """The interval of the instrument whose history is shown: its serial's item of its

@@ -234,7 +234,9 @@ class RegisterWindow(QDialog):
         rows = self.table.selectionModel().selectedRows()
         return rows[0].row() if rows else -1
 
-    def show_history(self, serial, series, dates, due, interval_days) -> None:
+    def show_history(self, serial, series, dates, due, interval_days, makers=()) -> None:
+        """``makers``: the item names no maker, and the serial's certificates name these:
+        no due date without the maker (rev65 F4)."""
         self.serial = serial
         self._series = dict(series)
         chosen = self.figure.currentData()
@@ -267,6 +269,9 @@ class RegisterWindow(QDialog):
             tr("Instrument {serial}: {count} calibration(s)").format(serial=serial,
                                                                     count=len(dates))
             + (tr(", next due {date}").format(date=due) if due
+               else tr(", no due date: the certificate names no manufacturer, and this "
+                       "serial's name {makers} (the due date is per maker's item)").format(
+                   makers=", ".join(makers)) if makers
                else tr(", no due date (set an interval)")))
 
     def _draw_history(self, name: str) -> None:

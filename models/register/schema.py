@@ -17,7 +17,8 @@ from collections.abc import Callable
 import sqlalchemy as sa
 
 __all__ = ["CERTIFICATES", "COUNTERS", "ENTRIES", "INSTRUMENTS", "LATEST", "METADATA",
-           "MIGRATIONS", "READ_AS_IS", "SCHEMA_VERSION", "STATE", "downgrade_evidence"]
+           "MIGRATIONS", "READ_AS_IS", "SCHEMA_VERSION", "STATE", "downgrade_evidence",
+           "intervals_per_serial"]
 
 METADATA = sa.MetaData()
 
@@ -107,19 +108,23 @@ STATE = sa.Table(
     sa.Column("value", sa.Text, nullable=False),
 )
 
-#: per instrument, its serial and manufacturer, the calibration interval (migration 2, per
-#: serial; migration 7 per maker's serial: "" is every maker's item of the serial, as an
-#: interval set before it or without a maker)
+#: per instrument, its serial and manufacturer, the calibration interval (migration 7; ""
+#: is every maker's item of the serial, as an interval set before it or without a maker).
+#: Migration 2 kept it per serial in a table "instruments", which migration 7 replaces by
+#: this one under another name: an AngleBench of schema 6 still running against a migrated
+#: register (opened before the migration, or on another PC) fails with "no such table" on
+#: the intervals instead of deleting every maker's interval of a serial unrecorded (rev65 F3)
 INSTRUMENTS = sa.Table(
-    "instruments", METADATA,
+    "calibration_intervals", METADATA,
     sa.Column("serial", sa.String(200), primary_key=True),
     sa.Column("manufacturer", sa.Text, primary_key=True, nullable=False, server_default=""),
     sa.Column("interval_days", sa.Integer, nullable=False),
 )
 
 
-def _v2_instruments() -> sa.Table:
-    """The intervals' table as version 2 made it: per serial."""
+def intervals_per_serial() -> sa.Table:
+    """The intervals' table as versions 2 to 6 have it: "instruments", per serial (a
+    read-only register of version 6 is read as it is)."""
     return sa.Table("instruments", sa.MetaData(), sa.Column("serial", sa.String(200), primary_key=True),
                     sa.Column("interval_days", sa.Integer, nullable=False))
 
@@ -139,7 +144,7 @@ def _v1(conn: sa.Connection) -> None:
 
 
 def _v2(conn: sa.Connection) -> None:
-    _v2_instruments().create(conn)  # as version 2 made it (migration 7 adds the maker)
+    intervals_per_serial().create(conn)  # as version 2 made it (migration 7 adds the maker)
     conn.execute(sa.text("CREATE INDEX certificates_item_serial ON certificates (item_serial)"))
 
 
@@ -218,29 +223,29 @@ def _v6(conn: sa.Connection) -> None:
 
 
 def _v7(conn: sa.Connection) -> None:
-    """The calibration interval per maker's serial: the instruments' key becomes (serial,
-    manufacturer) (stop 63: two makers' serial "001" shared one interval). A key cannot be
-    changed in place on SQLite, so the table is made anew beside the old one, the rows
-    copied with manufacturer "" (every maker's item of the serial: what they meant), the
-    old one dropped and the new one renamed — all in the migration's one transaction, so a
-    migration killed or failing half-way leaves version 6 as it was. No record's or entry's
-    chain value is touched: the interval entries already chained (subject the serial, no
-    maker in their body) are the intervals of maker "" the audit's cross-check compares the
-    table with, so the chain and the cross-check verify as before. Refused when the column
-    exists already (a version set back)."""
-    columns = {c["name"] for c in sa.inspect(conn).get_columns("instruments")}
-    if "manufacturer" in columns:
-        raise ValueError("the column of version 7 exists already")
-    old = _v2_instruments()
+    """The calibration interval per maker's serial (stop 63: two makers' serial "001"
+    shared one interval): the table "calibration_intervals", keyed by (serial,
+    manufacturer), is made, the rows of "instruments" copied into it with manufacturer ""
+    (every maker's item of the serial: what they meant) and "instruments" dropped — in the
+    migration's one transaction, so a migration killed or failing half-way leaves version 6
+    as it was. A new name, not the old one's key changed: an AngleBench of schema 6 still
+    running (opened before the migration, or an old install sharing the register) checks
+    the version only at opening, and its "DELETE FROM instruments WHERE serial = ?" removed
+    every maker's interval of the serial, unrecorded (rev65 F3); on the new name its every
+    statement on the intervals fails ("no such table: instruments") and rolls back. No
+    record's or entry's chain value is touched: the interval entries already chained
+    (subject the serial, no maker in their body) are the intervals of maker "" the audit's
+    cross-check compares the table with, so the chain and the cross-check verify as before.
+    Refused when the table exists already (a version set back)."""
+    if "calibration_intervals" in sa.inspect(conn).get_table_names():
+        raise ValueError("the table of version 7 exists already")
+    old = intervals_per_serial()
     rows = conn.execute(sa.select(old.c.serial, old.c.interval_days)).all()
-    fresh = sa.Table("instruments_v7", sa.MetaData(),
-                     *(column._copy() for column in INSTRUMENTS.columns))
-    fresh.create(conn)
+    INSTRUMENTS.create(conn)
     if rows:
-        conn.execute(fresh.insert(), [{"serial": r.serial, "manufacturer": "",
-                                       "interval_days": r.interval_days} for r in rows])
+        conn.execute(INSTRUMENTS.insert(), [{"serial": r.serial, "manufacturer": "",
+                                             "interval_days": r.interval_days} for r in rows])
     old.drop(conn)
-    conn.execute(sa.text("ALTER TABLE instruments_v7 RENAME TO instruments"))
 
 
 #: version → the migration that brings a register to it from the version before
@@ -282,9 +287,8 @@ def downgrade_evidence(conn: sa.Connection, version: int) -> str:
         if version < 3 and "chain_sha256" in columns and conn.execute(sa.text(
                 "SELECT COUNT(*) FROM certificates WHERE chain_sha256 IS NOT NULL")).scalar_one():
             return "the records carry the hash chain of version 3"
-    if version < 7 and "instruments" in tables and "manufacturer" in {
-            c["name"] for c in inspector.get_columns("instruments")}:
-        return "the column of version 7 exists"
+    if version < 7 and "calibration_intervals" in tables:
+        return "the table of version 7 (calibration_intervals) exists"
     return ""
 
 
@@ -326,7 +330,7 @@ def append_baseline(conn, records: int) -> None:
     baseline = [("numbering", name, {"last_value": value, "baseline": True})
                 for name, value in conn.execute(sa.select(COUNTERS.c.name, COUNTERS.c.last_value)
                                                 .order_by(COUNTERS.c.name))]
-    instruments = _v2_instruments()  # as version 4 finds it
+    instruments = intervals_per_serial()  # as version 4 finds it
     baseline += [("interval", serial, {"days": days, "baseline": True})
                  for serial, days in conn.execute(sa.select(
                      instruments.c.serial, instruments.c.interval_days)

@@ -46,8 +46,9 @@ from models.register.wording import DOCUMENT_KINDS, kind_words
 if TYPE_CHECKING:
     from sqlalchemy.engine import Connection
 
-__all__ = ["CertificateRecord", "IssueRequest", "NotTheSameCalibration", "PrintedHead", "Register",
-           "RegisterError", "RegisterTampered", "SameCalibrationIssued", "lab_timezone", "software_versions"]
+__all__ = ["AnotherMakersItem", "CertificateRecord", "IssueRequest", "NotTheSameCalibration",
+           "PrintedHead", "Register", "RegisterError", "RegisterTampered", "SameCalibrationIssued",
+           "lab_timezone", "software_versions"]
 
 LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
              "psycopg")
@@ -74,6 +75,20 @@ class SameCalibrationIssued(RegisterError):
     reports (``numbers``): a corrected one is its amendment or replacement, a calibration of
     its own is issued as separate, saying why (ISO/IEC 17025 7.8.8: no second original of one
     calibration — a reading changed and issued again gave two, neither naming the other)."""
+
+    def __init__(self, text, numbers: tuple[str, ...]) -> None:
+        super().__init__(text)
+        self.numbers = numbers
+
+
+class AnotherMakersItem(RegisterError):
+    """An original for the serial (or, with none, the description) and date of calibration of
+    a current certificate (``numbers``) naming another manufacturer, whose name is not one
+    maker's by its maker key (maker_names; rev65 F1: "Moeller-Wedel" for "Möller-Wedel"
+    issued a second current certificate of one calibration, unasked and unrecorded). Two
+    makers' serial "001" are two items, so it is issued when the user confirms that it is
+    another maker's item; the confirmation is a chained entry of the register ("another
+    maker's item"), which `register show` lists."""
 
     def __init__(self, text, numbers: tuple[str, ...]) -> None:
         super().__init__(text)
@@ -847,7 +862,7 @@ class Register:
               supersedes: str = "", change_note: str = "", replacement: bool = False,
               separate_calibration: str | None = None,
               document_kind: str | Callable[[], str] | None = None,
-              correction_confirmed: bool = False
+              correction_confirmed: bool = False, another_makers_item: bool = False
               ) -> tuple[CertificateRecord, bytes]:
         """Allocate the number (or check the one given), render the PDF with it and with
         the chain's head before it, record it. The PDF is rendered outside any lock with
@@ -869,6 +884,11 @@ class Register:
         raises :class:`SameCalibrationIssued` unless it says why this is a calibration of its
         own (printed on it, with the other certificates' numbers). None: not checked (the
         register's own tests of numbering and of the chain issue one detail many times).
+        Where it finds a current certificate of that serial and date naming another
+        manufacturer (one that is not this maker by the maker key, maker_names), it raises
+        :class:`AnotherMakersItem` unless ``another_makers_item`` confirms it is another
+        maker's item; the confirmation is then a chained entry ("another_maker", the new
+        number, the makers and the certificates: :meth:`another_maker_confirmations`).
 
         ``document_kind``: what the document rendered is, "calibration" (a calibration
         certificate) or "test" (a test report), or a callable that says so after each
@@ -934,6 +954,10 @@ class Register:
                     plan = self._plan(conn, meta, supersedes, replacement, issue_date, now)
                     same = () if supersedes or separate_calibration is None else \
                         self._same_calibration(conn, request.workbench, meta)
+                    # an amendment's corrected maker is confirmed and stated on it
+                    # (_corrections); an original naming another maker is asked (rev65 F1)
+                    others = () if supersedes or separate_calibration is None else \
+                        self._another_makers(conn, request.workbench, meta)
                     corrected = () if plan.original is None else self._corrections(
                         conn, plan.original, request.workbench, meta, correction_confirmed)
                 separate = " ".join((separate_calibration or "").split())
@@ -947,6 +971,20 @@ class Register:
                         numbers=", ".join(same), serial=meta.item_serial or "—",
                         date=meta.calibration_date or "—"),
                         same)
+                if others and not another_makers_item:
+                    raise AnotherMakersItem(message(QT_TR_NOOP(
+                        "{numbers} reports serial {serial}, calibrated {date}, of {makers}, not "
+                        "of {maker}: a maker's name spelt otherwise is the same maker, and this "
+                        "would be a second certificate of that calibration. Issue it only if it "
+                        "is another maker's item with the same serial (it is then recorded in "
+                        "the register that you said so; on the command line: "
+                        "--another-makers-item)"),
+                        numbers=", ".join(n for n, _m in others),
+                        serial=meta.item_serial or meta.item_description or "—",
+                        date=meta.calibration_date or "—",
+                        makers=", ".join(sorted({m for _n, m in others})),
+                        maker=_printed(meta.item_manufacturer) or "—"),
+                        tuple(n for n, _m in others))
                 original = plan.original
                 final = dataclasses.replace(
                     meta, certificate_number=plan.number, issue_date=issue_date.isoformat(),
@@ -1013,6 +1051,14 @@ class Register:
                             conn.execute(certificates.update().where(
                                 certificates.c.number == original.number).values(
                                 status="superseded", superseded_by=plan.number))
+                        if others:  # said by the user: recorded, so that it can be audited
+                            self._append_entry(conn, "another_maker", plan.number, {
+                                "serial": meta.item_serial,
+                                "description": meta.item_description,
+                                "manufacturer": meta.item_manufacturer,
+                                "calibration_date": meta.calibration_date,
+                                "others": [{"number": n, "manufacturer": m}
+                                           for n, m in others]})
                         # its results file may now be recorded, by this issuer only
                         self._results_due.add(plan.number)
                         return record, pdf
@@ -1056,7 +1102,7 @@ class Register:
         (no_serial: empty, "-", "n/a" …), an item of no serial whose description and
         manufacturer print alike (same_identifier; #62 review: "rotary table" was another
         item than "Rotary table", and a serial "-" was every item without one)."""
-        from models.register.identifiers import no_serial, same_serial
+        from models.register.identifiers import no_serial, same_identifier, same_serial
 
         c = self._schema.CERTIFICATES.c
         query = self._sa.select(c.number, c.item_serial, c.item_description,
@@ -1065,11 +1111,63 @@ class Register:
             c.calibration_date == meta.calibration_date)
         if no_serial(meta.item_serial):
             return tuple(row.number for row in conn.execute(query.order_by(c.id))
-                         if no_serial(row.item_serial) and _same_item(
-                             row.item_description, row.item_manufacturer, meta))
+                         if no_serial(row.item_serial) and same_identifier(
+                             row.item_description or "", meta.item_description or "")
+                         and _same_maker(row.item_manufacturer, meta.item_manufacturer))
         return tuple(row.number for row in conn.execute(query.order_by(c.id))
                      if same_serial(row.item_serial, meta.item_serial)
                      and _same_maker(row.item_manufacturer, meta.item_manufacturer))
+
+    def _another_makers(self, conn, workbench: str, meta: CertificateMetadata,
+                        original: CertificateRecord | None = None
+                        ) -> tuple[tuple[str, str], ...]:
+        """The current certificates (number, manufacturer) of ``workbench`` for the serial
+        (with none, the description) and date of calibration of ``meta`` that name another
+        manufacturer than ``meta``'s, both named and not one maker (maker_names): another
+        maker's item, or the same one with its maker spelt otherwise — asked, never passed
+        silently (rev65 F1). ``original``: the certificate an amendment corrects (not
+        counted)."""
+        from models.register.identifiers import no_serial, same_identifier, same_serial
+
+        if not (meta.item_manufacturer or "").strip():
+            return ()
+        c = self._schema.CERTIFICATES.c
+        query = self._sa.select(c.number, c.item_serial, c.item_description,
+                                c.item_manufacturer).where(
+            c.workbench == workbench, c.status == "issued",
+            c.calibration_date == meta.calibration_date)
+        unnamed = no_serial(meta.item_serial)
+        return tuple(
+            (row.number, _printed(row.item_manufacturer))
+            for row in conn.execute(query.order_by(c.id))
+            if (original is None or row.number != original.number)
+            and (row.item_manufacturer or "").strip()
+            and not _same_maker(row.item_manufacturer, meta.item_manufacturer)
+            and (same_identifier(row.item_description or "", meta.item_description or "")
+                 and no_serial(row.item_serial) if unnamed else
+                 not no_serial(row.item_serial)
+                 and same_serial(row.item_serial, meta.item_serial)))
+
+    def another_maker_confirmations(self, number: str = "") -> builtins.list[dict]:
+        """The certificates issued after the user confirmed that the item is another
+        maker's than that of a current certificate of the same serial and date
+        (:class:`AnotherMakersItem`), from the chained entries: ``number``,
+        ``manufacturer``, ``others`` ([{number, manufacturer}]), ``recorded_at``,
+        ``os_user``; every one, or ``number``'s."""
+        entries = self._schema.ENTRIES
+        query = self._sa.select(entries.c.subject, entries.c.body_json, entries.c.recorded_at,
+                                entries.c.os_user).where(entries.c.kind == "another_maker")
+        if number:
+            query = query.where(entries.c.subject == number)
+        with self._read() as conn:
+            rows = conn.execute(query.order_by(entries.c.seq)).all()
+        out = []
+        for row in rows:
+            body = json.loads(row.body_json or "{}")
+            out.append({"number": row.subject, "manufacturer": body.get("manufacturer", ""),
+                        "others": body.get("others", []), "recorded_at": row.recorded_at,
+                        "os_user": row.os_user})
+        return out
 
     def _corrections(self, conn, original: CertificateRecord, workbench: str,
                      meta: CertificateMetadata, confirmed: bool) -> tuple[Any, ...]:
@@ -1743,7 +1841,8 @@ class Register:
         printing alike, case aside, same_identifier), else the one set for every maker's
         item of the serial (manufacturer ""); never another maker's. Without
         ``manufacturer`` (an item whose certificate names none), the one set for every
-        maker's item, else any maker's. Of several, the one set last."""
+        maker's item only (rev65 F4: it took any maker's, so a makerless "001" was due by
+        Acme's interval). Of several, the one set last."""
         entries = self._schema.ENTRIES
         serial, maker = _alike(serial), " ".join((manufacturer or "").split())
         with self._read() as conn:
@@ -1753,7 +1852,7 @@ class Register:
             own = {k: v for k, v in found.items() if maker and k[1]
                    and _one_maker(k[1], maker)}
             every = {k: v for k, v in found.items() if not k[1]}
-            chosen = own or every or ({} if maker else found)
+            chosen = own or every
             if len(chosen) < 2:
                 return next(iter(chosen.values()), None)
             notes = conn.execute(self._sa.select(entries.c.subject, entries.c.body_json).where(
@@ -1769,15 +1868,43 @@ class Register:
     def _intervals(self, conn) -> builtins.list[Any]:
         """Every interval set: serial, manufacturer ("" in a register read at schema version
         6, whose intervals are per serial: :attr:`_intervals_per_serial`), interval_days."""
-        c, sa = self._schema.INSTRUMENTS.c, self._sa
-        maker = sa.literal("").label("manufacturer") if self._intervals_per_serial \
-            else c.manufacturer
-        return conn.execute(sa.select(c.serial, maker, c.interval_days)).all()
+        sa = self._sa
+        if self._intervals_per_serial:
+            c = self._schema.intervals_per_serial().c
+            return conn.execute(sa.select(c.serial, sa.literal("").label("manufacturer"),
+                                          c.interval_days)).all()
+        c = self._schema.INSTRUMENTS.c
+        return conn.execute(sa.select(c.serial, c.manufacturer, c.interval_days)).all()
+
+    def makers_of(self, serial: str) -> tuple[str, ...]:
+        """The manufacturers the certificates of ``serial`` (as :meth:`history` tells the
+        serial) name, one name a maker (maker_names), in the order issued; none named: ()."""
+        from models.register.maker_names import same_maker_name
+
+        makers: builtins.list[str] = []
+        for record in sorted(self.history(serial), key=lambda r: r.issued_at or ""):
+            name = _printed(record.item_manufacturer)
+            if name and not any(same_maker_name(name, kept) for kept in makers):
+                makers.append(name)
+        return tuple(makers)
+
+    def maker_needed(self, serial: str, manufacturer: str = "") -> tuple[str, ...]:
+        """For an item named without its maker (``manufacturer`` blank): the makers the
+        serial's certificates name (:meth:`makers_of`); then its due date cannot be told
+        without the maker (rev65 F4: a makerless "001" last calibrated 2025-01-10 was due
+        2027-11-20, from Acme's "001"). () when a maker is given or none is named."""
+        if (manufacturer or "").strip():
+            return ()
+        return self.makers_of(serial)
 
     def due_date(self, serial: str, manufacturer: str = "") -> dt.date | None:
         """The last calibration of the serial (of ``manufacturer``'s item, as
         :meth:`history` tells it) plus that item's interval (:meth:`interval`; None without
-        either)."""
+        either). None too for an item named without its maker where the serial's
+        certificates name one (:meth:`maker_needed`): whose calibrations and interval would
+        count is not known, and another maker's are never borrowed (rev65 F4)."""
+        if self.maker_needed(serial, manufacturer):
+            return None
         days = self.interval(serial, manufacturer)
         dates = [r.calibration_date for r in self.history(serial, manufacturer)
                  if r.calibration_date]
@@ -1800,12 +1927,12 @@ def _interval_maker(body_json: str | None) -> str:
 
 def _one_maker(kept: str, manufacturer: str) -> bool:
     """Whether an interval's maker is ``manufacturer``: both none (every maker's item), or
-    both named and printing alike, case aside (same_identifier)."""
-    from models.register.identifiers import same_identifier
+    both named and one maker (maker_names.same_maker_name: its key, or printing alike)."""
+    from models.register.maker_names import same_maker_name
 
     if not kept.strip() or not manufacturer.strip():
         return not kept.strip() and not manufacturer.strip()
-    return kept == manufacturer or same_identifier(kept, manufacturer)
+    return kept == manufacturer or same_maker_name(kept, manufacturer)
 
 
 class _Turn:
@@ -1891,13 +2018,14 @@ def _same_instrument(kept: str, serial: str) -> bool:
 
 
 def _same_maker(kept: str | None, manufacturer: str) -> bool:
-    """Whether a record's manufacturer is ``manufacturer``'s, for an instrument's history:
-    printing alike, case aside (same_identifier); a record or a call naming none is any."""
-    from models.register.identifiers import same_identifier
+    """Whether a record's manufacturer is ``manufacturer``'s: one maker by its maker key or
+    printing alike, case aside (maker_names.same_maker_name; rev65 F1: "Moeller-Wedel" was
+    another maker than "Möller-Wedel"); a record or a call naming none is any."""
+    from models.register.maker_names import same_maker_name
 
     if not (kept or "").strip() or not (manufacturer or "").strip():
         return True
-    return same_identifier(kept or "", manufacturer)
+    return same_maker_name(kept or "", manufacturer)
 
 
 def _parse_time(text: str) -> dt.datetime:

@@ -594,3 +594,39 @@ def test_a_full_disk_when_export_writes_is_said_in_words(tmp_path, monkeypatch, 
             "unchanged") in err and "Errno" not in err
     assert not (tmp_path / "all.zip").exists()
     assert (main(["register", "head"]), capsys.readouterr().out) == before
+
+
+def test_another_makers_item_is_issued_only_with_its_option_and_shown(samples_dir, tmp_path,
+                                                                      capsys):
+    """rev65 F1: a certificate naming another maker than a current one of the same serial
+    and date is refused without --another-makers-item; with it, issued, and `register show`
+    prints the user's word from the register's chain."""
+    def analyze(name, maker, *options):
+        meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+        meta.update({"example": False, "certificate_number": "", "item_manufacturer": maker})
+        (tmp_path / f"{name}.json").write_text(json.dumps(meta), encoding="utf-8")
+        code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                     "--certificate", str(tmp_path / f"{name}.pdf"), "--metadata",
+                     str(tmp_path / f"{name}.json"), *options])
+        return code, capsys.readouterr().err
+
+    assert analyze("a", "Möller-Wedel Optical GmbH")[0] == 0
+    with Register(register_url()) as register:
+        [first] = [r.number for r in register.list()]
+    code, err = analyze("b", "Moeller-Wedel Optical")  # issued before rev65 F1's fix
+    assert code != 0 and f"{first} already reports this calibration" in err, err
+    code, err = analyze("b", "Zeta Instruments")
+    assert code != 0 and err.startswith(
+        f"anglebench analyze: {first} reports serial RX-26-0815, calibrated 2026-11-20, of "
+        "Möller-Wedel Optical GmbH, not of Zeta Instruments"), err
+    assert "--another-makers-item" in err and "no certificate was written" in err
+    code, err = analyze("b", "Moeller-Wedel Optical", "--another-makers-item")
+    assert code != 0 and "already reports this calibration" in err  # one maker: no
+    code, err = analyze("b", "Zeta Instruments", "--another-makers-item")
+    assert code == 0, err
+    with Register(register_url()) as register:
+        [second] = [r.number for r in register.list() if r.number != first]
+    assert main(["register", "show", second]) == 0
+    assert (f"Zeta Instruments, not the maker of {first} (Möller-Wedel Optical GmbH)"
+            in capsys.readouterr().out)
+    assert main(["register", "verify"]) == 0

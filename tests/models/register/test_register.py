@@ -876,7 +876,10 @@ def test_history_and_due_date_of_one_serial_of_two_makers_are_each_makers(regist
                                                                           a.number]
     # no maker named, on either side: by the serial alone
     assert [r.number for r in register.history("001")] == [unnamed.number, a.number, b.number]
-    assert register.due_date("001") == dt.date(2027, 11, 20)
+    # but no due date without the maker: whose calibrations would count is not known, and
+    # Zeta's is never borrowed (rev65 F4)
+    assert register.due_date("001") is None
+    assert register.maker_needed("001") == ("Acme Optics", "Zeta Instruments")
 
 
 @pytest.mark.parametrize(("field", "what", "typed", "at"), [

@@ -160,7 +160,7 @@ def _as_version_4(url: str) -> str:
                           "ALTER TABLE certificates DROP COLUMN dcc_sha256",
                           "ALTER TABLE certificates DROP COLUMN document_kind",
                           # the intervals per serial, as version 2 made them (no interval set)
-                          "DROP TABLE instruments",
+                          "DROP TABLE calibration_intervals",
                           "CREATE TABLE instruments (serial VARCHAR(200) PRIMARY KEY, "
                           "interval_days INTEGER NOT NULL)",
                           "UPDATE schema_version SET version = 4",

@@ -12,6 +12,7 @@ import pytest
 
 from models.certificate.metadata import CertificateMetadata
 from models.register.store import (
+    AnotherMakersItem,
     IssueRequest,
     NotTheSameCalibration,
     Register,
@@ -47,7 +48,11 @@ def issue(register: Register, maker: str, day: str = "2026-11-20", **options):
 
 def test_two_makers_serial_001_calibrated_the_same_day_are_two_calibrations(register):
     acme = issue(register, "Acme Optics")
-    zeta = issue(register, "Zeta Instruments")  # refused as Acme's calibration before
+    # refused as Acme's calibration before; asked now (rev65 F1: a maker spelt otherwise is
+    # no other maker), and issued when confirmed another maker's item
+    with pytest.raises(AnotherMakersItem):
+        issue(register, "Zeta Instruments")
+    zeta = issue(register, "Zeta Instruments", another_makers_item=True)
     assert zeta.revision == "original" and zeta.supersedes is None
     assert register.reports_calibration("polygon", meta("Zeta Instruments")) == (zeta.number,)
     # the same maker however it prints, or a certificate naming none, is the same item
@@ -62,7 +67,7 @@ def test_a_maker_corrected_onto_another_current_calibration_is_refused(register)
     """Laundering by amendment: Zeta's "001" amended to Acme's maker (confirmed) would be a
     second current certificate of Acme's "001" calibrated that day."""
     acme = issue(register, "Acme Optics")
-    zeta = issue(register, "Zeta Instruments")
+    zeta = issue(register, "Zeta Instruments", another_makers_item=True)
     with pytest.raises(NotTheSameCalibration, match=f"{acme.number} already reports serial "
                        f"number 001, calibrated 2026-11-20: a correction of {zeta.number}"):
         register.issue(IssueRequest("polygon", meta("\u0410cme optics"), PROJECT), render,

@@ -114,7 +114,8 @@ def test_the_command_line_sets_one_makers_interval(register_url, capsys):
 def test_an_interval_moved_to_another_maker_behind_the_registers_back_is_found(register):
     register.set_interval("001", 365, "Acme Optics")
     with register.engine.begin() as conn:
-        conn.execute(sa.text("UPDATE instruments SET manufacturer = 'Zeta Instruments'"))
+        conn.execute(sa.text("UPDATE calibration_intervals SET manufacturer = "
+                             "'Zeta Instruments'"))
     problems = [str(p) for p in register.audit()]
     assert any("instrument 001 (Acme Optics): calibration interval — day(s), but the "
                "register's records set 365" in p for p in problems)
@@ -140,10 +141,10 @@ def _chains(url: str) -> dict:
             f"entry {seq}": c for seq, c in conn.execute("SELECT seq, chain_sha256 FROM entries")}
 
 
-def _instruments(url: str) -> tuple[list, list]:
+def _instruments(url: str, table: str = "instruments") -> tuple[list, list]:
     with sqlite3.connect(url.split("///", 1)[1]) as conn:
-        columns = [row[1] for row in conn.execute("PRAGMA table_info(instruments)")]
-        return columns, sorted(conn.execute("SELECT * FROM instruments"))
+        columns = [row[1] for row in conn.execute(f"PRAGMA table_info({table})")]
+        return columns, sorted(conn.execute(f"SELECT * FROM {table}"))
 
 
 def test_a_register_of_0_8_13_migrates_keeping_its_chain_and_intervals(tmp_path, capsys):
@@ -160,8 +161,12 @@ def test_a_register_of_0_8_13_migrates_keeping_its_chain_and_intervals(tmp_path,
         assert register.interval("001", "Acme Optics") == 365
         assert register.due_date("001", "Zeta Instruments") == dt.date(2028, 11, 19)
         assert register.audit(pdfs=True) == []
-    assert _instruments(url) == (["serial", "manufacturer", "interval_days"], [
-        ("001", "", 365), ("001", "Zeta Instruments", 730), ("PG-12", "", 180)])
+    assert _instruments(url, "calibration_intervals") == (
+        ["serial", "manufacturer", "interval_days"],
+        [("001", "", 365), ("001", "Zeta Instruments", 730), ("PG-12", "", 180)])
+    with sqlite3.connect(url.split("///", 1)[1]) as conn:  # version 6's is gone (rev65 F3)
+        assert "instruments" not in {row[0] for row in conn.execute(
+            "SELECT name FROM sqlite_master")}
     assert main(["register", "--register", url, "verify"]) == 0
     # set back to 6 (its state's copy too) it is refused, never migrated again
     engine = sa.create_engine(url)
@@ -170,8 +175,9 @@ def test_a_register_of_0_8_13_migrates_keeping_its_chain_and_intervals(tmp_path,
         conn.execute(sa.text("UPDATE register_state SET value = '6' WHERE name = "
                              "'schema_version'"))
     engine.dispose()
-    with pytest.raises(RegisterTampered, match=r"schema version 6 was set back \(the column "
-                                               r"of version 7 exists\)"):
+    with pytest.raises(RegisterTampered, match=r"schema version 6 was set back \(the table "
+                                               r"of version 7 \(calibration_intervals\) "
+                                               r"exists\)"):
         Register(url)
 
 
@@ -218,7 +224,7 @@ def test_a_migration_that_fails_half_way_leaves_version_6(tmp_path, monkeypatch)
                                            [("001", 365), ("PG-12", 180)])
     with sqlite3.connect(url.split("///", 1)[1]) as conn:
         assert conn.execute("SELECT version FROM schema_version").fetchone() == (6,)
-        assert "instruments_v7" not in {row[0] for row in conn.execute(
+        assert "calibration_intervals" not in {row[0] for row in conn.execute(
             "SELECT name FROM sqlite_master")}
     monkeypatch.setitem(schema.MIGRATIONS, 7, migrate)
     with _open(url) as register:
@@ -283,3 +289,27 @@ def test_capital_rn_and_m_are_two_items_of_one_maker(tmp_path):
         with pytest.raises(SameCalibrationIssued, match="AB-2026-0002"):  # typed small: M-05
             register.issue(IssueRequest("polygon", meta("rn-05", "2025-01-10"), PROJECT), render,
                            separate_calibration="")
+
+
+def test_schema_6_codes_interval_statements_fail_on_a_migrated_register(tmp_path):
+    """rev65 F3: a 0.8.13 window open across the migration ran its set_interval's
+    "DELETE FROM instruments WHERE serial = ?" (every maker's row of the serial) and its
+    INSERT, unrecorded; the register then read CHANGED AFTER ISSUE lab-wide. Its statements
+    on the intervals, as 0.8.13's Register issues them, now fail and change nothing."""
+    url, _ = _schema_6(tmp_path)
+    path = url.split("///", 1)[1]
+    with Register(url, timezone="UTC") as register:
+        register.set_interval("001", 730, "Zeta Instruments")
+    with sqlite3.connect(path) as conn:
+        with pytest.raises(sqlite3.OperationalError, match="no such table: instruments"):
+            conn.execute("DELETE FROM instruments WHERE serial = ?", ("001",))
+        with pytest.raises(sqlite3.OperationalError, match="no such table: instruments"):
+            conn.execute("INSERT INTO instruments (serial, interval_days) VALUES (?, ?)",
+                         ("001", 200))
+        with pytest.raises(sqlite3.OperationalError, match="no such table: instruments"):
+            conn.execute("SELECT serial, interval_days FROM instruments")
+    with Register(url, timezone="UTC") as register:
+        assert register.audit(pdfs=True) == []
+        assert register.interval("001", "Zeta Instruments") == 730
+        assert register.interval("001", "Acme Optics") == 365
+    assert main(["register", "--register", url, "verify"]) == 0

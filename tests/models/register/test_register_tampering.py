@@ -133,7 +133,7 @@ def test_a_deleted_record_whose_number_is_issued_again_is_found(issued):
     with _open(url) as register:
         entry_head = register.find_head(head)
     assert entry_head is not None
-    sql(url, "DELETE FROM entries", "DELETE FROM instruments",
+    sql(url, "DELETE FROM entries", "DELETE FROM calibration_intervals",
         "UPDATE counters SET last_value = 2",
         "UPDATE register_state SET value = '2' WHERE name = 'records'",
         "UPDATE register_state SET value = (SELECT chain_sha256 FROM certificates WHERE "
@@ -171,14 +171,14 @@ def test_a_counter_set_back_is_found(issued):
 
 def test_a_calibration_interval_changed_is_found(issued):
     url, _, _ = issued
-    sql(url, "UPDATE instruments SET interval_days = 730")
+    sql(url, "UPDATE calibration_intervals SET interval_days = 730")
     assert any("instrument RX-1: calibration interval 730 day(s), but the register's records "
                "set 365" in p for p in found(url))
 
 
 def test_an_interval_entry_changed_is_found(issued):
     url, _, _ = issued
-    sql(url, "UPDATE instruments SET interval_days = 730",
+    sql(url, "UPDATE calibration_intervals SET interval_days = 730",
         "UPDATE entries SET body_json = '{\"days\": 730}' WHERE kind = 'interval'")
     assert any("entry interval RX-1: the hash chain is broken" in p for p in found(url))
 
