@@ -2228,6 +2228,18 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>改变的内容</translation>
     </message>
     <message>
+        <source>Another manufacturer&apos;s item?</source>
+        <translation>另一制造商的被校件？</translation>
+    </message>
+    <message>
+        <source>{reason}.
+
+Is this item another manufacturer&apos;s than that of {numbers}? Yes: issue it; the register records that you said so. No: nothing is issued (to correct {numbers}, amend or replace it from File › Certificate register).</source>
+        <translation>{reason}。
+
+该被校件是否属于与 {numbers} 不同的另一制造商？是：签发，登记册会记录这是您的说明。否：不签发任何证书（要更正 {numbers}，请在 文件 › 证书登记册 中修订或替代它）。</translation>
+    </message>
+    <message>
         <source>A calibration already reported</source>
         <translation>该校准已有证书</translation>
     </message>
@@ -3049,8 +3061,16 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>  结果文件：{file}，SHA-256 {sha256}，记录于 {recorded_at}（第二个：签发后被改动，一份证书只有一个）</translation>
     </message>
     <message>
+        <source>  another maker&apos;s item, as {user} confirmed at issue ({recorded_at}): {maker}, not the maker of {others}</source>
+        <translation>  另一制造商的被校件，由 {user} 在签发时确认（{recorded_at}）：{maker}，而不是 {others} 的制造商</translation>
+    </message>
+    <message>
         <source>  next calibration of {serial} due: {date}</source>
         <translation>  {serial} 的下次校准日期：{date}</translation>
+    </message>
+    <message>
+        <source>  next calibration of {serial}: not known — this certificate names no manufacturer, and the serial&apos;s certificates name {makers}: the due date is told per maker&apos;s item</source>
+        <translation>  {serial} 的下次校准日期：未知——本证书没有写明制造商，而该序列号的证书写有 {makers}：到期日按制造商的被校件给出</translation>
     </message>
     <message>
         <source>{n} certificate(s) exported to {out}</source>
@@ -4305,6 +4325,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>，下次到期 {date}</translation>
     </message>
     <message>
+        <source>, no due date: the certificate names no manufacturer, and this serial&apos;s name {makers} (the due date is per maker&apos;s item)</source>
+        <translation>，无到期日：该证书没有写明制造商，而该序列号的证书写有 {makers}（到期日按制造商的被校件给出）</translation>
+    </message>
+    <message>
         <source>, no due date (set an interval)</source>
         <translation>，无到期日（请设置周期）</translation>
     </message>
@@ -5462,6 +5486,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>与 --certificate 一起使用：被校件和校准日期与一份仍然有效的证书相同，而这是一次独立的校准（例如调整之后的交付状态）：说明理由，与另一份证书的编号一起印在证书上（否则予以拒绝：更正应为修订或替代）</translation>
     </message>
     <message>
+        <source>with --certificate: a certificate still valid reports the same serial number and date of calibration under another manufacturer&apos;s name, and this is indeed another maker&apos;s item (else it is refused: a maker&apos;s name spelt otherwise is the same maker); recorded in the register that you said so</source>
+        <translation>与 --certificate 一起使用：一份仍然有效的证书以另一制造商的名称报告了相同的序列号和校准日期，而这确实是另一制造商的被校件（否则予以拒绝：写法不同的制造商名称仍是同一制造商）；登记册会记录这是您的说明</translation>
+    </message>
+    <message>
         <source>also write the results per point (with U) as CSV or XLSX</source>
         <translation>同时以 CSV 或 XLSX 写出各点结果（含 U）</translation>
     </message>
@@ -6356,6 +6384,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>登记册 {display_url}：{exc}</translation>
     </message>
     <message>
+        <source>register {display_url}: it has writes in its journal ({journal}) that a read-only opening cannot read (its index {index} is missing and the folder cannot be written); nothing is said from the main file alone, which lacks them: open the register once by someone who can write its folder, or copy the register with its -wal file into a folder you can write</source>
+        <translation>登记册 {display_url}：其日志（{journal}）中有只读打开无法读取的写入（其索引 {index} 缺失，且文件夹不可写）；不会只凭缺少这些写入的主文件作出任何判断：请由能写其文件夹的人打开一次登记册，或把登记册连同其 -wal 文件复制到你能写的文件夹中</translation>
+    </message>
+    <message>
         <source>register {display_url}: the table schema_version holds {n} rows instead of one: it was changed outside AngleBench; the register is not opened</source>
         <translation>登记册 {display_url}：schema_version 表有 {n} 行而不是一行：它在 AngleBench 之外被改动；不打开该登记册</translation>
     </message>
@@ -6428,6 +6460,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>证书编号 {number} 已于 {issued_at} 签发（{workbench}，出厂编号 {value}）：一个编号只签发一次；请用 &apos;anglebench register continue SCHEME NEXT&apos; 让编号越过它</translation>
     </message>
     <message>
+        <source>the number scheme &apos;{scheme}&apos; gives {number}, which reads as an amendment&apos;s number of {other} (issued on {issued_at}): a number, then -A, -Amd, -Amendment or -Rev and a count is an amendment of that number, whatever the separators, case, marks or look-alike letters; amendments are numbered by the register itself; change the scheme</source>
+        <translation>编号规则“{scheme}”给出 {number}，它读起来像 {other}（{issued_at} 签发）的修订版编号：一个编号加 -A、-Amd、-Amendment 或 -Rev 和序号，就是该编号的修订版，不论分隔符、大小写、附加符号或形似字母；修订版由登记册自行编号；请更改编号规则</translation>
+    </message>
+    <message>
+        <source>certificate number {number} reads as an amendment&apos;s number of {other} (issued on {issued_at}): a number, then -A, -Amd, -Amendment or -Rev and a count is an amendment of that number, whatever the separators, case, marks or look-alike letters; amendments are numbered by the register itself when a certificate is amended; type another number, or leave it empty and the register allocates the next</source>
+        <translation>证书编号 {number} 读起来像 {other}（{issued_at} 签发）的修订版编号：一个编号加 -A、-Amd、-Amendment 或 -Rev 和序号，就是该编号的修订版，不论分隔符、大小写、附加符号或形似字母；修订版由登记册在修订证书时自行编号；请输入另一个编号，或留空由登记册分配下一个</translation>
+    </message>
+    <message>
+        <source>certificate number {number}: {other}, issued on {issued_at}, reads as an amendment&apos;s number of it (a number, then -A and a count, whatever the separators, case, marks or look-alike letters): a customer would take them for a certificate and its amendment; type another number, or leave it empty and the register allocates the next</source>
+        <translation>证书编号 {number}：{issued_at} 签发的 {other} 读起来像它的修订版编号（一个编号加 -A 和序号，不论分隔符、大小写、附加符号或形似字母）：客户会把两者当作一份证书及其修订版；请输入另一个编号，或留空由登记册分配下一个</translation>
+    </message>
+    <message>
         <source>the computer&apos;s clock says {now}, before the register&apos;s last record ({number}, issued {then}): the clock was set back; nothing is issued until it is right</source>
         <translation>计算机时钟为 {now}，早于登记册的最后一条记录（{number}，签发于 {then}）：时钟被回拨；在时钟正确之前不签发</translation>
     </message>
@@ -6450,6 +6494,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{numbers} already reports this calibration (serial {serial}, calibrated {date}): a corrected certificate is its amendment or replacement (Amend… or Replace… in File › Certificate register); a calibration of its own (e.g. as left after an adjustment) is issued as separate, saying why (on the command line: --separate-calibration REASON)</source>
         <translation>{numbers} 已报告这次校准（编号 {serial}，校准于 {date}）：更正的证书应为其修订版或替代版（文件 › 证书登记册 中的“修订…”或“替代…”）；一次独立的校准（例如调整之后的交付状态）作为独立校准签发，并说明理由（命令行：--separate-calibration REASON）</translation>
+    </message>
+    <message>
+        <source>{numbers} reports serial {serial}, calibrated {date}, of {makers}, not of {maker}: a maker&apos;s name spelt otherwise is the same maker, and this would be a second certificate of that calibration. Issue it only if it is another maker&apos;s item with the same serial (it is then recorded in the register that you said so; on the command line: --another-makers-item)</source>
+        <translation>{numbers} 已报告序列号 {serial}、校准日期 {date}、制造商 {makers} 的校准，而不是 {maker} 的：只是写法不同的制造商名称仍是同一制造商，这样就会成为同一次校准的第二份证书。只有当这确实是另一制造商的、序列号相同的被校件时才签发（登记册随后会记录这是您的说明；命令行中：--another-makers-item）</translation>
     </message>
     <message>
         <source>the register was busy: {n} other certificates were issued while this one was being made; try again</source>
@@ -6578,14 +6626,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>a calibration interval is a positive number of days</source>
         <translation>校准间隔必须是正的天数</translation>
-    </message>
-    <message>
-        <source>the number scheme &apos;{scheme}&apos; gives {number}, which reads as an amendment&apos;s number (a number, then -A and a count: AB-2026-0001-A1 is the first amendment of AB-2026-0001): numbers of that form are kept for amendments, which the register numbers itself; change the scheme</source>
-        <translation>编号规则“{scheme}”给出 {number}，它读起来像修订版编号（一个编号加 -A 和序号：AB-2026-0001-A1 是 AB-2026-0001 的第一个修订版）：这种形式的编号保留给修订版，由登记册自行编号；请更改编号规则</translation>
-    </message>
-    <message>
-        <source>certificate number {number} reads as an amendment&apos;s number (a number, then -A and a count, whatever the separators, case or look-alike letters: AB-2026-0001-A1 is the first amendment of AB-2026-0001): numbers of that form are kept for amendments, which the register numbers itself when a certificate is amended; type another number, or leave it empty and the register allocates the next</source>
-        <translation>证书编号 {number} 读起来像修订版编号（一个编号加 -A 和序号，不论分隔符、大小写或形似字母：AB-2026-0001-A1 是 AB-2026-0001 的第一个修订版）：这种形式的编号保留给修订版，由登记册在修订证书时自行编号；请输入另一个编号，或留空由登记册分配下一个</translation>
     </message>
     <message>
         <source>Cannot export the compensation table</source>
