@@ -37,8 +37,8 @@ def test_b_interval_of_an_even_reversal_covers_at_most_2_7_times_the_width_neede
     """An even reversal of 1″ over 36 targets, repeatability 0.5″, 5 runs each way (u(B_i)
     0.32″). B's lower end was the lowest of the bootstrap's and the Šidák bound's, 2.6 u
     below the truth on average, and the interval 3.6 times the width a correct one needs;
-    the larger of the Šidák bound and the mean reversal's bound puts it 0.4 u below, the
-    interval 2.5 times (the upper end, which must hold one target 2–4 u above an even
+    the larger of that (at half the tail) and the mean reversal's bound puts it 0.4 u below,
+    the interval 2.5 times (the upper end, which must hold one target 2–4 u above an even
     reversal, is the rest). The coverage holds."""
     reversal, sigma, runs, tests = np.ones(36), 0.5, 5, 40
     u = sigma * math.sqrt(2.0 / runs)
