@@ -62,7 +62,11 @@ def passes_record(path, rng, runs: int, sigma: float, reversal: float,
     it); ``directions`` False: no run and direction columns (θ repeated); ``circle_shape``:
     the circle's error independent at each θ, or one sine over the span (random phase,
     "sine"), or the axis' error curve turned over ("against": it flattens the measured
-    curve), each of standard deviation ``circle``. ``step``: the theodolite shows its
+    curve), each of standard deviation ``circle``, or "extremes": ±2 ``circle`` (each within
+    its U at k = 2) at the θ where the axis' error is highest and lowest, 0 elsewhere (it
+    lowers the measured range by 4 ``circle``, the most such errors can). The theodolite
+    reads the mirror's true rotation, off by the circle's error: the readings show the
+    axis' error less the circle's, d − c. ``step``: the theodolite shows its
     readings to that step (arcsec), written in degrees, minutes and seconds as a user types
     them off the display; None: decimal degrees to 1e-9°. ``theta``: the θ read (sorted, 0
     among them; :data:`THETA` if None). ``curve`` also "smooth" (one slow wave and a bow,
@@ -92,8 +96,11 @@ def passes_record(path, rng, runs: int, sigma: float, reversal: float,
     if circle_shape == "sine":
         c = circle * math.sqrt(2.0) * np.sin(2 * math.pi * (grid - grid[0]) / span
                                              + rng.uniform(0, 2 * math.pi))
-    elif circle_shape == "against":
-        c = -circle * (d - d.mean()) / np.std(d)
+    elif circle_shape == "against":  # the readings show d − c: this flattens them
+        c = circle * (d - d.mean()) / np.std(d)
+    elif circle_shape == "extremes":  # +2 circle where d is highest, −2 where lowest
+        c = np.zeros(grid.size)
+        c[np.argmax(d)], c[np.argmin(d)] = 2.0 * circle, -2.0 * circle
     if curves is not None:
         curves.update(theta=grid.copy(), d=d.copy(), c=c.copy())
     rows = ["theta_deg,azimuth_deg,elevation_deg" + (",run,direction" if directions else "")]
