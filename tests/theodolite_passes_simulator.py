@@ -52,7 +52,9 @@ def _shown(angle_deg: float, step: float | None) -> str:
 def passes_record(path, rng, runs: int, sigma: float, reversal: float,
                   circle: float = 0.0, axis_noise: float = 0.0,
                   directions: bool = True, circle_shape: str = "independent",
-                  curve: str = "random", step: float | None = None) -> dict[str, float]:
+                  curve: str = "random", step: float | None = None,
+                  theta: np.ndarray | None = None, curves: dict | None = None
+                  ) -> dict[str, float]:
     """Write a record of ``runs`` × (forward, backward) passes to ``path``; return the true
     ISO 230-2 figures of the axis (the circle's errors are an error of the measurement, not
     the axis': they are in no truth). ``axis_noise``: the axis' own non-repeatability, a
@@ -60,28 +62,51 @@ def passes_record(path, rng, runs: int, sigma: float, reversal: float,
     it); ``directions`` False: no run and direction columns (θ repeated); ``circle_shape``:
     the circle's error independent at each θ, or one sine over the span (random phase,
     "sine"), or the axis' error curve turned over ("against": it flattens the measured
-    curve), each of standard deviation ``circle``. ``step``: the theodolite shows its
+    curve), each of standard deviation ``circle``, or "extremes": ±2 ``circle`` (each within
+    its U at k = 2) at the θ where the axis' error is highest and lowest, 0 elsewhere (it
+    lowers the measured range by 4 ``circle``, the most such errors can). The theodolite
+    reads the mirror's true rotation, off by the circle's error: the readings show the
+    axis' error less the circle's, d − c. ``step``: the theodolite shows its
     readings to that step (arcsec), written in degrees, minutes and seconds as a user types
-    them off the display; None: decimal degrees to 1e-9°."""
-    t = np.radians(THETA)
-    if curve == "bow":
-        span = THETA[-1] - THETA[0]
-        d = (1.5 * np.sin(2 * math.pi * 0.8 * (THETA - THETA[0]) / span)
-             + 0.6 * (THETA / THETA[-1]) ** 2)
+    them off the display; None: decimal degrees to 1e-9°. ``theta``: the θ read (sorted, 0
+    among them; :data:`THETA` if None). ``curve`` also "smooth" (one slow wave and a bow,
+    random phase, 2″ peak-to-peak), "rough" (the smooth curve and an independent 0.4″ at
+    each θ) or "spike" (a slow 1″ wave and one θ 1.5″ off). ``curves``: a dict given is
+    filled with the θ ("theta"), the axis' error d ("d") and the circle's ("c"), arcsec."""
+    grid = THETA if theta is None else np.asarray(theta, dtype=float)
+    t = np.radians(grid)
+    span = grid[-1] - grid[0]
+    x = (grid - grid[0]) / span
+    if curve == "smooth":
+        d = np.sin(2 * math.pi * 0.7 * x + rng.uniform(0, 2 * math.pi)) + 0.8 * (2 * x - 1) ** 2
+        d *= 2.0 / float(np.ptp(d))
+    elif curve == "rough":
+        d = np.sin(2 * math.pi * 0.7 * x + rng.uniform(0, 2 * math.pi)) + 0.8 * (2 * x - 1) ** 2
+        d = d * 2.0 / float(np.ptp(d)) + rng.normal(0.0, 0.4, grid.size)
+    elif curve == "spike":
+        d = 0.5 * np.sin(2 * math.pi * 0.5 * x + rng.uniform(0, 2 * math.pi))
+        d[rng.integers(1, grid.size - 1)] += 1.5
+    elif curve == "bow":
+        d = (1.5 * np.sin(2 * math.pi * 0.8 * (grid - grid[0]) / span)
+             + 0.6 * (grid / grid[-1]) ** 2)
     else:
         d = 1.2 * np.sin(5.0 * t + rng.uniform(0, 2 * math.pi)) + 0.4 * np.cos(
             11.0 * t + rng.uniform(0, 2 * math.pi))  # the axis' error, arcsec
-    c = rng.normal(0.0, circle, THETA.size)  # the circle's error at each θ's position
+    c = rng.normal(0.0, circle, grid.size)  # the circle's error at each θ's position
     if circle_shape == "sine":
-        span = THETA[-1] - THETA[0]
-        c = circle * math.sqrt(2.0) * np.sin(2 * math.pi * (THETA - THETA[0]) / span
+        c = circle * math.sqrt(2.0) * np.sin(2 * math.pi * (grid - grid[0]) / span
                                              + rng.uniform(0, 2 * math.pi))
-    elif circle_shape == "against":
-        c = -circle * (d - d.mean()) / np.std(d)
+    elif circle_shape == "against":  # the readings show d − c: this flattens them
+        c = circle * (d - d.mean()) / np.std(d)
+    elif circle_shape == "extremes":  # +2 circle where d is highest, −2 where lowest
+        c = np.zeros(grid.size)
+        c[np.argmax(d)], c[np.argmin(d)] = 2.0 * circle, -2.0 * circle
+    if curves is not None:
+        curves.update(theta=grid.copy(), d=d.copy(), c=c.copy())
     rows = ["theta_deg,azimuth_deg,elevation_deg" + (",run,direction" if directions else "")]
     for run in range(1, runs + 1):
-        for sign, order in ((+1, THETA), (-1, THETA[::-1])):
-            i = np.searchsorted(THETA, order)
+        for sign, order in ((+1, grid), (-1, grid[::-1])):
+            i = np.searchsorted(grid, order)
             error = d[i] + sign * 0.5 * reversal + rng.normal(0.0, axis_noise, order.size)
             az, el = mirror_readings(order - error / 3600.0)
             az = az + (c[i] + rng.normal(0.0, sigma, order.size)) / 3600.0

@@ -8,13 +8,15 @@ import json
 from app.main import main
 
 
-def run_json(capsys, tmp_path, record, stated: float, **details) -> dict:
+def run_json(capsys, tmp_path, record, stated: float, per: str = "reading",
+             **details) -> dict:
     """``anglebench analyze theodolite RECORD --json --metadata M``, M the ``details`` with
-    the theodolite stated at ``stated`` (arcsec, u per reading)."""
+    the theodolite stated at ``stated`` (arcsec, u) for each ``per`` (the standards table's
+    *Per*: "reading", or "angle" between two readings)."""
     meta = tmp_path / "meta.json"
     meta.write_text(json.dumps({**details, "standards": [{
         "description": "Autocollimating theodolite", "uncertainty": stated,
-        "uncertainty_unit": "arcsec", "basis": "u"}]}))
+        "uncertainty_unit": "arcsec", "basis": "u", "applies_to": per}]}))
     code = main(["analyze", "theodolite", str(record), "--json", "--metadata", str(meta),
                  "--language", "en"])
     out = capsys.readouterr()

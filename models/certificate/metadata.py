@@ -170,8 +170,9 @@ class ReferenceStandard:
     uncertainty of: each ``reading`` (the default), any ``angle`` between two readings
     (a certificate that states U for every angle measured with the standard, from any
     start: the difference of two readings' errors is then within it too; the positioning
-    figures' intervals use it), or each face's deviation ``from face 1`` (a polygon
-    certificate that states its deviations from face 1, whose face 1 is then exact).
+    figures' intervals and the theodolite's circle-error widening use it), or each face's
+    deviation ``from face 1`` (a polygon certificate that states its deviations from face 1,
+    whose face 1 is then exact).
     """
 
     description: str = ""

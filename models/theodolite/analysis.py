@@ -355,12 +355,17 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
         # the ISO 230-2 figures of a run with passes with their intervals (the certificate's
         # budget: its stated theodolite u), as the certificate prints them
         from models.theodolite.figures import theodolite_figures_json
-        from models.theodolite.report import stated_reading_uncertainty, theodolite_budget
+        from models.theodolite.report import (
+            stated_pair_factor,
+            stated_reading_uncertainty,
+            theodolite_budget,
+        )
 
         if result.iso230 is None:
             return {}
         return theodolite_figures_json(result, theodolite_budget(result, metadata, settings),
-                                       stated_reading_uncertainty(metadata)[0])
+                                       stated_reading_uncertainty(metadata)[0],
+                                       stated_pair_factor(metadata))
 
     def decided_errors(self, result: TheodoliteResult, metadata: CertificateMetadata
                        ) -> np.ndarray:

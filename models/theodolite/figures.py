@@ -193,7 +193,8 @@ def evident_circle_part(result: TheodoliteResult, stated_u: float) -> float:
     """The part of the stated u per reading that the readings show to be there: √max(u² −
     s_up², 0), s_up the pointing noise's upper confidence bound at :data:`CIRCLE_EVIDENCE`
     (models.uncertainty.stated_excess). It sizes the figures' widening for a circle error
-    shaped as the curve's worst (z · 2 u each way): sized by :func:`circle_part`, a theodolite
+    shaped as the curve's worst (z · 2 u each way; z · u for a theodolite stated for any
+    angle, models.theodolite.report.stated_pair_factor): sized by :func:`circle_part`, a theodolite
     stated at its pointing noise got it in about half the runs (0.3–0.5 u, s below σ by
     chance), and with the model's envelope E, M and A were 1.5–3.5 times as wide as a correct
     interval needs (the module's note)."""
@@ -217,10 +218,14 @@ def model_modes_at_each_theta(result: TheodoliteResult) -> np.ndarray:
 
 
 def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBudget,
-                                stated_u: float = 0.0) -> dict[str, FigureInterval]:
+                                stated_u: float = 0.0, pair_factor: float = 2.0
+                                ) -> dict[str, FigureInterval]:
     """The coverage interval of every ISO 230-2 figure of ``result`` at the ``budget``'s
     probability (``stated_u``: the stated standards' u per reading, arcsec); empty when
-    :func:`figure_intervals_withheld` says why, or when the run has no figures."""
+    :func:`figure_intervals_withheld` says why, or when the run has no figures.
+    ``pair_factor``: how many times its own u the difference of the circle's errors at two
+    θ can have as its standard deviation (models.theodolite.report.stated_pair_factor: 2 for
+    a theodolite stated per reading, 1 for one stated for any angle between two readings)."""
     present = _directions(result)
     if not present or figure_intervals_withheld(result) is not None:
         return {}
@@ -228,9 +233,10 @@ def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBud
     assert iso is not None
     # the stated theodolite's error that repeats at a θ in every pass, an envelope whose
     # correlation from θ to θ is not known: drawn at each θ at the part the scatter does not
-    # show, and its worst shape (2 u between two θ) sized by the part the readings show
+    # show, and its worst shape (2 u between two θ; u where the theodolite's u is stated
+    # for any angle) sized by the part the readings show
     circle = circle_part(result, stated_u)
-    pair = 2.0 * evident_circle_part(result, stated_u)
+    pair = pair_factor * evident_circle_part(result, stated_u)
     modes = model_modes_at_each_theta(result)
     # seeded from the curve on a coarse grid (models.uncertainty.conformity.readings_seed):
     # a fitted curve's last digits differ between processors; in the key, so that the
@@ -250,14 +256,14 @@ def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBud
 
 
 def theodolite_figures_json(result: TheodoliteResult, budget: UncertaintyBudget,
-                            stated_u: float = 0.0) -> dict[str, Any]:
+                            stated_u: float = 0.0, pair_factor: float = 2.0) -> dict[str, Any]:
     """The ISO 230-2 figures as the JSON states them, each {value, interval_low,
     interval_high, coverage_probability}, beside ``iso230_arcsec`` (whose plain values keep
     their meaning), and why there are no intervals; {} for a run with no figures
-    (``stated_u``: the stated standards' u per reading, arcsec)."""
+    (``stated_u``, ``pair_factor``: as :func:`theodolite_figure_intervals`)."""
     if result.iso230 is None:
         return {}
-    intervals = theodolite_figure_intervals(result, budget, stated_u)
+    intervals = theodolite_figure_intervals(result, budget, stated_u, pair_factor)
     # every figure of the directions measured, null where the standard does not evaluate it
     # (A and R of a θ read once), so that the keys do not depend on the readings
     present = [name for name, _ in _directions(result)]

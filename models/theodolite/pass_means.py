@@ -189,7 +189,8 @@ MEANS_UNITED = QT_TR_NOOP(
 
 
 def means_half_range(result: TheodoliteResult, budget: UncertaintyBudget,
-                     run_budget: UncertaintyBudget, stated_u: float) -> HalfRangeEstimate:
+                     run_budget: UncertaintyBudget, stated_u: float,
+                     pair_factor: float = 2.0) -> HalfRangeEstimate:
     """The decided half range of the means (:func:`pass_means`) with its interval: the Monte
     Carlo of the means' ``budget`` (models.uncertainty.conformity.half_range_monte_carlo),
     which draws the circle's error on its own at each θ. Where the readings show the stated
@@ -201,7 +202,10 @@ def means_half_range(result: TheodoliteResult, budget: UncertaintyBudget,
     .figures, ``run_budget``'s probability and seed), which holds a circle error of any
     shape; the value stays the Monte Carlo's, and so does the probability stated: the union
     covers at least as often as the Monte Carlo wherever that holds, and covered every run
-    of the once-a-turn errors where it did not."""
+    of the once-a-turn errors where it did not. ``pair_factor``: as in E's interval
+    (models.theodolite.figures.theodolite_figure_intervals; 1 for a theodolite whose u is
+    stated for any angle between two readings, whose circle errors at two θ then differ by
+    at most its own u)."""
     means = pass_means(result)[0]
     estimate = half_range_monte_carlo(means, budget)
     evident = evident_circle_part(result, stated_u)
@@ -210,7 +214,7 @@ def means_half_range(result: TheodoliteResult, budget: UncertaintyBudget,
         return estimate
     present = [name for name, _ in _present(result)]
     key = "E" if len(present) == 2 else f"E_{present[0]}"
-    e = theodolite_figure_intervals(result, run_budget, stated_u).get(key)
+    e = theodolite_figure_intervals(result, run_budget, stated_u, pair_factor).get(key)
     if e is None or not (math.isfinite(e.low) and math.isfinite(e.high)):
         return estimate
     low = min(estimate.value - estimate.u_lower, 0.5 * e.low)

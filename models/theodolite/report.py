@@ -163,6 +163,29 @@ def stated_reading_uncertainty(metadata: CertificateMetadata) -> tuple[float, li
     return math.sqrt(u2), stated
 
 
+def stated_pair_factor(metadata: CertificateMetadata) -> float:
+    """How many times the stated u per reading (:func:`stated_reading_uncertainty`) the
+    difference of the stated standards' errors at two θ can have as its standard
+    deviation, whatever their correlation from θ to θ: 2 for a standard stated for each
+    reading (its errors at two θ may be opposite), 1 for one stated for any angle between two
+    readings (ReferenceStandard.applies_to "angle": that difference is one more angle it
+    measured, within its own u), the standards in quadrature (independent of one another),
+    as the positioning workbench's ``pair_u`` (models.positioning.report); 2 with none. It
+    sizes the figures' widening for a circle error shaped as the curve's worst
+    (models.theodolite.figures.theodolite_figure_intervals)."""
+    parts = []
+    for std in metadata.standards:
+        if std.uncertainty is None:
+            continue
+        divisor, _ = divisor_for_basis(std.basis)
+        parts.append((std.uncertainty_in("arcsec") / divisor,
+                      1.0 if std.applies_to == "angle" else 2.0))
+    u2 = sum(u**2 for u, _ in parts)
+    if not u2 > 0.0:
+        return 2.0
+    return math.sqrt(sum((k * u) ** 2 for u, k in parts) / u2)
+
+
 def _reading_error_notes(result: TheodoliteResult, s: float, dof: int, u_std: float,
                          stated: bool, governs: str, nu: float,
                          pooled: tuple[float, int, int] | None) -> str:
@@ -337,7 +360,8 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
     if result.iso230 is None:
         return []
     intervals = theodolite_figure_intervals(result, budget,
-                                            stated_reading_uncertainty(metadata)[0])
+                                            stated_reading_uncertainty(metadata)[0],
+                                            stated_pair_factor(metadata))
     withheld = figure_intervals_withheld(result)
     rows = []
     for key, v in result.iso230.figures.items():
@@ -414,7 +438,8 @@ def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
         stated = stated_reading_uncertainty(metadata)[0]
         means_budget = pass_means_budget(result, metadata, stated, settings)
         return Decision(means, MEANS_DECIDED, names, budget=means_budget,
-                        estimate=means_half_range(result, means_budget, budget, stated))
+                        estimate=means_half_range(result, means_budget, budget, stated,
+                                                  stated_pair_factor(metadata)))
     withheld = (withheld_half_range(result, budget.probability)
                 if metadata.decision_quantity == "half_range" else None)
     if withheld is not None and result.directions is not None:  # the means' curve, named
