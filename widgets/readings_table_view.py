@@ -361,14 +361,39 @@ class ReadingsTableView(QTableView):
             choice = self.ask_paste(len(plan.rows), plan.leaves_rows)
             if not choice:
                 return ""
+        columns_said = self._columns_said(plan, choice == "replace")
         if choice == "replace":
             model.replace_all(full, tr("{paste}, replacing the sheet").format(paste=label),
                               checked=True)
+            if columns_said:
+                self._say_after(columns_said)
             return "replace"
         changes = [(top + i, plan.left + j, cell) for i, row in enumerate(plan.rows)
                    for j, cell in enumerate(row) if plan.left + j < width]
         model.set_cells(changes, label)
+        if columns_said:
+            self.notice.emit(columns_said)
         return "overwrite" if plan.leaves_rows else "cells"
+
+    def _columns_said(self, plan, replaces: bool) -> str:
+        """What a paste does with the columns, when it is more than the block's columns
+        landing on the sheet's: the block's columns beyond the sheet's last one (left out),
+        and, when it replaces the sheet, the sheet's columns it leaves empty. "" otherwise."""
+        width = self.readings_model().sheet.column_count
+        empty = [c for c in range(width) if c not in plan.filled] if replaces else []
+        if not plan.dropped and not empty:
+            return ""
+        names = ", ".join(str(self._header(c)) for c in plan.filled) or "—"
+        text = tr("Pasted into {columns}").format(columns=names)
+        if empty:
+            text = text + tr("; {columns} left empty").format(
+                columns=", ".join(str(self._header(c)) for c in empty))
+        if plan.dropped:
+            first, last = plan.dropped[0] + 1, plan.dropped[-1] + 1
+            numbers = str(first) if first == last else f"{first}–{last}"
+            text = text + tr("; the block's column(s) {numbers} left out: the sheet has no "
+                             "column for them").format(numbers=numbers)
+        return text
 
     def ask_paste(self, block_rows: int, left_behind: int) -> str:
         """A shorter block over a longer run: "replace", "overwrite" or "" (cancel)."""

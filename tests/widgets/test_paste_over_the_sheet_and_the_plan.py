@@ -1,0 +1,104 @@
+"""Pasting as a technician does (Ctrl+A, Ctrl+V through the clipboard) and typing a
+correction, with and without an entry plan (day review 65 F1–F3)."""
+
+from __future__ import annotations
+
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QGuiApplication
+from PySide6.QtWidgets import QLineEdit
+
+from widgets.crosscal.presenter import CrossCalPresenter
+from widgets.fringe.presenter import FringePresenter
+from widgets.polygon.presenter import PolygonPresenter
+from widgets.positioning.presenter import PositioningPresenter
+from widgets.theodolite.presenter import TheodolitePresenter
+
+PRESENTERS = [PositioningPresenter, PolygonPresenter, CrossCalPresenter, TheodolitePresenter,
+              FringePresenter]
+
+
+def _shown(qtbot, presenter):
+    qtbot.addWidget(presenter.view)
+    presenter.view.show()
+    presenter.view.activateWindow()  # a shortcut (Ctrl+A, Ctrl+V) reaches an active window
+    qtbot.waitActive(presenter.view)
+    return presenter
+
+
+def _rows(presenter) -> list[list[str]]:
+    sheet = presenter.sheet
+    return [[sheet.text(r, c) for c in range(sheet.column_count)]
+            for r in range(sheet.row_count)]
+
+
+def _click(qtbot, table, row: int, column: int) -> None:
+    table.scrollTo(table.model().index(row, column))
+    rect = table.visualRect(table.model().index(row, column))
+    qtbot.mouseClick(table.viewport(), Qt.MouseButton.LeftButton, pos=rect.center())
+    table.setFocus()  # the click's focus (the offscreen platform's click gives none)
+    qtbot.waitUntil(table.hasFocus)
+    assert (table.currentIndex().row(), table.currentIndex().column()) == (row, column)
+
+
+def _select_all_and_paste(qtbot, table, text: str) -> None:
+    QGuiApplication.clipboard().setText(text)
+    qtbot.keyClick(table, Qt.Key.Key_A, Qt.KeyboardModifier.ControlModifier)
+    qtbot.keyClick(table, Qt.Key.Key_V, Qt.KeyboardModifier.ControlModifier)
+
+
+def _type(qtbot, table, row: int, column: int, text: str) -> None:
+    _click(qtbot, table, row, column)
+    qtbot.keyClick(table, Qt.Key.Key_F2)
+    editor = next(w for w in table.viewport().findChildren(QLineEdit) if w.isVisible())
+    editor.selectAll()
+    qtbot.keyClicks(editor, text)
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    qtbot.waitUntil(lambda: table.model().data(table.model().index(row, column)) == text)
+
+
+# -- F1: a paste over the whole sheet goes from the first column --------------------------
+@pytest.mark.slow
+@pytest.mark.parametrize("make", PRESENTERS, ids=lambda p: p.__name__)
+def test_the_sheet_pasted_over_itself_with_the_cursor_in_its_last_column_is_unchanged(
+        qtbot, make):
+    """Every workbench: its own rows copied without the header, the cursor in the last
+    column, Ctrl+A and Ctrl+V: the same sheet (before: the block went to the cursor's
+    column, every column left of it emptied and the block's other columns dropped)."""
+    presenter = _shown(qtbot, make())
+    presenter.load_sample()
+    qtbot.waitUntil(lambda: presenter.sheet.row_count > 3)
+    before = _rows(presenter)
+    width = presenter.sheet.column_count
+    table = presenter.view.table
+    _click(qtbot, table, 1, width - 1)
+    steps = presenter.undo_stack.count()
+    _select_all_and_paste(qtbot, table, "\n".join("\t".join(r) for r in before))
+    assert presenter.undo_stack.count() == steps + 1  # pasted, replacing the sheet
+    assert presenter.undo_stack.text(steps).endswith("replacing the sheet")
+    assert _rows(presenter) == before
+
+
+@pytest.mark.slow
+def test_a_narrower_block_over_the_sheet_is_said_and_a_wider_one_s_columns_too(qtbot):
+    """Positioning (target, run, direction, deviation, measured), the cursor on a deviation:
+    a 4-column block over the whole sheet fills target … deviation and says measured is left
+    empty; a 7-column block fills all five and says its columns 6–7 were left out."""
+    presenter = _shown(qtbot, PositioningPresenter())
+    presenter.load_sample()
+    qtbot.waitUntil(lambda: presenter.sheet.row_count > 3)
+    table = presenter.view.table
+    deviation = presenter.sheet.column_index("deviation")
+    _click(qtbot, table, 2, deviation)
+    _select_all_and_paste(qtbot, table, "0\t1\t+\t0.5\n30\t1\t+\t0.7\n60\t1\t+\t0.9")
+    assert _rows(presenter) == [["0", "1", "+", "0.5", ""], ["30", "1", "+", "0.7", ""],
+                                ["60", "1", "+", "0.9", ""]]
+    qtbot.waitUntil(lambda: "measured" in presenter.view.last_status)
+    said = presenter.view.last_status
+    assert said.startswith("Pasted into target, run, dir [+/−], deviation;")
+    assert "measured left empty" in said
+    _click(qtbot, table, 1, deviation)
+    _select_all_and_paste(qtbot, table, "0\t1\t+\t0.5\t\tx\ty\n30\t1\t-\t0.7\t\tx\ty")
+    assert _rows(presenter) == [["0", "1", "+", "0.5", ""], ["30", "1", "-", "0.7", ""]]
+    qtbot.waitUntil(lambda: "left out" in presenter.view.last_status)
+    assert "the block's column(s) 6–7 left out" in presenter.view.last_status
