@@ -41,11 +41,18 @@ class _TypingDelegate(QStyledItemDelegate):
         super().__init__(parent)
         self.editor: QLineEdit | None = None
         self.index = QPersistentModelIndex()
+        #: the row the last editor opened in, and whether it was empty then (the entry
+        #: plan fills the plan's cells of a row typed into only when it was: plan_return)
+        self.opened_in: tuple[int, bool] = (-1, True)
         #: the cell's text the open editor was last filled with ("" when none is open)
         self.loaded = ""
 
     def createEditor(self, parent, option, index):  # noqa: N802 - Qt's name
         editor = super().createEditor(parent, option, index)
+        model = index.model()
+        self.opened_in = (index.row(), all(
+            not str(model.index(index.row(), c).data() or "").strip()
+            for c in range(model.columnCount())))
         if isinstance(editor, QLineEdit):
             self.editor, self.index = editor, QPersistentModelIndex(index)
             editor.textEdited.connect(self.typing)
@@ -255,15 +262,18 @@ class ReadingsTableView(QTableView):
         nominal, filled from the step when it is empty."""
         row = self.currentIndex().row()
         if hint == QAbstractItemDelegate.EndEditHint.SubmitModelCache and row >= 0:
-            self.next_row(row)
+            opened, blank = self._typing_delegate.opened_in
+            self.next_row(row, blank_before=blank or opened != row)
 
-    def next_row(self, row: int) -> None:
+    def next_row(self, row: int, blank_before: bool = True) -> None:
         """After a reading entered in ``row`` (Return, or a take): the cursor to the cell the
         next reading goes to — unless a value is being typed in another cell (a take made
         while the technician types): moving would enter what is typed so far (Qt commits an
-        open editor when the current cell changes), so the cursor stays with the editor."""
+        open editor when the current cell changes), so the cursor stays with the editor.
+        ``blank_before``: the row was empty before the reading (the entry plan fills only such
+        a row's plan cells: the presenter's plan_return)."""
         if self.plan_return is not None:
-            target_row = self.plan_return(row)
+            target_row = self.plan_return(row, blank_before)
             if target_row is not None:
                 self._go_to(self.readings_model().index(target_row, self.entry_column))
                 return

@@ -102,3 +102,66 @@ def test_a_narrower_block_over_the_sheet_is_said_and_a_wider_one_s_columns_too(q
     assert _rows(presenter) == [["0", "1", "+", "0.5", ""], ["30", "1", "-", "0.7", ""]]
     qtbot.waitUntil(lambda: "left out" in presenter.view.last_status)
     assert "the block's column(s) 6–7 left out" in presenter.view.last_status
+
+
+# -- F2, F3: the theodolite's entry plan, readings pasted and corrected ---------------------
+THETAS = [-2, -1, 0, 1, 2]
+A_E = {t: (f"{10 + t}.5", f"-0.{abs(t) + 1}") for t in THETAS}
+
+
+@pytest.fixture
+def theodolite_with_plan(qtbot):
+    presenter = _shown(qtbot, TheodolitePresenter())
+    presenter.set_settings({"plan_passes": 2, "plan_thetas": "-2:1:5"})
+    return presenter
+
+
+def _type_first_reading(qtbot, presenter):
+    """Row 1's azimuth and elevation typed: the plan fills θ −2, pass 1 ↑ and goes on."""
+    table = presenter.view.table
+    azimuth = presenter.sheet.column_index("azimuth_deg")
+    elevation = presenter.sheet.column_index("elevation_deg")
+    _type(qtbot, table, 0, azimuth, A_E[-2][0])
+    assert presenter.view.last_status == "Row 1: θ = -2°, pass 1 ↑, from the entry plan"
+    _type(qtbot, table, 0, elevation, A_E[-2][1])
+    assert _rows(presenter)[0] == ["-2", A_E[-2][0], A_E[-2][1], "1", "+"]
+    return table, azimuth
+
+
+@pytest.mark.slow
+def test_a_correction_typed_into_a_row_without_theta_gets_no_plan_theta(
+        qtbot, theodolite_with_plan):
+    """F2: a row pasted below the plan's rows (not at the row it points at) keeps its θ
+    empty; correcting its elevation by typing gives it no θ, run or direction, and the
+    plan still points at its own row (before: the plan's next θ −1 was stamped on it)."""
+    presenter = theodolite_with_plan
+    table, azimuth = _type_first_reading(qtbot, presenter)
+    elevation = presenter.sheet.column_index("elevation_deg")
+    QGuiApplication.clipboard().setText("\n".join(f"{A_E[t][0]}\t{A_E[t][1]}"
+                                                  for t in THETAS[1:]))
+    _click(qtbot, table, 2, azimuth)  # below the plan's row (row 2, θ −1, pre-filled)
+    qtbot.keyClick(table, Qt.Key.Key_V, Qt.KeyboardModifier.ControlModifier)
+    assert [r[0] for r in _rows(presenter)] == ["-2", "-1", "", "", "", ""]
+    _type(qtbot, table, 4, elevation, "-0.25")
+    assert _rows(presenter)[4] == ["", A_E[1][0], "-0.25", "", ""]
+    place = presenter.plan_placement()
+    assert place is not None and place.row == 1 and place.cells["theta_deg"] == "-1"
+
+
+@pytest.mark.slow
+def test_a_correction_in_the_last_row_pasted_before_the_plan_gets_no_plan_theta(qtbot):
+    """F2 at the end of the sheet: three A/E pasted without θ, then the plan set; the last
+    of them (the row after which the plan would go on) corrected by typing keeps θ, run and
+    direction empty: it was no empty row the plan pointed at (before: θ −2, pass 1 ↑)."""
+    presenter = _shown(qtbot, TheodolitePresenter())
+    table = presenter.view.table
+    azimuth = presenter.sheet.column_index("azimuth_deg")
+    elevation = presenter.sheet.column_index("elevation_deg")
+    QGuiApplication.clipboard().setText("\n".join(f"{A_E[t][0]}\t{A_E[t][1]}"
+                                                  for t in THETAS[:3]))
+    _click(qtbot, table, 0, azimuth)
+    qtbot.keyClick(table, Qt.Key.Key_V, Qt.KeyboardModifier.ControlModifier)
+    assert presenter.sheet.row_count == 3
+    presenter.set_settings({"plan_passes": 2, "plan_thetas": "-2:1:5"})
+    _type(qtbot, table, 2, elevation, "-0.35")
+    assert _rows(presenter)[2] == ["", A_E[0][0], "-0.35", "", ""]
