@@ -108,6 +108,11 @@ class ReadingsTableView(QTableView):
         # reading fills the plan's cells and gives the row the next reading goes to; None
         # (or it returns None): no plan, the nominal step as before
         self.plan_return = None
+        # the entry plan's part in a paste (the presenter's WorkbenchPresenter.plan_paste):
+        # given the block's first row and its row count before the paste, what fills the
+        # plan's cells of the pasted rows after it (in the paste's undo step) and returns what
+        # to say of it; None: no plan
+        self.plan_paste = None
         self._typing_delegate = _TypingDelegate(self)
         self.setItemDelegate(self._typing_delegate)
         #: a value is being typed in a cell (not yet entered): the window autosaves it
@@ -380,9 +385,21 @@ class ReadingsTableView(QTableView):
             return "replace"
         changes = [(top + i, plan.left + j, cell) for i, row in enumerate(plan.rows)
                    for j, cell in enumerate(row) if plan.left + j < width]
-        model.set_cells(changes, label)
-        if columns_said:
-            self.notice.emit(columns_said)
+        pasted = self.plan_paste(top, len(plan.rows)) if self.plan_paste is not None else None
+        planned = ""
+        if pasted is None:
+            model.set_cells(changes, label)
+        else:  # the paste and the plan's cells of its rows: one undo step
+            model.undo_stack.beginMacro(label)
+            try:
+                model.set_cells(changes, label)
+                planned = pasted()
+            finally:
+                model.undo_stack.endMacro()
+        said = [t for t in (columns_said, planned) if t]
+        if said:
+            self.notice.emit(said[0] if len(said) == 1 else
+                             tr("{said}; {more}").format(said=said[0], more=said[1]))
         return "overwrite" if plan.leaves_rows else "cells"
 
     def _columns_said(self, plan, replaces: bool) -> str:

@@ -122,10 +122,53 @@ def _type_first_reading(qtbot, presenter):
     azimuth = presenter.sheet.column_index("azimuth_deg")
     elevation = presenter.sheet.column_index("elevation_deg")
     _type(qtbot, table, 0, azimuth, A_E[-2][0])
-    assert presenter.view.last_status == "Row 1: θ = -2°, pass 1 ↑, from the entry plan"
     _type(qtbot, table, 0, elevation, A_E[-2][1])
     assert _rows(presenter)[0] == ["-2", A_E[-2][0], A_E[-2][1], "1", "+"]
     return table, azimuth
+
+
+@pytest.mark.slow
+def test_readings_pasted_at_the_plan_s_row_get_its_next_points_and_it_goes_on(
+        qtbot, theodolite_with_plan):
+    """F3: pass 1's other four A/E pasted at the row the plan points at get θ −1 … 2,
+    pass 1 ↑ (one undo step with the paste, said), and the next point is pass 2's θ −2 in
+    the row after them (before: θ empty and red, and the plan still said θ −1)."""
+    presenter = theodolite_with_plan
+    table, azimuth = _type_first_reading(qtbot, presenter)
+    assert _rows(presenter)[1][0] == "-1"  # the plan's row, pre-filled
+    QGuiApplication.clipboard().setText("\n".join(f"{A_E[t][0]}\t{A_E[t][1]}"
+                                                  for t in THETAS[1:]))
+    _click(qtbot, table, 1, azimuth)
+    steps = presenter.undo_stack.count()
+    qtbot.keyClick(table, Qt.Key.Key_V, Qt.KeyboardModifier.ControlModifier)
+    assert _rows(presenter)[:5] == [[f"{t}", *A_E[t], "1", "+"] for t in THETAS]
+    assert presenter.undo_stack.count() == steps + 1
+    assert presenter.view.last_status == \
+        "Rows 3–5: θ = 0°, pass 1 ↑ … θ = 2°, pass 1 ↑, from the entry plan"
+    place = presenter.plan_placement()
+    assert place is not None and place.row == 5
+    assert dict(place.cells) == {"theta_deg": "-2", "run": "2", "direction": "+"}
+    presenter.undo_stack.undo()  # the paste and the plan's cells go together
+    assert [r[1] for r in _rows(presenter)[1:]] in ([], [""])
+
+
+@pytest.mark.slow
+def test_readings_pasted_with_their_theta_get_run_and_direction_and_the_plan_goes_on(
+        qtbot, theodolite_with_plan):
+    """F3 with θ in the block: θ, A and E of pass 1's other points pasted at the plan's row
+    get run 1 and + (the points they hold, skipped by the plan), and the next point is pass
+    2's θ −2 after them (before: their run and direction stayed empty, the plan said θ 0,
+    pass 1 and would have labelled the next take so)."""
+    presenter = theodolite_with_plan
+    table, _ = _type_first_reading(qtbot, presenter)
+    QGuiApplication.clipboard().setText("\n".join(f"{t}\t{A_E[t][0]}\t{A_E[t][1]}"
+                                                  for t in THETAS[1:]))
+    _click(qtbot, table, 1, 0)
+    qtbot.keyClick(table, Qt.Key.Key_V, Qt.KeyboardModifier.ControlModifier)
+    assert _rows(presenter)[:5] == [[f"{t}", *A_E[t], "1", "+"] for t in THETAS]
+    place = presenter.plan_placement()
+    assert place is not None and place.row == 5
+    assert dict(place.cells) == {"theta_deg": "-2", "run": "2", "direction": "+"}
 
 
 @pytest.mark.slow
@@ -136,6 +179,8 @@ def test_a_correction_typed_into_a_row_without_theta_gets_no_plan_theta(
     plan still points at its own row (before: the plan's next θ −1 was stamped on it)."""
     presenter = theodolite_with_plan
     table, azimuth = _type_first_reading(qtbot, presenter)
+    # the empty row the plan pointed at got its cells, and that was said
+    assert presenter.view.last_status == "Row 1: θ = -2°, pass 1 ↑, from the entry plan"
     elevation = presenter.sheet.column_index("elevation_deg")
     QGuiApplication.clipboard().setText("\n".join(f"{A_E[t][0]}\t{A_E[t][1]}"
                                                   for t in THETAS[1:]))
