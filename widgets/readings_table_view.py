@@ -41,11 +41,18 @@ class _TypingDelegate(QStyledItemDelegate):
         super().__init__(parent)
         self.editor: QLineEdit | None = None
         self.index = QPersistentModelIndex()
+        #: the row the last editor opened in, and whether it was empty then (the entry
+        #: plan fills the plan's cells of a row typed into only when it was: plan_return)
+        self.opened_in: tuple[int, bool] = (-1, True)
         #: the cell's text the open editor was last filled with ("" when none is open)
         self.loaded = ""
 
     def createEditor(self, parent, option, index):  # noqa: N802 - Qt's name
         editor = super().createEditor(parent, option, index)
+        model = index.model()
+        self.opened_in = (index.row(), all(
+            not str(model.index(index.row(), c).data() or "").strip()
+            for c in range(model.columnCount())))
         if isinstance(editor, QLineEdit):
             self.editor, self.index = editor, QPersistentModelIndex(index)
             editor.textEdited.connect(self.typing)
@@ -101,6 +108,11 @@ class ReadingsTableView(QTableView):
         # reading fills the plan's cells and gives the row the next reading goes to; None
         # (or it returns None): no plan, the nominal step as before
         self.plan_return = None
+        # the entry plan's part in a paste (the presenter's WorkbenchPresenter.plan_paste):
+        # given the block's first row and its row count before the paste, what fills the
+        # plan's cells of the pasted rows after it (in the paste's undo step) and returns what
+        # to say of it; None: no plan
+        self.plan_paste = None
         self._typing_delegate = _TypingDelegate(self)
         self.setItemDelegate(self._typing_delegate)
         #: a value is being typed in a cell (not yet entered): the window autosaves it
@@ -255,15 +267,18 @@ class ReadingsTableView(QTableView):
         nominal, filled from the step when it is empty."""
         row = self.currentIndex().row()
         if hint == QAbstractItemDelegate.EndEditHint.SubmitModelCache and row >= 0:
-            self.next_row(row)
+            opened, blank = self._typing_delegate.opened_in
+            self.next_row(row, blank_before=blank or opened != row)
 
-    def next_row(self, row: int) -> None:
+    def next_row(self, row: int, blank_before: bool = True) -> None:
         """After a reading entered in ``row`` (Return, or a take): the cursor to the cell the
         next reading goes to — unless a value is being typed in another cell (a take made
         while the technician types): moving would enter what is typed so far (Qt commits an
-        open editor when the current cell changes), so the cursor stays with the editor."""
+        open editor when the current cell changes), so the cursor stays with the editor.
+        ``blank_before``: the row was empty before the reading (the entry plan fills only such
+        a row's plan cells: the presenter's plan_return)."""
         if self.plan_return is not None:
-            target_row = self.plan_return(row)
+            target_row = self.plan_return(row, blank_before)
             if target_row is not None:
                 self._go_to(self.readings_model().index(target_row, self.entry_column))
                 return
@@ -361,14 +376,51 @@ class ReadingsTableView(QTableView):
             choice = self.ask_paste(len(plan.rows), plan.leaves_rows)
             if not choice:
                 return ""
+        columns_said = self._columns_said(plan, choice == "replace")
         if choice == "replace":
             model.replace_all(full, tr("{paste}, replacing the sheet").format(paste=label),
                               checked=True)
+            if columns_said:
+                self._say_after(columns_said)
             return "replace"
         changes = [(top + i, plan.left + j, cell) for i, row in enumerate(plan.rows)
                    for j, cell in enumerate(row) if plan.left + j < width]
-        model.set_cells(changes, label)
+        pasted = self.plan_paste(top, len(plan.rows)) if self.plan_paste is not None else None
+        planned = ""
+        if pasted is None:
+            model.set_cells(changes, label)
+        else:  # the paste and the plan's cells of its rows: one undo step
+            model.undo_stack.beginMacro(label)
+            try:
+                model.set_cells(changes, label)
+                planned = pasted()
+            finally:
+                model.undo_stack.endMacro()
+        said = [t for t in (columns_said, planned) if t]
+        if said:
+            self.notice.emit(said[0] if len(said) == 1 else
+                             tr("{said}; {more}").format(said=said[0], more=said[1]))
         return "overwrite" if plan.leaves_rows else "cells"
+
+    def _columns_said(self, plan, replaces: bool) -> str:
+        """What a paste does with the columns, when it is more than the block's columns
+        landing on the sheet's: the block's columns beyond the sheet's last one (left out),
+        and, when it replaces the sheet, the sheet's columns it leaves empty. "" otherwise."""
+        width = self.readings_model().sheet.column_count
+        empty = [c for c in range(width) if c not in plan.filled] if replaces else []
+        if not plan.dropped and not empty:
+            return ""
+        names = ", ".join(str(self._header(c)) for c in plan.filled) or "—"
+        text = tr("Pasted into {columns}").format(columns=names)
+        if empty:
+            text = text + tr("; {columns} left empty").format(
+                columns=", ".join(str(self._header(c)) for c in empty))
+        if plan.dropped:
+            first, last = plan.dropped[0] + 1, plan.dropped[-1] + 1
+            numbers = str(first) if first == last else f"{first}–{last}"
+            text = text + tr("; the block's column(s) {numbers} left out: the sheet has no "
+                             "column for them").format(numbers=numbers)
+        return text
 
     def ask_paste(self, block_rows: int, left_behind: int) -> str:
         """A shorter block over a longer run: "replace", "overwrite" or "" (cancel)."""

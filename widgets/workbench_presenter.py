@@ -293,6 +293,7 @@ class WorkbenchPresenter(QObject):
         if hasattr(getattr(self.view, "table", None), "own_layout"):  # a mock view has none
             self.view.table.own_layout = kind.rows_from_table
             self.view.table.plan_return = self.plan_return
+            self.view.table.plan_paste = self.plan_paste
         self._settings: dict[str, Any] = kind.settings_with_defaults(None)
         self._settings_modified = False
         self.result: Any = None
@@ -695,10 +696,16 @@ class WorkbenchPresenter(QObject):
         return self.kind.plan_reading_keys or ((self.kind.entry_column,)
                                                if self.kind.entry_column else ())
 
-    def plan_return(self, row: int) -> int | None:
+    def plan_return(self, row: int, blank_before: bool = True) -> int | None:
         """Return after an edit of ``row`` with a plan set: the row's plan cells filled when
-        its reading came without them, the next point's plan cells put in the row it goes
-        to (one undo step each); the row the next reading goes to, None without a plan."""
+        it is the row the plan pointed at, empty before this reading (``blank_before``: the
+        table's, as the editor opened), and its reading came without them — said on the
+        status line; the next point's plan cells put in the row it goes to (one undo step
+        each); the row the next reading goes to, None without a plan.
+
+        A reading typed into any other row without the plan's cells (a correction of a
+        pasted row) gets none: day review 65 F2 stamped the plan's next θ on it, a wrong θ
+        said nowhere, while the plan's own row for that θ stayed empty."""
         plan = self.entry_plan()
         if plan is None:
             return None
@@ -708,12 +715,16 @@ class WorkbenchPresenter(QObject):
         rows, keys = got
         reading = self._reading_keys()
         changes = []
-        if 0 <= row < len(rows) and any(rows[row].get(k, "").strip() for k in reading) and \
-                not any(rows[row].get(k, "").strip() for k in plan.points[0].cells):
+        if blank_before and 0 <= row < len(rows) and \
+                any(rows[row].get(k, "").strip() for k in reading) and \
+                not any(rows[row].get(k, "").strip() for k in plan.points[0].cells) and \
+                self._plan_pointed_at(plan, rows, row):
             point = plan.next_point(rows, reading)
             if point is not None:
                 changes += [(row, keys.index(k), v) for k, v in point.cells.items()]
                 rows[row].update(point.cells)
+                self._say(tr("Row {row}: {point}, from the entry plan").format(
+                    row=row + 1, point=translated(point.label)))
         place = plan.placement(rows, reading)
         if place is None:
             if changes:
@@ -727,6 +738,58 @@ class WorkbenchPresenter(QObject):
             self.table_model.set_cells(changes, tr("Entry plan: {point}").format(
                 point=translated(place.point.label)))
         return place.row
+
+    def _plan_pointed_at(self, plan: EntryPlan, rows: list[dict[str, str]], row: int) -> bool:
+        """Whether ``row`` is the row the plan sent the next reading to before that row was
+        filled (the plan's placement with the row emptied)."""
+        before = [dict(r) for r in rows]
+        before[row] = {k: "" for k in before[row]}
+        place = plan.placement(before, self._reading_keys())
+        return place is not None and place.row == row
+
+    def _say(self, text: str) -> None:
+        """``text`` on the status line, as the table's messages about its rows."""
+        notice = getattr(getattr(self.view, "table", None), "notice", None)
+        if notice is not None and hasattr(notice, "emit"):
+            notice.emit(text)
+
+    def plan_paste(self, top: int, count: int) -> Callable[[], str] | None:
+        """A block of ``count`` rows about to be pasted from row ``top``, with a plan set:
+        what, once pasted, gives its rows the plan's cells (θ, run, direction; target …)
+        — when the block lands on the row the plan points at, each of its rows that was
+        empty (or that row) and holds a reading without the plan's cells gets the plan's
+        next point, points already in the sheet skipped — and returns what to say of it
+        ("" when nothing was filled). None without a plan, or when the block lands
+        elsewhere: rows the plan was not pointing at get nothing from it (as a typed edit,
+        :meth:`plan_return`). Day review 65 F3: pasted rows got nothing, the plan did not
+        advance, and later takes were labelled with θ already in the sheet."""
+        place = self.plan_placement()
+        if place is None or place.row != top:
+            return None
+        sheet = self.sheet
+        candidates = [r for r in range(top, top + count)
+                      if r == top or r >= sheet.row_count or sheet.is_blank_row(r)]
+
+        def fill() -> str:
+            plan = self.entry_plan()
+            got = None if plan is None else self._plan_rows(plan)
+            if plan is None or got is None:
+                return ""
+            rows, keys = got
+            points = plan.fill(rows, self._reading_keys(), candidates)
+            if not points:
+                return ""
+            changes = [(r, keys.index(k), v) for r, point in points
+                       for k, v in point.cells.items() if not rows[r].get(k, "").strip()]
+            self.table_model.set_cells(changes, tr("Entry plan"))
+            (first, start), (last, end) = points[0], points[-1]
+            if first == last:
+                return tr("Row {row}: {point}, from the entry plan").format(
+                    row=first + 1, point=translated(start.label))
+            return tr("Rows {first}–{last}: {start} … {end}, from the entry plan").format(
+                first=first + 1, last=last + 1, start=translated(start.label),
+                end=translated(end.label))
+        return fill
 
     def plan_placement(self) -> Placement | None:
         """Where the plan's next point goes (its row, ``len(rows)`` for a new one, and the

@@ -16,6 +16,8 @@ API (plain Python, no Qt; the window's readings table and the capture panel both
     #              filled one; == len(rows) means "append a row")
     # place.cells: {column key: text} the plan writes into that row (target, run, dir)
     # place.point: the PlanPoint (place.point.label: "target 120°, run 3 ↓")
+    plan.fill(rows, reading_keys, [6, 7])  # readings pasted without the plan's cells: their
+    #                                        points, in order ([(row, PlanPoint), …])
     plan.next_text(rows, reading_keys)   # "next: target 120°, run 3 ↓" / "plan complete"
     plan.progress(rows, reading_keys)    # (points taken, points in the plan)
     plan.as_dict() / EntryPlan.from_dict(d)   # saved with the lab defaults / project
@@ -145,6 +147,35 @@ class EntryPlan:
         row = last + 1
         # an empty row directly after the last used one is reused; otherwise append
         return Placement(row if row < len(rows) else len(rows), dict(point.cells), point)
+
+    def fill(self, rows: Sequence[Mapping[str, str]], reading_keys: Sequence[str],
+             candidates: Sequence[int]) -> list[tuple[int, PlanPoint]]:
+        """The plan's points for the rows ``candidates`` (in that order) that hold a reading
+        and not all of the plan's cells (readings pasted in the plan's rows): each the first
+        point no row has taken that agrees with the plan cells the row holds — with none,
+        the next point, as if the rows had been typed one by one. A row holding all its
+        plan cells keeps them (its point is skipped); a row whose cells no point left
+        agrees with gets none. (row, point) of each row given a point; the caller writes
+        the point's cells the row does not hold."""
+        keys = sorted({k for p in self.points for k in p.cells})
+        table: list[dict[str, str]] = [dict(r) for r in rows]
+        out: list[tuple[int, PlanPoint]] = []
+        for r in candidates:
+            if not (0 <= r < len(table)) or not _filled(table[r], reading_keys):
+                continue
+            have = {k: str(table[r].get(k, "")).strip() for k in keys}
+            have = {k: v for k, v in have.items() if v}
+            if len(have) == len(keys):
+                continue
+            taken = self.taken(table, reading_keys)
+            point = next((p for p, t in zip(self.points, taken, strict=True) if not t and
+                          all(same_cell(v, p.cells.get(k, "")) for k, v in have.items())),
+                         None)
+            if point is None:
+                continue
+            table[r].update(point.cells)
+            out.append((r, point))
+        return out
 
     def next_text(self, rows: Sequence[Mapping[str, str]],
                   reading_keys: Sequence[str]) -> Message:

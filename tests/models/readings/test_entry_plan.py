@@ -140,3 +140,23 @@ def test_a_plan_is_saved_and_read_back():
         EntryPlan.from_dict({"kind": "nonsense"})
     with pytest.raises(ValueError):
         positioning_plan([0, 10], runs=0)
+
+
+def test_fill_gives_readings_without_plan_cells_the_next_points_skipping_those_taken():
+    """Day review 65 F3: readings pasted without θ get the plan's next points in order; a
+    row holding its own plan cells keeps them (its point skipped), one holding θ alone gets
+    the run and direction of the first point not taken at that θ, a row without a reading
+    gets none."""
+    plan = theodolite_plan([-1.0, 0.0, 1.0], runs=2)
+    keys = ("azimuth_deg", "elevation_deg")
+
+    def row(theta="", run="", direction="", reading="1.0"):
+        return {"theta_deg": theta, "azimuth_deg": reading, "elevation_deg": reading,
+                "run": run, "direction": direction}
+    rows = [row("-1", "1", "+"), row(), row("1", "1", "+"), row(), row(reading=""),
+            row("1")]
+    filled = plan.fill(rows, keys, [1, 2, 3, 4, 5])
+    assert [(r, dict(p.cells)) for r, p in filled] == [
+        (1, {"theta_deg": "0", "run": "1", "direction": "+"}),
+        (3, {"theta_deg": "-1", "run": "2", "direction": "+"}),
+        (5, {"theta_deg": "1", "run": "2", "direction": "+"})]

@@ -183,3 +183,17 @@ def test_a_first_row_of_mistyped_readings_is_kept_not_taken_for_a_header():
     plan = plan_paste(words, THEODOLITE, 0, 0, 0, False)
     assert plan.header == ["Winkel", "Hz", "Vert"] and not plan.mapped  # only Hz is known:
     assert plan.rows == [["1.0", "1", "0.1"]]  # pasted where it lands, Winkel's cells kept
+
+
+def test_a_paste_over_the_whole_sheet_goes_from_the_first_column_and_says_its_columns():
+    """Day review 65 F1: every row selected, the cursor in the elevation column (left 2):
+    the block goes from θ; a 4-wide block's 4th column and beyond is known as dropped."""
+    grid = [["-20", "1.0", "2.0", "x"], ["-19", "1.1", "2.1", "y"]]
+    plan = plan_paste(grid, THEODOLITE, filled_rows=5, top=3, left=2, whole_sheet=True)
+    assert plan.replace_sheet and plan.left == 0
+    assert plan.filled == (0, 1, 2, 3) and plan.dropped == ()
+    wide = [r + ["", "z", "w"] for r in grid]  # 7 wide on the theodolite's 5 columns
+    plan = plan_paste(wide, THEODOLITE, filled_rows=5, top=3, left=2, whole_sheet=True)
+    assert plan.filled == (0, 1, 2, 3, 4) and plan.dropped == (5, 6)
+    at_cursor = plan_paste(grid, THEODOLITE, filled_rows=5, top=3, left=2, whole_sheet=False)
+    assert at_cursor.left == 2 and at_cursor.filled == (2, 3, 4) and at_cursor.dropped == (3,)
