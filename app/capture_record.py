@@ -27,14 +27,15 @@ import io
 from collections.abc import Sequence
 from typing import Any
 
-from app.capture.instruments import INSTRUMENTS
+from app.capture.instruments import INSTRUMENTS, LineReadoutInstrument, SignalStreamInstrument
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["CaptureRecordError", "capture_session", "instrument_for"]
 
 #: the instruments whose every value has a column of its own in a workbench's sheet (a
 #: readout's value goes to a cell chosen when it is taken: not in a record's lines)
-_SHEET_INSTRUMENTS = ("autocollimator", "theodolite")
+_SHEET_INSTRUMENTS = tuple(name for name, kind in INSTRUMENTS.items()
+                           if not issubclass(kind, (LineReadoutInstrument, SignalStreamInstrument)))
 
 
 class CaptureRecordError(ValueError):
