@@ -4169,7 +4169,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {column}: what you typed (“{typed}”) was entered, then the readings were replaced ({what})</source>
-        <extracomment>the cell&apos;s text the open editor was last filled with (&quot;&quot; when none is open) a message for the status line (the workbench&apos;s view shows it): the cell being typed in was changed by another path, what was typed not entered (:meth:`dataChanged`). An object, not a str: a ``Signal(str)`` gave the slot a plain copy of the message, which the status line could not say again after View › Language (day review 64 P6) a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
+        <extracomment>the row the last editor opened in, and whether it was empty then (the entry plan fills the plan&apos;s cells of a row typed into only when it was: plan_return) the cell&apos;s text the open editor was last filled with (&quot;&quot; when none is open) a message for the status line (the workbench&apos;s view shows it): the cell being typed in was changed by another path, what was typed not entered (:meth:`dataChanged`). An object, not a str: a ``Signal(str)`` gave the slot a plain copy of the message, which the status line could not say again after View › Language (day review 64 P6) a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
         <translation>第 {row} 行 {column}：您输入的内容（“{typed}”）已被确认，随后读数被替换（{what}）</translation>
     </message>
     <message>
@@ -4215,6 +4215,22 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{paste}, replacing the sheet</source>
         <translation>{paste}，替换整张表</translation>
+    </message>
+    <message>
+        <source>{said}; {more}</source>
+        <translation>{said}；{more}</translation>
+    </message>
+    <message>
+        <source>Pasted into {columns}</source>
+        <translation>已粘贴到 {columns}</translation>
+    </message>
+    <message>
+        <source>; {columns} left empty</source>
+        <translation>；{columns} 留空</translation>
+    </message>
+    <message>
+        <source>; the block&apos;s column(s) {numbers} left out: the sheet has no column for them</source>
+        <translation>；数据块的第 {numbers} 列未采用：表格中没有对应的列</translation>
     </message>
     <message>
         <source>Paste readings</source>
@@ -4398,12 +4414,20 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>正在读取 {name} …</translation>
     </message>
     <message>
+        <source>Row {row}: {point}, from the entry plan</source>
+        <translation>第 {row} 行：{point}，来自录入计划</translation>
+    </message>
+    <message>
         <source>Entry plan</source>
         <translation>录入计划</translation>
     </message>
     <message>
         <source>Entry plan: {point}</source>
         <translation>录入计划：{point}</translation>
+    </message>
+    <message>
+        <source>Rows {first}–{last}: {start} … {end}, from the entry plan</source>
+        <translation>第 {first}–{last} 行：{start} … {end}，来自录入计划</translation>
     </message>
     <message>
         <source>Analysing {rows} readings …</source>
@@ -11193,7 +11217,7 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     </message>
     <message>
         <source>value: the figure as the standard computes it from the readings; interval_low … interval_high: the coverage interval of the TRUE figure (of the true mean deviations and standard deviations) at coverage_probability. A largest value or a range over the targets (R, A, E, M, B) is biased high by the scatter, so the interval may lie below the value, and it reaches 0 where the scatter could hide the whole figure</source>
-        <extracomment>bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability) figures that may be negative (the others are clipped at 0) The coverage the study reached for each figure at 95.45 % asked for, where below it: figure_coverage.achieved_probability, the highest probability (95.45 % or a multiple of 0.5 %) that the pooled coverage reaches and that none of the axes falls short of beyond the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1, 2 × the signal × constant or varying (96 axes), each test through the whole analysis. 0.8.2 (the ranges&apos; triple-goal world, B&apos;s upper bound, the axes of 36 targets and of repeatability 1 ×): figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391 to 394, 80 tests an axis, pooled; for the figures whose interval 0.8.2 did not change, the lower of that and 0.7.0&apos;s derivation (the 48 axes of 12 and 72 targets, 40 tests an axis). Pooled: E 95.0 % (its lowest axis, a rough curve at 36 targets and repeatability 0.1 varying along the axis, 68 of 80), E↑ 94.8 % (a real curve at 12 targets, 67 of 80), E↓ 95.0 %, M and Pa 94.6 % (a spike at 72 targets, repeatability 1 × varying, 68 of 80), A 98.0 % (69 of 80 at the same axis as E), B and U 98.8 %; the others 96.6–98.6 %. The figure&apos;s interval states this one instead. Before 0.8.2, B stated 93 % and one axis (a rough reversal whose largest value stands clear of the others) reached 59 of 80; before 0.7.0&apos;s union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72 targets) and R 72 % on a reversal changing at random from target to target. what a figure&apos;s value and interval are, beside them in the JSON: a value above its own interval is no error (an audit counted R↑ above its interval in 82 % of 2-pass runs)</extracomment>
+        <extracomment>bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability) figures that may be negative (the others are clipped at 0) The coverage the study reached for each figure at 95.45 % asked for, where below it: figure_coverage.achieved_probability, the highest probability (95.45 % or a multiple of 0.5 %) that the pooled coverage reaches and that none of the axes falls short of beyond the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1, 2 × the signal × constant or varying (96 axes), each test through the whole analysis. 0.8.2 (the ranges&apos; triple-goal world, B&apos;s upper bound, the axes of 36 targets and of repeatability 1 ×): figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391 to 394, 80 tests an axis, pooled; for the figures whose interval 0.8.2 did not change, the lower of that and 0.7.0&apos;s derivation (the 48 axes of 12 and 72 targets, 40 tests an axis). Pooled: E 95.0 % (its lowest axis, a rough curve at 36 targets and repeatability 0.1 varying along the axis, 68 of 80), E↑ 94.8 % (a real curve at 12 targets, 67 of 80), E↓ 95.0 %, M and Pa 94.6 % (a spike at 72 targets, repeatability 1 × varying, 68 of 80), A 98.0 % (69 of 80 at the same axis as E), B and U 98.8 % (0.8.14, B&apos;s lower end from the mean reversal: 99.2 %, the lowest axis 37 of 40, seeds 391–392); the others 96.6–98.6 %. The figure&apos;s interval states this one instead. Before 0.8.2, B stated 93 % and one axis (a rough reversal whose largest value stands clear of the others) reached 59 of 80; before 0.7.0&apos;s union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72 targets) and R 72 % on a reversal changing at random from target to target. what a figure&apos;s value and interval are, beside them in the JSON: a value above its own interval is no error (an audit counted R↑ above its interval in 82 % of 2-pass runs)</extracomment>
         <translation>value：按标准由读数计算的指标；interval_low … interval_high：真实指标（由真实平均偏差和标准偏差计算）在 coverage_probability 下的包含区间。各目标上的最大值或极差（R、A、E、M、B）受分散影响偏高，因此区间可能位于数值之下；在分散可能掩盖整个指标时下限为 0</translation>
     </message>
     <message>
