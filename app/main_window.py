@@ -40,6 +40,7 @@ from app.reference_sender import (
 )
 from app.run_overlay_actions import RunOverlayActions
 from models import __version__
+from models.certificate.readings_origin import TYPED
 from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.recovery import RecoveryStore
 from models.readings.tabular_import import TableImportError
@@ -53,6 +54,7 @@ from widgets.i18n import (
     on_language_change,
     resolve_language,
     tr,
+    translated,
 )
 from widgets.screen_fit import fit_to_screen
 from widgets.status_line import StatusLine
@@ -379,7 +381,7 @@ class MainWindow(QMainWindow):
 
     def load_sample(self) -> None:
         """Replace the current workbench's readings with its sample (one undo step)."""
-        self.current.import_file(SAMPLES_DIR / self.current.kind.sample_file)
+        self.current.import_file(SAMPLES_DIR / self.current.kind.sample_file, sample=True)
 
     def print_dialog(self) -> bool:
         from PySide6.QtPrintSupport import QPrintDialog, QPrinter
@@ -396,8 +398,7 @@ class MainWindow(QMainWindow):
 
         print_workbench(self.current.view, printer,
                         f"{declared(self.current.kind.title)} — "
-                        + (self.projects.path.name if self.projects.path
-                           else tr("readings typed in AngleBench")))
+                        + self._source_shown())
         self.statusBar().showMessage(tr("Printed"), 5000)
 
     def _dcc_schema_dir(self) -> str:
@@ -490,10 +491,19 @@ class MainWindow(QMainWindow):
         return False
 
     def _source_name(self) -> str:
+        """The certificate's source of the readings in front: the project's file; else the
+        file they were imported from or the bundled sample (day review 65 F4: "readings
+        typed in AngleBench" was said of them); else, a certificate's project from the
+        register, its readings' source as it named it; else typed."""
         if self.projects.path:
             return self.projects.path.name
-        # a certificate's project from the register: its readings' source as it named it
-        return self.projects.readings_source or "readings typed in AngleBench"
+        return (self.current.readings_source() or self.projects.readings_source
+                or TYPED)
+
+    def _source_shown(self) -> str:
+        """:meth:`_source_name` in the window's language."""
+        source = self._source_name()
+        return tr("readings typed in AngleBench") if source == TYPED else translated(source)
 
     def export_certificate(self) -> bool:
         # the readings and settings the result was analysed from, not the sheet's and the
