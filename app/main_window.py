@@ -162,7 +162,8 @@ class MainWindow(QMainWindow):
             self.tabs.addTab(presenter.view, declared(presenter.kind.title))
             self.undo_group.addStack(presenter.undo_stack)
             presenter.import_failed.connect(self._on_import_failed)
-            presenter.imported.connect(self._on_imported)
+            presenter.imported.connect(
+                lambda path, rows, p=presenter: self._on_imported(path, rows, p))
         self.tabs.currentChanged.connect(self._on_tab_changed)
         self.setAcceptDrops(True)
         self._on_tab_changed(0)
@@ -326,6 +327,21 @@ class MainWindow(QMainWindow):
     def _on_tab_changed(self, index: int) -> None:
         if 0 <= index < len(self.presenters):
             self.undo_group.setActiveStack(self.presenters[index].undo_stack)
+            # a message about another workbench's readings is that workbench's
+            bar = self.statusBar()
+            if isinstance(bar, StatusLine):
+                bar.show_workbench(self.presenters[index].view)
+
+    def _show_workbench_status(self, presenter, text: str, timeout: int) -> None:
+        """A message about ``presenter``'s readings: shown while its tab is in front (put
+        aside on another tab's, widgets/status_line.py), gone when its sheet is replaced."""
+        bar = self.statusBar()
+        if isinstance(bar, StatusLine):
+            bar.show_about(text, timeout, presenter.view)
+            if presenter is not self.current:  # read in while another tab is in front
+                bar.show_workbench(self.current.view)
+        else:
+            bar.showMessage(text, timeout)
 
     # -- dialogs (tests replace these) --------------------------------------------
     def tell(self, title: str, text: str) -> None:
@@ -350,18 +366,21 @@ class MainWindow(QMainWindow):
         except TableImportError as exc:
             self.tell(tr("Cannot import"), explained(exc))
             return False
-        self.statusBar().showMessage(
-            tr("Imported {path} (Edit › Undo restores the old readings)").format(path=path), 8000)
+        self._show_workbench_status(
+            presenter, tr("Imported {path} (Edit › Undo restores the old readings)").format(
+                path=path), 8000)
         return True
 
     def _on_import_failed(self, message: str) -> None:
         self.tell(tr("Cannot import"), message)
 
-    def _on_imported(self, path: str, rows: int) -> None:
-        """Say that it worked (and replace an earlier error at once)."""
+    def _on_imported(self, path: str, rows: int, presenter=None) -> None:
+        """Say that it worked (and replace an earlier error at once), as a message of the
+        workbench it was imported into (``presenter``; None: the one in front)."""
         if path not in self.imported_files:
             self.imported_files.append(path)
-        self.statusBar().showMessage(
+        self._show_workbench_status(
+            presenter or self.current,
             tr("Imported {name}: {rows} row(s) (Edit › Undo restores the previous readings)")
             .format(name=Path(path).name, rows=rows), 8000)
 
