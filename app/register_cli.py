@@ -30,9 +30,10 @@ carry out (the arguments, a file that cannot be read, a register that cannot be 
 3 for a register whose records were changed after issue (the hash chain, the stored files,
 a head no longer in the chain; checked on every opening: each command warns) — 3 before 1
 when both are found — and 4 for a file as issued whose certificate is no longer valid
-(superseded by an amendment or a replacement, or withdrawn), after 3 and 1. What it prints, its help included, is in
-the language of ``--language`` (default: the system's); the listing's workbench keys and
-the export's ``index.csv`` keep the register's own English words.
+(superseded by an amendment or a replacement, or withdrawn), after 3 and 1. What it
+prints, its help included, is in the language of ``--language`` (default: the system's);
+the listing's workbench keys and the export's ``index.csv`` keep the register's own English
+words.
 """
 
 from __future__ import annotations

@@ -16,6 +16,7 @@ from PySide6.QtGui import QUndoStack
 
 from models.cancellation import AnalysisCancelled, cancellable, checkpoint
 from models.capture.take_cells import waiting_row
+from models.certificate.readings_origin import ImportedFrom, imported_source
 from models.display_units import (
     ANGLE_UNITS,
     AngleUnit,
@@ -25,7 +26,6 @@ from models.display_units import (
     header_in_unit,
     in_unit,
 )
-from models.certificate.readings_origin import ImportedFrom, imported_source
 from models.messages import reason_of
 from models.project.file import WorkbenchState, file_sha256
 from models.readings.entry_plan import EntryPlan, Placement
