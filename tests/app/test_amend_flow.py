@@ -206,16 +206,22 @@ def test_an_amendment_is_offered_its_own_name_and_never_written_over_the_origina
     polygon.table_model.setData(polygon.table_model.index(0, 2), "0.75")
     qtbot.waitUntil(lambda: window._current_result() is not None, timeout=20000)
 
-    # the original's PDF chosen for the amendment: refused, the original as issued
+    # the original's PDF chosen for the amendment: refused, the original as issued; the
+    # details accepted as shown: the original's, its number pre-filled
     calls.clear()
     _answer_dialogs(window, tmp_path, samples_dir, "polygon", calls, "cert1.pdf")
+    shown: list = []
+    window.certificates.view.edit_certificate_details = \
+        lambda meta, problems, raw: shown.append(meta) or meta
     assert not window.export_certificate()
+    assert shown[0].certificate_number == number
     assert ("file", f"{number}-A1.pdf") in calls
     assert any(c[0] == "tell" and "never replaced" in c[1]
                for c in calls if isinstance(c, tuple)), calls
     assert (tmp_path / "cert1.pdf").read_bytes() == original
     # the name suggested taken: the amendment is issued into its own file
     _answer_dialogs(window, tmp_path, samples_dir, "polygon", calls, f"{number}-A1.pdf")
+    window.certificates.view.edit_certificate_details = lambda meta, problems, raw: meta
     assert window.export_certificate()
     assert f"Certificate {number}-A1 " in _pdf_text(tmp_path / f"{number}-A1.pdf")
     assert (tmp_path / "cert1.pdf").read_bytes() == original
