@@ -546,7 +546,11 @@ class CertificatePresenter:
                         "calibration. To correct it, select it in File › Certificate register "
                         "and press Amend… or Replace….").format(numbers=", ".join(numbers)))
                     return False
-        suggested = (f"{kind.key}-specimen" if entered.example else entered.certificate_number
+        # an amendment or a replacement is not filed under the original's number, which the
+        # details hold (day review 65 F6: AB-2026-0001-A1 was issued into AB-2026-0001.pdf)
+        number = (self._revision_number(revision) if revision is not None
+                  else entered.certificate_number)
+        suggested = (f"{kind.key}-specimen" if entered.example else number
                      or (f"{kind.key}-draft" if draft else
                          f"{kind.key}-report" if report else f"{kind.key}-certificate"))
         # the file dialog names what will be written (ISO/IEC 17025 7.8.2.1 a))
@@ -587,6 +591,20 @@ class CertificatePresenter:
             return False
         finally:
             self.view.wait_cursor(False)
+
+    def _revision_number(self, revision: PendingRevision) -> str:
+        """The number ``revision`` will be issued under when it is an amendment (the
+        register's next ``<original>-A<n>``); "" for a replacement (its number comes from
+        the number scheme at issue) or when the register cannot tell."""
+        from models.register.store import RegisterError
+
+        if revision.replacement:
+            return ""
+        try:
+            with self.open_register() as register:
+                return register.next_amendment_number(revision.number)
+        except (RegisterError, OSError):
+            return ""
 
     def _specimen(self, kind, result, entered, settings, origin, path, digest="") -> bool:
         """The training switch: a SPECIMEN written, nothing recorded (as ``"example": true``

@@ -40,6 +40,7 @@ from app.reference_sender import (
 )
 from app.run_overlay_actions import RunOverlayActions
 from models import __version__
+from models.certificate.readings_origin import TYPED
 from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.recovery import RecoveryStore
 from models.readings.tabular_import import TableImportError
@@ -53,6 +54,7 @@ from widgets.i18n import (
     on_language_change,
     resolve_language,
     tr,
+    translated,
 )
 from widgets.screen_fit import fit_to_screen
 from widgets.status_line import StatusLine
@@ -160,7 +162,8 @@ class MainWindow(QMainWindow):
             self.tabs.addTab(presenter.view, declared(presenter.kind.title))
             self.undo_group.addStack(presenter.undo_stack)
             presenter.import_failed.connect(self._on_import_failed)
-            presenter.imported.connect(self._on_imported)
+            presenter.imported.connect(
+                lambda path, rows, p=presenter: self._on_imported(path, rows, p))
         self.tabs.currentChanged.connect(self._on_tab_changed)
         self.setAcceptDrops(True)
         self._on_tab_changed(0)
@@ -324,6 +327,21 @@ class MainWindow(QMainWindow):
     def _on_tab_changed(self, index: int) -> None:
         if 0 <= index < len(self.presenters):
             self.undo_group.setActiveStack(self.presenters[index].undo_stack)
+            # a message about another workbench's readings is that workbench's
+            bar = self.statusBar()
+            if isinstance(bar, StatusLine):
+                bar.show_workbench(self.presenters[index].view)
+
+    def _show_workbench_status(self, presenter, text: str, timeout: int) -> None:
+        """A message about ``presenter``'s readings: shown while its tab is in front (put
+        aside on another tab's, widgets/status_line.py), gone when its sheet is replaced."""
+        bar = self.statusBar()
+        if isinstance(bar, StatusLine):
+            bar.show_about(text, timeout, presenter.view)
+            if presenter is not self.current:  # read in while another tab is in front
+                bar.show_workbench(self.current.view)
+        else:
+            bar.showMessage(text, timeout)
 
     # -- dialogs (tests replace these) --------------------------------------------
     def tell(self, title: str, text: str) -> None:
@@ -348,18 +366,21 @@ class MainWindow(QMainWindow):
         except TableImportError as exc:
             self.tell(tr("Cannot import"), explained(exc))
             return False
-        self.statusBar().showMessage(
-            tr("Imported {path} (Edit › Undo restores the old readings)").format(path=path), 8000)
+        self._show_workbench_status(
+            presenter, tr("Imported {path} (Edit › Undo restores the old readings)").format(
+                path=path), 8000)
         return True
 
     def _on_import_failed(self, message: str) -> None:
         self.tell(tr("Cannot import"), message)
 
-    def _on_imported(self, path: str, rows: int) -> None:
-        """Say that it worked (and replace an earlier error at once)."""
+    def _on_imported(self, path: str, rows: int, presenter=None) -> None:
+        """Say that it worked (and replace an earlier error at once), as a message of the
+        workbench it was imported into (``presenter``; None: the one in front)."""
         if path not in self.imported_files:
             self.imported_files.append(path)
-        self.statusBar().showMessage(
+        self._show_workbench_status(
+            presenter or self.current,
             tr("Imported {name}: {rows} row(s) (Edit › Undo restores the previous readings)")
             .format(name=Path(path).name, rows=rows), 8000)
 
@@ -379,7 +400,7 @@ class MainWindow(QMainWindow):
 
     def load_sample(self) -> None:
         """Replace the current workbench's readings with its sample (one undo step)."""
-        self.current.import_file(SAMPLES_DIR / self.current.kind.sample_file)
+        self.current.import_file(SAMPLES_DIR / self.current.kind.sample_file, sample=True)
 
     def print_dialog(self) -> bool:
         from PySide6.QtPrintSupport import QPrintDialog, QPrinter
@@ -396,8 +417,7 @@ class MainWindow(QMainWindow):
 
         print_workbench(self.current.view, printer,
                         f"{declared(self.current.kind.title)} — "
-                        + (self.projects.path.name if self.projects.path
-                           else tr("readings typed in AngleBench")))
+                        + self._source_shown())
         self.statusBar().showMessage(tr("Printed"), 5000)
 
     def _dcc_schema_dir(self) -> str:
@@ -490,10 +510,19 @@ class MainWindow(QMainWindow):
         return False
 
     def _source_name(self) -> str:
+        """The certificate's source of the readings in front: the project's file; else the
+        file they were imported from or the bundled sample (day review 65 F4: "readings
+        typed in AngleBench" was said of them); else, a certificate's project from the
+        register, its readings' source as it named it; else typed."""
         if self.projects.path:
             return self.projects.path.name
-        # a certificate's project from the register: its readings' source as it named it
-        return self.projects.readings_source or "readings typed in AngleBench"
+        return (self.current.readings_source() or self.projects.readings_source
+                or TYPED)
+
+    def _source_shown(self) -> str:
+        """:meth:`_source_name` in the window's language."""
+        source = self._source_name()
+        return tr("readings typed in AngleBench") if source == TYPED else translated(source)
 
     def export_certificate(self) -> bool:
         # the readings and settings the result was analysed from, not the sheet's and the

@@ -29,9 +29,11 @@ register did not issue (altered, a draft, another register's), 2 for a command i
 carry out (the arguments, a file that cannot be read, a register that cannot be reached) and
 3 for a register whose records were changed after issue (the hash chain, the stored files,
 a head no longer in the chain; checked on every opening: each command warns) — 3 before 1
-when both are found. What it prints, its help included, is in
-the language of ``--language`` (default: the system's); the listing's workbench keys and
-the export's ``index.csv`` keep the register's own English words.
+when both are found — and 4 for a file as issued whose certificate is no longer valid
+(superseded by an amendment or a replacement, or withdrawn), after 3 and 1. What it
+prints, its help included, is in the language of ``--language`` (default: the system's);
+the listing's workbench keys and the export's ``index.csv`` keep the register's own English
+words.
 """
 
 from __future__ import annotations
@@ -62,6 +64,14 @@ EXIT_NOT_ISSUED = 1
 #: AFTER ISSUE"): it wins over :data:`EXIT_NOT_ISSUED` (a command that cannot be carried
 #: out — the arguments, an unreadable file, an unreachable register — is EXIT_BAD_INPUT, 2)
 EXIT_REGISTER_CHANGED = 3
+#: ``verify``'s exit status for a file as issued whose certificate is no longer valid:
+#: superseded (amended, replaced) or withdrawn since (day review 65 F12: it exited 0, as a
+#: current certificate, and a script checking by exit status accepted it); 3 and 1 before it
+EXIT_NO_LONGER_VALID = 4
+#: what ``verify`` says of a file as issued whose certificate is no longer valid
+SUPERSEDED = QT_TR_NOOP("{path}: {number} is no longer valid: superseded by {by} (see "
+                        "'anglebench register show {by}')")
+WITHDRAWN = QT_TR_NOOP("{path}: {number} is no longer valid: withdrawn ({reason})")
 #: how every finding of a change after issue begins (the English text of its message)
 CHANGED_AFTER_ISSUE = "CHANGED AFTER ISSUE"
 
@@ -287,18 +297,20 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     the head ``head`` (or the one printed on the certificate ``head_from``). The exit
     status: :data:`EXIT_REGISTER_CHANGED` when any finding is a change after issue, else
     :data:`EXIT_NOT_ISSUED` for a file the register did not issue, else
-    :data:`EXIT_VERIFIED`. The files named are read first: one that cannot be read (or a
-    certificate that prints no head) is a RegisterError, said before anything is checked
+    :data:`EXIT_NO_LONGER_VALID` for a file as issued whose certificate was superseded or
+    withdrawn since, else :data:`EXIT_VERIFIED`. The files named are read first: one that
+    cannot be read (or a certificate that prints no head) is a RegisterError, said before anything is checked
     (exit 2), never after the register's own findings (they were: a tampered register and a
     mistyped file name both exited 2)."""
     from models.register.chain import head_in_pdf
     from models.register.printed_place import ALTERED_OR_REPLACED
     from models.register.store import RegisterError
 
-    changed = False
+    changed = invalid = False
 
     def out(text) -> None:
-        nonlocal changed
+        nonlocal changed, invalid
+        invalid = invalid or getattr(text, "template", "") in (SUPERSEDED, WITHDRAWN)
         # a PDF altered or its record replaced (the register cannot tell which): the file
         changed = changed or (str(text).startswith(CHANGED_AFTER_ISSUE) and getattr(
             text, "template", "") != ALTERED_OR_REPLACED)
@@ -315,7 +327,9 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     status = _verify_findings(register, path, data, out, head, head_from, certificate)
     if changed or status == EXIT_REGISTER_CHANGED:
         return EXIT_REGISTER_CHANGED
-    return EXIT_NOT_ISSUED if status else EXIT_VERIFIED
+    if status:
+        return EXIT_NOT_ISSUED
+    return EXIT_NO_LONGER_VALID if invalid else EXIT_VERIFIED
 
 
 def _verify_findings(register, path: str, data: bytes, out, head: str, head_from: str,
@@ -398,12 +412,10 @@ def _by_kind(record, certificate: str, report: str, unknown: str) -> str:
 def _say_if_no_longer_valid(record, path: str, out) -> None:
     """A verified file's certificate superseded or withdrawn since: said, naming why."""
     if record.superseded_by:
-        out(message(QT_TR_NOOP("{path}: {number} is no longer valid: superseded by {by} ("
-                               "see 'anglebench register show {by}')"), path=path,
-                    number=record.number, by=record.superseded_by))
+        out(message(SUPERSEDED, path=path, number=record.number, by=record.superseded_by))
     if record.status == "withdrawn":
-        out(message(QT_TR_NOOP("{path}: {number} is no longer valid: withdrawn ({reason})"),
-                    path=path, number=record.number, reason=record.withdrawn_reason or "—"))
+        out(message(WITHDRAWN, path=path, number=record.number,
+                    reason=record.withdrawn_reason or "—"))
 
 
 def _results_elsewhere(entry: dict, folder: Path, indent: str = "") -> list:

@@ -61,7 +61,7 @@ def listing_lines(records: Sequence, revision_of: Callable[[str], str],
     language."""
     if not records:
         return []
-    rows = [[rendered(header, words) for header in HEADERS]]
+    rows = [[rendered(message(header), words) for header in HEADERS]]
     for record in records:
         state, by = state_of(record, revision_of)
         rows.append([record.number, record.issue_date or "—",

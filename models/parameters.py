@@ -42,6 +42,10 @@ class Parameter:
     help: str = ""
     cli: bool = True  # offered on the command line as --key-with-dashes (or --cli_name)
     cli_name: str = ""
+    #: an aid to entering readings in the window (the entry plan): no input of the analysis,
+    #: left out of the certificate's settings (day review 65 F13: "entry plan: θ steps
+    #: −20:1:41" printed on a certificate whose run used no plan)
+    entry_aid: bool = False
     zero: str = ""
     decimals: int = 3
     step: float = 1.0

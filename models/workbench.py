@@ -237,7 +237,9 @@ class Workbench(ABC, Generic[ResultT]):
         document = self.certificate(result, metadata, source_name,
                                     checked if settings is not None else None)
         if settings is not None:
-            listing = tuple((p.label, p.text(checked[p.key])) for p in self.parameters)
+            # the window's entry aids (the entry plan) are no setting of the analysis
+            listing = tuple((p.label, p.text(checked[p.key])) for p in self.parameters
+                            if not p.entry_aid)
             document = dataclasses.replace(document, settings=listing)
         basis = self.traceability_basis
         if basis and not document.traceability_basis:

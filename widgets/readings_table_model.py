@@ -5,9 +5,10 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt, Signal
-from PySide6.QtGui import QBrush, QColor, QUndoStack
+from PySide6.QtGui import QBrush, QColor, QUndoCommand, QUndoStack
 
 from models.capture.take_cells import waiting_row
+from models.certificate.readings_origin import ImportedFrom
 from models.readings.sheet import NumericRows, ReadingsSheet
 from widgets.i18n import declared, on_language_change, tr, translated
 from widgets.table_commands import (
@@ -15,6 +16,7 @@ from widgets.table_commands import (
     RemoveRowsCommand,
     ReplaceAllCommand,
     SetCellsCommand,
+    SettingsCommand,
 )
 
 INVALID_BRUSH = QBrush(QColor(255, 205, 205))
@@ -55,6 +57,11 @@ class ReadingsTableModel(QAbstractTableModel):
         #: changed (review 61 F5: a row deleted above captured readings made them all look
         #: edited, with other rows' values, on the certificate)
         self.take_rows = None
+        #: the file the rows were imported from (models/certificate/readings_origin
+        #: .ImportedFrom; None: typed, or a project's), set and put back by the import's
+        #: undo step (:attr:`origin_step`, None: at the bottom of the undo history)
+        self.origin: ImportedFrom | None = None
+        self.origin_step: QUndoCommand | None = None
         #: why a cell's text cannot be read, by (column, text): a column's parse depends on
         #: the text alone, and every paint asks it of every visible cell
         self._reasons: dict[tuple[int, str], str | None] = {}
@@ -258,15 +265,32 @@ class ReadingsTableModel(QAbstractTableModel):
         self.undo_stack.push(RemoveRowsCommand(self, blocks, tr("Delete {rows} row(s)").format(
             rows=len(rows))))
 
+    def readings_origin(self) -> tuple[ImportedFrom | None, bool]:
+        """The file the rows were imported from (None: none) and whether they were edited
+        since: a step that changed rows is done above the import's in the undo history
+        (a change of settings is none; a step undone is none)."""
+        if self.origin is None:
+            return None, False
+        stack = self.undo_stack
+        done = [stack.command(i) for i in range(stack.index())]
+        start = next((i + 1 for i, step in enumerate(done) if step is self.origin_step), 0)
+        return self.origin, any(not isinstance(step, SettingsCommand) for step in done[start:])
+
+    def forget_origin(self) -> None:
+        """The rows are another's now (a project was opened): no import's."""
+        self.origin = self.origin_step = None
+
     def replace_all(self, rows: list[list[str]], label: str = "",
-                    checked: bool = False, replaces: str = "") -> None:
+                    checked: bool = False, replaces: str = "",
+                    origin: ImportedFrom | None = None) -> None:
         """Replace every row (one undo step); ``checked``: rows already fit the columns;
         ``replaces``: the instrument whose earlier takes the rows replace, in the same step
         (the fringe's live take: widgets/table_commands.py ReplaceAllCommand). What is being
-        typed in a cell is entered before, as its own step (:attr:`replacing`)."""
+        typed in a cell is entered before, as its own step (:attr:`replacing`). ``origin``:
+        the file the rows come from (None: not a file; :meth:`readings_origin`)."""
         label = label or tr("Replace readings")
         self.replacing.emit(label)
-        self.undo_stack.push(ReplaceAllCommand(self, rows, label, checked, replaces))
+        self.undo_stack.push(ReplaceAllCommand(self, rows, label, checked, replaces, origin))
 
     # -- raw operations used by the commands ------------------------------
     def apply_cells(self, changes: list[tuple[int, int, str]]) -> None:

@@ -27,6 +27,9 @@ class StatusLine(QStatusBar):
         super().__init__(parent)
         self._shown: tuple[str, float | None] | None = None  # text, when its time is up
         self._about: object | None = None  # what the message in sight is about (show_about)
+        #: messages about a workbench not in front (:meth:`show_workbench`), by id(about):
+        #: (about, text, when its time is up)
+        self._aside: dict[int, tuple[object, str, float | None]] = {}
         on_language_change(self, self._say_again)
 
     def showMessage(self, text: str, timeout: int = 0) -> None:  # noqa: N802 - Qt's name
@@ -41,8 +44,30 @@ class StatusLine(QStatusBar):
         self.showMessage(text, timeout)
         self._about = about
 
+    def show_workbench(self, about: object) -> None:
+        """The workbench ``about`` (its view) is in front now: a message about another
+        workbench in sight is put aside with the time it had left, and one put aside about
+        this one is shown again for its time left (day review 65 F11: the Positioning tab
+        said "Imported …/bench_run_0512.csv", the theodolite's import)."""
+        if self._about is not None and self._about is not about and self._shown is not None:
+            text, until = self._shown
+            if text and self.currentMessage() == text:
+                self._aside[id(self._about)] = (self._about, text, until)
+                self.clearMessage()
+            self._shown, self._about = None, None
+        kept = self._aside.pop(id(about), None)
+        if kept is None or kept[0] is not about:
+            return
+        _about, text, until = kept
+        left = 0 if until is None else round((until - _clock()) * 1000)
+        if until is not None and left <= 0:
+            return
+        self.show_about(said_again(text), left, about)
+
     def forget(self, about: object) -> None:
-        """The message in sight goes if it is about ``about`` (its sheet replaced)."""
+        """The message in sight goes if it is about ``about`` (its sheet replaced), and
+        one put aside about it."""
+        self._aside.pop(id(about), None)
         if self._about is about and about is not None:
             if self._shown is not None and self.currentMessage() == self._shown[0]:
                 self.clearMessage()

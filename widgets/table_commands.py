@@ -105,10 +105,15 @@ class ReplaceAllCommand(QUndoCommand):
     outside any command: its undo left the earlier take's readings unclaimed)."""
 
     def __init__(self, model, rows: list[list[str]], label: str, checked: bool = False,
-                 replaces: str = "") -> None:
+                 replaces: str = "", origin=None) -> None:
         super().__init__(label)
         self._model, self._new, self._checked = model, rows, checked
         self._replaces = replaces
+        #: where the new rows came from (models/certificate/readings_origin.ImportedFrom;
+        #: None: typed, pasted or taken in the window), the model's while this step is
+        #: done; the undo puts back the earlier rows' origin with them (day review 65 F4)
+        self._origin = origin
+        self._old_origin: tuple = (None, None)
         #: the earlier takes of ``replaces`` this replacement replaced, at their rows then
         self._replaced: list = []
         self._old: list[list[str]] = []
@@ -135,6 +140,8 @@ class ReplaceAllCommand(QUndoCommand):
         # the row lists themselves change hands: edits after the import mutate them, and
         # their own commands undo those edits first
         self._old = self._model.sheet.rows
+        self._old_origin = (self._model.origin, self._model.origin_step)
+        self._model.origin, self._model.origin_step = self._origin, self
         self._model.apply_replace(self._new, self._checked, move)
         self._checked = True  # from now on the rows are the sheet's own
 
@@ -145,6 +152,7 @@ class ReplaceAllCommand(QUndoCommand):
             takes.reattach(self._detached or [])
             takes.unreplaced(self._replaced)
 
+        self._model.origin, self._model.origin_step = self._old_origin
         self._model.apply_replace(self._old, checked=True, takes=move)
 
 

@@ -16,6 +16,7 @@ from PySide6.QtGui import QUndoStack
 
 from models.cancellation import AnalysisCancelled, cancellable, checkpoint
 from models.capture.take_cells import waiting_row
+from models.certificate.readings_origin import ImportedFrom, imported_source
 from models.display_units import (
     ANGLE_UNITS,
     AngleUnit,
@@ -26,7 +27,7 @@ from models.display_units import (
     in_unit,
 )
 from models.messages import reason_of
-from models.project.file import WorkbenchState
+from models.project.file import WorkbenchState, file_sha256
 from models.readings.entry_plan import EntryPlan, Placement
 from models.readings.incomplete import without_waiting_rows
 from models.readings.numeric_csv import read_numeric
@@ -67,7 +68,7 @@ class _TaskSignals(QObject):
     # English: "无结果：0 usable readings…" while capturing, #41)
     finished = Signal(int, object, object)
     cancelled = Signal(int)  # an analysis superseded by newer readings stopped early
-    imported = Signal(object, str, str, int)
+    imported = Signal(object, str, str, int, str)  # rows, path, error, generation, SHA-256
 
 
 class _AnalysisTask(QRunnable):
@@ -202,6 +203,7 @@ class _ImportTask(QRunnable):
 
     def run(self) -> None:
         kind, path, signals, generation, workers = self._args
+        digest = _file_digest(path)
         # Millions of new row lists would trigger full cyclic-GC passes that hold the GIL
         # for up to half a second each and stall the window; rows of strings hold no
         # cycles, so the collector rests while they are built.
@@ -211,19 +213,28 @@ class _ImportTask(QRunnable):
             parsed = read_numeric(path, kind.columns)
             if parsed is not None:
                 emit_if_alive(signals.imported, NumericRows(kind.columns, parsed.values,
-                                                            parsed.n), path, "", generation)
+                                                            parsed.n), path, "", generation,
+                              digest)
                 return
             try:
                 rows = map_columns(read_table(path), kind.columns)
             except MissingColumnError as exc:  # mapped on the GUI thread, with the user
-                emit_if_alive(signals.imported, exc, path, explained(exc), generation)
+                emit_if_alive(signals.imported, exc, path, explained(exc), generation, digest)
                 return
             except TableImportError as exc:
                 emit_if_alive(signals.imported, None, path, explained(exc),
-                              generation)
+                              generation, digest)
                 return
             gc.freeze()  # keep the new rows out of later full passes too
-        emit_if_alive(signals.imported, rows, path, "", generation)
+        emit_if_alive(signals.imported, rows, path, "", generation, digest)
+
+
+def _file_digest(path: str | Path) -> str:
+    """SHA-256 of the file being imported ("" when it cannot be read: the import says why)."""
+    try:
+        return file_sha256(path)
+    except OSError:
+        return ""
 
 
 def _sheet_state(sheet: ReadingsSheet, settings: dict[str, Any], deep: bool) -> WorkbenchState:
@@ -570,13 +581,22 @@ class WorkbenchPresenter(QObject):
         self._settings = self.kind.settings_with_defaults(state.settings)
         self.view.set_settings(self._settings)
         self.table_model.apply_replace(state.rows)
+        self.table_model.forget_origin()
         self.undo_stack.clear()
         self.mark_saved()
         self.refresh()
 
-    def import_file(self, path: str | Path) -> None:
+    def readings_source(self) -> str | None:
+        """Where the sheet's readings came from when it is a file imported (or the bundled
+        sample), as a certificate says it (None: typed, or the project's): day review 65 F4."""
+        origin, edited = self.table_model.readings_origin()
+        return None if origin is None else imported_source(origin, edited)
+
+    def import_file(self, path: str | Path, sample: bool = False) -> None:
         """Replace the readings with a CSV/XLSX file's (undoable). Raises TableImportError.
-        Headers that name no column are mapped by the user (the view asks)."""
+        Headers that name no column are mapped by the user (the view asks). ``sample``: the
+        file is the workbench's bundled sample (what a certificate then names)."""
+        digest = _file_digest(path)
         table = read_table(path)
         try:
             rows = map_columns(table, self.kind.columns)
@@ -585,7 +605,8 @@ class WorkbenchPresenter(QObject):
             if rows is None:
                 raise
         self.table_model.replace_all(rows, tr("Import {name}").format(name=Path(path).name),
-                                     checked=True)
+                                     checked=True,
+                                     origin=ImportedFrom(Path(path).name, digest, sample))
         self.imported.emit(str(path), len(rows))
         self._fit_columns()
         self.refresh()
@@ -637,7 +658,8 @@ class WorkbenchPresenter(QObject):
             self._import_pending = False
             self._set_busy(False)
 
-    def _on_import_finished(self, rows, path: str, error: str, generation: int) -> None:
+    def _on_import_finished(self, rows, path: str, error: str, generation: int,
+                            digest: str = "") -> None:
         if generation != self._import_generation:
             return  # superseded: a newer import or an opened project is what the user wants
         self._import_pending = False
@@ -653,7 +675,7 @@ class WorkbenchPresenter(QObject):
             self.import_failed.emit(error)
             return
         self.table_model.replace_all(rows, tr("Import {name}").format(name=Path(path).name),
-                                     checked=True)
+                                     checked=True, origin=ImportedFrom(Path(path).name, digest))
         self.imported.emit(str(path), len(rows))
         self._fit_columns()
         # queued behind the table's own relayout: started now, the analysis worker would
@@ -670,7 +692,7 @@ class WorkbenchPresenter(QObject):
             self.view.set_summary(text)
 
     def load_sample(self) -> None:
-        self.import_file(SAMPLES_DIR / self.kind.sample_file)
+        self.import_file(SAMPLES_DIR / self.kind.sample_file, sample=True)
         self.undo_stack.clear()
         self.mark_saved()
 

@@ -6,14 +6,46 @@ the instruments, the PDF's "Instrument output SHA-256" line the only hint)."""
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["TYPED", "captured_rows", "filled_rows", "readings_origin", "row_spans"]
+__all__ = ["TYPED", "ImportedFrom", "captured_rows", "filled_rows", "imported_source",
+           "readings_origin", "row_spans"]
 
 #: the readings' source when they are in no project file: typed (or pasted) into the sheet
 TYPED = QT_TR_NOOP("readings typed in AngleBench")
+
+
+@dataclass(frozen=True)
+class ImportedFrom:
+    """The file a workbench's readings were imported from (File › Import, or the bundled
+    sample: ``sample``), with the SHA-256 of its bytes as read ("" when it could not be
+    read again). Day review 65 F4: an unsaved project's certificate said "readings typed in
+    AngleBench" of readings imported from a CSV or loaded from the sample."""
+
+    name: str
+    sha256: str = ""
+    sample: bool = False
+
+
+def imported_source(origin: ImportedFrom, edited: bool) -> str:
+    """The certificate's source of readings imported from a file: its name (and SHA-256),
+    or the bundled sample; ``edited``: the rows were changed in the window after the
+    import (typed, pasted or deleted), which the source then says."""
+    if origin.sample:
+        template = (QT_TR_NOOP("the bundled sample {name}, edited in AngleBench") if edited
+                    else QT_TR_NOOP("the bundled sample {name}"))
+        return message(template, name=origin.name)
+    if origin.sha256:
+        template = (QT_TR_NOOP("imported from {name} (SHA-256 {sha256}), edited in "
+                               "AngleBench") if edited
+                    else QT_TR_NOOP("imported from {name} (SHA-256 {sha256})"))
+        return message(template, name=origin.name, sha256=origin.sha256)
+    template = (QT_TR_NOOP("imported from {name}, edited in AngleBench") if edited
+                else QT_TR_NOOP("imported from {name}"))
+    return message(template, name=origin.name)
 
 
 def filled_rows(rows: Sequence[Sequence[str]]) -> list[int]:

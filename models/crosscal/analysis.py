@@ -101,7 +101,8 @@ PARAMETERS = (
               zero="no plan", cli=False,
               help="Mountings of the entry plan: with the number of faces set, entry fills "
                    "mounting and face as readings arrive (mounting j from face j + 1) and shows "
-                   "the next one. 0: no plan"),
+                   "the next one. 0: no plan",
+              entry_aid=True),
     cmc_parameter("cmc_arcsec", "laboratory's CMC (smallest U), polygon", "\"",
                   "a polygon's face deviations"),
     cmc_parameter("cmc_encoder_arcsec", "laboratory's CMC (smallest U), encoder", "\"",

@@ -154,7 +154,8 @@ PARAMETERS = (
               cli=False,
               help="Sets of the entry plan: with the number of faces set, entry fills face, "
                    "set and direction (every second set reverse) as readings arrive and shows "
-                   "the next face; each set ends on face 1 again (closure). 0: no plan"),
+                   "the next face; each set ends on face 1 again (closure). 0: no plan",
+              entry_aid=True),
 )
 
 COUNTING_CHOICES = {"auto": 0, "with": 1, "against": -1}

@@ -156,17 +156,21 @@ PARAMETERS = (
               cli=False,
               help="Runs of the test plan (ISO 230-2: 5); with the targets below, entry fills "
                    "target, run and direction as readings arrive and shows the next point. "
-                   "0: no plan (the nominal step fills the target)"),
+                   "0: no plan (the nominal step fills the target)",
+              entry_aid=True),
     Parameter("plan_targets", "test plan: targets", "text", "0:30:12", cli=False,
-              help="The plan's targets: start:step:count (0:30:12) or a list (0, 30, 60)"),
+              help="The plan's targets: start:step:count (0:30:12) or a list (0, 30, 60)",
+              entry_aid=True),
     Parameter("plan_directions", "test plan: directions", "choice", "both", cli=False,
               choices=(("both", "bidirectional (↑ then ↓)"), ("up", "unidirectional (↑)")),
-              help="Approach directions of the plan"),
+              help="Approach directions of the plan",
+              entry_aid=True),
     Parameter("plan_order", "test plan: order", "choice", "linear", cli=False,
               choices=(("linear", "linear (ISO 230-2 standard cycle)"),
                        ("pilgrim", "pilgrim step (every approach of a target in turn)")),
               help="Linear: run 1 ↑ over every target, then ↓, then run 2; pilgrim step: "
-                   "all of one target's approaches before the next target"),
+                   "all of one target's approaches before the next target",
+              entry_aid=True),
 )
 
 #: the settings that are inputs of the certificate's budget (PositioningResult.inputs)

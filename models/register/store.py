@@ -1443,6 +1443,18 @@ class Register:
             raise _not_in_register(number)
         return CertificateRecord(**row._asdict())
 
+    def next_amendment_number(self, number: str) -> str:
+        """The number an amendment of certificate ``number`` issued now would get (as
+        :meth:`issue` allocates it: ``<original>-A<n>``), for the file name a window suggests
+        (day review 65 F6: the original's name was suggested, and the amendment issued into
+        it). RegisterError when ``number`` is not in the register."""
+        with self._read() as conn:
+            original = self._get(conn, number)
+            n = _amendment_count(conn, self, original) + 1
+            while self._taken(conn, f"{_root(original)}-A{n}"):
+                n += 1
+            return f"{_root(original)}-A{n}"
+
     def get(self, number: str) -> CertificateRecord:
         from models.register.identifiers import IdentifierError, normalise_identifier
 

@@ -94,9 +94,11 @@ PARAMETERS = (
               zero="no plan", cli=False,
               help="Passes of the entry plan over the θ steps below: entry fills θ (and run "
                    "and direction with more than one pass) as readings arrive and shows the "
-                   "next step. 0: no plan"),
+                   "next step. 0: no plan",
+              entry_aid=True),
     Parameter("plan_thetas", "entry plan: θ steps", "text", "-20:1:41", cli=False,
-              help="The plan's θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)"),
+              help="The plan's θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)",
+              entry_aid=True),
 )
 
 

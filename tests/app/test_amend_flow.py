@@ -178,3 +178,50 @@ def test_a_test_report_is_said_before_the_file_name_which_is_a_reports(window, q
     window.certificates.view.confirm_test_report = lambda reasons: calls.append("asked") or False
     assert not window.export_certificate()
     assert calls == ["details", "asked"]
+
+
+def test_an_amendment_is_offered_its_own_name_and_never_written_over_the_original(
+        window, qtbot, samples_dir, tmp_path):
+    """Day review 65 F6: Amend… suggested the original's file name (its number, pre-filled in
+    the details) and issued the amendment into it. The amendment's own number is suggested;
+    the original's issued PDF is refused as the amendment's file, and stays as issued."""
+    window.show()
+    polygon = window.presenter("polygon")
+    window.tabs.setCurrentIndex(window.presenters.index(polygon))
+    polygon.load_sample()
+    qtbot.waitUntil(lambda: window._current_result() is not None, timeout=20000)
+    calls: list = []
+    _answer_dialogs(window, tmp_path, samples_dir, "polygon", calls, "cert1.pdf")
+    assert window.export_certificate()
+    number = calls[-1][1].split()[1]
+    original = (tmp_path / "cert1.pdf").read_bytes()
+
+    window.show_register()
+    register_window = window.register_window
+    register_window.tell = lambda title, text: calls.append(("register", text))
+    register_window.table.selectRow(0)
+    register_window.buttons["amend"].click()
+    qtbot.waitUntil(lambda: window._current_result() is not None, timeout=20000)
+    polygon = window.presenter("polygon")
+    polygon.table_model.setData(polygon.table_model.index(0, 2), "0.75")
+    qtbot.waitUntil(lambda: window._current_result() is not None, timeout=20000)
+
+    # the original's PDF chosen for the amendment: refused, the original as issued; the
+    # details accepted as shown: the original's, its number pre-filled
+    calls.clear()
+    _answer_dialogs(window, tmp_path, samples_dir, "polygon", calls, "cert1.pdf")
+    shown: list = []
+    window.certificates.view.edit_certificate_details = \
+        lambda meta, problems, raw: shown.append(meta) or meta
+    assert not window.export_certificate()
+    assert shown[0].certificate_number == number
+    assert ("file", f"{number}-A1.pdf") in calls
+    assert any(c[0] == "tell" and "never replaced" in c[1]
+               for c in calls if isinstance(c, tuple)), calls
+    assert (tmp_path / "cert1.pdf").read_bytes() == original
+    # the name suggested taken: the amendment is issued into its own file
+    _answer_dialogs(window, tmp_path, samples_dir, "polygon", calls, f"{number}-A1.pdf")
+    window.certificates.view.edit_certificate_details = lambda meta, problems, raw: meta
+    assert window.export_certificate()
+    assert f"Certificate {number}-A1 " in _pdf_text(tmp_path / f"{number}-A1.pdf")
+    assert (tmp_path / "cert1.pdf").read_bytes() == original

@@ -132,11 +132,15 @@ def test_the_register_speaks_chinese(issued, tmp_path, capsys):
     pdf, details = issued
     theirs = " ".join(str(v) for v in details.values() if isinstance(v, str))
     assert main(["register", "list", "--language", "zh_CN"]) == 0
-    (_header, line) = capsys.readouterr().out.splitlines()
+    (header, line) = capsys.readouterr().out.splitlines()
     number = line.split()[0]
     assert line.rstrip().endswith("已签发") and " polygon / " in line  # the key stays a key
+    # the header too (day review 65 F7: it stayed in English)
+    assert header.split() == ["编号", "签发日期", "工作台", "/", "文件", "委托方", "出厂编号", "状态"]
     assert main(["register", "list"]) == 0
-    assert capsys.readouterr().out.splitlines()[1].rstrip().endswith("issued")  # English
+    english = capsys.readouterr().out.splitlines()
+    assert english[1].rstrip().endswith("issued")  # English
+    assert english[0].split()[:3] == ["Number", "Date", "of"]
 
     assert main(["register", "show", number, "--language", "zh_CN"]) == 0
     shown = capsys.readouterr().out

@@ -135,7 +135,9 @@ def test_verify_names_the_replacement_and_show_refuses_a_changed_pdf(samples_dir
             IssueRequest("polygon", meta, register.get(original).project_json),
             lambda meta: b"%PDF replacement", supersedes=original, replacement=True,
             change_note="re-issued")
-    assert main(["register", "verify", str(tmp_path / "a.pdf")]) == 0
+    # genuine but no longer valid: its own exit status, not a current one's 0 (day review
+    # 65 F12: a script checking by exit status accepted a superseded certificate)
+    assert main(["register", "verify", str(tmp_path / "a.pdf")]) == 4
     out = capsys.readouterr().out
     assert "hash chain intact over 2 record(s)" in out
     assert f"{original} is no longer valid: superseded by {record.number}" in out
@@ -204,7 +206,7 @@ def test_head_verify_head_show_and_withdraw(tmp_path, capsys):
     assert main(["register", "verify", "--head-from", str(tmp_path / "2.pdf")]) == 0
     assert main(["register", "withdraw", numbers[1], "--reason", "wrong item"]) == 0
     capsys.readouterr()
-    assert main(["register", "verify", str(tmp_path / "2.pdf")]) == 0
+    assert main(["register", "verify", str(tmp_path / "2.pdf")]) == 4
     out = capsys.readouterr().out
     assert f"{numbers[1]} is no longer valid: withdrawn (wrong item)" in out
     assert main(["register", "list", "--json"]) == 0

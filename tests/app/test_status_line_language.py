@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 
 import pytest
+from PySide6.QtCore import Qt
 
 from models.messages import QT_TR_NOOP, message
 from widgets import status_line
@@ -113,3 +114,41 @@ def test_what_was_typed_and_not_entered_is_said_again(switched_back, qtbot):
     assert "typing" not in chinese and "AC x" not in chinese, chinese
     choose_language(window, "en")
     assert window.statusBar().currentMessage() == said
+
+
+def test_an_import_message_belongs_to_its_workbench(switched_back, samples_dir, qtbot):
+    """Day review 65 F11: after switching tabs the status line said another workbench's
+    import ("已导入 …/bench_run_0512.csv" on the Positioning tab, the theodolite's). The
+    message is put aside on another tab and shown again on its own, for its time left."""
+    window = switched_back
+    window.show()
+    qtbot.waitExposed(window)
+    theodolite = window.presenter("theodolite")
+    positioning = window.presenter("positioning")
+    window.tabs.setCurrentIndex(window.presenters.index(theodolite))
+    assert window.import_file(samples_dir / theodolite.kind.sample_file)
+    assert "Imported" in window.statusBar().currentMessage()
+    bar = window.tabs.tabBar()
+
+    def click_tab(presenter) -> None:
+        index = window.presenters.index(presenter)
+        qtbot.mouseClick(bar, Qt.MouseButton.LeftButton, pos=bar.tabRect(index).center())
+        assert window.tabs.currentIndex() == index
+
+    click_tab(positioning)
+    assert "Imported" not in window.statusBar().currentMessage()
+    assert theodolite.kind.sample_file not in window.statusBar().currentMessage()
+    click_tab(theodolite)
+    assert theodolite.kind.sample_file in window.statusBar().currentMessage()
+    # in the language chosen meanwhile, on the other tab
+    click_tab(positioning)
+    choose_language(window, "zh_CN")
+    assert window.statusBar().currentMessage() == ""
+    click_tab(theodolite)
+    shown = window.statusBar().currentMessage()
+    assert theodolite.kind.sample_file in shown and HAN.search(shown), shown
+    # a file read in while another tab is in front says so on its own tab only
+    window.import_file(samples_dir / positioning.kind.sample_file, "positioning")
+    assert positioning.kind.sample_file not in window.statusBar().currentMessage()
+    click_tab(positioning)
+    assert positioning.kind.sample_file in window.statusBar().currentMessage()

@@ -76,18 +76,29 @@ def test_captured_rows_are_named_on_the_certificate_and_the_results(window, poly
     session = _session([2, 3, 4, rows - 1])
     window._load_raw_capture({"polygon": [session]})
     text, sheet = _export_both(window, tmp_path)
-    said = (f"readings typed in AngleBench, except rows 3–5, {rows} (4 of {rows}), captured "
-            "from the instruments")
+    said = f"; rows 3–5, {rows} (4 of {rows}) captured from the instruments"
+    imported = f"imported from polygon_sample.csv (SHA-256 {_sha256(polygon)})"
     assert said in text, text
-    assert TYPED + " " not in text.replace(said, "")
-    assert sheet["Readings"] == said
+    assert imported in text.replace(" )", ")"), text
+    assert TYPED not in text
+    assert sheet["Readings"] == imported + said
     # the instrument output's SHA-256 as the PDF gives it
     digest = raw_digest([session])
     assert sheet["Instrument output SHA-256"] == digest
     assert digest in text.replace(" ", "")
 
 
-def test_typed_readings_are_said_typed(window, polygon, tmp_path):
+def _sha256(presenter) -> str:
+    from models.project.file import file_sha256
+    from widgets.workbench_presenter import SAMPLES_DIR
+
+    return file_sha256(SAMPLES_DIR / presenter.kind.sample_file)
+
+
+def test_typed_readings_are_said_typed(window, polygon, tmp_path, qtbot):
+    # the sample's rows pasted over the sheet (as typed into it): no file's readings
+    polygon.table_model.replace_all(polygon.state().rows, "Paste, replacing the sheet")
+    qtbot.waitUntil(lambda: window._current_result() is not None, timeout=20000)
     text, sheet = _export_both(window, tmp_path)
     assert "captured from the instruments" not in text
     assert "Readings " + TYPED in text, text
@@ -108,3 +119,82 @@ def test_every_row_captured_and_which_rows_count():
     assert readings_origin("job.anglebench.json", [1], 3) == (
         "job.anglebench.json; rows 2 (1 of 3) captured from the instruments")
     assert readings_origin(TYPED, [], 3) == TYPED
+
+
+def _type_cell(qtbot, presenter, row: int, column: int, text: str) -> None:
+    """Type ``text`` into a cell of ``presenter``'s sheet as the user does, then Return."""
+    from PySide6.QtCore import Qt
+    from PySide6.QtWidgets import QLineEdit
+
+    view = presenter.view.table
+    view.window().show()
+    qtbot.waitExposed(view.window())
+    index = view.model().index(row, column)
+    view.setCurrentIndex(index)
+    view.edit(index)
+    editor = next(w for w in view.viewport().findChildren(QLineEdit) if w.isVisible())
+    editor.selectAll()
+    qtbot.keyClicks(editor, text)
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    qtbot.waitUntil(lambda: presenter.sheet.text(row, column) == text, timeout=3000)
+
+
+def _readings_line(window, tmp_path, qtbot) -> tuple[str, str]:
+    """The certificate's (PDF) and the results' (XLSX) "Readings:" of the workbench in front."""
+    qtbot.waitUntil(lambda: window._current_result() is not None, timeout=20000)
+    text, sheet = _export_both(window, tmp_path)
+    return text.replace(" )", ")"), sheet["Readings"]
+
+
+def _results_readings(window, tmp_path, qtbot) -> str:
+    """The results' (XLSX) "Readings:" of the workbench in front (nothing issued)."""
+    qtbot.waitUntil(lambda: window._current_result() is not None, timeout=20000)
+    assert window.export_results()
+    return _certificate_sheet(tmp_path / "results.xlsx")["Readings"]
+
+
+def test_an_imported_file_is_named_with_its_digest(window, polygon, tmp_path, qtbot,
+                                                   samples_dir, monkeypatch):
+    """Day review 65 F4: readings imported (File › Import) into an unsaved project were
+    "readings typed in AngleBench" on the certificate and in the results."""
+    import app.main_window
+    from models.project.file import file_sha256
+
+    csv = tmp_path / "bench_run_0512.csv"
+    csv.write_bytes((samples_dir / polygon.kind.sample_file).read_bytes())
+    monkeypatch.setattr(app.main_window.QFileDialog, "getOpenFileName",
+                        lambda *a, **k: (str(csv), ""))
+    window.menus.import_action.trigger()  # File › Import CSV/XLSX…, the file chosen
+    qtbot.waitUntil(lambda: csv.name in window.statusBar().currentMessage(), timeout=10000)
+    imported = f"imported from bench_run_0512.csv (SHA-256 {file_sha256(csv)})"
+    text, sheet = _readings_line(window, tmp_path, qtbot)
+    assert f"Readings {imported} " in text, text
+    assert sheet == imported
+    assert TYPED not in text
+
+    # a reading typed over the import: the file's readings, edited
+    _type_cell(qtbot, polygon, 2, polygon.sheet.column_index("polygon_dev_arcsec"), "0.25")
+    assert _results_readings(window, tmp_path, qtbot) == f"{imported}, edited in AngleBench"
+    # undone, the readings are the file's again; the import undone, the sample's
+    window.undo_group.undo()
+    assert _results_readings(window, tmp_path, qtbot) == imported
+    window.undo_group.undo()
+    assert _results_readings(window, tmp_path, qtbot) == (
+        f"imported from polygon_sample.csv (SHA-256 {_sha256(polygon)})")
+
+
+def test_the_bundled_sample_is_named(window, polygon, tmp_path, qtbot):
+    """File › Load bundled sample: the certificate names the sample, not typed readings."""
+    window.menus.sample_action.trigger()
+    text, sheet = _readings_line(window, tmp_path, qtbot)
+    assert sheet == "the bundled sample polygon_sample.csv"
+    assert "Readings the bundled sample polygon_sample.csv " in text, text
+
+
+def test_imported_source_wording():
+    from models.certificate.readings_origin import ImportedFrom, imported_source
+
+    assert imported_source(ImportedFrom("a.csv", "ab12"), False) == (
+        "imported from a.csv (SHA-256 ab12)")
+    assert imported_source(ImportedFrom("a.csv"), True) == "imported from a.csv, edited in AngleBench"
+    assert imported_source(ImportedFrom("s.csv", "ff", sample=True), False) == "the bundled sample s.csv"

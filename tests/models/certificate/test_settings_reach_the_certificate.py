@@ -129,3 +129,18 @@ def test_the_polygons_stated_inputs_reach_its_budget_from_the_settings():
     u_small = next(c for c in small if str(c.name).startswith("Pyramidal")).standard_uncertainty(faces)
     u_large = next(c for c in large if str(c.name).startswith("Pyramidal")).standard_uncertainty(faces)
     assert np.all(u_large[1:] > 2.0 * u_small[1:])  # a third of the bound: well under half the u
+
+
+@pytest.mark.parametrize("key", ["theodolite", "polygon", "positioning", "crosscal"])
+def test_the_window_entry_plan_is_no_setting_on_the_certificate(key):
+    """Day review 65 F13: "entry plan: passes — no plan" and "entry plan: θ steps −20:1:41"
+    were printed among the certificate's analysis settings: window-only entry aids, and a
+    plan printed of a run that used none may be read as the measurement plan."""
+    kind, result, analysed = _sample(key)
+    listed = dict(kind.certificate_document(result, _details(key), "", analysed).settings)
+    aids = [p for p in kind.parameters if p.key.startswith("plan_")]
+    assert aids and all(p.entry_aid for p in aids)
+    assert not any(p.label in listed for p in aids), listed
+    assert not any("plan" in label for label in listed), listed
+    # the analysis' own settings are all there still
+    assert set(listed) == {p.label for p in kind.parameters if not p.entry_aid}
