@@ -2836,7 +2836,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>supersedes</source>
-        <extracomment>``verify``&apos;s exit status when everything it checked is as issued ``verify``&apos;s exit status for a file (PDF, DCC, results file) the register did not issue ``verify``&apos;s exit status for a register whose records were changed after issue (&quot;CHANGED AFTER ISSUE&quot;): it wins over :data:`EXIT_NOT_ISSUED` (a command that cannot be carried out — the arguments, an unreadable file, an unreachable register — is EXIT_BAD_INPUT, 2) how every finding of a change after issue begins (the English text of its message) what ``show`` lists of a record, named as the register&apos;s columns (translated as names)</extracomment>
+        <extracomment>how every finding of a change after issue begins (the English text of its message) what ``show`` lists of a record, named as the register&apos;s columns (translated as names)</extracomment>
         <translation>取代</translation>
     </message>
     <message>
@@ -4023,7 +4023,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
+        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) the file the rows were imported from (models/certificate/readings_origin .ImportedFrom; None: typed, or a project&apos;s), set and put back by the import&apos;s undo step (:attr:`origin_step`, None: at the bottom of the undo history) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -6087,6 +6087,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>{key} must be one of {shown}, not {text}</source>
+        <extracomment>an aid to entering readings in the window (the entry plan): no input of the analysis, left out of the certificate&apos;s settings (day review 65 F13: &quot;entry plan: θ steps −20:1:41&quot; printed on a certificate whose run used no plan)</extracomment>
         <translation>{key} 必须是 {shown} 之一，而不是 {text}</translation>
     </message>
     <message>
@@ -7796,6 +7797,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>{path}: {number} is no longer valid: superseded by {by} (see &apos;anglebench register show {by}&apos;)</source>
+        <extracomment>``verify``&apos;s exit status when everything it checked is as issued ``verify``&apos;s exit status for a file (PDF, DCC, results file) the register did not issue ``verify``&apos;s exit status for a register whose records were changed after issue (&quot;CHANGED AFTER ISSUE&quot;): it wins over :data:`EXIT_NOT_ISSUED` (a command that cannot be carried out — the arguments, an unreadable file, an unreachable register — is EXIT_BAD_INPUT, 2) ``verify``&apos;s exit status for a file as issued whose certificate is no longer valid: superseded (amended, replaced) or withdrawn since (day review 65 F12: it exited 0, as a current certificate, and a script checking by exit status accepted it); 3 and 1 before it what ``verify`` says of a file as issued whose certificate is no longer valid</extracomment>
         <translation>{path}：{number} 已不再有效：已被 {by} 取代（见“anglebench register show {by}”）</translation>
     </message>
     <message>
@@ -11267,6 +11269,30 @@ Replace it?</source>
     <message>
         <source>Send again</source>
         <translation>重新发送</translation>
+    </message>
+    <message>
+        <source>the bundled sample {name}, edited in AngleBench</source>
+        <translation>自带示例 {name}，载入后在 AngleBench 中编辑过</translation>
+    </message>
+    <message>
+        <source>the bundled sample {name}</source>
+        <translation>自带示例 {name}</translation>
+    </message>
+    <message>
+        <source>imported from {name} (SHA-256 {sha256}), edited in AngleBench</source>
+        <translation>导入自 {name}（SHA-256 {sha256}），导入后在 AngleBench 中编辑过</translation>
+    </message>
+    <message>
+        <source>imported from {name} (SHA-256 {sha256})</source>
+        <translation>导入自 {name}（SHA-256 {sha256}）</translation>
+    </message>
+    <message>
+        <source>imported from {name}, edited in AngleBench</source>
+        <translation>导入自 {name}，导入后在 AngleBench 中编辑过</translation>
+    </message>
+    <message>
+        <source>imported from {name}</source>
+        <translation>导入自 {name}</translation>
     </message>
     <message>
         <source>all {count} rows captured from the instruments</source>
