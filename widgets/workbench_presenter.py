@@ -738,6 +738,15 @@ class WorkbenchPresenter(QObject):
             return None
         return plan.placement(got[0], self._reading_keys())
 
+    def plan_complete(self) -> int:
+        """The number of the entry plan's points when every one has its reading (the plan
+        complete); 0 without a plan or while it has points to go."""
+        plan = self.entry_plan()
+        got = None if plan is None else self._plan_rows(plan)
+        if got is None or plan.placement(got[0], self._reading_keys()) is not None:
+            return 0
+        return len(plan.points)
+
     def waiting_row(self) -> int | None:
         """Without a plan, the row that waits for the next reading: the first of the rows at
         the end with their point (θ, target) but no reading (models/capture/take_cells.py

@@ -1299,7 +1299,8 @@ class CapturePanel(QDockWidget):
             self.guide.setText("")
             return
         sheet = presenter.table_model.sheet
-        row = self.target_row(presenter)
+        place = self._placement(presenter)
+        row = self.target_row(presenter, place)
         keys = [c.key for c in sheet.columns]
 
         def cells(r: int) -> dict[str, str]:
@@ -1307,10 +1308,24 @@ class CapturePanel(QDockWidget):
                 return dict.fromkeys(keys, "")
             return {k: sheet.text(r, c) for c, k in enumerate(keys)}
 
+        current = cells(row)
+        if place is not None and place.row == row:
+            # the entry plan's next point, where its cells are still blank (the row is
+            # pre-filled only at Return or a take): the guidance said "type θ" while the
+            # table's caption said "next: θ = −14°" (day 65, F9)
+            current.update({k: v for k, v in place.cells.items()
+                            if k in current and not current[k].strip()})
         step = presenter.view.table.nominal_step or 0.0
         self.next_reading = kind.acquisition_guide(
-            [cells(r) for r in range(min(row, sheet.row_count))], cells(row), presenter.settings,
+            [cells(r) for r in range(min(row, sheet.row_count))], current, presenter.settings,
             step)
+        complete = 0 if place is not None else getattr(presenter, "plan_complete", int)()
+        if complete:
+            # the plan's end said, not a point after it ("go to face 3" under "plan
+            # complete (26/26)"): a take now adds a reading the plan does not have
+            self.guide.setText(tr("Entry plan complete ({n} points): a further take is added "
+                                  "after it").format(n=complete))
+            return
         self.guide.setText(tr("Next: {what}").format(what=translated(self.next_reading.text)))
 
     # ------------------------------------------------------------ the live readout
