@@ -189,9 +189,9 @@ def _conformity(kind: Workbench, result: Any, details: Any, settings: dict[str, 
 
 
 def conformity_text(conformity: Any) -> str:
-    """The statement of conformity in the window's language, as the result summary shows it:
-    the decision rule, the certificate's statement (pass / conditional / fail with its figures,
-    or no statement and why) and the decided value with its interval."""
+    """The statement of conformity in the window's language, short, as the result summary
+    shows it: the verdict, the decision rule and the decided value with its interval; or
+    "no statement" and why (the certificate's full statement: :func:`conformity_statement`)."""
     from models.quantity import unit
     from models.uncertainty.conformity import DECISION_RULE_NAMES
     from models.uncertainty.rounding import interval_decimals
@@ -199,12 +199,17 @@ def conformity_text(conformity: Any) -> str:
     if conformity is None:
         return ""
     if isinstance(conformity, str):  # no certificate can be made with these details
-        return tr("No statement of conformity: {reason}.").format(
-            reason=translated(conformity))
-    rule = DECISION_RULE_NAMES.get(conformity.rule_key, "")
-    text = tr("Conformity ({rule}): {statement}").format(
-        rule=tr(rule) if rule else translated(conformity.rule),
-        statement=translated(conformity.statement))
+        return tr("No statement of conformity: {reason}.").format(reason=translated(conformity))
+    name = DECISION_RULE_NAMES.get(conformity.rule_key, "")
+    rule = tr(name) if name else translated(conformity.rule)
+    words = {"pass": tr("pass"), "conditional pass": tr("conditional pass"),
+             "conditional fail": tr("conditional fail"), "fail": tr("fail")}
+    if conformity.verdict not in words:
+        text = tr("Conformity: no statement ({rule}): {reason}.").format(
+            rule=rule, reason=translated(conformity.reason or conformity.statement))
+    else:
+        text = tr("Conformity: {verdict} ({rule}).").format(verdict=words[conformity.verdict],
+                                                           rule=rule)
     value, upper, lower = conformity.value, conformity.expanded, conformity.expanded_lower
     lower = lower if np.isfinite(lower) else upper
     if np.isfinite(value) and np.isfinite(upper) and np.isfinite(lower):
@@ -215,6 +220,13 @@ def conformity_text(conformity: Any) -> str:
             value=f"{value:.{d}f}{written}", low=f"{low:.{d}f}", high=f"{high:.{d}f}",
             unit=written)
     return text
+
+
+def conformity_statement(conformity: Any) -> str:
+    """The certificate's whole statement of conformity (the verdict line's tooltip)."""
+    if conformity is None or isinstance(conformity, str):
+        return ""
+    return translated(conformity.statement)
 
 
 def _shown_on_worker(kind: Workbench, result: Any, details: Any,
@@ -988,6 +1000,7 @@ class WorkbenchPresenter(QObject):
             if shown.conformity is not None:  # the certificate's statement, before issuing
                 verdict = "\n".join(t for t in (verdict, conformity_text(shown.conformity)) if t)
             self.view.set_verdict(verdict)
+            self.view.verdict.setToolTip(conformity_statement(shown.conformity))
             printed = {}  # by the name shown; a figure shown in another unit: its value
             for name, text in shown.printed.items():
                 header, factor = header_in_unit(name, self.angle_unit)

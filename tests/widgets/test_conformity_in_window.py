@@ -35,16 +35,19 @@ def test_the_window_states_the_certificates_conformity_verdict(window):
                                                       presenter.result_settings).conformity
         shown = presenter.view.verdict.text()
         assert presenter.view.verdict.isVisibleTo(presenter.view)
-        assert "Conformity (Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)): " \
-            f"{printed.statement}" in shown, shown
+        # the certificate's whole statement under the pointer
+        assert presenter.view.verdict.toolTip() == printed.statement
+        rule = "Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)"
         if tolerance == 3.0:
             assert printed.verdict == "pass"
-            assert "The item conforms to the specification ±3\" (pass)." in shown
-            assert "Decided value 0.94\", interval [0.00, 1.45]\"." in shown, shown
+            assert "The item conforms to the specification ±3\" (pass)." in printed.statement
+            assert f"Conformity: pass ({rule}). Decided value 0.94\", interval " \
+                "[0.00, 1.45]\"." in shown, shown
         else:  # U ≥ T: no statement, and why
             assert printed.verdict == "not assessed"
-            assert "No statement of conformity is possible" in shown
-
+            assert f"Conformity: no statement ({rule}): " in shown, shown
+            assert 'U = 0.94" is not smaller than T = 0.2". Decided value 0.94", interval ' \
+                '[0.00, 1.45]".' in shown, shown
 
 
 def test_details_no_certificate_can_be_made_with_are_said_in_the_window(window):
