@@ -586,6 +586,7 @@ class MainWindow(QMainWindow):
         if not let_go:
             event.ignore()
             return
+        self.capture_panel.remember_open()
         self.qsettings.setValue("window/geometry", self.saveGeometry())
         self.qsettings.setValue("window/state", self.saveState())
         self.qsettings.setValue("window/tab", self.tabs.currentIndex())
@@ -607,6 +608,8 @@ class MainWindow(QMainWindow):
         tab = self.qsettings.value("window/tab", 0)
         with contextlib.suppress(TypeError, ValueError):
             self.tabs.setCurrentIndex(int(tab))
+        # the instrument panel open only on the workbenches it was open on, not every tab
+        self.capture_panel.restore_open()
 
     def show_about(self) -> None:
         QMessageBox.about(

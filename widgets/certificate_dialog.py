@@ -44,6 +44,7 @@ from models.certificate.metadata import (
     MetadataError,
 )
 from models.quantity import UNITS
+from models.uncertainty.conformity import DECISION_RULE_NAMES
 from widgets.i18n import declared, explained, tr, translated
 from widgets.screen_fit import fit_to_screen
 
@@ -77,10 +78,7 @@ _CHOICES = {
                                            "test": QT_TR_NOOP("Test report")}),
     "language": (QT_TR_NOOP("Language"), LANGUAGES),
     "calibration_place": (QT_TR_NOOP("Place of calibration"), PLACES),
-    "decision_rule": (QT_TR_NOOP("Decision rule"), {
-        "guarded": QT_TR_NOOP("Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)"),
-        "guarded_binary": QT_TR_NOOP("Guard band w = U: pass / fail (ILAC-G8 4.2.2)"),
-        "simple": QT_TR_NOOP("Simple acceptance (ILAC-G8 4.2.1)")}),
+    "decision_rule": (QT_TR_NOOP("Decision rule"), DECISION_RULE_NAMES),
     "decision_quantity": (QT_TR_NOOP("Decided quantity"), {
         "half_range": QT_TR_NOOP("Half the peak-to-peak (Monte Carlo U)"),
         "points": QT_TR_NOOP("Every point with its own U")}),

@@ -38,7 +38,7 @@ from models.readings.tabular_import import (
     map_columns,
     read_table,
 )
-from models.workbench import ShowsHeadline, Workbench
+from models.workbench import IssuesCertificates, ShowsHeadline, Workbench
 from widgets.i18n import declared, explained, on_language_change, tr, translated
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.table_commands import SettingsCommand
@@ -146,6 +146,10 @@ class ShownAsPrinted:
     #: the kind's printed_rounding of the result (None: the kind has none), which the
     #: plot's readout under the cursor follows
     rounding: Any = None
+    #: the statement of conformity as the certificate made with ``details`` states it
+    #: (its Conformity, or why no certificate can be made; None where no tolerance is set),
+    #: shown by :func:`conformity_text`
+    conformity: Any = None
 
     def of(self, result: Any, details: Any, settings: dict[str, Any]) -> bool:
         """Whether this is what ``result`` with ``details`` and ``settings`` shows."""
@@ -166,7 +170,64 @@ def shown_as_printed(kind: Workbench, result: Any, details: Any,
     summary = kind.summary(result, **rounded)
     verdict = kind.verdict(result, **rounded) if isinstance(kind, ShowsHeadline) else ""
     return ShownAsPrinted(result, details, dict(settings), summary, verdict,
-                          kind.printed_headline(result, printed_as), printed_as)
+                          kind.printed_headline(result, printed_as), printed_as,
+                          _conformity(kind, result, details, settings))
+
+
+def _conformity(kind: Workbench, result: Any, details: Any, settings: dict[str, Any]) -> Any:
+    """The certificate's :class:`~models.uncertainty.conformity.Conformity` where the details
+    set a tolerance (why none, where the certificate cannot be made with them), None
+    elsewhere (the window showed only the tolerance band; pass or fail was seen in an
+    issued PDF only: day 65, F8)."""
+    if details is None or getattr(details, "tolerance", None) is None \
+            or not isinstance(kind, IssuesCertificates):
+        return None
+    try:
+        return kind.certificate_document(result, details, "", settings).conformity
+    except (ValueError, ArithmeticError) as exc:  # the certificate could not be made: why
+        log.debug("no statement of conformity shown: %s", exc)
+        return reason_of(exc)
+
+
+def conformity_text(conformity: Any) -> str:
+    """The statement of conformity in the window's language, short, as the result summary
+    shows it: the verdict, the decision rule and the decided value with its interval; or
+    "no statement" and why (the certificate's full statement: :func:`conformity_statement`)."""
+    from models.quantity import unit
+    from models.uncertainty.conformity import DECISION_RULE_NAMES
+    from models.uncertainty.rounding import interval_decimals
+
+    if conformity is None:
+        return ""
+    if isinstance(conformity, str):  # no certificate can be made with these details
+        return tr("No statement of conformity: {reason}.").format(reason=translated(conformity))
+    name = DECISION_RULE_NAMES.get(conformity.rule_key, "")
+    rule = tr(name) if name else translated(conformity.rule)
+    words = {"pass": tr("pass"), "conditional pass": tr("conditional pass"),
+             "conditional fail": tr("conditional fail"), "fail": tr("fail")}
+    if conformity.verdict not in words:
+        text = tr("Conformity: no statement ({rule}): {reason}.").format(
+            rule=rule, reason=translated(conformity.reason or conformity.statement))
+    else:
+        text = tr("Conformity: {verdict} ({rule}).").format(verdict=words[conformity.verdict],
+                                                           rule=rule)
+    value, upper, lower = conformity.value, conformity.expanded, conformity.expanded_lower
+    lower = lower if np.isfinite(lower) else upper
+    if np.isfinite(value) and np.isfinite(upper) and np.isfinite(lower):
+        low, high = value - lower, value + upper
+        d = interval_decimals(low, high)
+        written = unit(conformity.unit).written()
+        text += " " + tr("Decided value {value}, interval [{low}, {high}]{unit}.").format(
+            value=f"{value:.{d}f}{written}", low=f"{low:.{d}f}", high=f"{high:.{d}f}",
+            unit=written)
+    return text
+
+
+def conformity_statement(conformity: Any) -> str:
+    """The certificate's whole statement of conformity (the verdict line's tooltip)."""
+    if conformity is None or isinstance(conformity, str):
+        return ""
+    return translated(conformity.statement)
 
 
 def _shown_on_worker(kind: Workbench, result: Any, details: Any,
@@ -823,6 +884,15 @@ class WorkbenchPresenter(QObject):
             return None
         return plan.placement(got[0], self._reading_keys())
 
+    def plan_complete(self) -> int:
+        """The number of the entry plan's points when every one has its reading (the plan
+        complete); 0 without a plan or while it has points to go."""
+        plan = self.entry_plan()
+        got = None if plan is None else self._plan_rows(plan)
+        if got is None or plan.placement(got[0], self._reading_keys()) is not None:
+            return 0
+        return len(plan.points)
+
     def waiting_row(self) -> int | None:
         """Without a plan, the row that waits for the next reading: the first of the rows at
         the end with their point (θ, target) but no reading (models/capture/take_cells.py
@@ -1011,8 +1081,11 @@ class WorkbenchPresenter(QObject):
             shown = self.shown_as_printed(result, shown)
             self._show_readout_decimals(shown.rounding)
             self.view.set_summary(progress + unit_text(shown.summary))
-            self.view.set_verdict(unit_text(shown.verdict)
-                                  if isinstance(self.kind, ShowsHeadline) else "")
+            verdict = unit_text(shown.verdict) if isinstance(self.kind, ShowsHeadline) else ""
+            if shown.conformity is not None:  # the certificate's statement, before issuing
+                verdict = "\n".join(t for t in (verdict, conformity_text(shown.conformity)) if t)
+            self.view.set_verdict(verdict)
+            self.view.verdict.setToolTip(conformity_statement(shown.conformity))
             printed = {}  # by the name shown; a figure shown in another unit: its value
             for name, text in shown.printed.items():
                 header, factor = header_in_unit(name, self.angle_unit)

@@ -348,6 +348,16 @@ class WorkbenchView(QWidget):
             header.setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
             if rows <= measure_rows:
                 self.table.resizeColumnsToContents()
+                self._measured_rows = rows
+        elif rows <= measure_rows and rows != self._measured_rows:
+            # other readings in the sheet (a take, an import, a paste): measured again, once;
+            # sized for the first ones only, a fringe take's 12-digit u sin/u cos were cut
+            # ("0.2659…") while the empty θ-phase column had the room (day 65, F10)
+            self.table.resizeColumnsToContents()
+            self._measured_rows = rows
+
+    #: the rows the columns were last measured for (long sheets: not at every edit)
+    _measured_rows = -1
 
     def _retranslate(self) -> None:
         """Texts made here from parts (the plot tabs, the step's label) set anew in the

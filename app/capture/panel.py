@@ -644,6 +644,11 @@ class InstrumentLink:
         return tr("{instrument} on {port}").format(instrument=kind, port=port) if port else kind
 
 
+#: the workbenches (keys, comma-separated) the panel was open on when last left: restored
+#: open on those only, never on every tab with nothing connected (day 65, F10)
+OPEN_ON_SETTING = "capture/panel_open_on"
+
+
 class CapturePanel(QDockWidget):
     def __init__(self, window) -> None:
         super().__init__(window)
@@ -778,6 +783,9 @@ class CapturePanel(QDockWidget):
         self._allan_due = 0.0
         self._show_due = 0.0  # perf_counter time the readout's texts may be redrawn
         self._show_pending = False
+        #: the workbench in front as the panel last saw it, and those it was open on
+        self._front: str | None = None
+        self._open_on: set[str] = set()
         tabs = getattr(window, "tabs", None)
         if tabs is not None:
             tabs.currentChanged.connect(self.workbench_changed)
@@ -875,6 +883,9 @@ class CapturePanel(QDockWidget):
         with the link); its statistics and the guidance start afresh."""
         link = self.links[slot]
         link.connect(kind, port, baud, simulator, **worker_options)
+        presenter = getattr(self.window_, "current", None)
+        if presenter is not None:  # open on this workbench from now on (until closed here)
+            self._remember(presenter.kind.key, True)
         self._reset_statistics()
         self._refill_columns()
         self._capturing()
@@ -990,9 +1001,55 @@ class CapturePanel(QDockWidget):
         self.guide.setText("")
         self._gate_changed()
 
+    # ------------------------------------------------------------ where it is open
+    def _remember(self, key: str, shown: bool) -> None:
+        before = set(self._open_on)
+        (self._open_on.add if shown else self._open_on.discard)(key)
+        if self._open_on != before:
+            self.qsettings.setValue(OPEN_ON_SETTING, ",".join(sorted(self._open_on)))
+
+    def remember_open(self) -> None:
+        """The panel's state on the workbench in front kept (the window closes)."""
+        presenter = getattr(self.window_, "current", None)
+        if presenter is not None:
+            self._remember(presenter.kind.key, self.isVisible())
+
+    def restore_open(self) -> None:
+        """At start: open on the workbench in front only if it was open there when last
+        left (the window's saved state opened it on every tab, where it took ~240 px, 370 of
+        853 at 150 %, from the readings with nothing connected: day 65, F10)."""
+        saved = str(self.qsettings.value(OPEN_ON_SETTING, "") or "")
+        self._open_on = {key for key in saved.split(",") if key}
+        self._restored = True
+        presenter = getattr(self.window_, "current", None)
+        self._front = presenter.kind.key if presenter is not None else None
+        self._show_for(self._front)
+
+    def _show_for(self, key: str | None) -> None:
+        """Open where an instrument is connected or it was open on workbench ``key``;
+        closed elsewhere (the Instrument menu opens it)."""
+        if any(link.connected for link in self.links):
+            return  # its readings go to the sheet in front: it stays
+        self.setVisible(key in self._open_on)
+
+    def _follow_front(self) -> None:
+        presenter = getattr(self.window_, "current", None)
+        key = presenter.kind.key if presenter is not None else None
+        if key == self._front or not self._restored:
+            return  # before restore_open: the window's saved state is still being put back
+        if self._front is not None and not any(link.connected for link in self.links):
+            self._remember(self._front, self.isVisible())
+        self._front = key
+        self._show_for(key)
+
+    #: restore_open has run (the window's saved state is back)
+    _restored = False
+
     def workbench_changed(self, _index: int = 0) -> None:
         """Another workbench in front: its guidance, not the last one's, and its own raw
-        sessions (:meth:`_split_sessions`)."""
+        sessions (:meth:`_split_sessions`); the panel open there if it was when last left
+        there, or an instrument is connected."""
+        self._follow_front()
         self._split_sessions()
         self._reset_statistics()
         self._refill_columns()
@@ -1299,7 +1356,8 @@ class CapturePanel(QDockWidget):
             self.guide.setText("")
             return
         sheet = presenter.table_model.sheet
-        row = self.target_row(presenter)
+        place = self._placement(presenter)
+        row = self.target_row(presenter, place)
         keys = [c.key for c in sheet.columns]
 
         def cells(r: int) -> dict[str, str]:
@@ -1307,10 +1365,24 @@ class CapturePanel(QDockWidget):
                 return dict.fromkeys(keys, "")
             return {k: sheet.text(r, c) for c, k in enumerate(keys)}
 
+        current = cells(row)
+        if place is not None and place.row == row:
+            # the entry plan's next point, where its cells are still blank (the row is
+            # pre-filled only at Return or a take): the guidance said "type θ" while the
+            # table's caption said "next: θ = −14°" (day 65, F9)
+            current.update({k: v for k, v in place.cells.items()
+                            if k in current and not current[k].strip()})
         step = presenter.view.table.nominal_step or 0.0
         self.next_reading = kind.acquisition_guide(
-            [cells(r) for r in range(min(row, sheet.row_count))], cells(row), presenter.settings,
+            [cells(r) for r in range(min(row, sheet.row_count))], current, presenter.settings,
             step)
+        complete = 0 if place is not None else getattr(presenter, "plan_complete", int)()
+        if complete:
+            # the plan's end said, not a point after it ("go to face 3" under "plan
+            # complete (26/26)"): a take now adds a reading the plan does not have
+            self.guide.setText(tr("Entry plan complete ({n} points): a further take is added "
+                                  "after it").format(n=complete))
+            return
         self.guide.setText(tr("Next: {what}").format(what=translated(self.next_reading.text)))
 
     # ------------------------------------------------------------ the live readout

@@ -75,6 +75,14 @@ DECISION_RULES = {
                          "of a false acceptance reaches 50 % at the limit"),
 }
 
+#: each rule's short name, as the certificate details' choice and the window's result
+#: summary name it (the statement above is the certificate's)
+DECISION_RULE_NAMES = {
+    "guarded": QT_TR_NOOP("Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)"),
+    "guarded_binary": QT_TR_NOOP("Guard band w = U: pass / fail (ILAC-G8 4.2.2)"),
+    "simple": QT_TR_NOOP("Simple acceptance (ILAC-G8 4.2.1)"),
+}
+
 DECISION_QUANTITIES = {
     "half_range": QT_TR_NOOP("half the peak-to-peak error after the best zero: the measured "
                              "half range less the median excess of a measured range over the "

@@ -3275,6 +3275,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)</source>
+        <extracomment>each rule&apos;s short name, as the certificate details&apos; choice and the window&apos;s result summary name it (the statement above is the certificate&apos;s)</extracomment>
         <translation>保护带 w = U：合格 / 有条件 / 不合格（ILAC-G8 4.2.3）</translation>
     </message>
     <message>
@@ -3894,7 +3895,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Cannot save the image</source>
-        <extracomment>the kind&apos;s printed_rounding of the result (None: the kind has none), which the plot&apos;s readout under the cursor follows the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41) the row the capture sends the next take to (the capture panel&apos;s, while its instruments are connected to this workbench; None: none): without an entry plan, it waits for its reading as the plan&apos;s row does (day review 64 P4)</extracomment>
+        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41) the row the capture sends the next take to (the capture panel&apos;s, while its instruments are connected to this workbench; None: none): without an entry plan, it waits for its reading as the plan&apos;s row does (day review 64 P4)</extracomment>
         <translation>无法保存图像</translation>
     </message>
     <message>
@@ -4458,6 +4459,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>下一个：第 {row} 行</translation>
     </message>
     <message>
+        <source>Conformity: no statement ({rule}): {reason}.</source>
+        <translation>符合性：不作声明（{rule}）：{reason}。</translation>
+    </message>
+    <message>
+        <source>Conformity: {verdict} ({rule}).</source>
+        <translation>符合性：{verdict}（{rule}）。</translation>
+    </message>
+    <message>
+        <source>Decided value {value}, interval [{low}, {high}]{unit}.</source>
+        <translation>判定值 {value}，区间 [{low}, {high}]{unit}。</translation>
+    </message>
+    <message>
         <source>No result: {reason}</source>
         <translation>无结果：{reason}</translation>
     </message>
@@ -4682,7 +4695,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>figure</source>
-        <extracomment>the width the result keeps before the readings pane gives up its columns&apos; width (its text beside the figures&apos; table; the least the result kept when the panes had least widths) the readings pane&apos;s and the result&apos;s shares of the width the least width of the figures&apos; table (a name and a value; 250 px where there is room) the least width of the result&apos;s text beside it the least width the readings&apos; caption keeps beside the next row and the step</extracomment>
+        <extracomment>the width the result keeps before the readings pane gives up its columns&apos; width (its text beside the figures&apos; table; the least the result kept when the panes had least widths) the readings pane&apos;s and the result&apos;s shares of the width the least width of the figures&apos; table (a name and a value; 250 px where there is room) the least width of the result&apos;s text beside it the least width the readings&apos; caption keeps beside the next row and the step the rows the columns were last measured for (long sheets: not at every edit)</extracomment>
         <translation>结果项</translation>
     </message>
     <message>
@@ -5960,6 +5973,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>No statement of conformity: {reason}.</source>
+        <extracomment>the kind&apos;s printed_rounding of the result (None: the kind has none), which the plot&apos;s readout under the cursor follows the statement of conformity as the certificate made with ``details`` states it (its Conformity, or why no certificate can be made; None where no tolerance is set), shown by :func:`conformity_text`</extracomment>
         <translation>不作符合性声明：{reason}。</translation>
     </message>
     <message>
@@ -8664,7 +8678,9 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
-        <extracomment>where the demonstration instrument points in turn (8 s each) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short)</extracomment>
+        <extracomment>where the demonstration instrument points in turn (8 s each) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short)
+----------
+the workbenches (keys, comma-separated) the panel was open on when last left: restored open on those only, never on every tab with nothing connected (day 65, F10)</extracomment>
         <translation>仪器</translation>
     </message>
     <message>
@@ -8742,11 +8758,12 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>The demonstration instrument did not start: {reason}</source>
-        <extracomment>why a take was refused, or auto-take switched off (until the next take)</extracomment>
+        <extracomment>why a take was refused, or auto-take switched off (until the next take) the workbench in front as the panel last saw it, and those it was open on</extracomment>
         <translation>演示仪器未能启动：{reason}</translation>
     </message>
     <message>
         <source>Auto-take: waiting for {instrument} (link lost)</source>
+        <extracomment>restore_open has run (the window&apos;s saved state is back)</extracomment>
         <translation>自动取数：等待{instrument}（链路中断）</translation>
     </message>
     <message>
@@ -8756,6 +8773,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source> — the output spreads {spread} over a second, more than the window: widen the window</source>
         <translation> — 输出在一秒内的离散为 {spread}，超过稳定范围：请放宽稳定范围</translation>
+    </message>
+    <message>
+        <source>Entry plan complete ({n} points): a further take is added after it</source>
+        <translation>录入计划已完成（{n} 个点）：再取数将添加在计划之后</translation>
     </message>
     <message>
         <source>Auto-take switched off: the link to {instrument} ended ({reason})</source>

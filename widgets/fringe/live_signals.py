@@ -31,12 +31,14 @@ from PySide6.QtWidgets import (
     QComboBox,
     QDoubleSpinBox,
     QFormLayout,
+    QFrame,
     QGridLayout,
     QGroupBox,
     QHBoxLayout,
     QLabel,
     QLineEdit,
     QPushButton,
+    QScrollArea,
     QSizePolicy,
     QSpinBox,
     QVBoxLayout,
@@ -240,21 +242,28 @@ class LiveSignalsPanel(QWidget):
         link.addWidget(self.connect_button)
         link.addWidget(self.disconnect_button)
         link.addWidget(self.demo_button)
+        # the window's settings on two rows and Reset/Take on a row of their own below the
+        # plots: on one row they made the window at least 1039 px wide, wider than a
+        # 1280×720 screen at 150 % (853 px), and Take was off the screen
         view = QHBoxLayout()
         self.preset_label, self.periods_label, self.scale_label = QLabel(), QLabel(), QLabel()
         self.max_age_label = QLabel()
         view.addWidget(self.preset_label)
         view.addWidget(self.preset, 2)
         view.addWidget(self.edit_presets_button)
-        view.addWidget(self.periods_label)
-        view.addWidget(self.periods)
-        view.addWidget(self.max_age_label)
-        view.addWidget(self.max_age)
-        view.addWidget(self.scale_label)
-        view.addWidget(self.scale)
         view.addStretch(1)
-        view.addWidget(self.reset_button)
-        view.addWidget(self.take_button)
+        window = QHBoxLayout()
+        window.addWidget(self.periods_label)
+        window.addWidget(self.periods)
+        window.addWidget(self.max_age_label)
+        window.addWidget(self.max_age)
+        window.addWidget(self.scale_label)
+        window.addWidget(self.scale)
+        window.addStretch(1)
+        actions = QHBoxLayout()
+        actions.addStretch(1)
+        actions.addWidget(self.reset_button)
+        actions.addWidget(self.take_button)
         bars = QVBoxLayout()
         bars.setSpacing(4)
         for bar in self.bars.values():
@@ -278,11 +287,21 @@ class LiveSignalsPanel(QWidget):
         body = QHBoxLayout()
         body.addWidget(left, 2)
         body.addLayout(plots, 5)
+        # the bars and plots scroll when the screen is smaller than they need; the rows
+        # above and Take below stay in sight
+        self.body = QScrollArea()
+        self.body.setWidgetResizable(True)
+        self.body.setFrameShape(QFrame.Shape.NoFrame)
+        inside = QWidget()
+        inside.setLayout(body)
+        self.body.setWidget(inside)
         outer = QVBoxLayout(self)
         outer.setContentsMargins(4, 4, 4, 4)
         outer.addLayout(link)
         outer.addLayout(view)
-        outer.addLayout(body, 1)
+        outer.addLayout(window)
+        outer.addWidget(self.body, 1)
+        outer.addLayout(actions)
         outer.addWidget(self.note)
         outer.addWidget(self.status)
         for plot in (self.lissajous, self.error_plot):

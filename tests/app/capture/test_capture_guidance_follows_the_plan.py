@@ -1,0 +1,77 @@
+"""Day 65, F9: the instrument panel's guidance follows the entry plan, from its first point
+to its end, through the protocol simulators on a pseudo-terminal.
+
+Before, right after connecting with a theodolite plan the panel said "Next: turn the axis
+to the next θ and type it in the θ column" while the table's caption said "next: θ = −14°"
+(the plan's cells are put in the row only at Return or a take); and once a polygon plan was
+complete ("plan complete (26/26)") it still said "Next: go to face 3", takes going on as
+sets 3 and 4 without a word."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.app.capture.window_steps import show_workbench as _show
+from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
+
+pytestmark = pytest.mark.slow  # a window and an instrument: more than 0.4 s
+
+FAST = {"silence_s": 0.2, "retries": 1, "retry_pause_s": 0.05}
+
+
+def _take_through_the_plan(presenter, panel, qtbot, limit: int) -> list[str]:
+    """Take at every point of the plan (a button click each, a fresh frame each), the
+    guidance seen before each take; the plan complete at the end."""
+    seen = []
+    for _ in range(limit):
+        if presenter.plan_placement() is None:
+            break
+        seen.append(panel.guide.text())
+        qtbot.waitUntil(lambda: not panel.used_again(), timeout=3000)
+        panel.take_button.click()
+    assert presenter.plan_placement() is None
+    return seen
+
+
+def test_theodolite_guidance_names_the_plans_theta_from_the_start_to_its_end(window, qtbot):
+    presenter = _show(window, "theodolite")
+    model = presenter.table_model
+    model.replace_all([], "empty")
+    presenter.set_settings({**presenter.settings, "plan_passes": 1, "plan_thetas": "-14:1:3"})
+    assert presenter._next_text().startswith("next: θ = -14°")  # the table's caption
+    panel = window.capture_panel
+    with TheodoliteSimulator("pty", positions=[(33.5, 90.25)]) as sim:
+        panel.connect_to("theodolite", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        qtbot.waitUntil(lambda: panel.guide.text() != "", timeout=3000)
+        # right after connecting: the plan's first θ, as the caption says, not "type θ"
+        assert panel.guide.text() == "Next: θ = -14°"
+        seen = _take_through_the_plan(presenter, panel, qtbot, 20)
+        assert seen[:3] == ["Next: θ = -14°", "Next: θ = -13°", "Next: θ = -12°"]
+        points = len(presenter.entry_plan().points)
+        assert panel.guide.text() == (f"Entry plan complete ({points} points): a further take "
+                                      "is added after it")
+        panel.disconnect_instrument()
+    thetas = [model.sheet.text(r, 0) for r in range(model.sheet.row_count)]
+    assert thetas[:3] == ["-14", "-13", "-12"]
+
+
+def test_polygon_guidance_says_the_plan_is_complete(window, qtbot):
+    presenter = _show(window, "polygon")
+    model = presenter.table_model
+    model.replace_all([], "empty")
+    presenter.set_settings({**presenter.settings, "faces": 4, "plan_sets": 1})
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(1.25, -0.5)]) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        qtbot.waitUntil(lambda: panel.guide.text() != "", timeout=3000)
+        seen = _take_through_the_plan(presenter, panel, qtbot, 20)
+        assert seen and all("face" in text for text in seen), seen
+        points = len(presenter.entry_plan().points)
+        assert "plan complete" in presenter._next_text()
+        # the caption says the plan is complete: the panel says so too, no "go to face"
+        assert panel.guide.text() == (f"Entry plan complete ({points} points): a further take "
+                                      "is added after it")
+        panel.disconnect_instrument()
+    assert model.sheet.row_count == points
