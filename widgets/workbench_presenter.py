@@ -1084,8 +1084,7 @@ class WorkbenchPresenter(QObject):
             verdict = unit_text(shown.verdict) if isinstance(self.kind, ShowsHeadline) else ""
             if shown.conformity is not None:  # the certificate's statement, before issuing
                 verdict = "\n".join(t for t in (verdict, conformity_text(shown.conformity)) if t)
-            self.view.set_verdict(verdict)
-            self.view.verdict.setToolTip(conformity_statement(shown.conformity))
+            self.view.set_verdict(verdict, conformity_statement(shown.conformity))
             printed = {}  # by the name shown; a figure shown in another unit: its value
             for name, text in shown.printed.items():
                 header, factor = header_in_unit(name, self.angle_unit)

@@ -470,8 +470,11 @@ class WorkbenchView(QWidget):
             store.setValue(self.MAPPINGS_KEY, json.dumps(remembered, ensure_ascii=False))
         return mapping
 
-    def set_verdict(self, text: str) -> None:
+    def set_verdict(self, text: str, tooltip: str = "") -> None:
+        """The verdict line, and its tooltip (the certificate's statement of conformity; none
+        where there is no result)."""
         self.verdict.setText(text)
+        self.verdict.setToolTip(tooltip)
         self.verdict.setVisible(bool(text))
 
     def set_figures(self, figures: dict[str, float],
