@@ -20,9 +20,9 @@ def test_the_error_plot_fits_its_area_with_the_readout_shown(window, qtbot, lang
     qtbot.waitExposed(window)
     panel = window.capture_panel
     window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, panel)
-    panel.show()
     bench = window.presenter("polygon")
     window.tabs.setCurrentIndex(window.presenters.index(bench))
+    panel.show()  # opened on this workbench (0.8.14: open only where it was used)
     bench.load_sample()
     qtbot.waitUntil(lambda: bench.result is not None and not bench.analysis_pending,
                     timeout=10000)
