@@ -637,7 +637,7 @@ def _reversal_guard(x, s, sig_mean, n, tail) -> tuple[float, float, float]:
 
     A study with its own rig (even reversals, even with one target 2, 3 or 4 u above, a
     ramp, random from target to target, a single spike, the bundled sample's; 12, 36 and 72
-    targets at 5 runs and 13 at 2 and 3; repeatability 0.1, 0.5, 1 and 2 × B; 50 tests a
+    targets at 5 runs and 13 at 2 and 3; repeatability 0.1, 0.5, 1 and 2 × B; 20 tests a
     cell, 3200 tests, the study of #39): every cell within the binomial floor,
     pooled 99.6 %; on an even reversal the interval 2.1–2.9 times the width a correct one
     needs (up to 4.6 before), the median cell 2.0 times (2.18).
