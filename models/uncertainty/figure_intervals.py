@@ -184,7 +184,7 @@ def figure_objects(keys, values: Mapping[str, Any], intervals: Mapping[str, Figu
     intervals: :func:`held_to_cmc_figures`) also ``raised_to_cmc``: {low, high}, whether each
     half-width is the CMC because the readings gave less, as the decided quantity's (null
     where the figure has no interval)."""
-    out = {}
+    out: dict[str, dict[str, Any]] = {}
     for key in keys:
         value = values.get(key)
         value = None if value is None or not math.isfinite(value) else float(value)
