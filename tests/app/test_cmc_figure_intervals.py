@@ -169,6 +169,8 @@ def _dcc_figures(dcc) -> dict[str, dict | str]:
 def test_the_dcc_and_the_xlsx_state_the_same_intervals_as_the_json(issued, kind):
     held = _figures(issued[kind]["held"])
     stated = _dcc_figures(issued[kind]["dcc"])
+    # the DCC's statements carry the certificate's, naming the figures raised
+    assert b"is held to it as well" in etree.tostring(issued[kind]["dcc"])
     sheet = issued[kind]["xlsx"]["Statistics"]
     cells = [" ".join(str(c) for c in row if c is not None)
              for row in sheet.iter_rows(values_only=True)]
