@@ -251,7 +251,7 @@ class Workbench(ABC, Generic[ResultT]):
         why = test_report_statement(document)
         if why:
             document = dataclasses.replace(document, statements=(why, *document.statements))
-        scope = scope_statement(document.budget, document.unit)
+        scope = scope_statement(document.budget, document.unit, document.figures_raised_to_cmc)
         if scope:
             document = dataclasses.replace(document, statements=(*document.statements, scope))
         return document

@@ -122,6 +122,10 @@ class CertificateDocument:
     # names): named under the budget, so that U is never read as complete (GUM 7.2.7);
     # by default the decision's (models.certificate.builder.Decision.not_stated)
     not_in_u: tuple[str, ...] = ()
+    # the figures (their keys as the statistics table prints them: "R", "E_up" …) whose
+    # coverage interval was raised to the laboratory's CMC (models.uncertainty.lab_scope
+    # .held_to_cmc): named in its scope statement
+    figures_raised_to_cmc: tuple[str, ...] = ()
 
     @property
     def is_test_report(self) -> bool:

@@ -29,6 +29,7 @@ from models.positioning.report import (
     intervals_withheld,
     positioning_budget,
     positioning_certificate,
+    stated_figure_intervals,
 )
 from models.readings.copied_runs import COPIED_RUN, copied_run
 from models.readings.entry_plan import positioning_plan, targets_from_text
@@ -493,12 +494,15 @@ def figures_json(result: PositioningResult, budget=None) -> dict[str, Any]:
     """The figures as the JSON states them, each {value, interval_low, interval_high,
     coverage_probability}, with the intervals of :func:`figure_uncertainties` for
     ``budget`` (the certificate's, with its reference standards' U; without it the result's
-    own stated inputs) — the same intervals the certificate prints — and the probability
-    of that budget."""
-    intervals = figure_uncertainties(result, budget)
+    own stated inputs) — the same intervals the certificate prints, held to the laboratory's
+    CMC where it is set (each object's ``raised_to_cmc``) — and the probability of that
+    budget."""
+    intervals = (figure_uncertainties(result) if budget is None else
+                 stated_figure_intervals(result, budget))
+    cmc_set = budget is not None and float(budget.floor) > 0
     return {
-        "iso230_2_figures": figure_objects(ISO_KEYS, result.iso.figures, intervals),
-        "vdi3441_figures": figure_objects(VDI_KEYS, result.vdi.as_dict(), intervals),
+        "iso230_2_figures": figure_objects(ISO_KEYS, result.iso.figures, intervals, cmc_set),
+        "vdi3441_figures": figure_objects(VDI_KEYS, result.vdi.as_dict(), intervals, cmc_set),
         "figure_intervals_note": message(FIGURE_VALUE_NOTE),
         "coverage_probability": (DEFAULT_COVERAGE_PROBABILITY if budget is None
                                  else float(budget.probability)),
@@ -702,11 +706,12 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
 
     def printed_rounding(self, result, metadata, settings=None):
         """Each figure's decimal on the certificate: that of its interval with the budget's
-        inputs (the reference standards' U), as models/positioning/report.py prints it."""
+        inputs (the reference standards' U) held to the laboratory's CMC, as
+        models/positioning/report.py prints it."""
         from models.positioning.report import positioning_budget
 
         try:
-            return _decimals(figure_uncertainties(
+            return _decimals(stated_figure_intervals(
                 result, positioning_budget(result, metadata, settings)))
         except (ValueError, ArithmeticError, IndexError):
             return None

@@ -62,12 +62,14 @@ from models.uncertainty.figure_intervals import (
     FigureInterval,
     axis_figures,
     figure_intervals,
+    figures_raised_to_cmc,
+    held_to_cmc_figures,
     readings_seed,
 )
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
-           "intervals_withheld", "readings_step_component",
+           "intervals_withheld", "readings_step_component", "stated_figure_intervals",
            "positioning_budget", "positioning_certificate", "repeated_readings_components"]
 
 METHOD = QT_TR_NOOP(
@@ -307,8 +309,9 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
     """The coverage interval of every ISO 230-2 and VDI/DGQ 3441 figure
     (models.uncertainty.figure_intervals), seeded from the readings; ``budget`` gives the
     Type B inputs (the reference standards, the stated inputs) and the probability; without
-    it, the result's own stated inputs at 95.45 %. Empty when some target was approached
-    fewer than twice in a direction."""
+    it, the result's own stated inputs at 95.45 %. The readings' own intervals, not held to
+    the laboratory's CMC (:func:`stated_figure_intervals`). Empty when some target was
+    approached fewer than twice in a direction."""
     if not intervals_determined(result):
         return {}
     if budget is None:
@@ -332,6 +335,16 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
             # and the certificate's (which unites them with its own)
             cache=result.__dict__.setdefault("_figure_bootstraps", {}))
     return cache[key]
+
+
+def stated_figure_intervals(result: PositioningResult, budget: UncertaintyBudget
+                            ) -> dict[str, FigureInterval]:
+    """The figures' intervals as a certificate, its JSON, exports and DCC state them:
+    :func:`figure_uncertainties` with each half-width held to the laboratory's CMC, the
+    ``budget``'s ``floor`` (the setting *cmc*, in the deviations' unit, which is the figures':
+    µm on a linear axis, arcsec on a rotary one), as the decided quantity's interval is
+    (models.uncertainty.lab_scope.held_to_cmc), each marked with what was raised."""
+    return held_to_cmc_figures(figure_uncertainties(result, budget), float(budget.floor))
 
 
 def _deviation_text(s: float) -> str:
@@ -455,11 +468,13 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                      arrow="↑" if name == "up" else "↓")
              for name, *_ in points for target in result.positions]
     intervals = figure_uncertainties(result, budget)
-    # the half range decided is E/2 with E's own interval: one quantity, one interval
+    # the half range decided is E/2 with E's own interval: one quantity, one interval (the
+    # computed one, held to the CMC once, as the decided quantity, by the conformity)
     decision = Decision(curve, QT_TR_NOOP("mean positional deviation"), names,
                         not_stated(result),
                         estimate=decided_half_range(result, budget, intervals))
-    statistics = Statistics(_figure_rows(result, intervals),
+    stated = stated_figure_intervals(result, budget)
+    statistics = Statistics(_figure_rows(result, stated),
                             QT_TR_NOOP("targets and directions"),
                             title=QT_TR_NOOP("Figures of the axis"),
                             header=(QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"),
@@ -541,6 +556,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         plots=(deviation_figure(result), reversal_figure(result)),
         warnings=result.warnings, unit=sym, statements=statements,
         standard=standard, sign_convention=SIGN_CONVENTION_TEXT,
+        figures_raised_to_cmc=tuple(figures_raised_to_cmc(stated)),
         point_columns=(
             ("target", np.tile(result.positions, len(points))), ("direction", directions),
             (f"mean_deviation_{result.deviation_unit}", curve),

@@ -29,6 +29,12 @@ inputs that are one value at a θ, with the readings without them), fed with:
   The reference reading θ₀ is one value for the run: it moves every error alike and no
   figure (a range, a reversal, a scatter) sees it.
 
+Where the laboratory states its CMC (the setting *cmc_arcsec*, the axis error's, in
+arcsec as the figures), a certificate, its JSON and DCC state the intervals held to it
+(:func:`stated_theodolite_figure_intervals`: each half-width at least the CMC, by the rule
+of the decided quantity's, models.uncertainty.lab_scope.held_to_cmc); the decided half range
+is made from the computed ones and held once.
+
 The probability printed beside a figure is the lower of the one asked for and the one the
 positioning study reached (models.uncertainty.figure_intervals.ACHIEVED); the theodolite's
 own studies (models.theodolite.validation_cases, tests/models/theodolite/
@@ -54,6 +60,7 @@ from models.uncertainty.figure_intervals import (
     FigureInterval,
     figure_intervals,
     figure_objects,
+    held_to_cmc_figures,
 )
 from models.uncertainty.stated_excess import EVIDENCE, excess_over_scatter
 
@@ -61,7 +68,7 @@ __all__ = ["CIRCLE_EVIDENCE", "MODEL_INPUT", "circle_part", "evident_circle_part
            "figure_intervals_withheld",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
            "pointing_per_reading",
-           "pooled_repeats", "readings_coarse",
+           "pooled_repeats", "readings_coarse", "stated_theodolite_figure_intervals",
            "theodolite_figure_intervals", "theodolite_figures_json"]
 
 # the budget's name of the set-up model's error, in models.theodolite.model (light: a plain
@@ -255,22 +262,35 @@ def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBud
     return cache[key]
 
 
+def stated_theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBudget,
+                                       stated_u: float = 0.0, pair_factor: float = 2.0
+                                       ) -> dict[str, FigureInterval]:
+    """The intervals of :func:`theodolite_figure_intervals` as a certificate, its JSON and
+    DCC state them: each half-width held to the laboratory's CMC, the ``budget``'s
+    ``floor`` (the setting *cmc_arcsec*, in arcsec as the figures), each marked with what
+    was raised (models.uncertainty.figure_intervals.held_to_cmc_figures)."""
+    return held_to_cmc_figures(theodolite_figure_intervals(result, budget, stated_u,
+                                                           pair_factor), float(budget.floor))
+
+
 def theodolite_figures_json(result: TheodoliteResult, budget: UncertaintyBudget,
                             stated_u: float = 0.0, pair_factor: float = 2.0) -> dict[str, Any]:
     """The ISO 230-2 figures as the JSON states them, each {value, interval_low,
     interval_high, coverage_probability}, beside ``iso230_arcsec`` (whose plain values keep
     their meaning), and why there are no intervals; {} for a run with no figures
-    (``stated_u``, ``pair_factor``: as :func:`theodolite_figure_intervals`)."""
+    (``stated_u``, ``pair_factor``: as :func:`theodolite_figure_intervals`). With the
+    laboratory's CMC set (the ``budget``'s floor) the intervals are held to it, and each
+    object says which half-width was raised (``raised_to_cmc``)."""
     if result.iso230 is None:
         return {}
-    intervals = theodolite_figure_intervals(result, budget, stated_u, pair_factor)
+    intervals = stated_theodolite_figure_intervals(result, budget, stated_u, pair_factor)
     # every figure of the directions measured, null where the standard does not evaluate it
     # (A and R of a θ read once), so that the keys do not depend on the readings
     present = [name for name, _ in _directions(result)]
     keys = [f"{f}_{name}" for name in present for f in ("E", "R", "A")]
     if len(present) == 2:
         keys += ["E", "M", "B", "B_mean", "R", "A"]
-    out = figure_objects(keys, result.iso230.figures, intervals)
+    out = figure_objects(keys, result.iso230.figures, intervals, float(budget.floor) > 0)
     withheld = figure_intervals_withheld(result)
     return {"iso230_2_figures": out,
             "iso230_2_figures_reason": None if withheld is None else message(withheld),

@@ -353,15 +353,19 @@ def theodolite_json_budgets(result: TheodoliteResult, metadata: CertificateMetad
 
 def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
                  metadata: CertificateMetadata) -> list[tuple[str, str, str]]:
-    """The ISO 230-2 figures of a run with passes, each with its coverage interval and the
-    probability it reached (models.theodolite.figures), or why it has none."""
-    from models.theodolite.figures import figure_intervals_withheld, theodolite_figure_intervals
+    """The ISO 230-2 figures of a run with passes, each with its coverage interval (held to
+    the laboratory's CMC, the ``budget``'s floor) and the probability it reached
+    (models.theodolite.figures), or why it has none."""
+    from models.theodolite.figures import (
+        figure_intervals_withheld,
+        stated_theodolite_figure_intervals,
+    )
 
     if result.iso230 is None:
         return []
-    intervals = theodolite_figure_intervals(result, budget,
-                                            stated_reading_uncertainty(metadata)[0],
-                                            stated_pair_factor(metadata))
+    intervals = stated_theodolite_figure_intervals(result, budget,
+                                                   stated_reading_uncertainty(metadata)[0],
+                                                   stated_pair_factor(metadata))
     withheld = figure_intervals_withheld(result)
     rows = []
     for key, v in result.iso230.figures.items():
@@ -379,6 +383,19 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
             low=f"{iv.low:.{d}f}\"", high=f"{iv.high:.{d}f}\"",
             p=f"{100 * iv.probability:.2f}")))
     return rows
+
+
+def _iso230_raised_to_cmc(result: TheodoliteResult, budget: UncertaintyBudget,
+                          metadata: CertificateMetadata) -> tuple[str, ...]:
+    """The ISO 230-2 figures (keys, as the statistics print them) whose interval
+    :func:`_iso230_rows` states raised to the laboratory's CMC."""
+    from models.theodolite.figures import stated_theodolite_figure_intervals
+    from models.uncertainty.figure_intervals import figures_raised_to_cmc
+
+    if result.iso230 is None or not budget.floor > 0:
+        return ()
+    return tuple(figures_raised_to_cmc(stated_theodolite_figure_intervals(
+        result, budget, stated_reading_uncertainty(metadata)[0], stated_pair_factor(metadata))))
 
 
 #: how the ISO 230-2 figures of a run with passes get their intervals
@@ -508,6 +525,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
                             row=result.reference_index + 1,
                             theta=f"{result.reference_theta_deg:g}°"), SETUP_DEFINITIONS,
                     *_passes_statements(result, metadata)),
+        figures_raised_to_cmc=_iso230_raised_to_cmc(result, budget, metadata),
         point_columns=(("theta_deg", result.theta_deg), ("raw_error_arcsec", result.raw_error_arcsec),
          ("correction_arcsec", correction), ("corrected_error_arcsec", result.corrected_error_arcsec),
          ("expanded_uncertainty_arcsec", big_u)))

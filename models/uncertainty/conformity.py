@@ -39,6 +39,7 @@ import numpy as np
 from models.messages import QT_TR_NOOP, listed, message, separated
 from models.quantity import Quantity
 from models.uncertainty.budget import UncertaintyBudget
+from models.uncertainty.lab_scope import held_to_cmc
 from models.uncertainty.rounding import (
     interval_decimals,
     significant_decimals,
@@ -884,26 +885,18 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
 def _held_to_cmc(mc: HalfRangeEstimate, cmc: float) -> tuple[HalfRangeEstimate,
                                                              tuple[bool, bool] | None]:
     """The decided half range's interval with each half-width raised to the laboratory's CMC
-    (the budget's ``floor``; ILAC-P14 5.4: no U stated below it), and whether each was:
-    (lower, upper); None when no CMC is set or the interval is not determined.
-
-    The CMC is stated for the error at a point; the half range is the error at the curve's
-    two extreme points about their mid-value, (e_max − e_min)/2. Were the two points' errors
-    independent, its U would be √2 smaller than theirs; but a CMC states only the smallest U
-    the laboratory claims, not how its inputs correlate from point to point (a systematic
-    part moves both extremes alike, a part that differs moves them apart), so nothing below
-    the CMC itself can be claimed for it. The floor is applied to both half-widths (U₊
-    guards a pass, U₋ a fail); the value is not moved, and the interval's lower end stays
-    at 0 at the lowest (a half range is not negative)."""
+    (the budget's ``floor``) by the rule of every interval stated beside a CMC
+    (:func:`models.uncertainty.lab_scope.held_to_cmc`, which says why a point's CMC holds a
+    half range), and whether each was: (lower, upper); None when no CMC is set or the
+    interval is not determined. The interval's lower end stays at 0 at the lowest
+    (:attr:`Conformity.interval_low`, :func:`printed_interval`: a half range is not
+    negative)."""
     import dataclasses
 
-    upper, lower = float(mc.u_upper), float(mc.u_lower)
-    if not (cmc > 0 and math.isfinite(upper) and math.isfinite(lower)):
-        return mc, None
-    raised = (lower < cmc, upper < cmc)
-    if not any(raised):
-        return mc, raised
-    return dataclasses.replace(mc, u_upper=max(upper, cmc), u_lower=max(lower, cmc)), raised
+    held = held_to_cmc(mc.value, mc.u_lower, mc.u_upper, cmc)
+    if held.raised is None or not any(held.raised):
+        return mc, held.raised
+    return dataclasses.replace(mc, u_upper=held.plus, u_lower=held.minus), held.raised
 
 
 def printed_interval(value: float, lower: float, upper: float, d: int) -> tuple[float, float]:

@@ -54,6 +54,11 @@ The coverage reached is measured by the study in ``anglebench validate`` and the
 benchmark (tests/benchmarks/test_positioning_figures.py); where it is below the
 probability asked for, the probability stated beside a figure is the one reached
 (:data:`ACHIEVED`), never the one asked for.
+
+Where the laboratory states a CMC for the workbench's quantity, a certificate's intervals
+are held to it (:func:`held_to_cmc_figures`, by the rule of the decided quantity's:
+models.uncertainty.lab_scope.held_to_cmc, which says why a point's CMC holds a range or a
+scatter of points): the intervals computed here are the readings' own, the window's.
 """
 
 from __future__ import annotations
@@ -68,10 +73,11 @@ import numpy as np
 from scipy.special import ndtr, ndtri, polygamma, stdtrit
 
 from models.messages import QT_TR_NOOP
+from models.uncertainty.lab_scope import held_to_cmc
 
 __all__ = ["ACHIEVED", "FIGURE_VALUE_NOTE", "FigureInterval", "INTERVAL_TRIALS",
-           "SIGNED_FIGURES", "axis_figures", "figure_intervals", "figure_objects", "readings_seed",
-           "world_truth"]
+           "SIGNED_FIGURES", "axis_figures", "figure_intervals", "figure_objects",
+           "figures_raised_to_cmc", "held_to_cmc_figures", "readings_seed", "world_truth"]
 
 #: bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability)
 INTERVAL_TRIALS = 2000
@@ -115,12 +121,15 @@ FIGURE_VALUE_NOTE = QT_TR_NOOP(
 
 @dataclass(frozen=True)
 class FigureInterval:
-    """A figure, its coverage interval and the probability that interval covers."""
+    """A figure, its coverage interval and the probability that interval covers;
+    ``raised_to_cmc``: whether the interval's (lower, upper) half-width was raised to the
+    laboratory's CMC (:func:`held_to_cmc_figures`), None where no CMC holds it."""
 
     value: float
     low: float
     high: float
     probability: float
+    raised_to_cmc: tuple[bool, bool] | None = None
 
     def as_dict(self) -> dict[str, float]:
         return {"value": self.value, "interval_low": self.low, "interval_high": self.high,
@@ -135,11 +144,47 @@ class FigureInterval:
         return max(self.high - self.value, 0.0)
 
 
-def figure_objects(keys, values: Mapping[str, Any], intervals: Mapping[str, FigureInterval]
-                   ) -> dict[str, Any]:
-    """{figure: {value, interval_low, interval_high, coverage_probability}}; nulls where the
-    readings do not determine it."""
+def held_to_cmc_figures(intervals: Mapping[str, FigureInterval], cmc: float
+                        ) -> dict[str, FigureInterval]:
+    """``intervals`` with each half-width held to at least the laboratory's CMC ``cmc`` (in
+    the figures' unit; ILAC-P14 5.4), by the rule of the decided quantity's interval
+    (models.uncertainty.lab_scope.held_to_cmc: the value not moved, the lower end of a
+    figure that cannot be negative not below 0, the probability kept, as the interval only
+    grew), each marked with which half-width was raised; an end not raised is kept as it
+    was. No CMC (0): the intervals as they are, unmarked."""
+    if not cmc > 0:
+        return dict(intervals)
     out = {}
+    for key, interval in intervals.items():
+        held = held_to_cmc(interval.value, interval.value - interval.low,
+                           interval.high - interval.value, cmc,
+                           non_negative=key not in SIGNED_FIGURES)
+        if held.raised is None:
+            out[key] = interval
+            continue
+        before = interval.raised_to_cmc or (False, False)
+        raised = (held.raised[0] or before[0], held.raised[1] or before[1])
+        out[key] = FigureInterval(interval.value,
+                                  float(held.low) if held.raised[0] else interval.low,
+                                  float(held.high) if held.raised[1] else interval.high,
+                                  interval.probability, raised)
+    return out
+
+
+def figures_raised_to_cmc(intervals: Mapping[str, FigureInterval]) -> list[str]:
+    """The keys of the figures whose interval was raised to the CMC on either side."""
+    return [key for key, interval in intervals.items()
+            if interval.raised_to_cmc is not None and any(interval.raised_to_cmc)]
+
+
+def figure_objects(keys, values: Mapping[str, Any], intervals: Mapping[str, FigureInterval],
+                   cmc_set: bool = False) -> dict[str, Any]:
+    """{figure: {value, interval_low, interval_high, coverage_probability}}; nulls where the
+    readings do not determine it. With ``cmc_set`` (the laboratory's CMC holds the
+    intervals: :func:`held_to_cmc_figures`) also ``raised_to_cmc``: {low, high}, whether each
+    half-width is the CMC because the readings gave less, as the decided quantity's (null
+    where the figure has no interval)."""
+    out: dict[str, dict[str, Any]] = {}
     for key in keys:
         value = values.get(key)
         value = None if value is None or not math.isfinite(value) else float(value)
@@ -148,6 +193,10 @@ def figure_objects(keys, values: Mapping[str, Any], intervals: Mapping[str, Figu
                     "interval_low": None if interval is None else interval.low,
                     "interval_high": None if interval is None else interval.high,
                     "coverage_probability": None if interval is None else interval.probability}
+        if cmc_set:
+            raised = None if interval is None else interval.raised_to_cmc or (False, False)
+            out[key]["raised_to_cmc"] = (None if raised is None else
+                                         {"low": bool(raised[0]), "high": bool(raised[1])})
     return out
 
 

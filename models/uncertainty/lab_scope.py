@@ -5,26 +5,31 @@ A laboratory states on a certificate no U below its calibration and measurement 
 shows what these readings alone support, not what the laboratory can claim. Each workbench
 declares the CMC as a setting per quantity (0: none stated, and then nothing is said); the
 budget applies it (:attr:`UncertaintyBudget.floor`) to every point's U, the decided
-quantity's interval is held to it (models.uncertainty.conformity), and the certificate
-names it with the points whose U was raised to it. Such a result is within the scope, its
+quantity's interval (models.uncertainty.conformity) and the coverage intervals of the ISO
+230-2 / VDI/DGQ 3441 figures (models.uncertainty.figure_intervals) are held to it by one
+rule (:func:`held_to_cmc`), and the certificate names it with the points whose U and the
+figures whose interval were raised to it. Such a result is within the scope, its
 U stated as the CMC (ILAC-P14 5.4): "outside the scope" is reserved for what truly is (a
 range the scope does not cover), which a CMC alone does not say.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, listed, message, separated
 from models.parameters import Parameter
 
 if TYPE_CHECKING:  # a budget's module is loaded by whoever makes one (not a plain analyze)
     from models.uncertainty.budget import UncertaintyBudget
 
-__all__ = ["cmc_of", "cmc_parameter", "cmc_quantity", "scope_statement"]
+__all__ = ["HeldToCmc", "cmc_of", "cmc_parameter", "cmc_quantity", "held_to_cmc",
+           "scope_statement"]
 
 
 #: each setting made by cmc_parameter → what it is the CMC of (the JSON's laboratory_cmc)
@@ -60,22 +65,84 @@ def cmc_of(settings: Mapping[str, Any] | None, key: str) -> float:
     return float((settings or {}).get(key, 0.0) or 0.0)
 
 
-def scope_statement(budget: UncertaintyBudget, unit: str = "\"") -> str:
-    """The certificate's statement of the laboratory's CMC and the points outside its scope
+@dataclass(frozen=True)
+class HeldToCmc:
+    """An interval about ``value`` whose half-widths (``minus`` below the value, ``plus``
+    above it) are held to the laboratory's CMC (:func:`held_to_cmc`); ``raised``: whether
+    each (minus, plus) was below it and is now the CMC; None when no CMC is set or the
+    interval is not determined (then nothing was changed)."""
+
+    value: float
+    minus: float
+    plus: float
+    raised: tuple[bool, bool] | None
+    non_negative: bool = True
+
+    @property
+    def low(self) -> float:
+        """The interval's lower end, value − minus; never below 0 for a quantity that cannot
+        be negative (the coverage is not lowered by it)."""
+        low = self.value - self.minus
+        return max(low, 0.0) if self.non_negative else low
+
+    @property
+    def high(self) -> float:
+        return self.value + self.plus
+
+
+def held_to_cmc(value: float, minus: float, plus: float, cmc: float, *,
+                non_negative: bool = True) -> HeldToCmc:
+    """The interval value − ``minus`` … value + ``plus`` with each half-width raised to the
+    laboratory's CMC ``cmc`` (ILAC-P14:09/2020 5.4: no U stated below it), and whether each
+    was: the one rule for every interval a certificate states beside a CMC — the decided
+    quantity's (a half range: models.uncertainty.conformity) and every ISO 230-2 / VDI/DGQ
+    3441 figure's (E, M, B, B̄, R, A, P …: models.uncertainty.figure_intervals).
+
+    The CMC is stated for the error at a point. The half range is the error at the curve's
+    two extreme points about their mid-value, (e_max − e_min)/2; a figure is a range of
+    points' errors (E, M, A, P), a largest one (B, U), a mean (B̄) or a scatter of readings
+    at a point (R, Ps). Were the points' errors independent, a range's U would be √2 larger
+    than theirs and a mean's smaller; but a CMC states only the smallest U the laboratory
+    claims, not how its inputs correlate from point to point (a systematic part moves both
+    extremes alike, a part that differs moves them apart) nor how they enter a scatter, so
+    nothing below the CMC itself can be claimed for any of them, and nothing above it is
+    implied: the interval computed stands where it is wider. Each half-width is held (the
+    lower guards a fail, the upper a pass); the value is not moved (an interval wholly below
+    a biased value keeps it inside: its upper half-width, negative, becomes the CMC), and a
+    quantity that cannot be negative (``non_negative``) has its lower end at 0 at the
+    lowest. The probability stated beside the interval is kept: the interval only grew, so
+    it covers at least as often. Never narrows; applied again, changes nothing."""
+    value, minus, plus, cmc = float(value), float(minus), float(plus), float(cmc)
+    if not (cmc > 0 and math.isfinite(cmc) and math.isfinite(value) and math.isfinite(minus)
+            and math.isfinite(plus)):
+        return HeldToCmc(value, minus, plus, None, non_negative)
+    raised = (minus < cmc, plus < cmc)
+    return HeldToCmc(value, max(minus, cmc), max(plus, cmc), raised, non_negative)
+
+
+def scope_statement(budget: UncertaintyBudget, unit: str = "\"",
+                    figures: Sequence[str] = ()) -> Any:
+    """The certificate's statement of the laboratory's CMC, the points outside its scope and
+    the ``figures`` (their names as printed) whose coverage interval was raised to it
     ("" when no CMC is stated)."""
     if not budget.floor > 0 or not budget.points:
         return ""
     below = budget.below_floor
     cmc = f"{budget.floor:g}{unit}"
+    held = "" if not figures else message(QT_TR_NOOP(
+        "The coverage interval of {figures} is held to it as well: each half-width these "
+        "readings give below the CMC is stated as the CMC about the figure's value (the lower "
+        "end not below 0 where the figure cannot be negative), with the probability printed "
+        "beside it, which the wider interval covers at least."), figures=listed(figures))
     if not np.any(below):
-        return message(QT_TR_NOOP(
+        return separated([message(QT_TR_NOOP(
             "The laboratory's calibration and measurement capability (CMC) for this quantity is "
-            "U = {cmc}; every U stated here is at or above it."), cmc=cmc)
+            "U = {cmc}; every U stated here is at or above it."), cmc=cmc), held], " ")
     lowest = float(np.min(budget.computed_expanded[below]))
-    return message(QT_TR_NOOP(
+    return separated([message(QT_TR_NOOP(
         "The laboratory's calibration and measurement capability (CMC) for this quantity is "
         "U = {cmc}. At {count} of the {points} points the U these readings give (down to "
         "{lowest}) is below it, so their U is stated as the CMC, with the same coverage factor "
         "k (ILAC-P14 5.4); there U/k is the CMC's standard uncertainty, not the budget's u_c."),
         cmc=cmc, count=int(np.count_nonzero(below)), points=budget.points,
-        lowest=f"{lowest:.2g}{unit}")
+        lowest=f"{lowest:.2g}{unit}"), held], " ")
