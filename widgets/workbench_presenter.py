@@ -16,7 +16,7 @@ from PySide6.QtGui import QUndoStack
 
 from models.cancellation import AnalysisCancelled, cancellable, checkpoint
 from models.capture.take_cells import waiting_row
-from models.certificate.readings_origin import ImportedFrom, imported_source
+from models.certificate.readings_origin import ImportedFrom, sheet_source
 from models.display_units import (
     ANGLE_UNITS,
     AngleUnit,
@@ -649,9 +649,10 @@ class WorkbenchPresenter(QObject):
 
     def readings_source(self) -> str | None:
         """Where the sheet's readings came from when it is a file imported (or the bundled
-        sample), as a certificate says it (None: typed, or the project's): day review 65 F4."""
-        origin, edited = self.table_model.readings_origin()
-        return None if origin is None else imported_source(origin, edited)
+        sample: day review 65 F4), pasted, or sent from another workbench, with the rows
+        pasted since (day review 66), as a certificate says it (None: typed, or the
+        project's)."""
+        return sheet_source(*self.table_model.readings_origin())
 
     def import_file(self, path: str | Path, sample: bool = False) -> None:
         """Replace the readings with a CSV/XLSX file's (undoable). Raises TableImportError.
