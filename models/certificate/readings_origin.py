@@ -89,8 +89,12 @@ def _replaced_source(origin: SheetOrigin, edited: bool) -> str:
     else:
         source = message(QT_TR_NOOP("sent from the {workbench} workbench"),
                          workbench=message(origin.workbench))
-    return message(QT_TR_NOOP("{source}, then edited in AngleBench"), source=source) \
-        if edited else source
+    return _edited(source) if edited else source
+
+
+def _edited(source: str) -> str:
+    """``source``, changed in the window since (other than by a paste)."""
+    return message(QT_TR_NOOP("{source}, then edited in AngleBench"), source=source)
 
 
 def sheet_source(origin: SheetOrigin | None, edited: bool, pasted: Sequence[int],
@@ -108,8 +112,7 @@ def sheet_source(origin: SheetOrigin | None, edited: bool, pasted: Sequence[int]
         said = message(QT_TR_NOOP("readings typed in AngleBench, except rows {rows} ({pasted} "
                                   "of {count}), pasted"),
                        rows=row_spans(pasted), pasted=len(pasted), count=row_count)
-        return message(QT_TR_NOOP("{source}, then edited in AngleBench"), source=said) \
-            if edited else said
+        return _edited(said) if edited else said
     source = _replaced_source(origin, edited)
     if not pasted or (isinstance(origin, PastedIn)):
         return source
