@@ -29,6 +29,7 @@ from PySide6.QtWidgets import (
 )
 
 from app.certificate_dialogs import CertificateDialogs
+from app.certificate_issue import readings_stated
 from app.certificate_presenter import CertificatePresenter
 from app.main_menus import MainMenus
 from app.project_dialogs import ProjectDialogs
@@ -40,7 +41,7 @@ from app.reference_sender import (
 )
 from app.run_overlay_actions import RunOverlayActions
 from models import __version__
-from models.certificate.readings_origin import TYPED
+from models.certificate.readings_origin import TYPED, SentFrom
 from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.recovery import RecoveryStore
 from models.readings.tabular_import import TableImportError
@@ -458,7 +459,12 @@ class MainWindow(QMainWindow):
             self.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {problem}.")
             return False
         rows = source.kind.run_rows(source.result)
-        target.table_model.replace_all(rows, f"From {source.kind.title}", checked=True)
+        # the positioning certificate says where these readings came from: the sending
+        # workbench and its own "Readings:" line (day review 66: "readings typed in
+        # AngleBench" was said of them)
+        sent = SentFrom(source.kind.title, self._readings_line(source))
+        target.table_model.replace_all(rows, f"From {source.kind.title}", checked=True,
+                                       origin=sent)
         target.set_settings(target.kind.settings_for_runs(target.settings))
         target.refresh()
         self.tabs.setCurrentIndex(self.presenters.index(target))
@@ -509,15 +515,24 @@ class MainWindow(QMainWindow):
         self.tell(tr("Not exported yet"), text)
         return False
 
-    def _source_name(self) -> str:
-        """The certificate's source of the readings in front: the project's file; else the
-        file they were imported from or the bundled sample (day review 65 F4: "readings
-        typed in AngleBench" was said of them); else, a certificate's project from the
-        register, its readings' source as it named it; else typed."""
+    def _source_name(self, presenter=None) -> str:
+        """The certificate's source of the readings of ``presenter`` (the one in front when
+        None): the project's file; else the file they were imported from or the bundled
+        sample (day review 65 F4: "readings typed in AngleBench" was said of them), pasted
+        or sent from another workbench, and the rows pasted (day review 66); else, a
+        certificate's project from the register, its readings' source as it named it;
+        else typed."""
         if self.projects.path:
             return self.projects.path.name
-        return (self.current.readings_source() or self.projects.readings_source
+        return ((presenter or self.current).readings_source() or self.projects.readings_source
                 or TYPED)
+
+    def _readings_line(self, presenter) -> str:
+        """The "Readings:" line a certificate of ``presenter``'s analysed readings would
+        print: their source and the rows captured from the instruments."""
+        key = presenter.kind.key
+        return readings_stated(key, self._source_name(presenter), presenter.result_state().rows,
+                               self.capture_panel.raw_sessions(key))[0]
 
     def _source_shown(self) -> str:
         """:meth:`_source_name` in the window's language."""

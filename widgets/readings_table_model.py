@@ -8,7 +8,7 @@ from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelInd
 from PySide6.QtGui import QBrush, QColor, QUndoCommand, QUndoStack
 
 from models.capture.take_cells import waiting_row
-from models.certificate.readings_origin import ImportedFrom
+from models.certificate.readings_origin import SheetOrigin
 from models.readings.sheet import NumericRows, ReadingsSheet
 from widgets.i18n import declared, on_language_change, tr, translated
 from widgets.table_commands import (
@@ -57,10 +57,11 @@ class ReadingsTableModel(QAbstractTableModel):
         #: changed (review 61 F5: a row deleted above captured readings made them all look
         #: edited, with other rows' values, on the certificate)
         self.take_rows = None
-        #: the file the rows were imported from (models/certificate/readings_origin
-        #: .ImportedFrom; None: typed, or a project's), set and put back by the import's
-        #: undo step (:attr:`origin_step`, None: at the bottom of the undo history)
-        self.origin: ImportedFrom | None = None
+        #: where the rows came from when one step replaced them all (models/certificate/
+        #: readings_origin.SheetOrigin: a file imported, a paste, another workbench's; None:
+        #: typed, or a project's), set and put back by that undo step (:attr:`origin_step`,
+        #: None: at the bottom of the undo history)
+        self.origin: SheetOrigin | None = None
         self.origin_step: QUndoCommand | None = None
         #: why a cell's text cannot be read, by (column, text): a column's parse depends on
         #: the text alone, and every paint asks it of every visible cell
@@ -238,14 +239,16 @@ class ReadingsTableModel(QAbstractTableModel):
         return True
 
     def set_cells(self, changes: list[tuple[int, int, str]], label: str = "",
-                  takes: list | None = None, columns: dict | None = None) -> None:
+                  takes: list | None = None, columns: dict | None = None,
+                  pasted: bool = False) -> None:
         """``takes``: ``(key, row)`` of a capture's takes whose reading these cells are: undone
         and redone with them (widgets/table_commands.SetCellsCommand); ``columns``: the
-        keys of the columns each wrote, by its key."""
+        keys of the columns each wrote, by its key; ``pasted``: the cells were pasted from
+        the clipboard (:meth:`readings_origin`)."""
         changes = [(r, c, t) for r, c, t in changes if 0 <= c < self.sheet.column_count]
         if changes:
             self.undo_stack.push(SetCellsCommand(self, changes, label or tr("Edit cells"),
-                                                 takes, columns))
+                                                 takes, columns, pasted))
 
     def insert_rows(self, at: int, count: int = 1) -> None:
         at = max(0, min(at, self.sheet.row_count))
@@ -265,16 +268,44 @@ class ReadingsTableModel(QAbstractTableModel):
         self.undo_stack.push(RemoveRowsCommand(self, blocks, tr("Delete {rows} row(s)").format(
             rows=len(rows))))
 
-    def readings_origin(self) -> tuple[ImportedFrom | None, bool]:
-        """The file the rows were imported from (None: none) and whether they were edited
-        since: a step that changed rows is done above the import's in the undo history
-        (a change of settings is none; a step undone is none)."""
-        if self.origin is None:
-            return None, False
+    def readings_origin(self) -> tuple[SheetOrigin | None, bool, list[int], int]:
+        """Where the rows came from (models/certificate/readings_origin.sheet_source's
+        arguments): the step that replaced them all (None: none, or with no source), whether
+        they were edited since other than by a paste (a step done above it in the undo
+        history that changed rows: a change of settings is none, a step undone is none;
+        with no source, only a change of a pasted row), the filled rows pasted since (as
+        they are numbered now), and the filled rows' count. Day review 66: pasted rows were
+        "readings typed in AngleBench"."""
         stack = self.undo_stack
         done = [stack.command(i) for i in range(stack.index())]
         start = next((i + 1 for i, step in enumerate(done) if step is self.origin_step), 0)
-        return self.origin, any(not isinstance(step, SettingsCommand) for step in done[start:])
+        edited = False
+        pasted: set[int] = set()
+        for step in done[start:]:
+            commands = [step.child(i) for i in range(step.childCount())] or [step]
+            paste = any(getattr(command, "pasted", False) for command in commands)
+            for command in commands:
+                if isinstance(command, SettingsCommand):
+                    continue
+                if isinstance(command, SetCellsCommand):
+                    rows = command.rows()
+                    if paste:  # the plan's cells of the pasted rows are in the paste's step
+                        pasted |= rows
+                        continue
+                    changed = self.origin is not None or bool(rows & pasted)
+                elif isinstance(command, InsertRowsCommand):
+                    pasted = {r + command.count if r >= command.at else r for r in pasted}
+                    changed = self.origin is not None
+                elif isinstance(command, RemoveRowsCommand):
+                    gone = sorted(command.removed_rows)
+                    pasted = {r - sum(1 for g in gone if g < r) for r in pasted
+                              if r not in command.removed_rows}
+                    changed = self.origin is not None or bool(pasted & set(gone))
+                else:
+                    changed = self.origin is not None
+                edited = edited or changed
+        filled = [r for r in range(self.sheet.row_count) if not self.sheet.is_blank_row(r)]
+        return self.origin, edited, sorted(set(filled) & pasted), len(filled)
 
     def forget_origin(self) -> None:
         """The rows are another's now (a project was opened): no import's."""
@@ -282,12 +313,13 @@ class ReadingsTableModel(QAbstractTableModel):
 
     def replace_all(self, rows: list[list[str]], label: str = "",
                     checked: bool = False, replaces: str = "",
-                    origin: ImportedFrom | None = None) -> None:
+                    origin: SheetOrigin | None = None) -> None:
         """Replace every row (one undo step); ``checked``: rows already fit the columns;
         ``replaces``: the instrument whose earlier takes the rows replace, in the same step
         (the fringe's live take: widgets/table_commands.py ReplaceAllCommand). What is being
         typed in a cell is entered before, as its own step (:attr:`replacing`). ``origin``:
-        the file the rows come from (None: not a file; :meth:`readings_origin`)."""
+        where the rows come from (a file, a paste, another workbench; None: typed or taken
+        in the window; :meth:`readings_origin`)."""
         label = label or tr("Replace readings")
         self.replacing.emit(label)
         self.undo_stack.push(ReplaceAllCommand(self, rows, label, checked, replaces, origin))

@@ -15,6 +15,7 @@ from PySide6.QtWidgets import (
     QTableView,
 )
 
+from models.certificate.readings_origin import PastedIn
 from models.readings.paste import plan_paste
 from models.readings.tabular_import import RawTable, split_pasted_text
 from widgets.i18n import live, tr
@@ -356,7 +357,7 @@ class ReadingsTableView(QTableView):
             if self.own_layout is not None and len(grid) > 1 else None
         if own:
             model.replace_all(own, tr("Paste {rows} row(s), replacing the sheet").format(
-                rows=len(own)), checked=True)
+                rows=len(own)), checked=True, origin=PastedIn())
             return "replace"
         sheet = model.sheet
         filled = sum(1 for r in range(sheet.row_count) if any(
@@ -379,7 +380,7 @@ class ReadingsTableView(QTableView):
         columns_said = self._columns_said(plan, choice == "replace")
         if choice == "replace":
             model.replace_all(full, tr("{paste}, replacing the sheet").format(paste=label),
-                              checked=True)
+                              checked=True, origin=PastedIn())
             if columns_said:
                 self._say_after(columns_said)
             return "replace"
@@ -388,11 +389,11 @@ class ReadingsTableView(QTableView):
         pasted = self.plan_paste(top, len(plan.rows)) if self.plan_paste is not None else None
         planned = ""
         if pasted is None:
-            model.set_cells(changes, label)
+            model.set_cells(changes, label, pasted=True)
         else:  # the paste and the plan's cells of its rows: one undo step
             model.undo_stack.beginMacro(label)
             try:
-                model.set_cells(changes, label)
+                model.set_cells(changes, label, pasted=True)
                 planned = pasted()
             finally:
                 model.undo_stack.endMacro()

@@ -25,15 +25,23 @@ class SetCellsCommand(QUndoCommand):
     take's reading edited until the next change)."""
 
     def __init__(self, model, changes: list[tuple[int, int, str]], label: str,
-                 takes: list | None = None, columns: dict | None = None) -> None:
+                 takes: list | None = None, columns: dict | None = None,
+                 pasted: bool = False) -> None:
         super().__init__(label)
         self._model = model
         self._changes = changes
+        #: the cells were pasted from the clipboard (not typed): what the certificate's
+        #: "Readings:" says of their rows (models/certificate/readings_origin.sheet_source)
+        self.pasted = pasted
         self._takes = list(takes or [])
         #: the keys of the columns each take wrote, by its key (what it supersedes)
         self._columns = dict(columns or {})
         self._old_rows = model.sheet.row_count
         self._old: list[tuple[int, int, str]] = []
+
+    def rows(self) -> set[int]:
+        """The rows whose cells this step sets (their numbers when it was done)."""
+        return {r for r, _, _ in self._changes}
 
     def redo(self) -> None:
         self._old = [(r, c, self._model.sheet.text(r, c) if r < self._model.sheet.row_count else "")
@@ -53,6 +61,9 @@ class InsertRowsCommand(QUndoCommand):
     def __init__(self, model, at: int, rows: list[list[str]], label: str = "") -> None:
         super().__init__(label or tr("Insert rows"))
         self._model, self._at, self._rows = model, at, rows
+        #: where the rows go and how many: what moves the rows below (read by the model's
+        #: readings_origin)
+        self.at, self.count = at, len(rows)
         self._detached: list = []  # takes made into the rows, detached by the undo
 
     def redo(self) -> None:
@@ -75,6 +86,9 @@ class RemoveRowsCommand(QUndoCommand):
     def __init__(self, model, blocks: list[tuple[int, int]], label: str = "") -> None:
         super().__init__(label or tr("Delete rows"))
         self._model, self._blocks = model, blocks
+        #: the rows removed (0-based, before the removal): what moves the rows below
+        self.removed_rows = frozenset(r for start, count in blocks
+                                      for r in range(start, start + count))
         #: per block, bottom first: its start, its rows and the takes detached with them
         self._removed: list[tuple[int, list[list[str]], list]] = []
 
@@ -109,8 +123,9 @@ class ReplaceAllCommand(QUndoCommand):
         super().__init__(label)
         self._model, self._new, self._checked = model, rows, checked
         self._replaces = replaces
-        #: where the new rows came from (models/certificate/readings_origin.ImportedFrom;
-        #: None: typed, pasted or taken in the window), the model's while this step is
+        #: where the new rows came from (models/certificate/readings_origin.SheetOrigin:
+        #: a file, a paste, another workbench; None: typed or taken in the window), the
+        #: model's while this step is
         #: done; the undo puts back the earlier rows' origin with them (day review 65 F4)
         self._origin = origin
         self._old_origin: tuple = (None, None)

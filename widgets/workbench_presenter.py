@@ -16,7 +16,7 @@ from PySide6.QtGui import QUndoStack
 
 from models.cancellation import AnalysisCancelled, cancellable, checkpoint
 from models.capture.take_cells import waiting_row
-from models.certificate.readings_origin import ImportedFrom, imported_source
+from models.certificate.readings_origin import ImportedFrom, sheet_source
 from models.display_units import (
     ANGLE_UNITS,
     AngleUnit,
@@ -649,9 +649,10 @@ class WorkbenchPresenter(QObject):
 
     def readings_source(self) -> str | None:
         """Where the sheet's readings came from when it is a file imported (or the bundled
-        sample), as a certificate says it (None: typed, or the project's): day review 65 F4."""
-        origin, edited = self.table_model.readings_origin()
-        return None if origin is None else imported_source(origin, edited)
+        sample: day review 65 F4), pasted, or sent from another workbench, with the rows
+        pasted since (day review 66), as a certificate says it (None: typed, or the
+        project's)."""
+        return sheet_source(*self.table_model.readings_origin())
 
     def import_file(self, path: str | Path, sample: bool = False) -> None:
         """Replace the readings with a CSV/XLSX file's (undoable). Raises TableImportError.
@@ -812,6 +813,11 @@ class WorkbenchPresenter(QObject):
         if place is None:
             if changes:
                 self.table_model.set_cells(changes, tr("Entry plan"))
+            if blank_before and 0 <= row < len(rows) and \
+                    any(rows[row].get(k, "").strip() for k in reading):
+                beyond = self.after_plan_end(row)
+                if beyond:
+                    self._say(beyond)
             return None
         if place.row >= len(rows):
             rows.append({k: "" for k in keys})
@@ -821,6 +827,26 @@ class WorkbenchPresenter(QObject):
             self.table_model.set_cells(changes, tr("Entry plan: {point}").format(
                 point=translated(place.point.label)))
         return place.row
+
+    def after_plan_end(self, row: int) -> str:
+        """What to say of a reading taken into ``row`` (typed into a new row, or captured)
+        when the entry plan was complete without it: the plan's end, in the plan's words,
+        and that the reading is kept; "" when the plan had a point for it, or there is no
+        plan. Day review 66: a reading after "Entry plan complete" was taken without a
+        word."""
+        plan = self.entry_plan()
+        got = None if plan is None else self._plan_rows(plan)
+        if plan is None or got is None:
+            return ""
+        rows, keys = got
+        without = [dict(r) for r in rows]
+        if 0 <= row < len(without):
+            without[row] = dict.fromkeys(keys, "")
+        if plan.placement(without, self._reading_keys()) is not None:
+            return ""
+        return tr("Row {row}: taken after the end of the entry plan ({plan}); the reading is "
+                  "kept, as a point the plan does not have").format(
+            row=row + 1, plan=translated(plan.next_text(without, self._reading_keys())))
 
     def _plan_pointed_at(self, plan: EntryPlan, rows: list[dict[str, str]], row: int) -> bool:
         """Whether ``row`` is the row the plan sent the next reading to before that row was

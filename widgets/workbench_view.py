@@ -183,10 +183,22 @@ class WorkbenchView(QWidget):
         fit_layout.addWidget(self.verdict)
         fit_layout.addWidget(self.warnings)  # every warning, above the text, never scrolled
         self._fit_layout = fit_layout
-        details = QHBoxLayout()
-        details.addWidget(self.summary, 1)
-        details.addWidget(self.figures)
-        fit_layout.addLayout(details, 1)
+        # the text and the figures' table side by side, scrolling sideways together where
+        # the pane is narrower than their least widths: at 200 % on a 1280×720 screen
+        # (640 px) with the capture panel open, their 280 px made the window 760 px wide
+        # at the least, its right part off the screen (day review 66)
+        details = QWidget()
+        details_layout = QHBoxLayout(details)
+        details_layout.setContentsMargins(0, 0, 0, 0)
+        details_layout.addWidget(self.summary, 1)
+        details_layout.addWidget(self.figures)
+        self.details_area = QScrollArea()
+        self.details_area.setWidgetResizable(True)
+        self.details_area.setFrameShape(QFrame.Shape.NoFrame)
+        self.details_area.setVerticalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.details_area.setWidget(details)
+        self.details_area.setMinimumWidth(self.DETAILS_MIN_WIDTH)
+        fit_layout.addWidget(self.details_area, 1)
         # the result and the plots share the height; the technician drags the line between
         self.result_splitter = QSplitter(Qt.Orientation.Vertical)
         self.result_splitter.addWidget(fit_box)
@@ -224,6 +236,9 @@ class WorkbenchView(QWidget):
     FIGURES_MIN_WIDTH = 150
     #: the least width of the result's text beside it
     SUMMARY_MIN_WIDTH = 130
+    #: the least width the text and the figures keep in the window: narrower, they scroll
+    #: sideways together (FIGURES_MIN_WIDTH + SUMMARY_MIN_WIDTH are their least inside)
+    DETAILS_MIN_WIDTH = 120
 
     def _share_left_pane(self, height: int) -> None:
         """Share the left pane's height: the readings first (READINGS_ROWS rows), the

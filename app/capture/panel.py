@@ -1611,6 +1611,10 @@ class CapturePanel(QDockWidget):
                  if link.slot in taking and link.slot not in placed]
         place = self._placement(presenter)
         row = self.target_row(presenter, place)
+        # a take after the entry plan's end: said beside the guidance, the reading kept
+        beyond = getattr(presenter, "after_plan_end", lambda _row: "")(row) \
+            if place is None else ""
+        notes += [beyond] if beyond else []
         # a position in degrees in its target's turn (positioning's measured: a readout's
         # 359.5 at target 0° is −0.5); the raw trace keeps it as sent
         taking = self._in_target_turn(presenter, row, place, targets, taking)

@@ -1,7 +1,9 @@
 """Where a certificate's readings came from, as its "Readings:" line says it: the project's
-file (or "readings typed in AngleBench") and, when rows were taken from the instruments,
-which (day review 64 P8: "readings typed in AngleBench" was printed of rows captured from
-the instruments, the PDF's "Instrument output SHA-256" line the only hint)."""
+file (or the file imported, the readings pasted, the workbench they were sent from, or
+"readings typed in AngleBench"), the rows pasted into the sheet and, when rows were taken
+from the instruments, which (day review 64 P8: "readings typed in AngleBench" was printed
+of rows captured from the instruments, the PDF's "Instrument output SHA-256" line the only
+hint; day review 66: and of readings pasted, or sent from another workbench)."""
 
 from __future__ import annotations
 
@@ -11,11 +13,15 @@ from typing import Any
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["TYPED", "ImportedFrom", "captured_rows", "filled_rows", "imported_source",
-           "readings_origin", "row_spans"]
+__all__ = ["PASTED", "TYPED", "ImportedFrom", "PastedIn", "SentFrom", "SheetOrigin",
+           "captured_rows", "filled_rows", "imported_source", "readings_origin", "row_spans",
+           "sheet_source"]
 
-#: the readings' source when they are in no project file: typed (or pasted) into the sheet
+#: the readings' source when they are in no project file: typed into the sheet
 TYPED = QT_TR_NOOP("readings typed in AngleBench")
+#: the readings' source when they were pasted over the sheet from the clipboard (whose
+#: source is not known to AngleBench)
+PASTED = QT_TR_NOOP("readings pasted into AngleBench")
 
 
 @dataclass(frozen=True)
@@ -28,6 +34,28 @@ class ImportedFrom:
     name: str
     sha256: str = ""
     sample: bool = False
+
+
+@dataclass(frozen=True)
+class PastedIn:
+    """The sheet's rows were pasted over it from the clipboard (Edit › Paste replacing the
+    sheet): where they were copied from is not known (day review 66: they were "readings
+    typed in AngleBench")."""
+
+
+@dataclass(frozen=True)
+class SentFrom:
+    """The sheet's rows were sent from another workbench (File › Send to positioning):
+    ``workbench`` its title (a declared text), ``origin`` that workbench's own "Readings:"
+    line when they were sent ("" when it has none)."""
+
+    workbench: str
+    origin: str = ""
+
+
+#: where a sheet's rows came from when one step replaced them all (None: typed, or a
+#: project's)
+SheetOrigin = ImportedFrom | PastedIn | SentFrom
 
 
 def imported_source(origin: ImportedFrom, edited: bool) -> str:
@@ -46,6 +74,51 @@ def imported_source(origin: ImportedFrom, edited: bool) -> str:
     template = (QT_TR_NOOP("imported from {name}, edited in AngleBench") if edited
                 else QT_TR_NOOP("imported from {name}"))
     return message(template, name=origin.name)
+
+
+def _replaced_source(origin: SheetOrigin, edited: bool) -> str:
+    """The source of rows that replaced the sheet in one step (``edited``: changed since)."""
+    if isinstance(origin, ImportedFrom):
+        return imported_source(origin, edited)
+    if isinstance(origin, PastedIn):
+        source = message(PASTED)
+    elif origin.origin:
+        source = message(QT_TR_NOOP("sent from the {workbench} workbench (its readings: "
+                                    "{origin})"),
+                         workbench=message(origin.workbench), origin=origin.origin)
+    else:
+        source = message(QT_TR_NOOP("sent from the {workbench} workbench"),
+                         workbench=message(origin.workbench))
+    return _edited(source) if edited else source
+
+
+def _edited(source: str) -> str:
+    """``source``, changed in the window since (other than by a paste)."""
+    return message(QT_TR_NOOP("{source}, then edited in AngleBench"), source=source)
+
+
+def sheet_source(origin: SheetOrigin | None, edited: bool, pasted: Sequence[int],
+                 row_count: int) -> str | None:
+    """The certificate's source of a sheet's readings: ``origin``, the step that replaced
+    them all (None: typed, or a project's), ``edited`` whether they were changed since
+    other than by a paste, ``pasted`` the filled rows (0-based, ascending) pasted into the
+    sheet since, of ``row_count`` filled rows, said as the captured rows are
+    (:func:`readings_origin`). None: typed (or the project's), nothing pasted."""
+    if origin is None:
+        if not pasted:
+            return None
+        if len(pasted) >= row_count:
+            return _replaced_source(PastedIn(), edited)
+        said = message(QT_TR_NOOP("readings typed in AngleBench, except rows {rows} ({pasted} "
+                                  "of {count}), pasted"),
+                       rows=row_spans(pasted), pasted=len(pasted), count=row_count)
+        return _edited(said) if edited else said
+    source = _replaced_source(origin, edited)
+    if not pasted or (isinstance(origin, PastedIn)):
+        return source
+    return message(QT_TR_NOOP("{source}; rows {rows} ({pasted} of {count}) pasted into "
+                              "AngleBench"),
+                   source=source, rows=row_spans(pasted), pasted=len(pasted), count=row_count)
 
 
 def filled_rows(rows: Sequence[Sequence[str]]) -> list[int]:

@@ -61,7 +61,7 @@ from models.fringe.signal_tolerance import (
 from widgets.fringe.preset_editor import PresetEditorDialog
 from widgets.fringe.signal_bar import SignalBar
 from widgets.i18n import declared, explained, live, on_language_change, tr, translated
-from widgets.plot_grid import show_grid
+from widgets.plot_grid import keep_axis_title_room, show_grid
 
 __all__ = ["INSTRUMENT", "REFRESH_MS", "LiveSignalsPanel"]
 
@@ -280,8 +280,9 @@ class LiveSignalsPanel(QWidget):
         left.setMinimumWidth(260)
         left.setMaximumWidth(420)
         plots = QGridLayout()
-        plots.addWidget(self.lissajous, 0, 0)
-        plots.addWidget(self.error_plot, 0, 1)
+        # at the top, no taller than the body's view (:meth:`_fit_plots`)
+        plots.addWidget(self.lissajous, 0, 0, Qt.AlignmentFlag.AlignTop)
+        plots.addWidget(self.error_plot, 0, 1, Qt.AlignmentFlag.AlignTop)
         plots.setColumnStretch(0, 1)
         plots.setColumnStretch(1, 1)
         body = QHBoxLayout()
@@ -306,7 +307,11 @@ class LiveSignalsPanel(QWidget):
         outer.addWidget(self.status)
         for plot in (self.lissajous, self.error_plot):
             plot.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
-            plot.setMinimumSize(180, 160)
+            plot.setMinimumSize(180, self.PLOT_MIN_HEIGHT)
+            # as tall as its y axis' title needs, the body scrolling down instead: at 150 %
+            # on a 1280×720 screen "interpolation error (° el.)" had less axis than its
+            # length and was cut at both ends (day review 66)
+            keep_axis_title_room(plot, self.PLOT_MIN_HEIGHT)
         self.connect_button.clicked.connect(lambda: self.connect_stream())
         self.disconnect_button.clicked.connect(self.disconnect_stream)
         self.demo_button.clicked.connect(lambda: self.start_demonstration())
@@ -317,6 +322,23 @@ class LiveSignalsPanel(QWidget):
         self.scale.valueChanged.connect(self._rescaled)
         self._retitle()
         self._show_connected()
+
+    #: the least height of the Lissajous and the interpolation error's plot
+    PLOT_MIN_HEIGHT = 160
+
+    def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().resizeEvent(event)
+        QTimer.singleShot(0, self, self._fit_plots)  # once the body is laid out anew
+
+    def _fit_plots(self) -> None:
+        """The plots no taller than the body's view (their least height aside): as tall as
+        the bars beside them, they scrolled with them, and the interpolation error's y title,
+        centred on its axis, was partly out of view at 150 % on a 1280×720 screen (day
+        review 66)."""
+        margins = self.body.widget().layout().contentsMargins()
+        height = self.body.viewport().height() - margins.top() - margins.bottom()
+        for plot in (self.lissajous, self.error_plot):
+            plot.setMaximumHeight(max(height, plot.minimumHeight()))
 
     def _retitle(self) -> None:
         self.port_label.setText(tr("Port"))

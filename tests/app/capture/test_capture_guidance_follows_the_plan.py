@@ -75,3 +75,61 @@ def test_polygon_guidance_says_the_plan_is_complete(window, qtbot):
                                       "is added after it")
         panel.disconnect_instrument()
     assert model.sheet.row_count == points
+
+
+def test_a_take_after_the_plans_end_is_said_and_kept(window, qtbot):
+    """Day review 66: a reading taken after "Entry plan complete" was added without a word."""
+    presenter = _show(window, "polygon")
+    model = presenter.table_model
+    model.replace_all([], "empty")
+    presenter.set_settings({**presenter.settings, "faces": 4, "plan_sets": 1})
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(1.25, -0.5)]) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        qtbot.waitUntil(lambda: panel.guide.text() != "", timeout=3000)
+        _take_through_the_plan(presenter, panel, qtbot, 20)
+        points = len(presenter.entry_plan().points)
+        rows = model.sheet.row_count
+        assert panel.take_note.text() == ""  # the plan's last point: nothing to say
+        qtbot.waitUntil(lambda: not panel.used_again(), timeout=3000)
+        panel.take_button.click()
+        assert model.sheet.row_count == rows + 1  # the reading kept
+        assert panel.take_note.text() == (
+            f"Row {rows + 1}: taken after the end of the entry plan (plan complete ({points} "
+            "points)); the reading is kept, as a point the plan does not have")
+        panel.disconnect_instrument()
+
+
+def test_a_reading_typed_after_the_plans_end_is_said_and_kept(window, qtbot):
+    from PySide6.QtCore import Qt
+    from PySide6.QtWidgets import QLineEdit
+
+    presenter = _show(window, "positioning")
+    model = presenter.table_model
+    model.replace_all([], "empty")
+    presenter.set_settings({**presenter.settings, "plan_targets": "0, 90", "plan_runs": 1,
+                            "plan_directions": "up"})
+    plan = presenter.entry_plan()
+    assert plan is not None and len(plan.points) == 2, presenter.plan_problem
+    column = model.sheet.column_index("deviation")
+    view = presenter.view.table
+    view.window().show()
+    qtbot.waitExposed(view.window())
+    said = []
+    view.notice.connect(said.append)
+    for value in ("0.5", "0.7", "0.9"):  # the plan's two points, then one after its end
+        row = presenter.plan_placement().row if presenter.plan_placement() else \
+            model.sheet.row_count
+        index = model.index(row, column)
+        view.setCurrentIndex(index)
+        view.edit(index)
+        editor = next(w for w in view.viewport().findChildren(QLineEdit) if w.isVisible())
+        qtbot.keyClicks(editor, value)
+        qtbot.keyClick(editor, Qt.Key.Key_Return)
+        qtbot.waitUntil(lambda r=row, v=value: r < model.sheet.row_count
+                        and model.sheet.text(r, column) == v, timeout=3000)
+    assert model.sheet.text(2, column) == "0.9"  # kept
+    assert said[-1] == ("Row 3: taken after the end of the entry plan (plan complete (2 "
+                        "points)); the reading is kept, as a point the plan does not have"), said
+    assert not any("end of the entry plan" in text for text in said[:-1]), said

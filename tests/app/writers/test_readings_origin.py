@@ -198,3 +198,78 @@ def test_imported_source_wording():
         "imported from a.csv (SHA-256 ab12)")
     assert imported_source(ImportedFrom("a.csv"), True) == "imported from a.csv, edited in AngleBench"
     assert imported_source(ImportedFrom("s.csv", "ff", sample=True), False) == "the bundled sample s.csv"
+
+
+def _copied(presenter, rows: list[int]) -> str:
+    """``rows`` of ``presenter``'s sheet as a spreadsheet copies them (tab-separated)."""
+    sheet = presenter.sheet
+    return "\n".join("\t".join(sheet.text(r, c) for c in range(sheet.column_count))
+                     for r in rows)
+
+
+def test_readings_pasted_over_the_sheet_are_said_pasted(window, polygon, tmp_path, qtbot):
+    """Day review 66: readings pasted from the clipboard (their source unknown) were
+    "readings typed in AngleBench" on the certificate; typing over one is an edit."""
+    table = polygon.view.table
+    rows = polygon.sheet.row_count
+    table.setCurrentIndex(table.model().index(0, 0))
+    table.selectAll()  # the whole sheet selected: the paste replaces it
+    assert table.paste_text(_copied(polygon, list(range(rows)))) == "replace"
+    text, sheet = _readings_line(window, tmp_path, qtbot)
+    assert sheet == "readings pasted into AngleBench"
+    assert "Readings readings pasted into AngleBench " in text, text
+    assert TYPED not in text
+    _type_cell(qtbot, polygon, 2, polygon.sheet.column_index("polygon_dev_arcsec"), "0.25")
+    assert _results_readings(window, tmp_path, qtbot) == (
+        "readings pasted into AngleBench, then edited in AngleBench")
+
+
+def test_rows_pasted_into_a_sheet_are_named(window, polygon, tmp_path, qtbot):
+    """Rows pasted over some of an imported sheet's: named as the captured rows are, and
+    moved by a row inserted above them."""
+    table = polygon.view.table
+    rows = polygon.sheet.row_count
+    table.setCurrentIndex(table.model().index(3, 0))
+    assert table.paste_text(_copied(polygon, [3, 4])) == "cells"
+    imported = f"imported from polygon_sample.csv (SHA-256 {_sha256(polygon)})"
+    assert _results_readings(window, tmp_path, qtbot) == (
+        f"{imported}; rows 4–5 (2 of {rows}) pasted into AngleBench")
+    polygon.table_model.insert_rows(0)  # a blank row: no reading, but the rows below move
+    assert _results_readings(window, tmp_path, qtbot) == (
+        f"{imported}, edited in AngleBench; rows 5–6 (2 of {rows}) pasted into AngleBench")
+
+
+def test_readings_sent_to_positioning_name_the_workbench_and_its_origin(window, tmp_path,
+                                                                        qtbot, samples_dir):
+    """Day review 66: a run sent to the positioning workbench was "readings typed in
+    AngleBench" on its certificate."""
+    polygon = window.presenter("polygon")
+    window.tabs.setCurrentIndex(window.presenters.index(polygon))
+    polygon.import_file(samples_dir / polygon.kind.sample_file, sample=True)
+    window.certificates.view.choose_save_path = (
+        lambda title, suggested, kinds: str(tmp_path / "results.xlsx"))
+    qtbot.waitUntil(lambda: window._current_result() is not None, timeout=20000)
+    assert window.send_to_positioning(), window.told
+    assert window.current is window.presenter("positioning")
+    # one forward approach per target: no certificate or results can be exported; the
+    # source the certificate is given
+    assert window._source_name() == (
+        "sent from the Polygon encoder test workbench (its readings: the bundled sample "
+        "polygon_sample.csv)")
+
+
+def test_sheet_source_wording():
+    from models.certificate.readings_origin import PastedIn, SentFrom, sheet_source
+
+    assert sheet_source(None, False, [], 5) is None
+    assert sheet_source(None, False, [0, 1, 2, 3, 4], 5) == "readings pasted into AngleBench"
+    assert sheet_source(None, True, [1, 2], 5) == (
+        "readings typed in AngleBench, except rows 2–3 (2 of 5), pasted, then edited in "
+        "AngleBench")
+    assert sheet_source(PastedIn(), False, [4], 5) == "readings pasted into AngleBench"
+    assert sheet_source(SentFrom("Polygon encoder test"), False, [], 5) == (
+        "sent from the Polygon encoder test workbench")
+    assert sheet_source(SentFrom("Polygon encoder test", "job.anglebench.json"), True, [0],
+                        5) == ("sent from the Polygon encoder test workbench (its readings: "
+                               "job.anglebench.json), then edited in AngleBench; rows 1 (1 of "
+                               "5) pasted into AngleBench")
