@@ -26,9 +26,11 @@ inputs that are one value at a θ, with the readings without them), fed with:
   rest: Berger & Boos 1994). Until 0.8.14 it was sized by the part the readings show to be
   there at 95 % (over the upper bound): where the pointing noise hides the circle's part
   (σ = 1.5″, u_c = 0.4″, the circle's error flattening the curve) that is 0 in nearly every
-  run, and E covered 59–62 of 80 runs, M 49–66 (#39). The price: with u stated at exactly
-  the pointing noise, which no readings can tell from a circle error hidden under it, E, M
-  and A widen by about 2.4–3.1 u each way (the study of #39 in docs/user-guide/theodolite.md).
+  run, and E covered 56–76 of 80 runs, M 45–70 (floor 68; now 80 of 80 in each of the 4
+  cells, #39). The price: with u stated at exactly the pointing noise, which no readings
+  can tell from a circle error hidden under it, E's interval is 1.9–2.9 times as wide as
+  before, M's 2.2–3.0, A's 1.8–2.3 (σ = 0.5″, 2 and 5 passes, 11 and 41 θ; the study of #39
+  in docs/user-guide/theodolite.md).
   The reference reading θ₀ is one value for the run: it moves every error alike and no
   figure (a range, a reversal, a scatter) sees it.
 
@@ -182,8 +184,9 @@ def pointing_and_dof(result: TheodoliteResult) -> tuple[float, float]:
 #: bound, which sizes the widening for a circle error of the curve's worst shape
 #: (:func:`circle_part_not_excluded`); the widened interval is held at the rest (Berger &
 #: Boos 1994). 0.25: the expected widening z(1 − (1 − γ) tail/2) · 2 √(u² − s_lo(γ)²) is
-#: within 3 % of its least over γ in every case of the study (σ 0.1–1.5″, u_c 0–0.8″, ν 22–
-#: 328), where half the tail is up to 9 % wider with a real circle error (σ 0.1″, u_c 0.4″)
+#: within 3.7 % of its least over γ in every case of the study of #39 (σ 0.1–1.5″, u_c 0–0.8″,
+#: ν 22–328; 0.2 within 2.7 %), half the tail up to 10 % wider (a circle error well above the
+#: pointing noise, where the bound's share costs z and buys nothing)
 CIRCLE_NUISANCE_SHARE = 0.25
 
 

@@ -206,15 +206,18 @@ def test_the_circle_part_the_readings_do_not_exclude_holds_the_true_one(tmp_path
 
 
 @pytest.mark.slow
-def test_the_figures_of_the_means_are_not_twice_as_wide_as_a_correct_interval(
+def test_the_figures_of_the_means_with_the_theodolite_stated_at_its_pointing_noise(
         capsys, tmp_path):
     """Pointing noise alone, the theodolite stated at it: E, M and A's intervals cover at the
-    probability printed, within 2 times the width a correct interval needs (2 z σ of value −
-    truth over the runs; measured 1.84, 1.73, 1.35: on 13 θ of a rough curve the
-    positioning's own bootstrap is as wide, its study up to 1.95 for E). Before, the set-up
-    model's error was drawn on its own at each θ and, as an envelope of unknown
-    correlation, widened them by z · 2 max u(ζ) each way, and the circle's part (above) by
-    as much again: 3.21, 3.19, 2.09."""
+    probability printed, and are at most 5, 5 and 3.1 times the width the figure's own
+    spread needs (2 z σ of value − truth over the runs; measured 4.46, 4.46, 2.80). The
+    readings cannot tell such a theodolite from one whose u hides a circle error under the
+    pointing noise, and the widening for a circle error of the curve's worst shape is sized
+    by the largest part they do not exclude (0.8.15, #39): until then by the part they show
+    at 95 %, 0 here, 1.84, 1.73 and 1.35 times, and a hidden circle error against the curve
+    was missed (M 45 of 80 runs of σ = 1.5″, u_c = 0.4″). Before 0.8.7, the set-up model's
+    error was drawn on its own at each θ and, as an envelope of unknown correlation,
+    widened them by z · 2 max u(ζ) each way: 3.21, 3.19, 2.09."""
     from scipy.special import ndtri
 
     rng = np.random.default_rng(23)
@@ -235,4 +238,4 @@ def test_the_figures_of_the_means_are_not_twice_as_wide_as_a_correct_interval(
         needed = 2.0 * float(ndtri(0.5 + 0.5 * p)) * float(np.std([x[2] for x in r], ddof=1))
         ratio = float(np.mean([x[1] for x in r])) / needed
         assert hits >= binom.ppf(0.01, len(r), p), (key, hits)
-        assert ratio <= 2.0, (key, ratio)
+        assert ratio <= {"E": 5.0, "M": 5.0, "A": 3.1}[key], (key, ratio)
