@@ -408,17 +408,20 @@ FIGURES_STATEMENT = QT_TR_NOOP(
     "positioning workbench's, models/uncertainty/figure_intervals.py), with the set-up "
     "model's error (one curve over θ, drawn as its fit's covariance correlates it) and the "
     "part of the stated theodolite u that the passes' scatter does not show (the circle's "
-    "error where it reads that θ, drawn once per θ and, where the readings show it, also "
-    "taken as shaped as the curve's worst), the same in every pass and both directions; the "
-    "probability stated is the one a simulation study reached where that is lower.")
+    "error where it reads that θ, drawn once per θ), the same in every pass and both "
+    "directions; the interval is also widened for a circle error shaped as the curve's "
+    "worst, as large as the readings do not exclude (the stated u over the pointing noise's "
+    "lower confidence bound, at a quarter of the tail, the widened interval at the rest); "
+    "the probability stated is the one a simulation study reached where that is lower.")
 #: how a run with passes is decided
 MEANS_STATEMENT = QT_TR_NOOP(
     "The half range is decided on the means over the passes at each θ and direction (the "
     "reversal kept), each with its own budget: the passes' pooled scatter over √n, the "
     "set-up model's error and the part of the stated theodolite u that the scatter does not "
-    "show, the same at a θ in every pass. Where the readings show such a part, its shape is "
-    "not known: the interval also holds ISO 230-2 E's halved, which holds a circle error of "
-    "any shape.")
+    "show, the same at a θ in every pass. Where the readings do not exclude such a part "
+    "(the stated u over the pointing noise's lower confidence bound), its shape is not "
+    "known: the interval also holds ISO 230-2 E's halved, which holds a circle error of any "
+    "shape up to that part.")
 
 
 def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata

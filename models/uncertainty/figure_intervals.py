@@ -458,7 +458,8 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
                      trials: int = INTERVAL_TRIALS, figures: dict[str, float] | None = None,
                      outer: int = OUTER_TRIALS, inner: int = INNER_TRIALS,
                      pair_u: float | None = None, model_modes: np.ndarray | None = None,
-                     cache: dict | None = None) -> dict[str, FigureInterval]:
+                     cache: dict | None = None, pair_spent: float = 0.0
+                     ) -> dict[str, FigureInterval]:
     """The coverage interval of every axis figure.
 
     Parameters
@@ -482,7 +483,13 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         two targets' errors, whatever their correlation from target to target (the
         reference's, the stated misalignment and temperature; not the roundings, which are
         independent): it sets the widening of :data:`TYPE_B_FIGURES`. 2 max ``type_b_u`` if
-        omitted (each target's error within its u, two of them possibly opposite).
+        omitted (each target's error within its u, two of them possibly opposite). Given
+        above 0, the widening is made even where ``type_b_u`` is 0 at every target (a
+        statement whose part over the scatter the readings do not show, but do not exclude).
+    pair_spent : float
+        The share of the tail already spent on the bound ``pair_u`` is sized by (a
+        nuisance's confidence bound, Berger & Boos 1994): the widened interval is held at the
+        rest, (1 − pair_spent) of the tail, so that the whole holds at ``probability``.
     model_modes : array (k, targets), optional
         A fitted model's error at the targets, the same in every run and both directions,
         correlated from target to target as its parameters' covariance makes it: error =
@@ -500,15 +507,17 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
                         model_modes, cache)
     out = _intervals(drawn, probability)
     u_b = drawn.shared.u
-    if np.any(u_b):
+    if np.any(u_b) or (pair_u is not None and pair_u > 0.0):
         # the reference perfect: the same readings without the Type B inputs
-        plain = _simulation(means, stds, runs, None, seed, trials, figures, outer, inner,
-                            drawn.shared.modes, cache)
+        plain = drawn if not np.any(u_b) else _simulation(
+            means, stds, runs, None, seed, trials, figures, outer, inner, drawn.shared.modes,
+            cache)
         bare = _intervals(plain, probability)
         # the reference's errors shaped as the curve's worst (a once-a-turn error that lowers
         # the crests and raises the troughs): the figure of the readings without them, at
         # half the tail each side, widened by the largest difference of two targets' errors
-        tail = 0.5 * (1.0 - probability)
+        # (the rest of the tail where a share of it sized the pair: Berger & Boos)
+        tail = 0.5 * (1.0 - probability) * (1.0 - pair_spent)
         pair = 2.0 * float(np.max(u_b)) if pair_u is None else float(pair_u)
         wide = _intervals(plain, 1.0 - tail) if pair > 0.0 else bare
         shift = float(ndtri(1.0 - 0.5 * tail)) * pair

@@ -11,6 +11,14 @@ the runs of an instrument stated at exactly its pointing noise (s below σ by ch
 excess is taken over s's one-sided upper confidence bound at :data:`EVIDENCE` instead,
 s √(ν / χ²_ν(1 − p)): the part the readings show to be there at that probability. Where the
 stated u is well above the scatter (a real circle error) the bound moves it little.
+
+What the readings show to be there is not all they allow: where the pointing noise is large
+beside the circle's part (σ = 1.5″ against u_c = 0.4″) the excess over s_up is 0 in nearly
+every run, while σ may lie well below s. The largest part they do not exclude,
+√max(u² − s_lo², 0), is taken over s's one-sided LOWER confidence bound s √(ν / χ²_ν,upper(β))
+(:func:`scatter_lower_bound`, :func:`excess_not_excluded`): σ ≥ s_lo at 1 − β, so it is at
+least the true part at that probability, and an interval sized by it at the rest of its tail
+holds at the whole (Berger & Boos 1994, JASA 89:1012).
 """
 
 from __future__ import annotations
@@ -19,7 +27,8 @@ import math
 
 from scipy.special import chdtri
 
-__all__ = ["EVIDENCE", "excess_over_scatter", "scatter_upper_bound"]
+__all__ = ["EVIDENCE", "excess_not_excluded", "excess_over_scatter", "scatter_lower_bound",
+           "scatter_upper_bound"]
 
 #: the one-sided probability at which the readings must show the stated u to exceed their
 #: scatter
@@ -42,3 +51,21 @@ def excess_over_scatter(stated_u: float, s: float, nu: float,
     """√max(u² − s_up², 0), s_up = :func:`scatter_upper_bound` (the stated u whole where no
     scatter is known: s = 0)."""
     return math.sqrt(max(stated_u**2 - scatter_upper_bound(s, nu, evidence) ** 2, 0.0))
+
+
+def scatter_lower_bound(s: float, nu: float, beta: float) -> float:
+    """The one-sided lower confidence bound of σ from s on ν degrees of freedom, σ ≥ s_lo
+    with probability 1 − ``beta``: s √(ν / χ²_ν,upper(β)), χ²_ν,upper(β) the value a χ²_ν
+    exceeds with probability β; s itself where ν is infinite (s is σ), 0 where s is not a
+    number or ν is below 1 (nothing excluded)."""
+    if not math.isfinite(s) or math.isnan(nu) or nu < 1.0:
+        return 0.0
+    if math.isinf(nu):
+        return s
+    return s * math.sqrt(nu / float(chdtri(nu, beta)))
+
+
+def excess_not_excluded(stated_u: float, s: float, nu: float, beta: float) -> float:
+    """The largest part of the stated u that the scatter does not exclude at 1 − ``beta``:
+    √max(u² − s_lo², 0), s_lo = :func:`scatter_lower_bound`; 0 where u is at or below it."""
+    return math.sqrt(max(stated_u**2 - scatter_lower_bound(s, nu, beta) ** 2, 0.0))

@@ -249,3 +249,32 @@ def test_the_probability_stated_is_the_highest_no_axis_falls_short_of():
     assert binom.ppf(0.99, 40, 1.0 - (p + 0.005)) < 10
     assert achieved_probability(np.full(48, 37), 40) == 0.925  # pooled 92.5 %
     assert achieved_probability(np.full(48, 20), 40) is None
+
+
+def test_a_pair_bound_widens_without_type_b_and_at_the_rest_of_the_tail():
+    """``pair_u`` with no Type B input at any target (a theodolite whose stated u the scatter
+    does not show over its point estimate, but does not exclude): E's and M's upper ends are
+    the readings' own interval at the rest of the tail, (1 − pair_spent) · tail each side,
+    plus z(1 − rest/2) · pair_u; B, which the errors the same both ways do not enter, is
+    unchanged. Before, with every target's Type B u 0 no widening was made at all."""
+    from scipy.special import ndtri
+
+    rng = np.random.default_rng(3)
+    theta = np.linspace(0.0, 1.0, 12)
+    curve = np.sin(2 * math.pi * theta)
+    means = {d: curve + s * 0.3 + rng.normal(0.0, 0.2, theta.size)
+             for d, s in (("up", 0.5), ("down", -0.5))}
+    stds = {d: np.full(theta.size, 0.35) for d in means}
+    runs = {d: np.full(theta.size, 3) for d in means}
+    p, spent, pair = 0.9545, 0.25, 0.6
+    kw = dict(seed=11, trials=800, outer=0, inner=0)
+    plain = figure_intervals(means, stds, runs, p, **kw)
+    rest = 0.5 * (1.0 - p) * (1.0 - spent)
+    far = figure_intervals(means, stds, runs, 1.0 - rest, **kw)
+    wide = figure_intervals(means, stds, runs, p, pair_u=pair, pair_spent=spent, **kw)
+    shift = float(ndtri(1.0 - 0.5 * rest)) * pair
+    for key in ("E", "M", "A"):
+        assert wide[key].high == pytest.approx(far[key].high + shift, rel=1e-12), key
+        assert wide[key].low == pytest.approx(max(min(plain[key].low, far[key].low - shift),
+                                                  0.0), abs=1e-12), key
+    assert wide["B"] == plain["B"]

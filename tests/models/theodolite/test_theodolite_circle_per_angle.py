@@ -43,33 +43,34 @@ def _json(capsys, tmp_path, record, per: str) -> dict:
 def test_stated_for_any_angle_the_circle_widening_is_u_not_2u(capsys, tmp_path):
     """The same readings (a once-a-turn circle error of 0.4″ under 0.15″ pointing, 3
     passes), analysed with the theodolite's u per reading and per angle: E's upper end
-    (the circle's widening z · pair_u above the readings' own interval at half the tail)
-    comes down by z · u_c (z = z(1 − tail/2), u_c the part of u the readings show to be
-    there, models.theodolite.figures.evident_circle_part), and so do M's and A's; the
-    decided half range's, united with E's halved, by half that. Before, the *Per* was not
-    read: both the same (pair_u = 2 u_c always)."""
-    from models.theodolite.figures import evident_circle_part
+    (the circle's widening z · pair_u above the readings' own interval at the rest of the
+    tail) comes down by z · u_c (z = z(1 − tail/2), tail = (1 − γ)(1 − p)/2, u_c the largest
+    part of u the readings do not exclude, models.theodolite.figures
+    .circle_part_not_excluded), and so do M's and A's; the decided half range's, united
+    with E's halved, by half that. Before, the *Per* was not read: both the same (pair_u =
+    2 u_c always)."""
+    from models.theodolite.figures import CIRCLE_NUISANCE_SHARE, circle_part_not_excluded
 
     rng = np.random.default_rng(5)
     record = tmp_path / "r.csv"
     passes_record(record, rng, 3, SIGMA, 0.6, circle=U_C, circle_shape="sine", curve="bow")
     reading, angle = _json(capsys, tmp_path, record, "reading"), _json(capsys, tmp_path,
                                                                          record, "angle")
-    evident = evident_circle_part(_analysed(record), STATED)
-    assert 0.3 < evident < U_C + 0.05  # the readings show the circle's part
-    z = float(ndtri(1.0 - 0.25 * (1.0 - 0.9545)))
+    not_excluded = circle_part_not_excluded(_analysed(record), STATED, 0.9545)
+    assert U_C - 0.05 < not_excluded < STATED  # the circle's part, not excluded
+    z = float(ndtri(1.0 - 0.25 * (1.0 - 0.9545) * (1.0 - CIRCLE_NUISANCE_SHARE)))
     for key in ("E", "M", "A"):
         r, a = reading["iso230_2_figures"][key], angle["iso230_2_figures"][key]
         assert r["value"] == a["value"]
-        assert r["interval_high"] - a["interval_high"] == pytest.approx(z * evident, rel=1e-3)
+        assert r["interval_high"] - a["interval_high"] == pytest.approx(z * not_excluded, rel=1e-3)
         width_r = r["interval_high"] - r["interval_low"]
         width_a = a["interval_high"] - a["interval_low"]
-        assert width_a <= width_r - 0.999 * z * evident, key  # narrower by at least that
+        assert width_a <= width_r - 0.999 * z * not_excluded, key  # narrower by at least that
     # B does not see the circle (the same at a θ both ways): its interval unchanged
     assert reading["iso230_2_figures"]["B"] == angle["iso230_2_figures"]["B"]
     dr, da = reading["decided_quantity"], angle["decided_quantity"]
     assert dr["value"] == da["value"]
-    assert dr["interval_high"] - da["interval_high"] == pytest.approx(0.5 * z * evident,
+    assert dr["interval_high"] - da["interval_high"] == pytest.approx(0.5 * z * not_excluded,
                                                                       rel=1e-3)
 
 
