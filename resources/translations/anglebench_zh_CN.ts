@@ -890,9 +890,9 @@
         <translation>每次读数 s = {s}，由各测回在每个 θ 和方向上合并（ν = {dof}），再除以每个均值的 √n</translation>
     </message>
     <message>
-        <source>{quantity}: {trials} trials, seed {seed}, of the means over the passes; the readings show the stated theodolite u to exceed their scatter (the circle&apos;s part at 95 %: {circle}), an error the same at a θ in every pass whose shape is not known, and a smooth one running against the curve lowers the measured range: the interval is united with ISO 230-2 {figure}&apos;s halved, which holds a circle error of any shape. The union covers at least as often as the Monte Carlo (validated on errors independent at each θ); on once-a-turn circle errors it covered 40 of 40 and, in an independent audit, 200 of 200 runs, where the Monte Carlo alone covered 28 of 40 and 440 of 600</source>
+        <source>{quantity}: {trials} trials, seed {seed}, of the means over the passes; the readings do not exclude a part of the stated theodolite u over their scatter (up to {circle} per reading, over the pointing noise&apos;s lower confidence bound), an error the same at a θ in every pass whose shape is not known, and a smooth one running against the curve lowers the measured range: the interval is united with ISO 230-2 {figure}&apos;s halved, which holds a circle error of any shape up to that part. The union covers at least as often as the Monte Carlo (validated on errors independent at each θ); on once-a-turn circle errors it covered 40 of 40 and, in an independent audit, 200 of 200 runs, where the Monte Carlo alone covered 28 of 40 and 440 of 600</source>
         <extracomment>how the decided half range is made where it is united with E&apos;s interval</extracomment>
-        <translation>{quantity}：{trials} 次试验，种子 {seed}，取各测回的均值；读数表明所给经纬仪 u 超出其分散（95 % 概率下的度盘误差部分：{circle}），这一误差在每个测回中同一 θ 处相同而形状未知，光滑的度盘误差若与曲线相抵会使测得的极差变小：区间与 ISO 230-2 {figure} 区间的一半合并，后者可容纳任意形状的度盘误差。合并后的区间覆盖率不低于蒙特卡洛区间（后者按每个 θ 独立的误差验证）；对每转一次的度盘误差，40 次中覆盖 40 次，独立审核中 200 次中覆盖 200 次，而单用蒙特卡洛区间时分别为 40 次中 28 次和 600 次中 440 次</translation>
+        <translation>{quantity}：{trials} 次试验，种子 {seed}，取各测回的均值；读数不能排除所给经纬仪 u 中超出其分散的部分（每个读数至多 {circle}，按指向噪声的置信下限计算），这一误差在每个测回中同一 θ 处相同而形状未知，光滑的度盘误差若与曲线相抵会使测得的极差变小：区间与 ISO 230-2 {figure} 区间的一半合并，后者可容纳该部分以内任意形状的度盘误差。合并后的区间覆盖率不低于蒙特卡洛区间（后者按每个 θ 独立的误差验证）；对每转一次的度盘误差，40 次中覆盖 40 次，独立审核中 200 次中覆盖 200 次，而单用蒙特卡洛区间时分别为 40 次中 28 次和 600 次中 440 次</translation>
     </message>
     <message>
         <source>Set-up model ζ (ψ, α, β)</source>
@@ -982,14 +982,14 @@
         <translation>包含区间 {low} … {high}（{p} %）</translation>
     </message>
     <message>
-        <source>Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value or a range over the θ, biased high by the scatter, so its interval, that of the true figure (of the true means and standard deviations at each θ and direction), may lie below the value stated. It is a parametric bootstrap of the figure&apos;s error from a model of the axis fitted to the means and standard deviations over the passes (the positioning workbench&apos;s, models/uncertainty/figure_intervals.py), with the set-up model&apos;s error (one curve over θ, drawn as its fit&apos;s covariance correlates it) and the part of the stated theodolite u that the passes&apos; scatter does not show (the circle&apos;s error where it reads that θ, drawn once per θ and, where the readings show it, also taken as shaped as the curve&apos;s worst), the same in every pass and both directions; the probability stated is the one a simulation study reached where that is lower.</source>
+        <source>Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value or a range over the θ, biased high by the scatter, so its interval, that of the true figure (of the true means and standard deviations at each θ and direction), may lie below the value stated. It is a parametric bootstrap of the figure&apos;s error from a model of the axis fitted to the means and standard deviations over the passes (the positioning workbench&apos;s, models/uncertainty/figure_intervals.py), with the set-up model&apos;s error (one curve over θ, drawn as its fit&apos;s covariance correlates it) and the part of the stated theodolite u that the passes&apos; scatter does not show (the circle&apos;s error where it reads that θ, drawn once per θ), the same in every pass and both directions; the interval is also widened for a circle error shaped as the curve&apos;s worst, as large as the readings do not exclude (the stated u over the pointing noise&apos;s lower confidence bound, at a quarter of the tail, the widened interval at the rest); the probability stated is the one a simulation study reached where that is lower.</source>
         <extracomment>how the ISO 230-2 figures of a run with passes get their intervals</extracomment>
-        <translation>多测回各项 ISO 230-2 指标的包含区间：指标是各 θ 上的最大值或极差，受分散影响偏高，因此其区间（真实指标即各 θ 和方向上真实均值与标准偏差的指标的区间）可能位于所给数值之下。区间由轴系模型对指标误差作参数自助法得到，模型按各测回的均值和标准偏差拟合（定位工作台的方法，models/uncertainty/figure_intervals.py），安装模型的误差（随 θ 变化的一条曲线，按其拟合的协方差相关地抽样）以及所给经纬仪 u 中测回分散性未显示的部分（度盘在该 θ 读数处的误差，在每个 θ 抽取一次；读数表明其存在时，还按形状最不利的情形考虑）在每个测回和两个方向上相同；所给概率在仿真研究达到的概率较低时取后者。</translation>
+        <translation>多测回各项 ISO 230-2 指标的包含区间：指标是各 θ 上的最大值或极差，受分散影响偏高，因此其区间（真实指标即各 θ 和方向上真实均值与标准偏差的指标的区间）可能位于所给数值之下。区间由轴系模型对指标误差作参数自助法得到，模型按各测回的均值和标准偏差拟合（定位工作台的方法，models/uncertainty/figure_intervals.py），安装模型的误差（随 θ 变化的一条曲线，按其拟合的协方差相关地抽样）以及所给经纬仪 u 中测回分散性未显示的部分（度盘在该 θ 读数处的误差，在每个 θ 抽取一次）在每个测回和两个方向上相同；区间还按形状最不利的度盘误差加宽，其大小取读数不能排除的最大值（所给 u 超出指向噪声置信下限的部分，取尾部概率的四分之一，加宽后的区间取其余部分）；所给概率在仿真研究达到的概率较低时取后者。</translation>
     </message>
     <message>
-        <source>The half range is decided on the means over the passes at each θ and direction (the reversal kept), each with its own budget: the passes&apos; pooled scatter over √n, the set-up model&apos;s error and the part of the stated theodolite u that the scatter does not show, the same at a θ in every pass. Where the readings show such a part, its shape is not known: the interval also holds ISO 230-2 E&apos;s halved, which holds a circle error of any shape.</source>
+        <source>The half range is decided on the means over the passes at each θ and direction (the reversal kept), each with its own budget: the passes&apos; pooled scatter over √n, the set-up model&apos;s error and the part of the stated theodolite u that the scatter does not show, the same at a θ in every pass. Where the readings do not exclude such a part (the stated u over the pointing noise&apos;s lower confidence bound), its shape is not known: the interval also holds ISO 230-2 E&apos;s halved, which holds a circle error of any shape up to that part.</source>
         <extracomment>how a run with passes is decided</extracomment>
-        <translation>半峰峰值按各测回在每个 θ 和方向上的均值判定（保留反向差），每个均值有自己的不确定度预算：测回合并的分散除以 √n、安装模型的误差，以及所给经纬仪 u 中分散未显示的部分（在每个测回中同一 θ 处相同）。读数表明存在这一部分时，其形状未知：区间还包含 ISO 230-2 的 E 区间的一半，后者可容纳任意形状的度盘误差。</translation>
+        <translation>半峰峰值按各测回在每个 θ 和方向上的均值判定（保留反向差），每个均值有自己的不确定度预算：测回合并的分散除以 √n、安装模型的误差，以及所给经纬仪 u 中分散未显示的部分（在每个测回中同一 θ 处相同）。读数不能排除这一部分时（所给 u 超出指向噪声置信下限的部分），其形状未知：区间还包含 ISO 230-2 的 E 区间的一半，后者可容纳该部分以内任意形状的度盘误差。</translation>
     </message>
     <message>
         <source>Axis tilt ψ</source>
@@ -4024,7 +4024,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) the file the rows were imported from (models/certificate/readings_origin .ImportedFrom; None: typed, or a project&apos;s), set and put back by the import&apos;s undo step (:attr:`origin_step`, None: at the bottom of the undo history) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
+        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -4199,6 +4199,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Delete rows</source>
+        <extracomment>where the rows go and how many: what moves the rows below (read by the model&apos;s readings_origin)</extracomment>
         <translation>删除行</translation>
     </message>
     <message>
@@ -4363,7 +4364,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Insert rows</source>
-        <extracomment>the keys of the columns each take wrote, by its key (what it supersedes)</extracomment>
+        <extracomment>the cells were pasted from the clipboard (not typed): what the certificate&apos;s &quot;Readings:&quot; says of their rows (models/certificate/readings_origin.sheet_source) the keys of the columns each take wrote, by its key (what it supersedes)</extracomment>
         <translation>插入行</translation>
     </message>
     <message>
@@ -4425,6 +4426,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Entry plan: {point}</source>
         <translation>录入计划：{point}</translation>
+    </message>
+    <message>
+        <source>Row {row}: taken after the end of the entry plan ({plan}); the reading is kept, as a point the plan does not have</source>
+        <translation>第 {row} 行：在录入计划结束之后取得（{plan}）；该读数已保留，作为计划中没有的点</translation>
     </message>
     <message>
         <source>Rows {first}–{last}: {start} … {end}, from the entry plan</source>
@@ -4695,7 +4700,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>figure</source>
-        <extracomment>the width the result keeps before the readings pane gives up its columns&apos; width (its text beside the figures&apos; table; the least the result kept when the panes had least widths) the readings pane&apos;s and the result&apos;s shares of the width the least width of the figures&apos; table (a name and a value; 250 px where there is room) the least width of the result&apos;s text beside it the least width the readings&apos; caption keeps beside the next row and the step the rows the columns were last measured for (long sheets: not at every edit)</extracomment>
+        <extracomment>the width the result keeps before the readings pane gives up its columns&apos; width (its text beside the figures&apos; table; the least the result kept when the panes had least widths) the readings pane&apos;s and the result&apos;s shares of the width the least width of the figures&apos; table (a name and a value; 250 px where there is room) the least width of the result&apos;s text beside it the least width the text and the figures keep in the window: narrower, they scroll sideways together (FIGURES_MIN_WIDTH + SUMMARY_MIN_WIDTH are their least inside) the least width the readings&apos; caption keeps beside the next row and the step the rows the columns were last measured for (long sheets: not at every edit)</extracomment>
         <translation>结果项</translation>
     </message>
     <message>
@@ -8421,7 +8426,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>readings typed in AngleBench</source>
-        <extracomment>the readings&apos; source when they are in no project file: typed (or pasted) into the sheet</extracomment>
+        <extracomment>the readings&apos; source when they are in no project file: typed into the sheet</extracomment>
         <translation>在 AngleBench 中录入的读数</translation>
     </message>
     <message>
@@ -8689,6 +8694,7 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     </message>
     <message>
         <source>Port</source>
+        <extracomment>the least height of the Lissajous and the interpolation error&apos;s plot</extracomment>
         <translation>端口</translation>
     </message>
     <message>
@@ -10267,8 +10273,12 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>本文件为检测报告，而非校准证书：其结果的计量溯源性未建立（{why}）。</translation>
     </message>
     <message>
-        <source>The laboratory&apos;s calibration and measurement capability (CMC) for this quantity is U = {cmc}; every U stated here is at or above it.</source>
+        <source>The coverage interval of {figures} is held to it as well: each half-width these readings give below the CMC is stated as the CMC about the figure&apos;s value (the lower end not below 0 where the figure cannot be negative), with the probability printed beside it, which the wider interval covers at least.</source>
         <extracomment>each setting made by cmc_parameter → what it is the CMC of (the JSON&apos;s laboratory_cmc)</extracomment>
+        <translation>{figures} 的包含区间同样不低于 CMC：这些读数给出的半宽小于 CMC 的一侧，以指标值为中心按 CMC 给出（指标不可能为负时下限不低于 0），旁边所印的概率保持不变，较宽的区间的覆盖概率不低于它。</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for this quantity is U = {cmc}; every U stated here is at or above it.</source>
         <translation>实验室对该量的校准和测量能力（CMC）为 U = {cmc}；本文件给出的每个 U 均不小于此值。</translation>
     </message>
     <message>
@@ -11292,7 +11302,13 @@ Replace it?</source>
         <translation>重新发送</translation>
     </message>
     <message>
+        <source>readings pasted into AngleBench</source>
+        <extracomment>the readings&apos; source when they were pasted over the sheet from the clipboard (whose source is not known to AngleBench)</extracomment>
+        <translation>读数粘贴到 AngleBench 中</translation>
+    </message>
+    <message>
         <source>the bundled sample {name}, edited in AngleBench</source>
+        <extracomment>where a sheet&apos;s rows came from when one step replaced them all (None: typed, or a project&apos;s)</extracomment>
         <translation>自带示例 {name}，载入后在 AngleBench 中编辑过</translation>
     </message>
     <message>
@@ -11314,6 +11330,26 @@ Replace it?</source>
     <message>
         <source>imported from {name}</source>
         <translation>导入自 {name}</translation>
+    </message>
+    <message>
+        <source>sent from the {workbench} workbench (its readings: {origin})</source>
+        <translation>由{workbench}工作台发送（其读数：{origin}）</translation>
+    </message>
+    <message>
+        <source>sent from the {workbench} workbench</source>
+        <translation>由{workbench}工作台发送</translation>
+    </message>
+    <message>
+        <source>{source}, then edited in AngleBench</source>
+        <translation>{source}，之后在 AngleBench 中编辑过</translation>
+    </message>
+    <message>
+        <source>readings typed in AngleBench, except rows {rows} ({pasted} of {count}), pasted</source>
+        <translation>读数在 AngleBench 中录入，但第 {rows} 行（共 {count} 行中的 {pasted} 行）为粘贴</translation>
+    </message>
+    <message>
+        <source>{source}; rows {rows} ({pasted} of {count}) pasted into AngleBench</source>
+        <translation>{source}；第 {rows} 行（共 {count} 行中的 {pasted} 行）粘贴到 AngleBench 中</translation>
     </message>
     <message>
         <source>all {count} rows captured from the instruments</source>
