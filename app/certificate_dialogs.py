@@ -138,6 +138,19 @@ class CertificateDialogs:
             QMessageBox.StandardButton.No)
         return answer == QMessageBox.StandardButton.Yes
 
+    def confirm_lookalike_serial(self, numbers, reason: str) -> bool:
+        """The serial is new to the register but looks like the serial of ``numbers``: is
+        this another item? (rev65 F7; the answer Yes is recorded in the register)"""
+        answer = self.window.ask(
+            tr("Another item?"),
+            tr("{reason}.\n\nIs this item another than that of {numbers}? Yes: issue it; the "
+               "register records that you said so. No: nothing is issued (correct the serial "
+               "number in the certificate details).")
+            .format(reason=reason, numbers=", ".join(numbers)),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No)
+        return answer == QMessageBox.StandardButton.Yes
+
     def ask_separate_calibration(self, numbers, reason: str) -> str:
         return self._multiline_answer(tr("A calibration already reported"), tr(
             "{reason}.\n\nIf this is a calibration of its own, say why (printed on the "

@@ -227,7 +227,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                       path: str, *, supersedes: str = "", change_note: str = "",
                       replacement: bool = False, separate_calibration: str = "",
                       correction_confirmed: bool = False, raw_capture: list | None = None,
-                      another_makers_item: bool = False,
+                      another_makers_item: bool = False, another_lookalike_item: bool = False,
                       dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = "",
                       signing: tuple[str, str] = ("", ""),
                       results: Callable[[Any, CertificateRecord], bytes] | None = None,
@@ -249,6 +249,9 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     ``another_makers_item``: the user confirmed that the item is another maker's than that
     of a current certificate of the same serial and date (else AnotherMakersItem; recorded
     in the register's chain when issued).
+    ``another_lookalike_item``: the user confirmed that the item is another than that of
+    the certificates whose serial its serial looks like, one letter or digit apart (else
+    LookalikeSerial; recorded in the register's chain when issued; rev65 F7).
     ``supersedes``: an amendment (or, with ``replacement``, a replacement) of that
     certificate, of its calibration: its workbench, item (serial as printed) and date of calibration,
     else NotTheSameCalibration, before anything is issued; ``correction_confirmed``: a
@@ -300,6 +303,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                                  separate_calibration=separate_calibration,
                                  correction_confirmed=correction_confirmed,
                                  another_makers_item=another_makers_item,
+                                 another_lookalike_item=another_lookalike_item,
                                  # what the document recorded is: a test report or a
                                  # calibration certificate (in the chain, chain format 4)
                                  document_kind=lambda: "test" if made["document"].is_test_report

@@ -93,6 +93,11 @@ class CertificateView(Protocol):
         manufacturer's name (``reason``): is this another maker's item? (recorded when
         issued; No: not issued)"""
 
+    def confirm_lookalike_serial(self, numbers: tuple[str, ...], reason: str) -> bool:
+        """The serial is in no certificate of the register but looks like that of
+        ``numbers`` (``reason``, the register's words): is this another item? (recorded when
+        issued; No: not issued)"""
+
     def confirm_correction(self, revision: PendingRevision, reason: str) -> bool:
         """An amendment or replacement with another serial number or date of calibration
         than ``revision.number``'s: a correction of it (stated on it)? No: not an amendment."""
@@ -546,6 +551,15 @@ class CertificatePresenter:
                         "calibration. To correct it, select it in File › Certificate register "
                         "and press Amend… or Replace….").format(numbers=", ".join(numbers)))
                     return False
+        confirmed = (False, False)
+        if revision is None and not draft and not entered.example:
+            # another maker's item, a look-alike serial: asked before the file name, where the
+            # register can tell (rev65: a No after the file dialog left a file chosen for
+            # nothing)
+            answered = self._confirmed_before_file(kind.key, entered)
+            if answered is None:
+                return False
+            confirmed = answered
         # an amendment or a replacement is not filed under the original's number, which the
         # details hold (day review 65 F6: AB-2026-0001-A1 was issued into AB-2026-0001.pdf)
         number = (self._revision_number(revision) if revision is not None
@@ -584,7 +598,7 @@ class CertificatePresenter:
                     path=path, missing=", ".join(tr(m) for m in draft)), path), 10000)
                 return True
             return self._issue(kind, result, entered, settings, rows or [], source_name, path,
-                               revision, note, raw_capture, separate)
+                               revision, note, raw_capture, separate, confirmed)
         except (OSError, ValueError) as exc:
             self.view.tell(tr("Cannot export"), tr("{path}: {reason}. Nothing else was changed.")
                            .format(path=path, reason=explained(exc)))
@@ -622,16 +636,21 @@ class CertificatePresenter:
         return True
 
     def _issue(self, kind, result, entered, settings, rows, source_name, path, revision,
-               note, raw_capture=None, separate: str = "") -> bool:
+               note, raw_capture=None, separate: str = "",
+               confirmed: tuple[bool, bool] = (False, False)) -> bool:
+        """``confirmed``: another maker's item, another item than a look-alike serial's,
+        as the user said before the file dialog (else asked when the issue raises it)."""
         from app.certificate_issue import IssuedNotWritten, issue_certificate
         from models.register.store import (
             AnotherMakersItem,
+            LookalikeSerial,
             NotTheSameCalibration,
             RegisterError,
             SameCalibrationIssued,
         )
 
-        corrected = another_maker = False
+        corrected = False
+        another_maker, another_item = confirmed
         try:
             while True:
                 try:
@@ -642,6 +661,7 @@ class CertificatePresenter:
                             change_note=note, replacement=bool(revision and revision.replacement),
                             separate_calibration=separate, correction_confirmed=corrected,
                             another_makers_item=another_maker,
+                            another_lookalike_item=another_item,
                             raw_capture=raw_capture,
                             dcc=self._dcc_maker(kind, result, path, settings),
                             dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
@@ -669,6 +689,18 @@ class CertificatePresenter:
                     finally:
                         self.view.wait_cursor(True)
                     if not another_maker:
+                        raise
+                except LookalikeSerial as exc:
+                    # a serial one look-alike from an item's (rev65 F7): asked, a Yes recorded
+                    if another_item:
+                        raise
+                    self.view.wait_cursor(False)
+                    try:
+                        another_item = self.view.confirm_lookalike_serial(exc.numbers,
+                                                                          explained(exc))
+                    finally:
+                        self.view.wait_cursor(True)
+                    if not another_item:
                         raise
                 except NotTheSameCalibration as exc:
                     # another item's or another day's details: a correction only when the
@@ -722,6 +754,34 @@ class CertificatePresenter:
         self.view.show_status(self._with_dcc(said.format(number=number, path=path), path),
                               10000)
         return True
+
+    def _confirmed_before_file(self, workbench: str, entered: CertificateMetadata
+                               ) -> tuple[bool, bool] | None:
+        """The register's questions about an original (Register.confirmations_needed:
+        another maker's item, a look-alike serial), asked before the file name: (another
+        maker's item, another item) as answered; None after a No (said: nothing issued).
+        (False, False) when the register cannot be read now: the issue says why."""
+        from models.register.store import AnotherMakersItem, RegisterError
+
+        try:
+            with self.open_register() as register:
+                questions = register.confirmations_needed(workbench, entered)
+        except (RegisterError, OSError):
+            return False, False
+        another_maker = another_item = False
+        for question in questions:
+            if isinstance(question, AnotherMakersItem):
+                another_maker = said = self.view.confirm_another_maker(question.numbers,
+                                                                       explained(question))
+            else:
+                another_item = said = self.view.confirm_lookalike_serial(question.numbers,
+                                                                         explained(question))
+            if not said:
+                self.view.tell(tr("Not issued"), tr(
+                    "{reason}. No certificate was written or recorded.").format(
+                    reason=explained(question)))
+                return None
+        return another_maker, another_item
 
     def _reporting(self, workbench: str, entered: CertificateMetadata) -> tuple[str, ...]:
         """The current certificates that already report this calibration (() when the

@@ -121,6 +121,11 @@ def _parser(words, kinds: tuple[str, ...] | None = None,
         "date of calibration under another manufacturer's name, and this is indeed another "
         "maker's item (else it is refused: a maker's name spelt otherwise is the same "
         "maker); recorded in the register that you said so")))
+    p.add_argument("--another-lookalike-item", action="store_true", help=words(QT_TR_NOOP(
+        "with --certificate: the serial number is in no certificate of the register but "
+        "looks like one that is (one letter or digit that prints alike, case aside: "
+        "1ra-0815 for LRA-0815), and this is indeed another item (else it is refused, "
+        "naming that certificate); recorded in the register that you said so")))
     p.add_argument("--results", metavar="OUT.csv|OUT.xlsx",
                    help=words(QT_TR_NOOP("also write the results per point (with U) as CSV or "
                                          "XLSX")))
@@ -760,6 +765,8 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
                                        separate_calibration=getattr(args, "separate_calibration", ""),
                                        another_makers_item=getattr(args, "another_makers_item",
                                                                    False),
+                                       another_lookalike_item=getattr(
+                                           args, "another_lookalike_item", False),
                                        results=_issued_results(args) if args.results else None,
                                        results_path=args.results or "",
                                        raw_capture=raw_capture)

@@ -239,6 +239,15 @@ def _print_record(record, register, words) -> None:
             recorded_at=entry["recorded_at"], maker=entry["manufacturer"] or "—",
             others=", ".join(f"{o.get('number', '')} ({o.get('manufacturer', '')})"
                              for o in entry["others"])))
+    # the user's word that a serial one look-alike from another certificate's is another
+    # item (rev65 F7: "1ra-0815" issued as another item than LRA-0815, unasked)
+    for entry in register.lookalike_serial_confirmations(record.number):
+        lines.append(message(QT_TR_NOOP(
+            "  another item, as {user} confirmed at issue ({recorded_at}): serial {serial}, not "
+            "the item of {others}"), user=entry["os_user"] or "—",
+            recorded_at=entry["recorded_at"], serial=entry["serial"] or "—",
+            others=", ".join(f"{o.get('number', '')} ({o.get('serial', '')})"
+                             for o in entry["others"])))
     due = register.due_date(record.item_serial, record.item_manufacturer or "") \
         if record.item_serial else None
     if due:

@@ -20,7 +20,7 @@ __all__ = ["RegisterPresenter", "RegisterView"]
 
 COLUMNS = (QT_TR_NOOP("Number"), QT_TR_NOOP("Status"), QT_TR_NOOP("Revision"),
            QT_TR_NOOP("Document"), QT_TR_NOOP("Issued"), QT_TR_NOOP("Calibrated"), QT_TR_NOOP("Workbench"),
-           QT_TR_NOOP("Serial"), QT_TR_NOOP("Customer"))
+           QT_TR_NOOP("Serial"), QT_TR_NOOP("Manufacturer"), QT_TR_NOOP("Customer"))
 
 
 class RegisterView(Protocol):
@@ -32,9 +32,13 @@ class RegisterView(Protocol):
 
     def show_history(self, serial: str, series: dict[str, tuple[list[float], list[float]]],
                      dates: list[str], due: str, interval_days: int,
-                     makers: tuple[str, ...] = ()) -> None:
+                     makers: tuple[str, ...] = (), manufacturer: str = "",
+                     makerless: tuple[str, ...] = ()) -> None:
         """``makers``: the item's certificate names no maker and the serial's name these
-        (no due date without the maker)."""
+        (no due date without the maker). ``manufacturer``: whose item the history is ("":
+        named by its serial alone); ``makerless``: the dates of calibration of the
+        certificates in it that name no manufacturer (a maker's history holds them: said,
+        not taken for that maker's)."""
 
     def ask_pdf_to_verify(self) -> str: ...
 
@@ -104,7 +108,7 @@ class RegisterPresenter:
             (r.number, translated(status_words(r.status)),
              translated(revision_words(r.revision)), translated(kind_words(r.document_kind)),
              r.issue_date, r.calibration_date, _workbench_title(r.workbench),
-             r.item_serial, r.customer) for r in self.records])
+             r.item_serial, r.item_manufacturer or "", r.customer) for r in self.records])
 
     def check_pdfs(self) -> None:
         """Check every stored PDF against the SHA-256 recorded at issue on a worker thread
@@ -297,8 +301,13 @@ class RegisterPresenter:
                 xs, ys = series.setdefault(name, ([], []))
                 xs.append(_days(r.calibration_date or r.issue_date))
                 ys.append(value)
+        # a named maker's history holds the serial's certificates naming no maker: said
+        # (rev65: a reader took them for that maker's)
+        makerless = tuple(r.calibration_date or r.issue_date for r in records
+                          if manufacturer.strip() and not (r.item_manufacturer or "").strip())
         self.view.show_history(serial, series, [r.calibration_date for r in records],
-                               due.isoformat() if due else "", interval, makers)
+                               due.isoformat() if due else "", interval, makers,
+                               " ".join(manufacturer.split()), makerless)
 
     def set_interval(self, serial: str, days: int) -> None:
         """The interval of the instrument whose history is shown: its serial's item of its

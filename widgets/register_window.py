@@ -153,6 +153,8 @@ class RegisterWindow(QDialog):
         self.figure.currentIndexChanged.connect(
             lambda _i: self._draw_history(self.figure.currentData() or ""))
         self._series: dict = {}
+        #: the days (ordinal) of the shown history's certificates that name no manufacturer
+        self._makerless: set[float] = set()
         self.interval = QSpinBox()
         self.interval.setRange(0, 3650)
         live(self.interval.setSuffix, tr(" days"))
@@ -234,11 +236,15 @@ class RegisterWindow(QDialog):
         rows = self.table.selectionModel().selectedRows()
         return rows[0].row() if rows else -1
 
-    def show_history(self, serial, series, dates, due, interval_days, makers=()) -> None:
+    def show_history(self, serial, series, dates, due, interval_days, makers=(),
+                     manufacturer="", makerless=()) -> None:
         """``makers``: the item names no maker, and the serial's certificates name these:
-        no due date without the maker (rev65 F4)."""
+        no due date without the maker (rev65 F4). ``manufacturer``: whose item it is, named
+        in the title (the schedule is per serial and maker since schema 7); ``makerless``:
+        the dates of its certificates that name no manufacturer, drawn hollow and said."""
         self.serial = serial
         self._series = dict(series)
+        self._makerless = {float(dt.date.fromisoformat(d).toordinal()) for d in makerless if d}
         chosen = self.figure.currentData()
         self.figure.blockSignals(True)
         self.figure.clear()
@@ -266,8 +272,12 @@ class RegisterWindow(QDialog):
                                         (hi + pad - EPOCH) * 86400.0, padding=0)
         self.interval.setValue(interval_days)
         self.history_title.setText(
-            tr("Instrument {serial}: {count} calibration(s)").format(serial=serial,
-                                                                    count=len(dates))
+            (tr("Instrument {serial} of {maker}: {count} calibration(s)").format(
+                serial=serial, maker=manufacturer, count=len(dates)) if manufacturer else
+             tr("Instrument {serial}, no manufacturer named: {count} calibration(s)").format(
+                serial=serial, count=len(dates)))
+            + (tr(" ({n} on certificates naming no manufacturer, drawn hollow: {dates})").format(
+                n=len(makerless), dates=", ".join(makerless)) if makerless else "")
             + (tr(", next due {date}").format(date=due) if due
                else tr(", no due date: the certificate names no manufacturer, and this "
                        "serial's name {makers} (the due date is per maker's item)").format(
@@ -287,6 +297,13 @@ class RegisterWindow(QDialog):
         self.history_curves.append(self.history_plot.plot(
             seconds, ys, name=declared(name), pen=pg.mkPen(COLOURS[0], width=2), symbol="o",
             symbolBrush=COLOURS[0], symbolPen=None))
+        unnamed = [(s, y) for s, x, y in zip(seconds, xs, ys, strict=True)
+                   if x in self._makerless]
+        if unnamed:  # a maker's history: the certificates naming none drawn hollow, named
+            self.history_curves.append(self.history_plot.plot(
+                [s for s, _y in unnamed], [y for _s, y in unnamed], pen=None,
+                name=tr("certificate naming no manufacturer"), symbol="o", symbolSize=12,
+                symbolBrush="w", symbolPen=pg.mkPen(COLOURS[1], width=2)))
         self.history_plot.setLabel("left", declared(name))
 
     def ask_pdf_to_verify(self) -> str:

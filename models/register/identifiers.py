@@ -73,7 +73,7 @@ __all__ = ["IdentifierError", "amendment_form_keys", "amendment_stems", "as_prin
            "folded_identifier_key", "folded_serial_key", "identifier_key", "identifier_keys",
            "no_serial", "normalise_identifier", "reads_as_amendment", "reads_as_amendment_of",
            "refuse_unprinted", "same_identifier", "same_name", "same_serial", "serial_key",
-           "serial_keys"]
+           "serial_keys", "serial_lookalike"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
 _DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
@@ -376,6 +376,34 @@ def same_serial(one: str, other: str) -> bool:
     """Whether two serial numbers are one item's: one of their keys (:func:`serial_keys`)
     is equal; never a chain of two keys (rev63 F10: "SN-L5" and "SN-I5" are two items)."""
     return any(a == b for a, b in zip(serial_keys(one), serial_keys(other), strict=True))
+
+
+def _one_look_alike_apart(one: str, other: str) -> bool:
+    """Whether two characters of a key are one look-alike substitution apart, case aside:
+    a case of one and a case of the other have one skeleton ("l" and "1": "L" folded is
+    "l", whose skeleton is "1"; "0" and "o": "O" is "0"), by the skeleton's own tables."""
+    return not {_skeleton(c) for c in (one, one.upper(), one.lower())}.isdisjoint(
+        _skeleton(c) for c in (other, other.upper(), other.lower()))
+
+
+def serial_lookalike(one: str, other: str) -> bool:
+    """Whether two serial numbers that are not one (:func:`same_serial`) would be by one
+    look-alike substitution more, case aside (rev65 F7: "1ra-0815", a digit for a letter
+    and a change of case at once, is LRA-0815 by none of the keys): by one of their keys
+    (:func:`serial_keys`), each to the same key of the other, they differ in one character
+    only, and that character's cases have one skeleton (a letter and the digit it prints
+    like). Never joins them: folding this into a key would make "SN-1A" one with "SN-LA",
+    two items; the register asks instead (store.LookalikeSerial). Two substitutions or more
+    ("sn-11" and "SN-LL") are not asked."""
+    if same_serial(one, other):
+        return False
+    for mine, theirs in zip(serial_keys(one), serial_keys(other), strict=True):
+        if len(mine) != len(theirs):
+            continue
+        differ = [(a, b) for a, b in zip(mine, theirs, strict=True) if a != b]
+        if len(differ) == 1 and _one_look_alike_apart(*differ[0]):
+            return True
+    return False
 
 
 #: letters and signs drawn as a dash that are no punctuation (so no separator by their

@@ -46,9 +46,9 @@ from models.register.wording import DOCUMENT_KINDS, kind_words
 if TYPE_CHECKING:
     from sqlalchemy.engine import Connection
 
-__all__ = ["AnotherMakersItem", "CertificateRecord", "IssueRequest", "NotTheSameCalibration",
-           "PrintedHead", "Register", "RegisterError", "RegisterTampered", "SameCalibrationIssued",
-           "lab_timezone", "software_versions"]
+__all__ = ["AnotherMakersItem", "CertificateRecord", "IssueRequest", "LookalikeSerial",
+           "NotTheSameCalibration", "PrintedHead", "Register", "RegisterError",
+           "RegisterTampered", "SameCalibrationIssued", "lab_timezone", "software_versions"]
 
 LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
              "psycopg")
@@ -89,6 +89,20 @@ class AnotherMakersItem(RegisterError):
     makers' serial "001" are two items, so it is issued when the user confirms that it is
     another maker's item; the confirmation is a chained entry of the register ("another
     maker's item"), which `register show` lists."""
+
+    def __init__(self, text, numbers: tuple[str, ...]) -> None:
+        super().__init__(text)
+        self.numbers = numbers
+
+
+class LookalikeSerial(RegisterError):
+    """An original whose serial number is no serial in the register of its maker (a maker
+    named on only one side is any) but is one look-alike substitution, case aside, from the
+    serial of certificates ``numbers`` (identifiers.serial_lookalike; rev65 F7: "1ra-0815",
+    a digit for a letter and the case at once, issued as another item than LRA-0815, its
+    history and due date split). The keys are not widened ("SN-1A" and "SN-LA" are two
+    items), so it is issued when the user confirms it is another item; the confirmation is
+    a chained entry of the register ("lookalike_serial"), which `register show` lists."""
 
     def __init__(self, text, numbers: tuple[str, ...]) -> None:
         super().__init__(text)
@@ -862,8 +876,8 @@ class Register:
               supersedes: str = "", change_note: str = "", replacement: bool = False,
               separate_calibration: str | None = None,
               document_kind: str | Callable[[], str] | None = None,
-              correction_confirmed: bool = False, another_makers_item: bool = False
-              ) -> tuple[CertificateRecord, bytes]:
+              correction_confirmed: bool = False, another_makers_item: bool = False,
+              another_lookalike_item: bool = False) -> tuple[CertificateRecord, bytes]:
         """Allocate the number (or check the one given), render the PDF with it and with
         the chain's head before it, record it. The PDF is rendered outside any lock with
         the number and head the register expects next; one short transaction then checks
@@ -889,6 +903,12 @@ class Register:
         :class:`AnotherMakersItem` unless ``another_makers_item`` confirms it is another
         maker's item; the confirmation is then a chained entry ("another_maker", the new
         number, the makers and the certificates: :meth:`another_maker_confirmations`).
+        Where the serial is none of its maker's in the register but one look-alike
+        substitution, case aside, from one that is (identifiers.serial_lookalike: "1ra-0815"
+        for LRA-0815), it raises :class:`LookalikeSerial` unless ``another_lookalike_item``
+        confirms it is another item; the confirmation is then a chained entry
+        ("lookalike_serial": :meth:`lookalike_serial_confirmations`), committed in the one
+        transaction with the certificate. :meth:`confirmations_needed` tells both before.
 
         ``document_kind``: what the document rendered is, "calibration" (a calibration
         certificate) or "test" (a test report), or a callable that says so after each
@@ -958,6 +978,9 @@ class Register:
                     # (_corrections); an original naming another maker is asked (rev65 F1)
                     others = () if supersedes or separate_calibration is None else \
                         self._another_makers(conn, request.workbench, meta)
+                    # a serial one look-alike from an item's, new to the register (rev65 F7)
+                    lookalikes = () if supersedes or separate_calibration is None else \
+                        self._lookalike_serials(conn, meta)
                     corrected = () if plan.original is None else self._corrections(
                         conn, plan.original, request.workbench, meta, correction_confirmed)
                 separate = " ".join((separate_calibration or "").split())
@@ -972,19 +995,9 @@ class Register:
                         date=meta.calibration_date or "—"),
                         same)
                 if others and not another_makers_item:
-                    raise AnotherMakersItem(message(QT_TR_NOOP(
-                        "{numbers} reports serial {serial}, calibrated {date}, of {makers}, not "
-                        "of {maker}: a maker's name spelt otherwise is the same maker, and this "
-                        "would be a second certificate of that calibration. Issue it only if it "
-                        "is another maker's item with the same serial (it is then recorded in "
-                        "the register that you said so; on the command line: "
-                        "--another-makers-item)"),
-                        numbers=", ".join(n for n, _m in others),
-                        serial=meta.item_serial or meta.item_description or "—",
-                        date=meta.calibration_date or "—",
-                        makers=", ".join(sorted({m for _n, m in others})),
-                        maker=_printed(meta.item_manufacturer) or "—"),
-                        tuple(n for n, _m in others))
+                    raise _another_makers_item(meta, others)
+                if lookalikes and not another_lookalike_item:
+                    raise _lookalike_serial(meta, lookalikes)
                 original = plan.original
                 final = dataclasses.replace(
                     meta, certificate_number=plan.number, issue_date=issue_date.isoformat(),
@@ -1059,6 +1072,13 @@ class Register:
                                 "calibration_date": meta.calibration_date,
                                 "others": [{"number": n, "manufacturer": m}
                                            for n, m in others]})
+                        if lookalikes:  # said by the user: recorded, as another maker's
+                            self._append_entry(conn, "lookalike_serial", plan.number, {
+                                "serial": meta.item_serial,
+                                "manufacturer": meta.item_manufacturer,
+                                "calibration_date": meta.calibration_date,
+                                "others": [{"number": n, "serial": k, "manufacturer": m}
+                                           for n, k, m in lookalikes]})
                         # its results file may now be recorded, by this issuer only
                         self._results_due.add(plan.number)
                         return record, pdf
@@ -1148,15 +1168,53 @@ class Register:
                  not no_serial(row.item_serial)
                  and same_serial(row.item_serial, meta.item_serial)))
 
-    def another_maker_confirmations(self, number: str = "") -> builtins.list[dict]:
-        """The certificates issued after the user confirmed that the item is another
-        maker's than that of a current certificate of the same serial and date
-        (:class:`AnotherMakersItem`), from the chained entries: ``number``,
-        ``manufacturer``, ``others`` ([{number, manufacturer}]), ``recorded_at``,
-        ``os_user``; every one, or ``number``'s."""
+    def confirmations_needed(self, workbench: str, meta: CertificateMetadata
+                             ) -> tuple[RegisterError, ...]:
+        """What :meth:`issue` would ask the user to confirm for an original of ``meta`` on
+        ``workbench``, as the errors it would raise unconfirmed (:class:`AnotherMakersItem`,
+        :class:`LookalikeSerial`), worded as it words them: the window asks before it asks
+        for a file name (rev65: a No after the file dialog left a file chosen for
+        nothing). The issue checks again (the register may change meanwhile)."""
+        from models.register.identifiers import IdentifierError, normalise_identifier
+
+        try:
+            meta = dataclasses.replace(meta, item_serial=normalise_identifier(meta.item_serial))
+        except IdentifierError:
+            return ()  # the issue refuses it, saying why
+        with self._read() as conn:
+            others = self._another_makers(conn, workbench, meta)
+            lookalikes = self._lookalike_serials(conn, meta)
+        return ((_another_makers_item(meta, others),) if others else ()) + \
+            ((_lookalike_serial(meta, lookalikes),) if lookalikes else ())
+
+    def _lookalike_serials(self, conn, meta: CertificateMetadata
+                           ) -> tuple[tuple[str, str, str], ...]:
+        """The certificates (number, serial, manufacturer) of every status whose serial is
+        one look-alike substitution, case aside, from ``meta``'s (identifiers.
+        serial_lookalike), of its maker (a certificate or ``meta`` naming none is any:
+        _same_maker), when no certificate of its maker has its serial (then it is that
+        item's, asked nothing: rev65 F7). () for an item of no serial."""
+        from models.register.identifiers import no_serial, serial_lookalike
+
+        if no_serial(meta.item_serial):
+            return ()
+        c = self._schema.CERTIFICATES.c
+        rows = [row for row in conn.execute(self._sa.select(
+                    c.number, c.item_serial, c.item_manufacturer).order_by(c.id))
+                if not no_serial(row.item_serial or "")
+                and _same_maker(row.item_manufacturer, meta.item_manufacturer)]
+        if any(_same_instrument(row.item_serial, meta.item_serial) for row in rows):
+            return ()
+        return tuple((row.number, row.item_serial, _printed(row.item_manufacturer))
+                     for row in rows if serial_lookalike(meta.item_serial, row.item_serial))
+
+    def _confirmations(self, kind: str, number: str) -> builtins.list[dict]:
+        """The chained entries of ``kind`` (a confirmation the user gave at issue), every
+        one or ``number``'s: ``number``, ``manufacturer``, ``serial``, ``others``,
+        ``recorded_at``, ``os_user``."""
         entries = self._schema.ENTRIES
         query = self._sa.select(entries.c.subject, entries.c.body_json, entries.c.recorded_at,
-                                entries.c.os_user).where(entries.c.kind == "another_maker")
+                                entries.c.os_user).where(entries.c.kind == kind)
         if number:
             query = query.where(entries.c.subject == number)
         with self._read() as conn:
@@ -1165,9 +1223,25 @@ class Register:
         for row in rows:
             body = json.loads(row.body_json or "{}")
             out.append({"number": row.subject, "manufacturer": body.get("manufacturer", ""),
+                        "serial": body.get("serial", ""),
                         "others": body.get("others", []), "recorded_at": row.recorded_at,
                         "os_user": row.os_user})
         return out
+
+    def another_maker_confirmations(self, number: str = "") -> builtins.list[dict]:
+        """The certificates issued after the user confirmed that the item is another
+        maker's than that of a current certificate of the same serial and date
+        (:class:`AnotherMakersItem`), from the chained entries: ``number``,
+        ``manufacturer``, ``others`` ([{number, manufacturer}]), ``recorded_at``,
+        ``os_user``; every one, or ``number``'s."""
+        return self._confirmations("another_maker", number)
+
+    def lookalike_serial_confirmations(self, number: str = "") -> builtins.list[dict]:
+        """The certificates issued after the user confirmed that their serial, one
+        look-alike from another certificate's, is another item's (:class:`LookalikeSerial`),
+        from the chained entries: ``number``, ``serial``, ``manufacturer``, ``others``
+        ([{number, serial, manufacturer}]), ``recorded_at``, ``os_user``."""
+        return self._confirmations("lookalike_serial", number)
 
     def _corrections(self, conn, original: CertificateRecord, workbench: str,
                      meta: CertificateMetadata, confirmed: bool) -> tuple[Any, ...]:
@@ -2038,6 +2112,37 @@ def _same_maker(kept: str | None, manufacturer: str) -> bool:
     if not (kept or "").strip() or not (manufacturer or "").strip():
         return True
     return same_maker_name(kept or "", manufacturer)
+
+
+def _another_makers_item(meta: CertificateMetadata, others) -> AnotherMakersItem:
+    """The question of another maker's item (:meth:`Register.issue`), as raised."""
+    return AnotherMakersItem(message(QT_TR_NOOP(
+        "{numbers} reports serial {serial}, calibrated {date}, of {makers}, not "
+        "of {maker}: a maker's name spelt otherwise is the same maker, and this "
+        "would be a second certificate of that calibration. Issue it only if it "
+        "is another maker's item with the same serial (it is then recorded in "
+        "the register that you said so; on the command line: "
+        "--another-makers-item)"),
+        numbers=", ".join(n for n, _m in others),
+        serial=meta.item_serial or meta.item_description or "—",
+        date=meta.calibration_date or "—",
+        makers=", ".join(sorted({m for _n, m in others})),
+        maker=_printed(meta.item_manufacturer) or "—"),
+        tuple(n for n, _m in others))
+
+
+def _lookalike_serial(meta: CertificateMetadata, lookalikes) -> LookalikeSerial:
+    """The question of a look-alike serial (:meth:`Register.issue`; rev65 F7), as raised:
+    naming the certificates and their serials."""
+    return LookalikeSerial(message(QT_TR_NOOP(
+        "serial {serial} is in no certificate of the register, but looks like {others} "
+        "(one letter or digit that prints alike, case aside): it may be that item with its "
+        "serial mistyped, which would split its history and due date. Issue it only if it "
+        "is another item (it is then recorded in the register that you said so; on the "
+        "command line: --another-lookalike-item)"),
+        serial=meta.item_serial,
+        others=", ".join(f"{k} ({n}{', ' + m if m else ''})" for n, k, m in lookalikes)),
+        tuple(n for n, _k, _m in lookalikes))
 
 
 def _parse_time(text: str) -> dt.datetime:

@@ -16,9 +16,10 @@ import datetime as dt
 import pytest
 
 from models.certificate.metadata import CertificateMetadata
-from models.register.identifiers import same_identifier, same_serial
+from models.register.identifiers import same_identifier, same_serial, serial_lookalike
 from models.register.store import (
     IssueRequest,
+    LookalikeSerial,
     NotTheSameCalibration,
     Register,
     RegisterError,
@@ -46,10 +47,11 @@ def register(tmp_path):
         yield reg
 
 
-def _original(register, **changes):
+def _original(register, another_lookalike_item=False, **changes):
     record, _pdf = register.issue(IssueRequest("theodolite", _meta(**changes), PROJECT, {}),
                                   _render, separate_calibration="",
-                                  document_kind="calibration")
+                                  document_kind="calibration",
+                                  another_lookalike_item=another_lookalike_item)
     return record
 
 
@@ -141,9 +143,17 @@ def test_f3_a_number_with_a_mark_is_issued_once(register):
                                             ("Ai55", "A155"), ("XL-100", "XI-100"),
                                             ("K0L7", "KOI7")])
 def test_f10_serials_that_print_otherwise_are_two_items(register, one, other):
+    """Two items, never one; one look-alike substitution apart, case aside ("SN-L5" and
+    "SN-15"), the second is issued only with the user's word that it is another item
+    (rev65 F7), still as an item of its own."""
     assert not same_serial(one, other)
     _original(register, item_serial=one, calibration_date="2026-11-04")
-    second = _original(register, item_serial=other, calibration_date="2026-11-04")
+    confirm = {}
+    if serial_lookalike(one, other):
+        with pytest.raises(LookalikeSerial):
+            _original(register, item_serial=other, calibration_date="2026-11-04")
+        confirm = {"another_lookalike_item": True}
+    second = _original(register, item_serial=other, calibration_date="2026-11-04", **confirm)
     assert second.change_note == "" and second.item_serial == other
 
 
