@@ -2240,6 +2240,18 @@ Is this item another manufacturer&apos;s than that of {numbers}? Yes: issue it; 
 该被校件是否属于与 {numbers} 不同的另一制造商？是：签发，登记册会记录这是您的说明。否：不签发任何证书（要更正 {numbers}，请在 文件 › 证书登记册 中修订或替代它）。</translation>
     </message>
     <message>
+        <source>Another item?</source>
+        <translation>是另一件物品吗？</translation>
+    </message>
+    <message>
+        <source>{reason}.
+
+Is this item another than that of {numbers}? Yes: issue it; the register records that you said so. No: nothing is issued (correct the serial number in the certificate details).</source>
+        <translation>{reason}。
+
+这件物品是否不同于 {numbers} 的物品？是：签发；登记册会记录您的确认。否：不签发任何证书（请在证书信息中更正序列号）。</translation>
+    </message>
+    <message>
         <source>A calibration already reported</source>
         <translation>该校准已有证书</translation>
     </message>
@@ -3063,6 +3075,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>  another maker&apos;s item, as {user} confirmed at issue ({recorded_at}): {maker}, not the maker of {others}</source>
         <translation>  另一制造商的被校件，由 {user} 在签发时确认（{recorded_at}）：{maker}，而不是 {others} 的制造商</translation>
+    </message>
+    <message>
+        <source>  another item, as {user} confirmed at issue ({recorded_at}): serial {serial}, not the item of {others}</source>
+        <translation>  另一件物品，由 {user} 在签发时确认（{recorded_at}）：序列号 {serial}，不是 {others} 的物品</translation>
     </message>
     <message>
         <source>  next calibration of {serial} due: {date}</source>
@@ -4316,6 +4332,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source> days</source>
+        <extracomment>the days (ordinal) of the shown history&apos;s certificates that name no manufacturer</extracomment>
         <translation> 天</translation>
     </message>
     <message>
@@ -4335,8 +4352,16 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>校准周期</translation>
     </message>
     <message>
-        <source>Instrument {serial}: {count} calibration(s)</source>
-        <translation>仪器 {serial}：{count} 次校准</translation>
+        <source>Instrument {serial} of {maker}: {count} calibration(s)</source>
+        <translation>{maker} 的仪器 {serial}：{count} 次校准</translation>
+    </message>
+    <message>
+        <source>Instrument {serial}, no manufacturer named: {count} calibration(s)</source>
+        <translation>仪器 {serial}（未注明制造商）：{count} 次校准</translation>
+    </message>
+    <message>
+        <source> ({n} on certificates naming no manufacturer, drawn hollow: {dates})</source>
+        <translation>（其中 {n} 次的证书未注明制造商，以空心点绘出：{dates}）</translation>
     </message>
     <message>
         <source>, next due {date}</source>
@@ -4349,6 +4374,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>, no due date (set an interval)</source>
         <translation>，无到期日（请设置周期）</translation>
+    </message>
+    <message>
+        <source>certificate naming no manufacturer</source>
+        <translation>未注明制造商的证书</translation>
     </message>
     <message>
         <source>Verify a certificate PDF</source>
@@ -5526,6 +5555,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>with --certificate: a certificate still valid reports the same serial number and date of calibration under another manufacturer&apos;s name, and this is indeed another maker&apos;s item (else it is refused: a maker&apos;s name spelt otherwise is the same maker); recorded in the register that you said so</source>
         <translation>与 --certificate 一起使用：一份仍然有效的证书以另一制造商的名称报告了相同的序列号和校准日期，而这确实是另一制造商的被校件（否则予以拒绝：写法不同的制造商名称仍是同一制造商）；登记册会记录这是您的说明</translation>
+    </message>
+    <message>
+        <source>with --certificate: the serial number is in no certificate of the register but looks like one that is (one letter or digit that prints alike, case aside: 1ra-0815 for LRA-0815), and this is indeed another item (else it is refused, naming that certificate); recorded in the register that you said so</source>
+        <translation>与 --certificate 同用：序列号不在登记册的任何证书中，但与其中某一序列号相似（相差一个印刷相似的字母或数字，大小写不计：1ra-0815 与 LRA-0815），而这确实是另一件物品（否则拒绝签发，并指出该证书）；您的确认记录在登记册中</translation>
     </message>
     <message>
         <source>also write the results per point (with U) as CSV or XLSX</source>
@@ -7850,6 +7883,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>record {number}: the stored PDF does not match the SHA-256 recorded at issue</source>
         <translation>记录 {number}：所存的 PDF 与签发时记录的 SHA-256 不符</translation>
+    </message>
+    <message>
+        <source>serial {serial} is in no certificate of the register, but looks like {others} (one letter or digit that prints alike, case aside): it may be that item with its serial mistyped, which would split its history and due date. Issue it only if it is another item (it is then recorded in the register that you said so; on the command line: --another-lookalike-item)</source>
+        <translation>序列号 {serial} 不在登记册的任何证书中，但与 {others} 相似（相差一个印刷相似的字母或数字，大小写不计）：可能是该物品的序列号输错了，这会使其历史和到期日一分为二。仅当它是另一件物品时才签发（届时登记册会记录您的确认；命令行：--another-lookalike-item）</translation>
     </message>
     <message>
         <source>counter {name}: it stands at {value}, but the records reach {recorded}: it was set back after issue (a number would be issued twice)</source>
