@@ -59,12 +59,12 @@ def _linux_with(monkeypatch, absent: set[str], **environment: str) -> None:
         monkeypatch.delenv(name, raising=False)
     for name, value in environment.items():
         monkeypatch.setenv(name, value)
-    real = ctypes.CDLL
-
     def cdll(name, *args, **kwargs):
+        # every other library loads, whatever this machine has (a fresh one may lack
+        # libxcb-icccm4 and others until .ci/run installs them)
         if name in absent:
             raise OSError(f"{name}: cannot open shared object file")
-        return real(name, *args, **kwargs)
+        return object()
 
     monkeypatch.setattr(ctypes, "CDLL", cdll)
 
