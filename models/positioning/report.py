@@ -67,6 +67,7 @@ from models.uncertainty.figure_intervals import (
     readings_seed,
 )
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.probability_text import percent_text
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
            "intervals_withheld", "readings_step_component", "stated_figure_intervals",
@@ -369,7 +370,7 @@ def _figure_cells(value: float | None, interval: FigureInterval | None,
     return (Exact(text, float(value)) if isinstance(text, str) and value is not None else text,
             Exact(f"{interval.low:.{d}f}{sym} … {interval.high:.{d}f}{sym}",
                   (float(interval.low), float(interval.high))),
-            f"{100.0 * interval.probability:.2f} %")
+            f"{percent_text(interval.probability)} %")
 
 
 def _figure_rows(result: PositioningResult,
