@@ -19,6 +19,7 @@ from models.polygon.budget_inputs import (
     TILT_BOUND_INPUT,
     is_set_up_input,
 )
+from models.polygon.indicative_figures import indicative_figures_json
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
@@ -707,6 +708,8 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
         out["iso230_arcsec"] = iso230_figures(result)
         if result.reversal_arcsec is not None:
             out["reversal_error_arcsec"] = float(np.max(np.abs(result.reversal_arcsec)))
+    # B, B̄ and the harmonics as measured, with null intervals and why (day review 66 F4)
+    out.update(indicative_figures_json(result))
     return out
 
 
