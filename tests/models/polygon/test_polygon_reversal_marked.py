@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from models.certificate.metadata import CertificateMetadata
-from models.polygon.analysis import POLYGON, to_json
+from models.polygon.analysis import POLYGON, summary, to_json
 from models.polygon.report import polygon_certificate
 from models.readings.sheet import ReadingsSheet
 from tests.polygon_sets_simulator import Bench
@@ -59,6 +59,9 @@ def test_the_reversal_and_harmonics_are_marked_with_no_interval_and_why():
     assert "zero drift carried between the sets" in str(reversal[2])
     harmonics = _row(document, "Harmonics 1st / 2nd")
     assert "no coverage interval: an amplitude is biased high" in str(harmonics[2])
+    said = summary(result)  # the command line's and the window's text alike
+    assert "no coverage interval: one set per direction" in said
+    assert "no coverage interval: an amplitude is biased high" in said
     data = to_json(result)
     for key, reason in (("reversal_figures", "one set per direction"),
                         ("harmonic_figures", "biased high")):
