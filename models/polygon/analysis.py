@@ -23,6 +23,7 @@ from models.polygon.indicative_figures import (
     harmonics_reason,
     indicative_figures_json,
     no_interval,
+    reversal_figures,
     reversal_reason,
 )
 from models.polygon.model import (
@@ -795,8 +796,8 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
             jjf.append(no_interval(message(
                 QT_TR_NOOP(", reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward "
                            "sets' error minus reverse sets')"),
-                value=f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
-                mean=f"{result.mean_reversal_arcsec:+.2f}\""), reversal_why))
+                value=f"{reversal_figures(result)['B']:.2f}\"",
+                mean=f"{-reversal_figures(result)['B_mean']:+.2f}\""), reversal_why))
         out.append(joined(jjf))
         figs = iso230_figures(result)
         out.append("ISO 230-2: " + ", ".join(
