@@ -586,6 +586,23 @@ def _with_reference_dcc(args: argparse.Namespace, kind, rows, settings, words):
     return rows
 
 
+def _readings_source(path: str) -> str:
+    """The certificate's "Readings:" of the file ``path`` as the window says it (day review
+    66 F7: the command line named its basename only): "imported from NAME (SHA-256 …)", or
+    "the bundled sample NAME" when it is one of resources/samples."""
+    import resources
+    from models.certificate.readings_origin import ImportedFrom, imported_source
+    from models.project.file import file_sha256
+
+    try:
+        digest = file_sha256(path)
+    except OSError:  # read once already; gone since: named without a digest
+        digest = ""
+    samples = Path(resources.__file__).resolve().parent / "samples"
+    sample = Path(path).resolve().parent == samples
+    return imported_source(ImportedFrom(Path(path).name, digest, sample), edited=False)
+
+
 def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:
     table = read_table(path)
     try:
@@ -760,7 +777,7 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
                    if args.dcc else None)
             record = issue_certificate(register, kind, result, metadata,
                                        kind.settings_with_defaults(settings), rows,
-                                       Path(args.file).name, args.certificate,
+                                       _readings_source(args.file), args.certificate,
                                        dcc=dcc, dcc_path=args.dcc or "",
                                        separate_calibration=getattr(args, "separate_calibration", ""),
                                        another_makers_item=getattr(args, "another_makers_item",
@@ -879,11 +896,12 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
             _say(f"anglebench analyze: {_why(exc, words)}")
             return EXIT_BAD_INPUT
     try:
-        document = kind.certificate_document(result, metadata, Path(args.file).name, settings)
+        source = _readings_source(args.file)
+        document = kind.certificate_document(result, metadata, source, settings)
         if raw_capture:  # a draft or a specimen names the capture as the issue does
             from app.certificate_issue import readings_edited_after_capture, readings_stated
 
-            origin, digest = readings_stated(kind.key, Path(args.file).name, rows(),
+            origin, digest = readings_stated(kind.key, source, rows(),
                                              raw_capture)
             document = dataclasses.replace(
                 kind.certificate_document(result, metadata, origin, settings),

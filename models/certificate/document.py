@@ -171,17 +171,6 @@ def _dof_text(nu: float) -> str:
     return f"{nu:.0f}" if nu < 1e4 else "≥ 10⁴"
 
 
-def _dof_figure(nu: float) -> str:
-    """ν as a figure after "ν_eff =": "∞", "12", or "2.3×10⁵" (not "= ≥ 10⁴")."""
-    if not np.isfinite(nu):
-        return "∞"
-    if nu < 1e4:
-        return f"{nu:.0f}"
-    exponent = int(np.floor(np.log10(nu)))
-    superscript = str(exponent).translate(str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹"))
-    return f"{nu / 10 ** exponent:.1f}×10{superscript}"
-
-
 def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
                  withheld: bool = False) -> Table:
     """The budget at its worst point as a printable table, with the combined line
@@ -210,13 +199,19 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
         rows.append((message(QT_TR_NOOP("U stated: raised to the laboratory's CMC (k = {k})"),
                              k=f"{k:.2f}"), "", "", "", "", "", "",
                      _fmt(float(budget.expanded[i])), "", ""))
+    # ν as the table's line says it (day review 66 F8: the note's "1.0×10⁸" beside its "≥ 10⁴")
     note = message(QT_TR_NOOP("Budget at {point}, the point with the largest U. k = {k} is "
+                              "Student's t for ν ≥ 10⁴, the effective degrees of freedom "
+                              "(Welch–Satterthwaite), and a coverage probability of {p} %; "
+                              "each point's U uses its own ν.")
+                   if nu_text == "≥ 10⁴" else
+                   QT_TR_NOOP("Budget at {point}, the point with the largest U. k = {k} is "
                               "Student's t for ν = {nu}, the effective degrees of freedom "
                               "(Welch–Satterthwaite: {raw}) truncated to the lower integer "
                               "(GUM G.6.4), and a coverage probability of {p} %; each point's U "
                               "uses its own ν."),
-                   point=point, k=f"{k:.2f}", nu=_dof_figure(budget.truncated_dof()),
-                   raw=f"{raw:.2f}" if math.isfinite(raw) and raw < 1e4 else _dof_figure(raw),
+                   point=point, k=f"{k:.2f}", nu=nu_text,
+                   raw=f"{raw:.2f}" if math.isfinite(raw) else "∞",
                    p=f"{100 * budget.probability:.2f}")
     u = unit.strip()
     return Table(QT_TR_NOOP("Uncertainty budget"), (

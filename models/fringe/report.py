@@ -67,7 +67,8 @@ METHOD = QT_TR_NOOP(
     "channel is modelled as an offset plus fundamental and odd harmonics (3rd, 5th) with their "
     "phases, u = A₀ + Σ A_k sin(kθ + c_k), and fitted by linear least squares (the paper fits "
     "the same model by particle swarm optimisation). The interpolation error is the phase "
-    "atan2(u_sin, u_cos) minus θ; the modelled error, tabulated over the measured phase, is the "
+    "atan2(u_sin, u_cos) minus θ, given with its mean over the period removed (the phase's "
+    "origin is arbitrary); the modelled error, tabulated over the measured phase, is the "
     "correction, and the compensated error is what remains after applying it."
 )
 
@@ -501,14 +502,16 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                 "out: the error between the samples is not determined"),
                 orders=", ".join(map(str, result.unmodelled_orders)))], "; ")
         theta_model, model_error = model_error_curve(result)
-        decision = Decision(model_error, QT_TR_NOOP("as-found interpolation error (fitted "
-                                                    "model, whole period)"), withheld=withheld,
+        decision = Decision(model_error, QT_TR_NOOP(
+            "as-found interpolation error of the fitted model over the whole period, its mean "
+            "removed (the model's figure, not the sampled readings' peak-to-peak)"), withheld=withheld,
                             budget=model_error_budget(result, metadata, theta_model,
                                                       settings),
                             estimate=(_not_determined(model_error, metadata)
                                       if result.phase_source == "estimated" else None))
     else:
-        decision = Decision(raw, QT_TR_NOOP("as-found interpolation error"), _SampleNames(),
+        decision = Decision(raw, QT_TR_NOOP("as-found interpolation error, its mean removed"),
+                            _SampleNames(),
                             withheld=withheld, budget=found_budget)
     drawn = fringe_plots.figures(result)
     table_statement = message(

@@ -19,6 +19,13 @@ from models.polygon.budget_inputs import (
     TILT_BOUND_INPUT,
     is_set_up_input,
 )
+from models.polygon.indicative_figures import (
+    harmonics_reason,
+    indicative_figures_json,
+    no_interval,
+    reversal_figures,
+    reversal_reason,
+)
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
@@ -707,6 +714,8 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
         out["iso230_arcsec"] = iso230_figures(result)
         if result.reversal_arcsec is not None:
             out["reversal_error_arcsec"] = float(np.max(np.abs(result.reversal_arcsec)))
+    # B, B̄ and the harmonics as measured, with null intervals and why (day review 66 F4)
+    out.update(indicative_figures_json(result))
     return out
 
 
@@ -763,10 +772,10 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
                    "conformity (a certificate decides with U, by the rule in its details)"),
         low=f"{low}\"", high=f"{high}\"", ptp=f"{ptp}\"", accuracy=f"{tol:g}\""))
     h = result.harmonics
-    if h.amplitude.size > 2:
-        out.append(message(QT_TR_NOOP("Harmonics: 1st (eccentricity) {first}, 2nd (ellipticity) "
-                                      "{second}"),
-                           first=f"{h.amplitude[1]:.3f}\"", second=f"{h.amplitude[2]:.3f}\""))
+    if (harmonics_why := harmonics_reason(result)) is not None:
+        out.append(no_interval(message(
+            QT_TR_NOOP("Harmonics: 1st (eccentricity) {first}, 2nd (ellipticity) {second}"),
+            first=f"{h.amplitude[1]:.3f}\"", second=f"{h.amplitude[2]:.3f}\""), harmonics_why))
     if len(result.sets) > 1:
         jjf = [message(QT_TR_NOOP("JJF 1115: division error {value}"),
                        value=printed_range(  # the corrected error's, as printed
@@ -783,11 +792,12 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
         else:
             jjf.append(message(QT_TR_NOOP(", repeatability not evaluated (no direction was "
                                           "measured twice)")))
-        if result.reversal_arcsec is not None:
-            jjf.append(message(QT_TR_NOOP(", reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ "
-                                          "{mean}: forward sets' error minus reverse sets')"),
-                               value=f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
-                               mean=f"{result.mean_reversal_arcsec:+.2f}\""))
+        if (reversal_why := reversal_reason(result)) is not None:
+            jjf.append(no_interval(message(
+                QT_TR_NOOP(", reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward "
+                           "sets' error minus reverse sets')"),
+                value=f"{reversal_figures(result)['B']:.2f}\"",
+                mean=f"{-reversal_figures(result)['B_mean']:+.2f}\""), reversal_why))
         out.append(joined(jjf))
         figs = iso230_figures(result)
         out.append("ISO 230-2: " + ", ".join(

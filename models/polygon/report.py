@@ -86,6 +86,12 @@ from models.polygon.budget_inputs import (
     TILT_BOUND_INPUT,
     is_set_up_input,
 )
+from models.polygon.indicative_figures import (
+    harmonics_reason,
+    no_interval,
+    reversal_figures,
+    reversal_reason,
+)
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
@@ -882,10 +888,11 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     st, raw = result.stats, result.raw_stats
     more_rows = []
     h = result.harmonics
-    if h.amplitude.size > 2:
+    if (harmonics_why := harmonics_reason(result)) is not None:
         more_rows.append((QT_TR_NOOP("Harmonics 1st / 2nd"),
                           f"{h.amplitude[1]:.3f}\" / {h.amplitude[2]:.3f}\"",
-                          QT_TR_NOOP("eccentricity / ellipticity")))
+                          no_interval(message(QT_TR_NOOP("eccentricity / ellipticity")),
+                                      harmonics_why)))
     if result.repeatability_arcsec is not None:
         more_rows.append((QT_TR_NOOP("Repeatability (largest s over positions)"),
                           f"{np.max(result.repeatability_arcsec):.2f}\"", ""))
@@ -896,13 +903,14 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                           if any(s.tilt is not None for s in result.sets) else
                           QT_TR_NOOP("no direction was measured twice and the tilt was not "
                                      "fitted: in U the stated σ of a reading stands for it")))
-    if result.reversal_arcsec is not None:
+    if (reversal_why := reversal_reason(result)) is not None:
+        reversal = reversal_figures(result)
         more_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),
-                          f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
-                          message(QT_TR_NOOP("mean B̄ = {b} (ISO 230-2: deviation x = reference "
-                                             "− indicated, forward minus reverse; = mean of "
-                                             "ē↓ − ē↑ of the errors)"),
-                                  b=f"{-result.mean_reversal_arcsec:+.2f}\"")))
+                          f"{reversal['B']:.2f}\"",
+                          no_interval(message(QT_TR_NOOP(
+                              "mean B̄ = {b} (ISO 230-2: deviation x = reference − indicated, "
+                              "forward minus reverse; = mean of ē↓ − ē↑ of the errors)"),
+                              b=f"{reversal['B_mean']:+.2f}\""), reversal_why)))
     # to the decimal of the results table's U (GUM 7.2.6), the peak-to-peak as printed
     raw_range, raw_ptp, _ = range_cells(raw.min, raw.max, budget.max_expanded)
     corrected_range, corrected_ptp, _ = range_cells(st.min, st.max, budget.max_expanded)

@@ -42,6 +42,7 @@ from models.uncertainty.conformity import interval_decimals
 from models.uncertainty.figure_intervals import FIGURE_VALUE_NOTE, figure_objects
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
+from models.uncertainty.probability_text import percent_text
 from models.workbench import (
     AcceptsRuns,
     ComparesAfterLog,
@@ -582,7 +583,7 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
             d = decimals[key]
             parts += [", " if i else "", f"{key} {iv.low:.{d}f} … {iv.high:.{d}f}{sym}"]
             if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
-                parts.append(f" ({100 * iv.probability:.1f} %)")
+                parts.append(f" ({percent_text(iv.probability)} %)")
         out.append(joined(parts))
     elif (withheld := intervals_withheld(result)) is not None:
         out.append(message(QT_TR_NOOP("No coverage intervals: {reason}"),

@@ -23,6 +23,7 @@ from models.messages import QT_TR_NOOP, message
 from models.positioning.analysis import POSITIONING
 from models.positioning.report import figure_uncertainties
 from models.readings.sheet import ReadingsSheet
+from models.uncertainty.probability_text import percent_text
 from models.validation.axis_figures_rig import AxisCase
 
 __all__ = ["FIGURES", "PROBABILITY_STEPS", "STUDY_CASES", "TRUTHS", "VALIDATE_CASES",
@@ -191,7 +192,7 @@ def figure_coverage_cases(trials: int, case_type) -> list:
         return case_type(
             POSITIONING.title, what, COVERAGE_STUDY,
             message(QT_TR_NOOP("≥ {p} % (at most {allowed} of {tests} missed)"),
-                    p=f"{100 * row.probability:.2f}", allowed=row.allowed_misses,
+                    p=percent_text(row.probability), allowed=row.allowed_misses,
                     tests=row.tests),
             message(QT_TR_NOOP("{coverage} % ({missed} missed); width {ratio} × a correct "
                                "interval's (aim ≤ {limit} ×)"),

@@ -4,7 +4,8 @@ The certified quantity is the mean positional deviation x̄ at each target in ea
 approach direction measured. Its inputs (GUM):
 
 * each reference standard's stated figure (laser rotary calibrator, interferometer,
-  polygon and autocollimator …), per reading, sensitivity 1, in the deviation unit;
+  polygon and autocollimator …), per deviation (one reading of the reference from its
+  datum), sensitivity 1, in the deviation unit;
 * the repeatability of the mean: s/√n of that target and direction (Type A), with
   the fewest runs' n − 1 degrees of freedom (conservative: one ν for every point);
 * the resolution of the indication, if stated (rectangular, half-width r/2).
@@ -67,6 +68,7 @@ from models.uncertainty.figure_intervals import (
     readings_seed,
 )
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.probability_text import percent_text
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
            "intervals_withheld", "readings_step_component", "stated_figure_intervals",
@@ -133,7 +135,10 @@ def positioning_budget(result: PositioningResult, metadata: CertificateMetadata,
     s = np.concatenate([result.repeatability(stats) for _, _, stats in
                         result.directions_present()])
     n = np.concatenate([p[3] for p in points]).astype(float)
-    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("reading"),
+    # each deviation is one reading of the reference from its datum: its stated U is the
+    # deviation's (c = 1), as the statement says (day review 66 F8: the note said "per reading")
+    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP(
+        "deviation (one reading of the reference from its datum)"),
                                                unit=result.deviation_unit)
     note = message(QT_TR_NOOP("s of the runs at each target and direction, n = {n}; ν of the "
                               "fewest runs"),
@@ -369,7 +374,7 @@ def _figure_cells(value: float | None, interval: FigureInterval | None,
     return (Exact(text, float(value)) if isinstance(text, str) and value is not None else text,
             Exact(f"{interval.low:.{d}f}{sym} … {interval.high:.{d}f}{sym}",
                   (float(interval.low), float(interval.high))),
-            f"{100.0 * interval.probability:.2f} %")
+            f"{percent_text(interval.probability)} %")
 
 
 def _figure_rows(result: PositioningResult,
@@ -534,11 +539,10 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "coverage interval is within it, does not conform when the lower end exceeds it, and "
         "is not decided in between (ISO 14253-1)."))
     statements.append(QT_TR_NOOP(
-        "The reference standard's U enters each mean deviation with sensitivity 1: a rotary "
-        "calibrator's or an interferometer's certificate states it for a position measured from "
-        "the reference's datum, that is for the deviation itself; the theodolite and the "
-        "autocollimator state theirs per reading, so their errors, differences of two readings, "
-        "take √2."))
+        "The reference standard's U enters each mean deviation with sensitivity 1: each "
+        "deviation is one reading of the reference from its datum, and a rotary calibrator's or "
+        "an interferometer's certificate states its U for such a position, that is for the "
+        "deviation itself; the budget takes every reference standard's stated U so."))
     # the inputs not stated are named under the budget (CertificateDocument.not_in_u, from
     # the decision's not_stated)
     if not result.minimum_runs_met:

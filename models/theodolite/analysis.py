@@ -18,6 +18,7 @@ from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import MODEL_INPUT, TheodoliteResult, analyze_run
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
+from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import printed_range, uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
@@ -253,7 +254,7 @@ def _intervals_line(result: TheodoliteResult) -> str:
     for i, (key, iv) in enumerate(intervals.items()):
         parts += [", " if i else "", f"{key} {iv.low:.2f} … {iv.high:.2f}\""]
         if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
-            parts.append(f" ({100 * iv.probability:.1f} %)")
+            parts.append(f" ({percent_text(iv.probability)} %)")
     return joined(parts)
 
 

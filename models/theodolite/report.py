@@ -99,6 +99,7 @@ from models.uncertainty.budget import (
 )
 from models.uncertainty.conformity import expanded_text, interval_decimals
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.probability_text import percent_text
 from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
 __all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
@@ -381,7 +382,7 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
         rows.append((f"ISO 230-2 {key}", f"{v:.{d}f}\"", message(
             QT_TR_NOOP("coverage interval {low} … {high} ({p} %)"),
             low=f"{iv.low:.{d}f}\"", high=f"{iv.high:.{d}f}\"",
-            p=f"{100 * iv.probability:.2f}")))
+            p=percent_text(iv.probability))))
     return rows
 
 

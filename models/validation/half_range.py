@@ -37,6 +37,7 @@ import numpy as np
 from models.messages import QT_TR_NOOP
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY, BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import half_range_monte_carlo
+from models.uncertainty.probability_text import percent_text
 from models.validation.error_curves import SHAPES, sample_curves, true_curve
 
 __all__ = ["NOISE_RATIOS", "ORACLE_TAILS", "POINTS", "Cell", "WidthCell", "coverage_cell",
@@ -329,7 +330,7 @@ def half_range_cases(trials: int = 200) -> list:
                        workbench=message(WORKBENCH_NAMES[r.workbench]), what=message(r.describe)),
             source,
             message(QT_TR_NOOP("coverage ≥ {p} % (≥ {floor} of {runs} hits)"),
-                    p=f"{100 * r.probability:.2f}", floor=floor, runs=r.runs),
+                    p=percent_text(r.probability), floor=floor, runs=r.runs),
             message(QT_TR_NOOP("{coverage} % ({hits} of {runs}), width {width} × needed"),
                     coverage=f"{100 * r.coverage:.1f}", hits=r.hits, runs=r.runs,
                     width=f"{r.width_ratio:.2f}"),

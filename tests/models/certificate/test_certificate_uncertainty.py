@@ -56,6 +56,19 @@ def test_effective_dof_is_truncated_before_t():
     assert "8.60" in str(table.note) and "G.6.4" in str(table.note)
 
 
+def test_a_large_dof_is_said_alike_in_the_budgets_line_and_its_note():
+    """ν = 10⁸ (a Type A input of 10⁸ degrees of freedom beside Type B inputs): the table's
+    line says "≥ 10⁴", and so does the note (day review 66 F8: it said "ν = 1.0×10⁸ …
+    (Welch–Satterthwaite: 1.0×10⁸)")."""
+    budget = UncertaintyBudget((BudgetComponent("a", "A", "normal", 0.1, 1.0, 1.0, 1e8),
+                                BudgetComponent("b", "B", "normal", 0.5, 1.0, 1.0, math.inf)), 1)
+    table = budget_table(budget, "x")
+    assert table.rows[-2][-1] == "≥ 10⁴"
+    note = str(table.note)
+    assert "ν ≥ 10⁴" in note and "×10" not in note, note
+    assert "k = 2.00" in note
+
+
 def test_an_integer_dof_is_not_truncated_below_itself():
     budget = UncertaintyBudget((BudgetComponent("a", "A", "normal", 1.0, 1.0, 1.0, 9),), 1)
     assert budget.truncated_dof() == 9 and budget.coverage_factor == pytest.approx(2.32, abs=0.005)

@@ -107,6 +107,10 @@ def test_the_certificate_prints_each_figure_with_its_interval(tmp_path):
         assert abs(float(text) - end) <= 0.5 * 10.0 ** -len(decimals) + 1e-12, (e[-1], end)
     assert "coverage interval" in e[-1]
     assert interval.low <= truth["E"] <= interval.high
+    # the study's probability to its own digits (day review 66 F8: "92.00 %" of 60–80 runs)
+    probability = re.search(r"\((\d+(?:\.\d+)?) %\)", e[-1]).group(1)
+    assert float(probability) == pytest.approx(100.0 * interval.probability, abs=1e-9)
+    assert not probability.endswith("0"), e[-1]
 
 
 def test_a_direction_whose_errors_repeat_exactly_gives_no_interval(capsys, tmp_path):
