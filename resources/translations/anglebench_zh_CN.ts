@@ -96,10 +96,6 @@
         <translation>多面棱体的面数；0：与第一组的位置数相同</translation>
     </message>
     <message>
-        <source>The sine and cosine signals of the encoder&apos;s grating are sampled over whole periods. Each channel is modelled as an offset plus fundamental and odd harmonics (3rd, 5th) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and fitted by linear least squares (the paper fits the same model by particle swarm optimisation). The interpolation error is the phase atan2(u_sin, u_cos) minus θ; the modelled error, tabulated over the measured phase, is the correction, and the compensated error is what remains after applying it.</source>
-        <translation>在整周期内采样编码器光栅的正弦和余弦信号。每一路信号建模为直流偏置加基波及奇次谐波（3 次、5 次）及其相位，u = A₀ + Σ A_k sin(kθ + c_k)，并用线性最小二乘拟合（原文用粒子群优化拟合同一模型）。细分误差为相位 atan2(u_sin, u_cos) 减去 θ；按实测相位制表的模型误差即为修正值，补偿后误差为施加修正后的剩余误差。</translation>
-    </message>
-    <message>
         <source>The phase was estimated from the signals, with no phase reference: offsets, amplitude ratio and quadrature error are identified; a pure phase distortion of the grating is not observable this way and is not in the error stated.</source>
         <translation>相位由信号本身估计，无相位参考：直流偏置、幅值比和正交误差可以辨识；光栅的纯相位畸变用此方法不可观测，不包含在所给出的误差中。</translation>
     </message>
@@ -206,16 +202,16 @@
         <translation>幅值比 {ratio}，正交误差 {quadrature}</translation>
     </message>
     <message>
-        <source>as-found interpolation error</source>
-        <translation>补偿前细分误差</translation>
-    </message>
-    <message>
         <source>samples</source>
         <translation>采样点</translation>
     </message>
     <message>
         <source>Correction table</source>
         <translation>修正表</translation>
+    </message>
+    <message>
+        <source>The sine and cosine signals of the encoder&apos;s grating are sampled over whole periods. Each channel is modelled as an offset plus fundamental and odd harmonics (3rd, 5th) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and fitted by linear least squares (the paper fits the same model by particle swarm optimisation). The interpolation error is the phase atan2(u_sin, u_cos) minus θ, given with its mean over the period removed (the phase&apos;s origin is arbitrary); the modelled error, tabulated over the measured phase, is the correction, and the compensated error is what remains after applying it.</source>
+        <translation>在整周期内采样编码器光栅的正弦和余弦信号。每一路信号建模为直流偏置加基波及奇次谐波（3 次、5 次）及其相位，u = A₀ + Σ A_k sin(kθ + c_k)，并用线性最小二乘拟合（原文用粒子群优化拟合同一模型）。细分误差为相位 atan2(u_sin, u_cos) 减去 θ，并扣除其在一个周期内的平均值后给出（相位原点是任意的）；按实测相位制表的模型误差即为修正值，补偿后误差为施加修正后的剩余误差。</translation>
     </message>
     <message>
         <source>{n} entries</source>
@@ -972,6 +968,21 @@
         <source>Reading error (pointing)</source>
         <extracomment>the budget&apos;s names of the reading error at the point and at θ₀ (one input, two readings)</extracomment>
         <translation>读数误差（瞄准）</translation>
+    </message>
+    <message>
+        <source>one set per direction: the reversal cannot be told from the zero drift carried between the sets and their reading noise; indicative, not a calibration result</source>
+        <extracomment>one set in each direction: each direction&apos;s mean is one set, whose offset from the common zero is the zero drift it carries (and its reading noise): a difference of the two directions holds that drift whole, and nothing in the readings tells it from a reversal</extracomment>
+        <translation>每个方向仅测一组：反向差无法与各组之间传递的零点漂移及其读数噪声区分开；仅供参考，不是校准结果</translation>
+    </message>
+    <message>
+        <source>the uncertainty of the reversal (the zero drift carried between the sets and their reading noise enter it) is not evaluated; indicative, not a calibration result</source>
+        <extracomment>sets repeated in a direction: the drift carried and the noise could be told apart, but this version evaluates no uncertainty of the reversal</extracomment>
+        <translation>未评定反向差的不确定度（各组之间传递的零点漂移及其读数噪声计入其中）；仅供参考，不是校准结果</translation>
+    </message>
+    <message>
+        <source>an amplitude is biased high by the readings&apos; noise, as a range is, and its uncertainty is not evaluated; indicative, not a calibration result</source>
+        <extracomment>an amplitude √(a² + b²) of noisy Fourier coefficients is biased high, as a range is: pure noise of σ per position gives σ·√(π/n) on average over n positions</extracomment>
+        <translation>与极差一样，幅值会因读数噪声而偏大，且未评定其不确定度；仅供参考，不是校准结果</translation>
     </message>
     <message>
         <source>no coverage interval: {reason}</source>
@@ -3319,6 +3330,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>给出的 U：提高到实验室的 CMC（k = {k}）</translation>
     </message>
     <message>
+        <source>Budget at {point}, the point with the largest U. k = {k} is Student&apos;s t for ν ≥ 10⁴, the effective degrees of freedom (Welch–Satterthwaite), and a coverage probability of {p} %; each point&apos;s U uses its own ν.</source>
+        <translation>分量一览表取自 {point}，即 U 最大的点。k = {k} 为 t 分布在 ν ≥ 10⁴ 和包含概率 {p} % 时的值，ν 为有效自由度（韦尔奇–萨特思韦特公式）；各点的 U 采用其自身的 ν。</translation>
+    </message>
+    <message>
         <source>Uncertainty budget</source>
         <translation>不确定度分量一览表</translation>
     </message>
@@ -4607,6 +4622,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>各目标及方向上各次测量的 s，n = {n}；ν 取测量次数最少者</translation>
     </message>
     <message>
+        <source>deviation (one reading of the reference from its datum)</source>
+        <translation>偏差（参考标准从其基准起的一个读数）</translation>
+    </message>
+    <message>
         <source>{note}; at {targets}, where every run read alike, the s pooled over the targets ({s}), not 0</source>
         <translation>{note}；在 {targets}，各次测量读数完全相同，取各目标位置合并的 s（{s}），而不是 0</translation>
     </message>
@@ -4702,6 +4721,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>A specification of A, R, E, B or P conforms when the upper end of the figure&apos;s coverage interval is within it, does not conform when the lower end exceeds it, and is not decided in between (ISO 14253-1).</source>
         <translation>对 A、R、E、B 或 P 的规范要求：指标包含区间的上限在规范之内为合格，下限超出规范为不合格，介于两者之间不作判定（ISO 14253-1）。</translation>
+    </message>
+    <message>
+        <source>The reference standard&apos;s U enters each mean deviation with sensitivity 1: each deviation is one reading of the reference from its datum, and a rotary calibrator&apos;s or an interferometer&apos;s certificate states its U for such a position, that is for the deviation itself; the budget takes every reference standard&apos;s stated U so.</source>
+        <translation>计量标准的 U 以灵敏系数 1 计入各平均偏差：每个偏差是参考标准从其基准起的一个读数，回转校准装置或干涉仪的证书给出的正是这样测得位置的 U，即偏差本身的不确定度；不确定度分量一览表对每个计量标准的给定 U 均按此处理。</translation>
     </message>
     <message>
         <source>ISO 230-2 asks for at least {n} runs in each direction at every target; this test has fewer ({runs}). The figures are evaluated and flagged.</source>
@@ -8209,8 +8232,12 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>信号含有拟合模型未计入的 {orders} 次谐波：采样点之间的误差无法确定</translation>
     </message>
     <message>
-        <source>as-found interpolation error (fitted model, whole period)</source>
-        <translation>补偿前细分误差（拟合模型，整个周期）</translation>
+        <source>as-found interpolation error of the fitted model over the whole period, its mean removed (the model&apos;s figure, not the sampled readings&apos; peak-to-peak)</source>
+        <translation>拟合模型在整个周期内的补偿前细分误差，已扣除其平均值（为模型的数值，而非采样读数的峰峰值）</translation>
+    </message>
+    <message>
+        <source>as-found interpolation error, its mean removed</source>
+        <translation>补偿前细分误差，已扣除其平均值</translation>
     </message>
     <message>
         <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
@@ -8364,10 +8391,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>No coverage interval is given for the figures: {reason}.</source>
         <translation>各项指标不给出包含区间：{reason}。</translation>
-    </message>
-    <message>
-        <source>The reference standard&apos;s U enters each mean deviation with sensitivity 1: a rotary calibrator&apos;s or an interferometer&apos;s certificate states it for a position measured from the reference&apos;s datum, that is for the deviation itself; the theodolite and the autocollimator state theirs per reading, so their errors, differences of two readings, take √2.</source>
-        <translation>计量标准的 U 以灵敏系数 1 计入各平均偏差：回转校准装置或干涉仪的证书给出的是从其基准起测得位置的不确定度，即偏差本身的不确定度；经纬仪和自准直仪给出的是每个读数的不确定度，因此其误差（两个读数之差）取 √2。</translation>
     </message>
     <message>
         <source>Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget.</source>
