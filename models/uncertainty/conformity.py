@@ -798,8 +798,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                        0.0 if rule == "simple" else lower)
     # U₋ and U₊ as printed: the value to the interval's ends after the lower end is held at
     # 0 (the note says so, and whether the CMC had raised that half-width first)
-    minus, plus = printed_half_widths(x, lower, upper)
-    interval = separated([asymmetric_text(minus, plus, q, d), held_at_zero_note(
+    interval = separated([asymmetric_text(*printed_half_widths(x, lower, upper), q, d),
+                          held_at_zero_note(
         x, lower, d, q, float(budget.floor), bool(raised and raised[0]))], "; ")
     conforming = probability_conforming(x, lower, upper, t, mc.probability)
     reasons = list(withheld)
@@ -881,9 +881,11 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     common = {**common, "probability": float(mc.probability), "raised_to_cmc": raised}
     return Conformity(verdict, text, rule_text, quantity_text, x, upper,
                       "" if verdict == "not assessed" else
-                      _zones(t, 0.0 if rule == "simple" else plus,
-                             0.0 if rule == "simple" else minus, rule, d, q,
-                             asymmetric=f"{minus:.{d}f}" != f"{plus:.{d}f}"), mc, lower,
+                      # the zones are thresholds on a result near T, where no end is held
+                      # at 0: the half-widths as evaluated (the CMC's where it raised them)
+                      _zones(t, 0.0 if rule == "simple" else upper,
+                             0.0 if rule == "simple" else lower, rule, d, q,
+                             asymmetric=f"{lower:.{d}f}" != f"{upper:.{d}f}"), mc, lower,
                       reason=_withheld_text(reasons) if reasons else "",
                       conforming_probability=conforming,
                       decision_risk=_risk(verdict, conforming), **common)
