@@ -86,7 +86,7 @@ from models.certificate.document import (
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite import KEY, TITLE
 from models.theodolite.figures import MODEL_INPUT, pooled_repeats
 from models.theodolite.model import TheodoliteResult
@@ -100,6 +100,7 @@ from models.uncertainty.budget import (
 from models.uncertainty.conformity import expanded_text, interval_decimals
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.probability_text import percent_text
+from models.uncertainty.rounding import interval_ends
 from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
 __all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
@@ -379,9 +380,10 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
                 QT_TR_NOOP("no coverage interval: {reason}"), reason=message(withheld))))
             continue
         d = interval_decimals(iv.low, iv.high)  # the interval's half-width's (GUM 7.2.6)
+        low, high = interval_ends(iv.low, iv.high, d)  # rounded outwards, as every interval
         rows.append((f"ISO 230-2 {key}", f"{v:.{d}f}\"", message(
             QT_TR_NOOP("coverage interval {low} … {high} ({p} %)"),
-            low=f"{iv.low:.{d}f}\"", high=f"{iv.high:.{d}f}\"",
+            low=f"{low:.{d}f}\"", high=f"{high:.{d}f}\"",
             p=percent_text(iv.probability))))
     return rows
 
@@ -425,15 +427,19 @@ MEANS_STATEMENT = QT_TR_NOOP(
     "shape up to that part.")
 
 
-def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata
-                       ) -> tuple[str, ...]:
+def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata,
+                       budget: UncertaintyBudget) -> tuple[str, ...]:
     """What the certificate says of a run with passes: how its figures' intervals and its
-    decided half range are made (nothing where the passes do not determine them)."""
+    decided half range are made, and how far the circle error the readings do not exclude
+    widens the figures' intervals (nothing where the passes do not determine them)."""
+    from models.theodolite.figures import circle_widening_note
     from models.theodolite.pass_means import decided_on_means
 
     if not decided_on_means(result):
         return ()
-    return ((message(FIGURES_STATEMENT),)
+    widening = circle_widening_note(result, budget, stated_reading_uncertainty(metadata)[0],
+                                    stated_pair_factor(metadata))
+    return ((separated([message(FIGURES_STATEMENT), widening], " "),)
             + ((message(MEANS_STATEMENT),) if metadata.decision_quantity == "half_range"
                and metadata.tolerance is not None else ()))
 
@@ -528,7 +534,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
                                        "is zero by definition."),
                             row=result.reference_index + 1,
                             theta=f"{result.reference_theta_deg:g}°"), SETUP_DEFINITIONS,
-                    *_passes_statements(result, metadata)),
+                    *_passes_statements(result, metadata, budget)),
         figures_raised_to_cmc=_iso230_raised_to_cmc(result, budget, metadata),
         point_columns=(("theta_deg", result.theta_deg), ("raw_error_arcsec", result.raw_error_arcsec),
          ("correction_arcsec", correction), ("corrected_error_arcsec", result.corrected_error_arcsec),

@@ -75,7 +75,7 @@ from scipy.special import ndtr, ndtri, polygamma, stdtrit
 from models.messages import QT_TR_NOOP
 from models.uncertainty.lab_scope import held_to_cmc
 
-__all__ = ["ACHIEVED", "FIGURE_VALUE_NOTE", "FigureInterval", "INTERVAL_TRIALS",
+__all__ = ["ACHIEVED", "FIGURE_VALUE_NOTE", "FigureInterval", "INTERVAL_TRIALS", "pair_widening",
            "SIGNED_FIGURES", "axis_figures", "figure_intervals", "figure_objects",
            "figures_raised_to_cmc", "held_to_cmc_figures", "readings_seed", "world_truth"]
 
@@ -452,6 +452,15 @@ INNER_TRIALS = 40
 _CHUNK = 25
 
 
+def pair_widening(probability: float, pair_u: float, pair_spent: float = 0.0) -> float:
+    """How far :func:`figure_intervals` moves each end of a figure's interval (of
+    :data:`TYPE_B_FIGURES`) out for the reference's errors shaped as the curve's worst:
+    z · ``pair_u``, z the normal factor of the half of the tail left after ``pair_spent``
+    (the same arguments as there)."""
+    tail = 0.5 * (1.0 - probability) * (1.0 - pair_spent)
+    return float(ndtri(1.0 - 0.5 * tail)) * float(pair_u)
+
+
 def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
                      runs: dict[str, np.ndarray], probability: float,
                      type_b_u: np.ndarray | float | None = None, seed: int = 0,
@@ -520,7 +529,7 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         tail = 0.5 * (1.0 - probability) * (1.0 - pair_spent)
         pair = 2.0 * float(np.max(u_b)) if pair_u is None else float(pair_u)
         wide = _intervals(plain, 1.0 - tail) if pair > 0.0 else bare
-        shift = float(ndtri(1.0 - 0.5 * tail)) * pair
+        shift = pair_widening(probability, pair, pair_spent)
         for key in TYPE_B_FIGURES & out.keys() & bare.keys() & wide.keys():
             here, there, far = out[key], bare[key], wide[key]
             out[key] = FigureInterval(here.value, max(min(here.low, there.low,
