@@ -231,17 +231,22 @@ def opinion(text) -> str:
 
 def reference_standard_components(metadata: CertificateMetadata, sensitivity,
                                   reading: str, sensitivity_from_first=None,
-                                  unit: str = "arcsec", common: bool = False
+                                  unit: str = "arcsec", common: bool = False,
+                                  sensitivity_per_angle=None, from_datum: bool = False
                                   ) -> list[BudgetComponent]:
     """One Type B input per reference standard with a stated uncertainty.
 
-    ``sensitivity`` per point (√2 where the error is the difference of two
-    readings, 0 at the reference point); ``reading`` says what one reading is.
-    ``sensitivity_from_first`` is used for a standard whose figure applies to
-    each face's deviation from face 1 (polygon), where the workbench has one. Each
-    standard's figure is converted to ``unit``, the budget's. ``common``: the standard's
-    calibration error is one unknown value for the whole run (drawn once per trial in a
-    Monte Carlo of the curve), otherwise one per point.
+    ``sensitivity`` per point of a standard stated per reading (√2 where the error is the
+    difference of two readings, 0 at the reference point); ``reading`` says what one
+    reading is. ``sensitivity_from_first`` is used for a standard whose figure applies to
+    each face's deviation from face 1 (polygon), ``sensitivity_per_angle`` for one whose
+    figure applies to any angle measured with it (applies_to "angle": a rotary
+    calibrator's, an interferometer's), where the workbench has one (else ``sensitivity``).
+    ``from_datum``: a standard stated per reading enters as a reading at the point less the
+    datum reading of the run (BudgetComponent.datum_reading). Each standard's figure is
+    converted to ``unit``, the budget's. ``common``: the standard's calibration error is one
+    unknown value for the whole run (drawn once per trial in a Monte Carlo of the curve),
+    otherwise one per point.
     """
     out = []
     for std in metadata.standards:
@@ -249,11 +254,14 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
             continue
         divisor, distribution = divisor_for_basis(std.basis)
         name = std.description or QT_TR_NOOP("Reference standard")
-        per, c = reading, sensitivity
+        per, c, datum = reading, sensitivity, from_datum
         if std.applies_to == "from face 1" and sensitivity_from_first is not None:
-            per, c = QT_TR_NOOP("face, stated from face 1"), sensitivity_from_first
+            per, c, datum = (QT_TR_NOOP("face, stated from face 1"), sensitivity_from_first,
+                             False)
         elif std.applies_to == "angle":
-            per = QT_TR_NOOP("angle between two readings")
+            per, datum = QT_TR_NOOP("angle between two readings"), False
+            if sensitivity_per_angle is not None:
+                c = sensitivity_per_angle
         basis = message(BASIS_DIVISORS[std.basis][0])
         note = (message(QT_TR_NOOP("{basis} per {per}, certificate {certificate}"), basis=basis,
                         per=message(per), certificate=std.certificate_no)
@@ -261,7 +269,7 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
                 message(QT_TR_NOOP("{basis} per {per}"), basis=basis, per=message(per)))
         out.append(BudgetComponent(
             name, "B", distribution, std.uncertainty_in(unit), divisor, c, math.inf, note,
-            common=common, per_angle=std.applies_to == "angle"))
+            common=common, per_angle=std.applies_to == "angle", datum_reading=datum))
     return out
 
 

@@ -3,9 +3,12 @@
 The certified quantity is the mean positional deviation x̄ at each target in each
 approach direction measured. Its inputs (GUM):
 
-* each reference standard's stated figure (laser rotary calibrator, interferometer,
-  polygon and autocollimator …), per deviation (one reading of the reference from its
-  datum), sensitivity 1, in the deviation unit;
+* each reference standard's stated figure, in the deviation unit: one stated per reading
+  (theodolite, autocollimator) with sensitivity √2, as each deviation is the difference of
+  two readings, at the target and at the datum set at the start; one stated for any angle
+  measured with it from its own datum (laser rotary calibrator, interferometer: applies_to
+  "angle") or a polygon's stated from face 1, with sensitivity 1, its U being the
+  deviation's;
 * the repeatability of the mean: s/√n of that target and direction (Type A), with
   the fewest runs' n − 1 degrees of freedom (conservative: one ν for every point);
 * the resolution of the indication, if stated (rectangular, half-width r/2).
@@ -136,11 +139,15 @@ def positioning_budget(result: PositioningResult, metadata: CertificateMetadata,
     s = np.concatenate([result.repeatability(stats) for _, _, stats in
                         result.directions_present()])
     n = np.concatenate([p[3] for p in points]).astype(float)
-    # each deviation is one reading of the reference from its datum: its stated U is the
-    # deviation's (c = 1), as the statement says (day review 66 F8: the note said "per reading")
-    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP(
-        "deviation (one reading of the reference from its datum)"),
-                                               unit=result.deviation_unit)
+    # a deviation is the reading at the target less the datum reading set at the start: a
+    # standard stated per reading takes √2 (both readings' errors), one stated for any angle
+    # measured from its own datum (a rotary calibrator, an interferometer) or from face 1
+    # (a polygon) takes 1, its U being the deviation's (the statement says so)
+    components = reference_standard_components(
+        metadata, math.sqrt(2.0), QT_TR_NOOP("reading, the deviation a difference of two "
+                                             "readings"),
+        sensitivity_from_first=1.0, unit=result.deviation_unit, sensitivity_per_angle=1.0,
+        from_datum=True)
     note = message(QT_TR_NOOP("s of the runs at each target and direction, n = {n}; ν of the "
                               "fewest runs"),
                    n=f"{int(np.min(n))}" if np.min(n) == np.max(n)
@@ -260,7 +267,12 @@ def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget
     two readings (that difference is one more angle it measured), the inputs in quadrature
     (independent of one another). The roundings (:data:`ROUNDINGS`) are independent from
     target to target and not in ``pair_u``: the model's draws hold them."""
-    inputs = [(c, _per_target(result, u))
+    # a standard stated per reading (datum_reading) holds, in its c = √2, the datum
+    # reading's error, one value for the run at every target: every figure is a difference
+    # of targets (a range, a reversal), from which it drops out, so the figures take the
+    # target reading's part alone, its u (c = 1)
+    inputs = [(c, _per_target(result, c.standard_uncertainty(budget.points) if c.datum_reading
+                              else u))
               for c, u in zip(budget.components, budget.contributions(), strict=True)
               if c.evaluation == "B"]
     combined = (np.sqrt(np.sum([u**2 for _, u in inputs], axis=0)) if inputs
@@ -541,10 +553,14 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "coverage interval is within it, does not conform when the lower end exceeds it, and "
         "is not decided in between (ISO 14253-1)."))
     statements.append(QT_TR_NOOP(
-        "The reference standard's U enters each mean deviation with sensitivity 1: each "
-        "deviation is one reading of the reference from its datum, and a rotary calibrator's or "
-        "an interferometer's certificate states its U for such a position, that is for the "
-        "deviation itself; the budget takes every reference standard's stated U so."))
+        "Each deviation is the difference of two readings of the reference, at the target and "
+        "at the datum set at the start. A reference standard whose certificate states its U "
+        "per reading (a theodolite, an autocollimator) enters each mean deviation with "
+        "sensitivity √2, both readings' errors; the datum reading's is one value for the run, "
+        "common to every target, so it drops out of the figures, differences of targets. A "
+        "standard whose U is stated for any angle measured with it from its own datum (a laser "
+        "rotary calibrator, an interferometer) and a polygon stated from face 1 enter with "
+        "sensitivity 1: their U is that of the deviation itself."))
     # the inputs not stated are named under the budget (CertificateDocument.not_in_u, from
     # the decision's not_stated)
     if not result.minimum_runs_met:

@@ -113,6 +113,10 @@ class BudgetComponent:
     # its figure is stated for any angle between two readings (ReferenceStandard.applies_to
     # "angle"): the difference of two points' errors is within it, not within twice it
     per_angle: bool = False
+    # its error at a point is the difference of two readings, the one there less the datum's
+    # (c = √2 of its per-reading u): the datum reading's part, u, is one value for the run,
+    # common to every point, and drops out of the difference of two points' errors
+    datum_reading: bool = False
 
     def __post_init__(self) -> None:
         values = np.asarray(self.value, dtype=float)

@@ -2,8 +2,9 @@
 F8): the fringe's decided half range is the fitted model's, of an error given with its mean
 removed (it was "as-found interpolation error (fitted model, whole period): 0.4861″ as
 measured" beside the samples' "peak-to-peak 0.991″", and no word of the mean); the
-positioning budget takes the reference's U for the deviation itself (c = 1), and its note
-said "per reading" while the statements said "for the deviation itself"."""
+positioning budget takes the bundled sample's laser rotary calibrator's U for the deviation
+itself (c = 1, its U stated per angle), as its statement says (a standard stated per reading
+takes √2: tests/models/positioning/test_reference_standard_sensitivity.py)."""
 
 from __future__ import annotations
 
@@ -39,7 +40,7 @@ def test_the_fringe_says_its_half_range_is_the_models_of_an_error_its_mean_remov
     assert abs(float(np.mean(result.raw_error))) < 1e-9
 
 
-def test_the_positioning_budget_takes_the_references_u_per_deviation_as_its_statement_says(
+def test_the_positioning_samples_calibrator_takes_its_u_per_angle_as_its_statement_says(
         samples_dir):
     from models.positioning.analysis import POSITIONING
     from models.positioning.report import positioning_budget, positioning_certificate
@@ -47,8 +48,12 @@ def test_the_positioning_budget_takes_the_references_u_per_deviation_as_its_stat
     result, metadata = _sample(POSITIONING, samples_dir)
     laser = next(c for c in positioning_budget(result, metadata).components
                  if str(c.name) == "Laser rotary calibrator")
-    assert np.all(np.asarray(laser.sensitivity) == 1.0)  # the deviation itself
-    assert "per deviation" in str(laser.note) and "per reading" not in str(laser.note)
+    # a rotary calibrator's U is stated for a position from its own datum: the deviation
+    # itself (c = 1); a standard stated per reading takes √2 (test_reference_standard_
+    # sensitivity)
+    assert np.all(np.asarray(laser.sensitivity) == 1.0)
+    assert "per angle between two readings" in str(laser.note)
     statements = " ".join(str(s) for s in positioning_certificate(result, metadata).statements)
-    assert "for the deviation itself" in statements
-    assert "per reading" not in statements, statements
+    assert "that of the deviation itself" in statements
+    assert "per reading (a theodolite, an autocollimator)" in statements
+    assert "sensitivity √2" in statements, statements
