@@ -4627,16 +4627,16 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>各目标及方向上各次测量的 s，n = {n}；ν 取测量次数最少者</translation>
     </message>
     <message>
-        <source>deviation (one reading of the reference from its datum)</source>
-        <translation>偏差（参考标准从其基准起的一个读数）</translation>
-    </message>
-    <message>
         <source>{note}; at {targets}, where every run read alike, the s pooled over the targets ({s}), not 0</source>
         <translation>{note}；在 {targets}，各次测量读数完全相同，取各目标位置合并的 s（{s}），而不是 0</translation>
     </message>
     <message>
         <source>Step of the readings as entered</source>
         <translation>录入读数的步距</translation>
+    </message>
+    <message>
+        <source>reading, the deviation a difference of two readings</source>
+        <translation>读数（偏差为两个读数之差）</translation>
     </message>
     <message>
         <source>every run of one direction read alike at every target while the other direction scatters: that direction&apos;s scatter cannot be told from these readings (copied?), so no figure has a coverage interval</source>
@@ -4728,8 +4728,8 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>对 A、R、E、B 或 P 的规范要求：指标包含区间的上限在规范之内为合格，下限超出规范为不合格，介于两者之间不作判定（ISO 14253-1）。</translation>
     </message>
     <message>
-        <source>The reference standard&apos;s U enters each mean deviation with sensitivity 1: each deviation is one reading of the reference from its datum, and a rotary calibrator&apos;s or an interferometer&apos;s certificate states its U for such a position, that is for the deviation itself; the budget takes every reference standard&apos;s stated U so.</source>
-        <translation>计量标准的 U 以灵敏系数 1 计入各平均偏差：每个偏差是参考标准从其基准起的一个读数，回转校准装置或干涉仪的证书给出的正是这样测得位置的 U，即偏差本身的不确定度；不确定度分量一览表对每个计量标准的给定 U 均按此处理。</translation>
+        <source>Each deviation is the difference of two readings of the reference, at the target and at the datum set at the start. A reference standard whose certificate states its U per reading (a theodolite, an autocollimator) enters each mean deviation with sensitivity √2, both readings&apos; errors; the datum reading&apos;s is one value for the run, common to every target, so it drops out of the figures, differences of targets. A standard whose U is stated for any angle measured with it from its own datum (a laser rotary calibrator, an interferometer) and a polygon stated from face 1 enter with sensitivity 1: their U is that of the deviation itself.</source>
+        <translation>每个偏差是参考标准的两个读数之差：目标位置处的读数与开始时设定的基准读数之差。证书按每个读数给出 U 的计量标准（经纬仪、自准直仪）以灵敏系数 √2 计入各平均偏差，即两个读数的误差；其中基准读数的误差在一次测量中是同一个值，各目标位置共有，因此在各项指标（均为目标位置之差）中相互抵消。证书给出的 U 适用于用它从自身基准测得的任意角度的计量标准（激光回转校准装置、干涉仪）以及从第 1 面起给出的多面棱体以灵敏系数 1 计入：其 U 即偏差本身的不确定度。</translation>
     </message>
     <message>
         <source>ISO 230-2 asks for at least {n} runs in each direction at every target; this test has fewer ({runs}). The figures are evaluated and flagged.</source>
