@@ -403,8 +403,9 @@ def _iso230_raised_to_cmc(result: TheodoliteResult, budget: UncertaintyBudget,
 FIGURES_STATEMENT = QT_TR_NOOP(
     "Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value "
     "or a range over the θ, biased high by the scatter, so its interval, that of the true "
-    "figure (of the true means and standard deviations at each θ and direction), may lie "
-    "below the value stated. It is a parametric bootstrap of the figure's error from a model "
+    "figure (of the true means and standard deviations at each θ and direction as this "
+    "theodolite reads them: R and A hold its pointing noise), may lie below the value "
+    "stated. It is a parametric bootstrap of the figure's error from a model "
     "of the axis fitted to the means and standard deviations over the passes (the "
     "positioning workbench's, models/uncertainty/figure_intervals.py), with the set-up "
     "model's error (one curve over θ, drawn as its fit's covariance correlates it) and the "
@@ -428,12 +429,17 @@ MEANS_STATEMENT = QT_TR_NOOP(
 def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata
                        ) -> tuple[str, ...]:
     """What the certificate says of a run with passes: how its figures' intervals and its
-    decided half range are made (nothing where the passes do not determine them)."""
+    decided half range are made, and how much of R and A is the theodolite's pointing
+    noise (the latter wherever R is evaluated; the former nothing where the passes do not
+    determine them)."""
+    from models.theodolite.figures import pointing_in_figures_note
     from models.theodolite.pass_means import decided_on_means
 
+    pointing = pointing_in_figures_note(result)
+    said = () if pointing is None else (pointing,)
     if not decided_on_means(result):
-        return ()
-    return ((message(FIGURES_STATEMENT),)
+        return said
+    return ((message(FIGURES_STATEMENT),) + said
             + ((message(MEANS_STATEMENT),) if metadata.decision_quantity == "half_range"
                and metadata.tolerance is not None else ()))
 
