@@ -28,6 +28,8 @@ from models.uncertainty.conformity import (
     REFERENCE_POINT_TEXT,
     Conformity,
     asymmetric_text,
+    held_at_zero_note,
+    printed_half_widths,
     printed_interval,
     significant_decimals,
     uncertainty_decimals,
@@ -290,14 +292,19 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
         if math.isfinite(lower) and lower > 0:  # an asymmetric interval, printed as such
             # two significant digits at most on either side (GUM 7.2.6): the larger's decimal
             d = significant_decimals(max(lower, conformity.expanded)) or digits
+            # U₋, U₊ the value to the interval's ends, after clipping (the statement's)
+            minus, plus = printed_half_widths(conformity.value, lower, conformity.expanded)
             value = (f"{conformity.value:.{d}f}{unit}\n"  # a line each: never broken
-                     f"{asymmetric_text(lower, conformity.expanded, unit, d)}")
+                     f"{asymmetric_text(minus, plus, unit, d)}")
             low, high = printed_interval(conformity.value, lower, conformity.expanded, d)
             measured = conformity.measured
+            raised = conformity.raised_to_cmc
             # what the value was made from and the interval's ends, first in the note (the
             # figure's cell stays figures, which the results workbook reads as numbers)
             note = separated([message(QT_TR_NOOP("interval {low} … {high}"),
                                       low=f"{low:.{d}f}{unit}", high=f"{high:.{d}f}{unit}"),
+                              held_at_zero_note(conformity.value, lower, d, unit,
+                                                float(budget.floor), bool(raised and raised[0])),
                               message(QT_TR_NOOP("measured {measured}"),
                                       measured=f"{measured:.{d}f}{unit}")
                               if f"{measured:.{d}f}" != f"{conformity.value:.{d}f}" else "",

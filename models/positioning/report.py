@@ -69,6 +69,7 @@ from models.uncertainty.figure_intervals import (
 )
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.probability_text import percent_text
+from models.uncertainty.rounding import interval_ends
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
            "intervals_withheld", "readings_step_component", "stated_figure_intervals",
@@ -369,10 +370,11 @@ def _figure_cells(value: float | None, interval: FigureInterval | None,
     if interval is None:
         return figure_text(value, sym), "—", ""
     d = interval_decimals(interval.low, interval.high)
+    low, high = interval_ends(interval.low, interval.high, d)  # rounded outwards
     text = figure_text(value, sym, d)
     # the DCC states the figure and its interval at full precision (Exact), not as printed
     return (Exact(text, float(value)) if isinstance(text, str) and value is not None else text,
-            Exact(f"{interval.low:.{d}f}{sym} … {interval.high:.{d}f}{sym}",
+            Exact(f"{low:.{d}f}{sym} … {high:.{d}f}{sym}",
                   (float(interval.low), float(interval.high))),
             f"{percent_text(interval.probability)} %")
 

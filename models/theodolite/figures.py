@@ -66,6 +66,7 @@ from models.uncertainty.figure_intervals import (
     figure_intervals,
     figure_objects,
     held_to_cmc_figures,
+    pair_widening,
 )
 from models.uncertainty.stated_excess import excess_not_excluded
 
@@ -323,6 +324,36 @@ def stated_theodolite_figure_intervals(result: TheodoliteResult, budget: Uncerta
                                                            pair_factor), float(budget.floor))
 
 
+#: where the figures' intervals are widened for a circle error the readings do not exclude:
+#: the true reason a lower end of E, M or A reaches 0 where the scatter alone would not
+CIRCLE_WIDENING_NOTE = QT_TR_NOOP(
+    "Here the interval of E, M and A (E↑, E↓, A↑, A↓) reaches at least {shift} beyond the "
+    "scatter's own at each end (that at the rest of the tail), for a circle error the "
+    "readings do not exclude: up to {circle} per reading (the stated theodolite u over the "
+    "pointing noise's lower confidence bound), the same at a θ in every pass, whose shape is not "
+    "known and may be the curve's worst ({pair} between two θ); "
+    "that widening, not the scatter, takes such a lower end to 0 where the figure is "
+    "smaller than it.")
+#: the figures' note in the JSON followed by that one
+FIGURE_NOTE_WITH_WIDENING = QT_TR_NOOP("{note}. {widening}")
+
+
+def circle_widening_note(result: TheodoliteResult, budget: UncertaintyBudget,
+                         stated_u: float = 0.0, pair_factor: float = 2.0) -> str:
+    """:data:`CIRCLE_WIDENING_NOTE` with its sizes, as :func:`theodolite_figure_intervals`
+    widens (the same arguments); "" where the readings exclude a circle error (nothing is
+    widened for one) or the figures have no intervals."""
+    if not theodolite_figure_intervals(result, budget, stated_u, pair_factor):
+        return ""
+    circle = circle_part_not_excluded(result, stated_u, budget.probability)
+    if not circle > 0.0:
+        return ""
+    pair = pair_factor * circle
+    shift = pair_widening(budget.probability, pair, CIRCLE_NUISANCE_SHARE)
+    return message(CIRCLE_WIDENING_NOTE, shift=f"{shift:.2f}\"", circle=f"{circle:.3f}\"",
+                   pair=f"{pair:.3f}\"")
+
+
 def theodolite_figures_json(result: TheodoliteResult, budget: UncertaintyBudget,
                             stated_u: float = 0.0, pair_factor: float = 2.0) -> dict[str, Any]:
     """The ISO 230-2 figures as the JSON states them, each {value, interval_low,
@@ -342,10 +373,14 @@ def theodolite_figures_json(result: TheodoliteResult, budget: UncertaintyBudget,
         keys += ["E", "M", "B", "B_mean", "R", "A"]
     out = figure_objects(keys, result.iso230.figures, intervals, float(budget.floor) > 0)
     withheld = figure_intervals_withheld(result)
+    widening = circle_widening_note(result, budget, stated_u, pair_factor)
     pointing = pointing_in_figures(result)
     return {"iso230_2_figures": out,
             "iso230_2_figures_reason": None if withheld is None else message(withheld),
-            "iso230_2_figures_note": message(FIGURE_VALUE_NOTE),
+            "iso230_2_figures_note": message(FIGURE_NOTE_WITH_WIDENING,
+                                             note=message(FIGURE_VALUE_NOTE),
+                                             widening=widening)
+            if widening else message(FIGURE_VALUE_NOTE),
             # R and A are of the axis as read with this theodolite: its pointing noise and the
             # R it alone gives (null where no R is evaluated)
             "iso230_2_pointing": None if pointing is None else {

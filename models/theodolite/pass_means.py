@@ -41,7 +41,7 @@ import numpy as np
 
 from models.certificate.document import resolution_component
 from models.certificate.metadata import CertificateMetadata
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite.figures import (
     circle_part,
     circle_part_not_excluded,
@@ -187,6 +187,11 @@ MEANS_UNITED = QT_TR_NOOP(
     "often as the Monte Carlo (validated on errors independent at each θ); on once-a-turn "
     "circle errors it covered 40 of 40 and, in an independent audit, 200 of 200 runs, where "
     "the Monte Carlo alone covered 28 of 40 and 440 of 600")
+#: where an end of that union is E's halved: the probability the union is stated at
+MEANS_UNITED_PROBABILITY = QT_TR_NOOP(
+    "an end of the interval is ISO 230-2 {figure}'s halved, whose interval holds at the "
+    "{p} % its simulation study reached, so the interval is stated at {p} % and the "
+    "probabilities of conformity and of a wrong decision are computed at it")
 
 
 def means_half_range(result: TheodoliteResult, budget: UncertaintyBudget,
@@ -203,9 +208,13 @@ def means_half_range(result: TheodoliteResult, budget: UncertaintyBudget,
     runs) found the truth above the interval in 84 and 76 of 300 runs. The interval is then
     united with ISO 230-2 E's halved (E↑'s or E↓'s with one direction; models.theodolite
     .figures, ``run_budget``'s probability and seed), which holds a circle error of any
-    shape; the value stays the Monte Carlo's, and so does the probability stated: the union
-    covers at least as often as the Monte Carlo wherever that holds, and covered every run
-    of the once-a-turn errors where it did not. ``pair_factor``: as in E's interval
+    shape; the value stays the Monte Carlo's. The union covers at least as often as the
+    Monte Carlo wherever that holds, and covered every run of the once-a-turn errors where
+    it did not; where an end is E's halved, the probability stated is the lower of the
+    Monte Carlo's and E's own (the one E's simulation study reached,
+    models.uncertainty.figure_intervals.ACHIEVED: 92.5 % for E), and the decision's
+    probabilities (models.uncertainty.conformity.probability_conforming) use it.
+    ``pair_factor``: as in E's interval
     (models.theodolite.figures.theodolite_figure_intervals; 1 for a theodolite whose u is
     stated for any angle between two readings, whose circle errors at two θ then differ by
     at most its own u)."""
@@ -226,5 +235,14 @@ def means_half_range(result: TheodoliteResult, budget: UncertaintyBudget,
     method = message(MEANS_UNITED, quantity=message(DECISION_QUANTITIES["half_range"]),
                      trials=estimate.trials, seed=str(estimate.seed),
                      circle=f"{circle:.3f}\"", figure=figure)
+    probability = estimate.probability
+    if low < estimate.value - estimate.u_lower or high > estimate.value + estimate.u_upper:
+        # an end is E's halved, whose interval holds at the probability its study reached
+        # (models.uncertainty.figure_intervals.ACHIEVED): the union is stated at the lower
+        # of the two, and the decision's probabilities are computed at it
+        probability = min(probability, float(e.probability))
+        method = separated([method, message(MEANS_UNITED_PROBABILITY, figure=figure,
+                                            p=f"{100 * probability:.2f}")], "; ")
     return dataclasses.replace(estimate, u_lower=estimate.value - low,
-                               u_upper=high - estimate.value, method=method)
+                               u_upper=high - estimate.value, probability=probability,
+                               method=method)

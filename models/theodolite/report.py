@@ -86,7 +86,7 @@ from models.certificate.document import (
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite import KEY, TITLE
 from models.theodolite.figures import MODEL_INPUT, pooled_repeats
 from models.theodolite.model import TheodoliteResult
@@ -100,6 +100,7 @@ from models.uncertainty.budget import (
 from models.uncertainty.conformity import expanded_text, interval_decimals
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.probability_text import percent_text
+from models.uncertainty.rounding import interval_ends
 from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
 __all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
@@ -379,9 +380,10 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
                 QT_TR_NOOP("no coverage interval: {reason}"), reason=message(withheld))))
             continue
         d = interval_decimals(iv.low, iv.high)  # the interval's half-width's (GUM 7.2.6)
+        low, high = interval_ends(iv.low, iv.high, d)  # rounded outwards, as every interval
         rows.append((f"ISO 230-2 {key}", f"{v:.{d}f}\"", message(
             QT_TR_NOOP("coverage interval {low} … {high} ({p} %)"),
-            low=f"{iv.low:.{d}f}\"", high=f"{iv.high:.{d}f}\"",
+            low=f"{low:.{d}f}\"", high=f"{high:.{d}f}\"",
             p=percent_text(iv.probability))))
     return rows
 
@@ -426,20 +428,23 @@ MEANS_STATEMENT = QT_TR_NOOP(
     "shape up to that part.")
 
 
-def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata
-                       ) -> tuple[str, ...]:
+def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata,
+                       budget: UncertaintyBudget) -> tuple[str, ...]:
     """What the certificate says of a run with passes: how its figures' intervals and its
-    decided half range are made, and how much of R and A is the theodolite's pointing
-    noise (the latter wherever R is evaluated; the former nothing where the passes do not
+    decided half range are made, how far the circle error the readings do not exclude
+    widens the figures' intervals, and how much of R and A is the theodolite's pointing
+    noise (the latter wherever R is evaluated; the others nothing where the passes do not
     determine them)."""
-    from models.theodolite.figures import pointing_in_figures_note
+    from models.theodolite.figures import circle_widening_note, pointing_in_figures_note
     from models.theodolite.pass_means import decided_on_means
 
     pointing = pointing_in_figures_note(result)
     said = () if pointing is None else (pointing,)
     if not decided_on_means(result):
         return said
-    return ((message(FIGURES_STATEMENT),) + said
+    widening = circle_widening_note(result, budget, stated_reading_uncertainty(metadata)[0],
+                                    stated_pair_factor(metadata))
+    return ((separated([message(FIGURES_STATEMENT), widening], " "),) + said
             + ((message(MEANS_STATEMENT),) if metadata.decision_quantity == "half_range"
                and metadata.tolerance is not None else ()))
 
@@ -534,7 +539,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
                                        "is zero by definition."),
                             row=result.reference_index + 1,
                             theta=f"{result.reference_theta_deg:g}°"), SETUP_DEFINITIONS,
-                    *_passes_statements(result, metadata)),
+                    *_passes_statements(result, metadata, budget)),
         figures_raised_to_cmc=_iso230_raised_to_cmc(result, budget, metadata),
         point_columns=(("theta_deg", result.theta_deg), ("raw_error_arcsec", result.raw_error_arcsec),
          ("correction_arcsec", correction), ("corrected_error_arcsec", result.corrected_error_arcsec),

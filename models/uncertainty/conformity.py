@@ -42,6 +42,7 @@ from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.lab_scope import held_to_cmc
 from models.uncertainty.rounding import (
     interval_decimals,
+    interval_ends,
     significant_decimals,
     uncertainty_decimals,
 )
@@ -57,6 +58,8 @@ __all__ = [
     "expanded_text",
     "gum_rounded",
     "half_range_monte_carlo",
+    "held_at_zero_note",
+    "printed_half_widths",
     "printed_interval",
     "probability_conforming",
     "significant_decimals",
@@ -793,7 +796,11 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     d = uncertainty_decimals(max(upper, lower))  # two significant digits at most on each side
     verdict = _verdict(x, t, 0.0 if rule == "simple" else upper, rule,
                        0.0 if rule == "simple" else lower)
-    interval = asymmetric_text(lower, upper, q, d)
+    # U₋ and U₊ as printed: the value to the interval's ends after the lower end is held at
+    # 0 (the note says so, and whether the CMC had raised that half-width first)
+    interval = separated([asymmetric_text(*printed_half_widths(x, lower, upper), q, d),
+                          held_at_zero_note(
+        x, lower, d, q, float(budget.floor), bool(raised and raised[0]))], "; ")
     conforming = probability_conforming(x, lower, upper, t, mc.probability)
     reasons = list(withheld)
     if max(upper, lower) >= t:
@@ -874,6 +881,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     common = {**common, "probability": float(mc.probability), "raised_to_cmc": raised}
     return Conformity(verdict, text, rule_text, quantity_text, x, upper,
                       "" if verdict == "not assessed" else
+                      # the zones are thresholds on a result near T, where no end is held
+                      # at 0: the half-widths as evaluated (the CMC's where it raised them)
                       _zones(t, 0.0 if rule == "simple" else upper,
                              0.0 if rule == "simple" else lower, rule, d, q,
                              asymmetric=f"{lower:.{d}f}" != f"{upper:.{d}f}"), mc, lower,
@@ -900,11 +909,43 @@ def _held_to_cmc(mc: HalfRangeEstimate, cmc: float) -> tuple[HalfRangeEstimate,
 
 
 def printed_interval(value: float, lower: float, upper: float, d: int) -> tuple[float, float]:
-    """An interval's ends as a reader computes them from the printed value and its
-    half-widths, each to ``d`` decimals (0.94 − 0.93 = 0.01, not the exact end's 0.016
-    rounded to 0.02); never below 0 (a half range)."""
-    shown = round(value, d)
-    return max(0.0, shown - round(lower, d)), shown + round(upper, d)
+    """An interval's ends as printed, each rounded to ``d`` decimals from the computed end
+    (never below 0: a half range), away from the inside
+    (:func:`models.uncertainty.rounding.interval_ends`, which says why): a computed lower
+    end of 0.0675″ is printed 0.0″, 0.0131″ is 0.01″, as the JSON's ends round so; until
+    0.8.14 the printed value less the printed half-width, which disagreed with them."""
+    return interval_ends(max(0.0, value - lower), value + upper, d)
+
+
+def printed_half_widths(value: float, lower: float, upper: float) -> tuple[float, float]:
+    """(U₋, U₊) as printed beside the interval: value − its lower end and its upper end −
+    value after every clipping (the lower end held at 0 where a half-width, raised to the
+    CMC or not, reaches below it), each then rounded to the printed decimal to the nearest
+    as every U is; 0.8.14 printed the raised 1.5″ beside a value of 1.32″ and an end of 0.
+    The printed value less U₋ may then differ from the printed end, rounded on its own
+    (:func:`printed_interval`), by one digit: a value and its U are rounded apart."""
+    return value - max(0.0, value - lower), upper
+
+
+#: where the printed lower end is held at 0 below the value less its half-width
+HELD_AT_ZERO = QT_TR_NOOP("the lower end held at 0, as a half range is not negative: "
+                          "U₋ = {minus} is the value less it")
+#: the same where that half-width was raised to the laboratory's CMC first
+HELD_TO_CMC_AT_ZERO = QT_TR_NOOP("the lower half-width held to the laboratory's CMC U = {cmc} "
+                                 "reaches below 0, so the lower end is held at 0: U₋ = {minus} "
+                                 "is the value less it")
+
+
+def held_at_zero_note(value: float, lower: float, d: int, q: str, cmc: float = 0.0,
+                      raised: bool = False) -> str:
+    """Why the printed U₋ is not the interval's lower half-width, where the lower end is
+    held at 0 (and whether the CMC had raised it first); "" where it is not held."""
+    if not (value - lower < 0.0):
+        return ""
+    minus = f"{printed_half_widths(value, lower, 0.0)[0]:.{d}f}{q}"
+    if raised and cmc > 0.0:
+        return message(HELD_TO_CMC_AT_ZERO, cmc=f"{cmc:g}{q}", minus=minus)
+    return message(HELD_AT_ZERO, minus=minus)
 
 
 def asymmetric_text(lower: float, upper: float, q: str, d: int) -> str:

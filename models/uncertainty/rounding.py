@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["interval_decimals", "printed_range", "significant_decimals", "uncertainty_decimals"]
+__all__ = ["interval_decimals", "interval_ends", "printed_range", "significant_decimals",
+           "uncertainty_decimals"]
 
 
 def significant_decimals(expanded: float) -> int | None:
@@ -35,6 +36,28 @@ def interval_decimals(low: float, high: float) -> int:
     most two significant digits (GUM 7.2.6, JJF 1059.1): a figure with an interval 4″ wide
     to 0.1″, not 0.001″. Two decimals where the interval has no width."""
     return uncertainty_decimals((high - low) / 2.0)
+
+
+def interval_ends(low: float, high: float, decimals: int) -> tuple[float, float]:
+    """A coverage interval's ends as printed, to ``decimals``: each rounded from the
+    computed end, away from the inside (the lower end down, the upper up), so that the
+    printed interval holds the computed one. The interval is a statement at a coverage
+    probability: an end rounded inwards would state a narrower interval than the one that
+    reached it, which is why GUM 7.2.6 rounds U up rather than to the nearest digit; and a
+    printed upper end at or below T (on the printed grid) then says what the guarded
+    decision says, where one rounded to the nearest could show 3.0″ for a computed 3.04″
+    that fails ±3″. Ends already on the grid (to 1e-9 of a digit) are kept."""
+    step = 10.0 ** -decimals
+
+    def rounded(end: float, towards) -> float:
+        if not math.isfinite(end):
+            return end
+        units = end / step
+        near = round(units)
+        whole = near if abs(units - near) < 1e-9 else towards(units)
+        return round(whole * step, decimals) + 0.0  # never "-0.0"
+
+    return rounded(low, math.floor), rounded(high, math.ceil)
 
 
 def printed_range(low: float, high: float, decimals: int) -> tuple[str, str, str]:

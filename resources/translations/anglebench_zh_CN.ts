@@ -891,6 +891,11 @@
         <translation>{quantity}：{trials} 次试验，种子 {seed}，取各测回的均值；读数不能排除所给经纬仪 u 中超出其分散的部分（每个读数至多 {circle}，按指向噪声的置信下限计算），这一误差在每个测回中同一 θ 处相同而形状未知，光滑的度盘误差若与曲线相抵会使测得的极差变小：区间与 ISO 230-2 {figure} 区间的一半合并，后者可容纳该部分以内任意形状的度盘误差。合并后的区间覆盖率不低于蒙特卡洛区间（后者按每个 θ 独立的误差验证）；对每转一次的度盘误差，40 次中覆盖 40 次，独立审核中 200 次中覆盖 200 次，而单用蒙特卡洛区间时分别为 40 次中 28 次和 600 次中 440 次</translation>
     </message>
     <message>
+        <source>an end of the interval is ISO 230-2 {figure}&apos;s halved, whose interval holds at the {p} % its simulation study reached, so the interval is stated at {p} % and the probabilities of conformity and of a wrong decision are computed at it</source>
+        <extracomment>where an end of that union is E&apos;s halved: the probability the union is stated at</extracomment>
+        <translation>区间的一端为 ISO 230-2 {figure} 的一半，其区间在其仿真研究所达到的 {p} % 下成立，故本区间按 {p} % 给出，符合概率和误判概率均按此概率计算</translation>
+    </message>
+    <message>
         <source>Set-up model ζ (ψ, α, β)</source>
         <extracomment>the budget&apos;s name of the set-up model&apos;s error (the run&apos;s budget and the passes&apos; means)</extracomment>
         <translation>安装模型 ζ（ψ, α, β）</translation>
@@ -5987,6 +5992,16 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>The item does not conform to the specification ±{t} (fail).</source>
         <translation>被校对象不符合技术要求 ±{t}（不合格）。</translation>
+    </message>
+    <message>
+        <source>the lower end held at 0, as a half range is not negative: U₋ = {minus} is the value less it</source>
+        <extracomment>where the printed lower end is held at 0 below the value less its half-width</extracomment>
+        <translation>下端保持为 0，因峰峰值的一半不为负：U₋ = {minus} 为该值减去下端</translation>
+    </message>
+    <message>
+        <source>the lower half-width held to the laboratory&apos;s CMC U = {cmc} reaches below 0, so the lower end is held at 0: U₋ = {minus} is the value less it</source>
+        <extracomment>the same where that half-width was raised to the laboratory&apos;s CMC first</extracomment>
+        <translation>提高到实验室 CMC U = {cmc} 的下半宽延伸至 0 以下，故下端保持为 0：U₋ = {minus} 为该值减去下端</translation>
     </message>
     <message>
         <source>U is incomplete: inputs not stated, so not in U: {inputs}</source>
@@ -11307,6 +11322,16 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     <message>
         <source>the readings were entered coarser than they scatter over the passes (step {step}, s pooled {s}): the rounding of each mean is not random, and the model the intervals are drawn from (random scatter about each θ&apos;s true mean) does not hold, so no ISO 230-2 figure has a coverage interval</source>
         <translation>读数录入得比其在各趟之间的分散更粗（步距 {step}，合并 s 为 {s}）：各平均值的舍入不是随机的，区间所依据的模型（围绕各 θ 真平均值的随机分散）不成立，因此 ISO 230-2 各项指标均不给出包含区间</translation>
+    </message>
+    <message>
+        <source>Here the interval of E, M and A (E↑, E↓, A↑, A↓) reaches at least {shift} beyond the scatter&apos;s own at each end (that at the rest of the tail), for a circle error the readings do not exclude: up to {circle} per reading (the stated theodolite u over the pointing noise&apos;s lower confidence bound), the same at a θ in every pass, whose shape is not known and may be the curve&apos;s worst ({pair} between two θ); that widening, not the scatter, takes such a lower end to 0 where the figure is smaller than it.</source>
+        <extracomment>the share of the coverage interval&apos;s tail spent on the pointing noise&apos;s lower confidence bound, which sizes the widening for a circle error of the curve&apos;s worst shape (:func:`circle_part_not_excluded`); the widened interval is held at the rest (Berger &amp; Boos 1994). 0.25: the expected widening z(1 − (1 − γ) tail/2) · 2 √(u² − s_lo(γ)²) is within 3.7 % of its least over γ in every case of the study of #39 (σ 0.1–1.5″, u_c 0–0.8″, ν 22–328; 0.2 within 2.7 %), half the tail up to 10 % wider (a circle error well above the pointing noise, where the bound&apos;s share costs z and buys nothing) where the figures&apos; intervals are widened for a circle error the readings do not exclude: the true reason a lower end of E, M or A reaches 0 where the scatter alone would not</extracomment>
+        <translation>此处 E、M 和 A（E↑、E↓、A↑、A↓）的区间在每一端至少比仅由离散给出的区间（按尾部的其余部分）再向外延伸 {shift}，以包含读数未能排除的度盘误差：每个读数至多 {circle}（给定的经纬仪 u 超出瞄准噪声置信下限的部分），在每一测回中同一 θ 处相同，其形状未知，可能为曲线最不利的形状（两 θ 之间 {pair}）；使这样的下端达到 0 的是这一展宽，而不是离散，当该参数小于展宽时即如此。</translation>
+    </message>
+    <message>
+        <source>{note}. {widening}</source>
+        <extracomment>the figures&apos; note in the JSON followed by that one</extracomment>
+        <translation>{note}。{widening}</translation>
     </message>
     <message>
         <source>value: the figure as the standard computes it from the readings; interval_low … interval_high: the coverage interval of the TRUE figure (of the true mean deviations and standard deviations) at coverage_probability. A largest value or a range over the targets (R, A, E, M, B) is biased high by the scatter, so the interval may lie below the value, and it reaches 0 where the scatter could hide the whole figure</source>

@@ -102,8 +102,12 @@ def test_the_decided_interval_is_held_to_the_cmc_in_every_output(issued):
     assert decided["verdict"] == "pass" and risk > 0.01  # 0.01 % before, with U₊ = 0.49″
     pdf = issued["pdf"]
     # the figures to the decimal of U = 2.0″ (GUM 7.2.6): pass ≤ T − CMC, fail beyond T + CMC
-    assert f"Coverage interval of the true half range {max(0.0, round(x, 1) - CMC):.1f}\" … " \
-           f"{round(x, 1) + CMC:.1f}\" (U = ±2.0\"" in pdf
+    # each end rounded outwards from the JSON's (0.8.14: the printed value ± the printed U),
+    # U₋ the value to the lower end after it is held at 0
+    low = math.floor(round(decided["interval_low"] * 10, 9)) / 10
+    high = math.ceil(round(decided["interval_high"] * 10, 9)) / 10
+    u = "±2.0\"" if x >= CMC else f"−{x:.1f}\"/+2.0\""
+    assert f"Coverage interval of the true half range {low:.1f}\" … {high:.1f}\" (U = {u}" in pdf
     assert f'Zones: pass ≤ {T - CMC:.1f}" (T − w) < conditional pass ≤ 3" (T) < conditional ' \
            f'fail ≤ {T + CMC:.1f}" (T + w) < fail' in pdf
     assert f"Probability of a false acceptance at this decision: {100 * risk:.2f} %" in pdf

@@ -497,11 +497,13 @@ def _killed_before_named(samples_dir, tmp_path, xlsx, stale=True):
 @pytest.mark.slow
 @pytest.mark.parametrize("writer", ["link", "validate"])
 def test_a_recorded_leftover_is_kept_from_a_write_through_a_link_and_from_validate(
-        samples_dir, tmp_path, capsys, writer):
+        samples_dir, tmp_path, capsys, writer, validation_once):
     """rev64 F2: the keeping looked beside the name given, the atomic write cleared the
     leftovers beside the link's target: a draft's results written to latest.xlsx ->
     r.xlsx deleted the only copy of a recorded results file; so did 'validate --pdf
-    r.xlsx' (no check at all)."""
+    r.xlsx' (no check at all). The validation's reference cases are the session's
+    (``validation_once``): what is checked is where the report is written, not its cases
+    (run again here, they were nearly all of its ~55 s of CPU)."""
     xlsx = tmp_path / "r.xlsx"
     entry, temp = _killed_before_named(samples_dir, tmp_path, xlsx)
     capsys.readouterr()

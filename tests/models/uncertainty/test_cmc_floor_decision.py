@@ -36,7 +36,12 @@ def test_the_half_ranges_interval_and_guard_bands_are_held_to_the_cmc():
     # the guard band is the CMC: pass ≤ T − 2 = 1.0", conditional fail ≤ T + 2 = 5.0"
     # (U to two significant digits, GUM 7.2.6)
     assert 'pass ≤ 1.0" (T − w)' in held.zones and '≤ 5.0" (T + w)' in held.zones
-    assert "U = ±2.0\"" in held.statement
+    # U₋ printed after the end is held at 0 (0.8.14: ±2.0″ beside 0.0″ … 2.7″), and why
+    if x < cmc:
+        assert f"U = −{x:.1f}\"/+2.0\"" in held.statement, held.statement
+        assert "held to the laboratory's CMC U = 2\" reaches below 0" in held.statement
+    else:
+        assert "U = ±2.0\"" in held.statement
     assert held.verdict == "pass"
     # the probability of a false acceptance recomputed: the upper side a normal whose
     # (1 + p)/2 quantile lies at x + CMC
