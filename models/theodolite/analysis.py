@@ -296,6 +296,11 @@ def summary(result: TheodoliteResult, printed: int | None = None) -> str:
         figs = ", ".join(f"{k} = {v:.2f}\"" for k, v in result.iso230.figures.items())
         out.append(f"ISO 230-2: {figs}")
         out.append(_intervals_line(result))
+        from models.theodolite.figures import pointing_in_figures_note
+
+        pointing = pointing_in_figures_note(result)
+        if pointing is not None:
+            out.append(pointing)
         note = once_note(result.iso230, "°")
         if note is not None:
             out.append(note)

@@ -73,7 +73,7 @@ from models.uncertainty.stated_excess import excess_not_excluded
 __all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "circle_part", "circle_part_not_excluded",
            "figure_intervals_withheld",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
-           "pointing_per_reading",
+           "pointing_in_figures", "pointing_in_figures_note", "pointing_per_reading",
            "pooled_repeats", "readings_coarse", "stated_theodolite_figure_intervals",
            "theodolite_figure_intervals", "theodolite_figures_json"]
 
@@ -186,6 +186,42 @@ def pointing_and_dof(result: TheodoliteResult) -> tuple[float, float]:
         return passes, nu
     fit = math.sqrt(float(np.sum(result.elevation_residuals_arcsec**2)) / dof)
     return (passes, nu) if passes <= fit else (fit, float(dof))
+
+
+#: what R and A (and their one-direction forms) of a run with passes are: the axis' as read
+#: with this theodolite, their standard deviations at each θ holding its pointing noise (the
+#: certificate's statements, the JSON beside the figures' note, the summary)
+POINTING_IN_FIGURES = QT_TR_NOOP(
+    "ISO 230-2 R and A (and R↑, R↓, A↑, A↓) are of the axis as read with this theodolite: "
+    "the standard deviations over the passes they are made of hold its pointing noise, {s} "
+    "per reading as the readings show it (ν = {dof}); a perfectly repeatable axis read with "
+    "it has R ≈ {r}, and their coverage intervals are of the figures as so read. E, M, B "
+    "and B̄ are of the means over the passes: the axis' own.")
+
+
+def pointing_in_figures(result: TheodoliteResult) -> tuple[float, float, float] | None:
+    """What the theodolite's pointing noise alone puts into ISO 230-2 R: (s per reading,
+    its ν, R = 4 s/√n), s and ν :func:`pointing_and_dof`, n the readings averaged into a
+    pass's value at a θ (1 without repeated readings); R = 4 s_i for an axis that repeats
+    perfectly, R↑ and R↓ the same. None where no R is evaluated (no passes, or a θ read
+    once in a direction)."""
+    present = _directions(result)
+    if not present or not all(np.all(stats.runs >= 2) for _, stats in present):
+        return None
+    s, dof = pointing_and_dof(result)
+    repeats = pooled_repeats(result)
+    n = 1 if repeats is None else repeats[2]
+    return s, dof, 4.0 * s / math.sqrt(n)
+
+
+def pointing_in_figures_note(result: TheodoliteResult) -> str | None:
+    """:data:`POINTING_IN_FIGURES` with the run's figures (:func:`pointing_in_figures`), or
+    None where no R is evaluated."""
+    found = pointing_in_figures(result)
+    if found is None:
+        return None
+    s, dof, r = found
+    return message(POINTING_IN_FIGURES, s=f"{s:.2g}\"", dof=f"{dof:.0f}", r=f"{r:.2g}\"")
 
 
 #: the share of the coverage interval's tail spent on the pointing noise's lower confidence
@@ -338,9 +374,16 @@ def theodolite_figures_json(result: TheodoliteResult, budget: UncertaintyBudget,
     out = figure_objects(keys, result.iso230.figures, intervals, float(budget.floor) > 0)
     withheld = figure_intervals_withheld(result)
     widening = circle_widening_note(result, budget, stated_u, pair_factor)
+    pointing = pointing_in_figures(result)
     return {"iso230_2_figures": out,
             "iso230_2_figures_reason": None if withheld is None else message(withheld),
             "iso230_2_figures_note": message(FIGURE_NOTE_WITH_WIDENING,
                                              note=message(FIGURE_VALUE_NOTE),
                                              widening=widening)
-            if widening else message(FIGURE_VALUE_NOTE)}
+            if widening else message(FIGURE_VALUE_NOTE),
+            # R and A are of the axis as read with this theodolite: its pointing noise and the
+            # R it alone gives (null where no R is evaluated)
+            "iso230_2_pointing": None if pointing is None else {
+                "pointing_per_reading_arcsec": pointing[0], "pointing_dof": pointing[1],
+                "R_from_pointing_arcsec": pointing[2]},
+            "iso230_2_pointing_note": pointing_in_figures_note(result)}

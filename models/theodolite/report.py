@@ -405,8 +405,9 @@ def _iso230_raised_to_cmc(result: TheodoliteResult, budget: UncertaintyBudget,
 FIGURES_STATEMENT = QT_TR_NOOP(
     "Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value "
     "or a range over the θ, biased high by the scatter, so its interval, that of the true "
-    "figure (of the true means and standard deviations at each θ and direction), may lie "
-    "below the value stated. It is a parametric bootstrap of the figure's error from a model "
+    "figure (of the true means and standard deviations at each θ and direction as this "
+    "theodolite reads them: R and A hold its pointing noise), may lie below the value "
+    "stated. It is a parametric bootstrap of the figure's error from a model "
     "of the axis fitted to the means and standard deviations over the passes (the "
     "positioning workbench's, models/uncertainty/figure_intervals.py), with the set-up "
     "model's error (one curve over θ, drawn as its fit's covariance correlates it) and the "
@@ -430,16 +431,20 @@ MEANS_STATEMENT = QT_TR_NOOP(
 def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata,
                        budget: UncertaintyBudget) -> tuple[str, ...]:
     """What the certificate says of a run with passes: how its figures' intervals and its
-    decided half range are made, and how far the circle error the readings do not exclude
-    widens the figures' intervals (nothing where the passes do not determine them)."""
-    from models.theodolite.figures import circle_widening_note
+    decided half range are made, how far the circle error the readings do not exclude
+    widens the figures' intervals, and how much of R and A is the theodolite's pointing
+    noise (the latter wherever R is evaluated; the others nothing where the passes do not
+    determine them)."""
+    from models.theodolite.figures import circle_widening_note, pointing_in_figures_note
     from models.theodolite.pass_means import decided_on_means
 
+    pointing = pointing_in_figures_note(result)
+    said = () if pointing is None else (pointing,)
     if not decided_on_means(result):
-        return ()
+        return said
     widening = circle_widening_note(result, budget, stated_reading_uncertainty(metadata)[0],
                                     stated_pair_factor(metadata))
-    return ((separated([message(FIGURES_STATEMENT), widening], " "),)
+    return ((separated([message(FIGURES_STATEMENT), widening], " "),) + said
             + ((message(MEANS_STATEMENT),) if metadata.decision_quantity == "half_range"
                and metadata.tolerance is not None else ()))
 

@@ -114,8 +114,10 @@ ACHIEVED: dict[str, float] = {"E": 0.925, "E_up": 0.92, "E_down": 0.935, "A": 0.
 FIGURE_VALUE_NOTE = QT_TR_NOOP(
     "value: the figure as the standard computes it from the readings; interval_low … "
     "interval_high: the coverage interval of the TRUE figure (of the true mean deviations "
-    "and standard deviations) at coverage_probability. A largest value or a range over the "
-    "targets (R, A, E, M, B) is biased high by the scatter, so the interval may lie below "
+    "and standard deviations of the axis as this measuring instrument reads it: R and A, and "
+    "their one-direction forms, are made of the standard deviations and include the "
+    "instrument's own repeatability) at coverage_probability. A largest value or a range "
+    "over the targets (R, A, E, M, B) is biased high by the scatter, so the interval may lie below "
     "the value, and it reaches 0 where the scatter could hide the whole figure")
 
 
