@@ -44,7 +44,7 @@ VARIANTS = {
 SYMBOLS = {"sin", "cos", "rad", "zero", "ISO", "IEC", "GUM", "JCGM", "ILAC", "VIM", "CSV",
            "XLSX", "VDI", "DGQ", "Welch", "Satterthwaite", "AngleBench", "anglebench",
            "validate", "CNAS", "atan", "dev", "asin", "ADC", "LSB", "git",
-           "sha", "CMC", "Beran", "Louis", "Shen", "Efron", "Tibshirani", "Berger", "Boos",
+           "sha", "SHA", "CMC", "Beran", "Louis", "Shen", "Efron", "Tibshirani", "Berger", "Boos",
            "Romano", "Shaikh", "Wolf", "max"}  # git: the software's commit; CMC: as CNAS writes it;
 #: cited authors' names too; max: the operator of a formula (z · 2 max u)
 WORD = re.compile(r"(?<![\w.])[A-Za-z]{3,}(?![\w])")  # "down" of A_down is a symbol's
