@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import csv
 import json
+import re
 import shutil
 import subprocess
 
@@ -88,7 +89,9 @@ def test_a_certificate_from_captured_readings_says_so_and_names_the_output(
     assert _analyze(readings, _details(samples_dir, tmp_path), pdf,
                     "--capture-record", str(raw)) == 0, capsys.readouterr().err
     text = _pdf_text(pdf)
-    assert ("readings.csv; rows 1–3 (3 of 50) captured from the instruments") in text, text
+    # the readings named as the window names them (imported, with their SHA-256: 0.8.15)
+    assert re.search(r"imported from readings\.csv \(SHA-256 [0-9a-f]{64}\); rows 1–3 "
+                     r"\(3 of 50\) captured from the instruments", text), text
     with Register(register_url()) as register:
         (record,) = register.list()
         project = json.loads(record.project_json)

@@ -90,9 +90,11 @@ def test_certificate_names_the_standard_applied(samples_dir, tmp_path, capsys):
 # -- certificate ------------------------------------------------------------------------------
 @pytest.mark.slow
 def test_u_per_target_is_the_gum_combination_of_reference_and_repeatability(samples_dir):
+    # a calibrator states its U for a position from its datum (Per = angle): sensitivity 1
+    # (a standard stated per reading takes √2 since 0.8.15)
     meta = CertificateMetadata(standards=(ReferenceStandard("laser rotary calibrator",
-                                                            uncertainty=0.6,
-                                                            basis="U95"),))
+                                                            uncertainty=0.6, basis="U95",
+                                                            applies_to="angle"),))
     result = sample(samples_dir)
     document = KIND.certificate_document(result, meta)
     for point, (stats_, i) in enumerate([(result.iso.forward, 3), (result.iso.backward, 7)]):
