@@ -62,11 +62,8 @@ class CertificateDialogs:
                 tr("These details are missing: {missing}. The PDF will be marked DRAFT, is not "
                    "a certificate, and nothing is recorded in the register. Export the draft "
                    "anyway?"))
-        answer = self.window.ask(
-            tr("Export a draft?"), said.format(missing=", ".join(tr(m) for m in missing)),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
-            QMessageBox.StandardButton.No)
-        return answer == QMessageBox.StandardButton.Yes
+        return self._yes(
+            tr("Export a draft?"), said.format(missing=", ".join(tr(m) for m in missing)))
 
     def confirm_correction(self, revision, reason: str) -> bool:
         """Another serial number or date of calibration than the certificate amended: a
@@ -78,43 +75,31 @@ class CertificateDialogs:
                     tr("{reason}.\n\nIs this amendment a correction of {number}'s serial "
                        "number or date of calibration? Yes: issue it, the correction stated on "
                        "it. No: nothing is issued, and the next certificate is an original."))
-        answer = self.window.ask(
+        return self._yes(
             tr("Correct the serial number or date of calibration?"),
-            question.format(reason=reason, number=revision.number),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
-            QMessageBox.StandardButton.No)
-        return answer == QMessageBox.StandardButton.Yes
+            question.format(reason=reason, number=revision.number))
 
     def confirm_test_report(self, reasons: list[str]) -> bool:
-        answer = self.window.ask(
+        return self._yes(
             tr("A test report, not a calibration certificate"),
             tr("These details and this result give a test report, not a calibration "
                "certificate: traceability to the SI cannot be stated.\n\n{reasons}\n\nIssue "
                "it as a test report? (No: nothing is written; state the missing inputs in the "
                "workbench's set-up, or the standards in the details, to issue a calibration "
-               "certificate)").format(reasons="\n".join(f"• {r}" for r in reasons)),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
-            QMessageBox.StandardButton.No)
-        return answer == QMessageBox.StandardButton.Yes
+               "certificate)").format(reasons="\n".join(f"• {r}" for r in reasons)))
 
     def confirm_implausible(self, reason: str) -> bool:
-        answer = self.window.ask(
+        return self._yes(
             tr("Certify these figures?"),
             tr("{reason}\n\nIssue a certificate on this result anyway? Only if you have "
-               "checked the readings and the figures are right.").format(reason=reason),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
-            QMessageBox.StandardButton.No)
-        return answer == QMessageBox.StandardButton.Yes
+               "checked the readings and the figures are right.").format(reason=reason))
 
     def confirm_standards(self, warnings: list[str]) -> bool:
         """A reference standard that looks like another test's: go on with it?"""
-        answer = self.window.ask(
+        return self._yes(
             tr("Use these reference standards?"),
             tr("{warnings}\n\nIssue the certificate with them anyway? (No: back to the "
-               "details)").format(warnings="\n".join(warnings)),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
-            QMessageBox.StandardButton.No)
-        return answer == QMessageBox.StandardButton.Yes
+               "details)").format(warnings="\n".join(warnings)))
 
     def ask_change_note(self, revision) -> str:
         question = (tr("This certificate replaces {number}. What changed, and why? (printed on "
@@ -128,27 +113,26 @@ class CertificateDialogs:
     def confirm_another_maker(self, numbers, reason: str) -> bool:
         """A current certificate of the serial and date names another manufacturer: is this
         another maker's item? (rev65 F1; the answer Yes is recorded in the register)"""
-        answer = self.window.ask(
-            tr("Another manufacturer's item?"),
-            tr("{reason}.\n\nIs this item another manufacturer's than that of {numbers}? Yes: "
-               "issue it; the register records that you said so. No: nothing is issued (to "
-               "correct {numbers}, amend or replace it from File › Certificate register).")
-            .format(reason=reason, numbers=", ".join(numbers)),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
-            QMessageBox.StandardButton.No)
-        return answer == QMessageBox.StandardButton.Yes
+        return self._yes(tr("Another manufacturer's item?"), tr(
+            "{reason}.\n\nIs this item another manufacturer's than that of {numbers}? Yes: "
+            "issue it; the register records that you said so. No: nothing is issued (to "
+            "correct {numbers}, amend or replace it from File › Certificate register).")
+            .format(reason=reason, numbers=", ".join(numbers)))
 
     def confirm_lookalike_serial(self, numbers, reason: str) -> bool:
         """The serial is new to the register but looks like the serial of ``numbers``: is
         this another item? (rev65 F7; the answer Yes is recorded in the register)"""
-        answer = self.window.ask(
-            tr("Another item?"),
-            tr("{reason}.\n\nIs this item another than that of {numbers}? Yes: issue it; the "
-               "register records that you said so. No: nothing is issued (correct the serial "
-               "number in the certificate details).")
-            .format(reason=reason, numbers=", ".join(numbers)),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
-            QMessageBox.StandardButton.No)
+        return self._yes(tr("Another item?"), tr(
+            "{reason}.\n\nIs this item another than that of {numbers}? Yes: issue it; the "
+            "register records that you said so. No: nothing is issued (correct the serial "
+            "number in the certificate details).")
+            .format(reason=reason, numbers=", ".join(numbers)))
+
+    def _yes(self, title: str, text: str) -> bool:
+        """Whether the user answers Yes to ``text`` (No the default: nothing is done)."""
+        answer = self.window.ask(title, text,
+                                 QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+                                 QMessageBox.StandardButton.No)
         return answer == QMessageBox.StandardButton.Yes
 
     def ask_separate_calibration(self, numbers, reason: str) -> str:

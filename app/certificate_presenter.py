@@ -606,6 +606,15 @@ class CertificatePresenter:
         finally:
             self.view.wait_cursor(False)
 
+    def _asked(self, ask, *args):
+        """``ask(*args)``, one of the view's questions put while issuing, without the wait
+        cursor over it (back on after the answer)."""
+        self.view.wait_cursor(False)
+        try:
+            return ask(*args)
+        finally:
+            self.view.wait_cursor(True)
+
     def _revision_number(self, revision: PendingRevision) -> str:
         """The number ``revision`` will be issued under when it is an amendment (the
         register's next ``<original>-A<n>``); "" for a replacement (its number comes from
@@ -669,12 +678,8 @@ class CertificatePresenter:
                 except SameCalibrationIssued as exc:
                     # a reading changed and issued again made a second original of one
                     # calibration, neither naming the other (#61 assessor, 17025 7.8.8)
-                    self.view.wait_cursor(False)
-                    try:
-                        separate = " ".join(self.view.ask_separate_calibration(
-                            exc.numbers, explained(exc)).split())
-                    finally:
-                        self.view.wait_cursor(True)
+                    separate = " ".join(self._asked(self.view.ask_separate_calibration,
+                                                    exc.numbers, explained(exc)).split())
                     if not separate:
                         raise
                 except AnotherMakersItem as exc:
@@ -682,24 +687,16 @@ class CertificatePresenter:
                     # and a Yes recorded in the register
                     if another_maker:
                         raise
-                    self.view.wait_cursor(False)
-                    try:
-                        another_maker = self.view.confirm_another_maker(exc.numbers,
-                                                                        explained(exc))
-                    finally:
-                        self.view.wait_cursor(True)
+                    another_maker = self._asked(self.view.confirm_another_maker, exc.numbers,
+                                                explained(exc))
                     if not another_maker:
                         raise
                 except LookalikeSerial as exc:
                     # a serial one look-alike from an item's (rev65 F7): asked, a Yes recorded
                     if another_item:
                         raise
-                    self.view.wait_cursor(False)
-                    try:
-                        another_item = self.view.confirm_lookalike_serial(exc.numbers,
-                                                                          explained(exc))
-                    finally:
-                        self.view.wait_cursor(True)
+                    another_item = self._asked(self.view.confirm_lookalike_serial,
+                                               exc.numbers, explained(exc))
                     if not another_item:
                         raise
                 except NotTheSameCalibration as exc:
@@ -707,11 +704,8 @@ class CertificatePresenter:
                     # user says so, then stated on it (rev62 F1)
                     if revision is None or corrected or not exc.corrections:
                         raise
-                    self.view.wait_cursor(False)
-                    try:
-                        corrected = self.view.confirm_correction(revision, explained(exc))
-                    finally:
-                        self.view.wait_cursor(True)
+                    corrected = self._asked(self.view.confirm_correction, revision,
+                                            explained(exc))
                     if not corrected:
                         self.pending = None
                         self.view.tell(tr("Not issued"), tr(

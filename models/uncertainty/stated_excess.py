@@ -7,18 +7,16 @@ repeat at one place (a theodolite's circle error where it reads a θ), which no 
 The second is what the stated u leaves over the first: √max(u² − σ², 0). With σ estimated
 by s on ν degrees of freedom, the point estimate √max(u² − s², 0) is positive in about half
 the runs of an instrument stated at exactly its pointing noise (s below σ by chance), at
-0.3–0.5 u on 20–40 degrees of freedom: a systematic error the readings do not support. The
-excess is taken over s's one-sided upper confidence bound at :data:`EVIDENCE` instead,
-s √(ν / χ²_ν(1 − p)): the part the readings show to be there at that probability. Where the
-stated u is well above the scatter (a real circle error) the bound moves it little.
-
-What the readings show to be there is not all they allow: where the pointing noise is large
-beside the circle's part (σ = 1.5″ against u_c = 0.4″) the excess over s_up is 0 in nearly
-every run, while σ may lie well below s. The largest part they do not exclude,
-√max(u² − s_lo², 0), is taken over s's one-sided LOWER confidence bound s √(ν / χ²_ν,upper(β))
-(:func:`scatter_lower_bound`, :func:`excess_not_excluded`): σ ≥ s_lo at 1 − β, so it is at
-least the true part at that probability, and an interval sized by it at the rest of its tail
-holds at the whole (Berger & Boos 1994, JASA 89:1012).
+0.3–0.5 u on 20–40 degrees of freedom. Taken over s's one-sided upper confidence bound
+(:func:`scatter_upper_bound`, s √(ν / χ²_ν(1 − p))) it is the part the readings show to be
+there at that probability (the theodolite sized its circle widening by it until 0.8.14);
+but what the readings show is not all they allow: where the pointing noise is large beside
+the circle's part (σ = 1.5″ against u_c = 0.4″) that part is 0 in nearly every run, while σ
+may lie well below s. The largest part they do not exclude, √max(u² − s_lo², 0), is taken
+over s's one-sided LOWER confidence bound s √(ν / χ²_ν,upper(β)) (:func:`scatter_lower_bound`,
+:func:`excess_not_excluded`): σ ≥ s_lo at 1 − β, so it is at least the true part at that
+probability, and an interval sized by it at the rest of its tail holds at the whole (Berger
+& Boos 1994, JASA 89:1012).
 """
 
 from __future__ import annotations
@@ -27,8 +25,7 @@ import math
 
 from scipy.special import chdtri
 
-__all__ = ["EVIDENCE", "excess_not_excluded", "excess_over_scatter", "scatter_lower_bound",
-           "scatter_upper_bound"]
+__all__ = ["EVIDENCE", "excess_not_excluded", "scatter_lower_bound", "scatter_upper_bound"]
 
 #: the one-sided probability at which the readings must show the stated u to exceed their
 #: scatter
@@ -44,13 +41,6 @@ def scatter_upper_bound(s: float, nu: float, evidence: float = EVIDENCE) -> floa
     if not (math.isfinite(nu) and nu >= 1.0):
         return s
     return s * math.sqrt(nu / float(chdtri(nu, evidence)))
-
-
-def excess_over_scatter(stated_u: float, s: float, nu: float,
-                        evidence: float = EVIDENCE) -> float:
-    """√max(u² − s_up², 0), s_up = :func:`scatter_upper_bound` (the stated u whole where no
-    scatter is known: s = 0)."""
-    return math.sqrt(max(stated_u**2 - scatter_upper_bound(s, nu, evidence) ** 2, 0.0))
 
 
 def scatter_lower_bound(s: float, nu: float, beta: float) -> float:

@@ -22,13 +22,13 @@ import re
 from pathlib import Path
 
 import numpy as np
-import pypdfium2 as pdfium
 import pytest
 from lxml import etree
 from openpyxl import load_workbook
 
 from app.main import main
 from models.dcc import vocabulary as v
+from tests.pdf_text import pdf_text as _pdf_text
 from tests.reversal_simulator import readings_rows
 from tests.theodolite_passes_simulator import passes_record
 
@@ -52,16 +52,6 @@ def _main(args: list[str]) -> str:
 def _json(args: list[str]) -> dict:
     text = _main([*args, "--json", "--language", "en"])
     return json.loads(text[text.index("{"):])
-
-
-def _pdf_text(pdf: bytes) -> str:
-    document = pdfium.PdfDocument(pdf)
-    try:
-        text = re.sub(r"\s+", " ", " ".join(document[i].get_textpage().get_text_range()
-                                             for i in range(len(document))))
-        return re.sub(r"(\d) (\"|°)", r"\1\2", text)
-    finally:
-        document.close()
 
 
 def _issue(out: Path, kind: str, readings: Path, details: dict, cmc_flag: str) -> dict:

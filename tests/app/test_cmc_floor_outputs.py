@@ -12,7 +12,6 @@ import re
 from pathlib import Path
 
 import numpy as np
-import pypdfium2 as pdfium
 import pytest
 from lxml import etree
 from openpyxl import load_workbook
@@ -20,6 +19,7 @@ from scipy.stats import norm
 
 from app.main import main
 from models.dcc import vocabulary as v
+from tests.pdf_text import pdf_text as _text
 
 pytestmark = pytest.mark.slow  # a certificate, its DCC and the JSON
 
@@ -27,16 +27,6 @@ ROOT = Path(__file__).resolve().parents[2]
 SAMPLES = ROOT / "resources" / "samples"
 NS = {"dcc": v.DCC_NAMESPACE, "si": v.SI_NAMESPACE}
 CMC, T = 2.0, 3.0
-
-
-def _text(pdf: bytes) -> str:
-    document = pdfium.PdfDocument(pdf)
-    try:
-        text = re.sub(r"\s+", " ", " ".join(document[i].get_textpage().get_text_range()
-                                            for i in range(len(document))))
-        return re.sub(r"(\d) (\"|°)", r"\1\2", text)
-    finally:
-        document.close()
 
 
 @pytest.fixture(scope="module")

@@ -35,11 +35,11 @@ from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal
 from pathlib import Path
 
 import numpy as np
-import pypdfium2 as pdfium
 import pytest
 from scipy.stats import norm
 
 from app.main import main
+from tests.pdf_text import pdf_text as _pdf_text
 from tests.theodolite_passes_simulator import passes_record
 
 pytestmark = pytest.mark.slow  # seven certificates and their JSON
@@ -54,16 +54,6 @@ def _main(args: list[str]) -> str:
     with contextlib.redirect_stdout(said), contextlib.redirect_stderr(told):
         assert main(args) == 0, said.getvalue() + told.getvalue()
     return said.getvalue()
-
-
-def _pdf_text(pdf: bytes) -> str:
-    document = pdfium.PdfDocument(pdf)
-    try:
-        text = re.sub(r"\s+", " ", " ".join(document[i].get_textpage().get_text_range()
-                                             for i in range(len(document))))
-        return re.sub(r"(\d) (\"|°)", r"\1\2", text)
-    finally:
-        document.close()
 
 
 #: (name, workbench, readings, extra arguments, metadata changes)

@@ -16,7 +16,6 @@ import re
 from dataclasses import replace
 from pathlib import Path
 
-import pypdfium2 as pdfium
 import pytest
 
 from app.writers.certificate_pdf import certificate_pdf_bytes
@@ -25,6 +24,7 @@ from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
 from tests.app.test_no_in_house_names import IN_HOUSE
+from tests.pdf_text import pdf_text as _text
 
 pytestmark = pytest.mark.slow  # every test prints certificates (fringe: 512 rows)
 
@@ -49,16 +49,6 @@ SYMBOLS = {"sin", "cos", "rad", "zero", "ISO", "IEC", "GUM", "JCGM", "ILAC", "VI
 #: cited authors' names too; max: the operator of a formula (z · 2 max u)
 WORD = re.compile(r"(?<![\w.])[A-Za-z]{3,}(?![\w])")  # "down" of A_down is a symbol's
 FIGURE = re.compile(r"[+-]?\d+\.\d+(?:\"|°| mV| V| %| rad)")
-
-
-def _text(pdf: bytes) -> str:
-    document = pdfium.PdfDocument(pdf)
-    try:
-        text = re.sub(r"\s+", " ", " ".join(document[i].get_textpage().get_text_range()
-                                            for i in range(len(document))))
-        return re.sub(r"(\d) (\"|°)", r"\1\2", text)  # a unit wrapped onto the next line
-    finally:
-        document.close()
 
 
 @pytest.fixture(scope="module")

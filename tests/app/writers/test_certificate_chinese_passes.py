@@ -20,7 +20,8 @@ import pytest
 
 from app.main import main
 from models.registry import KINDS
-from tests.app.writers.test_certificate_chinese import SYMBOLS, WORD, _text
+from tests.app.writers.test_certificate_chinese import SYMBOLS, WORD
+from tests.pdf_text import pdf_text
 from tests.theodolite_passes_simulator import passes_record
 
 pytestmark = pytest.mark.slow  # one certificate with the figures' bootstrap
@@ -48,7 +49,7 @@ def test_a_chinese_certificate_of_passes_held_to_the_cmc_has_no_english_of_ours(
         code = main(["analyze", "theodolite", str(readings), "--metadata", str(meta),
                      "--cmc-arcsec", "1.5", "--certificate", str(pdf), "--language", "en"])
     assert code == 0, said.getvalue()
-    chinese = _text(pdf.read_bytes())
+    chinese = pdf_text(pdf.read_bytes())
     # a command quoted to be typed and a module's path stay as written
     chinese = re.sub(r"“anglebench[^”]*”|\S*/\S*", " ", chinese)
     theirs = " ".join(str(v) for v in [*details.values(), *details["standards"][0].values(),
