@@ -45,7 +45,11 @@ a certificate is uniquely identified; #61 and #62 reviews):
    "ㅡ") between letters or digits of other scripts are "-" in every key
    (:func:`_cjk_dashes`). A key only ever asks a question or refuses a number — never
    issues a second one, and never lets a change through (what prints otherwise is
-   compared as printed, :func:`as_printed`; rev63 F2).
+   compared as printed, :func:`as_printed`; rev63 F2). What the keys keep apart but a
+   reader who does not mind the case would take for one — every letter or digit read as
+   the digit a case of it prints like, however many ("1ra-o815" for LRA-0815, "sn-11" for
+   SN-LL; :func:`lookalike_serial_key`) — is asked about, never joined
+   (:func:`serial_lookalike`; stop 67).
    - A certificate number's separators (any run of punctuation, symbols and spaces: "-",
      "·", ",", "#", "/", ".") are one separator, none at either end ("AB·2026·0001" and
      "AB-2026-0001." are AB-2026-0001; the amendment form "-A<n>" ("A<n>", "-Amendment n",
@@ -57,7 +61,9 @@ a certificate is uniquely identified; #61 and #62 reviews):
 4. **No serial**: an empty serial, one of separators only ("-", "—") and the words labs
    write for none ("n/a", "none", "unknown", "无" …; :func:`no_serial`) are no serial: the
    item is then the same item by its description and manufacturer, compared by
-   :func:`identifier_key` (case, spaces and look-alikes aside)."""
+   :func:`identifier_key` (case, spaces and look-alikes aside). The register asks about an
+   item of no serial beside a certificate of that day's item of its description and maker
+   with one, and the other way round (store.SerialLeftOut; stop 67)."""
 
 from __future__ import annotations
 

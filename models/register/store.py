@@ -2217,13 +2217,13 @@ def _serial_left_out(meta: CertificateMetadata, rows) -> SerialLeftOut:
     if no_serial(meta.item_serial):
         return SerialLeftOut(message(QT_TR_NOOP(
             "{item} has no serial number, but {others} reports an item of that description "
-            "and maker with one, calibrated {date}: a serial left out does not make another "
-            "item, and this may be a second certificate of that calibration (a corrected "
-            "certificate is its amendment or replacement). Issue it only if it is another "
-            "item, which has no serial number (it is then recorded in the register that you "
-            "said so; on the command line: --another-lookalike-item)"),
+            "and maker with one (its serial in brackets), calibrated {date}: a serial left out "
+            "does not make another item, and this may be a second certificate of that "
+            "calibration (a corrected certificate is its amendment or replacement). Issue it "
+            "only if it is another item, which has no serial number (it is then recorded in "
+            "the register that you said so; on the command line: --another-lookalike-item)"),
             item=_item_text(meta.item_description, _printed(meta.item_manufacturer)),
-            others=", ".join(f"{n} (serial {k})" for n, k, _m in rows),
+            others=", ".join(f"{n} ({k})" for n, k, _m in rows),
             date=meta.calibration_date or "—"), numbers)
     return SerialLeftOut(message(QT_TR_NOOP(
         "{others} reports {item}, which has no serial number, calibrated {date}: this may be "

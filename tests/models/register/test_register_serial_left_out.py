@@ -76,8 +76,9 @@ def test_a_serial_left_out_does_not_pass_the_one_calibration_check(register, bla
     assert isinstance(exc, LookalikeSerial), exc  # asked, as a look-alike serial is
     assert exc.numbers == (first.number,)
     assert str(exc).startswith(f"24-face polygon ({MAKER}) has no serial number, but "
-                               f"{first.number} (serial LRA-0815) reports an item of that "
-                               "description and maker with one, calibrated 2026-11-20"), exc
+                               f"{first.number} (LRA-0815) reports an item of that "
+                               "description and maker with one (its serial in brackets), "
+                               "calibrated 2026-11-20"), exc
     assert "--another-lookalike-item" in str(exc)
     assert [r.number for r in register.list()] == [first.number]
     # the window asks it before the file name
