@@ -175,3 +175,15 @@ def test_an_amendment_is_not_asked_about_its_own_certificates_or_an_unchanged_it
                       another_lookalike_item=True)
     assert _amend(register, lookalike.number, meta("lRA-O8I5", day="2027-01-16")).number
     assert register.audit() == []
+
+
+def test_an_amendment_names_the_very_certificate_it_amends(register):
+    """Guard (passes before stop 67 too): an amendment of a number that only looks like a
+    certificate's ("AB-2028-OOO1", "ab-2028-0001") is refused, nothing issued or
+    superseded: an amendment names the very certificate it amends."""
+    first = issue(register, meta("LRA-0815"))
+    for alike in (first.number.replace("0", "O"), first.number.lower(), first.number + " "):
+        exc = refused(register, meta("LRA-0815"), supersedes=alike, change_note="typo")
+        assert isinstance(exc, RegisterError) and "no certificate or test report" in str(exc), \
+            (alike, exc)
+    assert [(r.number, r.status) for r in register.list()] == [(first.number, "issued")]
