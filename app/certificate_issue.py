@@ -250,8 +250,10 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     of a current certificate of the same serial and date (else AnotherMakersItem; recorded
     in the register's chain when issued).
     ``another_lookalike_item``: the user confirmed that the item is another than that of
-    the certificates whose serial its serial looks like, one letter or digit apart (else
-    LookalikeSerial; recorded in the register's chain when issued; rev65 F7).
+    the certificates whose serial its serial looks like, letters or digits that print alike,
+    case aside, or, for an item of no serial, than that day's item of its description and
+    maker with one, or the other way round (else LookalikeSerial, SerialLeftOut; recorded in
+    the register's chain when issued; rev65 F7, stop 67).
     ``supersedes``: an amendment (or, with ``replacement``, a replacement) of that
     certificate, of its calibration: its workbench, item (serial as printed) and date of calibration,
     else NotTheSameCalibration, before anything is issued; ``correction_confirmed``: a

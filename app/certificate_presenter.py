@@ -95,8 +95,9 @@ class CertificateView(Protocol):
 
     def confirm_lookalike_serial(self, numbers: tuple[str, ...], reason: str) -> bool:
         """The serial is in no certificate of the register but looks like that of
-        ``numbers`` (``reason``, the register's words): is this another item? (recorded when
-        issued; No: not issued)"""
+        ``numbers``, or the item has none beside that day's item of its description with one
+        (``reason``, the register's words): is this another item? (recorded when issued; No:
+        not issued)"""
 
     def confirm_correction(self, revision: PendingRevision, reason: str) -> bool:
         """An amendment or replacement with another serial number or date of calibration

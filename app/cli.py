@@ -123,9 +123,11 @@ def _parser(words, kinds: tuple[str, ...] | None = None,
         "maker); recorded in the register that you said so")))
     p.add_argument("--another-lookalike-item", action="store_true", help=words(QT_TR_NOOP(
         "with --certificate: the serial number is in no certificate of the register but "
-        "looks like one that is (one letter or digit that prints alike, case aside: "
-        "1ra-0815 for LRA-0815), and this is indeed another item (else it is refused, "
-        "naming that certificate); recorded in the register that you said so")))
+        "looks like one that is (letters or digits that print alike, case aside: 1ra-0815 "
+        "or LRA-o815 for LRA-0815), or the item has no serial number where a certificate "
+        "still valid of that date of calibration reports an item of its description and "
+        "maker with one (or the other way round), and this is indeed another item (else it "
+        "is refused, naming that certificate); recorded in the register that you said so")))
     p.add_argument("--results", metavar="OUT.csv|OUT.xlsx",
                    help=words(QT_TR_NOOP("also write the results per point (with U) as CSV or "
                                          "XLSX")))

@@ -1,13 +1,15 @@
 """``anglebench register list``: the register's certificates as a lab clerk reads them —
-number, date of issue, workbench and document, customer, serial number and state (issued,
-withdrawn, amended or replaced, and by which) — in columns aligned on a terminal (a Chinese
-character two columns wide), under a header, in the language asked; or, with ``--json``,
+number, date of issue, workbench and document, customer, serial number, manufacturer and
+state (issued, withdrawn, amended or replaced, and by which) — in columns aligned on a
+terminal (a Chinese character two columns wide), under a header, in the language asked; or, with ``--json``,
 the same records with the register's own English keys and words for scripts.
 
 (stop 63: it printed number, status, document kind, date, workbench, serial and customer
 separated by tabs, without a header: the third column read "not recorded" or "Calibration
 certificate" with nothing to say what it was, and an amended certificate read
-"superseded".)
+"superseded". Stop 67: no manufacturer, though a serial is unique only within its maker
+and the calibration interval and due date are per serial and maker: Acme's "001" and
+Zeta's "001" read as one item.)
 """
 
 from __future__ import annotations
@@ -24,7 +26,7 @@ __all__ = ["HEADERS", "listing_json", "listing_lines", "state_of"]
 #: the columns' headers, in their order
 HEADERS = (QT_TR_NOOP("Number"), QT_TR_NOOP("Date of issue"),
            QT_TR_NOOP("Workbench / document"), QT_TR_NOOP("Customer"),
-           QT_TR_NOOP("Serial number"), QT_TR_NOOP("State"))
+           QT_TR_NOOP("Serial number"), QT_TR_NOOP("Manufacturer"), QT_TR_NOOP("State"))
 #: between two columns
 GAP = "  "
 
@@ -67,6 +69,7 @@ def listing_lines(records: Sequence, revision_of: Callable[[str], str],
         rows.append([record.number, record.issue_date or "—",
                      f"{record.workbench} / {rendered(kind_words(record.document_kind), words)}",
                      record.customer or "—", record.item_serial or "—",
+                     " ".join((record.item_manufacturer or "").split()) or "—",
                      rendered(_state_words(state, by), words)])
     widths = [max(display_width(row[c]) for row in rows) for c in range(len(HEADERS))]
     lines = []
@@ -79,13 +82,14 @@ def listing_lines(records: Sequence, revision_of: Callable[[str], str],
 def listing_json(records: Sequence, revision_of: Callable[[str], str]) -> list[dict[str, Any]]:
     """The records for a script: the register's own English keys and words (``state``:
     issued, withdrawn, amended or replaced; ``document_kind``: calibration, test or null,
-    not recorded)."""
+    not recorded; ``item_manufacturer``: "" when the certificate names none)."""
     out = []
     for record in records:
         state, by = state_of(record, revision_of)
         out.append({"number": record.number, "issue_date": record.issue_date,
                     "workbench": record.workbench, "document_kind": record.document_kind,
                     "customer": record.customer, "item_serial": record.item_serial,
-                    "state": state, "superseded_by": by or None,
+                    "item_manufacturer": record.item_manufacturer or "", "state": state,
+                    "superseded_by": by or None,
                     "revision": record.revision, "status": record.status})
     return out

@@ -45,7 +45,11 @@ a certificate is uniquely identified; #61 and #62 reviews):
    "ㅡ") between letters or digits of other scripts are "-" in every key
    (:func:`_cjk_dashes`). A key only ever asks a question or refuses a number — never
    issues a second one, and never lets a change through (what prints otherwise is
-   compared as printed, :func:`as_printed`; rev63 F2).
+   compared as printed, :func:`as_printed`; rev63 F2). What the keys keep apart but a
+   reader who does not mind the case would take for one — every letter or digit read as
+   the digit a case of it prints like, however many ("1ra-o815" for LRA-0815, "sn-11" for
+   SN-LL; :func:`lookalike_serial_key`) — is asked about, never joined
+   (:func:`serial_lookalike`; stop 67).
    - A certificate number's separators (any run of punctuation, symbols and spaces: "-",
      "·", ",", "#", "/", ".") are one separator, none at either end ("AB·2026·0001" and
      "AB-2026-0001." are AB-2026-0001; the amendment form "-A<n>" ("A<n>", "-Amendment n",
@@ -57,7 +61,9 @@ a certificate is uniquely identified; #61 and #62 reviews):
 4. **No serial**: an empty serial, one of separators only ("-", "—") and the words labs
    write for none ("n/a", "none", "unknown", "无" …; :func:`no_serial`) are no serial: the
    item is then the same item by its description and manufacturer, compared by
-   :func:`identifier_key` (case, spaces and look-alikes aside)."""
+   :func:`identifier_key` (case, spaces and look-alikes aside). The register asks about an
+   item of no serial beside a certificate of that day's item of its description and maker
+   with one, and the other way round (store.SerialLeftOut; stop 67)."""
 
 from __future__ import annotations
 
@@ -71,9 +77,9 @@ from models.register._identifier_tables import CONFUSABLES, DEFAULT_IGNORABLE
 
 __all__ = ["IdentifierError", "amendment_form_keys", "amendment_stems", "as_printed",
            "folded_identifier_key", "folded_serial_key", "identifier_key", "identifier_keys",
-           "no_serial", "normalise_identifier", "reads_as_amendment", "reads_as_amendment_of",
-           "refuse_unprinted", "same_identifier", "same_name", "same_serial", "serial_key",
-           "serial_keys", "serial_lookalike"]
+           "lookalike_serial_key", "no_serial", "normalise_identifier", "reads_as_amendment",
+           "reads_as_amendment_of", "refuse_unprinted", "same_identifier", "same_name",
+           "same_serial", "serial_key", "serial_keys", "serial_lookalike"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
 _DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
@@ -386,17 +392,47 @@ def _one_look_alike_apart(one: str, other: str) -> bool:
         _skeleton(c) for c in (other, other.upper(), other.lower()))
 
 
+@functools.lru_cache(maxsize=1 << 12)
+def _lookalike_class(char: str) -> str:
+    """What ``char`` (a character of :func:`_prototypes`' text, decomposed) is, case and
+    look-alikes aside at once: the digit that one of its cases prints like ("l", "L", "I",
+    "i", "|" are 1; "O", "o" are 0: the skeleton's own tables, :data:`_DIGIT_LIKE`), else
+    the character case folded. Only ever compared, to ask (:func:`serial_lookalike`)."""
+    skeletons = {_skeleton(case) for case in {char, char.upper(), char.lower()}}
+    digits = sorted(s for s in skeletons if len(s) == 1 and s in "0123456789")
+    return digits[0] if digits else min(_fold(s) for s in skeletons)
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def lookalike_serial_key(text: str) -> str:
+    """The serial as it looks, case and look-alikes aside at once: the prototypes, small
+    "rn" as "m" as typed (case kept, rev65 F8), each character as its look-alike class
+    (:func:`_lookalike_class`: "1ra-o815", "LRA-0815", "lra-O8I5" are all "1ra815"),
+    separators and zeros before a number dropped. Never a key that joins two serials (it
+    would make "SN-1A" one item with "SN-LA"): equal by it and not one serial
+    (:func:`same_serial`) is a look-alike the register asks about
+    (:func:`serial_lookalike`; stop 67: "LRA-o815", a small "o" for the zero, and
+    "1ra-o815", two substitutions and the case, issued unasked beside LRA-0815)."""
+    prototypes = _rn_as_m(unicodedata.normalize("NFC", _prototypes(text)))
+    classes = "".join(_lookalike_class(char)
+                      for char in unicodedata.normalize("NFD", prototypes))
+    return _serial_key(unicodedata.normalize("NFC", classes))
+
+
 def serial_lookalike(one: str, other: str) -> bool:
-    """Whether two serial numbers that are not one (:func:`same_serial`) would be by one
-    look-alike substitution more, case aside (rev65 F7: "1ra-0815", a digit for a letter
-    and a change of case at once, is LRA-0815 by none of the keys): by one of their keys
-    (:func:`serial_keys`), each to the same key of the other, they differ in one character
-    only, and that character's cases have one skeleton (a letter and the digit it prints
+    """Whether two serial numbers that are not one (:func:`same_serial`) would be if each
+    letter or digit that prints like another were read as it, case aside (rev65 F7:
+    "1ra-0815", a digit for a letter and a change of case at once, is LRA-0815 by none of
+    the keys; stop 67: so are "LRA-o815", a small "o" for the zero, "1ra-o815" and "sn-11"
+    beside SN-LL, two substitutions): their :func:`lookalike_serial_key` is one, or by one
+    of their keys (:func:`serial_keys`), each to the same key of the other, they differ in
+    one character only whose cases have one skeleton (a letter and the digit it prints
     like). Never joins them: folding this into a key would make "SN-1A" one with "SN-LA",
-    two items; the register asks instead (store.LookalikeSerial). Two substitutions or more
-    ("sn-11" and "SN-LL") are not asked."""
+    two items; the register asks instead (store.LookalikeSerial)."""
     if same_serial(one, other):
         return False
+    if lookalike_serial_key(one) == lookalike_serial_key(other):
+        return True
     for mine, theirs in zip(serial_keys(one), serial_keys(other), strict=True):
         if len(mine) != len(theirs):
             continue

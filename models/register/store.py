@@ -48,7 +48,7 @@ if TYPE_CHECKING:
 
 __all__ = ["AnotherMakersItem", "CertificateRecord", "IssueRequest", "LookalikeSerial",
            "NotTheSameCalibration", "PrintedHead", "Register", "RegisterError",
-           "RegisterTampered", "SameCalibrationIssued", "lab_timezone", "software_versions"]
+           "RegisterTampered", "SameCalibrationIssued", "SerialLeftOut", "lab_timezone", "software_versions"]
 
 LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
              "psycopg")
@@ -96,17 +96,27 @@ class AnotherMakersItem(RegisterError):
 
 
 class LookalikeSerial(RegisterError):
-    """An original whose serial number is no serial in the register of its maker (a maker
-    named on only one side is any) but is one look-alike substitution, case aside, from the
-    serial of certificates ``numbers`` (identifiers.serial_lookalike; rev65 F7: "1ra-0815",
-    a digit for a letter and the case at once, issued as another item than LRA-0815, its
-    history and due date split). The keys are not widened ("SN-1A" and "SN-LA" are two
-    items), so it is issued when the user confirms it is another item; the confirmation is
-    a chained entry of the register ("lookalike_serial"), which `register show` lists."""
+    """An original (or an amendment or replacement whose item is corrected: stop 67) whose
+    serial number is no serial in the register of its maker (a maker named on only one side
+    is any) but looks like the serial of certificates ``numbers``, letters or digits that
+    print alike, case aside (identifiers.serial_lookalike; rev65 F7: "1ra-0815", a digit for
+    a letter and the case at once, issued as another item than LRA-0815, its history and
+    due date split). The keys are not widened ("SN-1A" and "SN-LA" are two items), so it is
+    issued when the user confirms it is another item; the confirmation is a chained entry
+    of the register ("lookalike_serial"), which `register show` lists."""
 
     def __init__(self, text, numbers: tuple[str, ...]) -> None:
         super().__init__(text)
         self.numbers = numbers
+
+
+class SerialLeftOut(LookalikeSerial):
+    """An item of no serial number (identifiers.no_serial) where a current certificate of
+    the workbench and date of calibration (``numbers``) reports an item of its description
+    and maker (printing alike; a maker named on only one side is any) with a serial, or the
+    other way round (stop 67: LRA-0815's calibration issued a second time with the serial
+    left blank, unasked, as if another item). Asked as a look-alike serial is, with the same
+    word (``another_lookalike_item``, recorded as a "lookalike_serial" entry)."""
 
 
 class NotTheSameCalibration(RegisterError):
@@ -978,11 +988,22 @@ class Register:
                     # (_corrections); an original naming another maker is asked (rev65 F1)
                     others = () if supersedes or separate_calibration is None else \
                         self._another_makers(conn, request.workbench, meta)
-                    # a serial one look-alike from an item's, new to the register (rev65 F7)
+                    # a serial that looks like an item's, new to the register (rev65 F7),
+                    # and an item of no serial beside one of its description with one: asked
                     lookalikes = () if supersedes or separate_calibration is None else \
                         self._lookalike_serials(conn, meta)
+                    left_out = () if supersedes or separate_calibration is None else \
+                        self._serial_left_out(conn, request.workbench, meta)
                     corrected = () if plan.original is None else self._corrections(
                         conn, plan.original, request.workbench, meta, correction_confirmed)
+                    # an amendment or replacement that corrects the item is asked as an
+                    # original is, its own certificates aside (stop 67: one corrected to
+                    # "1ra-0815" made a second current certificate of LRA-0815's calibration)
+                    if plan.original is not None and separate_calibration is not None \
+                            and _item_corrected(plan.original, meta):
+                        own = self._revisions_of(conn, plan.original)
+                        lookalikes = self._lookalike_serials(conn, meta, own)
+                        left_out = self._serial_left_out(conn, request.workbench, meta, own)
                 separate = " ".join((separate_calibration or "").split())
                 if same and not separate:
                     raise SameCalibrationIssued(message(QT_TR_NOOP(
@@ -998,6 +1019,8 @@ class Register:
                     raise _another_makers_item(meta, others)
                 if lookalikes and not another_lookalike_item:
                     raise _lookalike_serial(meta, lookalikes)
+                if left_out and not another_lookalike_item:
+                    raise _serial_left_out(meta, left_out)
                 original = plan.original
                 final = dataclasses.replace(
                     meta, certificate_number=plan.number, issue_date=issue_date.isoformat(),
@@ -1072,13 +1095,13 @@ class Register:
                                 "calibration_date": meta.calibration_date,
                                 "others": [{"number": n, "manufacturer": m}
                                            for n, m in others]})
-                        if lookalikes:  # said by the user: recorded, as another maker's
+                        if lookalikes or left_out:  # said by the user: recorded
                             self._append_entry(conn, "lookalike_serial", plan.number, {
                                 "serial": meta.item_serial,
                                 "manufacturer": meta.item_manufacturer,
                                 "calibration_date": meta.calibration_date,
                                 "others": [{"number": n, "serial": k, "manufacturer": m}
-                                           for n, k, m in lookalikes]})
+                                           for n, k, m in (*lookalikes, *left_out)]})
                         # its results file may now be recorded, by this issuer only
                         self._results_due.add(plan.number)
                         return record, pdf
@@ -1184,16 +1207,20 @@ class Register:
         with self._read() as conn:
             others = self._another_makers(conn, workbench, meta)
             lookalikes = self._lookalike_serials(conn, meta)
+            left_out = self._serial_left_out(conn, workbench, meta)
         return ((_another_makers_item(meta, others),) if others else ()) + \
-            ((_lookalike_serial(meta, lookalikes),) if lookalikes else ())
+            ((_lookalike_serial(meta, lookalikes),) if lookalikes else ()) + \
+            ((_serial_left_out(meta, left_out),) if left_out else ())
 
-    def _lookalike_serials(self, conn, meta: CertificateMetadata
+    def _lookalike_serials(self, conn, meta: CertificateMetadata,
+                           own: frozenset[str] = frozenset()
                            ) -> tuple[tuple[str, str, str], ...]:
-        """The certificates (number, serial, manufacturer) of every status whose serial is
-        one look-alike substitution, case aside, from ``meta``'s (identifiers.
-        serial_lookalike), of its maker (a certificate or ``meta`` naming none is any:
-        _same_maker), when no certificate of its maker has its serial (then it is that
-        item's, asked nothing: rev65 F7). () for an item of no serial."""
+        """The certificates (number, serial, manufacturer) of every status whose serial
+        looks like ``meta``'s, case aside (identifiers.serial_lookalike), of its maker (a
+        certificate or ``meta`` naming none is any: _same_maker), when no certificate of its
+        maker has its serial (then it is that item's, asked nothing: rev65 F7). () for an
+        item of no serial. ``own``: the numbers of the certificate an amendment corrects and
+        of its earlier revisions (not counted)."""
         from models.register.identifiers import no_serial, serial_lookalike
 
         if no_serial(meta.item_serial):
@@ -1201,12 +1228,48 @@ class Register:
         c = self._schema.CERTIFICATES.c
         rows = [row for row in conn.execute(self._sa.select(
                     c.number, c.item_serial, c.item_manufacturer).order_by(c.id))
-                if not no_serial(row.item_serial or "")
+                if row.number not in own and not no_serial(row.item_serial or "")
                 and _same_maker(row.item_manufacturer, meta.item_manufacturer)]
         if any(_same_instrument(row.item_serial, meta.item_serial) for row in rows):
             return ()
         return tuple((row.number, row.item_serial, _printed(row.item_manufacturer))
                      for row in rows if serial_lookalike(meta.item_serial, row.item_serial))
+
+    def _serial_left_out(self, conn, workbench: str, meta: CertificateMetadata,
+                         own: frozenset[str] = frozenset()
+                         ) -> tuple[tuple[str, str, str], ...]:
+        """The current certificates (number, serial, manufacturer) of ``workbench`` and the
+        date of calibration of ``meta`` whose item has a serial where ``meta``'s has none
+        (no_serial), or none where it has one, of a description printing alike
+        (same_identifier, as an item of no serial is told) and of its maker (_same_maker: a
+        side naming none is any): that calibration's item, perhaps, its serial left out or
+        typed only now (stop 67: a blank serial got past the one-calibration check).
+        ``own``: as in :meth:`_lookalike_serials`."""
+        from models.register.identifiers import no_serial, same_identifier
+
+        c = self._schema.CERTIFICATES.c
+        query = self._sa.select(c.number, c.item_serial, c.item_description,
+                                c.item_manufacturer).where(
+            c.workbench == workbench, c.status == "issued",
+            c.calibration_date == meta.calibration_date)
+        unnamed = no_serial(meta.item_serial)
+        return tuple(
+            (row.number, row.item_serial or "", _printed(row.item_manufacturer))
+            for row in conn.execute(query.order_by(c.id))
+            if row.number not in own and no_serial(row.item_serial or "") != unnamed
+            and same_identifier(row.item_description or "", meta.item_description or "")
+            and _same_maker(row.item_manufacturer, meta.item_manufacturer))
+
+    def _revisions_of(self, conn, record: CertificateRecord) -> frozenset[str]:
+        """``record``'s number and those of the certificates it supersedes, back to the
+        original: the one calibration an amendment corrects."""
+        c = self._schema.CERTIFICATES.c
+        numbers, number = {record.number}, record.supersedes
+        while number and number not in numbers:
+            numbers.add(number)
+            number = conn.execute(self._sa.select(c.supersedes).where(
+                c.number == number)).scalar_one_or_none()
+        return frozenset(numbers)
 
     def _confirmations(self, kind: str, number: str) -> builtins.list[dict]:
         """The chained entries of ``kind`` (a confirmation the user gave at issue), every
@@ -2136,13 +2199,53 @@ def _lookalike_serial(meta: CertificateMetadata, lookalikes) -> LookalikeSerial:
     naming the certificates and their serials."""
     return LookalikeSerial(message(QT_TR_NOOP(
         "serial {serial} is in no certificate of the register, but looks like {others} "
-        "(one letter or digit that prints alike, case aside): it may be that item with its "
+        "(letters or digits that print alike, case aside): it may be that item with its "
         "serial mistyped, which would split its history and due date. Issue it only if it "
         "is another item (it is then recorded in the register that you said so; on the "
         "command line: --another-lookalike-item)"),
         serial=meta.item_serial,
         others=", ".join(f"{k} ({n}{', ' + m if m else ''})" for n, k, m in lookalikes)),
         tuple(n for n, _k, _m in lookalikes))
+
+
+def _serial_left_out(meta: CertificateMetadata, rows) -> SerialLeftOut:
+    """The question of an item of no serial beside one of its description with a serial, or
+    the other way round (:meth:`Register.issue`; stop 67), as raised."""
+    from models.register.identifiers import no_serial
+
+    numbers = tuple(n for n, _k, _m in rows)
+    if no_serial(meta.item_serial):
+        return SerialLeftOut(message(QT_TR_NOOP(
+            "{item} has no serial number, but {others} reports an item of that description "
+            "and maker with one (its serial in brackets), calibrated {date}: a serial left out "
+            "does not make another item, and this may be a second certificate of that "
+            "calibration (a corrected certificate is its amendment or replacement). Issue it "
+            "only if it is another item, which has no serial number (it is then recorded in "
+            "the register that you said so; on the command line: --another-lookalike-item)"),
+            item=_item_text(meta.item_description, _printed(meta.item_manufacturer)),
+            others=", ".join(f"{n} ({k})" for n, k, _m in rows),
+            date=meta.calibration_date or "—"), numbers)
+    return SerialLeftOut(message(QT_TR_NOOP(
+        "{others} reports {item}, which has no serial number, calibrated {date}: this may be "
+        "that item with its serial {serial} typed now, a second certificate of that "
+        "calibration (a corrected certificate is its amendment or replacement). Issue it only "
+        "if it is another item (it is then recorded in the register that you said so; on the "
+        "command line: --another-lookalike-item)"),
+        others=", ".join(numbers), serial=meta.item_serial,
+        item=_item_text(meta.item_description, _printed(meta.item_manufacturer)),
+        date=meta.calibration_date or "—"), numbers)
+
+
+def _item_corrected(original: CertificateRecord, meta: CertificateMetadata) -> bool:
+    """Whether an amendment or replacement of ``original`` with ``meta`` corrects its item:
+    the serial or the manufacturer as printed, or for an item of no serial the
+    description (the item an amendment's look-alike questions are asked of)."""
+    from models.register.identifiers import as_printed, no_serial
+
+    return as_printed(original.item_serial) != as_printed(meta.item_serial) \
+        or _printed(original.item_manufacturer) != _printed(meta.item_manufacturer) \
+        or no_serial(meta.item_serial) \
+        and _printed(original.item_description) != _printed(meta.item_description)
 
 
 def _parse_time(text: str) -> dt.datetime:

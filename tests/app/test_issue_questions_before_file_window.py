@@ -120,6 +120,38 @@ def test_a_lookalike_serial_is_asked_before_the_file_dialog(polygon_window, samp
         assert register.audit() == []
 
 
+def test_a_serial_said_to_be_none_beside_that_days_item_is_asked_before_the_file_dialog(
+        polygon_window, samples_dir, tmp_path):
+    """Stop 67: LRA-0815's calibration exported again with the serial "n/a" was issued as
+    another item, unasked. Asked as a look-alike serial is: No issues nothing and asks no
+    file; Yes issues it and the register records the answer."""
+    window = polygon_window
+    first = _first(samples_dir, tmp_path)
+    calls: list = []
+    _answer(window, samples_dir, tmp_path, calls, QMessageBox.StandardButton.No,
+            item_serial="n/a", item_manufacturer=FIRST_MAKER)
+    assert not window.export_certificate()
+    asked = [c for c in calls if c[0] == "asked"]
+    assert [c[1] for c in asked] == ["Another item?"] and "file" not in calls
+    assert f"has no serial number, but {first} (LRA-0815) reports an item of that " \
+        "description and maker with one" in asked[0][2], asked[0][2]
+    with Register(register_url()) as register:
+        assert [r.number for r in register.list()] == [first]
+    calls.clear()
+    _answer(window, samples_dir, tmp_path, calls, QMessageBox.StandardButton.Yes,
+            item_serial="n/a", item_manufacturer=FIRST_MAKER)
+    assert window.export_certificate()
+    assert [c[:2] if isinstance(c, tuple) else c for c in calls][:2] == [
+        ("asked", "Another item?"), "file"]
+    with Register(register_url()) as register:
+        [second] = [r for r in register.list() if r.number != first]
+        assert second.item_serial == "n/a"
+        [said] = register.lookalike_serial_confirmations(second.number)
+        assert said["others"] == [{"number": first, "serial": "LRA-0815",
+                                   "manufacturer": FIRST_MAKER}]
+        assert register.audit() == []
+
+
 def test_the_schedule_names_the_maker_and_marks_makerless_certificates(window, qtbot,
                                                                       samples_dir, tmp_path):
     """The register window's history and due date are per (serial, maker) since schema 7,

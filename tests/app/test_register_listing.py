@@ -1,7 +1,8 @@
 """``anglebench register list`` as a lab clerk reads it (stop 63: tab-separated, no header,
 its third column "not recorded" or "Calibration certificate" unexplained, an amended
 certificate "superseded"): number, date of issue, workbench / document, customer, serial,
-state, aligned under a header in either language; ``--json`` for scripts."""
+manufacturer (stop 67: none, though a serial is unique only within its maker), state,
+aligned under a header in either language; ``--json`` for scripts."""
 
 from __future__ import annotations
 
@@ -62,17 +63,17 @@ def test_register_list_is_aligned_under_a_header_in_both_languages(capsys):
     assert "\t" not in "".join(lines)
     header = lines[0]
     titles = ["Number", "Date of issue", "Workbench / document", "Customer", "Serial number",
-              "State"]
+              "Manufacturer", "State"]
     starts = [header.index(title) for title in titles]
     assert starts == sorted(starts) and starts[0] == 0
     rows = {cells[0]: cells for cells in (_columns(line, starts) for line in lines[1:])}
     assert rows[names["amended"]][1:] == [
         rows[names["amended"]][1], "polygon / Calibration certificate", "上海光学仪器有限公司",
-        "RX-1", f"amended by {names['amendment']}"]
-    assert rows[names["withdrawn"]][2:] == ["polygon / Test report", "Acme Optics", "X-2",
+        "RX-1", "—", f"amended by {names['amendment']}"]
+    assert rows[names["withdrawn"]][2:] == ["polygon / Test report", "Acme Optics", "X-2", "—",
                                             "withdrawn"]
-    assert rows[names["replaced"]][5] == f"replaced by {names['replacement']}"
-    assert rows[names["amendment"]][5] == "issued"
+    assert rows[names["replaced"]][6] == f"replaced by {names['replacement']}"
+    assert rows[names["amendment"]][6] == "issued"
     assert len(rows[names["amended"]][1]) == 10  # YYYY-MM-DD
     # in Chinese: the same columns, aligned by terminal width (a Chinese character is two)
     assert main(["register", "list", "--language", "zh_CN"]) == 0
@@ -90,10 +91,61 @@ def test_register_list_json_gives_the_registers_own_words(capsys):
     assert listed[names["amended"]] | {"issue_date": ""} == {
         "number": names["amended"], "issue_date": "", "workbench": "polygon",
         "document_kind": "calibration", "customer": "上海光学仪器有限公司", "item_serial": "RX-1",
-        "state": "amended", "superseded_by": names["amendment"], "revision": "original",
-        "status": "superseded"}
+        "item_manufacturer": "", "state": "amended", "superseded_by": names["amendment"],
+        "revision": "original", "status": "superseded"}
     assert listed[names["withdrawn"]]["state"] == "withdrawn"
     assert listed[names["replaced"]]["state"] == "replaced"
     assert listed[names["amendment"]]["state"] == "issued"
     assert main(["register", "list", "RX-1", "--json", "--language", "zh_CN"]) == 0
     assert {r["state"] for r in json.loads(capsys.readouterr().out)} == {"issued", "amended"}
+
+
+def _two_makers_001() -> list[str]:
+    """Acme's and Zeta's serial "001" (two items: the interval and due date are per serial
+    and maker), and a certificate naming no maker."""
+    with Register(register_url()) as register:
+        def issue(serial, maker, day):
+            meta = CertificateMetadata(approver="Dr. Li", calibration_date=day,
+                                       item_serial=serial, item_manufacturer=maker,
+                                       customer_name="Customer X")
+            return register.issue(IssueRequest("polygon", meta, PROJECT),
+                                  lambda m, head="": f"%PDF {m.certificate_number}".encode(),
+                                  separate_calibration="", another_makers_item=True,
+                                  document_kind="calibration")[0].number
+
+        return [issue("001", "Acme  Optics GmbH", "2026-01-01"),
+                issue("001", "Zeta Instruments", "2026-01-01"),
+                issue("002", "", "2026-01-02")]
+
+
+def test_register_list_names_each_certificates_manufacturer(capsys):
+    """Stop 67: the list had no manufacturer, so Acme's and Zeta's "001" read as one item.
+    The column stands after the serial, the columns before it where they were; "—" for a
+    certificate naming none; spaces collapsed (a line break would break the line)."""
+    acme, zeta, makerless = _two_makers_001()
+    assert main(["register", "list"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    titles = ["Number", "Date of issue", "Workbench / document", "Customer", "Serial number",
+              "Manufacturer", "State"]
+    starts = [lines[0].index(title) for title in titles]
+    assert starts == sorted(starts) and lines[0].split()[-1] == "State"
+    rows = {cells[0]: cells for cells in (_columns(line, starts) for line in lines[1:])}
+    assert rows[acme][4:] == ["001", "Acme Optics GmbH", "issued"]
+    assert rows[zeta][4:] == ["001", "Zeta Instruments", "issued"]
+    assert rows[makerless][4:] == ["002", "—", "issued"]
+    # in Chinese: the header in its language, the maker in its column
+    assert main(["register", "list", "--language", "zh_CN"]) == 0
+    chinese = capsys.readouterr().out.splitlines()
+    assert "制造商" in chinese[0] and "Manufacturer" not in chinese[0]
+    maker_at = {display_width(line[:line.index(maker)]) for line in chinese[1:]
+                for maker in ("Acme Optics GmbH", "Zeta Instruments") if maker in line}
+    assert len(maker_at) == 1, chinese
+    # --json: a key added, every key before kept (scripts that read them go on working)
+    assert main(["register", "list", "--json"]) == 0
+    listed = {r["number"]: r for r in json.loads(capsys.readouterr().out)}
+    assert listed[acme]["item_manufacturer"] == "Acme  Optics GmbH"  # as the register keeps it
+    assert listed[zeta]["item_manufacturer"] == "Zeta Instruments"
+    assert listed[makerless]["item_manufacturer"] == ""
+    assert set(listed[acme]) == {"number", "issue_date", "workbench", "document_kind",
+                                 "customer", "item_serial", "item_manufacturer", "state",
+                                 "superseded_by", "revision", "status"}

@@ -1,0 +1,49 @@
+"""Stop 67 on the command line: LRA-0815's calibration issued again with the serial said to
+be none ("n/a", "-") passed as another item (a serial left empty makes a draft). Refused
+(exit 2, naming the certificate, nothing written) without --another-lookalike-item; with
+it, issued, and `register show` prints the user's word from the chain, which verifies."""
+
+from __future__ import annotations
+
+import json
+
+from app.main import main
+from models.register.location import register_url
+from models.register.store import Register
+
+
+def test_a_serial_left_out_is_issued_only_with_the_word_that_it_is_another_item(
+        samples_dir, tmp_path, capsys):
+    def analyze(name, serial, *options):
+        meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+        meta.update({"example": False, "certificate_number": "", "item_serial": serial})
+        (tmp_path / f"{name}.json").write_text(json.dumps(meta), encoding="utf-8")
+        code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                     "--certificate", str(tmp_path / f"{name}.pdf"), "--metadata",
+                     str(tmp_path / f"{name}.json"), *options])
+        return code, capsys.readouterr().err
+
+    assert analyze("a", "LRA-0815")[0] == 0
+    with Register(register_url()) as register:
+        [first] = [r.number for r in register.list()]
+    # a serial not typed at all is a draft (the details incomplete), recorded nowhere
+    code, err = analyze("draft", "")
+    assert code == 0 and "DRAFT" in err and "item serial number missing" in err, err
+    with Register(register_url()) as register:
+        assert [r.number for r in register.list()] == [first]
+    # said to have none: asked
+    for blank in ("n/a", "-"):
+        code, err = analyze("b", blank)
+        assert code == 2, (code, err)
+        assert "has no serial number, but " + first + " (LRA-0815) reports an item of " \
+            "that description and maker with one (its serial in brackets)" in err, err
+        assert "--another-lookalike-item" in err and "no certificate was written" in err
+        assert not (tmp_path / "b.pdf").exists()
+    code, err = analyze("b", "n/a", "--another-lookalike-item")
+    assert code == 0, err
+    with Register(register_url()) as register:
+        [second] = [r.number for r in register.list() if r.number != first]
+    assert main(["register", "show", second]) == 0
+    out = capsys.readouterr().out
+    assert "another item, as " in out and f"not the item of {first} (LRA-0815)" in out, out
+    assert main(["register", "verify"]) == 0
