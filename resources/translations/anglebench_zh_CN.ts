@@ -5585,10 +5585,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>与 --certificate 一起使用：一份仍然有效的证书以另一制造商的名称报告了相同的序列号和校准日期，而这确实是另一制造商的被校件（否则予以拒绝：写法不同的制造商名称仍是同一制造商）；登记册会记录这是您的说明</translation>
     </message>
     <message>
-        <source>with --certificate: the serial number is in no certificate of the register but looks like one that is (one letter or digit that prints alike, case aside: 1ra-0815 for LRA-0815), and this is indeed another item (else it is refused, naming that certificate); recorded in the register that you said so</source>
-        <translation>与 --certificate 同用：序列号不在登记册的任何证书中，但与其中某一序列号相似（相差一个印刷相似的字母或数字，大小写不计：1ra-0815 与 LRA-0815），而这确实是另一件物品（否则拒绝签发，并指出该证书）；您的确认记录在登记册中</translation>
-    </message>
-    <message>
         <source>also write the results per point (with U) as CSV or XLSX</source>
         <translation>同时以 CSV 或 XLSX 写出各点结果（含 U）</translation>
     </message>
@@ -5836,6 +5832,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Test report {number} issued: written to {path} and recorded in the register (sha256 {sha}…)</source>
         <translation>检测报告 {number} 已签发：已写入 {path} 并记入登记册（sha256 {sha}…）</translation>
+    </message>
+    <message>
+        <source>with --certificate: the serial number is in no certificate of the register but looks like one that is (letters or digits that print alike, case aside: 1ra-0815 or LRA-o815 for LRA-0815), or the item has no serial number where a certificate still valid of that date of calibration reports an item of its description and maker with one (or the other way round), and this is indeed another item (else it is refused, naming that certificate); recorded in the register that you said so</source>
+        <translation>与 --certificate 同用：序列号不在登记册的任何证书中，但与其中某一序列号相似（有印刷相似的字母或数字，大小写不计：1ra-0815 或 LRA-o815 与 LRA-0815），或者物品没有序列号，而同一校准日期的一份仍然有效的证书报告了名称和制造商相同、有序列号的物品（或反过来），而这确实是另一件物品（否则拒绝签发，并指出该证书）；您的确认记录在登记册中</translation>
     </message>
     <message>
         <source>{file}: no test report was written: {progress} is not complete; a test report waits for it (the complete ones are analysed above)</source>
@@ -7923,10 +7923,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>记录 {number}：所存的 PDF 与签发时记录的 SHA-256 不符</translation>
     </message>
     <message>
-        <source>serial {serial} is in no certificate of the register, but looks like {others} (one letter or digit that prints alike, case aside): it may be that item with its serial mistyped, which would split its history and due date. Issue it only if it is another item (it is then recorded in the register that you said so; on the command line: --another-lookalike-item)</source>
-        <translation>序列号 {serial} 不在登记册的任何证书中，但与 {others} 相似（相差一个印刷相似的字母或数字，大小写不计）：可能是该物品的序列号输错了，这会使其历史和到期日一分为二。仅当它是另一件物品时才签发（届时登记册会记录您的确认；命令行：--another-lookalike-item）</translation>
-    </message>
-    <message>
         <source>counter {name}: it stands at {value}, but the records reach {recorded}: it was set back after issue (a number would be issued twice)</source>
         <translation>计数器 {name}：其值为 {value}，但记录已到 {recorded}：它在签发后被回退（会导致编号重复签发）</translation>
     </message>
@@ -7985,6 +7981,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>record {number}: the stored DCC does not match the SHA-256 recorded at issue</source>
         <translation>记录 {number}：所存的 DCC 与签发时记录的 SHA-256 不符</translation>
+    </message>
+    <message>
+        <source>serial {serial} is in no certificate of the register, but looks like {others} (letters or digits that print alike, case aside): it may be that item with its serial mistyped, which would split its history and due date. Issue it only if it is another item (it is then recorded in the register that you said so; on the command line: --another-lookalike-item)</source>
+        <translation>序列号 {serial} 不在登记册的任何证书中，但与 {others} 相似（有印刷相似的字母或数字，大小写不计）：可能是该物品的序列号输错了，这会使其历史和到期日一分为二。仅当它是另一件物品时才签发（届时登记册会记录您的确认；命令行：--another-lookalike-item）</translation>
+    </message>
+    <message>
+        <source>{item} has no serial number, but {others} reports an item of that description and maker with one (its serial in brackets), calibrated {date}: a serial left out does not make another item, and this may be a second certificate of that calibration (a corrected certificate is its amendment or replacement). Issue it only if it is another item, which has no serial number (it is then recorded in the register that you said so; on the command line: --another-lookalike-item)</source>
+        <translation>{item} 没有序列号，但 {others} 报告了名称和制造商相同、有序列号的物品（括号内为其序列号），校准于 {date}：不填序列号并不使它成为另一件物品，这可能是同一次校准的第二份证书（更正的证书应为其修订版或替代版）。仅当它是另一件没有序列号的物品时才签发（届时登记册会记录您的确认；命令行：--another-lookalike-item）</translation>
+    </message>
+    <message>
+        <source>{others} reports {item}, which has no serial number, calibrated {date}: this may be that item with its serial {serial} typed now, a second certificate of that calibration (a corrected certificate is its amendment or replacement). Issue it only if it is another item (it is then recorded in the register that you said so; on the command line: --another-lookalike-item)</source>
+        <translation>{others} 报告了 {item}，该物品没有序列号，校准于 {date}：这可能就是那件物品、现在才输入了序列号 {serial}，即同一次校准的第二份证书（更正的证书应为其修订版或替代版）。仅当它是另一件物品时才签发（届时登记册会记录您的确认；命令行：--another-lookalike-item）</translation>
     </message>
     <message>
         <source>record {number}: its DCC cannot be read: {reason}</source>
