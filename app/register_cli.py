@@ -700,6 +700,8 @@ def run_register(argv: list[str]) -> int:
     except OSError as exc:
         import errno
 
+        if isinstance(exc, BrokenPipeError):
+            raise  # a closed pipe (register list | head): the console script ends quietly
         if exc.errno in (errno.ENOSPC, getattr(errno, "EDQUOT", errno.ENOSPC)):
             # said in words, where (the folder written into), not "[Errno 28] …" (stop 63)
             folder = os.path.dirname(os.path.abspath(exc.filename)) if exc.filename else "?"

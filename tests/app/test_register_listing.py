@@ -149,3 +149,27 @@ def test_register_list_names_each_certificates_manufacturer(capsys):
     assert set(listed[acme]) == {"number", "issue_date", "workbench", "document_kind",
                                  "customer", "item_serial", "item_manufacturer", "state",
                                  "superseded_by", "revision", "status"}
+
+
+def test_a_listing_read_by_head_ends_quietly(monkeypatch, capsys):
+    """``anglebench register list | head -1``: the reader closes the pipe; the console script
+    ends quietly (exit 0, nothing on stderr) as ``analyze … | head`` does, not with
+    "cannot write: [Errno 32] Broken pipe" (stop 67)."""
+    import io
+
+    from app.main import entry
+
+    _register()
+
+    class ClosedPipe(io.StringIO):
+        def write(self, text):
+            raise BrokenPipeError(32, "Broken pipe")
+
+        def fileno(self):
+            return 1
+
+    monkeypatch.setattr("sys.argv", ["anglebench", "register", "list"])
+    monkeypatch.setattr("sys.stdout", ClosedPipe())
+    monkeypatch.setattr("os.dup2", lambda *args: None)  # the test's stdout stays
+    assert entry() == 0
+    assert capsys.readouterr().err == ""
