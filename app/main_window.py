@@ -41,7 +41,7 @@ from app.reference_sender import (
 )
 from app.run_overlay_actions import RunOverlayActions
 from models import __version__
-from models.certificate.readings_origin import TYPED, SentFrom
+from models.certificate.readings_origin import TYPED, SentFrom, in_project
 from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.recovery import RecoveryStore
 from models.readings.tabular_import import TableImportError
@@ -521,11 +521,14 @@ class MainWindow(QMainWindow):
         sample (day review 65 F4: "readings typed in AngleBench" was said of them), pasted
         or sent from another workbench, and the rows pasted (day review 66); else, a
         certificate's project from the register, its readings' source as it named it;
-        else typed."""
+        else typed. A project saved under a name is named, with where its readings came
+        from when that is known (day review 67: saved, opened again or recovered after a
+        crash, they were the project's, or typed)."""
+        presenter = presenter or self.current
         if self.projects.path:
-            return self.projects.path.name
-        return ((presenter or self.current).readings_source() or self.projects.readings_source
-                or TYPED)
+            name = self.projects.path.name
+            return in_project(name, presenter.readings_source(name))
+        return presenter.readings_source() or self.projects.readings_source or TYPED
 
     def _readings_line(self, presenter) -> str:
         """The "Readings:" line a certificate of ``presenter``'s analysed readings would

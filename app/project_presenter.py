@@ -220,7 +220,10 @@ class ProjectPresenter(QObject):
         return Project({p.kind.key: p.state() for p in self.presenters}, dict(self.metadata),
                        self.raw_capture() if raw is None else raw)
 
-    def apply_project(self, project: Project) -> None:
+    def apply_project(self, project: Project, name: str = "") -> None:
+        """``project`` in the window; ``name``: its file's name ("" none, or an untitled
+        project's autosave), what its readings are said to be from when it does not say
+        where they came from (models/certificate/stored_origin.py)."""
         self.project_replaced()
         self.readings_source = None
         # the details first: the workbenches' plots draw the tolerance they set
@@ -230,7 +233,8 @@ class ProjectPresenter(QObject):
         self.metadata.pop("pending_edits", None)
         self.metadata.pop("project_sha256", None)
         for presenter in self.presenters:
-            presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
+            presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()),
+                                 name)
         self.load_raw_capture(project.raw_capture)
 
     def update_title(self, *_args) -> None:
@@ -277,7 +281,7 @@ class ProjectPresenter(QObject):
             self.view.tell(tr("Cannot open project"),
                            tr("{reason}. Your current work is as it was.").format(reason=exc))
             return False
-        self.apply_project(project)
+        self.apply_project(project, Path(path).name)
         self.path = Path(path)
         self.disk_sha256 = project.file_sha256
         self._add_recent(self.path)
@@ -312,6 +316,8 @@ class ProjectPresenter(QObject):
             self.view.tell(tr("Cannot open"), explained(exc))
             return False
         self.apply_project(project)
+        for presenter in self.presenters:  # the certificate's source, not the record's rows'
+            presenter.table_model.forget_origin()
         self.path = None
         self.disk_sha256 = None
         # the certificate's "Readings:" (the project file's name; rev62 F4: an amendment
@@ -525,7 +531,7 @@ class ProjectPresenter(QObject):
             cells += [""] * (column + 1 - len(cells))
             cells[column] = text
             rows[row] = cells
-            project.workbenches[key] = WorkbenchState(rows, state.settings)
+            project.workbenches[key] = WorkbenchState(rows, state.settings, state.origin)
         if pending:
             project.metadata = {**project.metadata, "pending_edits": {
                 key: {"row": row + 1, "column": column + 1, "text": text}
@@ -622,7 +628,7 @@ class ProjectPresenter(QObject):
             self.view.show_status(tr("The autosave was kept aside: {path}").format(path=kept), 15000)
             return False
         typed = project.metadata.get("pending_edits") or {}
-        self.apply_project(project)
+        self.apply_project(project, Path(source).name if source else "")
         self.path = Path(source) if source else None
         # the file the crashed window's work was based on: a save asks if it changed since
         # (none known: asks whenever the file is there)

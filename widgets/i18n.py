@@ -160,6 +160,9 @@ class Language(QObject):
         super().__init__(parent)
         self.code = "en"
         self._translators: list[QTranslator] = []
+        #: the translators of each language, loaded at its first choice and kept (day review
+        #: 67: two new ones at every switch to Chinese, never deleted)
+        self._loaded: dict[str, list[QTranslator]] = {}
         self._live: list[tuple[weakref.ref, str, str, bool]] = []
         self._callbacks: list[tuple[weakref.ref, Callable[[], Callable[[], None] | None]]] = []
 
@@ -203,6 +206,9 @@ class Language(QObject):
         """Install the translators of ``choice`` (ours, and Qt's own for its dialogs), then
         retranslate every live text; returns the language installed."""
         app = QCoreApplication.instance()
+        if app is None:
+            raise RuntimeError("the language belongs to the application: make a QApplication "
+                               "first")
         language = resolve_language(choice)
         if language == self.code:
             return language  # nothing to set again (a second window, the same choice)
@@ -211,17 +217,28 @@ class Language(QObject):
             app.removeTranslator(translator)
         self._translators.clear()
         if language != "en":
-            ours = QTranslator(self)
-            if ours.load(str(TRANSLATIONS_DIR / f"anglebench_{language}.qm")):
-                app.installTranslator(ours)
-                self._translators.append(ours)
-            qt = QTranslator(self)
-            if qt.load(f"qtbase_{language}",
-                       QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)):
-                app.installTranslator(qt)
-                self._translators.append(qt)
+            for translator in self._translators_of(language):
+                app.installTranslator(translator)
+                self._translators.append(translator)
         self.retranslate()
         return language
+
+
+    def _translators_of(self, language: str) -> list[QTranslator]:
+        """Ours and Qt's own translators of ``language`` (those that load), the same ones
+        at every choice of it."""
+        if language not in self._loaded:
+            ours, qt = QTranslator(self), QTranslator(self)
+            loaded = [ours] if ours.load(
+                str(TRANSLATIONS_DIR / f"anglebench_{language}.qm")) else []
+            if qt.load(f"qtbase_{language}",
+                       QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)):
+                loaded.append(qt)
+            for translator in (ours, qt):
+                if translator not in loaded:
+                    translator.deleteLater()
+            self._loaded[language] = loaded
+        return self._loaded[language]
 
 
 def application_language() -> Language:

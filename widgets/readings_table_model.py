@@ -63,6 +63,11 @@ class ReadingsTableModel(QAbstractTableModel):
         #: None: at the bottom of the undo history)
         self.origin: SheetOrigin | None = None
         self.origin_step: QUndoCommand | None = None
+        #: with no :attr:`origin_step` (the origin is the sheet's as it was opened: a
+        #: project's record of it, models/certificate/stored_origin.py), whether the rows
+        #: were edited before, and the rows pasted before (0-based, as opened)
+        self.opened_edited = False
+        self.opened_pasted: tuple[int, ...] = ()
         #: why a cell's text cannot be read, by (column, text): a column's parse depends on
         #: the text alone, and every paint asks it of every visible cell
         self._reasons: dict[tuple[int, str], str | None] = {}
@@ -276,11 +281,21 @@ class ReadingsTableModel(QAbstractTableModel):
         with no source, only a change of a pasted row), the filled rows pasted since (as
         they are numbered now), and the filled rows' count. Day review 66: pasted rows were
         "readings typed in AngleBench"."""
+        origin, edited, pasted = self.origin_since()
+        filled = [r for r in range(self.sheet.row_count) if not self.sheet.is_blank_row(r)]
+        return origin, edited, sorted(set(filled) & pasted), len(filled)
+
+    def origin_since(self) -> tuple[SheetOrigin | None, bool, set[int]]:
+        """:meth:`readings_origin` less the count of filled rows: the origin, whether the
+        rows were edited since, and the rows pasted since (filled or not): what a project
+        file keeps of it (models/certificate/stored_origin.py), cheap for a long sheet."""
         stack = self.undo_stack
         done = [stack.command(i) for i in range(stack.index())]
         start = next((i + 1 for i, step in enumerate(done) if step is self.origin_step), 0)
         edited = False
         pasted: set[int] = set()
+        if self.origin_step is None:  # the sheet's origin as it was opened, and since
+            edited, pasted = self.opened_edited, set(self.opened_pasted)
         for step in done[start:]:
             commands = [step.child(i) for i in range(step.childCount())] or [step]
             paste = any(getattr(command, "pasted", False) for command in commands)
@@ -304,12 +319,19 @@ class ReadingsTableModel(QAbstractTableModel):
                 else:
                     changed = self.origin is not None
                 edited = edited or changed
-        filled = [r for r in range(self.sheet.row_count) if not self.sheet.is_blank_row(r)]
-        return self.origin, edited, sorted(set(filled) & pasted), len(filled)
+        return self.origin, edited, pasted
 
     def forget_origin(self) -> None:
         """The rows are another's now (a project was opened): no import's."""
         self.origin = self.origin_step = None
+        self.opened_edited, self.opened_pasted = False, ()
+
+    def set_opened_origin(self, origin: SheetOrigin | None, edited: bool,
+                          pasted: tuple[int, ...]) -> None:
+        """The rows' origin as a project opened says it (at the bottom of the undo
+        history): ``origin`` (None: typed), ``edited`` and the rows ``pasted`` since."""
+        self.origin, self.origin_step = origin, None
+        self.opened_edited, self.opened_pasted = bool(edited), tuple(pasted)
 
     def replace_all(self, rows: list[list[str]], label: str = "",
                     checked: bool = False, replaces: str = "",

@@ -17,6 +17,7 @@ from PySide6.QtGui import QUndoStack
 from models.cancellation import AnalysisCancelled, cancellable, checkpoint
 from models.capture.take_cells import waiting_row
 from models.certificate.readings_origin import ImportedFrom, sheet_source
+from models.certificate.stored_origin import origin_record, stored_origin
 from models.display_units import (
     ANGLE_UNITS,
     AngleUnit,
@@ -626,33 +627,43 @@ class WorkbenchPresenter(QObject):
         self.modified_changed.emit(self.is_modified)
 
     def state(self, deep: bool = True) -> WorkbenchState:
-        """The readings and settings. ``deep=False`` copies only the list of rows (a
-        million rows' copies would stall the window); the rows are shared, which later
-        edits do not reach (an edit replaces a row: ReadingsSheet.snapshot)."""
-        return _sheet_state(self.sheet, self._settings, deep)
+        """The readings, settings and where the readings came from. ``deep=False`` copies
+        only the list of rows (a million rows' copies would stall the window); the rows are
+        shared, which later edits do not reach (an edit replaces a row:
+        ReadingsSheet.snapshot)."""
+        state = _sheet_state(self.sheet, self._settings, deep)
+        state.origin = origin_record(*self.table_model.origin_since())
+        return state
 
     def result_state(self) -> WorkbenchState:
         """The readings and settings ``result`` was analysed from (copied): what a
         certificate of it records, whatever the sheet and the form hold now."""
         return _sheet_state(self.result_sheet, self.result_settings, True)
 
-    def load_state(self, state: WorkbenchState) -> None:
-        """Replace readings and settings (a project was opened); clears the undo history."""
+    def load_state(self, state: WorkbenchState, project: str = "") -> None:
+        """Replace readings and settings (a project was opened: ``project`` its file's name,
+        "" none or an untitled one's autosave); clears the undo history. The readings'
+        origin is the one the project kept; one it did not keep, of rows, is "from project
+        NAME" (models/certificate/stored_origin.py), never typed."""
         self._supersede_imports()
         self._settings = self.kind.settings_with_defaults(state.settings)
         self.view.set_settings(self._settings)
         self.table_model.apply_replace(state.rows)
         self.table_model.forget_origin()
+        if state.origin is not None or state.rows:
+            opened = stored_origin(state.origin, project)
+            self.table_model.set_opened_origin(opened.origin, opened.edited, opened.pasted)
         self.undo_stack.clear()
         self.mark_saved()
         self.refresh()
 
-    def readings_source(self) -> str | None:
+    def readings_source(self, project: str = "") -> str | None:
         """Where the sheet's readings came from when it is a file imported (or the bundled
         sample: day review 65 F4), pasted, or sent from another workbench, with the rows
-        pasted since (day review 66), as a certificate says it (None: typed, or the
-        project's)."""
-        return sheet_source(*self.table_model.readings_origin())
+        pasted since (day review 66), or a project that did not say (day review 67), as a
+        certificate says it (None: typed, or the project's: ``project`` the name of the
+        file the window has them in)."""
+        return sheet_source(*self.table_model.readings_origin(), project=project)
 
     def import_file(self, path: str | Path, sample: bool = False) -> None:
         """Replace the readings with a CSV/XLSX file's (undoable). Raises TableImportError.

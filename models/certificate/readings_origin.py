@@ -13,9 +13,9 @@ from typing import Any
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["PASTED", "TYPED", "ImportedFrom", "PastedIn", "SentFrom", "SheetOrigin",
-           "captured_rows", "filled_rows", "imported_source", "readings_origin", "row_spans",
-           "sheet_source"]
+__all__ = ["PASTED", "TYPED", "FromProject", "ImportedFrom", "PastedIn", "SentFrom",
+           "SheetOrigin", "captured_rows", "filled_rows", "imported_source", "in_project",
+           "readings_origin", "row_spans", "sheet_source"]
 
 #: the readings' source when they are in no project file: typed into the sheet
 TYPED = QT_TR_NOOP("readings typed in AngleBench")
@@ -53,9 +53,20 @@ class SentFrom:
     origin: str = ""
 
 
+@dataclass(frozen=True)
+class FromProject:
+    """The sheet's rows were read from a project file that does not record where they came
+    from (written before it did: models/project/file.py ``readings_origin``), ``name`` its
+    file's name ("" an autosave of an untitled project). Day review 67: such rows, and any
+    whose origin was lost with a save or a crash, counted as "readings typed in
+    AngleBench"."""
+
+    name: str = ""
+
+
 #: where a sheet's rows came from when one step replaced them all (None: typed, or a
 #: project's)
-SheetOrigin = ImportedFrom | PastedIn | SentFrom
+SheetOrigin = ImportedFrom | PastedIn | SentFrom | FromProject
 
 
 def imported_source(origin: ImportedFrom, edited: bool) -> str:
@@ -82,6 +93,9 @@ def _replaced_source(origin: SheetOrigin, edited: bool) -> str:
         return imported_source(origin, edited)
     if isinstance(origin, PastedIn):
         source = message(PASTED)
+    elif isinstance(origin, FromProject):
+        source = (message(QT_TR_NOOP("from project {name}"), name=origin.name) if origin.name
+                  else message(QT_TR_NOOP("from an autosave that does not record their origin")))
     elif origin.origin:
         source = message(QT_TR_NOOP("sent from the {workbench} workbench (its readings: "
                                     "{origin})"),
@@ -98,12 +112,19 @@ def _edited(source: str) -> str:
 
 
 def sheet_source(origin: SheetOrigin | None, edited: bool, pasted: Sequence[int],
-                 row_count: int) -> str | None:
+                 row_count: int, project: str = "") -> str | None:
     """The certificate's source of a sheet's readings: ``origin``, the step that replaced
     them all (None: typed, or a project's), ``edited`` whether they were changed since
     other than by a paste, ``pasted`` the filled rows (0-based, ascending) pasted into the
     sheet since, of ``row_count`` filled rows, said as the captured rows are
-    (:func:`readings_origin`). None: typed (or the project's), nothing pasted."""
+    (:func:`readings_origin`). None: typed (or the project's), nothing pasted.
+    ``project``: the name of the project file the window has them in ("" none): rows
+    :class:`FromProject` that file are its own (changed in it, as typed rows are: None
+    when none was pasted)."""
+    if isinstance(origin, FromProject) and project and origin.name == project:
+        if not pasted:
+            return None
+        edited = False
     if origin is None:
         if not pasted:
             return None
@@ -119,6 +140,16 @@ def sheet_source(origin: SheetOrigin | None, edited: bool, pasted: Sequence[int]
     return message(QT_TR_NOOP("{source}; rows {rows} ({pasted} of {count}) pasted into "
                               "AngleBench"),
                    source=source, rows=row_spans(pasted), pasted=len(pasted), count=row_count)
+
+
+def in_project(project: str, source: str | None) -> str:
+    """The certificate's source of readings kept in the project file ``project``: its name,
+    and where they came from when that is known (``source``, :func:`sheet_source`; None:
+    typed, or the project's own). Day review 67: a project saved under a name said only
+    its name of readings imported, pasted or sent from another workbench."""
+    if source is None:
+        return project
+    return message(QT_TR_NOOP("{project}: {source}"), project=project, source=source)
 
 
 def filled_rows(rows: Sequence[Sequence[str]]) -> list[int]:

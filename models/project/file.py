@@ -5,7 +5,8 @@ Schema (``schema_version`` 2)::
     {"format": "anglebench-project", "schema_version": 2, "app_version": "0.1.0",
      "metadata": {...},
      "workbenches": {"theodolite": {"rows": [["0", "0", "-0.03"], ...],
-                                     "settings": {...}}, ...},
+                                     "settings": {...},
+                                     "readings_origin": {"source": "imported", ...}}, ...},
      "raw_capture": {"polygon": {"sha256": "…", "sessions": [...]}}}
 
 ``raw_capture`` (optional in schema 2: absent in a project with no instrument readings,
@@ -13,6 +14,13 @@ and in files written before it existed) keeps what the instruments sent, per wor
 models/capture/raw_record.py; ``sha256`` is the digest of ``sessions`` as stored, and a
 file whose sessions no longer give it, or with a session recorded on another workbench
 (its ``workbench``), is refused.
+
+``readings_origin`` (optional in schema 2: absent in files written before it existed) is
+where the workbench's readings came from, as its certificate names them: typed, a file
+imported (with its SHA-256), the bundled sample, pasted, sent from another workbench, with
+the rows pasted since and whether they were edited (models/certificate/stored_origin.py).
+A workbench without it has readings of an origin the file does not say: its certificate
+says they are "from project NAME", never typed (day review 67).
 
 Cells are stored as the text that was typed, so a file always reopens exactly
 as it was saved, bad cells included.
@@ -77,6 +85,9 @@ class ProjectFileError(ValueError):
 class WorkbenchState:
     rows: list[list[str]] = field(default_factory=list)
     settings: dict[str, Any] = field(default_factory=dict)
+    #: where the rows came from, as the file keeps it (``readings_origin``: see the module's
+    #: note; None: not recorded, a file written before it was)
+    origin: dict[str, Any] | None = None
 
 
 @dataclass
@@ -130,7 +141,10 @@ def project_json_parts(project: Project, between_blocks: Callable[[], None] | No
                 first = False
             if between_blocks is not None:
                 between_blocks()
-        yield f'],"settings":{dumps(state.settings)}}}'
+        yield f'],"settings":{dumps(state.settings)}'
+        if state.origin is not None:
+            yield f',"readings_origin":{dumps(state.origin)}'
+        yield "}"
     yield "}"
     raw = {str(k): v for k, v in project.raw_capture.items() if v}
     if raw:
@@ -251,7 +265,11 @@ def project_from_json(text: str, source: str = "project",
             raise ProjectFileError(message(
                 QT_TR_NOOP("{source}: workbench '{key}': 'settings' must be an object"),
                 source=source, key=key))
-        project.workbenches[str(key)] = WorkbenchState(clean_rows, dict(settings))
+        # where the rows came from: read as it is (models/certificate/stored_origin.py
+        # judges it; one it cannot read is an origin not known, never a refused project)
+        origin = state.get("readings_origin")
+        project.workbenches[str(key)] = WorkbenchState(
+            clean_rows, dict(settings), dict(origin) if isinstance(origin, dict) else None)
     project.raw_capture = _raw_capture(document.get("raw_capture", {}), source)
     project.repairs = repairs
     return project

@@ -62,6 +62,7 @@ from widgets.fringe.preset_editor import PresetEditorDialog
 from widgets.fringe.signal_bar import SignalBar
 from widgets.i18n import declared, explained, live, on_language_change, tr, translated
 from widgets.plot_grid import keep_axis_title_room, show_grid
+from widgets.plot_title import fit_title, wrap_title
 
 __all__ = ["INSTRUMENT", "REFRESH_MS", "LiveSignalsPanel"]
 
@@ -312,6 +313,7 @@ class LiveSignalsPanel(QWidget):
             # on a 1280×720 screen "interpolation error (° el.)" had less axis than its
             # length and was cut at both ends (day review 66)
             keep_axis_title_room(plot, self.PLOT_MIN_HEIGHT)
+        wrap_title(self.lissajous)
         self.connect_button.clicked.connect(lambda: self.connect_stream())
         self.disconnect_button.clicked.connect(self.disconnect_stream)
         self.demo_button.clicked.connect(lambda: self.start_demonstration())
@@ -355,6 +357,7 @@ class LiveSignalsPanel(QWidget):
         self.note.setText(translated(NOT_CONFORMITY))
         self.lissajous.setTitle(tr("Rings: amplitude band (green inside, amber outer)"),
                                 size="9pt", color="#455a64")
+        fit_title(self.lissajous)  # wrapped to the plot's width (day review 67)
         self.lissajous.setLabel("left", tr("u sin (V)"))
         self.lissajous.setLabel("bottom", tr("u cos (V)"))
         self.error_plot.setLabel("left", tr("interpolation error (° el.)"))
