@@ -4060,7 +4060,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
+        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) with no :attr:`origin_step` (the origin is the sheet&apos;s as it was opened: a project&apos;s record of it, models/certificate/stored_origin.py), whether the rows were edited before, and the rows pasted before (0-based, as opened) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -6371,7 +6371,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>{source}: damaged project file (line {lineno}, column {colno}: {msg}); nothing was changed</source>
-        <extracomment>the metadata key of a certificate&apos;s project state (the register&apos;s record) that holds where its readings came from, as the certificate names them (&quot;Readings: …&quot;): an amendment opened from the register names the same source (rev62 F4) workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional what was repaired as the file was read (each a sentence naming the place), not saved SHA-256 (hex) of the file&apos;s bytes as read by :func:`load_project` (&quot;&quot; otherwise): the version a save must not replace unasked when it was changed since</extracomment>
+        <extracomment>the metadata key of a certificate&apos;s project state (the register&apos;s record) that holds where its readings came from, as the certificate names them (&quot;Readings: …&quot;): an amendment opened from the register names the same source (rev62 F4) where the rows came from, as the file keeps it (``readings_origin``: see the module&apos;s note; None: not recorded, a file written before it was) workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional what was repaired as the file was read (each a sentence naming the place), not saved SHA-256 (hex) of the file&apos;s bytes as read by :func:`load_project` (&quot;&quot; otherwise): the version a save must not replace unasked when it was changed since</extracomment>
         <translation>{source}：项目文件已损坏（第 {lineno} 行，第 {colno} 列：{msg}）；未作任何更改</translation>
     </message>
     <message>
@@ -11425,6 +11425,14 @@ Replace it?</source>
         <translation>导入自 {name}</translation>
     </message>
     <message>
+        <source>from project {name}</source>
+        <translation>来自项目 {name}</translation>
+    </message>
+    <message>
+        <source>from an autosave that does not record their origin</source>
+        <translation>来自未记录其来源的自动保存</translation>
+    </message>
+    <message>
         <source>sent from the {workbench} workbench (its readings: {origin})</source>
         <translation>由{workbench}工作台发送（其读数：{origin}）</translation>
     </message>
@@ -11443,6 +11451,10 @@ Replace it?</source>
     <message>
         <source>{source}; rows {rows} ({pasted} of {count}) pasted into AngleBench</source>
         <translation>{source}；第 {rows} 行（共 {count} 行中的 {pasted} 行）粘贴到 AngleBench 中</translation>
+    </message>
+    <message>
+        <source>{project}: {source}</source>
+        <translation>{project}：{source}</translation>
     </message>
     <message>
         <source>all {count} rows captured from the instruments</source>
