@@ -64,7 +64,8 @@ def passes_record(path, rng, runs: int, sigma: float, reversal: float,
     "sine"), or the axis' error curve turned over ("against": it flattens the measured
     curve), each of standard deviation ``circle``, or "against_2u": the axis' error curve
     turned over and scaled to ±2 ``circle`` at its extremes (it lowers the measured range by
-    4 ``circle`` and flattens the whole curve), or "extremes": ±2 ``circle`` (each within
+    4 ``circle`` and flattens the whole curve), "with_2u": the axis' error curve itself so
+    scaled (it raises the measured range by 4 ``circle``), or "extremes": ±2 ``circle`` (each within
     its U at k = 2) at the θ where the axis' error is highest and lowest, 0 elsewhere (it
     lowers the measured range by 4 ``circle``, the most such errors can). The theodolite
     reads the mirror's true rotation, off by the circle's error: the readings show the
@@ -102,6 +103,8 @@ def passes_record(path, rng, runs: int, sigma: float, reversal: float,
         c = circle * (d - d.mean()) / np.std(d)
     elif circle_shape == "against_2u":  # d − c: the curve flattened, ±2 circle at its ends
         c = 2.0 * circle * (d - 0.5 * (d.max() + d.min())) / (0.5 * float(np.ptp(d)))
+    elif circle_shape == "with_2u":  # d − c: the curve steepened, ∓2 circle at its ends
+        c = -2.0 * circle * (d - 0.5 * (d.max() + d.min())) / (0.5 * float(np.ptp(d)))
     elif circle_shape == "extremes":  # +2 circle where d is highest, −2 where lowest
         c = np.zeros(grid.size)
         c[np.argmax(d)], c[np.argmin(d)] = 2.0 * circle, -2.0 * circle

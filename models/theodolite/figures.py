@@ -28,9 +28,24 @@ inputs that are one value at a θ, with the readings without them), fed with:
   (σ = 1.5″, u_c = 0.4″, the circle's error flattening the curve) that is 0 in nearly every
   run, and E covered 56–76 of 80 runs, M 45–70 (floor 68; now 80 of 80 in each of the 4
   cells, #39). The price: with u stated at exactly the pointing noise, which no readings
-  can tell from a circle error hidden under it, E's interval is 1.9–2.9 times as wide as
-  before, M's 2.2–3.0, A's 1.8–2.3 (σ = 0.5″, 2 and 5 passes, 11 and 41 θ; the study of #39
+  can tell from a circle error hidden under it, E's interval became 1.9–2.9 times as wide,
+  M's 2.2–3.0, A's 1.8–2.3 (σ = 0.5″, 2 and 5 passes, 11 and 41 θ; the study of #39
   in docs/user-guide/theodolite.md).
+  The circle's error is taken within its U at the probability of the interval at every θ,
+  whatever its shape (the statement taken at its U: ±2u_c per reading at 95.45 %), so it
+  moves E, M and A (and E↑, E↓, A↑, A↓: a largest value less a smallest one) by at most its
+  range, k · pair (k · 2u_c per reading, k · u_c for a theodolite stated for any angle): a
+  bias, not a scatter. The readings' own interval at the whole rest of the tail each side,
+  widened by that, holds at the probability printed (models.uncertainty.figure_intervals,
+  ``pair_envelope``). Until 0.8.15 the circle was taken as a normal error and the widening
+  was a union bound, z(1 − tail′/2) · pair (≈ 2.39 pair) on the readings' interval at half
+  the rest of the tail: E's, M's, A's and the decided half range's intervals are now 0.84–0.95
+  of that width (median of the runs; 0.88–0.89 the median cell), and every figure covered at
+  least its binomial floor in every cell (the study of #39's widths, 62 cells of 60 runs, in
+  docs/user-guide/theodolite.md). Combining the circle's widening with
+  the readings' half-width in quadrature (the circle taken as a normal error) is narrower
+  still, 0.63–0.94, but does not hold such a bias: A covered 47 of 60 (floor 51) under
+  σ = 0.5″ with u_c = 0.8″ running with the curve, 5 passes.
   The reference reading θ₀ is one value for the run: it moves every error alike and no
   figure (a range, a reversal, a scatter) sees it.
 
@@ -227,10 +242,10 @@ def pointing_in_figures_note(result: TheodoliteResult) -> str | None:
 #: the share of the coverage interval's tail spent on the pointing noise's lower confidence
 #: bound, which sizes the widening for a circle error of the curve's worst shape
 #: (:func:`circle_part_not_excluded`); the widened interval is held at the rest (Berger &
-#: Boos 1994). 0.25: the expected widening z(1 − (1 − γ) tail/2) · 2 √(u² − s_lo(γ)²) is
-#: within 3.7 % of its least over γ in every case of the study of #39 (σ 0.1–1.5″, u_c 0–0.8″,
-#: ν 22–328; 0.2 within 2.7 %), half the tail up to 10 % wider (a circle error well above the
-#: pointing noise, where the bound's share costs z and buys nothing)
+#: Boos 1994). 0.25: the expected half-width z(1 − (1 − γ) tail/2) · s_E + 2k √(u² − s_lo(γ)²)
+#: (s_E the figure's own spread, about 1.2 σ/√passes) is within 1.3 % of its least over γ in
+#: every case of the study of #39 (σ 0.1–1.5″, u_c 0–0.8″, ν 22–328; 0.4–0.5 the least where
+#: the circle hides under the pointing noise, 0.1 where it stands above it)
 CIRCLE_NUISANCE_SHARE = 0.25
 
 
@@ -249,9 +264,10 @@ def circle_part_not_excluded(result: TheodoliteResult, stated_u: float,
     √max(u² − s_lo², 0), s_lo the pointing noise's one-sided lower confidence bound
     (models.uncertainty.stated_excess.scatter_lower_bound, σ ≥ s_lo at 1 − γ(1 − p)); 0
     where u is at or below s_lo, or no u is stated. It sizes the figures' widening for a
-    circle error shaped as the curve's worst (z · 2 u each way; z · u for a theodolite stated
-    for any angle, models.theodolite.report.stated_pair_factor), whose interval is held at
-    the rest of the tail. :func:`circle_part` (the point estimate) stays the draw at each θ
+    circle error shaped as the curve's worst (k · 2 u each way, k the two-sided normal
+    factor of ``probability``; k · u for a theodolite stated for any angle,
+    models.theodolite.report.stated_pair_factor), whose interval is held at the rest of the
+    tail. :func:`circle_part` (the point estimate) stays the draw at each θ
     and the budgets'."""
     if not stated_u > 0.0:
         return 0.0
@@ -291,8 +307,8 @@ def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBud
     # the stated theodolite's error that repeats at a θ in every pass, an envelope whose
     # correlation from θ to θ is not known: drawn at each θ at the part the scatter does not
     # show, and its worst shape (2 u between two θ; u where the theodolite's u is stated
-    # for any angle) sized by the largest part the readings do not exclude, at a share of
-    # the tail (the widened interval at the rest)
+    # for any angle; within k times that, its U) sized by the largest part the readings do
+    # not exclude, at a share of the tail (the widened interval at the rest)
     circle = circle_part(result, stated_u)
     pair = pair_factor * circle_part_not_excluded(result, stated_u, budget.probability)
     modes = model_modes_at_each_theta(result)
@@ -308,7 +324,8 @@ def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBud
                                  {name: stats.std for name, stats in present},
                                  {name: stats.runs for name, stats in present},
                                  budget.probability, circle, seed, figures=figures, pair_u=pair,
-                                 model_modes=modes, pair_spent=CIRCLE_NUISANCE_SHARE)
+                                 model_modes=modes, pair_spent=CIRCLE_NUISANCE_SHARE,
+                                 pair_envelope=True)
         cache[key] = {k: v for k, v in found.items() if k in figures}
     return cache[key]
 
@@ -349,7 +366,7 @@ def circle_widening_note(result: TheodoliteResult, budget: UncertaintyBudget,
     if not circle > 0.0:
         return ""
     pair = pair_factor * circle
-    shift = pair_widening(budget.probability, pair, CIRCLE_NUISANCE_SHARE)
+    shift = pair_widening(budget.probability, pair, CIRCLE_NUISANCE_SHARE, envelope=True)
     return message(CIRCLE_WIDENING_NOTE, shift=f"{shift:.2f}\"", circle=f"{circle:.3f}\"",
                    pair=f"{pair:.3f}\"")
 

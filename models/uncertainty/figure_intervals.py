@@ -473,11 +473,15 @@ INNER_TRIALS = 40
 _CHUNK = 25
 
 
-def pair_widening(probability: float, pair_u: float, pair_spent: float = 0.0) -> float:
+def pair_widening(probability: float, pair_u: float, pair_spent: float = 0.0,
+                  envelope: bool = False) -> float:
     """How far :func:`figure_intervals` moves each end of a figure's interval (of
     :data:`TYPE_B_FIGURES`) out for the reference's errors shaped as the curve's worst:
-    z · ``pair_u``, z the normal factor of the half of the tail left after ``pair_spent``
-    (the same arguments as there)."""
+    z · ``pair_u``, z the normal factor of the half of the tail left after ``pair_spent``;
+    with ``envelope``, k · ``pair_u``, k the two-sided normal factor of ``probability``
+    (2 at 95.45 %: the errors within their U, a bias; the same arguments as there)."""
+    if envelope:
+        return float(ndtri(0.5 * (1.0 + probability))) * float(pair_u)
     tail = 0.5 * (1.0 - probability) * (1.0 - pair_spent)
     return float(ndtri(1.0 - 0.5 * tail)) * float(pair_u)
 
@@ -488,8 +492,8 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
                      trials: int = INTERVAL_TRIALS, figures: dict[str, float] | None = None,
                      outer: int = OUTER_TRIALS, inner: int = INNER_TRIALS,
                      pair_u: float | None = None, model_modes: np.ndarray | None = None,
-                     cache: dict | None = None, pair_spent: float = 0.0
-                     ) -> dict[str, FigureInterval]:
+                     cache: dict | None = None, pair_spent: float = 0.0,
+                     pair_envelope: bool = False) -> dict[str, FigureInterval]:
     """The coverage interval of every axis figure.
 
     Parameters
@@ -520,6 +524,18 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         The share of the tail already spent on the bound ``pair_u`` is sized by (a
         nuisance's confidence bound, Berger & Boos 1994): the widened interval is held at the
         rest, (1 − pair_spent) of the tail, so that the whole holds at ``probability``.
+    pair_envelope : bool
+        How the errors ``pair_u`` sizes are taken. False: random, the difference of two
+        targets' errors normal with standard deviation up to ``pair_u``, and the widening a
+        union bound, z(1 − rest/2) · ``pair_u`` on the readings' interval at half the rest of
+        the tail each side. True: within their expanded uncertainty at ``probability`` at
+        every target, whatever their shape (the statement taken at its U, a bias and not a
+        scatter): a figure of :data:`TYPE_B_FIGURES` is a largest value less a smallest one
+        of the targets' values, which such errors move by at most their range, k · ``pair_u``
+        (k the two-sided normal factor of ``probability``, 2 at 95.45 %); the readings'
+        interval at the whole rest of the tail widened by that holds at ``probability``
+        without a share of the tail spent on the errors (:func:`pair_widening`; the
+        theodolite's circle error, models.theodolite.figures).
     model_modes : array (k, targets), optional
         A fitted model's error at the targets, the same in every run and both directions,
         correlated from target to target as its parameters' covariance makes it: error =
@@ -546,11 +562,14 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         # the reference's errors shaped as the curve's worst (a once-a-turn error that lowers
         # the crests and raises the troughs): the figure of the readings without them, at
         # half the tail each side, widened by the largest difference of two targets' errors
-        # (the rest of the tail where a share of it sized the pair: Berger & Boos)
+        # (the rest of the tail where a share of it sized the pair: Berger & Boos); within
+        # their U (``pair_envelope``) the errors are a bias of at most k · pair, and the
+        # readings' interval takes the whole rest of the tail each side
         tail = 0.5 * (1.0 - probability) * (1.0 - pair_spent)
         pair = 2.0 * float(np.max(u_b)) if pair_u is None else float(pair_u)
-        wide = _intervals(plain, 1.0 - tail) if pair > 0.0 else bare
-        shift = pair_widening(probability, pair, pair_spent)
+        outside = 2.0 * tail if pair_envelope else tail  # both sides together
+        wide = _intervals(plain, 1.0 - outside) if pair > 0.0 else bare
+        shift = pair_widening(probability, pair, pair_spent, pair_envelope)
         for key in TYPE_B_FIGURES & out.keys() & bare.keys() & wide.keys():
             here, there, far = out[key], bare[key], wide[key]
             out[key] = FigureInterval(here.value, max(min(here.low, there.low,

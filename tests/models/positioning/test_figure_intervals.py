@@ -278,3 +278,41 @@ def test_a_pair_bound_widens_without_type_b_and_at_the_rest_of_the_tail():
         assert wide[key].low == pytest.approx(max(min(plain[key].low, far[key].low - shift),
                                                   0.0), abs=1e-12), key
     assert wide["B"] == plain["B"]
+
+
+def test_errors_within_their_u_widen_by_their_largest_range_at_the_whole_rest_of_the_tail():
+    """``pair_envelope``: errors the same at a target in every run, each within its U at the
+    probability (k · u, k the two-sided normal factor: 2 at 95.45 %), of any shape. A range
+    or a largest value less a smallest one moves by at most their range, k · pair_u, a bias
+    and not a scatter: E's, M's and A's ends are the readings' own interval at the whole rest
+    of the tail, (1 − pair_spent) · tail each side, moved out by k · pair_u. That is
+    narrower at both ends than the union bound (z(1 − rest/2) · pair_u on the readings'
+    interval at half the rest), which until then sized the theodolite's circle error; B,
+    which such errors do not enter, is unchanged."""
+    from scipy.special import ndtri
+
+    rng = np.random.default_rng(3)
+    theta = np.linspace(0.0, 1.0, 12)
+    curve = np.sin(2 * math.pi * theta)
+    means = {d: curve + s * 0.3 + rng.normal(0.0, 0.2, theta.size)
+             for d, s in (("up", 0.5), ("down", -0.5))}
+    stds = {d: np.full(theta.size, 0.35) for d in means}
+    runs = {d: np.full(theta.size, 3) for d in means}
+    p, spent, pair = 0.9545, 0.25, 0.6
+    kw = dict(seed=11, trials=800, outer=0, inner=0)
+    plain = figure_intervals(means, stds, runs, p, **kw)
+    rest = 0.5 * (1.0 - p) * (1.0 - spent)  # each side
+    far = figure_intervals(means, stds, runs, 1.0 - 2.0 * rest, **kw)
+    bound = figure_intervals(means, stds, runs, p, pair_u=pair, pair_spent=spent, **kw)
+    within = figure_intervals(means, stds, runs, p, pair_u=pair, pair_spent=spent,
+                              pair_envelope=True, **kw)
+    shift = float(ndtri(0.5 * (1.0 + p))) * pair  # 2.0 · pair
+    assert shift == pytest.approx(2.0 * pair, rel=1e-3)
+    for key in ("E", "M", "A"):
+        assert within[key].high == pytest.approx(far[key].high + shift, rel=1e-12), key
+        assert within[key].low == pytest.approx(max(min(plain[key].low, far[key].low - shift),
+                                                    0.0), abs=1e-12), key
+        assert within[key].high < bound[key].high, key
+        assert within[key].low >= bound[key].low, key
+        assert within[key].high - within[key].low < bound[key].high - bound[key].low, key
+    assert within["B"] == plain["B"]

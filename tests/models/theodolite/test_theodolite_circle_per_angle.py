@@ -43,13 +43,13 @@ def _json(capsys, tmp_path, record, per: str) -> dict:
 def test_stated_for_any_angle_the_circle_widening_is_u_not_2u(capsys, tmp_path):
     """The same readings (a once-a-turn circle error of 0.4″ under 0.15″ pointing, 3
     passes), analysed with the theodolite's u per reading and per angle: E's upper end
-    (the circle's widening z · pair_u above the readings' own interval at the rest of the
-    tail) comes down by z · u_c (z = z(1 − tail/2), tail = (1 − γ)(1 − p)/2, u_c the largest
-    part of u the readings do not exclude, models.theodolite.figures
+    (the circle's widening k · pair_u above the readings' own interval at the rest of the
+    tail: the circle within its U) comes down by k · u_c (k = 2 at p = 95.45 %, u_c the
+    largest part of u the readings do not exclude, models.theodolite.figures
     .circle_part_not_excluded), and so do M's and A's; the decided half range's, united
     with E's halved, by half that. Before, the *Per* was not read: both the same (pair_u =
-    2 u_c always)."""
-    from models.theodolite.figures import CIRCLE_NUISANCE_SHARE, circle_part_not_excluded
+    2 u_c always); until #39's widths, z(1 − tail/2) · pair_u, tail = (1 − γ)(1 − p)/2."""
+    from models.theodolite.figures import circle_part_not_excluded
 
     rng = np.random.default_rng(5)
     record = tmp_path / "r.csv"
@@ -58,7 +58,7 @@ def test_stated_for_any_angle_the_circle_widening_is_u_not_2u(capsys, tmp_path):
                                                                          record, "angle")
     not_excluded = circle_part_not_excluded(_analysed(record), STATED, 0.9545)
     assert U_C - 0.05 < not_excluded < STATED  # the circle's part, not excluded
-    z = float(ndtri(1.0 - 0.25 * (1.0 - 0.9545) * (1.0 - CIRCLE_NUISANCE_SHARE)))
+    z = float(ndtri(0.5 * (1.0 + 0.9545)))  # k: the two-sided normal factor
     for key in ("E", "M", "A"):
         r, a = reading["iso230_2_figures"][key], angle["iso230_2_figures"][key]
         assert r["value"] == a["value"]
