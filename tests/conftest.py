@@ -226,7 +226,7 @@ def issued_samples(tmp_path_factory):
     ``{case: (exit code, what the issue said, PDF, DCC, the JSON call's output, JSON)}``.
     The DCC tests (test_dcc_out, test_standard_dcc_u, test_dcc_semantics) read these files and
     never change them: each printed the same certificates and DCCs for itself, in each
-    worker (~12 s of CPU each time). Computed once for all the workers (:func:`once_a_run`)."""
+    worker (4–6 s of CPU each time). Computed once for all the workers (:func:`once_a_run`)."""
 
     def issue_every_sample(out: Path) -> dict:
         import contextlib
