@@ -177,6 +177,31 @@ def window(qtbot, tmp_path):
 VALIDATION_TRIALS = 100
 
 
+def _shared_folder(tmp_path_factory) -> Path:
+    """The folder of the run that pytest-xdist's workers share (the parent of each worker's
+    own), or the run's own folder without workers."""
+    base = tmp_path_factory.getbasetemp()
+    return base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
+
+
+def once_a_run(tmp_path_factory, name: str, compute):
+    """``compute(folder)``'s value, computed once a run: the first worker to ask computes it
+    under a file lock (its files in ``folder``, in the folder the workers share) and pickles
+    it, the others wait and read it."""
+    import fcntl
+    import pickle
+
+    shared = _shared_folder(tmp_path_factory)
+    stored = shared / f"{name}.pickle"
+    with open(shared / f"{name}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)  # released when the file is closed
+        if not stored.exists():
+            folder = shared / name
+            folder.mkdir(exist_ok=True)
+            stored.write_bytes(pickle.dumps(compute(folder)))
+        return pickle.loads(stored.read_bytes())
+
+
 @pytest.fixture(scope="session")
 def validation_cases(tmp_path_factory):
     """``validation_cases(trials)``: every reference case of ``anglebench validate``
@@ -184,24 +209,58 @@ def validation_cases(tmp_path_factory):
     (~25 s of CPU: Monte Carlo, the positioning's figure coverage, the half-range study; the
     cases are seeded, the same whatever the language of the report). pytest-xdist's workers
     share one folder of the run: the first to ask computes the cases under a file lock and
-    pickles them, the others wait and read them."""
-    import fcntl
-    import pickle
-
+    pickles them, the others wait and read them (:func:`once_a_run`)."""
     from models.validation.run import run_validation
 
-    base = tmp_path_factory.getbasetemp()
-    shared = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
-
     def cases(trials: int) -> list:
-        stored = shared / f"validation-cases-{trials}.pickle"
-        with open(shared / "validation-cases.lock", "w") as lock:
-            fcntl.flock(lock, fcntl.LOCK_EX)  # released when the file is closed
-            if not stored.exists():
-                stored.write_bytes(pickle.dumps(run_validation(trials)))
-            return pickle.loads(stored.read_bytes())
+        return once_a_run(tmp_path_factory, f"validation-cases-{trials}",
+                          lambda _folder: run_validation(trials))
 
     return cases
+
+
+@pytest.fixture(scope="session")
+def issued_samples(tmp_path_factory):
+    """Every sample of tests/app/test_dcc_out.py's ``CASES`` issued once a run with its PDF and
+    DCC into one register, and analysed again for its JSON (``anglebench analyze --json``):
+    ``{case: (exit code, what the issue said, PDF, DCC, the JSON call's output, JSON)}``.
+    The DCC tests (test_dcc_out, test_standard_dcc_u, test_dcc_semantics) read these files and
+    never change them: each printed the same certificates and DCCs for itself, in each
+    worker (4–6 s of CPU each time). Computed once for all the workers (:func:`once_a_run`)."""
+
+    def issue_every_sample(out: Path) -> dict:
+        import contextlib
+        import io
+        import json
+
+        from app.main import main
+        from tests.app.test_dcc_out import CASES, _issue
+
+        class Capture:  # _issue's output is read from the buffers below
+            def readouterr(self):
+                return type("C", (), {"out": "", "err": ""})()
+
+        results = {}
+        mp = pytest.MonkeyPatch()
+        mp.setenv("ANGLEBENCH_REGISTER", str(out / "register.sqlite"))
+        try:
+            for case in CASES:
+                said, printed, told = io.StringIO(), io.StringIO(), io.StringIO()
+                with contextlib.redirect_stdout(said), contextlib.redirect_stderr(said):
+                    code, _, pdf, xml = _issue(case, out, Capture(), SAMPLES)
+                kind, readings, meta, options = CASES[case]
+                with contextlib.redirect_stdout(printed), contextlib.redirect_stderr(told):
+                    analysed = main(["analyze", kind, str(SAMPLES / readings), "--json",
+                                     "--metadata", str(SAMPLES / meta), *options])
+                assert analysed == 0, printed.getvalue() + told.getvalue()
+                text = printed.getvalue()
+                results[case] = (code, said.getvalue(), pdf, xml, text + told.getvalue(),
+                                 json.loads(text[text.index("{"):]))
+        finally:
+            mp.undo()
+        return results
+
+    return once_a_run(tmp_path_factory, "issued-samples", issue_every_sample)
 
 
 @pytest.fixture

@@ -110,36 +110,12 @@ def _curve(tree) -> dict[str, dict[str, np.ndarray]]:
 
 
 @pytest.fixture(scope="module")
-def issued(tmp_path_factory):
-    """Every sample issued once with --dcc (and its JSON), shared by the tests below."""
-    from tests.conftest import SAMPLES
-
-    out = tmp_path_factory.mktemp("dcc")
-    results = {}
-    mp = pytest.MonkeyPatch()
-    mp.setenv("ANGLEBENCH_REGISTER", str(out / "register.sqlite"))
-
-    class Capture:  # capsys is function-scoped: read main's output directly
-        def readouterr(self):
-            return type("C", (), {"out": "", "err": ""})()
-
-    try:
-        import contextlib
-        import io
-
-        for case in CASES:
-            buffer = io.StringIO()
-            with contextlib.redirect_stdout(buffer), contextlib.redirect_stderr(buffer):
-                code, _, pdf, xml = _issue(case, out, Capture(), SAMPLES)
-                kind, readings, meta, options = CASES[case]
-                main(["analyze", kind, str(SAMPLES / readings), "--json", "--metadata",
-                      str(SAMPLES / meta), *options])
-            said = buffer.getvalue()
-            data = json.loads(said[said.index("\n{") + 1:] if "\n{" in said else said)
-            results[case] = (code, said, pdf, xml, data)
-    finally:
-        mp.undo()
-    return results
+def issued(issued_samples):
+    """Every sample issued once with --dcc (and its JSON), shared by the tests below (and by
+    the other DCC tests: tests/conftest.py's ``issued_samples``): (exit code, what the issue
+    and the JSON call said, PDF, DCC, JSON)."""
+    return {case: (code, said + printed, pdf, xml, data)
+            for case, (code, said, pdf, xml, printed, data) in issued_samples.items()}
 
 
 @needs_schema

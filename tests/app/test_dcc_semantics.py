@@ -47,11 +47,17 @@ def _details(samples: Path, out: Path) -> Path:
 
 
 @pytest.fixture(scope="module")
-def issued(tmp_path_factory):
+def issued(tmp_path_factory, issued_samples):
     """theodolite, polygon, fringe, positioning and a polygon with an MPE: (DCC tree, JSON,
-    DCC path, what the command line said)."""
+    DCC path, what the command line said). The four samples as issued once a run for every
+    DCC test (tests/conftest.py's ``issued_samples``); the polygon with an MPE issued here."""
     from tests.conftest import SAMPLES
 
+    results = {}
+    for case in ("theodolite", "polygon", "fringe", "positioning"):
+        code, said, _, xml, _, data = issued_samples[case]
+        assert code == 0, said
+        results[case] = (etree.parse(str(xml)).getroot(), data, xml, said)
     out = tmp_path_factory.mktemp("dcc_semantics")
     mp = pytest.MonkeyPatch()
     mp.setenv("ANGLEBENCH_REGISTER", str(out / "register.sqlite"))
@@ -60,25 +66,22 @@ def issued(tmp_path_factory):
         def readouterr(self):
             return type("C", (), {"out": "", "err": ""})()
 
-    results = {}
     try:
-        for case, details in (("theodolite", None), ("polygon", None), ("fringe", None),
-                              ("positioning", None), ("polygon_mpe", _details(SAMPLES, out))):
-            kind, readings, meta, options = CASES[case.removesuffix("_mpe")]
-            where = out / case
-            where.mkdir()
-            buffer = io.StringIO()
-            with contextlib.redirect_stdout(buffer), contextlib.redirect_stderr(buffer):
-                code, _, _, xml = _issue(case.removesuffix("_mpe"), where, Capture(), SAMPLES,
-                                         details=details)
-            said = buffer.getvalue()
-            assert code == 0, said
-            buffer = io.StringIO()
-            with contextlib.redirect_stdout(buffer):
-                main(["analyze", kind, str(SAMPLES / readings), "--json", "--metadata",
-                      str(details or SAMPLES / meta), *options])
-            results[case] = (etree.parse(str(xml)).getroot(), json.loads(buffer.getvalue()),
-                             xml, said)
+        details = _details(SAMPLES, out)
+        kind, readings, meta, options = CASES["polygon"]
+        where = out / "polygon_mpe"
+        where.mkdir()
+        buffer = io.StringIO()
+        with contextlib.redirect_stdout(buffer), contextlib.redirect_stderr(buffer):
+            code, _, _, xml = _issue("polygon", where, Capture(), SAMPLES, details=details)
+        said = buffer.getvalue()
+        assert code == 0, said
+        buffer = io.StringIO()
+        with contextlib.redirect_stdout(buffer):
+            main(["analyze", kind, str(SAMPLES / readings), "--json", "--metadata",
+                  str(details), *options])
+        results["polygon_mpe"] = (etree.parse(str(xml)).getroot(), json.loads(buffer.getvalue()),
+                                  xml, said)
     finally:
         mp.undo()
     return results

@@ -14,7 +14,7 @@ from lxml import etree
 
 from models.dcc import vocabulary as v
 from models.dcc.reader import polygon_standard, read_polygon_dcc, read_standard_dcc
-from tests.app.test_dcc_out import NS, SCHEMA, _issue
+from tests.app.test_dcc_out import NS, SCHEMA
 
 pytestmark = pytest.mark.slow  # each case prints a certificate
 
@@ -24,27 +24,14 @@ _CASES = ("theodolite", "polygon", "fringe", "positioning", "crosscal")
 
 
 @pytest.fixture(scope="module")
-def dccs(tmp_path_factory) -> dict[str, Path]:
-    from tests.conftest import SAMPLES
-
-    out = tmp_path_factory.mktemp("standard_dcc_u")
-    mp = pytest.MonkeyPatch()
-    mp.setenv("ANGLEBENCH_REGISTER", str(out / "register.sqlite"))
-
-    class Capture:
-        def readouterr(self):
-            return type("C", (), {"out": "", "err": ""})()
-
+def dccs(issued_samples) -> dict[str, Path]:
+    """Each sample's DCC as issued (tests/conftest.py's ``issued_samples``, shared with the
+    other DCC tests)."""
     found = {}
-    try:
-        for case in _CASES:
-            where = out / case
-            where.mkdir()
-            code, said, _, xml = _issue(case, where, Capture(), SAMPLES)
-            assert code == 0, said
-            found[case] = xml
-    finally:
-        mp.undo()
+    for case in _CASES:
+        code, said, _, xml, _, _ = issued_samples[case]
+        assert code == 0, said
+        found[case] = xml
     return found
 
 

@@ -20,7 +20,7 @@ SIGMA = 0.05  # arcsec
 
 class _StreamingAutocollimator:
     """One connection: after the first write (the stream's start), a frame ``3 003 x y`` per
-    read every 10 ms, ``frames`` of them (None: for ever), then silence."""
+    read every 4 ms, ``frames`` of them (None: for ever), then silence."""
 
     def __init__(self, x: float, frames: int | None, seed: int) -> None:
         self.x, self.left, self.started = x, frames, False
@@ -31,7 +31,7 @@ class _StreamingAutocollimator:
         return 0
 
     def read(self, n: int = 1) -> bytes:
-        time.sleep(0.01)
+        time.sleep(0.004)
         if not self.started or self.left == 0:
             return b""
         if self.left is not None:

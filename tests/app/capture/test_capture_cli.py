@@ -127,8 +127,11 @@ def test_a_readout_with_noise_and_error_lines(tmp_path):
                                              ("wrong_baud", "a wrong baud rate? 9600 was used")])
 def test_a_dead_instrument_exits_2_with_one_line_naming_the_port(tmp_path, capsys, fault, says):
     out = tmp_path / "x.csv"
+    # it streams nothing, so it is polled too (--mode auto): each request waits its reply for
+    # --reply-timeout (5 s by default: the test waited 2 × 5 s for nothing)
     with AutocollimatorSimulator("pty", faults=(fault,)) as sim:
-        assert main(["capture", "autocollimator", sim.port, "--out", str(out), *FAST]) == 2
+        assert main(["capture", "autocollimator", sim.port, "--out", str(out), *FAST,
+                     "--reply-timeout", "0.2"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err[-1].startswith(f"anglebench capture: {sim.port}: ") and says in err[-1]
     assert err[-1].endswith("no reading was taken")

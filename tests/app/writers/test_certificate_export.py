@@ -5,8 +5,6 @@ from __future__ import annotations
 import io
 import json
 import re
-import subprocess
-import sys
 from dataclasses import replace
 from pathlib import Path
 
@@ -183,26 +181,29 @@ def test_results_csv_and_xlsx():
 
 
 @pytest.mark.slow
-def test_cli_writes_certificate_and_results(tmp_path):
+def test_cli_writes_certificate_and_results(tmp_path, capsys):
+    """The command line in this process (main(), as `anglebench` calls it; the program
+    started as `python -m app` is tests/app/test_cli.py's: two programs started here cost
+    ~2 s of CPU for nothing more)."""
+    from app.main import main
+
     meta = tmp_path / "meta.json"
     meta.write_text(json.dumps(META.to_dict(), ensure_ascii=False), encoding="utf-8")
     pdf, xlsx = tmp_path / "c.pdf", tmp_path / "r.xlsx"
-    done = subprocess.run([sys.executable, "-m", "app", "analyze", "fringe",
-                           str(SAMPLES / "fringe_sample.csv"), "--certificate", str(pdf),
-                           "--metadata", str(meta), "--results", str(xlsx)],
-                          capture_output=True, text=True, check=False)
-    assert done.returncode == 0, done.stderr
+    code = main(["analyze", "fringe", str(SAMPLES / "fringe_sample.csv"), "--certificate",
+                 str(pdf), "--metadata", str(meta), "--results", str(xlsx)])
+    assert code == 0, capsys.readouterr().err
     assert pdf.read_bytes().startswith(b"%PDF") and xlsx.stat().st_size > 0
+    capsys.readouterr()
     bad = tmp_path / "bad.json"
     bad.write_text('{"humidity_pct": "wet"}', encoding="utf-8")
     # a new name: c.pdf is now an issued file, refused as an output before the details
-    done = subprocess.run([sys.executable, "-m", "app", "analyze", "fringe",
-                           str(SAMPLES / "fringe_sample.csv"), "--certificate",
-                           str(tmp_path / "d.pdf"), "--metadata", str(bad)],
-                          capture_output=True, text=True, check=False)
-    assert done.returncode == 2
-    assert "bad.json" in done.stderr and "humidity_pct" in done.stderr
-    assert "Traceback" not in done.stderr
+    code = main(["analyze", "fringe", str(SAMPLES / "fringe_sample.csv"), "--certificate",
+                 str(tmp_path / "d.pdf"), "--metadata", str(bad)])
+    err = capsys.readouterr().err
+    assert code == 2
+    assert "bad.json" in err and "humidity_pct" in err
+    assert "Traceback" not in err
 
 
 @pytest.mark.slow
