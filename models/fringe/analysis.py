@@ -468,13 +468,13 @@ def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
 
 
 def _with_unmodelled_harmonics(theta, u_sin, u_cos, fits, orders, phase_index, per_period,
-                               stated_step, method, warnings):
+                               stated_step, method, warnings, phase_u=0.0):
     """(orders, fits, orders left out): the fits again with the orders the signals hold
     beyond those asked for (models.fringe.unmodelled_harmonics), named in ``warnings``; the
     particle swarm cannot fit them, so they are returned as left out instead."""
     sin_fit, cos_fit = fits
     found = unmodelled_harmonics(theta, {"sin": (u_sin, sin_fit), "cos": (u_cos, cos_fit)},
-                                 phase_index, per_period, stated_step)
+                                 phase_index, per_period, stated_step, phase_u)
     if not found:
         return orders, fits, ()
     more = tuple(sorted({h.order for h in found}))
@@ -615,7 +615,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         # phases, so it aliases with none of them)
         orders, (sin_fit, cos_fit), unmodelled = _with_unmodelled_harmonics(
             theta, u_sin, u_cos, (sin_fit, cos_fit), orders, phase_index, per_period,
-            1e-3 * float(s["adc_lsb_mv"]), str(s["method"]), warnings)
+            1e-3 * float(s["adc_lsb_mv"]), str(s["method"]), warnings, phase_u)
         if unmodelled == () and len(orders) > len(asked):  # the orders found are fitted
             # too: the phases must tell them apart from the rest as well
             check_orders_not_aliased(theta, orders,

@@ -29,7 +29,7 @@ import numpy as np
 
 __all__ = ["NOISE_MARGIN", "SEPARATION_MIN", "PairSeparation", "least_separation",
            "nearest_grid", "order_gram", "pair_separation", "required_separation",
-           "variance_inflation"]
+           "separated_up_to", "variance_inflation"]
 
 TWO_PI = 2.0 * math.pi
 
@@ -188,3 +188,23 @@ def nearest_grid(theta_rad: np.ndarray, a: int, b: int, largest: int = 1_000_000
         if moment > 0.9:
             return n, math.sqrt(-2.0 * math.log(moment)) / n
     return None
+
+
+def separated_up_to(theta_rad: np.ndarray, highest: int, phase_u_rad: float = 0.0,
+                    weights: np.ndarray | None = None) -> int:
+    """The highest order h ≤ ``highest`` such that the offset and every order 1 … h are told
+    apart at the phases ``theta_rad`` (each single order and pair at least its
+    :func:`required_separation`, the design's :func:`variance_inflation` at most
+    1/SEPARATION_MIN²); 0 when not even order 1 is. ``weights``: samples at each phase,
+    when ``theta_rad`` are distinct phases."""
+    orders = tuple(range(highest + 1))
+    gram = order_gram(theta_rad, orders, weights)
+    for top in range(highest, 0, -1):
+        sub = gram[:1 + 2 * top, :1 + 2 * top]
+        every = orders[:top + 1]
+        if variance_inflation(sub) > 1.0 / SEPARATION_MIN ** 2:
+            continue
+        if all(pair_separation(sub, every, a, b) >= required_separation(a, b, phase_u_rad)
+               for i, a in enumerate(every) for b in every[i:] if a or b):
+            return top
+    return 0
