@@ -71,6 +71,12 @@ def test_orders_aliasing_at_8_phases_of_a_noisy_theta_column_are_refused_naming_
             FRINGE.analyze(record(steps(count, 8), seed), {"phase_reference_u": stated_u})
 
 
+def test_an_exact_theta_column_names_n_too():
+    with pytest.raises(ValueError, match=r"orders 3 and 5 alias at N = 8 phases a period: they "
+                                         r"take the same values at every sampled phase"):
+        FRINGE.analyze(record(steps(64, 8), 1, theta_noise_deg=0.0), {})
+
+
 def test_a_larger_jitter_does_not_tell_the_pair_apart_either():
     # 2° of jitter: the pair is 14 % apart, all of it the jitter's, which the record shows
     # (and, stated or not, the noise decides)
@@ -112,6 +118,18 @@ def test_an_alias_of_a_fitted_order_is_not_found_in_the_residuals():
                                 {"phase_reference_u": 0.05})
         assert result.sin_fit.orders == (1, 3, 5)
         assert result.sin_fit.amplitude[3] == pytest.approx(true_harmonic(3), abs=0.0005)
+
+
+def test_a_design_near_singular_as_a_whole_is_refused():
+    # 8 phases a period, clustered (no two orders alias, each pair at least 40 % apart):
+    # the 7 parameters' variance is inflated ~900-fold, and the fit printed A5 at 9.8 mV
+    # (u 4.5 mV) against a true 1.0 mV
+    one = np.radians([25.3, 26.5, 45.9, 170.0, 275.7, 314.5, 328.5, 329.5])
+    phi = (one[None, :] + 2.0 * math.pi * np.arange(8)[:, None]).ravel()
+    for seed in range(3):
+        with pytest.raises(ValueError, match=r"harmonics 1, 3, 5\) only poorly: the design "
+                                             r"inflates a parameter's variance \d+-fold"):
+            FRINGE.analyze(record(phi, seed), {"phase_reference_u": 0.05})
 
 
 @pytest.mark.parametrize("count", [64, 400])
