@@ -25,7 +25,15 @@ from models.fringe.model import (
     period_arcsec,
     refine_phase,
 )
-from models.fringe.order_statistics import distinct, median
+from models.fringe.order_separation import (
+    SEPARATION_MIN,
+    nearest_grid,
+    order_gram,
+    pair_separation,
+    required_separation,
+    variance_inflation,
+)
+from models.fringe.order_statistics import median
 from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
 from models.fringe.result import FringeResult
 from models.fringe.signal_quality import default_window, signal_quality
@@ -263,72 +271,170 @@ def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str]
     return "estimated", None
 
 
-#: singular values below this share of the largest: the columns are one (aliased)
-ALIAS_TOLERANCE = 1e-9
-#: more distinct phases than this cannot all sit on a few aliasing points: not checked
-ALIAS_CHECK_PHASES = 20_000
+#: a separation below this is exact aliasing (the orders take the same values at every
+#: sampled phase), not a near one: the rounding of the phases' sines
+EXACT_ALIAS = 1e-6
 
 
-def _folded_phases(theta_rad: np.ndarray) -> np.ndarray:
-    """The distinct sample phases within one period (rad)."""
-    return distinct(np.round(np.mod(theta_rad, TWO_PI), 10) % np.round(TWO_PI, 10))
+def _folded_phases(theta_rad: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The distinct sample phases within one period (rad), and how many samples each."""
+    folded = np.sort(np.round(np.mod(theta_rad, TWO_PI), 10) % np.round(TWO_PI, 10))
+    if not folded.size:
+        return folded, folded
+    first = np.concatenate(([True], folded[1:] != folded[:-1]))
+    starts = np.flatnonzero(first)
+    counts = np.diff(np.concatenate((starts, [folded.size])))
+    return folded[starts], counts.astype(float)
 
 
-def _rank_deficient(columns: np.ndarray) -> bool:
-    values = np.linalg.svd(columns, compute_uv=False)
-    return bool(values[-1] <= ALIAS_TOLERANCE * values[0])
+#: a record steps evenly when the noise its second differences show is at most this share
+#: of its median step
+EVEN_STEPS = 0.05
 
 
-def check_record_covers_a_period(theta_rad: np.ndarray, step_rad: float) -> None:
+def phase_noise_rad(theta_rad: np.ndarray) -> float:
+    """The noise of each phase of a record read at even steps (a θ column of a motion at a
+    steady or slowly changing speed), from its second differences θᵢ₊₁ − 2θᵢ + θᵢ₋₁ (√6 σ
+    for white noise; the steps themselves cancel): their median absolute value / 0.6745 /
+    √6. 0 when the record does not step evenly (the noise so found above
+    :data:`EVEN_STEPS` of the median step: random phases, a motion that changes speed from
+    sample to sample, whose second differences are no noise), or has fewer than 3 samples."""
+    theta = np.asarray(theta_rad, dtype=float)
+    if theta.size < 3:
+        return 0.0
+    noise = median(np.abs(np.diff(theta, 2))) / 0.6745 / math.sqrt(6.0)
+    step = median(np.abs(np.diff(theta)))
+    return noise if noise <= EVEN_STEPS * step else 0.0
+
+
+#: a span of one period is within the phases' noise when it falls short of a period by at
+#: most this many standard deviations of the span (its two ends' noise)
+SPAN_NOISE_MARGIN = 4.0
+
+
+def period_shortfall_allowed(theta_rad: np.ndarray, step_rad: float,
+                             phase_u_rad: float = 0.0) -> float:
+    """How far (rad) a record's span (first to last phase and one step) may fall short of
+    one period and still be one whole period within the noise of its phases: N equal steps
+    of one period span (N − 1)/N of it and one step, but a θ column's noise moves both ends.
+    :data:`SPAN_NOISE_MARGIN` standard deviations of the ends' difference (√2 σ, σ the
+    larger of the stated ``phase_u_rad`` and the noise the record's second differences
+    show, :func:`phase_noise_rad`), never more than half a step (a record one step short
+    is short); 1e-9 of a
+    period for phases without noise (their rounding)."""
+    noise = max(phase_u_rad, phase_noise_rad(theta_rad))
+    allowed = SPAN_NOISE_MARGIN * math.sqrt(2.0) * noise
+    return max(1e-9 * TWO_PI, min(allowed, 0.5 * step_rad))
+
+
+def check_record_covers_a_period(theta_rad: np.ndarray, step_rad: float,
+                                 phase_u_rad: float = 0.0) -> None:
     """Refuse a record whose phases span less than one period: the fit would extrapolate the
-    error over the part of the period never sampled (and the correction table with it)."""
+    error over the part of the period never sampled (and the correction table with it). A
+    span short of a period by no more than its phases' noise is one period
+    (:func:`period_shortfall_allowed`); the share stated with a refusal is rounded down, so
+    that it never reads 100.0 % when refused."""
     span = float(np.ptp(theta_rad)) + step_rad
-    if span < TWO_PI * (1.0 - 1e-9):
+    if span < TWO_PI - period_shortfall_allowed(theta_rad, step_rad, phase_u_rad):
+        share = math.floor(1000.0 * span / TWO_PI) / 10.0
+        degrees = math.floor(10.0 * math.degrees(span)) / 10.0
         raise ValueError(message(QT_TR_NOOP(
             "the record covers {share} % of one period ({span}° of phase): the harmonics and "
             "the interpolation error over the whole period cannot be determined from less than "
             "one whole period; record at least one period"),
-            share=f"{100.0 * span / TWO_PI:.1f}", span=f"{math.degrees(span):.1f}"))
+            share=f"{share:.1f}", span=f"{degrees:.1f}"))
+
+
+def _where(theta_rad: np.ndarray, a: int, b: int, per_period: int) -> str:
+    """" at N = …" for the message naming an aliased pair: the samples per period given, or
+    the equal steps a θ column's phases lie about."""
+    if per_period:
+        return message(QT_TR_NOOP(" at N = {n} samples per period"), n=per_period)
+    grid = nearest_grid(theta_rad, a, b)
+    if grid is None:
+        return ""
+    n, spread = grid
+    if spread * n < 1e-9:
+        return message(QT_TR_NOOP(" at N = {n} phases a period"), n=n)
+    return message(QT_TR_NOOP(
+        " at N = {n} phases a period (the θ column's phases lie within {spread}° rms of N "
+        "equal steps)"), n=n, spread=f"{math.degrees(spread):.2g}")
 
 
 def check_orders_not_aliased(theta_rad: np.ndarray, orders: tuple[int, ...],
-                             per_period: int = 0) -> None:
+                             per_period: int = 0, phase_u_rad: float = 0.0) -> None:
     """Refuse harmonic orders that the sample phases cannot tell apart, naming the pair: at N
     samples a period, order k and order N − k (or k + N) take the same values at every sample
-    (order N/2 has a sine that is zero at every sample, order N one that is the offset)."""
-    phases = _folded_phases(theta_rad)
-    if phases.size > ALIAS_CHECK_PHASES:
-        return
+    (order N/2 has a sine that is zero at every sample, order N one that is the offset).
 
-    def columns(k: int) -> np.ndarray:
-        if k == 0:
-            return np.ones((phases.size, 1))
-        return np.column_stack([np.sin(k * phases), np.cos(k * phases)])
+    Decided from the design, not from exact repetition (models.fringe.order_separation): a θ
+    column jittered about N steps makes the pair distinct only by its noise, and the fit
+    then printed both amplitudes as determined at many times their size. A pair (or one
+    order's sine and cosine) whose separation is below what is needed
+    (:func:`~models.fringe.order_separation.required_separation`, ``phase_u_rad`` the
+    phases' stated standard uncertainty) is refused, and so is a design that inflates a
+    parameter's variance more than 1/SEPARATION_MIN² against evenly spread phases."""
+    phases, counts = _folded_phases(np.asarray(theta_rad, dtype=float))
+    every = (0, *orders)
+    gram = order_gram(phases, every, counts)
 
-    modulo = (message(QT_TR_NOOP(" at N = {n} samples per period"), n=per_period)
-              if per_period else "")
+    def figures(a: int, b: int, separation: float) -> dict[str, Any]:
+        return dict(separation=f"{100.0 * separation:.2g}",
+                    required=f"{100.0 * required_separation(a, b, phase_u_rad):.2g}")
+
     for k in orders:
-        if _rank_deficient(columns(k)):
+        separation = pair_separation(gram, every, k, k)
+        if separation >= required_separation(k, k, phase_u_rad):
+            continue
+        modulo = _where(theta_rad, k, k, per_period)
+        if separation <= EXACT_ALIAS:
             raise ValueError(message(QT_TR_NOOP(
                 "harmonic order {k} is not determined{modulo}: its sine and cosine are not "
                 "independent at the sampled phases (order N/2 or a multiple of N); lower the "
                 "highest harmonic or sample more finely"), k=k, modulo=modulo))
-    every = (0, *orders)
+        raise ValueError(message(QT_TR_NOOP(
+            "harmonic order {k} is not determined{modulo}: at the sampled phases its sine "
+            "and cosine are only {separation} % apart (at least {required} % is needed, "
+            "against the phases' noise and for a determined fit; order N/2 or a multiple "
+            "of N); lower the highest harmonic or sample more finely"),
+            k=k, modulo=modulo, **figures(k, k, separation)))
     for i, a in enumerate(every):
         for b in every[i + 1:]:
-            if _rank_deficient(np.column_stack([columns(a), columns(b)])):
+            separation = pair_separation(gram, every, a, b)
+            if separation >= required_separation(a, b, phase_u_rad):
+                continue
+            named = dict(a=a if a else message(QT_TR_NOOP("0 (the offset)")), b=b,
+                         modulo=_where(theta_rad, a, b, per_period))
+            if separation <= EXACT_ALIAS:
                 raise ValueError(message(QT_TR_NOOP(
                     "harmonic orders {a} and {b} alias{modulo}: they take the same values at "
                     "every sampled phase, so the fit cannot tell them apart; lower the highest "
                     "harmonic below half the samples per period, or sample more finely"),
-                    a=a if a else message(QT_TR_NOOP("0 (the offset)")), b=b, modulo=modulo))
-    design = np.column_stack([columns(k) for k in every])
-    if phases.size < design.shape[1] or _rank_deficient(design):
+                    **named))
+            raise ValueError(message(QT_TR_NOOP(
+                "harmonic orders {a} and {b} alias{modulo}: at the sampled phases they are only "
+                "{separation} % apart (at least {required} % is needed, against the phases' "
+                "noise and for a determined fit), so the fit cannot tell them apart and would "
+                "print both amplitudes, and their uncertainties, as determined when they are "
+                "not; lower the highest harmonic below half the samples per period, or sample "
+                "more finely"), **named, **figures(a, b, separation)))
+    params = 1 + 2 * len(orders)
+    inflation = variance_inflation(gram)
+    if phases.size < params or not inflation <= 1.0 / SEPARATION_MIN ** 2:
+        if phases.size < params or not math.isfinite(inflation):
+            raise ValueError(message(QT_TR_NOOP(
+                "{count} distinct phases cannot determine the {params} parameters of each "
+                "channel (offset and harmonics {orders}); lower the highest harmonic or sample "
+                "more finely"),
+                count=phases.size, params=params, orders=", ".join(str(k) for k in orders)))
         raise ValueError(message(QT_TR_NOOP(
-            "{count} distinct phases cannot determine the {params} parameters of each channel "
-            "(offset and harmonics {orders}); lower the highest harmonic or sample more finely"),
-            count=phases.size, params=design.shape[1],
-            orders=", ".join(str(k) for k in orders)))
+            "the sampled phases determine the {params} parameters of each channel (offset and "
+            "harmonics {orders}) only poorly: the design inflates a parameter's variance "
+            "{inflation}-fold against evenly spread phases (at most {most} is accepted), so the "
+            "fit's uncertainties would not be determined; lower the highest harmonic or sample "
+            "more finely"),
+            params=params, orders=", ".join(str(k) for k in orders),
+            inflation=f"{inflation:.3g}", most=f"{1.0 / SEPARATION_MIN ** 2:.0f}"))
 
 
 def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
@@ -362,13 +468,13 @@ def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
 
 
 def _with_unmodelled_harmonics(theta, u_sin, u_cos, fits, orders, phase_index, per_period,
-                               stated_step, method, warnings):
+                               stated_step, method, warnings, phase_u=0.0):
     """(orders, fits, orders left out): the fits again with the orders the signals hold
     beyond those asked for (models.fringe.unmodelled_harmonics), named in ``warnings``; the
     particle swarm cannot fit them, so they are returned as left out instead."""
     sin_fit, cos_fit = fits
     found = unmodelled_harmonics(theta, {"sin": (u_sin, sin_fit), "cos": (u_cos, cos_fit)},
-                                 phase_index, per_period, stated_step)
+                                 phase_index, per_period, stated_step, phase_u)
     if not found:
         return orders, fits, ()
     more = tuple(sorted({h.order for h in found}))
@@ -447,10 +553,13 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                 value=f"{100 * bins / 36:.0f}"))
         theta = unwrapped(phase)
         warnings.append(OBSERVABILITY)
+    # the noise of a θ column's phases: as stated, or as the record shows it if larger
+    phase_u = (max(math.radians(float(s["phase_reference_u"])), phase_noise_rad(theta))
+               if source == "theta_column" else 0.0)
     if source == "samples_per_period":
         check_record_covers_a_period(theta, TWO_PI / per_period)
     elif theta.size > 1:
-        check_record_covers_a_period(theta, median(np.abs(np.diff(theta))))
+        check_record_covers_a_period(theta, median(np.abs(np.diff(theta))), phase_u)
     pso_seconds, design = None, None
     phase_index = (np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
                    if source == "samples_per_period" else None)
@@ -490,7 +599,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                            "the signals"),
                 given=given, r_squared=f"{sin_fit.r_squared:.4f}", r_squared2=f"{cos_fit.r_squared:.4f}"))
     if source != "estimated":  # (after the phase is known to fit: a wrong N is said first)
-        check_orders_not_aliased(theta, orders, per_period if source == "samples_per_period" else 0)
+        check_orders_not_aliased(theta, orders, per_period if source == "samples_per_period" else 0,
+                                 phase_u)
         lead = math.degrees((cos_fit.phase[1] - sin_fit.phase[1]) % TWO_PI)
         if abs(lead - 90.0) > 30.0:
             raise ValueError(message(
@@ -499,12 +609,17 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                            "columns, or the sense of θ)"),
                 lead=f"{lead:.0f}"))
     unmodelled: tuple[int, ...] = ()
+    asked = orders
     if source != "estimated":  # harmonics the signals hold beyond the orders asked for (after
         # the orders asked for are known not to alias: an order found is below half the
         # phases, so it aliases with none of them)
         orders, (sin_fit, cos_fit), unmodelled = _with_unmodelled_harmonics(
             theta, u_sin, u_cos, (sin_fit, cos_fit), orders, phase_index, per_period,
-            1e-3 * float(s["adc_lsb_mv"]), str(s["method"]), warnings)
+            1e-3 * float(s["adc_lsb_mv"]), str(s["method"]), warnings, phase_u)
+        if unmodelled == () and len(orders) > len(asked):  # the orders found are fitted
+            # too: the phases must tell them apart from the rest as well
+            check_orders_not_aliased(theta, orders,
+                                     per_period if source == "samples_per_period" else 0, phase_u)
     checkpoint()
     if s["period_nm"]:
         unit, period = "nm", float(s["period_nm"])
