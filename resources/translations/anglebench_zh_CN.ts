@@ -4816,7 +4816,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>the record covers {share} % of one period ({span}° of phase): the harmonics and the interpolation error over the whole period cannot be determined from less than one whole period; record at least one period</source>
-        <extracomment>singular values below this share of the largest: the columns are one (aliased) more distinct phases than this cannot all sit on a few aliasing points: not checked</extracomment>
+        <extracomment>a separation below this is exact aliasing (the orders take the same values at every sampled phase), not a near one: the rounding of the phases&apos; sines a record steps evenly when the noise its second differences show is at most this share of its median step a span of one period is within the phases&apos; noise when it falls short of a period by at most this many standard deviations of the span (its two ends&apos; noise)</extracomment>
         <translation>记录仅覆盖一个周期的 {share} %（相位 {span}°）：不足一个完整周期，无法确定各次谐波及整个周期上的细分误差；请至少记录一个周期</translation>
     </message>
     <message>
@@ -4874,6 +4874,26 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>order {order}, {channel} {amplitude} mV (u {u} mV)</source>
         <translation>{order} 次，{channel} {amplitude} mV（u {u} mV）</translation>
+    </message>
+    <message>
+        <source> at N = {n} phases a period</source>
+        <translation>（每周期 N = {n} 个相位）</translation>
+    </message>
+    <message>
+        <source> at N = {n} phases a period (the θ column&apos;s phases lie within {spread}° rms of N equal steps)</source>
+        <translation>（每周期 N = {n} 个相位；θ 列的相位在 N 个等步的 {spread}° rms 以内）</translation>
+    </message>
+    <message>
+        <source>harmonic order {k} is not determined{modulo}: at the sampled phases its sine and cosine are only {separation} % apart (at least {required} % is needed, against the phases&apos; noise and for a determined fit; order N/2 or a multiple of N); lower the highest harmonic or sample more finely</source>
+        <translation>{k} 次谐波无法确定{modulo}：在所采样的相位上其正弦与余弦分量仅相差 {separation} %（须至少相差 {required} %，以超出相位噪声并使拟合确定；N/2 次或 N 的整数倍次）；请降低最高谐波次数或加密采样</translation>
+    </message>
+    <message>
+        <source>harmonic orders {a} and {b} alias{modulo}: at the sampled phases they are only {separation} % apart (at least {required} % is needed, against the phases&apos; noise and for a determined fit), so the fit cannot tell them apart and would print both amplitudes, and their uncertainties, as determined when they are not; lower the highest harmonic below half the samples per period, or sample more finely</source>
+        <translation>{a} 次与 {b} 次谐波混叠{modulo}：二者在所采样的相位上仅相差 {separation} %（须至少相差 {required} %，以超出相位噪声并使拟合确定），拟合无法区分二者，会把两者的幅值及其不确定度当作已确定的值给出，而实际并未确定；请将最高谐波次数降至每周期采样数的一半以下，或加密采样</translation>
+    </message>
+    <message>
+        <source>the sampled phases determine the {params} parameters of each channel (offset and harmonics {orders}) only poorly: the design inflates a parameter&apos;s variance {inflation}-fold against evenly spread phases (at most {most} is accepted), so the fit&apos;s uncertainties would not be determined; lower the highest harmonic or sample more finely</source>
+        <translation>所采样的相位只能很差地确定每路信号的 {params} 个参数（直流偏置及 {orders} 次谐波）：与均匀分布的相位相比，设计矩阵使某个参数的方差放大 {inflation} 倍（最多接受 {most} 倍），拟合的不确定度因而无法确定；请降低最高谐波次数或加密采样</translation>
     </message>
     <message>
         <source>The signals hold harmonics of order {orders} that the particle swarm (orders 1, 3, 5) leaves out ({heard}): the error between the samples is not determined, and the half range over the whole period is withheld; use least squares</source>
@@ -11338,7 +11358,7 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     </message>
     <message>
         <source>Here the interval of E, M and A (E↑, E↓, A↑, A↓) reaches at least {shift} beyond the scatter&apos;s own at each end (that at the rest of the tail), for a circle error the readings do not exclude: up to {circle} per reading (the stated theodolite u over the pointing noise&apos;s lower confidence bound), the same at a θ in every pass, whose shape is not known and may be the curve&apos;s worst ({pair} between two θ); that widening, not the scatter, takes such a lower end to 0 where the figure is smaller than it.</source>
-        <extracomment>the share of the coverage interval&apos;s tail spent on the pointing noise&apos;s lower confidence bound, which sizes the widening for a circle error of the curve&apos;s worst shape (:func:`circle_part_not_excluded`); the widened interval is held at the rest (Berger &amp; Boos 1994). 0.25: the expected widening z(1 − (1 − γ) tail/2) · 2 √(u² − s_lo(γ)²) is within 3.7 % of its least over γ in every case of the study of #39 (σ 0.1–1.5″, u_c 0–0.8″, ν 22–328; 0.2 within 2.7 %), half the tail up to 10 % wider (a circle error well above the pointing noise, where the bound&apos;s share costs z and buys nothing) where the figures&apos; intervals are widened for a circle error the readings do not exclude: the true reason a lower end of E, M or A reaches 0 where the scatter alone would not</extracomment>
+        <extracomment>the share of the coverage interval&apos;s tail spent on the pointing noise&apos;s lower confidence bound, which sizes the widening for a circle error of the curve&apos;s worst shape (:func:`circle_part_not_excluded`); the widened interval is held at the rest (Berger &amp; Boos 1994). 0.25: the expected half-width z(1 − (1 − γ) tail/2) · s_E + 2k √(u² − s_lo(γ)²) (s_E the figure&apos;s own spread, about 1.2 σ/√passes) is within 1.3 % of its least over γ in every case of the study of #39 (σ 0.1–1.5″, u_c 0–0.8″, ν 22–328; 0.4–0.5 the least where the circle hides under the pointing noise, 0.1 where it stands above it) where the figures&apos; intervals are widened for a circle error the readings do not exclude: the true reason a lower end of E, M or A reaches 0 where the scatter alone would not</extracomment>
         <translation>此处 E、M 和 A（E↑、E↓、A↑、A↓）的区间在每一端至少比仅由离散给出的区间（按尾部的其余部分）再向外延伸 {shift}，以包含读数未能排除的度盘误差：每个读数至多 {circle}（给定的经纬仪 u 超出瞄准噪声置信下限的部分），在每一测回中同一 θ 处相同，其形状未知，可能为曲线最不利的形状（两 θ 之间 {pair}）；使这样的下端达到 0 的是这一展宽，而不是离散，当该参数小于展宽时即如此。</translation>
     </message>
     <message>
