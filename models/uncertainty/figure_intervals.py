@@ -39,9 +39,10 @@ whose spread over the targets is that of the truth, not that of the noisy means:
   whatever the reversal's shape, and the lowest of the bootstrap's and a simultaneous bound
   over the targets, the tail split between them; its upper end is taken up to the largest
   of the targets' own one-sided bounds (:func:`_reversal_guard`);
-* R↑, R↓, R and Ps_max (maxima of the targets' σ) are united with bounds from each target's
-  own s by the chi-square distribution (:func:`_repeatability_bounds`: the upper end the
-  largest of the targets' one-sided bounds, the lower end every target's at once, Šidák),
+* R↑, R↓, R and Ps_max (maxima of the targets' σ) take bounds from each target's own s
+  by the chi-square distribution in place of the bootstrap's interval
+  (:func:`_repeatability_bounds`: the upper end the largest of the targets' one-sided
+  bounds, the lower end every target's at once, Šidák),
   which hold however σ changes from target to target; the bootstrap's world shrinks the σ
   toward a common one, and an audit (one target's σ doubled) found R↑ covering 42 of 80;
 * with Type B inputs, the interval of the figures of the means (:data:`TYPE_B_FIGURES`) is
@@ -667,9 +668,11 @@ def _intervals(drawn: _Simulation, probability: float) -> dict[str, FigureInterv
         if key not in SIGNED_FIGURES:
             low, high = max(low, 0.0), max(high, 0.0)
         if key in bounds:
-            # the hull with the per-target bounds of the standard deviations, which hold
-            # however σ changes from target to target (:func:`_repeatability_bounds`)
-            low, high = min(low, bounds[key][0]), max(high, bounds[key][1])
+            # the per-target bounds of the standard deviations alone, which hold however σ
+            # changes from target to target (:func:`_repeatability_bounds`); the bootstrap's
+            # interval of these figures is not valid then, and the hull with it would only
+            # lower the lower end
+            low, high = bounds[key]
         if high <= low and key in RANGE_BOUNDS:
             high = _range_bound(*_range_terms(key, x, sig_mean, n, shared), tail)
         out[key] = FigureInterval(float(value), float(low), float(high),
@@ -719,8 +722,9 @@ def _repeatability_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
       from the 3m bounds of all the targets at once (Bonferroni);
     * Ps_max = max 3(σ↑ + σ↓) (VDI/DGQ 3441) likewise, at half the tail each direction.
 
-    :func:`_intervals` unites them with the bootstrap's interval, which is narrower where σ
-    is the same at every target: the union covers at least as often as either."""
+    :func:`_intervals` states them in place of the bootstrap's interval, which holds only
+    where σ is the same at every target (the hull of the two, tried first, covered as these
+    do and was wider: its lower end was the lower of the two)."""
     out: dict[str, tuple[float, float]] = {}
     m = next(iter(s.values())).size
     if m == 0:
