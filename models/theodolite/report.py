@@ -416,6 +416,10 @@ FIGURES_STATEMENT = QT_TR_NOOP(
     "directions; the interval is also widened for a circle error shaped as the curve's "
     "worst, as large as the readings do not exclude (the stated u over the pointing noise's "
     "lower confidence bound, at a quarter of the tail, the widened interval at the rest); "
+    "the interval of R, R↑ and R↓ is, in place of the bootstrap's, the bounds from each θ's "
+    "own standard deviation over the passes (chi-square, ν = passes − 1: the upper end the "
+    "largest θ's upper bound, the lower end the largest lower bound taken at once over the "
+    "θ), which hold however the repeatability changes from θ to θ; "
     "the probability stated is the one a simulation study reached where that is lower.")
 #: how a run with passes is decided
 MEANS_STATEMENT = QT_TR_NOOP(

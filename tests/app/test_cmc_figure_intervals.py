@@ -3,7 +3,7 @@ too (ILAC-P14:09/2020 5.4: no U stated below the CMC), in every output of one is
 
 A positioning test (a rotary axis, the standard test cycle simulated from first principles
 in tests/reversal_simulator.py: 12 targets, 5 runs, repeatability 0.05″) and a theodolite
-run with passes (tests/theodolite_passes_simulator.py: 3 passes each way, pointing 0.1″)
+run with passes (tests/theodolite_passes_simulator.py: 5 passes each way, pointing 0.05″)
 give every figure an interval a few tenths of an arcsecond wide; issued with a CMC of 2″
 above every half-width, each figure's interval is value ± CMC at least (its lower end not
 below 0 where the figure cannot be negative) in the JSON, each object says which half-width
@@ -86,13 +86,15 @@ def issued(tmp_path_factory):
         details.update(example=False, certificate_number="AB-2026-0901")
         details["standards"][0].update(uncertainty=0.02)
         found = {"positioning": _issue(out, "positioning", positioning, details, "--cmc")}
-        # theodolite: 3 passes each way, pointing 0.1″, a reversal of 0.3″
+        # theodolite: 5 passes each way, pointing 0.05″, a reversal of 0.3″ (R's interval
+        # holds the largest σ a θ's own passes allow: with 3 passes and 0.1″ it was 3.6″
+        # wide, above the CMC)
         theodolite = out / "theodolite.csv"
-        passes_record(theodolite, rng, 3, 0.1, 0.3)
+        passes_record(theodolite, rng, 5, 0.05, 0.3)
         details = json.loads((SAMPLES / "certificate_theodolite.json").read_text(
             encoding="utf-8"))
         details.update(example=False, certificate_number="AB-2026-0902", approver="Dr. Li")
-        details["standards"][0].update(uncertainty=0.1)  # u per reading: the pointing noise
+        details["standards"][0].update(uncertainty=0.05)  # u per reading: the pointing noise
         found["theodolite"] = _issue(out, "theodolite", theodolite, details, "--cmc-arcsec")
     finally:
         mp.undo()
