@@ -153,8 +153,9 @@ PARAMETERS = (
               0.0, 100.0, decimals=3, step=0.01, zero="not stated",
               help="Standard deviation of one reading (autocollimator and encoder together), "
                    "from the lab's own records, used only when the readings cannot evaluate it "
-                   "(one set per direction and no tilt fit with degrees of freedom); 0: not "
-                   "stated, and then no uncertainty is given"),
+                   "(a single set: its vertical readings give the autocollimator's noise but "
+                   "not the encoder's); 0: not stated, and then the uncertainty says the "
+                   "encoder's noise is not in it, or none is given without a tilt fit"),
     cmc_parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "\"", "the encoder error"),
     REPEATS_PARAMETER,
     Parameter("plan_sets", "entry plan: sets", "int", 0, minimum=1, maximum=100, zero="no plan",
@@ -570,6 +571,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         warnings=warnings, repeats=repeats,
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
         rounding=rounding,
+        reading_noise_stated_arcsec=float(s.get("reading_noise_arcsec", 0.0) or 0.0),
     )
 
 
