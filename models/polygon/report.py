@@ -585,8 +585,10 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     zero = _zero_index(result)
     share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
     components = _standard_components(metadata, zero, n)
+    # the σ of a reading stated (the settings', else the one the result was analysed with)
     noise_components, noise = _noise_components(
-        result, n, zero, float(stated.get("reading_noise_arcsec", 0.0) or 0.0), share)
+        result, n, zero, float(stated.get("reading_noise_arcsec",
+                                          result.reading_noise_stated_arcsec) or 0.0), share)
     components += noise_components
     if not _noise_from_sets(result):
         components += repeated_readings_components(result, share)
@@ -779,6 +781,29 @@ def _one_set(budget: UncertaintyBudget, result: PolygonResult) -> UncertaintyBud
                              budget.floor)
 
 
+def _unevaluated_repeatability(result: PolygonResult) -> str:
+    """What stands in U for the repeatability no direction measured twice gives (the
+    certificate's statistics), as :func:`_noise_components` takes it."""
+    directions = np.array([s.direction for s in result.sets])
+    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
+    if reversal_pair_noise(corrected, directions) is not None:
+        return QT_TR_NOOP("no direction was measured twice; in U the forward set's errors "
+                          "minus the reverse set's, about their mean reversal, stand for it "
+                          "(the encoder's and the autocollimator's reading noise together)")
+    if len(result.sets) == 1 and result.reading_noise_stated_arcsec > 0:
+        return QT_TR_NOOP("one set: in U the stated σ of a reading (encoder and "
+                          "autocollimator together) stands for it")
+    if len(result.sets) == 1 and result.sets[0].tilt is not None:
+        return QT_TR_NOOP("one set: in U the autocollimator's reading noise from the tilt fit "
+                          "stands for the autocollimator's part; the encoder's own reading "
+                          "noise is not stated, so not in U")
+    if any(s.tilt is not None for s in result.sets):
+        return QT_TR_NOOP("no direction was measured twice; in U the autocollimator's "
+                          "reading noise from the tilt fits stands for it")
+    return QT_TR_NOOP("no direction was measured twice and the tilt was not "
+                      "fitted: in U the stated σ of a reading stands for it")
+
+
 #: one set and no σ of a reading stated: its vertical readings give the autocollimator's
 #: noise, and nothing gives the encoder's own (an audit: U 0.84–0.98 of the spread it needed)
 ENCODER_NOISE_NOT_STATED = QT_TR_NOOP(
@@ -937,11 +962,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                           f"{np.max(result.repeatability_arcsec):.2f}\"", ""))
     else:
         more_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"),
-                          QT_TR_NOOP("no direction was measured twice; in U the autocollimator's "
-                                     "reading noise from the tilt fits stands for it")
-                          if any(s.tilt is not None for s in result.sets) else
-                          QT_TR_NOOP("no direction was measured twice and the tilt was not "
-                                     "fitted: in U the stated σ of a reading stands for it")))
+                          _unevaluated_repeatability(result)))
     if (reversal_why := reversal_reason(result)) is not None:
         reversal = reversal_figures(result)
         more_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),

@@ -98,9 +98,13 @@ def test_one_set_names_the_encoder_noise_as_not_stated_unless_the_sigma_is_given
     _, _, results = _runs(bench, (1,), 1, 13)
     missing = POLYGON.inputs_not_stated(results[0], meta)
     assert any("encoder's own reading noise" in str(name) for name in missing), missing
+    conformity = POLYGON.certificate_document(results[0], meta).conformity
+    assert conformity.verdict == "not assessed", conformity.statement
+    assert "encoder's own reading noise" in conformity.statement, conformity.statement
     stated = {"reading_noise_arcsec": math.hypot(SIGMA_ENC, SIGMA_AC)}
     deviations, expanded, results = _runs(bench, (1,), 120, 14, stated)
     assert not POLYGON.inputs_not_stated(results[0], meta)
+    assert POLYGON.certificate_document(results[0], meta).conformity.verdict != "not assessed"
     covered = np.abs(deviations[:, 1:]) <= expanded[:, 1:]
     assert covered.mean() >= 0.93, covered.mean()
 
