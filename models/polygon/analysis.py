@@ -39,6 +39,7 @@ from models.polygon.model import (
     evaluate_sets,
     harmonic_analysis,
     pooled_repeatability,
+    reversal_pair_noise,
     set_name,
     sets_alike,
     split_sets,
@@ -153,8 +154,9 @@ PARAMETERS = (
               0.0, 100.0, decimals=3, step=0.01, zero="not stated",
               help="Standard deviation of one reading (autocollimator and encoder together), "
                    "from the lab's own records, used only when the readings cannot evaluate it "
-                   "(one set per direction and no tilt fit with degrees of freedom); 0: not "
-                   "stated, and then no uncertainty is given"),
+                   "(a single set: its vertical readings give the autocollimator's noise but "
+                   "not the encoder's); 0: not stated, and then the uncertainty says the "
+                   "encoder's noise is not in it, or none is given without a tilt fit"),
     cmc_parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "\"", "the encoder error"),
     REPEATS_PARAMETER,
     Parameter("plan_sets", "entry plan: sets", "int", 0, minimum=1, maximum=100, zero="no plan",
@@ -503,7 +505,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
             "σ of a reading stated in the settings, or U is withheld.")))
     rounding = horizontal_rounding(
         sets, faces, counting,
-        _budget_noise(results, faces) or float(s.get("reading_noise_arcsec", 0.0) or 0.0) or None,
+        _budget_noise(results, faces, corrected, directions,
+                      float(s.get("reading_noise_arcsec", 0.0) or 0.0)),
         None if repeats is None else tuple(np.asarray(typed[c], dtype=float) for c in (
             "position", "encoder_deg", "ac_x_arcsec")))
     warnings += rounding_warnings(rounding)
@@ -570,15 +573,24 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         warnings=warnings, repeats=repeats,
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
         rounding=rounding,
+        reading_noise_stated_arcsec=float(s.get("reading_noise_arcsec", 0.0) or 0.0),
     )
 
 
-def _budget_noise(results, faces: int) -> float | None:
-    """The reading noise the budget takes from the vertical fits (between the sets where it
-    can: a face's own pyramidal error is no noise; the rounding's decision and the budget
-    must judge one figure), None without one."""
+def _budget_noise(results, faces: int, corrected: np.ndarray, directions: np.ndarray,
+                  stated: float = 0.0) -> float | None:
+    """The reading noise the budget takes where no direction was read twice (the rounding's
+    decision and the budget must judge one figure): the forward/reverse pair's
+    (:func:`reversal_pair_noise`); with one set the σ ``stated`` (″, 0: not stated); else
+    the vertical fits' (between the sets where it can: a face's own pyramidal error is no
+    noise), else the σ stated; None without one."""
+    pair = reversal_pair_noise(corrected, directions)
+    if pair is not None:
+        return pair[0]
+    if len(results) == 1 and stated > 0:
+        return stated
     fitted = vertical_fits_noise(results, faces)
-    return fitted[0] if fitted is not None and fitted[0] > 0 else None
+    return fitted[0] if fitted is not None and fitted[0] > 0 else (stated or None)
 
 
 def rounding_warnings(rounding) -> list[str]:

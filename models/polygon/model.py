@@ -87,7 +87,7 @@ __all__ = ["split_sets",
     "PolygonSetReadings",
     "direction_means",
     "evaluate_sets",
-    "pooled_repeatability", "sets_alike",
+    "pooled_repeatability", "reversal_pair_noise", "sets_alike",
     "tilt_advice",
     "tilt_not_identified",
     "wrap_deg",
@@ -420,6 +420,8 @@ class PolygonResult:
     # the rounding of the horizontal readings as typed (models.polygon.rounding; None: the
     # readings were averaged first, n a face)
     rounding: HorizontalRounding | None = None
+    # the σ of a reading stated in the settings (″; 0: not stated)
+    reading_noise_stated_arcsec: float = 0.0
 
     @property
     def mean_reversal_arcsec(self) -> float | None:
@@ -494,6 +496,26 @@ def pooled_repeatability(values: np.ndarray, directions: np.ndarray) -> tuple[np
     if dof == 0 or sets_alike(values, directions):
         return None
     return np.sqrt(squares / dof), dof
+
+
+def reversal_pair_noise(values: np.ndarray, directions: np.ndarray) -> tuple[float, int] | None:
+    """σ of one error from one forward and one reverse set, with its degrees of freedom:
+    the encoder's own reading noise and the horizontal reading's together, which is what an
+    error holds (the vertical readings hold neither). Face by face the two sets differ by the
+    reversal and by the noise of two readings of each instrument, so the differences
+    d_i = e↑_i − e↓_i about their mean over the faces (the mean reversal removed) scatter
+    with 2σ²: σ² = Σ(d_i − d̄)²/(2(n − 1)), n − 1 degrees of freedom. A reversal that
+    changes from face to face is counted as noise (on the safe side). None unless there is
+    exactly one set each way, or when the differences are all equal (nothing to tell)."""
+    fwd, rev = values[directions > 0], values[directions < 0]
+    if fwd.shape[0] != 1 or rev.shape[0] != 1 or values.shape[1] < 2:
+        return None
+    d = fwd[0] - rev[0]
+    dof = d.size - 1
+    scatter = float(np.sum((d - d.mean()) ** 2))
+    if not scatter > 0:
+        return None
+    return math.sqrt(scatter / (2.0 * dof)), dof
 
 
 def split_sets(parsed: ParsedReadings) -> list[tuple[int, np.ndarray, int | None]]:

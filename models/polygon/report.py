@@ -12,8 +12,15 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
   has face 1 exact. These are systematic and are not reduced by repeating sets;
 * the reading noise: with a direction run twice or more, the standard
   deviation of the sets about their direction's mean pooled over positions
-  and directions (Type A), divided by √m for the mean of m sets; otherwise the
-  autocollimator's reading noise from the tilt fits' residuals. The zero
+  and directions (Type A), divided by √m for the mean of m sets; with one set
+  each way, the scatter of the forward minus reverse errors about their mean
+  reversal (:func:`models.polygon.model.reversal_pair_noise`: the encoder's own
+  noise and the horizontal reading's, n − 1 degrees of freedom); with one set,
+  the σ of a reading stated in the settings, else the autocollimator's noise
+  from the tilt fit's residuals, the encoder's own noise then named as not
+  stated (:func:`not_stated`: no conformity is stated). The vertical readings
+  hold neither the encoder's noise nor the horizontal reading's: taken for the
+  noise of an error with one set each way, U covered 83 % at σ_enc = 2σ_ac. The zero
   reading is one reading shared by every set and enters once more, not reduced.
   With n readings per face (averaged), the sets' scatter is that of the means and
   already holds their s/√n, which then is not an input again (it was, #39); with
@@ -99,6 +106,7 @@ from models.polygon.model import (
     allowed_tilt_arcsec,
     pooled_repeatability,
     pyramidal_correction_arcsec,
+    reversal_pair_noise,
     vertical_fits_noise,
 )
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
@@ -292,6 +300,23 @@ def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: fl
                                       "their s/√n is inside this scatter and not counted "
                                       "again"), note=note, n=result.repeats.n)
         evaluation = "A"
+    elif (pair := reversal_pair_noise(corrected, directions)) is not None:
+        noise, dof = pair
+        name = QT_TR_NOOP("Reading noise, encoder and autocollimator (mean of {sets} sets)")
+        note = message(QT_TR_NOOP(
+            "scatter of the forward set's errors minus the reverse set's, face by face, about "
+            "their mean (the mean reversal removed): the noise of the encoder's and the "
+            "horizontal readings together, {s} a reading, {dof} degrees of freedom (a reversal "
+            "that changes from face to face counts as noise)"), s=f"{noise:.3f}\"", dof=dof)
+        evaluation = "A"
+    elif len(result.sets) == 1 and stated_noise > 0:
+        # one set: its vertical readings hold the autocollimator's noise but not the
+        # encoder's, which every error holds; the σ stated is of the two together
+        noise, dof, evaluation = stated_noise, math.inf, "B"
+        name = QT_TR_NOOP("Reading noise, stated (mean of 1 set)")
+        note = message(QT_TR_NOOP("σ = {s} of a reading, encoder and autocollimator together "
+                                  "(stated in the settings: one set cannot evaluate the "
+                                  "encoder's)"), s=f"{noise:g}\"")
     else:
         fitted = vertical_fits_noise(result.sets, n)
         noise, dof, between = fitted if fitted is not None else (0.0, 0, False)
@@ -306,7 +331,9 @@ def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: fl
                 if between else
                 message(QT_TR_NOOP("scatter of the vertical readings about the tilt fit, "
                                    "{dof} degrees of freedom (one set: the faces' own "
-                                   "pyramidal errors are in it, on the safe side)"), dof=dof))
+                                   "pyramidal errors are in it, on the safe side); the "
+                                   "encoder's own reading noise is not in it and not stated"),
+                        dof=dof))
             evaluation = "A"
         elif stated_noise > 0:
             noise, dof, evaluation = stated_noise, math.inf, "B"
@@ -558,8 +585,10 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     zero = _zero_index(result)
     share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
     components = _standard_components(metadata, zero, n)
+    # the σ of a reading stated (the settings', else the one the result was analysed with)
     noise_components, noise = _noise_components(
-        result, n, zero, float(stated.get("reading_noise_arcsec", 0.0) or 0.0), share)
+        result, n, zero, float(stated.get("reading_noise_arcsec",
+                                          result.reading_noise_stated_arcsec) or 0.0), share)
     components += noise_components
     if not _noise_from_sets(result):
         components += repeated_readings_components(result, share)
@@ -687,6 +716,7 @@ _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)
 
 #: the inputs of the mean over the sets that one set carries √m-fold (their templates)
 _PER_SET_SCALED = ("Repeatability (mean of {sets} sets)",
+                   "Reading noise, encoder and autocollimator (mean of {sets} sets)",
                    "Autocollimator reading noise (mean of {sets} sets)",
                    "Reading noise, stated (mean of {sets} sets)",
                    "Repeated readings (s/√n)", "Closure drift", "Pyramidal correction (ψ, ω)")
@@ -751,15 +781,49 @@ def _one_set(budget: UncertaintyBudget, result: PolygonResult) -> UncertaintyBud
                              budget.floor)
 
 
+def _unevaluated_repeatability(result: PolygonResult) -> str:
+    """What stands in U for the repeatability no direction measured twice gives (the
+    certificate's statistics), as :func:`_noise_components` takes it."""
+    directions = np.array([s.direction for s in result.sets])
+    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
+    if reversal_pair_noise(corrected, directions) is not None:
+        return QT_TR_NOOP("no direction was measured twice; in U the forward set's errors "
+                          "minus the reverse set's, about their mean reversal, stand for it "
+                          "(the encoder's and the autocollimator's reading noise together)")
+    if len(result.sets) == 1 and result.reading_noise_stated_arcsec > 0:
+        return QT_TR_NOOP("one set: in U the stated σ of a reading (encoder and "
+                          "autocollimator together) stands for it")
+    if len(result.sets) == 1 and result.sets[0].tilt is not None:
+        return QT_TR_NOOP("one set: in U the autocollimator's reading noise from the tilt fit "
+                          "stands for the autocollimator's part; the encoder's own reading "
+                          "noise is not stated, so not in U")
+    if any(s.tilt is not None for s in result.sets):
+        return QT_TR_NOOP("no direction was measured twice; in U the autocollimator's "
+                          "reading noise from the tilt fits stands for it")
+    return QT_TR_NOOP("no direction was measured twice and the tilt was not "
+                      "fitted: in U the stated σ of a reading stands for it")
+
+
+#: one set and no σ of a reading stated: its vertical readings give the autocollimator's
+#: noise, and nothing gives the encoder's own (an audit: U 0.84–0.98 of the spread it needed)
+ENCODER_NOISE_NOT_STATED = QT_TR_NOOP(
+    "the encoder's own reading noise (one set cannot evaluate it: measure each direction, or "
+    "state the σ of a reading in the settings)")
+
+
 def not_stated(result: PolygonResult, metadata: CertificateMetadata | None = None) -> list[str]:
     """The inputs the certificate says are not in U: the readings' scatter when no direction
     was measured twice and there are no vertical readings (nothing in U covers it); the
+    encoder's own reading noise with one set, vertical readings and no σ of a reading stated
+    (the tilt fit gives the autocollimator's noise alone); the
     encoder's resolution where it was set to each nominal angle, no direction was read twice
     and the details do not state it (where the shaft stopped within its display's step is
     in each error and in nothing the readings show)."""
     out = []
     if len(result.sets) == 1 and result.sets[0].tilt is None:
         out.append(QT_TR_NOOP("repeatability of the readings"))
+    elif len(result.sets) == 1 and not result.reading_noise_stated_arcsec > 0:
+        out.append(ENCODER_NOISE_NOT_STATED)
     rounding = result.rounding
     if (rounding is not None and rounding.encoder_on_nominal and not rounding.repeated
             and not (metadata is not None and metadata.item_resolution_in("arcsec"))):
@@ -898,11 +962,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                           f"{np.max(result.repeatability_arcsec):.2f}\"", ""))
     else:
         more_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"),
-                          QT_TR_NOOP("no direction was measured twice; in U the autocollimator's "
-                                     "reading noise from the tilt fits stands for it")
-                          if any(s.tilt is not None for s in result.sets) else
-                          QT_TR_NOOP("no direction was measured twice and the tilt was not "
-                                     "fitted: in U the stated σ of a reading stands for it")))
+                          _unevaluated_repeatability(result)))
     if (reversal_why := reversal_reason(result)) is not None:
         reversal = reversal_figures(result)
         more_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),

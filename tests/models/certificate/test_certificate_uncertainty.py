@@ -398,8 +398,15 @@ def test_polygon_says_what_covers_an_unevaluated_repeatability():
     assert result.repeatability_arcsec is None  # one set
     document = POLYGON.certificate_document(result, replace(META, tolerance=None))
     rows = [r for r in document.statistics.rows if r[0] == "Repeatability"]
-    assert rows and "the autocollimator's reading noise from the tilt fits stands for it" in rows[0][2]
+    # one set: the tilt fit gives the autocollimator's noise, never the encoder's (audit s67)
+    assert rows and "the encoder's own reading noise is not stated, so not in U" in rows[0][2]
     assert any(c.name.startswith("Autocollimator reading noise") for c in document.budget.components)
+    stated = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows()).parse(),
+                             {"grade": 4, "ac_roll_arcmin": 0.0, "reading_noise_arcsec": 0.12})
+    document = POLYGON.certificate_document(stated, replace(META, tolerance=None))
+    rows = [r for r in document.statistics.rows if r[0] == "Repeatability"]
+    assert rows and "the stated σ of a reading" in rows[0][2]
+    assert any(c.name.startswith("Reading noise, stated") for c in document.budget.components)
 
 
 @pytest.mark.slow
