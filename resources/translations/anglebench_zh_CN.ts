@@ -313,12 +313,28 @@
         <translation>{note}；每个面的 {n} 个读数先取平均，其 s/√n 已包含在此离散中，不再重复计入</translation>
     </message>
     <message>
+        <source>Reading noise, encoder and autocollimator (mean of {sets} sets)</source>
+        <translation>读数噪声，编码器与自准直仪合计（{sets} 个测回的平均）</translation>
+    </message>
+    <message>
+        <source>scatter of the forward set&apos;s errors minus the reverse set&apos;s, face by face, about their mean (the mean reversal removed): the noise of the encoder&apos;s and the horizontal readings together, {s} a reading, {dof} degrees of freedom (a reversal that changes from face to face counts as noise)</source>
+        <translation>正向测回误差减反向测回误差（逐面）对其平均值的离散（已扣除平均反向差）：编码器读数与水平读数的噪声合计，单次读数 {s}，自由度 {dof}（随面而变的反向差计为噪声）</translation>
+    </message>
+    <message>
+        <source>σ = {s} of a reading, encoder and autocollimator together (stated in the settings: one set cannot evaluate the encoder&apos;s)</source>
+        <translation>单次读数 σ = {s}，编码器与自准直仪合计（在分析设置中给出：一个测回无法评定编码器的噪声）</translation>
+    </message>
+    <message>
         <source>Autocollimator reading noise (mean of {sets} sets)</source>
         <translation>自准直仪读数噪声（{sets} 个测回的平均）</translation>
     </message>
     <message>
         <source>Autocollimator reading noise (mean of 1 set)</source>
         <translation>自准直仪读数噪声（1 个测回）</translation>
+    </message>
+    <message>
+        <source>scatter of the vertical readings about the tilt fit, {dof} degrees of freedom (one set: the faces&apos; own pyramidal errors are in it, on the safe side); the encoder&apos;s own reading noise is not in it and not stated</source>
+        <translation>垂直读数对倾斜拟合的离散，自由度 {dof}（仅一个测回：其中包含各面自身的塔差，偏于安全）；编码器自身的读数噪声不在其中，也未给出</translation>
     </message>
     <message>
         <source>{note}, divided by √{m}</source>
@@ -523,10 +539,6 @@
     <message>
         <source>scatter of the vertical readings about the tilt fits between the sets, face by face (each face&apos;s own pyramidal error, the same in every set, cancels), {dof} degrees of freedom (no direction was measured twice)</source>
         <translation>各测回垂直读数对倾斜拟合的残差在测回之间逐面比较的离散（各面自身的塔差在每个测回中相同，相互抵消），自由度 {dof}（没有任何方向测量两次）</translation>
-    </message>
-    <message>
-        <source>scatter of the vertical readings about the tilt fit, {dof} degrees of freedom (one set: the faces&apos; own pyramidal errors are in it, on the safe side)</source>
-        <translation>垂直读数对倾斜拟合的离散，自由度 {dof}（仅一个测回：其中包含各面自身的塔差，偏于安全）</translation>
     </message>
     <message>
         <source>eccentricity / ellipticity</source>
@@ -975,11 +987,6 @@
         <translation>读数误差（瞄准）</translation>
     </message>
     <message>
-        <source>Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value or a range over the θ, biased high by the scatter, so its interval, that of the true figure (of the true means and standard deviations at each θ and direction as this theodolite reads them: R and A hold its pointing noise), may lie below the value stated. It is a parametric bootstrap of the figure&apos;s error from a model of the axis fitted to the means and standard deviations over the passes (the positioning workbench&apos;s, models/uncertainty/figure_intervals.py), with the set-up model&apos;s error (one curve over θ, drawn as its fit&apos;s covariance correlates it) and the part of the stated theodolite u that the passes&apos; scatter does not show (the circle&apos;s error where it reads that θ, drawn once per θ), the same in every pass and both directions; the interval is also widened for a circle error shaped as the curve&apos;s worst, as large as the readings do not exclude (the stated u over the pointing noise&apos;s lower confidence bound, at a quarter of the tail, the widened interval at the rest); the probability stated is the one a simulation study reached where that is lower.</source>
-        <extracomment>how the ISO 230-2 figures of a run with passes get their intervals</extracomment>
-        <translation>多测回各项 ISO 230-2 指标的包含区间：指标是各 θ 上的最大值或极差，受分散影响偏高，因此其区间（真实指标即本经纬仪读出的各 θ 和方向上真实均值与标准偏差的指标的区间：R 和 A 包含其指向噪声）可能位于所给数值之下。区间由轴系模型对指标误差作参数自助法得到，模型按各测回的均值和标准偏差拟合（定位工作台的方法，models/uncertainty/figure_intervals.py），安装模型的误差（随 θ 变化的一条曲线，按其拟合的协方差相关地抽样）以及所给经纬仪 u 中测回分散性未显示的部分（度盘在该 θ 读数处的误差，在每个 θ 抽取一次）在每个测回和两个方向上相同；区间还按形状最不利的度盘误差加宽，其大小取读数不能排除的最大值（所给 u 超出指向噪声置信下限的部分，取尾部概率的四分之一，加宽后的区间取其余部分）；所给概率在仿真研究达到的概率较低时取后者。</translation>
-    </message>
-    <message>
         <source>one set per direction: the reversal cannot be told from the zero drift carried between the sets and their reading noise; indicative, not a calibration result</source>
         <extracomment>one set in each direction: each direction&apos;s mean is one set, whose offset from the common zero is the zero drift it carries (and its reading noise): a difference of the two directions holds that drift whole, and nothing in the readings tells it from a reversal</extracomment>
         <translation>每个方向仅测一组：反向差无法与各组之间传递的零点漂移及其读数噪声区分开；仅供参考，不是校准结果</translation>
@@ -1001,6 +1008,11 @@
     <message>
         <source>coverage interval {low} … {high} ({p} %)</source>
         <translation>包含区间 {low} … {high}（{p} %）</translation>
+    </message>
+    <message>
+        <source>Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value or a range over the θ, biased high by the scatter, so its interval, that of the true figure (of the true means and standard deviations at each θ and direction as this theodolite reads them: R and A hold its pointing noise), may lie below the value stated. It is a parametric bootstrap of the figure&apos;s error from a model of the axis fitted to the means and standard deviations over the passes (the positioning workbench&apos;s, models/uncertainty/figure_intervals.py), with the set-up model&apos;s error (one curve over θ, drawn as its fit&apos;s covariance correlates it) and the part of the stated theodolite u that the passes&apos; scatter does not show (the circle&apos;s error where it reads that θ, drawn once per θ), the same in every pass and both directions; the interval is also widened for a circle error shaped as the curve&apos;s worst, as large as the readings do not exclude (the stated u over the pointing noise&apos;s lower confidence bound, at a quarter of the tail, the widened interval at the rest); the interval of R, R↑ and R↓ is, in place of the bootstrap&apos;s, the bounds from each θ&apos;s own standard deviation over the passes (chi-square, ν = passes − 1: the upper end the largest θ&apos;s upper bound, the lower end the largest lower bound taken at once over the θ), which hold however the repeatability changes from θ to θ; the probability stated is the one a simulation study reached where that is lower.</source>
+        <extracomment>how the ISO 230-2 figures of a run with passes get their intervals</extracomment>
+        <translation>多测回各项 ISO 230-2 指标的包含区间：指标是各 θ 上的最大值或极差，受分散影响偏高，因此其区间（真实指标即本经纬仪读出的各 θ 和方向上真实均值与标准偏差的指标的区间：R 和 A 包含其指向噪声）可能位于所给数值之下。区间由轴系模型对指标误差作参数自助法得到，模型按各测回的均值和标准偏差拟合（定位工作台的方法，models/uncertainty/figure_intervals.py），安装模型的误差（随 θ 变化的一条曲线，按其拟合的协方差相关地抽样）以及所给经纬仪 u 中测回分散性未显示的部分（度盘在该 θ 读数处的误差，在每个 θ 抽取一次）在每个测回和两个方向上相同；区间还按形状最不利的度盘误差加宽，其大小取读数不能排除的最大值（所给 u 超出指向噪声置信下限的部分，取尾部概率的四分之一，加宽后的区间取其余部分）；R、R↑ 和 R↓ 的区间不用自助法区间，而取由各 θ 上各测回自身标准偏差求得的界限（卡方分布，ν = 测回数 − 1：上端为各 θ 上界中的最大值，下端为对所有 θ 同时成立的下界中的最大值），无论重复性在各 θ 之间如何变化均成立；所给概率在仿真研究达到的概率较低时取后者。</translation>
     </message>
     <message>
         <source>The half range is decided on the means over the passes at each θ and direction (the reversal kept), each with its own budget: the passes&apos; pooled scatter over √n, the set-up model&apos;s error and the part of the stated theodolite u that the scatter does not show, the same at a θ in every pass. Where the readings do not exclude such a part (the stated u over the pointing noise&apos;s lower confidence bound), its shape is not known: the interval also holds ISO 230-2 E&apos;s halved, which holds a circle error of any shape up to that part.</source>
@@ -4724,6 +4736,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>按 {standard} 评定；另一标准的指标由同一组读数给出，并列于旁。</translation>
     </message>
     <message>
+        <source>Coverage interval of each figure of the axis: a figure is a largest value or a range over the targets, biased high by the scatter; its interval is a parametric bootstrap of the figure&apos;s error (basic bootstrap interval, calibrated by the iterated bootstrap, Beran 1987) from a model of the axis whose spread over the targets is estimated without the scatter&apos;s (constrained empirical Bayes, Louis 1984), {trials} trials seeded from the readings; each Type B input drawn once per target, the same in both directions. For the figures of the mean deviations (E, M, B, R, A, P) it is united with the interval from the measured means taken as the truth, so that a target far off that the scatter hides is still covered (the curve&apos;s spread taken at both ends of what the readings allow, Berger &amp; Boos 1994). For the ranges of the mean deviations (E, E↑, E↓) the model&apos;s true means have the distribution the readings show (triple-goal estimates, Shen &amp; Louis 1998) and the interval is not calibrated; B&apos;s lower end is the larger of the mean reversal&apos;s bound |B̄| − t·u(B̄) (the mean reversal is never above the largest) and the one above, each at half the tail, and its upper end is at least the largest of the targets&apos; own one-sided bounds: both hold whatever the reversal&apos;s shape. The interval of R, R↑, R↓ and Ps is, in place of the bootstrap&apos;s, the bounds from each target&apos;s own standard deviation (chi-square, ν = n − 1): its upper end the largest of the targets&apos; upper bounds, its lower end the largest of their lower bounds taken at once over the targets (Šidák), so that it holds however the repeatability changes from target to target. With Type B inputs (the reference standard, the stated inputs), the interval of E, M, A and P is also united with the one from the same readings without them: the reference&apos;s errors at the targets are part of the measured curve, and where the reference is better than its certificate states the range holds less of them; and, as the reference&apos;s errors need not be independent from target to target (a once-a-turn error lowers the crests and raises the troughs), with that interval at half the tail widened each way by z · 2 max u, the largest difference of two targets&apos; errors whatever their correlation (u of those inputs but the roundings, which are independent from target to target; z · u for a standard whose U is stated for any angle between two readings, as that difference is one more such angle). The truth it covers is the figure of the axis&apos;s true mean deviations and true standard deviations (R = 4σ at the worst target). The interval may lie below the measured value. Its probability is the one a simulation study reached (anglebench validate: smooth, rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 targets), where that is below {p} %.</source>
+        <translation>轴各项指标的包含区间：指标是各目标位置上的最大值或极差，受分散性影响而偏大；其区间由该指标误差的参数自助法求得（基本自助区间，经迭代自助法校准，Beran 1987），所用的轴模型在各目标位置间的离散程度已扣除分散性的贡献（约束经验贝叶斯，Louis 1984），共 {trials} 次试验，随机种子取自读数；每个 B 类输入量在每个目标位置抽取一次，两个方向相同。对平均偏差的指标（E、M、B、R、A、P），该区间与以测得平均值为真值求得的区间取并集，使被分散性掩盖的远离目标位置仍被包含（曲线离散程度取读数所允许范围的两端，Berger &amp; Boos 1994）。对平均偏差的极差（E、E↑、E↓），轴模型的真平均偏差具有读数所显示的分布（三目标估计，Shen &amp; Louis 1998），区间不加校准；B 的下端取平均反向差值的界限 |B̄| − t·u(B̄)（平均反向差值从不大于其最大值）与上述下端两者中的较大者，各取一半尾部概率；B 的上端至少为各目标位置自身单侧界限中的最大值：两者无论反向差值曲线形状如何均成立。R、R↑、R↓ 和 Ps 的区间不用自助法区间，而取由各目标位置自身标准偏差求得的界限（卡方分布，ν = n − 1）：其上端为各目标位置上界中的最大值，其下端为各目标位置下界（对所有目标位置同时成立，Šidák）中的最大值，因此无论重复性在各目标位置之间如何变化，该区间均成立。有 B 类输入量（参考标准器、所述输入量）时，E、M、A 和 P 的区间还与不计这些输入量、由同一组读数求得的区间取并集：参考标准器在各目标位置的误差是测得曲线的一部分，当参考标准器优于其证书所述时，极差中所含的这部分误差较少；并且，由于参考标准器的误差在各目标位置之间不一定相互独立（每转一次的误差会压低波峰、抬高波谷），还与该区间在半个尾概率处、向两侧各加宽 z · 2 max u 所得的区间取并集，z · 2 max u 是无论相关性如何两个目标位置误差之差的最大值（u 取除舍入以外的这些输入量，舍入在各目标位置之间相互独立；对于 U 适用于任意两个读数之间角度的标准器为 z · u，因为该差值本身就是这样一个角度）。区间所包含的真值是按轴的真实平均偏差和真实标准偏差计算的指标（R = 最差目标位置上的 4σ）。区间可能低于测得值。其包含概率为仿真研究（anglebench validate：平滑、粗糙、单个尖峰和实际曲线，重复性为信号的 0.1 至 2 倍，12、36 和 72 个目标位置）所达到的概率（当其低于 {p} % 时）。</translation>
+    </message>
+    <message>
         <source>A specification of A, R, E, B or P conforms when the upper end of the figure&apos;s coverage interval is within it, does not conform when the lower end exceeds it, and is not decided in between (ISO 14253-1).</source>
         <translation>对 A、R、E、B 或 P 的规范要求：指标包含区间的上限在规范之内为合格，下限超出规范为不合格，介于两者之间不作判定（ISO 14253-1）。</translation>
     </message>
@@ -7462,8 +7478,25 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
     </message>
     <message>
-        <source>repeatability of the readings</source>
+        <source>no direction was measured twice; in U the forward set&apos;s errors minus the reverse set&apos;s, about their mean reversal, stand for it (the encoder&apos;s and the autocollimator&apos;s reading noise together)</source>
         <extracomment>the inputs of the mean over the sets that one set carries √m-fold (their templates)</extracomment>
+        <translation>没有方向被测量两次；U 中以正向测回误差减反向测回误差对其平均反向差的离散代替（编码器与自准直仪读数噪声合计）</translation>
+    </message>
+    <message>
+        <source>one set: in U the stated σ of a reading (encoder and autocollimator together) stands for it</source>
+        <translation>仅一个测回：U 中以给定的单次读数 σ（编码器与自准直仪合计）代替</translation>
+    </message>
+    <message>
+        <source>one set: in U the autocollimator&apos;s reading noise from the tilt fit stands for the autocollimator&apos;s part; the encoder&apos;s own reading noise is not stated, so not in U</source>
+        <translation>仅一个测回：U 中以倾斜拟合得到的自准直仪读数噪声代替自准直仪部分；编码器自身的读数噪声未给出，因而不在 U 中</translation>
+    </message>
+    <message>
+        <source>the encoder&apos;s own reading noise (one set cannot evaluate it: measure each direction, or state the σ of a reading in the settings)</source>
+        <extracomment>one set and no σ of a reading stated: its vertical readings give the autocollimator&apos;s noise, and nothing gives the encoder&apos;s own (an audit: U 0.84–0.98 of the spread it needed)</extracomment>
+        <translation>编码器自身的读数噪声（一个测回无法评定：请正反两个方向各测一个测回，或在分析设置中给出单次读数的 σ）</translation>
+    </message>
+    <message>
+        <source>repeatability of the readings</source>
         <translation>读数重复性</translation>
     </message>
     <message>
@@ -7551,10 +7584,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>录入计划的测回数：设定面数后，读数到来时自动填写面号、测回和方向（每隔一个测回反向）并显示下一面；每个测回最后回到第 1 面（闭合）。0：无计划</translation>
     </message>
     <message>
-        <source>Standard deviation of one reading (autocollimator and encoder together), from the lab&apos;s own records, used only when the readings cannot evaluate it (one set per direction and no tilt fit with degrees of freedom); 0: not stated, and then no uncertainty is given</source>
-        <translation>单次读数的标准偏差（自准直仪与编码器合计），取自实验室自己的记录，仅在读数本身无法评定时使用（每个方向只有一个测回且倾斜拟合没有自由度）；0：未给出，此时不给出不确定度</translation>
-    </message>
-    <message>
         <source>Standard uncertainty of the measured roll; 0: the roll was not measured (the bound above enters the budget, nothing is corrected)</source>
         <translation>实测滚转的标准不确定度；0：未实测滚转（上面的限值计入不确定度评定，不作修正）</translation>
     </message>
@@ -7613,6 +7642,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Odd harmonics only (the model of the method&apos;s paper, Gao et al. 2013), or every order up to the highest</source>
         <translation>仅奇次谐波（方法论文高旭等 2013 的模型），或直到最高次的所有谐波</translation>
+    </message>
+    <message>
+        <source>Standard deviation of one reading (autocollimator and encoder together), from the lab&apos;s own records, used only when the readings cannot evaluate it (a single set: its vertical readings give the autocollimator&apos;s noise but not the encoder&apos;s); 0: not stated, and then the uncertainty says the encoder&apos;s noise is not in it, or none is given without a tilt fit</source>
+        <translation>单次读数的标准偏差（自准直仪与编码器合计），取自实验室自己的记录，仅在读数本身无法评定时使用（只有一个测回：其垂直读数给出自准直仪的噪声，但给不出编码器的）；0：未给出，此时不确定度注明编码器噪声不在其中，没有倾斜拟合时则不给出不确定度</translation>
     </message>
     <message>
         <source>Standard uncertainty of each sample&apos;s phase, in degrees of a signal period: with N equal steps the sampling&apos;s uniformity (the timing of the samples), with a θ column its reference&apos;s stated U / k; with an estimated phase it enters U, but the error is not traceable however it is stated (what leaves the Lissajous figure round is not observable). 0: not stated</source>
@@ -8426,10 +8459,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Compensation = −mean deviation: a controller adding it to the commanded position is expected to reach the target, within the repeatability and the U stated, if the axis behaves as in this test.</source>
         <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
-    </message>
-    <message>
-        <source>Coverage interval of each figure of the axis: a figure is a largest value or a range over the targets, biased high by the scatter; its interval is a parametric bootstrap of the figure&apos;s error (basic bootstrap interval, calibrated by the iterated bootstrap, Beran 1987) from a model of the axis whose spread over the targets is estimated without the scatter&apos;s (constrained empirical Bayes, Louis 1984), {trials} trials seeded from the readings; each Type B input drawn once per target, the same in both directions. For the figures of the mean deviations (E, M, B, R, A, P) it is united with the interval from the measured means taken as the truth, so that a target far off that the scatter hides is still covered (the curve&apos;s spread taken at both ends of what the readings allow, Berger &amp; Boos 1994). For the ranges of the mean deviations (E, E↑, E↓) the model&apos;s true means have the distribution the readings show (triple-goal estimates, Shen &amp; Louis 1998) and the interval is not calibrated; B&apos;s lower end is the larger of the mean reversal&apos;s bound |B̄| − t·u(B̄) (the mean reversal is never above the largest) and the one above, each at half the tail, and its upper end is at least the largest of the targets&apos; own one-sided bounds: both hold whatever the reversal&apos;s shape. With Type B inputs (the reference standard, the stated inputs), the interval of E, M, A and P is also united with the one from the same readings without them: the reference&apos;s errors at the targets are part of the measured curve, and where the reference is better than its certificate states the range holds less of them; and, as the reference&apos;s errors need not be independent from target to target (a once-a-turn error lowers the crests and raises the troughs), with that interval at half the tail widened each way by z · 2 max u, the largest difference of two targets&apos; errors whatever their correlation (u of those inputs but the roundings, which are independent from target to target; z · u for a standard whose U is stated for any angle between two readings, as that difference is one more such angle). The truth it covers is the figure of the axis&apos;s true mean deviations and true standard deviations (R = 4σ at the worst target). The interval may lie below the measured value. Its probability is the one a simulation study reached (anglebench validate: smooth, rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 targets), where that is below {p} %.</source>
-        <translation>轴各项指标的包含区间：指标是各目标位置上的最大值或极差，受分散性影响而偏大；其区间由该指标误差的参数自助法求得（基本自助区间，经迭代自助法校准，Beran 1987），所用的轴模型在各目标位置间的离散程度已扣除分散性的贡献（约束经验贝叶斯，Louis 1984），共 {trials} 次试验，随机种子取自读数；每个 B 类输入量在每个目标位置抽取一次，两个方向相同。对平均偏差的指标（E、M、B、R、A、P），该区间与以测得平均值为真值求得的区间取并集，使被分散性掩盖的远离目标位置仍被包含（曲线离散程度取读数所允许范围的两端，Berger &amp; Boos 1994）。对平均偏差的极差（E、E↑、E↓），轴模型的真平均偏差具有读数所显示的分布（三目标估计，Shen &amp; Louis 1998），区间不加校准；B 的下端取平均反向差值的界限 |B̄| − t·u(B̄)（平均反向差值从不大于其最大值）与上述下端两者中的较大者，各取一半尾部概率；B 的上端至少为各目标位置自身单侧界限中的最大值：两者无论反向差值曲线形状如何均成立。有 B 类输入量（参考标准器、所述输入量）时，E、M、A 和 P 的区间还与不计这些输入量、由同一组读数求得的区间取并集：参考标准器在各目标位置的误差是测得曲线的一部分，当参考标准器优于其证书所述时，极差中所含的这部分误差较少；并且，由于参考标准器的误差在各目标位置之间不一定相互独立（每转一次的误差会压低波峰、抬高波谷），还与该区间在半个尾概率处、向两侧各加宽 z · 2 max u 所得的区间取并集，z · 2 max u 是无论相关性如何两个目标位置误差之差的最大值（u 取除舍入以外的这些输入量，舍入在各目标位置之间相互独立；对于 U 适用于任意两个读数之间角度的标准器为 z · u，因为该差值本身就是这样一个角度）。区间所包含的真值是按轴的真实平均偏差和真实标准偏差计算的指标（R = 最差目标位置上的 4σ）。区间可能低于测得值。其包含概率为仿真研究（anglebench validate：平滑、粗糙、单个尖峰和实际曲线，重复性为信号的 0.1 至 2 倍，12、36 和 72 个目标位置）所达到的概率（当其低于 {p} % 时）。</translation>
     </message>
     <message>
         <source>No coverage interval is given for the figures: {reason}.</source>
@@ -11519,7 +11548,7 @@ Replace it?</source>
     </message>
     <message>
         <source>value: the figure as the standard computes it from the readings; interval_low … interval_high: the coverage interval of the TRUE figure (of the true mean deviations and standard deviations of the axis as this measuring instrument reads it: R and A, and their one-direction forms, are made of the standard deviations and include the instrument&apos;s own repeatability) at coverage_probability. A largest value or a range over the targets (R, A, E, M, B) is biased high by the scatter, so the interval may lie below the value, and it reaches 0 where the scatter could hide the whole figure</source>
-        <extracomment>bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability) figures that may be negative (the others are clipped at 0) The coverage the study reached for each figure at 95.45 % asked for, where below it: figure_coverage.achieved_probability, the highest probability (95.45 % or a multiple of 0.5 %) that the pooled coverage reaches and that none of the axes falls short of beyond the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1, 2 × the signal × constant or varying (96 axes), each test through the whole analysis. 0.8.2 (the ranges&apos; triple-goal world, B&apos;s upper bound, the axes of 36 targets and of repeatability 1 ×): figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391 to 394, 80 tests an axis, pooled; for the figures whose interval 0.8.2 did not change, the lower of that and 0.7.0&apos;s derivation (the 48 axes of 12 and 72 targets, 40 tests an axis). Pooled: E 95.0 % (its lowest axis, a rough curve at 36 targets and repeatability 0.1 varying along the axis, 68 of 80), E↑ 94.8 % (a real curve at 12 targets, 67 of 80), E↓ 95.0 %, M and Pa 94.6 % (a spike at 72 targets, repeatability 1 × varying, 68 of 80), A 98.0 % (69 of 80 at the same axis as E), B and U 98.8 % (0.8.14, B&apos;s lower end from the mean reversal: 99.2 %, the lowest axis 37 of 40, seeds 391–392); the others 96.6–98.6 %. The figure&apos;s interval states this one instead. Before 0.8.2, B stated 93 % and one axis (a rough reversal whose largest value stands clear of the others) reached 59 of 80; before 0.7.0&apos;s union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72 targets) and R 72 % on a reversal changing at random from target to target. what a figure&apos;s value and interval are, beside them in the JSON: a value above its own interval is no error (an audit counted R↑ above its interval in 82 % of 2-pass runs)</extracomment>
+        <extracomment>bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability) figures that may be negative (the others are clipped at 0) The coverage the study reached for each figure at 95.45 % asked for, where below it: figure_coverage.achieved_probability, the highest probability (95.45 % or a multiple of 0.5 %) that the pooled coverage reaches and that none of the axes falls short of beyond the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1, 2 × the signal × constant or varying (96 axes), each test through the whole analysis. 0.8.2 (the ranges&apos; triple-goal world, B&apos;s upper bound, the axes of 36 targets and of repeatability 1 ×): figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391 to 394, 80 tests an axis, pooled; for the figures whose interval 0.8.2 did not change, the lower of that and 0.7.0&apos;s derivation (the 48 axes of 12 and 72 targets, 40 tests an axis). Pooled: E 95.0 % (its lowest axis, a rough curve at 36 targets and repeatability 0.1 varying along the axis, 68 of 80), E↑ 94.8 % (a real curve at 12 targets, 67 of 80), E↓ 95.0 %, M and Pa 94.6 % (a spike at 72 targets, repeatability 1 × varying, 68 of 80), A 98.0 % (69 of 80 at the same axis as E), B and U 98.8 % (0.8.14, B&apos;s lower end from the mean reversal: 99.2 %, the lowest axis 37 of 40, seeds 391–392); the others 96.6–98.6 %. R↑ and R↓ stated 93.5 % until their intervals took the per-target chi-square bounds (:func:`_repeatability_bounds`), which hold at the probability asked for. The figure&apos;s interval states this one instead. Before 0.8.2, B stated 93 % and one axis (a rough reversal whose largest value stands clear of the others) reached 59 of 80; before 0.7.0&apos;s union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72 targets) and R 72 % on a reversal changing at random from target to target. what a figure&apos;s value and interval are, beside them in the JSON: a value above its own interval is no error (an audit counted R↑ above its interval in 82 % of 2-pass runs)</extracomment>
         <translation>value：按标准由读数计算的指标；interval_low … interval_high：真实指标（由本测量仪器所读出的轴系的真实平均偏差和标准偏差计算：R 和 A 及其单向形式由标准偏差构成，包含该仪器自身的重复性）在 coverage_probability 下的包含区间。各目标上的最大值或极差（R、A、E、M、B）受分散影响偏高，因此区间可能位于数值之下；在分散可能掩盖整个指标时下限为 0</translation>
     </message>
 </context>

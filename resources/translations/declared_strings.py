@@ -81,7 +81,7 @@ DECLARED = (
     QT_TR_NOOP('Separate tables for the two approach directions, or one table from the mean of the two (compensation = −mean deviation)'),
     QT_TR_NOOP('Sets of the entry plan: with the number of faces set, entry fills face, set and direction (every second set reverse) as readings arrive and shows the next face; each set ends on face 1 again (closure). 0: no plan'),
     QT_TR_NOOP('Spacing of the compensation table in the target unit; 0: one entry at each target'),
-    QT_TR_NOOP("Standard deviation of one reading (autocollimator and encoder together), from the lab's own records, used only when the readings cannot evaluate it (one set per direction and no tilt fit with degrees of freedom); 0: not stated, and then no uncertainty is given"),
+    QT_TR_NOOP("Standard deviation of one reading (autocollimator and encoder together), from the lab's own records, used only when the readings cannot evaluate it (a single set: its vertical readings give the autocollimator's noise but not the encoder's); 0: not stated, and then the uncertainty says the encoder's noise is not in it, or none is given without a tilt fit"),
     QT_TR_NOOP("Standard deviation of one reading when known (the autocollimator's and the encoder's noise together); 0: taken from the residuals of the fit, with its degrees of freedom"),
     QT_TR_NOOP("Standard uncertainty at a target from the reference's alignment to the axis (cosine error, eccentricity), in the deviation unit. 0: not stated"),
     QT_TR_NOOP("Standard uncertainty at a target from the temperatures (the axis' expansion and its compensation, the reference's environment), in the deviation unit. 0: not stated"),
