@@ -346,11 +346,16 @@ def test_positioning_figures_carry_their_interval():
     rows = {row[0].split(":")[0]: row for row in document.statistics.rows}
     for key in ("A", "R", "E", "M", "B", "P"):
         assert " … " in rows[key][2] and rows[key][3].endswith(" %"), key
-    low, high = (float(v.rstrip('"')) for v in rows["R"][2].split(" … "))
-    # the ends to the decimal of the interval's half-width (GUM 7.2.6): R's, some 2″, to 0.1″,
-    # each rounded outwards (the printed interval holds the computed one)
-    assert intervals["R"].low - 0.1 < low <= intervals["R"].low + 1e-9
-    assert intervals["R"].high - 1e-9 <= high < intervals["R"].high + 0.1
+    ends = [v.rstrip('"') for v in rows["R"][2].split(" … ")]
+    low, high = (float(v) for v in ends)
+    # the ends to the decimal of the interval's half-width (GUM 7.2.6: two significant digits
+    # of it; R's, some 12″ since its chi-square bounds (0.8.16), to 1″), each rounded
+    # outwards (the printed interval holds the computed one)
+    step = 10.0 ** -(len(ends[0].split(".")[1]) if "." in ends[0] else 0)
+    half = 0.5 * (intervals["R"].high - intervals["R"].low)
+    assert step == (1.0 if half >= 10 else 0.1 if half >= 1 else 0.01)
+    assert intervals["R"].low - step < low <= intervals["R"].low + 1e-9
+    assert intervals["R"].high - 1e-9 <= high < intervals["R"].high + step
 
 
 def test_positioning_states_its_inputs_and_the_test_conditions():

@@ -32,8 +32,9 @@ def test_the_headline_prints_each_figure_to_its_intervals_decimal(window):
         d = _decimals_of((iv.high - iv.low) / 2)
         expected.append(f'{key} = {result.iso.figures[key]:.{d}f}"')
     assert shown.startswith("ISO 230-2:2014: " + ", ".join(expected)), shown
-    # the sample: A to 0.1″ as its certificate prints it ("A 22.4″"), never to 0.001″
-    assert shown.startswith('ISO 230-2:2014: A = 22.4", R = 10.1", B = 6.1"'), shown
+    # the sample: A to 0.1″ as its certificate prints it ("A 22.4″"), never to 0.001″; R to
+    # 1″, its interval's half-width some 12″ since its chi-square bounds (0.8.16)
+    assert shown.startswith('ISO 230-2:2014: A = 22.4", R = 10", B = 6.1"'), shown
     # the same figure and decimal as the summary's line beside it
     summary = presenter.view.summary.toPlainText()
     a = re.search(r'ISO 230-2: A = ([-\d.]+)"', summary).group(1)
