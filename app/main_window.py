@@ -592,6 +592,10 @@ class MainWindow(QMainWindow):
             self.capture_panel.raw_sessions(self.current.kind.key))
 
     def closeEvent(self, event: QCloseEvent) -> None:  # noqa: N802
+        for presenter in self.presenters:  # a value still being typed is work to keep
+            table = getattr(getattr(presenter, "view", None), "table", None)
+            if hasattr(table, "enter_typed"):
+                table.enter_typed()
         try:
             let_go = self.projects.confirm_discard()
         except Exception as exc:  # noqa: BLE001 - the close event comes accepted: an exception

@@ -516,6 +516,12 @@ class ProjectPresenter(QObject):
             state = project.workbenches.get(key)
             if state is None or row < 0 or column < 0:
                 continue
+            # the readings with a value still being typed are the origin's no longer: a
+            # certificate of the recovered work must say they were edited (day review,
+            # stop 65: a file's name and SHA-256 stated for readings that were not its)
+            origin = state.origin
+            if isinstance(origin, dict):
+                origin = {**origin, "edited": True}
             if isinstance(state.rows, NumericRows) and row < len(state.rows):
                 # a large record's snapshot (its own copy): the row set as an edited one,
                 # the million others not copied
@@ -523,6 +529,7 @@ class ProjectPresenter(QObject):
                 cells += [""] * (column + 1 - len(cells))
                 cells[column] = text
                 state.rows.edited[row] = cells
+                project.workbenches[key] = WorkbenchState(state.rows, state.settings, origin)
                 continue
             rows = list(state.rows)
             while len(rows) <= row:
@@ -531,7 +538,7 @@ class ProjectPresenter(QObject):
             cells += [""] * (column + 1 - len(cells))
             cells[column] = text
             rows[row] = cells
-            project.workbenches[key] = WorkbenchState(rows, state.settings, state.origin)
+            project.workbenches[key] = WorkbenchState(rows, state.settings, origin)
         if pending:
             project.metadata = {**project.metadata, "pending_edits": {
                 key: {"row": row + 1, "column": column + 1, "text": text}

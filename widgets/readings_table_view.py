@@ -181,6 +181,20 @@ class ReadingsTableView(QTableView):
                            "the readings were replaced ({what})").format(
             row=row + 1, column=header, typed=text, what=label))
 
+    def enter_typed(self) -> bool:
+        """What is typed in a cell and not yet entered, entered as Return enters it (its own
+        undo step; a text that does not read is kept and marked, as typed); True when
+        something was entered. The window does this before it closes, so that the question
+        about unsaved work sees it (before, Ctrl+Q with a value still being typed neither
+        saved nor asked, and the autosave holding it was deleted: day review, stop 65)."""
+        typed = self._typed_edit()
+        if typed is None:
+            return False
+        editor = typed[0]
+        self.commitData(editor)
+        self.closeEditor(editor, QAbstractItemDelegate.EndEditHint.NoHint)
+        return True
+
     def _before_reset(self) -> None:
         """Every row is about to be replaced by a path that cannot enter what is typed first
         (File › New or Open, Edit › Undo or Redo of a replacement) or with a text that does

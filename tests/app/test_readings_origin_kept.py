@@ -184,3 +184,77 @@ def test_the_stored_origin_read_back():
     assert sheet_source(opened.origin, opened.edited, [0, 2], 4) == (
         "sent from the Polygon encoder test workbench; rows 1, 3 (2 of 4) pasted into "
         "AngleBench")
+
+
+def _typing(window, qtbot, presenter, row: int, column: int, text: str):
+    """``text`` typed over a cell of ``presenter``'s sheet and not entered (no Return)."""
+    window.show()
+    table = presenter.view.table
+    index = table.model().index(row, column)
+    table.setCurrentIndex(index)
+    table.edit(index)
+    qtbot.waitUntil(lambda: table._typing_delegate.editor is not None, timeout=3000)
+    editor = table._typing_delegate.editor
+    editor.selectAll()
+    qtbot.keyClicks(editor, text)
+    assert table.pending_edit() == (row, column, text)
+    return table
+
+
+def test_a_value_being_typed_when_the_window_died_makes_the_recovered_readings_edited(
+        make_window, qtbot, tmp_path, samples_dir):
+    """Day review (stop 65) F1: a file imported, a reading typed over it and not entered,
+    kill -9: the recovered sheet holds the typed value, so its certificate must not state
+    the file's name and SHA-256 as if the readings were the file's."""
+    window = make_window()
+    polygon = _polygon(window, qtbot)
+    csv = tmp_path / "bench_run_0512.csv"
+    csv.write_bytes((samples_dir / polygon.kind.sample_file).read_bytes())
+    polygon.import_file(csv)
+    qtbot.waitUntil(lambda: not polygon.analysis_pending, timeout=20000)
+    digest = hashlib.sha256(csv.read_bytes()).hexdigest()
+    assert _line(window, polygon) == f"imported from bench_run_0512.csv (SHA-256 {digest})"
+    column = polygon.sheet.column_index("ac_x_arcsec")
+    typed = "11.50" if polygon.sheet.text(9, column) != "11.50" else "11.60"
+    _typing(window, qtbot, polygon, 9, column, typed)
+    window.projects.autosave()
+    os.close(window.projects.recovery._lock_fd)  # the window dies (kill -9)
+    window.projects.recovery._lock_fd = None
+    window.projects.autosave_timer.stop()
+    survivor = make_window()
+    assert survivor.projects.offer_recovery()
+    recovered = _polygon(survivor, qtbot)
+    assert recovered.sheet.text(9, column) == typed
+    assert _line(survivor, recovered) == (
+        f"imported from bench_run_0512.csv (SHA-256 {digest}), edited in AngleBench")
+
+
+def test_closing_the_window_enters_what_is_being_typed_and_asks_to_save_it(
+        make_window, qtbot, tmp_path, samples_dir):
+    """Day review (stop 65) F2: a saved project, a reading typed over and not entered, then
+    Ctrl+Q: the window closed without asking, its autosave deleted, the file without the
+    value typed. It is entered (as Return enters it) and the question about unsaved work is
+    asked; answered Cancel, the window stays with the value."""
+    window = make_window()
+    polygon = _polygon(window, qtbot)
+    polygon.import_file(samples_dir / polygon.kind.sample_file)
+    qtbot.waitUntil(lambda: not polygon.analysis_pending, timeout=20000)
+    path = tmp_path / "job.anglebench.json"
+    assert window.projects.save_to(path), window.told
+    column = polygon.sheet.column_index("ac_x_arcsec")
+    before = polygon.sheet.text(9, column)
+    typed = "11.50" if before != "11.50" else "11.60"
+    _typing(window, qtbot, polygon, 9, column, typed)
+    asked = []
+    window.projects.view.ask_save_changes = lambda *question: asked.append(question)  # Cancel
+    window.close()
+    assert asked, "the window closed without asking about the value typed"
+    assert window.isVisible()
+    assert polygon.sheet.text(9, column) == typed
+    assert polygon.view.table.pending_edit() is None
+    window.projects.view.ask_save_changes = lambda *question: True  # Save
+    window.close()
+    assert not window.isVisible()
+    from models.project.file import load_project
+
+    assert load_project(path).workbenches["polygon"].rows[9][column] == typed
