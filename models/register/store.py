@@ -1134,6 +1134,16 @@ class Register:
         with self._read() as conn:
             return self._same_calibration(conn, workbench, meta)
 
+    def _current_of_the_day(self, workbench: str, meta: CertificateMetadata):
+        """The query of the current certificates (issued, not superseded or withdrawn) of
+        ``workbench`` and the date of calibration of ``meta``: their number and item (the
+        one-calibration check and its another-maker and serial-left-out questions)."""
+        c = self._schema.CERTIFICATES.c
+        return self._sa.select(c.number, c.item_serial, c.item_description,
+                               c.item_manufacturer).where(
+            c.workbench == workbench, c.status == "issued",
+            c.calibration_date == meta.calibration_date)
+
     def _same_calibration(self, conn, workbench: str, meta: CertificateMetadata
                           ) -> tuple[str, ...]:
         """The current certificates (issued, not superseded or withdrawn) of ``workbench``
@@ -1148,10 +1158,7 @@ class Register:
         from models.register.identifiers import no_serial, same_identifier, same_serial
 
         c = self._schema.CERTIFICATES.c
-        query = self._sa.select(c.number, c.item_serial, c.item_description,
-                                c.item_manufacturer).where(
-            c.workbench == workbench, c.status == "issued",
-            c.calibration_date == meta.calibration_date)
+        query = self._current_of_the_day(workbench, meta)
         if no_serial(meta.item_serial):
             return tuple(row.number for row in conn.execute(query.order_by(c.id))
                          if no_serial(row.item_serial) and same_identifier(
@@ -1175,10 +1182,7 @@ class Register:
         if not (meta.item_manufacturer or "").strip():
             return ()
         c = self._schema.CERTIFICATES.c
-        query = self._sa.select(c.number, c.item_serial, c.item_description,
-                                c.item_manufacturer).where(
-            c.workbench == workbench, c.status == "issued",
-            c.calibration_date == meta.calibration_date)
+        query = self._current_of_the_day(workbench, meta)
         unnamed = no_serial(meta.item_serial)
         return tuple(
             (row.number, _printed(row.item_manufacturer))
@@ -1248,10 +1252,7 @@ class Register:
         from models.register.identifiers import no_serial, same_identifier
 
         c = self._schema.CERTIFICATES.c
-        query = self._sa.select(c.number, c.item_serial, c.item_description,
-                                c.item_manufacturer).where(
-            c.workbench == workbench, c.status == "issued",
-            c.calibration_date == meta.calibration_date)
+        query = self._current_of_the_day(workbench, meta)
         unnamed = no_serial(meta.item_serial)
         return tuple(
             (row.number, row.item_serial or "", _printed(row.item_manufacturer))
