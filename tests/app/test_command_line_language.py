@@ -136,7 +136,8 @@ def test_the_register_speaks_chinese(issued, tmp_path, capsys):
     number = line.split()[0]
     assert line.rstrip().endswith("已签发") and " polygon / " in line  # the key stays a key
     # the header too (day review 65 F7: it stayed in English)
-    assert header.split() == ["编号", "签发日期", "工作台", "/", "文件", "委托方", "出厂编号", "制造商", "状态"]
+    assert header.split() == ["编号", "签发日期", "工作台", "/", "文件", "委托方", "出厂编号",
+                              "制造商", "状态"]
     assert main(["register", "list"]) == 0
     english = capsys.readouterr().out.splitlines()
     assert english[1].rstrip().endswith("issued")  # English
