@@ -223,7 +223,6 @@ class Language(QObject):
         self.retranslate()
         return language
 
-
     def _translators_of(self, language: str) -> list[QTranslator]:
         """Ours and Qt's own translators of ``language`` (those that load), the same ones
         at every choice of it."""

@@ -598,9 +598,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                            "leave the samples per period and the θ column out to estimate the phase from "
                            "the signals"),
                 given=given, r_squared=f"{sin_fit.r_squared:.4f}", r_squared2=f"{cos_fit.r_squared:.4f}"))
+    given_n = per_period if source == "samples_per_period" else 0  # N as stated, if it is
     if source != "estimated":  # (after the phase is known to fit: a wrong N is said first)
-        check_orders_not_aliased(theta, orders, per_period if source == "samples_per_period" else 0,
-                                 phase_u)
+        check_orders_not_aliased(theta, orders, given_n, phase_u)
         lead = math.degrees((cos_fit.phase[1] - sin_fit.phase[1]) % TWO_PI)
         if abs(lead - 90.0) > 30.0:
             raise ValueError(message(
@@ -618,8 +618,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
             1e-3 * float(s["adc_lsb_mv"]), str(s["method"]), warnings, phase_u)
         if unmodelled == () and len(orders) > len(asked):  # the orders found are fitted
             # too: the phases must tell them apart from the rest as well
-            check_orders_not_aliased(theta, orders,
-                                     per_period if source == "samples_per_period" else 0, phase_u)
+            check_orders_not_aliased(theta, orders, given_n, phase_u)
     checkpoint()
     if s["period_nm"]:
         unit, period = "nm", float(s["period_nm"])

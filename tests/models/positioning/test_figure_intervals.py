@@ -251,6 +251,19 @@ def test_the_probability_stated_is_the_highest_no_axis_falls_short_of():
     assert achieved_probability(np.full(48, 20), 40) is None
 
 
+
+def _twelve_targets_both_ways():
+    """Means, standard deviations and runs (3) of a sine over 12 targets, 0.3 apart
+    between the directions, with scatter: the pair-widening tests' axis."""
+    rng = np.random.default_rng(3)
+    theta = np.linspace(0.0, 1.0, 12)
+    curve = np.sin(2 * math.pi * theta)
+    means = {d: curve + s * 0.3 + rng.normal(0.0, 0.2, theta.size)
+             for d, s in (("up", 0.5), ("down", -0.5))}
+    stds = {d: np.full(theta.size, 0.35) for d in means}
+    runs = {d: np.full(theta.size, 3) for d in means}
+    return means, stds, runs
+
 def test_a_pair_bound_widens_without_type_b_and_at_the_rest_of_the_tail():
     """``pair_u`` with no Type B input at any target (a theodolite whose stated u the scatter
     does not show over its point estimate, but does not exclude): E's and M's upper ends are
@@ -259,13 +272,7 @@ def test_a_pair_bound_widens_without_type_b_and_at_the_rest_of_the_tail():
     unchanged. Before, with every target's Type B u 0 no widening was made at all."""
     from scipy.special import ndtri
 
-    rng = np.random.default_rng(3)
-    theta = np.linspace(0.0, 1.0, 12)
-    curve = np.sin(2 * math.pi * theta)
-    means = {d: curve + s * 0.3 + rng.normal(0.0, 0.2, theta.size)
-             for d, s in (("up", 0.5), ("down", -0.5))}
-    stds = {d: np.full(theta.size, 0.35) for d in means}
-    runs = {d: np.full(theta.size, 3) for d in means}
+    means, stds, runs = _twelve_targets_both_ways()
     p, spent, pair = 0.9545, 0.25, 0.6
     kw = dict(seed=11, trials=800, outer=0, inner=0)
     plain = figure_intervals(means, stds, runs, p, **kw)
@@ -291,13 +298,7 @@ def test_errors_within_their_u_widen_by_their_largest_range_at_the_whole_rest_of
     which such errors do not enter, is unchanged."""
     from scipy.special import ndtri
 
-    rng = np.random.default_rng(3)
-    theta = np.linspace(0.0, 1.0, 12)
-    curve = np.sin(2 * math.pi * theta)
-    means = {d: curve + s * 0.3 + rng.normal(0.0, 0.2, theta.size)
-             for d, s in (("up", 0.5), ("down", -0.5))}
-    stds = {d: np.full(theta.size, 0.35) for d in means}
-    runs = {d: np.full(theta.size, 3) for d in means}
+    means, stds, runs = _twelve_targets_both_ways()
     p, spent, pair = 0.9545, 0.25, 0.6
     kw = dict(seed=11, trials=800, outer=0, inner=0)
     plain = figure_intervals(means, stds, runs, p, **kw)
