@@ -364,15 +364,29 @@ def parameter_coverage(result, probability: float) -> tuple[float, int]:
 
 
 def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
+    # the orders not fitted that the sampled phases fold into each fitted one (0: the
+    # offset): said at the amplitude's own row, not only in the remarks
+    folded: dict[int, list[int]] = {}
+    for order, into in getattr(result, "folded_orders", ()):
+        folded.setdefault(into, []).append(order)
+
+    def named(name, h: int):
+        if h not in folded:
+            return name
+        return message(QT_TR_NOOP("{name}, with order {orders} folded in (they alias at "
+                                  "these phases)"),
+                       name=name, orders=", ".join(map(str, folded[h])))
+
     rows = []
     for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
-        rows.append((message(QT_TR_NOOP("{channel}: offset A₀"), channel=label),
+        rows.append((named(message(QT_TR_NOOP("{channel}: offset A₀"), channel=label), 0),
                      *gum_pair(fit.offset, k * fit.u_offset, " V", signed=True)))
         for h in fit.orders:
             ua = fit.u_amplitude.get(h, float("nan"))
             up = fit.u_phase.get(h, float("nan"))
             # each parameter to the decimal of its U, two significant digits (GUM 7.2.6)
-            rows.append((f"{label}: A{h}", *gum_pair(fit.amplitude[h], k * ua, " V")))
+            rows.append((named(f"{label}: A{h}", h),
+                         *gum_pair(fit.amplitude[h], k * ua, " V")))
             if abs(fit.amplitude[h]) > k * ua and np.isfinite(up) and k * up < np.pi:
                 rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], k * up, " rad",
                                                          signed=True)))

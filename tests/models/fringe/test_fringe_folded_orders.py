@@ -132,3 +132,19 @@ def test_the_error_at_the_sampled_phases_is_still_decided(capsys, tmp_path):
     decided = data["decided_quantity"]
     assert decided["value"] is not None and decided["interval_high"] is not None
     assert "fold" not in (decided["reason"] or "")
+
+
+def test_the_certificate_says_it_at_the_amplitude_and_in_its_remarks():
+    from models.certificate.metadata import CertificateMetadata
+
+    result = FRINGE.analyze(_parsed(_theta(True), True), _settings(True, 3))
+    metadata = CertificateMetadata.from_dict({"tolerance": 2.0, "tolerance_unit": "arcsec",
+                                              "decision_quantity": "half_range"})
+    document = FRINGE.certificate(result, metadata)
+    names = [str(row[0]) for row in document.parameters.rows]
+    assert "sin: A3, with order 5 folded in (they alias at these phases)" in names
+    assert "cos: A3, with order 5 folded in (they alias at these phases)" in names
+    assert "sin: A1" in names  # (order 7 folds into A1 too, but is not a harmonic looked at)
+    assert any("A3 and B3 hold any harmonic of order 5" in str(w) for w in document.warnings)
+    assert document.conformity.verdict == "not assessed"
+    assert "order 5 into order 3" in document.conformity.reason
