@@ -670,7 +670,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         # orders left out that the sampled phases fold into a fitted amplitude (5 into A3
         # at N = 8): invisible here, so named, and the curve between the samples withheld
         phases, counts = _folded_phases(theta)
-        folds = folded_orders(phases, orders, counts)
+        folds = folded_orders(phases, orders, counts, phase_u)
         if folds:
             warnings.append(folded_orders_warning(theta, folds, given_n))
     checkpoint()

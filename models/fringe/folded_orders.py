@@ -9,13 +9,17 @@ fitted order it aliases with. The amplitude printed for that order is then the t
 curve between the samples is not the signals' (day review F5: at N = 8 with orders 1, 3 fitted,
 A3 printed 0.0021 ± 0.0001 V where the true A3 was 0.005 V and A5 0.004 V).
 
-Decided from the design, as the refusal is: each order j not fitted is regressed on the fitted
-columns at the sampled phases; the share of its harmonic that lands in order k's amplitude is
-the largest singular value of the block of order k's coefficients (1 when j and k alias
-exactly, about 0 over whole periods of evenly spread phases). A share of at least
-:data:`FOLD_SHARE` is named. The orders looked at are those of the method's model (1, 3, 5)
-and every order up to the highest fitted: the harmonics a read head's signals are known to
-hold; higher orders fold likewise and are not claimed either way.
+Decided from the design, as the refusal is: an order j not fitted folds into a fitted order k
+when the phases cannot tell the two apart by the refusal's own rule (their separation below
+:func:`~models.fringe.order_separation.required_separation`: 0 at exact aliasing, the jitter's
+alone about N steps) and at least :data:`FOLD_SHARE` of j's harmonic lands in k's amplitude
+(j regressed on the fitted columns at the sampled phases: the largest singular value of the
+block of order k's coefficients, 1 when j and k alias). An order the phases do tell apart
+(random phases, a record of a few samples that does not alias) is not named: the residuals
+show it if the signals hold it (models.fringe.unmodelled_harmonics). The orders looked at are
+those of the method's model (1, 3, 5) and every order up to the highest fitted: the
+harmonics a read head's signals are known to hold; higher orders fold likewise and are not
+claimed either way.
 """
 
 from __future__ import annotations
@@ -25,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.fringe.order_separation import order_gram
+from models.fringe.order_separation import order_gram, pair_separation, required_separation
 
 __all__ = ["FOLD_SHARE", "MODEL_HIGHEST", "FoldedOrder", "folded_orders"]
 
@@ -47,17 +51,20 @@ class FoldedOrder:
 
 
 def folded_orders(phases_rad: np.ndarray, orders: tuple[int, ...],
-                  weights: np.ndarray | None = None) -> tuple[FoldedOrder, ...]:
+                  weights: np.ndarray | None = None,
+                  phase_u_rad: float = 0.0) -> tuple[FoldedOrder, ...]:
     """The orders not in ``orders`` (up to :data:`MODEL_HIGHEST` or the highest fitted) that
     fold into a fitted order's amplitude (or the offset) at the phases ``phases_rad``
-    (``weights``: samples at each, when they are distinct phases), the lowest first. The
-    fitted design must be of full rank (the orders fitted are told apart)."""
+    (``weights``: samples at each, when they are distinct phases; ``phase_u_rad`` their
+    standard uncertainty, as the refusal takes it), the lowest first. The fitted design must
+    be of full rank (the orders fitted are told apart)."""
     fitted = (0, *orders)
     highest = max(MODEL_HIGHEST, max(orders, default=0))
     others = [j for j in range(1, highest + 1) if j not in orders]
     if not others:
         return ()
-    gram = order_gram(phases_rad, (*fitted, *others), weights)
+    every = (*fitted, *others)
+    gram = order_gram(phases_rad, every, weights)
     p = 1 + 2 * len(orders)
     try:
         # the coefficients of each unfitted column on the fitted ones (all scaled alike,
@@ -74,6 +81,7 @@ def folded_orders(phases_rad: np.ndarray, orders: tuple[int, ...],
             else:
                 rows = slice(1 + 2 * (position - 1), 3 + 2 * (position - 1))
                 share = float(np.linalg.svd(block_j[rows], compute_uv=False)[0])
-            if share >= FOLD_SHARE:
+            if share >= FOLD_SHARE and pair_separation(gram, every, k, j) < \
+                    required_separation(k, j, phase_u_rad):
                 found.append(FoldedOrder(j, k, share))
     return tuple(found)
