@@ -125,7 +125,7 @@ def _decided(capsys, tmp_path, with_theta: bool, quantity: str) -> tuple[dict, f
 def test_the_half_range_over_the_whole_period_is_withheld_with_the_reason(
         capsys, tmp_path, with_theta):
     """The model's curve between the samples has the 5th folded into the 3rd: the rig's
-    true half range (0.34" here) was outside the interval stated in 16 of 16 records of
+    true half range (0.34" here) was outside the interval stated in 77 of 80 records of
     3rd and 5th harmonics of 2-5 mV. No value, no interval, no verdict: the reason."""
     data, truth = _decided(capsys, tmp_path, with_theta, "half_range")
     assert data["folded_orders"] == [{"order": 5, "into": 3}]
