@@ -1105,7 +1105,9 @@ class WorkbenchPresenter(QObject):
             error = self.in_unit_text(error)
             no_result = tr("No result: {reason}").format(reason=error) if error else ""
             self.view.set_summary(no_result or tr("No readings yet."))
-            self.view.set_verdict(no_result)
+            # the reason once, in the pane: the bold line above it says only that there is
+            # none (day review 67 F5: the same long sentence stood in both)
+            self.view.set_verdict(tr("No result (the reason is below)") if error else "")
             self.view.set_figures({})
             self.view.set_warnings(input_warnings)
         else:

@@ -10,6 +10,7 @@ import numpy as np
 
 from models.cancellation import checkpoint
 from models.fringe import KEY, TITLE
+from models.fringe.folded_orders import FoldedOrder, folded_orders
 from models.fringe.model import (
     MODEL_INPUT,
     TWO_PI,
@@ -361,6 +362,20 @@ def _where(theta_rad: np.ndarray, a: int, b: int, per_period: int) -> str:
         "equal steps)"), n=n, spread=f"{math.degrees(spread):.2g}")
 
 
+def _lower_to(theta_rad: np.ndarray, a: int, b: int, per_period: int,
+              orders: tuple[int, ...]) -> str:
+    """" to 3 (below half of N = 8)": the highest harmonic that the N the pair aliases at
+    allows, for the refusal's advice; " below half the samples per period" when no N."""
+    n = per_period
+    if not n:
+        grid = nearest_grid(theta_rad, a, b)
+        n = grid[0] if grid is not None else 0
+    below = [k for k in orders if 2 * k < n]
+    if not below:
+        return message(QT_TR_NOOP(" below half the samples per period"))
+    return message(QT_TR_NOOP(" to {highest} (below half of N = {n})"), highest=max(below), n=n)
+
+
 def check_orders_not_aliased(theta_rad: np.ndarray, orders: tuple[int, ...],
                              per_period: int = 0, phase_u_rad: float = 0.0) -> None:
     """Refuse harmonic orders that the sample phases cannot tell apart, naming the pair: at N
@@ -394,9 +409,10 @@ def check_orders_not_aliased(theta_rad: np.ndarray, orders: tuple[int, ...],
                 "highest harmonic or sample more finely"), k=k, modulo=modulo))
         raise ValueError(message(QT_TR_NOOP(
             "harmonic order {k} is not determined{modulo}: at the sampled phases its sine "
-            "and cosine are only {separation} % apart (at least {required} % is needed, "
-            "against the phases' noise and for a determined fit; order N/2 or a multiple "
-            "of N); lower the highest harmonic or sample more finely"),
+            "and cosine differ only through the scatter of the phases (by {separation} % of "
+            "what phases spread evenly over the period would show; at least {required} % is "
+            "needed; order N/2 or a multiple of N); lower the highest harmonic or sample more "
+            "finely"),
             k=k, modulo=modulo, **figures(k, k, separation)))
     for i, a in enumerate(every):
         for b in every[i + 1:]:
@@ -404,20 +420,23 @@ def check_orders_not_aliased(theta_rad: np.ndarray, orders: tuple[int, ...],
             if separation >= required_separation(a, b, phase_u_rad):
                 continue
             named = dict(a=a if a else message(QT_TR_NOOP("0 (the offset)")), b=b,
-                         modulo=_where(theta_rad, a, b, per_period))
+                         modulo=_where(theta_rad, a, b, per_period),
+                         advice=_lower_to(theta_rad, a, b, per_period, orders))
             if separation <= EXACT_ALIAS:
                 raise ValueError(message(QT_TR_NOOP(
                     "harmonic orders {a} and {b} alias{modulo}: they take the same values at "
                     "every sampled phase, so the fit cannot tell them apart; lower the highest "
-                    "harmonic below half the samples per period, or sample more finely"),
+                    "harmonic{advice}, or sample more finely"),
                     **named))
             raise ValueError(message(QT_TR_NOOP(
-                "harmonic orders {a} and {b} alias{modulo}: at the sampled phases they are only "
-                "{separation} % apart (at least {required} % is needed, against the phases' "
-                "noise and for a determined fit), so the fit cannot tell them apart and would "
-                "print both amplitudes, and their uncertainties, as determined when they are "
-                "not; lower the highest harmonic below half the samples per period, or sample "
-                "more finely"), **named, **figures(a, b, separation)))
+                "harmonic orders {a} and {b} alias{modulo}: at the sampled phases a harmonic "
+                "of order {b} looks almost exactly like one of order {a}, they differ only "
+                "through the scatter of the phases (by {separation} % of what phases spread "
+                "evenly over the period would show; at least {required} % is needed), so the "
+                "fit cannot tell them apart and would print both amplitudes, and their "
+                "uncertainties, as determined when they are not; lower the highest "
+                "harmonic{advice}, or sample more finely"),
+                **named, **figures(a, b, separation)))
     params = 1 + 2 * len(orders)
     inflation = variance_inflation(gram)
     if phases.size < params or not inflation <= 1.0 / SEPARATION_MIN ** 2:
@@ -435,6 +454,34 @@ def check_orders_not_aliased(theta_rad: np.ndarray, orders: tuple[int, ...],
             "more finely"),
             params=params, orders=", ".join(str(k) for k in orders),
             inflation=f"{inflation:.3g}", most=f"{1.0 / SEPARATION_MIN ** 2:.0f}"))
+
+
+def _amplitudes(k: int) -> str:
+    """"A3 and B3": the two channels' amplitudes of order ``k`` as the summary prints them
+    ("A0 and B0 (the offsets)" for the offset)."""
+    if k == 0:
+        return message(QT_TR_NOOP("A0 and B0 (the offsets)"))
+    return message(QT_TR_NOOP("A{k} and B{k}"), k=k)
+
+
+def folded_orders_warning(theta_rad: np.ndarray, folds: tuple[FoldedOrder, ...],
+                          per_period: int = 0) -> str:
+    """The warning naming each order not fitted that folds into a fitted amplitude at the
+    sampled phases, and what that leaves undetermined ("" when none)."""
+    if not folds:
+        return ""
+    named = separated([message(QT_TR_NOOP(
+        "{amplitudes} hold any harmonic of order {order}: orders {order} and {k} alias"
+        "{modulo}"), amplitudes=_amplitudes(f.into), order=f.order, k=f.into,
+        modulo=_where(theta_rad, f.into, f.order, per_period)) for f in folds], "; ")
+    return message(QT_TR_NOOP(
+        "Harmonics the fit leaves out fold into the orders it fits at these phases: {named}. "
+        "At the sampled phases such a harmonic looks exactly like the fitted one, so each "
+        "amplitude named is the two together (their sum as phasors), not the fitted order "
+        "alone, and its U does not hold the other; the interpolation error between the "
+        "samples, and its half range over the whole period, is not determined (a decision "
+        "on the half range is withheld). Sample more finely to tell them apart."),
+        named=named)
 
 
 def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
@@ -609,6 +656,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                            "columns, or the sense of θ)"),
                 lead=f"{lead:.0f}"))
     unmodelled: tuple[int, ...] = ()
+    folds: tuple[FoldedOrder, ...] = ()
     asked = orders
     if source != "estimated":  # harmonics the signals hold beyond the orders asked for (after
         # the orders asked for are known not to alias: an order found is below half the
@@ -619,6 +667,12 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         if unmodelled == () and len(orders) > len(asked):  # the orders found are fitted
             # too: the phases must tell them apart from the rest as well
             check_orders_not_aliased(theta, orders, given_n, phase_u)
+        # orders left out that the sampled phases fold into a fitted amplitude (5 into A3
+        # at N = 8): invisible here, so named, and the curve between the samples withheld
+        phases, counts = _folded_phases(theta)
+        folds = folded_orders(phases, orders, counts, phase_u)
+        if folds:
+            warnings.append(folded_orders_warning(theta, folds, given_n))
     checkpoint()
     if s["period_nm"]:
         unit, period = "nm", float(s["period_nm"])
@@ -647,6 +701,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         cos_periods=cos_periods, phase_source=source, unit=unit, period_length=period,
         ellipse=stated_ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
         pso_seconds=pso_seconds, warnings=warnings, unmodelled_orders=unmodelled,
+        folded_orders=tuple((f.order, f.into) for f in folds),
         inputs={key: float(s[key]) for key in BUDGET_INPUTS},
     )
 
@@ -739,6 +794,9 @@ def to_json(result: FringeResult) -> dict[str, Any]:
         "method": result.method,
         "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
+        # orders not fitted that the sampled phases fold into a fitted amplitude
+        "folded_orders": [{"order": order, "into": into}
+                          for order, into in result.folded_orders],
     }
     # the signals along the record (#45): per window of periods, in the record's units; the
     # command line's --signal-preset gives them in a preset's units, judged
@@ -880,6 +938,8 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
     def decided_errors(self, result, metadata):
         # half range: the fitted model's continuous as-found error over the whole period
         if metadata.decision_quantity == "half_range":
+            if result.folded_orders:  # the curve between the samples is not determined
+                return None
             from models.fringe.report import model_error_curve
 
             return model_error_curve(result)[1]

@@ -19,6 +19,7 @@ import functools
 import math
 import time
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -239,6 +240,66 @@ def _inverse(gram: np.ndarray) -> np.ndarray:
     return inv
 
 
+#: a variance inflation beyond this is a singular design (the rounding of its inverse)
+SINGULAR_INFLATION = 1e10
+
+
+def _parameter_names(orders: tuple[int, ...]) -> list[str]:
+    return ["A0", *(f"{part} {k}θ" for k in orders for part in ("sin", "cos"))]
+
+
+def _determined_inverse(gram: np.ndarray, orders: tuple[int, ...]) -> np.ndarray:
+    """(XᵀX)⁻¹ of the fit at an estimated phase, or a refusal naming what the phases cannot
+    tell apart: a design that inflates a fitted parameter's variance more than
+    1/SEPARATION_MIN² against evenly spread phases (the rule a θ column's phases are held
+    to, analysis.check_orders_not_aliased) is not solved (a pseudo-inverse printed a
+    minimum-norm answer as the signals' harmonics, or a refusal for a reason not theirs).
+    ``gram``: XᵀX over the samples, columns 1, sin kθ, cos kθ for k in ``orders``."""
+    from models.fringe.order_separation import SEPARATION_MIN, least_separation
+
+    count = float(gram[0, 0])  # the samples: the offset's column is 1
+    scale = np.array([1.0] + [math.sqrt(2.0)] * (gram.shape[0] - 1))
+    scaled = gram * np.outer(scale, scale) / max(count, 1.0)
+    most = 1.0 / SEPARATION_MIN ** 2
+    try:
+        inflation = float(np.max(np.diag(np.linalg.inv(scaled))))
+    except np.linalg.LinAlgError:
+        inflation = math.inf
+    if math.isfinite(inflation) and 0.0 < inflation <= most:
+        return np.linalg.inv(gram)
+    every = (0, *orders)
+    # one order's sine and cosine first (order N/2: its sine is nothing but noise), as the
+    # θ column's check names them; then the least separated pair
+    separations = least_separation(scaled, every)
+    singles = [p for p in separations if p.a == p.b and p.separation < SEPARATION_MIN]
+    worst = singles[0] if singles else separations[0]
+    what: Any
+    if worst.separation < SEPARATION_MIN:
+        what = (message(QT_TR_NOOP("the sine and cosine of order {k}"), k=worst.a)
+                if worst.a == worst.b else
+                message(QT_TR_NOOP("the offset and order {k}"), k=worst.b) if worst.a == 0 else
+                message(QT_TR_NOOP("orders {a} and {b}"), a=worst.a, b=worst.b))
+    else:  # no pair alone: the parameters of the design's weakest direction
+        _, vectors = np.linalg.eigh(0.5 * (scaled + scaled.T))
+        weakest = np.abs(vectors[:, 0])
+        names = _parameter_names(orders)
+        what = ", ".join(names[i] for i in np.flatnonzero(weakest >= 0.3 * weakest.max()))
+    if not math.isfinite(inflation) or not 0.0 < inflation <= SINGULAR_INFLATION:
+        raise ValueError(message(QT_TR_NOOP(
+            "the harmonics asked for are not determined at the phase estimated from the "
+            "signals: at the estimated phases {what} take the same values, so the data cannot "
+            "tell them apart ({params} parameters a channel); lower the highest harmonic, or "
+            "give the phase (a θ column) or the samples per period"),
+            what=what, params=gram.shape[0]))
+    raise ValueError(message(QT_TR_NOOP(
+        "the harmonics asked for are determined only poorly at the phase estimated from the "
+        "signals: at the estimated phases the data can hardly tell {what} apart (the design "
+        "inflates a fitted parameter's variance {inflation}-fold against evenly spread "
+        "phases; at most {most} is accepted); lower the highest harmonic, or give the phase "
+        "(a θ column) or the samples per period"),
+        what=what, inflation=f"{inflation:.3g}", most=f"{most:.0f}"))
+
+
 def refine_phase(theta_rad, u_sin, u_cos, orders: tuple[int, ...] = (1, 3, 5),
                  iterations: int = 3, phasor: tuple[np.ndarray, np.ndarray] | None = None
                  ) -> tuple[np.ndarray, list[ChannelFit], np.ndarray]:
@@ -296,7 +357,7 @@ def refine_phase(theta_rad, u_sin, u_cos, orders: tuple[int, ...] = (1, 3, 5),
             gram += block_gram
             rhs += block_rhs
         gram = np.triu(gram) + np.triu(gram, 1).T  # symmetric to the bit
-        inv = _inverse(gram)
+        inv = _determined_inverse(gram, orders)
         coefs = inv @ rhs
         curve_of = np.vstack([coefs.T, (derivative @ coefs).T])
     checkpoint()

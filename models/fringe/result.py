@@ -42,6 +42,10 @@ class FringeResult:
     # orders the signals hold that the fit leaves out (the particle swarm's fixed orders):
     # the error between the samples is then not determined (unmodelled_harmonics)
     unmodelled_orders: tuple[int, ...] = ()
+    # (order, fitted order) pairs: an order not fitted that the sampled phases fold into a
+    # fitted order's amplitude (0: the offset), 5 into 3 at N = 8 (folded_orders): the
+    # amplitude is the two together, and the error between the samples not determined
+    folded_orders: tuple[tuple[int, int], ...] = ()
     # the budget's inputs the signals cannot show, as set (analysis.BUDGET_INPUTS; 0: not stated)
     inputs: dict[str, float] = field(default_factory=dict)
 

@@ -198,3 +198,33 @@ def test_unreadable_readings_clear_the_view(qtbot, presenter_class, view_class):
     presenter.refresh()
     view.clear_result.assert_called()
     assert view.set_summary.call_args.args[0].startswith("No result")
+
+
+def test_fringe_refusal_is_said_once_and_the_folded_order_is_warned(qtbot):
+    """Day review 67 F5, in the fringe workbench: the refusal's long sentence stood both in
+    the bold line and in the pane below it; following its advice (highest harmonic 3 at
+    N = 8) gave a result with no remark, A3 holding the 5th. Channels from first principles
+    (tests/fringe_channels.py)."""
+    from tests.fringe_channels import Channels, equal_steps
+
+    head = Channels(amplitudes_v=(0.5, 0.49), noise_v=0.0003,
+                    sin_harmonics={3: (0.005, 0.4), 5: (0.004, 1.1)},
+                    cos_harmonics={3: (0.003, -0.3), 5: (0.0025, 0.2)})
+    u_sin, u_cos = head.sample(equal_steps(64 * 8, 8), np.random.default_rng(4))
+    presenter, view = make(FringePresenter, FringeView, qtbot)
+    keys = [c.key for c in presenter.sheet.columns]
+    presenter.table_model.replace_all([[{"u_sin": f"{s:.9f}", "u_cos": f"{c:.9f}"}.get(k, "")
+                                        for k in keys] for s, c in zip(u_sin, u_cos,
+                                                                        strict=True)])
+    presenter.set_settings({**presenter.settings, "samples_per_period": 8, "max_order": 5})
+    presenter.refresh()
+    qtbot.waitUntil(lambda: bool(presenter.problem))
+    summary = view.set_summary.call_args.args[0]
+    assert summary.startswith("No result") and "orders 3 and 5 alias at N = 8" in summary
+    verdict = view.set_verdict.call_args.args[0]
+    assert verdict.startswith("No result") and "alias" not in verdict  # said once, below
+    presenter.set_settings({**presenter.settings, "max_order": 3})
+    presenter.refresh()
+    qtbot.waitUntil(lambda: presenter.result is not None)
+    shown = " ".join(view.set_warnings.call_args.args[0])
+    assert "A3 and B3 hold any harmonic of order 5: orders 5 and 3 alias at N = 8" in shown

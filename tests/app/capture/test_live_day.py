@@ -123,8 +123,11 @@ def test_a_refusal_while_capturing_is_in_the_windows_language(window, qtbot):
         presenter.set_capturing(True)
         presenter.table_model.set_cells([(0, 0, "-20"), (0, 1, "-20"), (0, 2, "1")])
         presenter.refresh()
-        qtbot.waitUntil(lambda: presenter.view.verdict.text().startswith("无结果"), timeout=5000)
-        assert presenter.view.verdict.text() == "无结果：1 个可用读数；至少需要 4 个"
+        # the reason stands in the result pane (the bold line above it says only that there
+        # is no result: day review 67 F5)
+        qtbot.waitUntil(lambda: presenter.view.summary.toPlainText().startswith("无结果"),
+                        timeout=5000)
+        assert presenter.view.summary.toPlainText() == "无结果：1 个可用读数；至少需要 4 个"
     finally:
         presenter.set_capturing(False)
         window.set_language("en")

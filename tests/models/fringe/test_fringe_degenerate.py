@@ -1,8 +1,9 @@
 """Fringe records the data cannot determine (issue 39): shorter than one period, or harmonic
 orders that alias at the samples per period — refused, naming the share or the pair.
 
-The channels are sampled sin/cos of a known true phase (models/validation/fringe_rig.py,
-numpy only), with harmonics, noise and an ADC's quantisation.
+The channels are sampled sin/cos of a known true phase (tests/fringe_channels.py: first
+principles, numpy only, nothing from models/), with harmonics, noise and an ADC's
+quantisation.
 """
 
 from __future__ import annotations
@@ -13,16 +14,16 @@ import pytest
 from app.main import main
 from models.fringe.analysis import FRINGE
 from models.readings.sheet import ParsedReadings
-from models.validation.fringe_rig import FringeHead, equal_steps
+from tests.fringe_channels import Channels, equal_steps
 
-HEAD = FringeHead(offsets_v=(0.01, -0.02), amplitudes_v=(1.0, 0.97), quadrature_deg=0.4,
-                  sin_harmonics={3: (0.012, 0.3), 5: (0.004, 1.0)},
-                  cos_harmonics={3: (0.009, -0.2)}, noise_v=0.001, adc_bits=16)
+HEAD = Channels(offsets_v=(0.01, -0.02), amplitudes_v=(1.0, 0.97), quadrature_deg=0.4,
+                sin_harmonics={3: (0.012, 0.3), 5: (0.004, 1.0)},
+                cos_harmonics={3: (0.009, -0.2)}, noise_v=0.001, adc_bits=16)
 
 
 def _parsed(count: int, per_period: int, with_theta: bool = False) -> ParsedReadings:
     theta = equal_steps(count, per_period)
-    u_sin, u_cos = HEAD.channels(theta, np.random.default_rng(count))
+    u_sin, u_cos = HEAD.sample(theta, np.random.default_rng(count))
     column = np.degrees(theta) if with_theta else np.full(count, np.nan)
     return ParsedReadings({"u_sin": u_sin, "u_cos": u_cos, "theta_deg": column},
                           np.arange(count))
