@@ -4521,6 +4521,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>，{cells} 个错误单元格</translation>
     </message>
     <message>
+        <source>No result (the reason is below)</source>
+        <translation>无结果（原因见下方）</translation>
+    </message>
+    <message>
         <source>next: row {row}</source>
         <translation>下一个：第 {row} 行</translation>
     </message>
@@ -4840,16 +4844,28 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>（每周期采样数 N = {n}）</translation>
     </message>
     <message>
+        <source> below half the samples per period</source>
+        <translation>至每周期采样数的一半以下</translation>
+    </message>
+    <message>
+        <source> to {highest} (below half of N = {n})</source>
+        <translation>降至 {highest}（低于 N = {n} 的一半）</translation>
+    </message>
+    <message>
         <source>harmonic order {k} is not determined{modulo}: its sine and cosine are not independent at the sampled phases (order N/2 or a multiple of N); lower the highest harmonic or sample more finely</source>
         <translation>{k} 次谐波无法确定{modulo}：在所采样的相位上其正弦与余弦分量不独立（N/2 次或 N 的整数倍次）；请降低最高谐波次数或加密采样</translation>
     </message>
     <message>
-        <source>harmonic orders {a} and {b} alias{modulo}: they take the same values at every sampled phase, so the fit cannot tell them apart; lower the highest harmonic below half the samples per period, or sample more finely</source>
-        <translation>{a} 次与 {b} 次谐波混叠{modulo}：二者在每个采样相位上取值相同，拟合无法区分；请将最高谐波次数降至每周期采样数的一半以下，或加密采样</translation>
-    </message>
-    <message>
         <source>0 (the offset)</source>
         <translation>0（直流偏置）</translation>
+    </message>
+    <message>
+        <source>harmonic orders {a} and {b} alias{modulo}: they take the same values at every sampled phase, so the fit cannot tell them apart; lower the highest harmonic{advice}, or sample more finely</source>
+        <translation>{a} 次与 {b} 次谐波混叠{modulo}：二者在每个采样相位上取值相同，拟合无法区分二者；请将最高谐波次数{advice}，或加密采样</translation>
+    </message>
+    <message>
+        <source>harmonic orders {a} and {b} alias{modulo}: at the sampled phases a harmonic of order {b} looks almost exactly like one of order {a}, they differ only through the scatter of the phases (by {separation} % of what phases spread evenly over the period would show; at least {required} % is needed), so the fit cannot tell them apart and would print both amplitudes, and their uncertainties, as determined when they are not; lower the highest harmonic{advice}, or sample more finely</source>
+        <translation>{a} 次与 {b} 次谐波混叠{modulo}：在所采样的相位上，{b} 次谐波看起来几乎与 {a} 次谐波完全相同，二者仅因相位的离散而不同（差别为相位在周期上均匀分布时的 {separation} %；须至少 {required} %），拟合无法区分二者，会把两者的幅值及其不确定度当作已确定的值给出，而实际并未确定；请将最高谐波次数{advice}，或加密采样</translation>
     </message>
     <message>
         <source>{count} distinct phases cannot determine the {params} parameters of each channel (offset and harmonics {orders}); lower the highest harmonic or sample more finely</source>
@@ -4900,16 +4916,24 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>（每周期 N = {n} 个相位；θ 列的相位在 N 个等步的 {spread}° rms 以内）</translation>
     </message>
     <message>
-        <source>harmonic order {k} is not determined{modulo}: at the sampled phases its sine and cosine are only {separation} % apart (at least {required} % is needed, against the phases&apos; noise and for a determined fit; order N/2 or a multiple of N); lower the highest harmonic or sample more finely</source>
-        <translation>{k} 次谐波无法确定{modulo}：在所采样的相位上其正弦与余弦分量仅相差 {separation} %（须至少相差 {required} %，以超出相位噪声并使拟合确定；N/2 次或 N 的整数倍次）；请降低最高谐波次数或加密采样</translation>
-    </message>
-    <message>
-        <source>harmonic orders {a} and {b} alias{modulo}: at the sampled phases they are only {separation} % apart (at least {required} % is needed, against the phases&apos; noise and for a determined fit), so the fit cannot tell them apart and would print both amplitudes, and their uncertainties, as determined when they are not; lower the highest harmonic below half the samples per period, or sample more finely</source>
-        <translation>{a} 次与 {b} 次谐波混叠{modulo}：二者在所采样的相位上仅相差 {separation} %（须至少相差 {required} %，以超出相位噪声并使拟合确定），拟合无法区分二者，会把两者的幅值及其不确定度当作已确定的值给出，而实际并未确定；请将最高谐波次数降至每周期采样数的一半以下，或加密采样</translation>
-    </message>
-    <message>
         <source>the sampled phases determine the {params} parameters of each channel (offset and harmonics {orders}) only poorly: the design inflates a parameter&apos;s variance {inflation}-fold against evenly spread phases (at most {most} is accepted), so the fit&apos;s uncertainties would not be determined; lower the highest harmonic or sample more finely</source>
         <translation>所采样的相位只能很差地确定每路信号的 {params} 个参数（直流偏置及 {orders} 次谐波）：与均匀分布的相位相比，设计矩阵使某个参数的方差放大 {inflation} 倍（最多接受 {most} 倍），拟合的不确定度因而无法确定；请降低最高谐波次数或加密采样</translation>
+    </message>
+    <message>
+        <source>A0 and B0 (the offsets)</source>
+        <translation>A0 和 B0（偏置）</translation>
+    </message>
+    <message>
+        <source>A{k} and B{k}</source>
+        <translation>A{k} 和 B{k}</translation>
+    </message>
+    <message>
+        <source>{amplitudes} hold any harmonic of order {order}: orders {order} and {k} alias{modulo}</source>
+        <translation>{amplitudes} 包含任何 {order} 次谐波：{order} 次与 {k} 次混叠{modulo}</translation>
+    </message>
+    <message>
+        <source>Harmonics the fit leaves out fold into the orders it fits at these phases: {named}. At the sampled phases such a harmonic looks exactly like the fitted one, so each amplitude named is the two together (their sum as phasors), not the fitted order alone, and its U does not hold the other; the interpolation error between the samples, and its half range over the whole period, is not determined (a decision on the half range is withheld). Sample more finely to tell them apart.</source>
+        <translation>拟合所略去的谐波在这些相位上折叠进所拟合的次数：{named}。在采样相位上，这样的谐波看起来与所拟合的谐波完全相同，因此所指明的每个幅值都是二者合在一起（按相量相加），而不只是所拟合次数的幅值，其 U 也不包含另一者；采样之间的细分误差及其在整个周期上的半范围不能确定（对半范围的判定不予给出）。请加密采样以区分二者。</translation>
     </message>
     <message>
         <source>The signals hold harmonics of order {orders} that the particle swarm (orders 1, 3, 5) leaves out ({heard}): the error between the samples is not determined, and the half range over the whole period is withheld; use least squares</source>
@@ -6193,6 +6217,27 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <source>{size} samples; at least {value} are needed for orders {join}</source>
         <extracomment>each sample&apos;s residual (V) when the fit was made from samples (the plots read it)</extracomment>
         <translation>{size} 个采样点；拟合 {join} 次谐波至少需要 {value} 个</translation>
+    </message>
+    <message>
+        <source>the sine and cosine of order {k}</source>
+        <extracomment>a variance inflation beyond this is a singular design (the rounding of its inverse)</extracomment>
+        <translation>{k} 次谐波的正弦与余弦</translation>
+    </message>
+    <message>
+        <source>the offset and order {k}</source>
+        <translation>偏置与 {k} 次谐波</translation>
+    </message>
+    <message>
+        <source>orders {a} and {b}</source>
+        <translation>{a} 次与 {b} 次谐波</translation>
+    </message>
+    <message>
+        <source>the harmonics asked for are not determined at the phase estimated from the signals: at the estimated phases {what} take the same values, so the data cannot tell them apart ({params} parameters a channel); lower the highest harmonic, or give the phase (a θ column) or the samples per period</source>
+        <translation>在由信号估计的相位上，所要求的谐波不能确定：在估计的相位上，{what}取值相同，数据无法区分它们（每个通道 {params} 个参数）；请降低最高谐波次数，或给出相位（θ 列）或每周期采样数</translation>
+    </message>
+    <message>
+        <source>the harmonics asked for are determined only poorly at the phase estimated from the signals: at the estimated phases the data can hardly tell {what} apart (the design inflates a fitted parameter&apos;s variance {inflation}-fold against evenly spread phases; at most {most} is accepted); lower the highest harmonic, or give the phase (a θ column) or the samples per period</source>
+        <translation>在由信号估计的相位上，所要求的谐波只能很差地确定：在估计的相位上，数据几乎无法区分{what}（该设计使某拟合参数的方差相对于均匀分布的相位放大 {inflation} 倍；最多接受 {most} 倍）；请降低最高谐波次数，或给出相位（θ 列）或每周期采样数</translation>
     </message>
     <message>
         <source>the correction table needs at least 8 entries</source>
@@ -8280,6 +8325,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>整个记录为同一图样，在所述数值以内</translation>
     </message>
     <message>
+        <source>{name}, with order {orders} folded in (they alias at these phases)</source>
+        <translation>{name}，含折入的 {orders} 次谐波（二者在这些相位上混叠）</translation>
+    </message>
+    <message>
         <source>{channel}: R² of the fit</source>
         <translation>{channel}：拟合 R²</translation>
     </message>
@@ -8306,6 +8355,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>the signals hold harmonics of order {orders} that the fitted model leaves out: the error between the samples is not determined</source>
         <translation>信号含有拟合模型未计入的 {orders} 次谐波：采样点之间的误差无法确定</translation>
+    </message>
+    <message>
+        <source>harmonics the fit leaves out fold into the fitted orders at the sampled phases ({folds}): the error between the samples is not determined</source>
+        <translation>拟合所略去的谐波在采样相位上折叠进所拟合的次数（{folds}）：采样之间的误差不能确定</translation>
+    </message>
+    <message>
+        <source>order {order} into order {into}</source>
+        <translation>{order} 次折入 {into} 次</translation>
     </message>
     <message>
         <source>as-found interpolation error of the fitted model over the whole period, its mean removed (the model&apos;s figure, not the sampled readings&apos; peak-to-peak)</source>
@@ -8503,6 +8560,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>row {row}: the sample (u_sin {u_sin} V, u_cos {u_cos} V) lies {value} % off the Lissajous ring the other samples draw: not a sample of this signal; check that row</source>
         <translation>第 {row} 行：该采样点（u_sin {u_sin} V，u_cos {u_cos} V）偏离其余采样点构成的李萨如圆环 {value} %：不是该信号的采样；请检查该行</translation>
+    </message>
+    <message>
+        <source>harmonic order {k} is not determined{modulo}: at the sampled phases its sine and cosine differ only through the scatter of the phases (by {separation} % of what phases spread evenly over the period would show; at least {required} % is needed; order N/2 or a multiple of N); lower the highest harmonic or sample more finely</source>
+        <translation>{k} 次谐波不能确定{modulo}：在所采样的相位上，其正弦与余弦仅因相位的离散而不同（差别为相位在周期上均匀分布时的 {separation} %；须至少 {required} %；N/2 次或 N 的倍数次）；请降低最高谐波次数或加密采样</translation>
     </message>
     <message>
         <source>the particle swarm (the method of Gao et al. 2013) fits orders 1, 3, 5 only</source>
