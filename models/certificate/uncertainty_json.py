@@ -212,8 +212,10 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
         except ValueError:  # a tolerance in a unit of another kind: no figure to state
             tolerance = None
         if tolerance is not None:
+            measured = _measured_figure(kind, result, metadata)
             out["decided_quantity"] = {
-                "value": _measured_figure(kind, result, metadata),
+                # no interval: the value is the figure as measured (the key as elsewhere)
+                "value": measured, "measured": measured,
                 "interval_low": None, "interval_high": None,
                 "coverage_probability": None, "unit": unit,
                 "tolerance": _number(tolerance), "verdict": None,

@@ -155,8 +155,9 @@ PARAMETERS = (
               help="Standard deviation of one reading (autocollimator and encoder together), "
                    "from the lab's own records, used only when the readings cannot evaluate it "
                    "(a single set: its vertical readings give the autocollimator's noise but "
-                   "not the encoder's); 0: not stated, and then the uncertainty says the "
-                   "encoder's noise is not in it, or none is given without a tilt fit"),
+                   "not the encoder's, and their scatter about the tilt fit holds the faces' "
+                   "own pyramidal errors); 0: not stated, and then a single set gets no "
+                   "uncertainty, nor a decided value's interval"),
     cmc_parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "\"", "the encoder error"),
     REPEATS_PARAMETER,
     Parameter("plan_sets", "entry plan: sets", "int", 0, minimum=1, maximum=100, zero="no plan",

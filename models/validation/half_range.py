@@ -209,7 +209,8 @@ def polygon_coverage(runs: int, seed: int = 12, trials: int = 2000) -> Workbench
     """A 24-face polygon on a tilted shaft (ψ = 60", ω = 70°) by the 3-D rig, an encoder
     error of half range 0.5" (smooth, rough, spike in turn), autocollimator noise 0.08",
     the polygon's certificate wrong by 0.1" (standard deviation) at each face and stated at
-    U = 0.2" (k = 2), one set."""
+    U = 0.2" (k = 2), one set, its σ of a reading stated (0.08": one set cannot evaluate
+    it)."""
     from models.certificate.metadata import CertificateMetadata, ReferenceStandard
     from models.polygon.analysis import POLYGON
     from models.polygon.report import polygon_budget
@@ -230,7 +231,7 @@ def polygon_coverage(runs: int, seed: int = 12, trials: int = 2000) -> Workbench
                          certificate_error_arcsec=certificate_dev - true_dev, noise_arcsec=0.08,
                          rng=rng)
         result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows(1)).parse(),
-                                 {"grade": 5, "ac_roll_arcmin": 0.0})
+                                 {"grade": 5, "ac_roll_arcmin": 0.0, "reading_noise_arcsec": 0.08})
         mc = half_range_monte_carlo(result.mean_corrected_arcsec, polygon_budget(result, meta),
                                     trials=trials)
         outcomes.append((0.5 * float(np.ptp(rig.truth_arcsec())), mc))
@@ -400,7 +401,7 @@ def _theodolite_run(shape: str, points: int, noise: float, run: int, rng, sample
 def _polygon_run(shape: str, points: int, noise: float, run: int, rng, samples):
     """A polygon of ``points`` faces on a tilted shaft (ψ = 60″, ω = 70°) by the 3-D rig, an
     encoder error of half range 0.5″, autocollimator noise ``noise`` × 0.5″, no roll, one
-    set; the reading noise from the tilt fit's residuals."""
+    set; the σ of a reading stated (the rig's: one set cannot evaluate it)."""
     from models.certificate.metadata import CertificateMetadata
     from models.polygon.analysis import POLYGON
     from models.polygon.report import polygon_budget
@@ -411,7 +412,7 @@ def _polygon_run(shape: str, points: int, noise: float, run: int, rng, samples):
     rig = PolygonRig(points, error, psi_arcsec=60.0, omega_deg=70.0, noise_arcsec=0.5 * noise,
                      rng=rng)
     result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows(1)).parse(),
-                             {"grade": 5, "ac_roll_arcmin": 0.0})
+                             {"grade": 5, "ac_roll_arcmin": 0.0, "reading_noise_arcsec": 0.5 * noise})
     budget = polygon_budget(result, CertificateMetadata())
     curve = result.mean_corrected_arcsec
     return (0.5 * float(np.ptp(rig.truth_arcsec())), curve, budget,

@@ -14,6 +14,7 @@ import pytest
 
 from models.certificate.document import budget_table, decision_rows
 from models.certificate.metadata import CertificateMetadata, ReferenceStandard
+from models.certificate.withheld import UncertaintyWithheld
 from models.readings.sheet import ReadingsSheet
 from models.theodolite.model import analyze_run
 from models.theodolite.report import theodolite_budget, theodolite_certificate
@@ -401,11 +402,11 @@ def test_polygon_says_what_covers_an_unevaluated_repeatability():
     result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows()).parse(),
                              {"grade": 4, "ac_roll_arcmin": 0.0})
     assert result.repeatability_arcsec is None  # one set
-    document = POLYGON.certificate_document(result, replace(META, tolerance=None))
-    rows = [r for r in document.statistics.rows if r[0] == "Repeatability"]
-    # one set: the tilt fit gives the autocollimator's noise, never the encoder's (audit s67)
-    assert rows and "the encoder's own reading noise is not stated, so not in U" in rows[0][2]
-    assert any(c.name.startswith("Autocollimator reading noise") for c in document.budget.components)
+    # one set: the tilt fit gives the autocollimator's noise with the faces' own pyramidal
+    # errors, never the encoder's (audit s67): no U unless the σ of a reading is stated
+    # (issue 39, tests/models/polygon/test_polygon_one_set_withheld.py)
+    with pytest.raises(UncertaintyWithheld, match="reading_noise_arcsec"):
+        POLYGON.certificate_document(result, replace(META, tolerance=None))
     stated = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows()).parse(),
                              {"grade": 4, "ac_roll_arcmin": 0.0, "reading_noise_arcsec": 0.12})
     document = POLYGON.certificate_document(stated, replace(META, tolerance=None))

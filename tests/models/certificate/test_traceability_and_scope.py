@@ -121,7 +121,7 @@ def test_the_cmc_leaves_a_zero_by_definition_at_zero():
     rig = PolygonRig(faces, 0.3 * np.cos(th), psi_arcsec=200.0, omega_deg=30.0,
                      noise_arcsec=0.03, rng=np.random.default_rng(5))
     kind = KINDS["polygon"]
-    settings = {"grade": 3, "cmc_arcsec": 0.5}
+    settings = {"grade": 3, "cmc_arcsec": 0.5, "reading_noise_arcsec": 0.03}  # one set: stated
     result = kind.analyze(ReadingsSheet(kind.columns, rig.set_rows()).parse(), settings)
     big_u = kind.certificate_document(result, META, settings=settings).budget.expanded
     assert big_u[0] == 0.0

@@ -7,9 +7,8 @@ readings' tilt fits alone: with the encoder as noisy as the autocollimator or mo
 under-covered (the audit: 12 faces, 90 % of the decided quantity against 95.45 %; our rig,
 σ_enc = 2σ_ac: per-point U 83 %, decided half range 176 of 200). Now the forward/reverse
 pair gives the noise of an error (their difference about the mean reversal, n − 1 degrees
-of freedom); one set evaluates only the autocollimator's, so the σ of a reading stated in
-the settings enters, or the certificate names the encoder's noise as not stated (no
-statement of conformity).
+of freedom); one set evaluates no noise of an error, so the σ of a reading stated in the
+settings enters, or no U is given (issue 39).
 
 Simulated from first principles (tests/polygon_sets_simulator.py: numpy only, 3-D
 rotations, a true encoder error curve, the encoder's own reading noise, the
@@ -24,6 +23,7 @@ import numpy as np
 import pytest
 
 from models.certificate.metadata import CertificateMetadata
+from models.certificate.withheld import UncertaintyWithheld
 from models.polygon.analysis import POLYGON
 from models.polygon.report import polygon_budget
 from models.readings.sheet import ReadingsSheet
@@ -88,19 +88,18 @@ def test_the_pair_estimates_the_noise_of_an_error_with_its_degrees_of_freedom():
     assert dofs == {23}
 
 
-def test_one_set_names_the_encoder_noise_as_not_stated_unless_the_sigma_is_given():
-    """One set: its vertical readings give the autocollimator's noise, never the encoder's.
-    Without the σ of a reading in the settings the certificate names the encoder's noise as
-    not stated (so no statement of conformity); with it, the σ stated enters U and U
-    covers."""
+def test_one_set_withholds_u_unless_the_sigma_is_given():
+    """One set: its vertical readings give the autocollimator's noise at best, never the
+    encoder's. Without the σ of a reading in the settings no U is given (issue 39: U and
+    the decided interval were printed with the encoder's noise only named as not in U,
+    tests/models/polygon/test_polygon_one_set_withheld.py); with it, the σ stated enters U
+    and U covers."""
     bench = _bench()
     meta = CertificateMetadata.from_dict({})
-    _, _, results = _runs(bench, (1,), 1, 13)
-    missing = POLYGON.inputs_not_stated(results[0], meta)
-    assert any("encoder's own reading noise" in str(name) for name in missing), missing
-    conformity = POLYGON.certificate_document(results[0], meta).conformity
-    assert conformity.verdict == "not assessed", conformity.statement
-    assert "encoder's own reading noise" in conformity.statement, conformity.statement
+    rows = [line.rstrip("\n").split(",") for line in bench.run_rows((1,), np.random.default_rng(13))]
+    result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), {"ac_roll_arcmin": 0.0})
+    with pytest.raises(UncertaintyWithheld, match="reading_noise_arcsec"):
+        POLYGON.certificate_document(result, meta)
     stated = {"reading_noise_arcsec": math.hypot(SIGMA_ENC, SIGMA_AC)}
     deviations, expanded, results = _runs(bench, (1,), 120, 14, stated)
     assert not POLYGON.inputs_not_stated(results[0], meta)

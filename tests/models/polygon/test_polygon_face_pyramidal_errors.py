@@ -55,7 +55,9 @@ def test_one_set_whose_noise_the_faces_pyramidal_errors_inflate_gets_no_interval
     """One set: the faces' own pyramidal errors cannot be told from the noise, and the noise
     taken (3″ a reading) is far above what the readings show (their half range 1.5″, where
     that noise alone gives a flat curve more). The interval was 0 … 0.1″ with "pass" (truth
-    1.46″); the readings contradict the budget, so no interval and no statement."""
+    1.46″); then "the readings contradict the budget"; now no U at all unless the σ of a
+    reading is stated (tests/models/polygon/test_polygon_one_set_withheld.py), so no
+    interval and no statement."""
     bench = Bench(faces=36, sigma_arcsec=0.03, encoder_sigma_arcsec=0.01,
                   drift_sigma_arcsec=0.0, u_polygon_arcsec=0.05, psi_arcsec=200.0,
                   face_pyramidal_sd_arcsec=2.0)
@@ -67,6 +69,6 @@ def test_one_set_whose_noise_the_faces_pyramidal_errors_inflate_gets_no_interval
                  "--grade", "5", "--language", "en"]) == 0
     decided = json.loads(capsys.readouterr().out)["decided_quantity"]
     assert decided["interval_low"] is None and decided["interval_high"] is None
-    assert decided["verdict"] is None and "contradict the budget" in decided["reason"]
+    assert decided["verdict"] is None and "reading_noise_arcsec" in decided["reason"]
     assert decided["coverage_probability"] is None  # no interval, no probability of one
     assert decided["value"] == pytest.approx(decided["measured"])  # as measured, not 0

@@ -145,7 +145,8 @@ def test_unmeasured_roll_is_covered_by_its_budget_input():
     """A levelled bench whose autocollimator is rolled by 0.8′, not measured: the error
     left is ρ·(y − y_z), within the roll input's half-width of a 1′ bound."""
     rig = PolygonRig(24, encoder_error(24), psi_arcsec=600.0, omega_deg=40.0, ac_roll_arcsec=48.0)
-    result = analyze(rig.set_rows(), ac_roll_arcmin=1.0)
+    # one set: its reading noise stated (none simulated; the readings cannot evaluate it)
+    result = analyze(rig.set_rows(), ac_roll_arcmin=1.0, reading_noise_arcsec=0.01)
     left = np.abs(result.sets[0].corrected_error_arcsec - rig.truth_arcsec())
     assert np.max(left) > 0.2  # the roll's cross-talk is there, uncorrected …
     roll = [c for c in polygon_budget(result, CertificateMetadata()).components if "roll" in c.name]
@@ -153,7 +154,7 @@ def test_unmeasured_roll_is_covered_by_its_budget_input():
     assert np.all(left <= roll[0].value + 1e-3)  # … and within the bound's input
     assert np.all(left >= 0.8 * roll[0].value - 1e-3)
     measured = analyze(rig.set_rows(), ac_roll_measured_arcmin=rig.tilt_test_roll_arcmin(),
-                       u_ac_roll_arcmin=0.05)
+                       u_ac_roll_arcmin=0.05, reading_noise_arcsec=0.01)
     assert np.max(np.abs(measured.sets[0].corrected_error_arcsec - rig.truth_arcsec())) < 1e-3
     roll = [c for c in polygon_budget(measured, CertificateMetadata()).components if "roll" in c.name]
     assert len(roll) == 1 and roll[0].distribution == "normal"
@@ -170,7 +171,8 @@ def test_correction_uncertainty_matches_its_scatter(frame, least):
     for k in range(120):
         rig = PolygonRig(12, encoder_error(12), psi_arcsec=900.0, omega_deg=50.0, frame=frame,
                          noise_arcsec=0.3, rng=np.random.default_rng(k))
-        result = analyze(rig.set_rows(), ac_roll_arcmin=0.0, ac_alignment=frame)
+        result = analyze(rig.set_rows(), ac_roll_arcmin=0.0, ac_alignment=frame,
+                         reading_noise_arcsec=0.3)  # one set: its noise stated
         corrections.append(result.sets[0].pyramidal_error_arcsec)
         if k < 5:
             comp = next(c for c in polygon_budget(result, CertificateMetadata()).components
@@ -213,7 +215,7 @@ def test_certificate_and_summary_state_the_set_up():
     rig = PolygonRig(12, encoder_error(12), psi_arcsec=300.0, omega_deg=10.0)
     for setting, words in (("levelled", "autocollimator and rotary axis levelled"),
                            ("polygon", "vertical along the polygon's axis, rolled")):
-        result = analyze(rig.set_rows(), ac_alignment=setting)
+        result = analyze(rig.set_rows(), ac_alignment=setting, reading_noise_arcsec=0.01)
         assert words in POLYGON.summary(result)
         doc = polygon_certificate(result, CertificateMetadata())
         assert any(words in str(s) for s in doc.statements)

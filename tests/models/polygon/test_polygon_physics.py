@@ -284,7 +284,7 @@ def test_polygon_stated_from_face_1_has_sensitivity_one():
 
     rig = PolygonRig(12, encoder_error(12), psi_arcsec=300.0, omega_deg=10.0)
     for zero, expected in ((1, [0.0] + [1.0] * 11), (4, None)):
-        result = analyze(rig.set_rows(), zero_face=zero)
+        result = analyze(rig.set_rows(), zero_face=zero, reading_noise_arcsec=0.01)  # one set
 
         def contribution(applies_to, result=result):
             meta = CertificateMetadata.from_dict({"standards": [
@@ -313,7 +313,7 @@ def test_reticle_roll_enters_as_the_issue_figures_it():
     from models.polygon.report import polygon_budget
 
     rig = PolygonRig(24, encoder_error(24), psi_arcsec=480.0, omega_deg=0.0)
-    result = analyze(rig.set_rows(), ac_roll_arcmin=1.0)
+    result = analyze(rig.set_rows(), ac_roll_arcmin=1.0, reading_noise_arcsec=0.01)  # one set
     roll = next(c for c in polygon_budget(result, CertificateMetadata()).components
                 if "roll" in c.name)
     assert np.max(roll.value) == pytest.approx(960.0 / 3437.75, rel=1e-3)  # 0.28″ limit
