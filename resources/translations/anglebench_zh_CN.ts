@@ -539,7 +539,7 @@
     <message>
         <source>no uncertainty can be given: with one set the readings cannot tell the reading noise from the faces&apos; own pyramidal errors (the vertical readings&apos; scatter about the tilt fit holds both, and the encoder&apos;s own noise is in neither). State the σ of a reading, encoder and autocollimator together, in the settings (reading_noise_arcsec; on the command line --reading-noise-arcsec), or measure each direction, or one direction twice</source>
         <extracomment>one set and no σ of a reading stated: nothing in the readings gives the noise of an error (issue 39). The vertical readings&apos; scatter about the set&apos;s tilt fit holds the faces&apos; own pyramidal errors (a polygon&apos;s faces are not at one tilt) besides the autocollimator&apos;s noise, and the encoder&apos;s own noise is in neither: taken for the noise, it made U 17-18 times what the errors&apos; scatter needs, and the decided half range&apos;s interval, its noise bias removed with that noise, held the truth in 27 of 56 runs at 12 faces and 0 of 8 at 24 (printed 0.00&quot; … 0.70&quot; for a true 1.08&quot;; tests/benchmarks/one_set_polygon_study.py)</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>无法给出不确定度：只有一个测回时，读数无法把读数噪声与各面自身的塔差区分开（垂直读数对倾斜拟合的离散二者都包含，而编码器自身的噪声二者都不包含）。请在分析设置中给出单次读数的 σ（编码器与自准直仪合计；reading_noise_arcsec，命令行为 --reading-noise-arcsec），或正反两个方向各测一次，或将某一方向测量两次</translation>
     </message>
     <message>
         <source>scatter of the vertical readings about the tilt fits between the sets, face by face (each face&apos;s own pyramidal error, the same in every set, cancels), {dof} degrees of freedom (no direction was measured twice)</source>
@@ -7635,7 +7635,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Standard deviation of one reading (autocollimator and encoder together), from the lab&apos;s own records, used only when the readings cannot evaluate it (a single set: its vertical readings give the autocollimator&apos;s noise but not the encoder&apos;s, and their scatter about the tilt fit holds the faces&apos; own pyramidal errors); 0: not stated, and then a single set gets no uncertainty, nor a decided value&apos;s interval</source>
-        <translation type="unfinished"></translation>
+        <translation>单次读数的标准偏差（自准直仪与编码器合计），取自实验室自己的记录，仅在读数本身无法评定时使用（只有一个测回：其垂直读数给出自准直仪的噪声，但给不出编码器的，且其对倾斜拟合的离散包含各面自身的塔差）；0：未给出，此时只有一个测回则不给出不确定度，也不给出判定值的区间</translation>
     </message>
     <message>
         <source>Standard uncertainty of the measured roll; 0: the roll was not measured (the bound above enters the budget, nothing is corrected)</source>
