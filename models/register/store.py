@@ -2237,7 +2237,7 @@ def _lookalike_serial(meta: CertificateMetadata, lookalikes) -> LookalikeSerial:
                            "--another-lookalike-item (the register records that you said so)"),
                 facts=facts),
         tuple(n for n, _k, _m in lookalikes), facts,
-        message(QT_TR_NOOP("Is {serial} another item than {kept}?"), serial=meta.item_serial,
+        message(QT_TR_NOOP("Is {serial} a different item from {kept}?"), serial=meta.item_serial,
                 kept=_either(list(serials))),
         message(QT_TR_NOOP("If it is the same item, correct the serial number in the "
                            "certificate details, then issue the certificate again.")))
@@ -2281,7 +2281,7 @@ def _serial_left_out(meta: CertificateMetadata, rows) -> SerialLeftOut:
                                "serial number, with --another-lookalike-item (the register "
                                "records that you said so)"), facts=facts),
             numbers, facts,
-            message(QT_TR_NOOP("Is this another item, one with no serial number?")),
+            message(QT_TR_NOOP("Is this a different item, one with no serial number?")),
             message(QT_TR_NOOP("If it is the same item, type its serial number in the "
                                "certificate details; a certificate is corrected by its "
                                "amendment or replacement (File › Certificate register).")))
@@ -2298,7 +2298,7 @@ def _serial_left_out(meta: CertificateMetadata, rows) -> SerialLeftOut:
                            "--another-lookalike-item (the register records that you said so)"),
                 facts=facts),
         numbers, facts,
-        message(QT_TR_NOOP("Is {serial} another item than the one of {numbers}?"),
+        message(QT_TR_NOOP("Is {serial} a different item from the one of {numbers}?"),
                 serial=meta.item_serial, numbers=listed(list(numbers))),
         message(QT_TR_NOOP("If it is the same item, its serial number is added by amending "
                            "or replacing {numbers} (File › Certificate register)."),

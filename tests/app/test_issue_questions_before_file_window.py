@@ -107,7 +107,7 @@ def test_a_lookalike_serial_is_asked_before_the_file_dialog(polygon_window, samp
                                   "letter L print alike, case aside."), asked[0][2]
     # the window's question, not the command line's; No says what to do, not the reasons
     # and the advice for a Yes again (day review 67 F6)
-    assert "Is 1ra-0815 another item than LRA-0815? Yes: issue it" in asked[0][2]
+    assert "Is 1ra-0815 a different item from LRA-0815? Yes: issue it" in asked[0][2]
     assert "--another-lookalike-item" not in asked[0][2], asked[0][2]
     [told] = [c for c in calls if c[0] == "tell"]
     assert told[1:] == ("Not issued", "No certificate was written or recorded. If it is the "

@@ -115,4 +115,4 @@ def test_a_serial_of_two_certificates_is_named_once_with_both(register):
     # the window's parts: no command-line option, a question, advice for a No
     question = raised.value
     assert "--another" not in question.facts + question.question + question.advice
-    assert str(question.question) == "Is RX-26-o815 another item than RX-26-0815?"
+    assert str(question.question) == "Is RX-26-o815 a different item from RX-26-0815?"
