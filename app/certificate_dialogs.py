@@ -21,11 +21,18 @@ from PySide6.QtWidgets import (
 
 from models.certificate.metadata import CertificateMetadata
 from widgets.certificate_dialog import CertificateDialog
-from widgets.i18n import tr
+from widgets.i18n import tr, translated
 from widgets.save_file import ask_save_file
 from widgets.screen_fit import fit_to_screen
 
-__all__ = ["CertificateDialogs"]
+__all__ = ["CertificateDialogs", "as_sentence"]
+
+
+def as_sentence(text: str) -> str:
+    """``text`` beginning with a capital, as a sentence does (the register's reasons begin
+    in lower case, to follow "anglebench analyze: " on the command line); a text in a
+    script without case as it is."""
+    return text[:1].upper() + text[1:]
 
 
 class CertificateDialogs:
@@ -119,14 +126,17 @@ class CertificateDialogs:
             "correct {numbers}, amend or replace it from File › Certificate register).")
             .format(reason=reason, numbers=", ".join(numbers)))
 
-    def confirm_lookalike_serial(self, numbers, reason: str) -> bool:
-        """The serial is new to the register but looks like the serial of ``numbers``: is
-        this another item? (rev65 F7; the answer Yes is recorded in the register)"""
+    def confirm_lookalike_serial(self, question) -> bool:
+        """The serial is new to the register but looks like the serial of
+        ``question.numbers`` (a :class:`models.register.store.LookalikeSerial`), or the item
+        has none beside that day's item with one: is this another item? (rev65 F7; the
+        answer Yes is recorded in the register). Asked from the register's facts, the
+        differing characters marked, without the command line's option (day review 67 F6)."""
         return self._yes(tr("Another item?"), tr(
-            "{reason}.\n\nIs this item another than that of {numbers}? Yes: issue it; the "
-            "register records that you said so. No: nothing is issued (correct the serial "
-            "number in the certificate details).")
-            .format(reason=reason, numbers=", ".join(numbers)))
+            "{facts}.\n\n{question} Yes: issue it; the register records that you said so. "
+            "No: nothing is issued. {advice}").format(
+                facts=as_sentence(translated(question.facts)),
+                question=translated(question.question), advice=translated(question.advice)))
 
     def _yes(self, title: str, text: str) -> bool:
         """Whether the user answers Yes to ``text`` (No the default: nothing is done)."""

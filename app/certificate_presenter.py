@@ -15,7 +15,7 @@ import json
 from collections.abc import Callable, MutableMapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 from app.issued_outputs import refuse_issued_outputs
 from app.writers.results_export import write_results_csv, write_results_xlsx
@@ -32,6 +32,9 @@ from models.register.wording import revision_words
 from models.workbench import IssuesCertificates
 from widgets.i18n import explained, tr, translated
 
+if TYPE_CHECKING:
+    from models.register.store import LookalikeSerial
+
 __all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
 
 LAB_DEFAULTS_KEY = "certificate/lab_defaults"
@@ -42,6 +45,14 @@ SKIPPED_STANDARD_KEYS = ("standards[", "lab_defaults.standards[")
 TEST_PLANS = "test_plans"
 #: the lab's signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY)
 SIGNAL_PRESETS = "signal_tolerance_presets"
+
+
+def _not_issued_after_no(question: LookalikeSerial) -> str:
+    """What the window says after a No to a look-alike serial's question: nothing issued,
+    and what to do instead — not the question's reasons again, nor its advice for a Yes
+    (day review 67 F6)."""
+    return tr("No certificate was written or recorded. {advice}").format(
+        advice=translated(question.advice))
 
 
 def plan_settings_of(settings: dict) -> dict:
@@ -93,11 +104,11 @@ class CertificateView(Protocol):
         manufacturer's name (``reason``): is this another maker's item? (recorded when
         issued; No: not issued)"""
 
-    def confirm_lookalike_serial(self, numbers: tuple[str, ...], reason: str) -> bool:
+    def confirm_lookalike_serial(self, question: LookalikeSerial) -> bool:
         """The serial is in no certificate of the register but looks like that of
-        ``numbers``, or the item has none beside that day's item of its description with one
-        (``reason``, the register's words): is this another item? (recorded when issued; No:
-        not issued)"""
+        ``question.numbers``, or the item has none beside that day's item of its
+        description with one (``question``: the register's facts, question and advice): is
+        this another item? (recorded when issued; No: not issued)"""
 
     def confirm_correction(self, revision: PendingRevision, reason: str) -> bool:
         """An amendment or replacement with another serial number or date of calibration
@@ -661,6 +672,7 @@ class CertificatePresenter:
 
         corrected = False
         another_maker, another_item = confirmed
+        declined: LookalikeSerial | None = None  # the question answered No
         try:
             while True:
                 try:
@@ -696,9 +708,9 @@ class CertificatePresenter:
                     # a serial one look-alike from an item's (rev65 F7): asked, a Yes recorded
                     if another_item:
                         raise
-                    another_item = self._asked(self.view.confirm_lookalike_serial,
-                                               exc.numbers, explained(exc))
+                    another_item = self._asked(self.view.confirm_lookalike_serial, exc)
                     if not another_item:
+                        declined = exc
                         raise
                 except NotTheSameCalibration as exc:
                     # another item's or another day's details: a correction only when the
@@ -719,9 +731,9 @@ class CertificatePresenter:
             ended = revision is not None and self._revision_impossible(revision)
             if ended:  # refused for good: no later export is held to it (rev62 F1)
                 self.pending = None
-            self.view.tell(tr("Not issued"), tr("{reason}. No certificate was written or "
-                                                "recorded.").format(
-                    reason=explained(exc)) + ("\n\n" + tr(
+            said = _not_issued_after_no(exc) if exc is declined else tr(
+                "{reason}. No certificate was written or recorded.").format(reason=explained(exc))
+            self.view.tell(tr("Not issued"), said + ("\n\n" + tr(
                         "The amendment or replacement of {number} is ended: the next "
                         "certificate of this workbench is an original.").format(
                         number=revision.number) if ended else ""))
@@ -769,8 +781,10 @@ class CertificatePresenter:
                 another_maker = said = self.view.confirm_another_maker(question.numbers,
                                                                        explained(question))
             else:
-                another_item = said = self.view.confirm_lookalike_serial(question.numbers,
-                                                                         explained(question))
+                another_item = said = self.view.confirm_lookalike_serial(question)
+                if not said:
+                    self.view.tell(tr("Not issued"), _not_issued_after_no(question))
+                    return None
             if not said:
                 self.view.tell(tr("Not issued"), tr(
                     "{reason}. No certificate was written or recorded.").format(

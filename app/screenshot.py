@@ -1,8 +1,11 @@
-"""``anglebench --screenshot DIR``: each workbench with its sample, rendered offscreen."""
+"""``anglebench --screenshot DIR``: each workbench with its sample, rendered offscreen, the
+certificate dialog, and the Live signals window as first opened, with the demonstration
+head's figures."""
 
 from __future__ import annotations
 
 import tempfile
+import time
 from pathlib import Path
 
 from PySide6.QtCore import QSettings
@@ -51,6 +54,37 @@ def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900),
         dialog.grab().save(str(path))
         paths.append(path)
         dialog.close()
+        paths += _live_signals(window, out_dir)
         window.projects.recovery.discard()
         window.close()
     return paths
+
+
+def _live_signals(window, out_dir: Path) -> list[Path]:
+    """The Live signals window opened from Instrument › Live signals… at the size it takes on
+    this screen the first time, the demonstration head streaming until its figures are
+    shown (at most 15 s), never resized: what a technician sees first (day review 67 F8:
+    its x axis titles were cut on the first open only)."""
+    from app.capture.signal_live import open_live_signals
+    from models.workbench import JudgesSignals
+
+    app = QApplication.instance()
+    if app is None or not open_live_signals(window):
+        return []
+    panel = next(p.view.live_signals for p in window.presenters
+                 if isinstance(p.kind, JudgesSignals))
+    try:
+        panel.start_demonstration()
+        deadline = time.monotonic() + 15
+        while panel.samples < 2000 and time.monotonic() < deadline:
+            app.processEvents()
+            time.sleep(0.02)
+        for _ in range(10):  # the status line and the plots laid out after the figures
+            app.processEvents()
+            time.sleep(0.02)
+        path = out_dir / "live_signals.png"
+        panel.grab().save(str(path))
+    finally:
+        panel.disconnect_stream()
+        panel.close()
+    return [path]

@@ -77,8 +77,9 @@ from models.register._identifier_tables import CONFUSABLES, DEFAULT_IGNORABLE
 
 __all__ = ["IdentifierError", "amendment_form_keys", "amendment_stems", "as_printed",
            "folded_identifier_key", "folded_serial_key", "identifier_key", "identifier_keys",
-           "lookalike_serial_key", "no_serial", "normalise_identifier", "reads_as_amendment",
-           "reads_as_amendment_of", "refuse_unprinted", "same_identifier", "same_name",
+           "lookalike_character_class", "lookalike_serial_key", "no_serial",
+           "normalise_identifier", "reads_as_amendment", "reads_as_amendment_of",
+           "refuse_unprinted", "same_identifier", "same_name",
            "same_serial", "serial_key", "serial_keys", "serial_lookalike"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
@@ -392,15 +393,35 @@ def _one_look_alike_apart(one: str, other: str) -> bool:
         _skeleton(c) for c in (other, other.upper(), other.lower()))
 
 
+#: capital letters that engraved, etched and stamped serials (and a technician's note of
+#: one) print like a digit though UTS #39 does not list them (day review 67 F6: "RX-26-0B15"
+#: beside RX-26-0815 was not asked): B and 8, S and 5, Z and 2, G and 6 — the pairs that
+#: human-read codes leave out for that reason. Only ever asked about (:func:`serial_lookalike`),
+#: never a key. U and V are not: two letters, not a letter and a digit, drawn apart (a round
+#: and a pointed base) in every face serials are marked and printed in, and no key reads a
+#: letter as another letter but small "rn" as "m".
+_LETTERS_LIKE_DIGITS = {"B": "8", "S": "5", "Z": "2", "G": "6"}
+
+
 @functools.lru_cache(maxsize=1 << 12)
 def _lookalike_class(char: str) -> str:
     """What ``char`` (a character of :func:`_prototypes`' text, decomposed) is, case and
     look-alikes aside at once: the digit that one of its cases prints like ("l", "L", "I",
-    "i", "|" are 1; "O", "o" are 0: the skeleton's own tables, :data:`_DIGIT_LIKE`), else
+    "i", "|" are 1; "O", "o" are 0: the skeleton's own tables, :data:`_DIGIT_LIKE`; "B",
+    "b" are 8, "S", "s" 5, "Z", "z" 2, "G", "g" 6: :data:`_LETTERS_LIKE_DIGITS`), else
     the character case folded. Only ever compared, to ask (:func:`serial_lookalike`)."""
     skeletons = {_skeleton(case) for case in {char, char.upper(), char.lower()}}
-    digits = sorted(s for s in skeletons if len(s) == 1 and s in "0123456789")
+    digits = sorted({s for s in skeletons if len(s) == 1 and s in "0123456789"}
+                    | {_LETTERS_LIKE_DIGITS[s] for s in skeletons if s in _LETTERS_LIKE_DIGITS})
     return digits[0] if digits else min(_fold(s) for s in skeletons)
+
+
+def lookalike_character_class(char: str) -> str:
+    """What one character of a serial as typed prints like, case and look-alikes aside
+    (:func:`_lookalike_class` of its prototype): "o", "O" and "0" are "0"; only ever
+    compared, to show where two serials differ (models.register.serial_differences)."""
+    prototypes = unicodedata.normalize("NFD", _prototypes(char))
+    return "".join(_lookalike_class(c) for c in prototypes)
 
 
 @functools.lru_cache(maxsize=1 << 16)

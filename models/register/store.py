@@ -38,7 +38,7 @@ from typing import TYPE_CHECKING, Any, BinaryIO
 
 from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
-from models.messages import QT_TR_NOOP, Message, message, reason_of, separated
+from models.messages import QT_TR_NOOP, Message, listed, message, reason_of, separated
 from models.project.output_guard import TURN_FILE_SUFFIX
 from models.register.chain import CHAINED, CHAINED_V2, CHAINED_V3, CHAINED_V4, GENESIS, link
 from models.register.wording import DOCUMENT_KINDS, kind_words
@@ -103,11 +103,20 @@ class LookalikeSerial(RegisterError):
     a letter and the case at once, issued as another item than LRA-0815, its history and
     due date split). The keys are not widened ("SN-1A" and "SN-LA" are two items), so it is
     issued when the user confirms it is another item; the confirmation is a chained entry
-    of the register ("lookalike_serial"), which `register show` lists."""
+    of the register ("lookalike_serial"), which `register show` lists.
 
-    def __init__(self, text, numbers: tuple[str, ...]) -> None:
+    ``text``: the refusal (the command line's, naming --another-lookalike-item); the window
+    asks from its parts (day review 67 F6: its question repeated the command line's hint,
+    and its "No" the advice for "Yes"): ``facts`` (what the register found: the serials,
+    each once with its certificates, their differing characters marked and named),
+    ``question`` (the question whose Yes issues it) and ``advice`` (what to do instead,
+    after a No)."""
+
+    def __init__(self, text, numbers: tuple[str, ...], facts: str = "", question: str = "",
+                 advice: str = "") -> None:
         super().__init__(text)
         self.numbers = numbers
+        self.facts, self.question, self.advice = facts or text, question, advice
 
 
 class SerialLeftOut(LookalikeSerial):
@@ -2197,44 +2206,103 @@ def _another_makers_item(meta: CertificateMetadata, others) -> AnotherMakersItem
 
 def _lookalike_serial(meta: CertificateMetadata, lookalikes) -> LookalikeSerial:
     """The question of a look-alike serial (:meth:`Register.issue`; rev65 F7), as raised:
-    naming the certificates and their serials."""
-    return LookalikeSerial(message(QT_TR_NOOP(
-        "serial {serial} is in no certificate of the register, but looks like {others} "
-        "(letters or digits that print alike, case aside): it may be that item with its "
-        "serial mistyped, which would split its history and due date. Issue it only if it "
-        "is another item (it is then recorded in the register that you said so; on the "
-        "command line: --another-lookalike-item)"),
-        serial=meta.item_serial,
-        others=", ".join(f"{k} ({n}{', ' + m if m else ''})" for n, k, m in lookalikes)),
-        tuple(n for n, _k, _m in lookalikes))
+    each serial it looks like once, with its certificates and maker, and the characters that
+    differ marked and named (day review 67 F6: the serial was listed once a certificate, and
+    which character differed was not said)."""
+    from models.register.serial_differences import differences_sentence
+
+    serials: dict[str, tuple[list[str], list[str]]] = {}
+    for number, serial, maker in lookalikes:
+        numbers, makers = serials.setdefault(serial, ([], []))
+        numbers.append(number)
+        if maker and maker not in makers:
+            makers.append(maker)
+    others = listed([
+        message(QT_TR_NOOP("{serial} of {maker} ({numbers})"), serial=serial,
+                maker=listed(makers), numbers=listed(numbers)) if makers else
+        message(QT_TR_NOOP("{serial} ({numbers})"), serial=serial, numbers=listed(numbers))
+        for serial, (numbers, makers) in serials.items()])
+    facts = message(QT_TR_NOOP(
+        "serial {serial} is in no certificate of the register, but looks like {others}. "
+        "{differences}. If it is that item with its serial mistyped, a certificate under this "
+        "serial would split its history and due date") if len(serials) == 1 else QT_TR_NOOP(
+        "serial {serial} is in no certificate of the register, but looks like {others}. "
+        "{differences}. If it is one of those items with its serial mistyped, a certificate "
+        "under this serial would split its history and due date"),
+        serial=meta.item_serial, others=others,
+        differences=separated([differences_sentence(meta.item_serial, kept)
+                               for kept in serials]))
+    return LookalikeSerial(
+        message(QT_TR_NOOP("{facts}. Issue it only if it is another item, with "
+                           "--another-lookalike-item (the register records that you said so)"),
+                facts=facts),
+        tuple(n for n, _k, _m in lookalikes), facts,
+        message(QT_TR_NOOP("Is {serial} a different item from {kept}?"), serial=meta.item_serial,
+                kept=_either(list(serials))),
+        message(QT_TR_NOOP("If it is the same item, correct the serial number in the "
+                           "certificate details, then issue the certificate again.")))
+
+
+def _either(items: list[str]) -> Any:
+    """"A", "A or B", "A, B or C" (each a translatable join)."""
+    if len(items) < 2:
+        return "".join(items)
+    return message(QT_TR_NOOP("{items} or {item}"), items=listed(items[:-1]), item=items[-1])
 
 
 def _serial_left_out(meta: CertificateMetadata, rows) -> SerialLeftOut:
     """The question of an item of no serial beside one of its description with a serial, or
-    the other way round (:meth:`Register.issue`; stop 67), as raised."""
+    the other way round (:meth:`Register.issue`; stop 67), as raised: each serial once
+    with its certificates, the verb agreeing with them (day review 67 F6: "AB-2026-0001
+    (…), …, AB-2026-0005 (…) reports an item")."""
     from models.register.identifiers import no_serial
 
     numbers = tuple(n for n, _k, _m in rows)
+    item = _item_text(meta.item_description, _printed(meta.item_manufacturer))
+    date = meta.calibration_date or "—"
     if no_serial(meta.item_serial):
-        return SerialLeftOut(message(QT_TR_NOOP(
-            "{item} has no serial number, but {others} reports an item of that description "
-            "and maker with one (its serial in brackets), calibrated {date}: a serial left out "
-            "does not make another item, and this may be a second certificate of that "
-            "calibration (a corrected certificate is its amendment or replacement). Issue it "
-            "only if it is another item, which has no serial number (it is then recorded in "
-            "the register that you said so; on the command line: --another-lookalike-item)"),
-            item=_item_text(meta.item_description, _printed(meta.item_manufacturer)),
-            others=", ".join(f"{n} ({k})" for n, k, _m in rows),
-            date=meta.calibration_date or "—"), numbers)
-    return SerialLeftOut(message(QT_TR_NOOP(
-        "{others} reports {item}, which has no serial number, calibrated {date}: this may be "
-        "that item with its serial {serial} typed now, a second certificate of that "
-        "calibration (a corrected certificate is its amendment or replacement). Issue it only "
-        "if it is another item (it is then recorded in the register that you said so; on the "
-        "command line: --another-lookalike-item)"),
-        others=", ".join(numbers), serial=meta.item_serial,
-        item=_item_text(meta.item_description, _printed(meta.item_manufacturer)),
-        date=meta.calibration_date or "—"), numbers)
+        serials: dict[str, list[str]] = {}
+        for number, serial, _maker in rows:
+            serials.setdefault(serial, []).append(number)
+        listed_serials = listed([message(QT_TR_NOOP("{serial} ({numbers})"), serial=serial,
+                                         numbers=listed(certificates))
+                                 for serial, certificates in serials.items()])
+        facts = message(QT_TR_NOOP(
+            "{item} has no serial number, but an item of that description and maker calibrated "
+            "{date} has one in the register: {serials}. A serial left out does not make another "
+            "item: this may be a second certificate of that calibration") if len(serials) == 1
+            else QT_TR_NOOP(
+            "{item} has no serial number, but {count} items of that description and maker "
+            "calibrated {date} have one in the register: {serials}. A serial left out does not "
+            "make another item: this may be a second certificate of one of those calibrations"),
+            item=item, date=date, serials=listed_serials, count=len(serials))
+        return SerialLeftOut(
+            message(QT_TR_NOOP("{facts}. Issue it only if it is another item, which has no "
+                               "serial number, with --another-lookalike-item (the register "
+                               "records that you said so)"), facts=facts),
+            numbers, facts,
+            message(QT_TR_NOOP("Is this a different item, one with no serial number?")),
+            message(QT_TR_NOOP("If it is the same item, type its serial number in the "
+                               "certificate details; a certificate is corrected by its "
+                               "amendment or replacement (File › Certificate register).")))
+    facts = message(QT_TR_NOOP(
+        "{numbers} reports {item}, which has no serial number, calibrated {date}: this may be "
+        "that item with its serial {serial} typed now, and a second certificate of that "
+        "calibration") if len(numbers) == 1 else QT_TR_NOOP(
+        "{numbers} report {item}, which has no serial number, calibrated {date}: this may be "
+        "that item with its serial {serial} typed now, and a second certificate of that "
+        "calibration"),
+        numbers=listed(list(numbers)), serial=meta.item_serial, item=item, date=date)
+    return SerialLeftOut(
+        message(QT_TR_NOOP("{facts}. Issue it only if it is another item, with "
+                           "--another-lookalike-item (the register records that you said so)"),
+                facts=facts),
+        numbers, facts,
+        message(QT_TR_NOOP("Is {serial} a different item from the one of {numbers}?"),
+                serial=meta.item_serial, numbers=listed(list(numbers))),
+        message(QT_TR_NOOP("If it is the same item, its serial number is added by amending "
+                           "or replacing {numbers} (File › Certificate register)."),
+                numbers=listed(list(numbers))))
 
 
 def _item_corrected(original: CertificateRecord, meta: CertificateMetadata) -> bool:

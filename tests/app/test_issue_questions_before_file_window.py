@@ -53,7 +53,7 @@ def _answer(window, samples_dir, tmp_path, calls: list, answer, **details) -> No
         str(tmp_path / "second.pdf")
     view.wait_cursor = lambda on: None
     view.show_status = lambda text, *_: calls.append(("status", text))
-    view.tell = lambda title, text: calls.append(("tell", title))
+    view.tell = lambda title, text: calls.append(("tell", title, text))
     window.ask = lambda title, text, buttons, default: calls.append(("asked", title, text)) \
         or answer
 
@@ -101,8 +101,18 @@ def test_a_lookalike_serial_is_asked_before_the_file_dialog(polygon_window, samp
     assert not window.export_certificate()
     asked = [c for c in calls if c[0] == "asked"]
     assert [c[1] for c in asked] == ["Another item?"] and "file" not in calls
-    assert asked[0][2].startswith("serial 1ra-0815 is in no certificate of the register, but "
-                                  f"looks like LRA-0815 ({first}, {FIRST_MAKER})")
+    assert asked[0][2].startswith("Serial 1ra-0815 is in no certificate of the register, but "
+                                  f"looks like LRA-0815 of {FIRST_MAKER} ({first}). "
+                                  "[1]ra-0815 vs [L]RA-0815: the digit 1 and the capital "
+                                  "letter L print alike, case aside."), asked[0][2]
+    # the window's question, not the command line's; No says what to do, not the reasons
+    # and the advice for a Yes again (day review 67 F6)
+    assert "Is 1ra-0815 a different item from LRA-0815? Yes: issue it" in asked[0][2]
+    assert "--another-lookalike-item" not in asked[0][2], asked[0][2]
+    [told] = [c for c in calls if c[0] == "tell"]
+    assert told[1:] == ("Not issued", "No certificate was written or recorded. If it is the "
+                        "same item, correct the serial number in the certificate details, "
+                        "then issue the certificate again."), told
     with Register(register_url()) as register:
         assert [r.number for r in register.list()] == [first]
     calls.clear()
@@ -133,8 +143,12 @@ def test_a_serial_said_to_be_none_beside_that_days_item_is_asked_before_the_file
     assert not window.export_certificate()
     asked = [c for c in calls if c[0] == "asked"]
     assert [c[1] for c in asked] == ["Another item?"] and "file" not in calls
-    assert f"has no serial number, but {first} (LRA-0815) reports an item of that " \
-        "description and maker with one" in asked[0][2], asked[0][2]
+    assert "has no serial number, but an item of that description and maker calibrated " \
+        f"2026-11-20 has one in the register: LRA-0815 ({first})" in asked[0][2], asked[0][2]
+    assert "--another-lookalike-item" not in asked[0][2], asked[0][2]
+    [told] = [c for c in calls if c[0] == "tell"]
+    assert "Issue it only" not in told[2] and "If it is the same item, type its serial " \
+        "number in the certificate details" in told[2], told
     with Register(register_url()) as register:
         assert [r.number for r in register.list()] == [first]
     calls.clear()

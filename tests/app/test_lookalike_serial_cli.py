@@ -30,8 +30,9 @@ def test_a_lookalike_serial_is_issued_only_with_its_option_and_shown(samples_dir
     code, err = analyze("b", "1ra-0815")  # issued as another item before (rev65 F7)
     assert code == 2, (code, err)
     assert err.startswith(f"anglebench analyze: serial 1ra-0815 is in no certificate of the "
-                          f"register, but looks like LRA-0815 ({first}, Möller-Wedel Optical "
-                          "GmbH)"), err
+                          "register, but looks like LRA-0815 of Möller-Wedel Optical GmbH "
+                          f"({first}). [1]ra-0815 vs [L]RA-0815: the digit 1 and the capital "
+                          "letter L print alike, case aside."), err
     assert "--another-lookalike-item" in err and "no certificate was written" in err
     assert not (tmp_path / "b.pdf").exists()
     # the other question's word is not this one's

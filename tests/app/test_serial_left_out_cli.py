@@ -35,8 +35,8 @@ def test_a_serial_left_out_is_issued_only_with_the_word_that_it_is_another_item(
     for blank in ("n/a", "-"):
         code, err = analyze("b", blank)
         assert code == 2, (code, err)
-        assert "has no serial number, but " + first + " (LRA-0815) reports an item of " \
-            "that description and maker with one (its serial in brackets)" in err, err
+        assert "has no serial number, but an item of that description and maker calibrated " \
+            f"2026-11-20 has one in the register: LRA-0815 ({first})" in err, err
         assert "--another-lookalike-item" in err and "no certificate was written" in err
         assert not (tmp_path / "b.pdf").exists()
     code, err = analyze("b", "n/a", "--another-lookalike-item")

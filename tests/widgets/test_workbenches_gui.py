@@ -153,7 +153,8 @@ def test_screenshot_command_writes_every_workbench(tmp_path, qapp):
     names = sorted(p.name for p in tmp_path.glob("*.png"))
     from models.registry import KINDS
 
-    assert names == sorted(["certificate_dialog.png"] + [f"{key}.png" for key in KINDS])
+    assert names == sorted(["certificate_dialog.png", "live_signals.png"]
+                           + [f"{key}.png" for key in KINDS])
     assert all(p.stat().st_size > 20_000 for p in tmp_path.glob("*.png"))
 
 

@@ -26,8 +26,9 @@ from collections.abc import Callable
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt, QTimer, Signal
+from PySide6.QtCore import QEvent, QObject, Qt, QTimer, Signal
 from PySide6.QtWidgets import (
+    QBoxLayout,
     QComboBox,
     QDoubleSpinBox,
     QFormLayout,
@@ -232,17 +233,25 @@ class LiveSignalsPanel(QWidget):
         self.error_plot.setXRange(0, 360, padding=0)
 
     def _layout(self) -> None:
-        link = QHBoxLayout()
+        # the stream's fields and its buttons: one row, or two in a narrow window, where the
+        # buttons left the port and the line a few characters ("057", "u…" at 572 px;
+        # day review 67 F8): :meth:`_arrange`
+        fields = QHBoxLayout()
         self.port_label, self.pattern_label, self.baud_label = QLabel(), QLabel(), QLabel()
-        link.addWidget(self.port_label)
-        link.addWidget(self.port, 3)
-        link.addWidget(self.pattern_label)
-        link.addWidget(self.pattern, 3)
-        link.addWidget(self.baud_label)
-        link.addWidget(self.baud)
-        link.addWidget(self.connect_button)
-        link.addWidget(self.disconnect_button)
-        link.addWidget(self.demo_button)
+        fields.addWidget(self.port_label)
+        fields.addWidget(self.port, 3)
+        fields.addWidget(self.pattern_label)
+        fields.addWidget(self.pattern, 3)
+        fields.addWidget(self.baud_label)
+        fields.addWidget(self.baud)
+        buttons = QHBoxLayout()
+        buttons.addWidget(self.connect_button)
+        buttons.addWidget(self.disconnect_button)
+        buttons.addWidget(self.demo_button)
+        buttons.addStretch(0)
+        link = self.link_rows = QBoxLayout(QBoxLayout.Direction.LeftToRight)
+        link.addLayout(fields, 1)
+        link.addLayout(buttons)
         # the window's settings on two rows and Reset/Take on a row of their own below the
         # plots: on one row they made the window at least 1039 px wide, wider than a
         # 1280×720 screen at 150 % (853 px), and Take was off the screen
@@ -278,15 +287,22 @@ class LiveSignalsPanel(QWidget):
         bars.addStretch(1)
         left = QWidget()
         left.setLayout(bars)
-        left.setMinimumWidth(260)
+        left.setMinimumWidth(236)  # the bars' 220 px and the column's margins
         left.setMaximumWidth(420)
-        plots = QGridLayout()
-        # at the top, no taller than the body's view (:meth:`_fit_plots`)
+        plots = self.plots_grid = QGridLayout()
+        # at the top, no taller than the body's view (:meth:`_fit_plots`); side by side, or
+        # one above the other where two would not fit beside the bars (:meth:`_arrange`)
         plots.addWidget(self.lissajous, 0, 0, Qt.AlignmentFlag.AlignTop)
         plots.addWidget(self.error_plot, 0, 1, Qt.AlignmentFlag.AlignTop)
         plots.setColumnStretch(0, 1)
         plots.setColumnStretch(1, 1)
-        body = QHBoxLayout()
+        self.bars_column = left
+        self.plots_beside: bool | None = True
+        body = self.body_layout = QHBoxLayout()
+        # narrow margins: at 200 % on a 1280×720 screen (627 px of window) the bars and
+        # plots at their least width were wider than the view, and a sideways scroll bar
+        # took a line off the plots' height (day review 67 F8)
+        body.setContentsMargins(2, 2, 2, 2)
         body.addWidget(left, 2)
         body.addLayout(plots, 5)
         # the bars and plots scroll when the screen is smaller than they need; the rows
@@ -297,7 +313,11 @@ class LiveSignalsPanel(QWidget):
         inside = QWidget()
         inside.setLayout(body)
         self.body.setWidget(inside)
-        outer = QVBoxLayout(self)
+        # the plots follow the body's view, not only the window: the status line below
+        # wrapping to two lines once figures come shortens the view with the window unchanged
+        # (day review 67 F8: the x axis titles were cut on the first open at 150 %)
+        self.body.viewport().installEventFilter(self)
+        outer = self.outer_layout = QVBoxLayout(self)
         outer.setContentsMargins(4, 4, 4, 4)
         outer.addLayout(link)
         outer.addLayout(view)
@@ -308,7 +328,7 @@ class LiveSignalsPanel(QWidget):
         outer.addWidget(self.status)
         for plot in (self.lissajous, self.error_plot):
             plot.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
-            plot.setMinimumSize(180, self.PLOT_MIN_HEIGHT)
+            plot.setMinimumSize(self.PLOT_MIN_WIDTH, self.PLOT_MIN_HEIGHT)
             # as tall as its y axis' title needs, the body scrolling down instead: at 150 %
             # on a 1280×720 screen "interpolation error (° el.)" had less axis than its
             # length and was cut at both ends (day review 66)
@@ -327,10 +347,60 @@ class LiveSignalsPanel(QWidget):
 
     #: the least height of the Lissajous and the interpolation error's plot
     PLOT_MIN_HEIGHT = 160
+    #: and their least width: both beside the bars in a 627 px window (200 % on 1280×720)
+    PLOT_MIN_WIDTH = 160
+
+    #: the characters the port field shows whole, at least, before the stream's buttons
+    #: go to a row of their own, and the line field's
+    PORT_SHOWN, LINE_SHOWN = "tcp://127.0.0.1:50000", "u_sin,u_cos"
 
     def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
         super().resizeEvent(event)
+        self._arrange()
         QTimer.singleShot(0, self, self._fit_plots)  # once the body is laid out anew
+
+    def _arrange(self) -> None:
+        """The stream's buttons beside its fields where the port and the line still show
+        :data:`PORT_SHOWN` and :data:`LINE_SHOWN` whole, else on a row below them; the two
+        plots side by side where both have their least width beside the bars' column, else
+        one above the other (day review 67 F8: at 572 px the port showed "057" and the
+        line "u…", and the bars and plots scrolled sideways)."""
+        outer = self.outer_layout.contentsMargins()
+        room = self.width() - outer.left() - outer.right()
+        spacing = max(self.link_rows.spacing(), 0)
+
+        def field(edit, shown: str) -> int:
+            return edit.fontMetrics().horizontalAdvance(shown) + 16
+
+        fields = sum(w.sizeHint().width() for w in (self.port_label, self.pattern_label,
+                                                      self.baud_label, self.baud)) \
+            + field(self.port, self.PORT_SHOWN) + field(self.pattern, self.LINE_SHOWN)
+        buttons = sum(b.sizeHint().width() for b in (self.connect_button,
+                                                     self.disconnect_button, self.demo_button))
+        one_row = fields + buttons + 9 * spacing <= room
+        direction = QBoxLayout.Direction.LeftToRight if one_row else \
+            QBoxLayout.Direction.TopToBottom
+        if self.link_rows.direction() != direction:
+            self.link_rows.setDirection(direction)
+        inside = self.body_layout
+        margins = inside.contentsMargins()
+        scroll_bar = self.body.verticalScrollBar().sizeHint().width()
+        beside = room - scroll_bar - margins.left() - margins.right() \
+            - self.bars_column.minimumWidth() - 2 * max(inside.spacing(), 0) \
+            >= 2 * self.PLOT_MIN_WIDTH + max(self.plots_grid.spacing(), 0)
+        if self.plots_beside != beside:
+            self.plots_beside = beside
+            self.plots_grid.removeWidget(self.error_plot)
+            row, column = (0, 1) if beside else (1, 0)
+            self.plots_grid.addWidget(self.error_plot, row, column, Qt.AlignmentFlag.AlignTop)
+            self.plots_grid.setColumnStretch(1, 1 if beside else 0)
+            # one above the other: the room the bars leave below them, not between them
+            self.plots_grid.setRowStretch(2, 0 if beside else 1)
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:  # noqa: N802 - Qt's name
+        if event.type() == QEvent.Type.Resize and watched is self.body.viewport():
+            QTimer.singleShot(0, self, self._fit_plots)
+        return super().eventFilter(watched, event)
 
     def _fit_plots(self) -> None:
         """The plots no taller than the body's view (their least height aside): as tall as

@@ -66,7 +66,7 @@ def test_a_serial_one_lookalike_from_an_items_is_asked_and_not_merged(register, 
     assert isinstance(exc, LookalikeSerial), exc
     assert exc.numbers == (first.number,)
     assert str(exc).startswith(f"serial {typed} is in no certificate of the register, but "
-                               f"looks like {kept} ({first.number}, {MAKER})")
+                               f"looks like {kept} of {MAKER} ({first.number})")
     assert "--another-lookalike-item" in str(exc)
     assert [r.number for r in register.list()] == [first.number]
     assert register.confirmations_needed("polygon", meta(typed, day="2027-01-15"))[0].numbers \
@@ -126,7 +126,7 @@ def test_letters_and_digits_that_print_alike_case_aside_are_asked_however_many(
     assert isinstance(exc, LookalikeSerial), exc
     assert exc.numbers == (first.number,)
     assert str(exc).startswith(f"serial {typed} is in no certificate of the register, but "
-                               f"looks like {kept} ({first.number}, {MAKER})")
+                               f"looks like {kept} of {MAKER} ({first.number})")
     # on the same day too: asked, not a second certificate passed as another item's
     assert isinstance(refused(register, meta(typed)), LookalikeSerial)
     # confirmed: another item, its own history (never merged)

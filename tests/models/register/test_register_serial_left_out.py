@@ -75,10 +75,9 @@ def test_a_serial_left_out_does_not_pass_the_one_calibration_check(register, bla
     exc = refused(register, meta(blank))
     assert isinstance(exc, LookalikeSerial), exc  # asked, as a look-alike serial is
     assert exc.numbers == (first.number,)
-    assert str(exc).startswith(f"24-face polygon ({MAKER}) has no serial number, but "
-                               f"{first.number} (LRA-0815) reports an item of that "
-                               "description and maker with one (its serial in brackets), "
-                               "calibrated 2026-11-20"), exc
+    assert str(exc).startswith(f"24-face polygon ({MAKER}) has no serial number, but an "
+                               "item of that description and maker calibrated 2026-11-20 has "
+                               f"one in the register: LRA-0815 ({first.number})"), exc
     assert "--another-lookalike-item" in str(exc)
     assert [r.number for r in register.list()] == [first.number]
     # the window asks it before the file name
@@ -138,7 +137,7 @@ def test_an_amendment_onto_a_lookalike_serial_is_asked(register):
         assert isinstance(exc, LookalikeSerial), (typed, exc)
         assert exc.numbers == (lra.number,), typed
         assert str(exc).startswith(f"serial {typed} is in no certificate of the register, "
-                                   f"but looks like LRA-0815 ({lra.number}, {MAKER})"), exc
+                                   f"but looks like LRA-0815 of {MAKER} ({lra.number})"), exc
     # unconfirmed, the correction is asked first, as before
     assert isinstance(refused(register, meta("1ra-0815"), supersedes=other.number,
                               change_note="typo"), NotTheSameCalibration)
