@@ -1706,8 +1706,13 @@
         <translation>无法导出</translation>
     </message>
     <message>
+        <source>No certificate was written or recorded. {advice}</source>
+        <extracomment>the keys of ``problems`` that name a stored standard left out (the others kept): of the workbench&apos;s stored details, of the lab defaults (models.certificate.metadata.readable_standards) the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) the lab&apos;s signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY)</extracomment>
+        <translation>未写入也未记录任何证书。{advice}</translation>
+    </message>
+    <message>
         <source>Replacing {number}</source>
-        <extracomment>the keys of ``problems`` that name a stored standard left out (the others kept): of the workbench&apos;s stored details, of the lab defaults (models.certificate.metadata.readable_standards) the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) the lab&apos;s signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the lab&apos;s DCC settings, kept with the lab defaults (paths only: never a key&apos;s content): PTB&apos;s schema folder (empty: not validated), the signing key and its X.509 certificate (PEM files; empty: the environment&apos;s, else unsigned), the certificate a signature read in is checked against (empty: the environment&apos;s) the pending amendment or replacement changed (the window shows it: rev62 F3) the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U) the lab defaults were saved (the main window redraws every workbench&apos;s plots: their U bands are drawn with the details the certificate would use, the defaults in)</extracomment>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the lab&apos;s DCC settings, kept with the lab defaults (paths only: never a key&apos;s content): PTB&apos;s schema folder (empty: not validated), the signing key and its X.509 certificate (PEM files; empty: the environment&apos;s, else unsigned), the certificate a signature read in is checked against (empty: the environment&apos;s) the pending amendment or replacement changed (the window shows it: rev62 F3) the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U) the lab defaults were saved (the main window redraws every workbench&apos;s plots: their U bands are drawn with the details the certificate would use, the defaults in)</extracomment>
         <translation>正在替代 {number}</translation>
     </message>
     <message>
@@ -2277,12 +2282,12 @@ Is this item another manufacturer&apos;s than that of {numbers}? Yes: issue it; 
         <translation>是另一件物品吗？</translation>
     </message>
     <message>
-        <source>{reason}.
+        <source>{facts}.
 
-Is this item another than that of {numbers}? Yes: issue it; the register records that you said so. No: nothing is issued (correct the serial number in the certificate details).</source>
-        <translation>{reason}。
+{question} Yes: issue it; the register records that you said so. No: nothing is issued. {advice}</source>
+        <translation>{facts}。
 
-这件物品是否不同于 {numbers} 的物品？是：签发；登记册会记录您的确认。否：不签发任何证书（请在证书信息中更正序列号）。</translation>
+{question}是：签发，登记册会记录这是您的说明。否：不签发。{advice}</translation>
     </message>
     <message>
         <source>A calibration already reported</source>
@@ -8026,6 +8031,74 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>记录 {number}：所存的 PDF 与签发时记录的 SHA-256 不符</translation>
     </message>
     <message>
+        <source>{serial} of {maker} ({numbers})</source>
+        <translation>{maker} 的 {serial}（{numbers}）</translation>
+    </message>
+    <message>
+        <source>{serial} ({numbers})</source>
+        <translation>{serial}（{numbers}）</translation>
+    </message>
+    <message>
+        <source>serial {serial} is in no certificate of the register, but looks like {others}. {differences}. If it is that item with its serial mistyped, a certificate under this serial would split its history and due date</source>
+        <translation>序列号 {serial} 不在登记册的任何证书中，但形似 {others}。{differences}。如果它就是那件被校准对象而序列号输错了，以此序列号签发的证书会把其历史和有效期分开</translation>
+    </message>
+    <message>
+        <source>serial {serial} is in no certificate of the register, but looks like {others}. {differences}. If it is one of those items with its serial mistyped, a certificate under this serial would split its history and due date</source>
+        <translation>序列号 {serial} 不在登记册的任何证书中，但形似 {others}。{differences}。如果它是其中一件被校准对象而序列号输错了，以此序列号签发的证书会把其历史和有效期分开</translation>
+    </message>
+    <message>
+        <source>{facts}. Issue it only if it is another item, with --another-lookalike-item (the register records that you said so)</source>
+        <translation>{facts}。只有它是另一件被校准对象时才签发，使用 --another-lookalike-item（登记册会记录这是您的说明）</translation>
+    </message>
+    <message>
+        <source>Is {serial} a different item from {kept}?</source>
+        <translation>{serial} 是不同于 {kept} 的另一件被校准对象吗？</translation>
+    </message>
+    <message>
+        <source>If it is the same item, correct the serial number in the certificate details, then issue the certificate again.</source>
+        <translation>如果是同一件被校准对象，请在证书信息中更正序列号，然后重新签发证书。</translation>
+    </message>
+    <message>
+        <source>{items} or {item}</source>
+        <translation>{items}或{item}</translation>
+    </message>
+    <message>
+        <source>{item} has no serial number, but an item of that description and maker calibrated {date} has one in the register: {serials}. A serial left out does not make another item: this may be a second certificate of that calibration</source>
+        <translation>{item} 没有序列号，但登记册中一件同名称、同制造单位、校准于 {date} 的被校准对象有序列号：{serials}。漏填序列号并不使它成为另一件被校准对象：这可能是该次校准的第二份证书</translation>
+    </message>
+    <message>
+        <source>{item} has no serial number, but {count} items of that description and maker calibrated {date} have one in the register: {serials}. A serial left out does not make another item: this may be a second certificate of one of those calibrations</source>
+        <translation>{item} 没有序列号，但登记册中 {count} 件同名称、同制造单位、校准于 {date} 的被校准对象有序列号：{serials}。漏填序列号并不使它成为另一件被校准对象：这可能是其中某次校准的第二份证书</translation>
+    </message>
+    <message>
+        <source>{facts}. Issue it only if it is another item, which has no serial number, with --another-lookalike-item (the register records that you said so)</source>
+        <translation>{facts}。只有它是另一件没有序列号的被校准对象时才签发，使用 --another-lookalike-item（登记册会记录这是您的说明）</translation>
+    </message>
+    <message>
+        <source>Is this a different item, one with no serial number?</source>
+        <translation>这是另一件没有序列号的被校准对象吗？</translation>
+    </message>
+    <message>
+        <source>If it is the same item, type its serial number in the certificate details; a certificate is corrected by its amendment or replacement (File › Certificate register).</source>
+        <translation>如果是同一件被校准对象，请在证书信息中填写其序列号；证书的更正通过修订或替代进行（文件 › 证书登记册）。</translation>
+    </message>
+    <message>
+        <source>{numbers} reports {item}, which has no serial number, calibrated {date}: this may be that item with its serial {serial} typed now, and a second certificate of that calibration</source>
+        <translation>{numbers} 报告了没有序列号的 {item}，校准于 {date}：这可能就是那件被校准对象，现在才输入其序列号 {serial}，即该次校准的第二份证书</translation>
+    </message>
+    <message>
+        <source>{numbers} report {item}, which has no serial number, calibrated {date}: this may be that item with its serial {serial} typed now, and a second certificate of that calibration</source>
+        <translation>{numbers} 报告了没有序列号的 {item}，校准于 {date}：这可能就是那件被校准对象，现在才输入其序列号 {serial}，即该次校准的第二份证书</translation>
+    </message>
+    <message>
+        <source>Is {serial} a different item from the one of {numbers}?</source>
+        <translation>{serial} 是不同于 {numbers} 所报告的另一件被校准对象吗？</translation>
+    </message>
+    <message>
+        <source>If it is the same item, its serial number is added by amending or replacing {numbers} (File › Certificate register).</source>
+        <translation>如果是同一件被校准对象，其序列号应通过修订或替代 {numbers} 补上（文件 › 证书登记册）。</translation>
+    </message>
+    <message>
         <source>counter {name}: it stands at {value}, but the records reach {recorded}: it was set back after issue (a number would be issued twice)</source>
         <translation>计数器 {name}：其值为 {value}，但记录已到 {recorded}：它在签发后被回退（会导致编号重复签发）</translation>
     </message>
@@ -8084,18 +8157,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>record {number}: the stored DCC does not match the SHA-256 recorded at issue</source>
         <translation>记录 {number}：所存的 DCC 与签发时记录的 SHA-256 不符</translation>
-    </message>
-    <message>
-        <source>serial {serial} is in no certificate of the register, but looks like {others} (letters or digits that print alike, case aside): it may be that item with its serial mistyped, which would split its history and due date. Issue it only if it is another item (it is then recorded in the register that you said so; on the command line: --another-lookalike-item)</source>
-        <translation>序列号 {serial} 不在登记册的任何证书中，但与 {others} 相似（有印刷相似的字母或数字，大小写不计）：可能是该物品的序列号输错了，这会使其历史和到期日一分为二。仅当它是另一件物品时才签发（届时登记册会记录您的确认；命令行：--another-lookalike-item）</translation>
-    </message>
-    <message>
-        <source>{item} has no serial number, but {others} reports an item of that description and maker with one (its serial in brackets), calibrated {date}: a serial left out does not make another item, and this may be a second certificate of that calibration (a corrected certificate is its amendment or replacement). Issue it only if it is another item, which has no serial number (it is then recorded in the register that you said so; on the command line: --another-lookalike-item)</source>
-        <translation>{item} 没有序列号，但 {others} 报告了名称和制造商相同、有序列号的物品（括号内为其序列号），校准于 {date}：不填序列号并不使它成为另一件物品，这可能是同一次校准的第二份证书（更正的证书应为其修订版或替代版）。仅当它是另一件没有序列号的物品时才签发（届时登记册会记录您的确认；命令行：--another-lookalike-item）</translation>
-    </message>
-    <message>
-        <source>{others} reports {item}, which has no serial number, calibrated {date}: this may be that item with its serial {serial} typed now, a second certificate of that calibration (a corrected certificate is its amendment or replacement). Issue it only if it is another item (it is then recorded in the register that you said so; on the command line: --another-lookalike-item)</source>
-        <translation>{others} 报告了 {item}，该物品没有序列号，校准于 {date}：这可能就是那件物品、现在才输入了序列号 {serial}，即同一次校准的第二份证书（更正的证书应为其修订版或替代版）。仅当它是另一件物品时才签发（届时登记册会记录您的确认；命令行：--another-lookalike-item）</translation>
     </message>
     <message>
         <source>record {number}: its DCC cannot be read: {reason}</source>
@@ -8892,7 +8953,7 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     </message>
     <message>
         <source>Port</source>
-        <extracomment>the least height of the Lissajous and the interpolation error&apos;s plot</extracomment>
+        <extracomment>the least height of the Lissajous and the interpolation error&apos;s plot and their least width: both beside the bars in a 627 px window (200 % on 1280×720) the characters the port field shows whole, at least, before the stream&apos;s buttons go to a row of their own, and the line field&apos;s</extracomment>
         <translation>端口</translation>
     </message>
     <message>
@@ -11616,6 +11677,47 @@ Replace it?</source>
         <source>value: the figure as the standard computes it from the readings; interval_low … interval_high: the coverage interval of the TRUE figure (of the true mean deviations and standard deviations of the axis as this measuring instrument reads it: R and A, and their one-direction forms, are made of the standard deviations and include the instrument&apos;s own repeatability) at coverage_probability. A largest value or a range over the targets (R, A, E, M, B) is biased high by the scatter, so the interval may lie below the value, and it reaches 0 where the scatter could hide the whole figure</source>
         <extracomment>bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability) figures that may be negative (the others are clipped at 0) The coverage the study reached for each figure at 95.45 % asked for, where below it: figure_coverage.achieved_probability, the highest probability (95.45 % or a multiple of 0.5 %) that the pooled coverage reaches and that none of the axes falls short of beyond the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1, 2 × the signal × constant or varying (96 axes), each test through the whole analysis. 0.8.2 (the ranges&apos; triple-goal world, B&apos;s upper bound, the axes of 36 targets and of repeatability 1 ×): figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391 to 394, 80 tests an axis, pooled; for the figures whose interval 0.8.2 did not change, the lower of that and 0.7.0&apos;s derivation (the 48 axes of 12 and 72 targets, 40 tests an axis). Pooled: E 95.0 % (its lowest axis, a rough curve at 36 targets and repeatability 0.1 varying along the axis, 68 of 80), E↑ 94.8 % (a real curve at 12 targets, 67 of 80), E↓ 95.0 %, M and Pa 94.6 % (a spike at 72 targets, repeatability 1 × varying, 68 of 80), A 98.0 % (69 of 80 at the same axis as E), B and U 98.8 % (0.8.14, B&apos;s lower end from the mean reversal: 99.2 %, the lowest axis 37 of 40, seeds 391–392); the others 96.6–98.6 %. R↑ and R↓ stated 93.5 % until their intervals took the per-target chi-square bounds (:func:`_repeatability_bounds`), which hold at the probability asked for. The figure&apos;s interval states this one instead. Before 0.8.2, B stated 93 % and one axis (a rough reversal whose largest value stands clear of the others) reached 59 of 80; before 0.7.0&apos;s union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72 targets) and R 72 % on a reversal changing at random from target to target. what a figure&apos;s value and interval are, beside them in the JSON: a value above its own interval is no error (an audit counted R↑ above its interval in 82 % of 2-pass runs)</extracomment>
         <translation>value：按标准由读数计算的指标；interval_low … interval_high：真实指标（由本测量仪器所读出的轴系的真实平均偏差和标准偏差计算：R 和 A 及其单向形式由标准偏差构成，包含该仪器自身的重复性）在 coverage_probability 下的包含区间。各目标上的最大值或极差（R、A、E、M、B）受分散影响偏高，因此区间可能位于数值之下；在分散可能掩盖整个指标时下限为 0</translation>
+    </message>
+    <message>
+        <source>“{text}”</source>
+        <extracomment>the marks put around a run of differing characters</extracomment>
+        <translation>“{text}”</translation>
+    </message>
+    <message>
+        <source>the digit {char}</source>
+        <translation>数字 {char}</translation>
+    </message>
+    <message>
+        <source>the capital letter {char}</source>
+        <translation>大写字母 {char}</translation>
+    </message>
+    <message>
+        <source>the small letter {char}</source>
+        <translation>小写字母 {char}</translation>
+    </message>
+    <message>
+        <source>the vertical bar {char}</source>
+        <translation>竖线 {char}</translation>
+    </message>
+    <message>
+        <source>{char} ({name}, U+{code:04X})</source>
+        <translation>{char}（{name}，U+{code:04X}）</translation>
+    </message>
+    <message>
+        <source>{one} and {other}</source>
+        <translation>{one}和{other}</translation>
+    </message>
+    <message>
+        <source>{chars} only in {serial}</source>
+        <translation>{chars}仅见于 {serial}</translation>
+    </message>
+    <message>
+        <source>{pairs} print alike, case aside</source>
+        <translation>{pairs}印出来相似（不计大小写）</translation>
+    </message>
+    <message>
+        <source>{one} vs {other}: {differences}</source>
+        <translation>{one} 与 {other}：{differences}</translation>
     </message>
 </context>
 </TS>
