@@ -800,10 +800,10 @@ def _band_edge_bound(x: np.ndarray, s: np.ndarray, n: np.ndarray, reach: float, 
     """Each target's one-sided confidence bound of μ + ``reach`` · σ (``reach`` of either
     sign: μ ± 2σ, the ends of ISO 230-2's band x̄ ± 2s) from its own x̄, s and n readings,
     holding at 1 − ``tail`` whatever μ and σ (the readings normal): the one-sided tolerance
-    bound by the noncentral t distribution (Owen 1968, Technometrics 10:445; ISO 16269-6
-    §5): √n (μ + r σ − x̄) / s for r ≥ 0 is noncentral t with ν = n − 1 and noncentrality
-    r √n, so μ + r σ ≤ x̄ + s t′_ν,r√n(1 − tail) / √n (upper) and ≥ x̄ + s t′(tail) / √n
-    (lower); μ − r σ by the same with the readings' sign turned."""
+    bound by the noncentral t distribution (Owen 1968, Technometrics 10:445; ISO 16269-6's
+    one-sided intervals): √n (μ + r σ − x̄) / s for r ≥ 0 is noncentral t with ν = n − 1
+    and noncentrality r √n, so μ + r σ ≤ x̄ + s t′_ν,r√n(1 − tail) / √n (upper) and
+    ≥ x̄ + s t′(tail) / √n (lower); μ − r σ by the same with the readings' sign turned."""
     n = np.asarray(n, float)
     root = np.sqrt(n)
     grows = reach >= 0.0

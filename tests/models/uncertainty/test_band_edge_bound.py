@@ -10,7 +10,7 @@ from models.uncertainty.figure_intervals import _band_edge_bound
 
 
 def test_a_bands_end_bound_is_the_one_sided_tolerance_bound():
-    """μ + k σ ≤ x̄ + K s: K is the one-sided tolerance factor of ISO 16269-6 (Table C.1,
+    """μ + k σ ≤ x̄ + K s: K is the one-sided tolerance factor of ISO 16269-6 (its tables of k,
     and NIST/SEMATECH 7.2.6.3) for a proportion p = Φ(k) at confidence 1 − tail: 95 % of
     the population at 95 % confidence from n = 3, 5 and 10 readings, K = 7.656, 4.203 and
     2.911. Readings x̄ = 10.000″, s = 0.500″: the bound of μ + 1.645σ is 13.828″, 12.101″,
