@@ -48,6 +48,12 @@ inputs that are one value at a θ, with the readings without them), fed with:
   σ = 0.5″ with u_c = 0.8″ running with the curve, 5 passes.
   The reference reading θ₀ is one value for the run: it moves every error alike and no
   figure (a range, a reversal, a scatter) sees it.
+* A, A↑ and A↓ (as R, R↑ and R↓) take bounds from each θ's own mean and s over the passes in
+  place of the bootstrap's interval (models.uncertainty.figure_intervals._band_span_bounds,
+  #39), which hold however the scatter changes from θ to θ; the set-up model's error enters
+  them at a tenth of the tail, as the largest difference of its errors at two θ. They are
+  wide at few passes (a θ's μ + 2σ up to x̄ + 19.4 s from 3 passes, x̄ + 140 s from 2): 19.5
+  times the width the figure's spread needs at 3 passes, against 2.8 for the bootstrap's.
 
 Where the laboratory states its CMC (the setting *cmc_arcsec*, the axis error's, in
 arcsec as the figures), a certificate, its JSON and DCC state the intervals held to it

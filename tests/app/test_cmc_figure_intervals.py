@@ -2,7 +2,7 @@
 too (ILAC-P14:09/2020 5.4: no U stated below the CMC), in every output of one issue.
 
 A positioning test (a rotary axis, the standard test cycle simulated from first principles
-in tests/reversal_simulator.py: 12 targets, 5 runs, repeatability 0.05″) and a theodolite
+in tests/reversal_simulator.py: 12 targets, 5 runs, repeatability 0.04″) and a theodolite
 run with passes (tests/theodolite_passes_simulator.py: 5 passes each way, pointing 0.05″)
 give every figure an interval a few tenths of an arcsecond wide; issued with a CMC of 2″
 above every half-width, each figure's interval is value ± CMC at least (its lower end not
@@ -76,8 +76,10 @@ def issued(tmp_path_factory):
     rng = np.random.default_rng(20261206)
     try:
         # positioning: an even reversal of 0.5″ (± 0.1″) over 12 targets, 5 runs each way
+        # (repeatability 0.04″: P's interval holds the band μ ± (|β|/2 + 3σ̄) each target's
+        # own 5 runs allow, and at 0.05″ it was 2.2″ wide, above the CMC)
         reversal = 0.5 + 0.1 * rng.standard_normal(12)
-        rows = readings_rows(reversal, 0.05, 5, rng)
+        rows = readings_rows(reversal, 0.04, 5, rng)
         positioning = out / "positioning.csv"
         positioning.write_text("target,run,direction,deviation\n" + "".join(
             ",".join(row[:4]) + "\n" for row in rows), encoding="utf-8")

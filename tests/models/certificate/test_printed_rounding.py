@@ -75,8 +75,9 @@ def test_each_figure_of_the_axis_to_the_decimal_of_its_interval(positioning):
         assert row[2] == f"{low:.{d}f}\" … {high:.{d}f}\"", key
         checked += 1
     assert checked >= 10
-    # the sample's A: 22.447″ with an interval some 10″ wide is "22.4″", not "22.447″"
-    assert decimals_of(rows["A"][1]) == 1 and rows["A"][1] == f"{figures['A']:.1f}\""
+    # the sample's A: 22.447″ with an interval some 27″ wide (16.8 … 44.0″: each target's own
+    # bounds of μ ± 2σ, #39) is "22″", not "22.447″" (it was "22.4″" beside 17.4 … 25.3″)
+    assert decimals_of(rows["A"][1]) == 0 and rows["A"][1] == f"{figures['A']:.0f}\""
 
 
 def test_the_summary_prints_the_figures_as_the_intervals_allow():

@@ -216,8 +216,12 @@ def test_the_circle_part_the_readings_do_not_exclude_holds_the_true_one(tmp_path
 def test_the_figures_of_the_means_with_the_theodolite_stated_at_its_pointing_noise(
         capsys, tmp_path):
     """Pointing noise alone, the theodolite stated at it: E, M and A's intervals cover at the
-    probability printed, and are at most 5, 5 and 3.1 times the width the figure's own
-    spread needs (2 z σ of value − truth over the runs; measured 4.46, 4.46, 2.80). The
+    probability printed, and are at most 5, 5 and 22 times the width the figure's own
+    spread needs (2 z σ of value − truth over the runs; measured 4.46, 4.46, 19.5). A's
+    interval is made of each θ's own bounds of μ ± 2σ from its 3 passes (x̄ + 19.4 s at
+    98.9 %, models.uncertainty.figure_intervals._band_span_bounds), which hold however σ
+    changes from θ to θ; the bootstrap's, 2.80 times, covered 45–70 of 80 positioning tests
+    with one target's σ × 2 or × 3 (#39). The
     readings cannot tell such a theodolite from one whose u hides a circle error under the
     pointing noise, and the widening for a circle error of the curve's worst shape is sized
     by the largest part they do not exclude (0.8.15, #39): until then by the part they show
@@ -245,4 +249,4 @@ def test_the_figures_of_the_means_with_the_theodolite_stated_at_its_pointing_noi
         needed = 2.0 * float(ndtri(0.5 + 0.5 * p)) * float(np.std([x[2] for x in r], ddof=1))
         ratio = float(np.mean([x[1] for x in r])) / needed
         assert hits >= binom.ppf(0.01, len(r), p), (key, hits)
-        assert ratio <= {"E": 5.0, "M": 5.0, "A": 3.1}[key], (key, ratio)
+        assert ratio <= {"E": 5.0, "M": 5.0, "A": 22.0}[key], (key, ratio)

@@ -32,10 +32,11 @@ def test_the_headline_prints_each_figure_to_its_intervals_decimal(window):
         d = _decimals_of((iv.high - iv.low) / 2)
         expected.append(f'{key} = {result.iso.figures[key]:.{d}f}"')
     assert shown.startswith("ISO 230-2:2014: " + ", ".join(expected)), shown
-    # the sample: A to 0.1″ as its certificate prints it ("A 22.4″"), never to 0.001″; R to
-    # 1″, its interval's half-width some 12″ since its chi-square bounds (0.8.16)
-    assert shown.startswith('ISO 230-2:2014: A = 22.4", R = 10", B = 6.1"'), shown
+    # the sample: A and R to 1″ as its certificate prints them ("A 22″"), never to 0.001″:
+    # their intervals' half-widths some 12–14″ since each target's own bounds (R's chi-square,
+    # 0.8.16; A's noncentral t, #39: "A = 22.4″" beside 17.4 … 25.3″ before)
+    assert shown.startswith('ISO 230-2:2014: A = 22", R = 10", B = 6.1"'), shown
     # the same figure and decimal as the summary's line beside it
     summary = presenter.view.summary.toPlainText()
     a = re.search(r'ISO 230-2: A = ([-\d.]+)"', summary).group(1)
-    assert f'A = {a}"' in shown and math.isclose(float(a), result.iso.figures["A"], abs_tol=0.05)
+    assert f'A = {a}"' in shown and math.isclose(float(a), result.iso.figures["A"], abs_tol=0.5)
