@@ -850,7 +850,10 @@ class CertificatePresenter:
             else:
                 write_results_csv(path, document, unit)
         except (OSError, ValueError) as exc:
-            self.view.tell(tr("Cannot export"), f"{path}: {explained(exc)}")
+            # what was refused: the results (day review 67 F9: "no certificate is issued"
+            # was said, of an export where none was being issued)
+            self.view.tell(tr("Cannot export"), tr("{path}: {reason}. No results were written.")
+                           .format(path=path, reason=explained(exc)))
             return False
         self.view.show_status(tr("Results written to {path}").format(path=path), 8000)
         return True
