@@ -9,6 +9,7 @@ from __future__ import annotations
 import csv
 import hashlib
 import json
+import os
 import random
 import shutil
 import subprocess
@@ -18,6 +19,7 @@ from PySide6.QtCore import QCoreApplication, QEvent, QSettings
 from PySide6.QtWidgets import QMessageBox
 
 from models.certificate.metadata import CertificateMetadata
+from models.messages import in_language, translator
 
 pytestmark = pytest.mark.slow  # windows, each analysing a polygon run and a positioning one
 
@@ -29,9 +31,9 @@ def make_window(qtbot, tmp_path):
 
     made = []
 
-    def factory(tag):
+    def factory(tag, recovery="recovery"):
         settings = QSettings(str(tmp_path / f"{tag}.ini"), QSettings.Format.IniFormat)
-        window = MainWindow(settings=settings, recovery=RecoveryStore(tmp_path / f"rec{tag}"))
+        window = MainWindow(settings=settings, recovery=RecoveryStore(tmp_path / recovery))
         window.told = []
         window.tell = lambda title, text: window.told.append(text)
         window.ask = lambda *a: QMessageBox.StandardButton.Discard
@@ -95,12 +97,13 @@ def _chinese_specimen(window, samples_dir, path) -> str:
     return _pdf_text(path)
 
 
-def test_a_sent_origin_is_worded_in_chinese_after_the_project_is_opened_again(
-        make_window, qtbot, tmp_path, samples_dir):
+def _sent(make_window, qtbot, tmp_path, samples_dir, recovery="recovery"):
+    """A window whose polygon run (imported, one reading typed over) was sent to the
+    positioning workbench: (the window, the run file's SHA-256)."""
     run = tmp_path / "bench_run_4sets.csv"
     _four_sets(samples_dir, run)
     digest = hashlib.sha256(run.read_bytes()).hexdigest()
-    window = make_window("a")
+    window = make_window("a", recovery)
     polygon = window.presenter("polygon")
     window.tabs.setCurrentIndex(window.presenters.index(polygon))
     polygon.import_file(run)
@@ -109,11 +112,17 @@ def test_a_sent_origin_is_worded_in_chinese_after_the_project_is_opened_again(
     _settle(window, qtbot)
     assert window.send_to_positioning(), window.told
     _settle(window, qtbot)
+    return window, digest
+
+
+def test_a_sent_origin_is_worded_in_chinese_after_the_project_is_opened_again(
+        make_window, qtbot, tmp_path, samples_dir):
+    window, digest = _sent(make_window, qtbot, tmp_path, samples_dir, "reca")
     before = _chinese_specimen(window, samples_dir, tmp_path / "before.pdf")
     project = tmp_path / "sent_positioning.anglebench.json"
     assert window.projects.save_to(project), window.told
 
-    reopened = make_window("b")
+    reopened = make_window("b", "recb")
     assert reopened.projects.open_project(project), reopened.told
     positioning = reopened.presenter("positioning")
     reopened.tabs.setCurrentIndex(reopened.presenters.index(positioning))
@@ -128,3 +137,23 @@ def test_a_sent_origin_is_worded_in_chinese_after_the_project_is_opened_again(
     start = before.index("原始记录") + len("原始记录")
     said = before[start:before.index(digest[-4:], start) + 4]
     assert said.startswith("由") and f"{project.name}：{said}" in after, (said, after)
+
+
+def test_a_sent_origin_is_worded_in_chinese_after_a_crash(make_window, qtbot, tmp_path,
+                                                          samples_dir):
+    window, digest = _sent(make_window, qtbot, tmp_path, samples_dir)
+    line = window._readings_line(window.presenter("positioning"))
+    chinese = in_language(line, translator("zh_CN"))
+    # the window dies (kill -9) after an autosave: its lock goes with the process
+    window.projects.autosave()
+    os.close(window.projects.recovery._lock_fd)
+    window.projects.recovery._lock_fd = None
+    window.projects.autosave_timer.stop()
+    survivor = make_window("b")
+    assert survivor.projects.offer_recovery(), survivor.told
+    positioning = survivor.presenter("positioning")
+    _settle(survivor, qtbot)
+    recovered = survivor._readings_line(positioning)
+    assert str(recovered) == str(line)
+    again = in_language(recovered, translator("zh_CN"))
+    assert again == chinese and digest in again and "imported from" not in again, again
