@@ -50,6 +50,8 @@ class CertificateDialogs:
         dialog.lab_timezone_set.connect(self.window.certificates.set_lab_timezone)
         dialog.set_dcc_options(*self.window.certificates.dcc_options())
         dialog.set_dcc_signing_paths(*self.window.certificates.dcc_signing_paths())
+        # what the certificate will say of where its readings came from (day review 67 F7)
+        dialog.set_readings_line(getattr(self.window.certificates, "readings_line", ""))
         if problems:  # a stored detail that no longer reads: shown as stored, marked
             dialog.show_problems(problems, raw)
         if dialog.exec() != QDialog.DialogCode.Accepted:

@@ -155,6 +155,9 @@ class CertificatePresenter:
         self._metadata = metadata
         self._mark_modified = mark_modified
         self.problems: dict[str, str] = {}  # stored details that no longer read
+        #: the "Readings:" line of the certificate being asked for, which its details dialog
+        #: shows ("" none)
+        self.readings_line: str = ""
         # per workbench, the stored standards left out that the status last said
         self._skipped_said: dict[str, tuple[str, ...]] = {}
         self.raw: dict = {}
@@ -500,9 +503,13 @@ class CertificatePresenter:
         if doubt and not self.view.confirm_implausible(translated(doubt)):
             return False
         shown = self.details(kind.key)
+        # the "Readings:" line the certificate will print, shown in the details dialog
+        # before issue (day review 67 F7)
+        self.readings_line = readings_stated(kind.key, source_name, rows or [], raw_capture)[0]
         while True:
             entered = self.edit_details(shown)
             if entered is None:
+                self.readings_line = ""
                 return False
             self.store_details(kind.key, dataclasses.replace(entered, certificate_number=""))
             # a standard of another kind of quantity is refused, one as large as the
@@ -522,6 +529,7 @@ class CertificatePresenter:
                     draft, self._is_test_report(kind, result, entered, source_name, settings)):
                 break
             shown, self.problems, self.raw = entered, {}, {}  # what was stored now reads
+        self.readings_line = ""
         try:  # details the result refuses (a grade that disagrees) told before the file dialog
             report = kind.certificate_document(result, entered, source_name,
                                                settings).is_test_report
@@ -856,7 +864,10 @@ class CertificatePresenter:
             else:
                 write_results_csv(path, document, unit)
         except (OSError, ValueError) as exc:
-            self.view.tell(tr("Cannot export"), f"{path}: {explained(exc)}")
+            # what was refused: the results (day review 67 F9: "no certificate is issued"
+            # was said, of an export where none was being issued)
+            self.view.tell(tr("Cannot export"), tr("{path}: {reason}. No results were written.")
+                           .format(path=path, reason=explained(exc)))
             return False
         self.view.show_status(tr("Results written to {path}").format(path=path), 8000)
         return True

@@ -41,7 +41,13 @@ from app.reference_sender import (
 )
 from app.run_overlay_actions import RunOverlayActions
 from models import __version__
-from models.certificate.readings_origin import TYPED, SentFrom, in_project
+from models.certificate.readings_origin import (
+    TYPED,
+    ReadingsStatement,
+    SentFrom,
+    captured_rows,
+    source_stated,
+)
 from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.recovery import RecoveryStore
 from models.readings.tabular_import import TableImportError
@@ -462,7 +468,9 @@ class MainWindow(QMainWindow):
         # the positioning certificate says where these readings came from: the sending
         # workbench and its own "Readings:" line (day review 66: "readings typed in
         # AngleBench" was said of them)
-        sent = SentFrom(source.kind.title, self._readings_line(source))
+        # (day review 67 F3: and what that line was made of, which a project file keeps, so
+        # that a certificate words it in its own language after the project is opened again)
+        sent = SentFrom(source.kind.title, self._readings_line(source), self._statement(source))
         target.table_model.replace_all(rows, f"From {source.kind.title}", checked=True,
                                        origin=sent)
         target.set_settings(target.kind.settings_for_runs(target.settings))
@@ -524,11 +532,24 @@ class MainWindow(QMainWindow):
         else typed. A project saved under a name is named, with where its readings came
         from when that is known (day review 67: saved, opened again or recovered after a
         crash, they were the project's, or typed)."""
-        presenter = presenter or self.current
-        if self.projects.path:
-            name = self.projects.path.name
-            return in_project(name, presenter.readings_source(name))
-        return presenter.readings_source() or self.projects.readings_source or TYPED
+        return source_stated(self._statement(presenter or self.current, captured=False))
+
+    def _statement(self, presenter, captured: bool = True) -> ReadingsStatement:
+        """What the "Readings:" line of ``presenter``'s readings is made of (models/
+        certificate/readings_origin.ReadingsStatement): where the sheet's rows came from,
+        the project file they are in and whether they were changed since it was saved or
+        recovered (day review 67 F4: the file was named as the source of readings it does
+        not hold), and (``captured``) the analysed rows taken from the instruments."""
+        origin, edited, pasted, count = presenter.table_model.readings_origin()
+        project = self.projects.path.name if self.projects.path else ""
+        taken: tuple[int, ...] = ()
+        if captured:
+            key = presenter.kind.key
+            taken = tuple(captured_rows(self.capture_panel.raw_sessions(key),
+                                        presenter.result_state().rows, key))
+        return ReadingsStatement(origin, edited, tuple(pasted), count, taken, project,
+                                 bool(project) and presenter.readings_unsaved(),
+                                 "" if project else self.projects.readings_source or "")
 
     def _readings_line(self, presenter) -> str:
         """The "Readings:" line a certificate of ``presenter``'s analysed readings would

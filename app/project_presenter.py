@@ -52,6 +52,9 @@ AUTOSAVE_DELAY_LARGE_MS = 20_000  # … and less often
 MAX_RECENT = 8
 RECENT_FILES_KEY = "recent_files"
 #: files that may be dropped on the window: readings, or a project (.json)
+#: an autosave's detail: the keys of the workbenches whose rows were changed after the
+#: project file was saved (the file is then not named as their source: day review 67 F4)
+UNSAVED_READINGS = "unsaved_readings"
 DROPPABLE = (".csv", ".txt", ".tsv", ".xlsx", ".xlsm", ".json")
 
 
@@ -232,6 +235,7 @@ class ProjectPresenter(QObject):
         self.metadata.pop("project_path", None)
         self.metadata.pop("pending_edits", None)
         self.metadata.pop("project_sha256", None)
+        self.metadata.pop(UNSAVED_READINGS, None)
         for presenter in self.presenters:
             presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()),
                                  name)
@@ -578,6 +582,10 @@ class ProjectPresenter(QObject):
         metadata = dict(self.metadata)
         if self.disk_sha256:
             metadata["project_sha256"] = self.disk_sha256
+        # the workbenches whose rows differ from that file's: recovered, their certificate
+        # does not name the file as their source (day review 67 F4)
+        metadata[UNSAVED_READINGS] = [p.kind.key for p in self.presenters
+                                      if p.readings_unsaved()]
         return metadata
 
     def _write_recovery_in_background(self, project: Project, generation: int) -> None:
@@ -635,6 +643,9 @@ class ProjectPresenter(QObject):
             self.view.show_status(tr("The autosave was kept aside: {path}").format(path=kept), 15000)
             return False
         typed = project.metadata.get("pending_edits") or {}
+        # which workbenches' rows differ from the file's (an autosave written before it
+        # said: any may)
+        unsaved = project.metadata.get(UNSAVED_READINGS)
         self.apply_project(project, Path(source).name if source else "")
         self.path = Path(source) if source else None
         # the file the crashed window's work was based on: a save asks if it changed since
@@ -642,6 +653,8 @@ class ProjectPresenter(QObject):
         self.disk_sha256 = project.metadata.get("project_sha256") or None
         for presenter in self.presenters:  # recovered work is unsaved work
             presenter.mark_modified()
+            presenter.recovered_unsaved = bool(source) and (
+                not isinstance(unsaved, list) or presenter.kind.key in unsaved)
         self.recovery.adopt(path)  # the orphan renamed to this window's autosave, not deleted
         self.autosave()  # now this window's own autosave
         self._tell_repairs(project)

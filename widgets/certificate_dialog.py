@@ -43,6 +43,7 @@ from models.certificate.metadata import (
     CertificateMetadata,
     MetadataError,
 )
+from models.messages import in_language, translator
 from models.quantity import UNITS
 from models.uncertainty.conformity import DECISION_RULE_NAMES
 from widgets.i18n import declared, explained, tr, translated
@@ -360,6 +361,22 @@ class CertificateDialog(QDialog):
         box_layout.addLayout(buttons)
         sections.add_row(standards_box)
 
+        # what the certificate will say of its readings' origin, read before issue (day
+        # review 67 F7: seen only in the issued PDF, after the register recorded it)
+        self.readings_caption = QLabel(tr("Readings, as the certificate will say:"))
+        self.readings_caption.setObjectName("readings_caption")
+        self.readings_line = QLabel()
+        self.readings_line.setObjectName("readings_line")
+        self.readings_line.setWordWrap(True)
+        self.readings_line.setTextFormat(Qt.TextFormat.PlainText)
+        self.readings_line.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.readings_line.setToolTip(tr(
+            "Where the readings came from, as the certificate prints it in its language. To "
+            "change it, change the readings (or save the project) before exporting."))
+        self._readings: str = ""
+        for widget in (self.readings_caption, self.readings_line):
+            widget.setVisible(False)
+        self.choices["language"].currentIndexChanged.connect(self._show_readings_line)
         self.error_label = QLabel()
         self.error_label.setStyleSheet("color: #b00020;")
         self.error_label.setWordWrap(True)
@@ -386,6 +403,8 @@ class CertificateDialog(QDialog):
         self.details_area.installEventFilter(self)
         layout = QVBoxLayout(self)
         layout.addWidget(self.details_area, 1)
+        layout.addWidget(self.readings_caption)
+        layout.addWidget(self.readings_line)
         layout.addWidget(self.error_label)
         layout.addWidget(self.buttons)
         wanted = sections.sizeHint()
@@ -406,6 +425,21 @@ class CertificateDialog(QDialog):
         self.sections.set_columns(2 if room >= self.sections.two_columns_width() else 1)
 
     # -- values -------------------------------------------------------------
+    def set_readings_line(self, line: str) -> None:
+        """Show the certificate's "Readings:" line (models/certificate/readings_origin.py,
+        a Message), read-only, in the language chosen for the certificate: as a Chinese
+        certificate prints it in Chinese, an English or a bilingual one in English."""
+        self._readings = line
+        for widget in (self.readings_caption, self.readings_line):
+            widget.setVisible(bool(line))
+        self._show_readings_line()
+
+    def _show_readings_line(self, *_args) -> None:
+        line = self._readings
+        if self.choices["language"].currentData() == "zh":
+            line = in_language(line, translator("zh_CN"))
+        self.readings_line.setText(str(line))
+
     def set_metadata(self, meta: CertificateMetadata) -> None:
         data = meta.to_dict()
         for key, edit in self.fields.items():

@@ -369,6 +369,9 @@ class WorkbenchPresenter(QObject):
             self.view.table.plan_paste = self.plan_paste
         self._settings: dict[str, Any] = kind.settings_with_defaults(None)
         self._settings_modified = False
+        #: the rows were changed in a window after the project file was last saved, before
+        #: this one took them (recovered from its autosave: :meth:`readings_unsaved`)
+        self.recovered_unsaved = False
         self.result: Any = None
         # the settings ``result`` was analysed with: a certificate of it states and computes
         # with these, not the form's (edited since, their analysis still to come)
@@ -617,8 +620,28 @@ class WorkbenchPresenter(QObject):
 
     def mark_saved(self) -> None:
         self._settings_modified = False
+        self.recovered_unsaved = False
         self.undo_stack.setClean()
         self._emit_modified()
+
+    def readings_unsaved(self) -> bool:
+        """Whether the rows may differ from the project file's as it was last saved or
+        opened: a step between the saved one and now changed rows (a change of settings
+        does not), the saved step is out of reach of the undo history, or the rows were
+        recovered changed (:attr:`recovered_unsaved`). Day review 67 F4: the certificate
+        named the file as the source of readings it did not hold."""
+        if self.recovered_unsaved:
+            return True
+        stack = self.undo_stack
+        clean, now = stack.cleanIndex(), stack.index()
+        if clean < 0:
+            return True
+        for i in range(min(clean, now), max(clean, now)):
+            step = stack.command(i)
+            commands = [step.child(j) for j in range(step.childCount())] or [step]
+            if any(not isinstance(command, SettingsCommand) for command in commands):
+                return True
+        return False
 
     def _on_clean_changed(self, _clean: bool) -> None:
         self._emit_modified()

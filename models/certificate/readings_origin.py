@@ -13,9 +13,10 @@ from typing import Any
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["PASTED", "TYPED", "FromProject", "ImportedFrom", "PastedIn", "SentFrom",
-           "SheetOrigin", "captured_rows", "filled_rows", "imported_source", "in_project",
-           "readings_origin", "row_spans", "sheet_source"]
+__all__ = ["PASTED", "TYPED", "FromProject", "ImportedFrom", "PastedIn", "ReadingsStatement",
+           "SentFrom", "SheetOrigin", "captured_rows", "filled_rows", "imported_source",
+           "in_project", "readings_origin", "row_spans", "sheet_source", "source_stated",
+           "stated"]
 
 #: the readings' source when they are in no project file: typed into the sheet
 TYPED = QT_TR_NOOP("readings typed in AngleBench")
@@ -47,10 +48,14 @@ class PastedIn:
 class SentFrom:
     """The sheet's rows were sent from another workbench (File › Send to positioning):
     ``workbench`` its title (a declared text), ``origin`` that workbench's own "Readings:"
-    line when they were sent ("" when it has none)."""
+    line when they were sent ("" when it has none), ``readings`` what that line was made of
+    (None: not known, a project file written before it was kept: ``origin`` is then said as
+    it is). Day review 67 F3: kept as its English text only, a Chinese certificate printed
+    it in English after the project was saved and opened again."""
 
     workbench: str
     origin: str = ""
+    readings: ReadingsStatement | None = None
 
 
 @dataclass(frozen=True)
@@ -67,6 +72,25 @@ class FromProject:
 #: where a sheet's rows came from when one step replaced them all (None: typed, or a
 #: project's)
 SheetOrigin = ImportedFrom | PastedIn | SentFrom | FromProject
+
+
+@dataclass(frozen=True)
+class ReadingsStatement:
+    """What a sheet's "Readings:" line is made of (:func:`stated` words it, in any
+    language): ``origin``, ``edited`` and ``pasted`` as :func:`sheet_source` takes them, of
+    ``row_count`` filled rows, the rows ``captured`` from the instruments (0-based), the
+    name of the ``project`` file the window had them in ("" none), whether they were
+    changed in the window after that file was saved or recovered (``unsaved``: day review
+    67 F4), and the source a register's record ``named`` of an untitled project's."""
+
+    origin: SheetOrigin | None = None
+    edited: bool = False
+    pasted: tuple[int, ...] = ()
+    row_count: int = 0
+    captured: tuple[int, ...] = ()
+    project: str = ""
+    unsaved: bool = False
+    named: str = ""
 
 
 def imported_source(origin: ImportedFrom, edited: bool) -> str:
@@ -96,10 +120,13 @@ def _replaced_source(origin: SheetOrigin, edited: bool) -> str:
     elif isinstance(origin, FromProject):
         source = (message(QT_TR_NOOP("from project {name}"), name=origin.name) if origin.name
                   else message(QT_TR_NOOP("from an autosave that does not record their origin")))
-    elif origin.origin:
+    elif origin.readings is not None or origin.origin:
+        # the sending workbench's line worded again from what it was made of (its text
+        # alone, from a file that kept only that, is said as it is)
+        said = stated(origin.readings) if origin.readings is not None else origin.origin
         source = message(QT_TR_NOOP("sent from the {workbench} workbench (its readings: "
                                     "{origin})"),
-                         workbench=message(origin.workbench), origin=origin.origin)
+                         workbench=message(origin.workbench), origin=said)
     else:
         source = message(QT_TR_NOOP("sent from the {workbench} workbench"),
                          workbench=message(origin.workbench))
@@ -142,14 +169,42 @@ def sheet_source(origin: SheetOrigin | None, edited: bool, pasted: Sequence[int]
                    source=source, rows=row_spans(pasted), pasted=len(pasted), count=row_count)
 
 
-def in_project(project: str, source: str | None) -> str:
+def in_project(project: str, source: str | None, unsaved: bool = False) -> str:
     """The certificate's source of readings kept in the project file ``project``: its name,
     and where they came from when that is known (``source``, :func:`sheet_source`; None:
     typed, or the project's own). Day review 67: a project saved under a name said only
-    its name of readings imported, pasted or sent from another workbench."""
+    its name of readings imported, pasted or sent from another workbench. ``unsaved``: the
+    readings were changed in the window after that file was saved (or recovered from its
+    autosave): the file is not named as their source (day review 67 F4: an auditor opening
+    it would not find the certified readings)."""
+    if unsaved:
+        if source is None:
+            return message(QT_TR_NOOP("readings typed or edited in AngleBench after {project} "
+                                      "was saved (not the readings in that file)"),
+                           project=project)
+        return message(QT_TR_NOOP("{source}; changed in AngleBench after {project} was saved "
+                                  "(not the readings in that file)"),
+                       project=project, source=source)
     if source is None:
         return project
     return message(QT_TR_NOOP("{project}: {source}"), project=project, source=source)
+
+
+def source_stated(statement: ReadingsStatement) -> str:
+    """The source part of ``statement``'s "Readings:" line (:func:`readings_origin`'s
+    ``source``): the project file and where its readings came from, or where they came
+    from, or what a register's record named, or :data:`TYPED`."""
+    source = sheet_source(statement.origin, statement.edited, list(statement.pasted),
+                          statement.row_count, project=statement.project)
+    if statement.project:
+        return in_project(statement.project, source, statement.unsaved)
+    return source or statement.named or TYPED
+
+
+def stated(statement: ReadingsStatement) -> str:
+    """``statement``'s "Readings:" line, a :class:`~models.messages.Message` that a
+    certificate words in its own language(s)."""
+    return readings_origin(source_stated(statement), statement.captured, statement.row_count)
 
 
 def filled_rows(rows: Sequence[Sequence[str]]) -> list[int]:

@@ -122,17 +122,19 @@ def positioning_budget(result: PositioningResult, metadata: CertificateMetadata,
     if result.without_scatter and result.readings_step is None:
         raise MetadataError(message(QT_TR_NOOP(
             "the readings of every target came out identical in each direction and show no "
-            "step of their display: their repeatability, part of U, cannot be told; no "
-            "certificate is issued")))
+            "step of their display: their repeatability, part of U, cannot be told, so U "
+            "cannot be stated")))
     for name, _, s, n in points:
         once = result.positions[(n < 2) | ~np.isfinite(s)]
         if once.size:
             raise MetadataError(message(
+                # what is refused (a certificate, the results) the caller says (day review
+                # 67 F9: an export of results was refused with "no certificate is issued")
                 QT_TR_NOOP("target(s) {targets} forward were approached fewer than twice: their "
-                           "repeatability, part of U, is unknown; no certificate is issued")
+                           "repeatability, part of U, is unknown, so U cannot be stated")
                 if name == "up" else
                 QT_TR_NOOP("target(s) {targets} backward were approached fewer than twice: their "
-                           "repeatability, part of U, is unknown; no certificate is issued"),
+                           "repeatability, part of U, is unknown, so U cannot be stated"),
                 targets=", ".join(f"{t:g}" for t in once)))
     # a target whose runs read alike while the others scatter: the pooled s (models
     # .positioning.model.PositioningResult.repeatability), not 0

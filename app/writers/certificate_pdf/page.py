@@ -7,7 +7,7 @@ from fpdf import FPDF
 from fpdf.enums import XPos, YPos
 
 from app.writers.certificate_pdf.fonts import CJK_FONT, FONT, _latin_coverage, font_files
-from app.writers.certificate_pdf.line_breaks import _long_word, _mostly_cjk, _units
+from app.writers.certificate_pdf.line_breaks import _CLOSING, _long_word, _mostly_cjk, _units
 from app.writers.certificate_pdf.wording import _say
 from models.messages import QT_TR_NOOP, message
 
@@ -15,6 +15,11 @@ PAGE_TOTAL_ALIAS = "{nb}"
 INK = (20, 20, 20)
 GREY = (110, 110, 110)
 RULE = (170, 170, 170)
+
+
+#: the marks that close what comes before them (the Chinese closing ones, and the Latin
+#: ones that close a clause or a bracket): never alone on a line
+_TRAILING = "".join(sorted(_CLOSING | set(")]},.;:!?")))
 
 
 class PageFrame(FPDF):
@@ -143,8 +148,11 @@ class PageFrame(FPDF):
                                 new_x=XPos.LMARGIN, new_y=YPos.NEXT)
 
     def _wrapped(self, text: str, width: float, size: float, style: str = "") -> str:
-        """``text`` broken into lines of at most ``width`` mm where :func:`_units` allows
-        (a unit wider than a line is left to fpdf2's character wrap)."""
+        """``text`` broken into lines of at most ``width`` mm where :func:`_units` allows. A
+        unit wider than a line that is one word and the closing marks after it (a SHA-256
+        and its "），") has the word on its line and the marks begin the next, with what
+        follows (day review 67 F9: fpdf2's character wrap left "），" alone on a line);
+        another unit wider than a line is left to fpdf2's character wrap."""
         lines = []
         for paragraph in text.split("\n"):
             line = ""
@@ -154,6 +162,11 @@ class PageFrame(FPDF):
                     line = unit.lstrip()
                 else:
                     line += unit
+                word = line.rstrip().rstrip(_TRAILING)
+                if word.strip() and word != line.rstrip() and " " not in word.strip() \
+                        and self.text_width(line.rstrip(), size, style) > width:
+                    lines.append(word)
+                    line = line[len(word):].lstrip()
             lines.append(line.rstrip())
         self.set_font(FONT, "", size)  # text_width() leaves the last run's font selected
         return "\n".join(lines)

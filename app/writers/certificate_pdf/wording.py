@@ -10,12 +10,14 @@ from collections.abc import Callable
 from models.certificate.document import CertificateDocument
 from models.messages import JOINS, Message, in_language, joined, message, separated, translator
 
-#: the certificate's fixed words in Chinese, metrology terms as JJF 1001-2011 names them
+#: the certificate's fixed words in Chinese, metrology terms as JJF 1001-2011 names them;
+#: other words as the window and the register say them (day review 67 F9: the register
+#: listed 制造商 where the certificate printed 制造单位)
 CHINESE = {
     "Calibration certificate": "校准证书", "Test report": "检测报告",
     "Certificate number": "证书编号", "Date of issue": "签发日期", "Laboratory": "校准机构",
     "Accreditation": "认可", "Customer": "委托方", "Item under test": "被校准对象",
-    "Manufacturer": "制造单位", "Serial number": "出厂编号",
+    "Manufacturer": "制造商", "Serial number": "出厂编号",
     "Grade / specification": "准确度等级/技术指标", "Date of calibration": "校准日期",
     "Environment": "环境条件", "Readings": "原始记录",
     "Reference standards and traceability": "计量标准及计量溯源性", "Method": "校准方法",

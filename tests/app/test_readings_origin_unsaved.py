@@ -1,0 +1,143 @@
+"""Readings changed in the window after their project file was saved (or recovered from
+its autosave) are not said to be that file's (day review 67 F4: AB-2026-0002, issued from
+the recovered, unsaved job.anglebench.json, began "job.anglebench.json: imported from …"
+while the file held 11.46 where the certificate's readings held 11.50)."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+
+import pytest
+from PySide6.QtCore import QCoreApplication, QEvent, QSettings
+from PySide6.QtWidgets import QMessageBox
+
+from models.certificate.metadata import CertificateMetadata
+
+pytestmark = pytest.mark.slow  # windows, each analysing the polygon's readings
+
+JOB = "job.anglebench.json"
+CHANGED = f"changed in AngleBench after {JOB} was saved (not the readings in that file)"
+
+
+@pytest.fixture
+def make_window(qtbot, tmp_path):
+    from app.main_window import MainWindow
+    from models.project.recovery import RecoveryStore
+
+    made = []
+
+    def factory():
+        settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
+        window = MainWindow(settings=settings, recovery=RecoveryStore(tmp_path / "recovery"))
+        window.told = []
+        window.tell = lambda title, text: window.told.append(text)
+        window.ask = lambda *a: QMessageBox.StandardButton.Discard
+        window.projects.view.ask_recover = lambda name, when: True
+        qtbot.addWidget(window)
+        made.append(window)
+        return window
+
+    yield factory
+    for window in made:
+        window.projects.autosave_timer.stop()
+        window.capture_panel.close()
+        window.deleteLater()
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+
+
+def _polygon(window, qtbot):
+    presenter = window.presenter("polygon")
+    window.tabs.setCurrentIndex(window.presenters.index(presenter))
+    qtbot.waitUntil(lambda: not presenter.analysis_pending, timeout=20000)
+    return presenter
+
+
+def _line(window, presenter) -> str:
+    """The "Readings:" line a certificate of ``presenter``'s readings prints."""
+    return str(window._readings_line(presenter))
+
+
+def _killed(window) -> None:
+    """The window dies (kill -9) after an autosave: its lock goes with the process."""
+    window.projects.autosave()
+    os.close(window.projects.recovery._lock_fd)
+    window.projects.recovery._lock_fd = None
+    window.projects.autosave_timer.stop()
+
+
+def _set_up_changed(presenter) -> None:
+    """A set-up field changed (one undo step that changes no reading)."""
+    roll = float(presenter.settings["ac_roll_arcmin"])
+    presenter.view.set_settings({**presenter.settings, "ac_roll_arcmin": roll + 1.0})
+    presenter.settings_edited()
+    assert presenter.is_modified and presenter.settings["ac_roll_arcmin"] == roll + 1.0
+
+
+def _pdf_text(path) -> str:
+    if shutil.which("pdftotext") is None:
+        pytest.fail("pdftotext is missing: apt-get install poppler-utils (.ci/run does)")
+    out = subprocess.run(["pdftotext", "-raw", "-enc", "UTF-8", str(path), "-"],
+                         capture_output=True, text=True, check=True).stdout
+    return "".join(out.split())
+
+
+def test_readings_changed_after_the_save_are_not_the_files(make_window, qtbot, tmp_path,
+                                                           samples_dir):
+    window = make_window()
+    polygon = _polygon(window, qtbot)
+    csv = tmp_path / "bench_run_0512.csv"
+    csv.write_bytes((samples_dir / polygon.kind.sample_file).read_bytes())
+    digest = hashlib.sha256(csv.read_bytes()).hexdigest()
+    polygon.import_file(csv)
+    imported = f"imported from bench_run_0512.csv (SHA-256 {digest})"
+    path = tmp_path / JOB
+    assert window.projects.save_to(path), window.told
+    assert _line(window, _polygon(window, qtbot)) == f"{JOB}: {imported}"
+    _set_up_changed(polygon)  # the readings are still the file's
+    assert _line(window, _polygon(window, qtbot)) == f"{JOB}: {imported}"
+    column = polygon.sheet.column_index("ac_x_arcsec")
+    saved = polygon.sheet.text(9, column)
+    changed = f"{float(saved) + 0.04:.2f}"
+    polygon.table_model.set_cells([(9, column, changed)])
+    edited = f"{imported}, edited in AngleBench; {CHANGED}"
+    assert _line(window, _polygon(window, qtbot)) == edited
+    polygon.undo_stack.undo()  # the file's readings again
+    assert _line(window, _polygon(window, qtbot)) == f"{JOB}: {imported}"
+    polygon.undo_stack.redo()
+
+    # recovered after a crash: still not the file's (which holds the value saved)
+    _killed(window)
+    survivor = make_window()
+    assert survivor.projects.offer_recovery()
+    recovered = _polygon(survivor, qtbot)
+    assert survivor.projects.path == path
+    assert recovered.sheet.text(9, column) == changed
+    stored = json.loads(path.read_text(encoding="utf-8"))["workbenches"]["polygon"]["rows"]
+    assert stored[9][column] == saved
+    assert _line(survivor, recovered) == edited
+
+    # the certificate says so
+    data = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    data.update({"certificate_number": "", "language": "en", "example": True})
+    survivor.certificates.edit_details = lambda shown: CertificateMetadata.from_dict(data)
+    survivor.certificates.view.confirm_standards = lambda warnings: True
+    survivor.certificates.view.confirm_test_report = lambda why: True
+    survivor.certificates.view.choose_save_path = (
+        lambda title, suggested, kinds: str(tmp_path / "cert.pdf"))
+    assert survivor.export_certificate(), survivor.told
+    text = _pdf_text(tmp_path / "cert.pdf")
+    assert "".join(edited.split()) in text
+    assert f"Readings:{JOB}" not in text
+
+    # saved: the file's again; a set-up changed, then a crash: still the file's readings
+    assert survivor.projects.save_to(path), survivor.told
+    assert _line(survivor, recovered) == f"{JOB}: {imported}, edited in AngleBench"
+    _set_up_changed(recovered)
+    _killed(survivor)
+    third = make_window()
+    assert third.projects.offer_recovery()
+    assert _line(third, _polygon(third, qtbot)) == f"{JOB}: {imported}, edited in AngleBench"
