@@ -1712,7 +1712,7 @@
     </message>
     <message>
         <source>Replacing {number}</source>
-        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the lab&apos;s DCC settings, kept with the lab defaults (paths only: never a key&apos;s content): PTB&apos;s schema folder (empty: not validated), the signing key and its X.509 certificate (PEM files; empty: the environment&apos;s, else unsigned), the certificate a signature read in is checked against (empty: the environment&apos;s) the pending amendment or replacement changed (the window shows it: rev62 F3) the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U) the lab defaults were saved (the main window redraws every workbench&apos;s plots: their U bands are drawn with the details the certificate would use, the defaults in)</extracomment>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the lab&apos;s DCC settings, kept with the lab defaults (paths only: never a key&apos;s content): PTB&apos;s schema folder (empty: not validated), the signing key and its X.509 certificate (PEM files; empty: the environment&apos;s, else unsigned), the certificate a signature read in is checked against (empty: the environment&apos;s) the &quot;Readings:&quot; line of the certificate being asked for, which its details dialog shows (&quot;&quot; none) the pending amendment or replacement changed (the window shows it: rev62 F3) the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U) the lab defaults were saved (the main window redraws every workbench&apos;s plots: their U bands are drawn with the details the certificate would use, the defaults in)</extracomment>
         <translation>正在替代 {number}</translation>
     </message>
     <message>
@@ -1814,6 +1814,10 @@
     <message>
         <source>CSV (*.csv);;Excel workbook (*.xlsx)</source>
         <translation>CSV (*.csv);;Excel 工作簿 (*.xlsx)</translation>
+    </message>
+    <message>
+        <source>{path}: {reason}. No results were written.</source>
+        <translation>{path}：{reason}。未写出任何结果。</translation>
     </message>
     <message>
         <source>Results written to {path}</source>
@@ -2307,7 +2311,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>{lock} is the lock of a save that ended {minutes} minutes ago, but it belongs to user {owner} and cannot be removed from here ({error}). Nothing was written; your readings are still here. Ask {owner} or an administrator to delete {lock}, then save again, or save under another name (File › Save as).</source>
-        <extracomment>… and so is a raw capture of more frames than this (a day&apos;s capture, 2 M frames and 66 MB, held the window 0.5 … 3 s at every autosave: #62 review F6); a few minutes of frames write in the GUI thread in well under the 10 ms a repaint may wait files that may be dropped on the window: readings, or a project (.json)</extracomment>
+        <extracomment>… and so is a raw capture of more frames than this (a day&apos;s capture, 2 M frames and 66 MB, held the window 0.5 … 3 s at every autosave: #62 review F6); a few minutes of frames write in the GUI thread in well under the 10 ms a repaint may wait files that may be dropped on the window: readings, or a project (.json) an autosave&apos;s detail: the keys of the workbenches whose rows were changed after the project file was saved (the file is then not named as their source: day review 67 F4)</extracomment>
         <translation>{lock} 是 {minutes} 分钟前已结束的一次保存留下的锁，但它属于用户 {owner}，无法从这里删除（{error}）。未写入任何内容；您的读数仍在。请 {owner} 或管理员删除 {lock} 后再保存，或以其他名称保存（文件 › 另存为）。</translation>
     </message>
     <message>
@@ -3479,6 +3483,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Page {page} of {pages}</source>
+        <extracomment>the marks that close what comes before them (the Chinese closing ones, and the Latin ones that close a clause or a bracket): never alone on a line</extracomment>
         <translation>第 {page} 页 共 {pages} 页</translation>
     </message>
     <message>
@@ -3826,6 +3831,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>从所选计量标准的数字校准证书（DCC XML）填入其证书编号、不确定度和有效期至；未选中时新增一行</translation>
     </message>
     <message>
+        <source>Readings, as the certificate will say:</source>
+        <translation>原始记录（证书上将这样写明）：</translation>
+    </message>
+    <message>
+        <source>Where the readings came from, as the certificate prints it in its language. To change it, change the readings (or save the project) before exporting.</source>
+        <translation>读数的来源，按证书所用语言照证书上的写法显示。如需改变，请在导出前更改读数（或保存项目）。</translation>
+    </message>
+    <message>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -3953,7 +3966,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Cannot save the image</source>
-        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41) the row the capture sends the next take to (the capture panel&apos;s, while its instruments are connected to this workbench; None: none): without an entry plan, it waits for its reading as the plan&apos;s row does (day review 64 P4)</extracomment>
+        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) the rows were changed in a window after the project file was last saved, before this one took them (recovered from its autosave: :meth:`readings_unsaved`) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41) the row the capture sends the next take to (the capture panel&apos;s, while its instruments are connected to this workbench; None: none): without an entry plan, it waits for its reading as the plan&apos;s row does (day review 64 P4)</extracomment>
         <translation>无法保存图像</translation>
     </message>
     <message>
@@ -4628,18 +4641,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>最大反向差</translation>
     </message>
     <message>
-        <source>the readings of every target came out identical in each direction and show no step of their display: their repeatability, part of U, cannot be told; no certificate is issued</source>
-        <translation>各目标位置在每个方向上的读数完全相同，且看不出其显示的步距：其重复性（U 的一部分）无法得知；不出具证书</translation>
-    </message>
-    <message>
-        <source>target(s) {targets} forward were approached fewer than twice: their repeatability, part of U, is unknown; no certificate is issued</source>
-        <translation>目标 {targets} 正向趋近少于两次：其重复性（U 的组成部分）未知；不签发证书</translation>
-    </message>
-    <message>
-        <source>target(s) {targets} backward were approached fewer than twice: their repeatability, part of U, is unknown; no certificate is issued</source>
-        <translation>目标 {targets} 反向趋近少于两次：其重复性（U 的组成部分）未知；不签发证书</translation>
-    </message>
-    <message>
         <source>reading</source>
         <extracomment>what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO), in the words of the certificate&apos;s budget (models.certificate.document.reference_standard_components)</extracomment>
         <translation>读数</translation>
@@ -4651,6 +4652,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>s of the runs at each target and direction, n = {n}; ν of the fewest runs</source>
         <translation>各目标及方向上各次测量的 s，n = {n}；ν 取测量次数最少者</translation>
+    </message>
+    <message>
+        <source>the readings of every target came out identical in each direction and show no step of their display: their repeatability, part of U, cannot be told, so U cannot be stated</source>
+        <translation>各目标位置在每个方向上的读数完全相同，且看不出其显示的步距：其重复性（U 的一部分）无法得知，因此无法给出 U</translation>
+    </message>
+    <message>
+        <source>target(s) {targets} forward were approached fewer than twice: their repeatability, part of U, is unknown, so U cannot be stated</source>
+        <translation>目标 {targets} 正向趋近少于两次：其重复性（U 的组成部分）未知，因此无法给出 U</translation>
+    </message>
+    <message>
+        <source>target(s) {targets} backward were approached fewer than twice: their repeatability, part of U, is unknown, so U cannot be stated</source>
+        <translation>目标 {targets} 反向趋近少于两次：其重复性（U 的组成部分）未知，因此无法给出 U</translation>
     </message>
     <message>
         <source>{note}; at {targets}, where every run read alike, the s pooled over the targets ({s}), not 0</source>
@@ -11629,6 +11642,14 @@ Replace it?</source>
         <translation>{source}；第 {rows} 行（共 {count} 行中的 {pasted} 行）粘贴到 AngleBench 中</translation>
     </message>
     <message>
+        <source>readings typed or edited in AngleBench after {project} was saved (not the readings in that file)</source>
+        <translation>{project} 保存后在 AngleBench 中录入或编辑的读数（不是该文件中的读数）</translation>
+    </message>
+    <message>
+        <source>{source}; changed in AngleBench after {project} was saved (not the readings in that file)</source>
+        <translation>{source}；{project} 保存后又在 AngleBench 中更改过（不是该文件中的读数）</translation>
+    </message>
+    <message>
         <source>{project}: {source}</source>
         <translation>{project}：{source}</translation>
     </message>
@@ -11675,7 +11696,7 @@ Replace it?</source>
     </message>
     <message>
         <source>value: the figure as the standard computes it from the readings; interval_low … interval_high: the coverage interval of the TRUE figure (of the true mean deviations and standard deviations of the axis as this measuring instrument reads it: R and A, and their one-direction forms, are made of the standard deviations and include the instrument&apos;s own repeatability) at coverage_probability. A largest value or a range over the targets (R, A, E, M, B) is biased high by the scatter, so the interval may lie below the value, and it reaches 0 where the scatter could hide the whole figure</source>
-        <extracomment>bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability) figures that may be negative (the others are clipped at 0) The coverage the study reached for each figure at 95.45 % asked for, where below it: figure_coverage.achieved_probability, the highest probability (95.45 % or a multiple of 0.5 %) that the pooled coverage reaches and that none of the axes falls short of beyond the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1, 2 × the signal × constant or varying (96 axes), each test through the whole analysis. 0.8.2 (the ranges&apos; triple-goal world, B&apos;s upper bound, the axes of 36 targets and of repeatability 1 ×): figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391 to 394, 80 tests an axis, pooled; for the figures whose interval 0.8.2 did not change, the lower of that and 0.7.0&apos;s derivation (the 48 axes of 12 and 72 targets, 40 tests an axis). Pooled: E 95.0 % (its lowest axis, a rough curve at 36 targets and repeatability 0.1 varying along the axis, 68 of 80), E↑ 94.8 % (a real curve at 12 targets, 67 of 80), E↓ 95.0 %, M and Pa 94.6 % (a spike at 72 targets, repeatability 1 × varying, 68 of 80), A 98.0 % (69 of 80 at the same axis as E), B and U 98.8 % (0.8.14, B&apos;s lower end from the mean reversal: 99.2 %, the lowest axis 37 of 40, seeds 391–392); the others 96.6–98.6 %. R↑ and R↓ stated 93.5 % until their intervals took the per-target chi-square bounds (:func:`_repeatability_bounds`), which hold at the probability asked for. The figure&apos;s interval states this one instead. Before 0.8.2, B stated 93 % and one axis (a rough reversal whose largest value stands clear of the others) reached 59 of 80; before 0.7.0&apos;s union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72 targets) and R 72 % on a reversal changing at random from target to target. what a figure&apos;s value and interval are, beside them in the JSON: a value above its own interval is no error (an audit counted R↑ above its interval in 82 % of 2-pass runs)</extracomment>
+        <extracomment>bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability) figures that may be negative (the others are clipped at 0) The coverage the study reached for each figure at 95.45 % asked for, where below it: figure_coverage.achieved_probability, the highest probability (95.45 % or a multiple of 0.5 %) that the pooled coverage reaches and that none of the axes falls short of beyond the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1, 2 × the signal × constant or varying (96 axes), each test through the whole analysis. 0.8.2 (the ranges&apos; triple-goal world, B&apos;s upper bound, the axes of 36 targets and of repeatability 1 ×): figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391 to 394, 80 tests an axis, pooled; for the figures whose interval 0.8.2 did not change, the lower of that and 0.7.0&apos;s derivation (the 48 axes of 12 and 72 targets, 40 tests an axis). Pooled: E 95.0 % (its lowest axis, a rough curve at 36 targets and repeatability 0.1 varying along the axis, 68 of 80), E↑ 94.8 % (a real curve at 12 targets, 67 of 80), E↓ 95.0 %, M and Pa 94.6 % (a spike at 72 targets, repeatability 1 × varying, 68 of 80), A 98.0 % (69 of 80 at the same axis as E), B and U 98.8 % (0.8.14, B&apos;s lower end from the mean reversal: 99.2 %, the lowest axis 37 of 40, seeds 391–392); the others 96.6–98.6 %. R↑ and R↓ stated 93.5 % until their intervals took the per-target chi-square bounds (:func:`_repeatability_bounds`), which hold at the probability asked for; A, A↑, A↓ (93.5 %, 94.5 %) and P (94.5 %) likewise until theirs took the per-target noncentral t bounds (:func:`_band_span_bounds`: with one target&apos;s σ × 2 or × 3, A had covered 45–70 of 80 tests at 3 and 5 runs, 12 and 36 targets, #39). The figure&apos;s interval states this one instead. Before 0.8.2, B stated 93 % and one axis (a rough reversal whose largest value stands clear of the others) reached 59 of 80; before 0.7.0&apos;s union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72 targets) and R 72 % on a reversal changing at random from target to target. what a figure&apos;s value and interval are, beside them in the JSON: a value above its own interval is no error (an audit counted R↑ above its interval in 82 % of 2-pass runs)</extracomment>
         <translation>value：按标准由读数计算的指标；interval_low … interval_high：真实指标（由本测量仪器所读出的轴系的真实平均偏差和标准偏差计算：R 和 A 及其单向形式由标准偏差构成，包含该仪器自身的重复性）在 coverage_probability 下的包含区间。各目标上的最大值或极差（R、A、E、M、B）受分散影响偏高，因此区间可能位于数值之下；在分散可能掩盖整个指标时下限为 0</translation>
     </message>
     <message>
