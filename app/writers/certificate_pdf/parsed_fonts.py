@@ -78,10 +78,13 @@ def add_parsed_font(pdf: FPDF, family: str, style: str, path: str | Path) -> Non
 
 
 def _file_has_notdef(font: TTFFont) -> bool:
-    """Whether the font file has its own ``.notdef`` glyph (fpdf2 draws one into the parsed
-    tables where it has none, which a font opened again from the file would lack)."""
-    with ttLib.TTFont(font.ttffile, lazy=True, fontNumber=font.collection_font_number) as fresh:
-        return "glyf" not in fresh or ".notdef" in fresh.getGlyphOrder()
+    """Whether the font file has its own ``.notdef`` glyph, where the OpenType specification
+    puts it, first. fpdf2 draws one into the parsed tables where the file has none, which a
+    font opened again from the file would lack; the glyph it adds goes last in the glyph
+    order, which add_font has read already (opening the file again to look cost 0.2–0.4 s
+    for the CJK font: more than a certificate that prints only once saves)."""
+    order = font.ttfont.getGlyphOrder()
+    return bool(order) and order[0] == ".notdef"
 
 
 def _kept(font: TTFFont) -> dict[str, Any]:

@@ -139,3 +139,43 @@ def test_every_slot_of_fpdf2s_font_is_kept_or_made_for_each_document():
     kept, own = set(parsed_fonts._KEPT), set(parsed_fonts._PER_DOCUMENT)
     assert not kept & own and kept | own == parsed_fonts.KNOWN_SLOTS
     assert set(TTFFont.__slots__) == parsed_fonts.KNOWN_SLOTS
+
+
+def _font_without_notdef(path: Path) -> None:
+    """A TrueType font of a space and a square "A", with no ``.notdef`` glyph."""
+    from fontTools.fontBuilder import FontBuilder
+    from fontTools.pens.ttGlyphPen import TTGlyphPen
+
+    builder = FontBuilder(1000, isTTF=True)
+    builder.setupGlyphOrder(["space", "A"])
+    builder.setupCharacterMap({0x20: "space", 0x41: "A"})
+    pen = TTGlyphPen(None)
+    pen.moveTo((100, 0))
+    pen.lineTo((100, 700))
+    pen.lineTo((500, 700))
+    pen.lineTo((500, 0))
+    pen.closePath()
+    builder.setupGlyf({"space": TTGlyphPen(None).glyph(), "A": pen.glyph()})
+    builder.setupHorizontalMetrics({"space": (300, 0), "A": (600, 100)})
+    builder.setupHorizontalHeader(ascent=800, descent=-200)
+    builder.setupNameTable({"familyName": "Square", "styleName": "Regular"})
+    builder.setupOS2()
+    builder.setupPost()
+    builder.save(str(path))
+
+
+def test_a_font_fpdf2_draws_a_notdef_into_is_parsed_for_every_document(parses, tmp_path):
+    """fpdf2 draws a missing ``.notdef`` into the tables it parsed: a font made again from
+    the file would lack it, so such a font is not kept."""
+    from app.writers.certificate_pdf.parsed_fonts import add_parsed_font
+
+    path = tmp_path / "square.ttf"
+    _font_without_notdef(path)
+    for _ in range(2):
+        pdf = FPDF()
+        add_parsed_font(pdf, "square", "", path)
+        pdf.add_page()
+        pdf.set_font("square", size=12)
+        pdf.cell(text="A A")
+        assert _pdffonts(bytes(pdf.output()), tmp_path) == {"Square": "yes"}
+    assert parses == ["square.ttf", "square.ttf"]
