@@ -8,6 +8,7 @@ from fpdf.enums import XPos, YPos
 
 from app.writers.certificate_pdf.fonts import CJK_FONT, FONT, _latin_coverage, font_files
 from app.writers.certificate_pdf.line_breaks import _CLOSING, _long_word, _mostly_cjk, _units
+from app.writers.certificate_pdf.parsed_fonts import add_parsed_font
 from app.writers.certificate_pdf.wording import _say
 from models.messages import QT_TR_NOOP, message
 
@@ -33,10 +34,11 @@ class PageFrame(FPDF):
         self.say = _say(language)  # how a text is printed ("zh": translated)
         self.language = language
         fonts = font_files()
-        self.add_font(FONT, "", str(fonts["regular"]))
-        self.add_font(FONT, "B", str(fonts["bold"]))
-        if cjk or language == "zh":  # the CJK font costs ~0.3 s to load and subset
-            self.add_font(CJK_FONT, "", str(fonts["cjk"]))
+        # each file parsed once a process, each certificate its own fonts (parsed_fonts)
+        add_parsed_font(self, FONT, "", fonts["regular"])
+        add_parsed_font(self, FONT, "B", fonts["bold"])
+        if cjk or language == "zh":  # the CJK font costs ~0.1 s to subset (and, once, to load)
+            add_parsed_font(self, CJK_FONT, "", fonts["cjk"])
             self.set_fallback_fonts([CJK_FONT], exact_match=False)
         self.set_margins(18, 16, 18)
         self.set_auto_page_break(True, margin=20)
