@@ -3,19 +3,17 @@ many tests (``axis_figures``, taken in blocks, targets first) and the triple-goa
 (``_ensemble``, its steps' changes compared a batch at a time) are, bit for bit, what the
 plain computation written here gives: numpy's reductions along each test's row of targets,
 and the EM of Laird (1978) one step after the other, each step's change tested as it is
-made. Each also takes a fraction of the plain computation's processor time (measured here,
-in turn, best of several: the machine's load falls on both)."""
+made. Their processor time against the plain computation's is a benchmark
+(tests/benchmarks/test_figure_intervals_speed.py), not a test here."""
 
 from __future__ import annotations
-
-import time
 
 import numpy as np
 import pytest
 
 from models.uncertainty.figure_intervals import _ensemble, axis_figures
 
-pytestmark = pytest.mark.slow  # the timings run each computation several times
+pytestmark = pytest.mark.slow  # the plain EM makes its 3000 steps in Python
 
 
 def _plain_figures(stats: dict[str, tuple[np.ndarray, np.ndarray]]) -> dict[str, np.ndarray]:
@@ -86,34 +84,6 @@ def test_one_test_given_as_a_row_keeps_its_figures_as_numbers():
         assert np.ndim(got[key]) == 0 and got[key] == value, key
 
 
-def _cpu_ratio(fast, plain, repeats: int) -> float:
-    """Best processor time of ``fast`` over the best of ``plain``, run in turn."""
-    best = [float("inf"), float("inf")]
-    for _ in range(repeats):
-        for i, f in enumerate((fast, plain)):
-            start = time.process_time()
-            f()
-            best[i] = min(best[i], time.process_time() - start)
-    return best[0] / best[1]
-
-
-def test_the_figures_of_2000_tests_take_under_0_45_of_the_plain_reductions_time():
-    """2000 tests of 12 targets (the bootstrap's draws of the bundled sample's size): 0.17
-    of the plain reductions' time on a 2-core machine under a load of 7 (0.27 and 0.33 at
-    72 and 24 targets); before, 0.73–0.78 (0.6–0.62 at 72 and 24)."""
-    stats = _draws((2000,), 12, seed=5)
-
-    def fast():
-        for _ in range(10):
-            axis_figures(stats)
-
-    def plain():
-        for _ in range(10):
-            _plain_figures(stats)
-
-    assert _cpu_ratio(fast, plain, repeats=7) < 0.45
-
-
 def _plain_ensemble(values: np.ndarray, se2: np.ndarray, grid_size: int = 80,
                     steps: int = 3000) -> tuple[np.ndarray, int]:
     """Shen & Louis's triple-goal estimates, the true values' distribution by Laird's EM on
@@ -169,12 +139,3 @@ def test_the_triple_goal_world_is_the_plain_ems_bit_for_bit():
         assert got.dtype == expected.dtype and got.tobytes() == expected.tobytes(), values
     # the cases reach every way out: all the steps, an early stop off a batch's end, none
     assert 3000 in made and 0 in made and any(0 < n < 3000 and n % 64 for n in made), made
-
-
-def test_the_triple_goal_world_takes_under_0_85_of_the_plain_ems_time():
-    """A curve of 12 targets that makes all 3000 steps: 0.59 of the plain EM's time on a
-    2-core machine under a load of 7; before, 1.04."""
-    values, se2 = _ensemble_cases()[0]
-    assert _plain_ensemble(values, se2)[1] == 3000
-    assert _cpu_ratio(lambda: _ensemble(values, se2),
-                      lambda: _plain_ensemble(values, se2), repeats=5) < 0.85
