@@ -538,9 +538,9 @@ def test_every_text_cell_of_a_bilingual_dcc_is_in_both_languages(issued):
 
 @needs_schema
 def test_a_tilt_direction_not_identified_is_said_in_each_language_of_the_dcc(tmp_path, capsys):
-    """A polygon square on its shaft (ψ = 0, one set each way), issued in zh+en: the row of ω
-    says "not identified" in English and in Chinese (0.8.8: English only), and the document
-    is valid."""
+    """A polygon square on its shaft (ψ = 0, one set, the σ of a reading stated: one set
+    cannot evaluate it, 0.8.17), issued in zh+en: the row of ω says "not identified" in
+    English and in Chinese (0.8.8: English only), and the document is valid."""
     from tests.conftest import SAMPLES
     from tests.polygon_sets_simulator import Bench, write_readings
 
@@ -554,7 +554,7 @@ def test_a_tilt_direction_not_identified_is_said_in_each_language_of_the_dcc(tmp
     pdf, xml = tmp_path / "c.pdf", tmp_path / "c.xml"
     code, said = _run(["analyze", "polygon", str(readings), "--metadata", str(meta),
                        "--certificate", str(pdf), "--dcc", str(xml), "--dcc-schema",
-                       str(SCHEMA)], capsys)
+                       str(SCHEMA), "--reading-noise-arcsec", "0.10"], capsys)
     assert code == 0, said
     tree = etree.parse(str(xml))
     cells = [{c.get("lang"): c.text for c in q.iterfind("dcc:noQuantity/dcc:content", NS)}
