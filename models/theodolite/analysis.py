@@ -239,15 +239,18 @@ def _intervals_line(result: TheodoliteResult) -> str:
     """The ISO 230-2 figures' coverage intervals (the stated standards' u not known here:
     the readings alone, at 95.45 %), or why there are none."""
     from models.certificate.metadata import CertificateMetadata
-    from models.theodolite.figures import figure_intervals_withheld, theodolite_figure_intervals
+    from models.theodolite.figures import (
+        figure_intervals_withheld,
+        readings_theodolite_figure_intervals,
+    )
     from models.theodolite.report import theodolite_budget
     from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
 
     withheld = figure_intervals_withheld(result)
     if withheld is not None:
         return message(QT_TR_NOOP("No coverage intervals: {reason}"), reason=message(withheld))
-    intervals = theodolite_figure_intervals(result, theodolite_budget(result,
-                                                                      CertificateMetadata()))
+    intervals = readings_theodolite_figure_intervals(
+        result, theodolite_budget(result, CertificateMetadata()))
     parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %, from the readings alone; a "
                                       "certificate adds its stated standards' u): "),
                            p=f"{100 * DEFAULT_COVERAGE_PROBABILITY:.2f}")]
