@@ -47,7 +47,7 @@ from models.certificate.document import (
     table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.messages import QT_TR_NOOP, listed, message
+from models.messages import QT_TR_NOOP, Message, listed, message
 from models.positioning import KEY, TITLE
 from models.positioning.decided_quantity import decided_half_range
 from models.positioning.model import (
@@ -377,7 +377,7 @@ def _runs(result: PositioningResult) -> dict[str, np.ndarray]:
 
 
 def withheld_figure_reasons(result: PositioningResult, budget: UncertaintyBudget | None = None
-                            ) -> dict[str, str]:
+                            ) -> dict[str, Message]:
     """Why a repeatability figure (R, R↑, R↓, Ps_max) has no interval where the others have
     theirs, by figure: every target approached at most twice in a direction
     (models.uncertainty.undetermined_repeatability), quoting the interval withheld (that of

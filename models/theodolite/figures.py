@@ -69,7 +69,7 @@ from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, Message, message
 from models.readings.repeats import RepeatedReadings
 from models.readings.resolution import coarse, readings_step
 from models.theodolite.model import MODEL_INPUT, TheodoliteResult, model_error_modes
@@ -354,7 +354,7 @@ def _passes(result: TheodoliteResult) -> dict[str, np.ndarray]:
 
 def withheld_theodolite_figure_reasons(result: TheodoliteResult, budget: UncertaintyBudget,
                                        stated_u: float = 0.0, pair_factor: float = 2.0
-                                       ) -> dict[str, str]:
+                                       ) -> dict[str, Message]:
     """Why R, R↑ or R↓ has no interval where the other figures have theirs, by figure:
     every θ read at most twice in a direction (two passes: ν = 1,
     models.uncertainty.undetermined_repeatability), quoting the interval withheld (that of

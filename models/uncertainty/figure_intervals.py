@@ -188,7 +188,7 @@ def figures_raised_to_cmc(intervals: Mapping[str, FigureInterval]) -> list[str]:
 
 
 def figure_objects(keys, values: Mapping[str, Any], intervals: Mapping[str, FigureInterval],
-                   cmc_set: bool = False, reasons: Mapping[str, str] | None = None
+                   cmc_set: bool = False, reasons: Mapping[str, Any] | None = None
                    ) -> dict[str, Any]:
     """{figure: {value, interval_low, interval_high, coverage_probability}}; nulls where the
     readings do not determine it. With ``cmc_set`` (the laboratory's CMC holds the

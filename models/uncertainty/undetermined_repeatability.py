@@ -18,7 +18,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, Message, message
 from models.uncertainty.figure_intervals import FigureInterval
 
 __all__ = ["PASSES_UNDETERMINED", "REPEATABILITY_DIRECTIONS", "RUNS_UNDETERMINED",
@@ -40,14 +40,15 @@ PASSES_UNDETERMINED = QT_TR_NOOP(
 
 def undetermined_repeatability(intervals: Mapping[str, FigureInterval],
                                runs: Mapping[str, np.ndarray], reason: str, symbol: str = "\""
-                               ) -> tuple[dict[str, FigureInterval], dict[str, str]]:
+                               ) -> tuple[dict[str, FigureInterval], dict[str, Message]]:
     """``intervals`` without those of the repeatability figures whose σ come from a
     direction in which every target was approached fewer than 3 times (``runs``: each
     direction's approaches per target), and, by figure, why (``reason``: a template of
     {low} and {high}, the interval withheld, its ends printed in ``symbol``)."""
     thin = {name for name, n in runs.items()
             if np.asarray(n).size and int(np.max(np.asarray(n))) < 3}
-    kept, why = dict(intervals), {}
+    kept = dict(intervals)
+    why: dict[str, Message] = {}
     for key, directions in REPEATABILITY_DIRECTIONS.items():
         interval = kept.get(key)
         if interval is None or not any(d in thin for d in directions if d in runs):
