@@ -591,6 +591,10 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
             if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
                 parts.append(f" ({percent_text(iv.probability)} %)")
         out.append(joined(parts))
+        # R, R↑, R↓, Ps_max of two runs: no interval, and why (audit 68 finding 3)
+        out += [message(QT_TR_NOOP("No coverage interval is given for {figure}: {reason}."),
+                        figure=key, reason=reason)
+                for key, reason in withheld_figure_reasons(result).items()]
     elif (withheld := intervals_withheld(result)) is not None:
         out.append(message(QT_TR_NOOP("No coverage intervals: {reason}"),
                            reason=message(withheld)))
