@@ -73,3 +73,12 @@ def test_three_runs_keep_the_repeatability_intervals(tmp_path, capsys):
         figure = data["iso230_2_figures"][key]
         assert figure["interval_low"] is not None and figure["interval_high"] is not None, key
         assert figure["interval_reason"] is None, key
+
+
+def test_two_runs_summary_says_why_R_has_no_interval(tmp_path, capsys):
+    assert main(["analyze", "positioning", str(_csv(2, tmp_path)), "--language", "en"]) == 0
+    out = capsys.readouterr().out
+    intervals = next(line for line in out.splitlines() if line.startswith("Coverage intervals"))
+    assert "R_up " not in intervals and "E " in intervals
+    for key in (*REPEATABILITY, "Ps_max"):
+        assert f"No coverage interval is given for {key}: two runs" in out, out

@@ -48,3 +48,15 @@ def test_three_passes_keep_R_intervals(tmp_path, capsys):
     for key in REPEATABILITY:
         assert figures[key]["interval_low"] is not None, key
         assert figures[key]["interval_reason"] is None, key
+
+
+def test_two_passes_summary_says_why_R_has_no_interval(tmp_path, capsys):
+    text, _ = theodolite_passes_csv("varying", 13, 2, 0.3, np.random.default_rng(6804))
+    csv = tmp_path / "passes2.csv"
+    csv.write_text(text, encoding="utf-8")
+    assert main(["analyze", "theodolite", str(csv), "--language", "en"]) == 0
+    out = capsys.readouterr().out
+    intervals = next(line for line in out.splitlines() if line.startswith("Coverage intervals"))
+    assert " R " not in intervals and "R_up " not in intervals and "E " in intervals
+    for key in REPEATABILITY:
+        assert f"No coverage interval is given for {key}: two passes" in out, out
