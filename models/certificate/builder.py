@@ -138,10 +138,14 @@ class Statistics:
 
     def table(self, conformity, budget: UncertaintyBudget, unit: str,
               uncertainty_withheld: str = "") -> Table:
-        padding = ("",) * (len(self.header) - 3)
-        decided = [(name, value, *padding, note) for name, value, note in
-                   decision_rows(conformity, self.budget or budget, self.points, unit,
-                                 uncertainty_withheld)]
+        if len(self.header) == 5:  # figure, value, coverage interval, probability, note
+            decided = decision_rows(conformity, self.budget or budget, self.points, unit,
+                                    uncertainty_withheld, interval_columns=True)
+        else:
+            padding = ("",) * (len(self.header) - 3)
+            decided = [(name, value, *padding, note) for name, value, note in
+                       decision_rows(conformity, self.budget or budget, self.points, unit,
+                                     uncertainty_withheld)]
         return Table(self.title, self.header, [*self.before, *decided, *self.after])
 
 

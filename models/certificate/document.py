@@ -34,7 +34,8 @@ from models.uncertainty.conformity import (
     significant_decimals,
     uncertainty_decimals,
 )
-from models.uncertainty.rounding import printed_range
+from models.uncertainty.probability_text import percent_text
+from models.uncertainty.rounding import interval_ends, printed_range
 
 __all__ = ["CertificateDocument", "Exact", "decision_rows", "PlotFigure", "PlotSeries", "Table",
            "budget_table", "format_uncertain", "gum_pair", "range_cells", "rounded_cells",
@@ -286,15 +287,31 @@ def resolution_component(metadata: CertificateMetadata, sensitivity,
                                     r=Quantity(r, unit)))]
 
 
+def decided_interval_probability(conformity: Conformity) -> float | None:
+    """The coverage probability of the decided value's interval as its row prints it, the
+    JSON's ``decided_quantity.coverage_probability``: None where no interval is stated (the
+    value alone, or U withheld)."""
+    if not (math.isfinite(conformity.value) and math.isfinite(conformity.expanded)
+            and math.isfinite(conformity.interval_low) and math.isfinite(conformity.interval_high)
+            and math.isfinite(conformity.probability)):
+        return None
+    return float(conformity.probability)
+
+
 def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
-                  points: str, unit: str = "\"", uncertainty_withheld: str = ""
-                  ) -> list[tuple[str, str, str]]:
+                  points: str, unit: str = "\"", uncertainty_withheld: str = "",
+                  interval_columns: bool = False) -> list[tuple[str, ...]]:
     """The statistics rows every certificate has: the decided quantity with its own U,
     and the curve's largest U with its coverage factor (``uncertainty_withheld``: why no U
-    is stated, said in its place)."""
+    is stated, said in its place). The decided interval's own coverage probability is in
+    its row (an audit: a decided "6.0″ −1.1″/+1.0″" at 92.5 % sat above "U (p = 95.45 %)"
+    with no probability of its own): in its name, "Decided quantity (p = 92.5 %)", or with
+    ``interval_columns`` (a table with a coverage interval and a probability column, as
+    positioning's) in those, each row then (name, value, interval, probability, note)."""
     big_u = budget.max_expanded
     digits = uncertainty_decimals(big_u)
-    rows = []
+    rows: list[tuple[str, ...]] = []
+    p_decided = decided_interval_probability(conformity)
     if math.isfinite(conformity.value):
         lower = conformity.expanded_lower
         if math.isfinite(lower) and lower > 0:  # an asymmetric interval, printed as such
@@ -319,17 +336,31 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
                               conformity.quantity], "; ")
         else:
             value = format_uncertain(conformity.value, conformity.expanded, unit)
+            d = significant_decimals(conformity.expanded)
+            low, high = (interval_ends(conformity.interval_low, conformity.interval_high, d)
+                         if d is not None else (math.nan, math.nan))
             note = conformity.quantity
-        rows.append((QT_TR_NOOP("Decided quantity"), value, note))
+        if interval_columns:
+            shown = p_decided is not None and math.isfinite(low) and math.isfinite(high)
+            rows.append((QT_TR_NOOP("Decided quantity"), value,
+                         f"{low:.{d}f}{unit} … {high:.{d}f}{unit}" if shown else "—",
+                         f"{percent_text(p_decided)} %" if shown and p_decided else "", note))
+        elif p_decided is not None:
+            rows.append((message(QT_TR_NOOP("Decided quantity (p = {p} %)"),
+                                 p=percent_text(p_decided)), value, note))
+        else:
+            rows.append((QT_TR_NOOP("Decided quantity"), value, note))
+    padding = ("", "") if interval_columns else ()
     if uncertainty_withheld:
         rows.append((QT_TR_NOOP("Expanded uncertainty U"), message(QT_TR_NOOP("not stated")),
+                     *padding,
                      message(QT_TR_NOOP("the inputs evaluated give {u} at most, but U is "
                                         "incomplete: {reason}"),
                              u=f"{big_u:.{digits}f}{unit}", reason=uncertainty_withheld)))
         return rows
     rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
                          p=f"{100 * budget.probability:.2f}"),
-                 f"{big_u:.{digits}f}{unit}",
+                 f"{big_u:.{digits}f}{unit}", *padding,
                  message(QT_TR_NOOP("largest over the {points}; k = {k} there"),
                          points=message(points), k=f"{budget.coverage_factor:.2f}")))
     return rows

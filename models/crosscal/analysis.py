@@ -23,7 +23,7 @@ from models.crosscal.export import (
     polygon_deviation_rows,
     polygon_deviations,
 )
-from models.crosscal.figures import encoder_figures
+from models.crosscal.figures import ENCODER_FIGURES_NO_INTERVAL, encoder_figures
 from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, Message, joined, lines, message, reason_of
@@ -422,6 +422,8 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
         e = s.encoder_error_arcsec
         out["encoder_error_from_step0_arcsec"] = _list(e - e[0])  # reference "step 0"
         out["encoder_figures_arcsec"] = encoder_figures(result)
+        # plain numbers, no interval: said beside them (the key's meaning kept, #39)
+        out["encoder_figures_arcsec_reason"] = message(ENCODER_FIGURES_NO_INTERVAL)
     return out
 
 

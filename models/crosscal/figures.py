@@ -7,12 +7,23 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP
 from models.uncertainty.iso230 import iso230_evaluate
 
 if TYPE_CHECKING:
     from models.crosscal.analysis import CrossCalResult
 
-__all__ = ["encoder_figures"]
+__all__ = ["ENCODER_FIGURES_NO_INTERVAL", "encoder_figures"]
+
+#: the JSON's ``encoder_figures_arcsec`` (JJF 1115's division error and repeatability, ISO
+#: 230-2's unidirectional figures, the mountings taken as runs): plain numbers, no interval
+#: (audit 68 finding 4: a lab's system could not tell them from calibrated figures); the
+#: reason beside them, ``encoder_figures_arcsec_reason``
+ENCODER_FIGURES_NO_INTERVAL = QT_TR_NOOP(
+    "indicative: no coverage interval evaluated; the figures are as computed from the "
+    "readings (JJF 1115's repeatability and the ISO 230-2 figures take the mountings as repeat "
+    "runs, although they are remountings), and a largest value or a range is biased high by "
+    "the readings' noise; the calibration results are the errors at each step with their U")
 
 
 def encoder_figures(result: CrossCalResult) -> dict[str, float]:

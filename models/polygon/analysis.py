@@ -20,6 +20,7 @@ from models.polygon.budget_inputs import (
     is_set_up_input,
 )
 from models.polygon.indicative_figures import (
+    ISO230_NO_INTERVAL,
     harmonics_reason,
     indicative_figures_json,
     no_interval,
@@ -725,6 +726,8 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
     }
     if len(result.sets) > 1:
         out["iso230_arcsec"] = iso230_figures(result)
+        # plain numbers, no interval: said beside them (the key's meaning kept, #39)
+        out["iso230_arcsec_reason"] = message(ISO230_NO_INTERVAL)
         if result.reversal_arcsec is not None:
             out["reversal_error_arcsec"] = float(np.max(np.abs(result.reversal_arcsec)))
     # B, B̄ and the harmonics as measured, with null intervals and why (day review 66 F4)

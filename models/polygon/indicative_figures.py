@@ -18,7 +18,8 @@ import numpy as np
 from models.messages import QT_TR_NOOP, message, separated
 from models.polygon.model import PolygonResult
 
-__all__ = ["HARMONICS_NO_INTERVAL", "REVERSAL_CONFOUNDED", "REVERSAL_NOT_EVALUATED",
+__all__ = ["HARMONICS_NO_INTERVAL", "ISO230_NO_INTERVAL", "REVERSAL_CONFOUNDED",
+           "REVERSAL_NOT_EVALUATED",
            "harmonics_reason", "indicative_figures_json", "no_interval", "reversal_figures",
            "reversal_reason"]
 
@@ -38,6 +39,15 @@ REVERSAL_NOT_EVALUATED = QT_TR_NOOP(
 HARMONICS_NO_INTERVAL = QT_TR_NOOP(
     "an amplitude is biased high by the readings' noise, as a range is, and its uncertainty "
     "is not evaluated; indicative, not a calibration result")
+
+#: the JSON's ``iso230_arcsec`` (E, M, R, A, B … of the sets, taken as ISO 230-2 runs): plain
+#: numbers, no interval (audit 68 finding 4: a lab's system could not tell them from
+#: calibrated figures); the reason beside them, ``iso230_arcsec_reason``
+ISO230_NO_INTERVAL = QT_TR_NOOP(
+    "indicative: no coverage interval evaluated; the ISO 230-2 figures of the sets (not "
+    "printed on the certificate) are as computed from the readings, each a largest value or "
+    "a range over the faces, biased high by the readings' noise; the calibration results are "
+    "the face deviations with their U")
 
 
 def reversal_reason(result: PolygonResult) -> str | None:

@@ -29,7 +29,9 @@ from models.positioning.report import (
     intervals_withheld,
     positioning_budget,
     positioning_certificate,
+    readings_figure_intervals,
     stated_figure_intervals,
+    withheld_figure_reasons,
 )
 from models.readings.copied_runs import COPIED_RUN, copied_run
 from models.readings.entry_plan import positioning_plan, targets_from_text
@@ -498,12 +500,16 @@ def figures_json(result: PositioningResult, budget=None) -> dict[str, Any]:
     own stated inputs) — the same intervals the certificate prints, held to the laboratory's
     CMC where it is set (each object's ``raised_to_cmc``) — and the probability of that
     budget."""
-    intervals = (figure_uncertainties(result) if budget is None else
+    intervals = (readings_figure_intervals(result) if budget is None else
                  stated_figure_intervals(result, budget))
+    # R, R↑, R↓, Ps_max of two runs: the value, no interval, and why (audit 68 finding 3)
+    reasons = withheld_figure_reasons(result, budget)
     cmc_set = budget is not None and float(budget.floor) > 0
     return {
-        "iso230_2_figures": figure_objects(ISO_KEYS, result.iso.figures, intervals, cmc_set),
-        "vdi3441_figures": figure_objects(VDI_KEYS, result.vdi.as_dict(), intervals, cmc_set),
+        "iso230_2_figures": figure_objects(ISO_KEYS, result.iso.figures, intervals, cmc_set,
+                                           reasons),
+        "vdi3441_figures": figure_objects(VDI_KEYS, result.vdi.as_dict(), intervals, cmc_set,
+                                          reasons),
         "figure_intervals_note": message(FIGURE_VALUE_NOTE),
         "coverage_probability": (DEFAULT_COVERAGE_PROBABILITY if budget is None
                                  else float(budget.probability)),
@@ -565,7 +571,7 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
         message(QT_TR_NOOP("   *** fewer than 5 runs: flagged ***"))))]
     keys = ("A", "R", "B", "B_mean", "E", "M") if result.bidirectional else tuple(
         f"{figure}_{n}" for n in present for figure in ("A", "R", "E"))
-    intervals = figure_uncertainties(result)
+    intervals = readings_figure_intervals(result)
     # each figure to the decimal of its interval's half-width (GUM 7.2.6), as the certificate
     decimals = _decimals(intervals) | (printed or {})
     out.append(_figures_line("ISO 230-2: ", ((k, f.get(k)) for k in keys), sym, decimals))
@@ -585,6 +591,10 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
             if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
                 parts.append(f" ({percent_text(iv.probability)} %)")
         out.append(joined(parts))
+        # R, R↑, R↓, Ps_max of two runs: no interval, and why (audit 68 finding 3)
+        out += [message(QT_TR_NOOP("No coverage interval is given for {figure}: {reason}."),
+                        figure=key, reason=reason)
+                for key, reason in withheld_figure_reasons(result).items()]
     elif (withheld := intervals_withheld(result)) is not None:
         out.append(message(QT_TR_NOOP("No coverage intervals: {reason}"),
                            reason=message(withheld)))

@@ -47,7 +47,7 @@ from models.certificate.document import (
     table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.messages import QT_TR_NOOP, listed, message
+from models.messages import QT_TR_NOOP, Message, listed, message
 from models.positioning import KEY, TITLE
 from models.positioning.decided_quantity import decided_half_range
 from models.positioning.model import (
@@ -73,9 +73,14 @@ from models.uncertainty.figure_intervals import (
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import interval_ends
+from models.uncertainty.undetermined_repeatability import (
+    RUNS_UNDETERMINED,
+    undetermined_repeatability,
+)
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
-           "intervals_withheld", "readings_step_component", "stated_figure_intervals",
+           "intervals_withheld", "readings_figure_intervals", "readings_step_component",
+           "stated_figure_intervals", "withheld_figure_reasons",
            "positioning_budget", "positioning_certificate", "repeated_readings_components"]
 
 METHOD = QT_TR_NOOP(
@@ -364,7 +369,32 @@ def stated_figure_intervals(result: PositioningResult, budget: UncertaintyBudget
     ``budget``'s ``floor`` (the setting *cmc*, in the deviations' unit, which is the figures':
     µm on a linear axis, arcsec on a rotary one), as the decided quantity's interval is
     (models.uncertainty.lab_scope.held_to_cmc), each marked with what was raised."""
-    return held_to_cmc_figures(figure_uncertainties(result, budget), float(budget.floor))
+    return undetermined_repeatability(
+        held_to_cmc_figures(figure_uncertainties(result, budget), float(budget.floor)),
+        _runs(result), RUNS_UNDETERMINED, result.symbol)[0]
+
+
+def _runs(result: PositioningResult) -> dict[str, np.ndarray]:
+    return {name: stats.runs for name, _, stats in result.directions_present()}
+
+
+def withheld_figure_reasons(result: PositioningResult, budget: UncertaintyBudget | None = None
+                            ) -> dict[str, Message]:
+    """Why a repeatability figure (R, R↑, R↓, Ps_max) has no interval where the others have
+    theirs, by figure: every target approached at most twice in a direction
+    (models.uncertainty.undetermined_repeatability), quoting the interval withheld (that of
+    :func:`stated_figure_intervals` for ``budget``; without it the readings' own)."""
+    intervals = (figure_uncertainties(result) if budget is None else held_to_cmc_figures(
+        figure_uncertainties(result, budget), float(budget.floor)))
+    return undetermined_repeatability(intervals, _runs(result), RUNS_UNDETERMINED,
+                                      result.symbol)[1]
+
+
+def readings_figure_intervals(result: PositioningResult) -> dict[str, FigureInterval]:
+    """:func:`figure_uncertainties` of the readings alone, without the repeatability
+    figures' intervals that two runs leave undetermined (:func:`withheld_figure_reasons`)."""
+    return undetermined_repeatability(figure_uncertainties(result), _runs(result),
+                                      RUNS_UNDETERMINED, result.symbol)[0]
 
 
 def _deviation_text(s: float) -> str:
@@ -555,6 +585,9 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     if withheld is not None:
         statements.append(message(QT_TR_NOOP("No coverage interval is given for the figures: "
                                              "{reason}."), reason=message(withheld)))
+    for key, reason in withheld_figure_reasons(result, budget).items():
+        statements.append(message(QT_TR_NOOP("No coverage interval is given for {figure}: "
+                                             "{reason}."), figure=key, reason=reason))
     statements.append(QT_TR_NOOP(
         "A specification of A, R, E, B or P conforms when the upper end of the figure's "
         "coverage interval is within it, does not conform when the lower end exceeds it, and "

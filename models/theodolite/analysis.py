@@ -239,15 +239,19 @@ def _intervals_line(result: TheodoliteResult) -> str:
     """The ISO 230-2 figures' coverage intervals (the stated standards' u not known here:
     the readings alone, at 95.45 %), or why there are none."""
     from models.certificate.metadata import CertificateMetadata
-    from models.theodolite.figures import figure_intervals_withheld, theodolite_figure_intervals
+    from models.theodolite.figures import (
+        figure_intervals_withheld,
+        readings_theodolite_figure_intervals,
+        withheld_theodolite_figure_reasons,
+    )
     from models.theodolite.report import theodolite_budget
     from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
 
     withheld = figure_intervals_withheld(result)
     if withheld is not None:
         return message(QT_TR_NOOP("No coverage intervals: {reason}"), reason=message(withheld))
-    intervals = theodolite_figure_intervals(result, theodolite_budget(result,
-                                                                      CertificateMetadata()))
+    budget = theodolite_budget(result, CertificateMetadata())
+    intervals = readings_theodolite_figure_intervals(result, budget)
     parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %, from the readings alone; a "
                                       "certificate adds its stated standards' u): "),
                            p=f"{100 * DEFAULT_COVERAGE_PROBABILITY:.2f}")]
@@ -255,6 +259,10 @@ def _intervals_line(result: TheodoliteResult) -> str:
         parts += [", " if i else "", f"{key} {iv.low:.2f} … {iv.high:.2f}\""]
         if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
             parts.append(f" ({percent_text(iv.probability)} %)")
+    # R, R↑, R↓ of two passes: no interval, and why (audit 68 finding 3)
+    for key, reason in withheld_theodolite_figure_reasons(result, budget).items():
+        parts += ["\n", message(QT_TR_NOOP("No coverage interval is given for {figure}: "
+                                           "{reason}."), figure=key, reason=reason)]
     return joined(parts)
 
 

@@ -75,7 +75,7 @@ from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, Message, message
 from models.readings.repeats import RepeatedReadings
 from models.readings.resolution import coarse, readings_step
 from models.theodolite.model import MODEL_INPUT, TheodoliteResult, model_error_modes
@@ -90,12 +90,17 @@ from models.uncertainty.figure_intervals import (
     pair_widening,
 )
 from models.uncertainty.stated_excess import excess_not_excluded
+from models.uncertainty.undetermined_repeatability import (
+    PASSES_UNDETERMINED,
+    undetermined_repeatability,
+)
 
 __all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "circle_part", "circle_part_not_excluded",
            "figure_intervals_withheld",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
            "pointing_in_figures", "pointing_in_figures_note", "pointing_per_reading",
-           "pooled_repeats", "readings_coarse", "stated_theodolite_figure_intervals",
+           "pooled_repeats", "readings_coarse", "readings_theodolite_figure_intervals",
+           "stated_theodolite_figure_intervals", "withheld_theodolite_figure_reasons",
            "theodolite_figure_intervals", "theodolite_figures_json"]
 
 # the budget's name of the set-up model's error, in models.theodolite.model (light: a plain
@@ -343,8 +348,35 @@ def stated_theodolite_figure_intervals(result: TheodoliteResult, budget: Uncerta
     DCC state them: each half-width held to the laboratory's CMC, the ``budget``'s
     ``floor`` (the setting *cmc_arcsec*, in arcsec as the figures), each marked with what
     was raised (models.uncertainty.figure_intervals.held_to_cmc_figures)."""
-    return held_to_cmc_figures(theodolite_figure_intervals(result, budget, stated_u,
-                                                           pair_factor), float(budget.floor))
+    return undetermined_repeatability(
+        held_to_cmc_figures(theodolite_figure_intervals(result, budget, stated_u, pair_factor),
+                            float(budget.floor)),
+        _passes(result), PASSES_UNDETERMINED)[0]
+
+
+def _passes(result: TheodoliteResult) -> dict[str, np.ndarray]:
+    return {name: stats.runs for name, stats in _directions(result)}
+
+
+def withheld_theodolite_figure_reasons(result: TheodoliteResult, budget: UncertaintyBudget,
+                                       stated_u: float = 0.0, pair_factor: float = 2.0
+                                       ) -> dict[str, Message]:
+    """Why R, R↑ or R↓ has no interval where the other figures have theirs, by figure:
+    every θ read at most twice in a direction (two passes: ν = 1,
+    models.uncertainty.undetermined_repeatability), quoting the interval withheld (that of
+    :func:`stated_theodolite_figure_intervals`, the same arguments)."""
+    return undetermined_repeatability(
+        held_to_cmc_figures(theodolite_figure_intervals(result, budget, stated_u, pair_factor),
+                            float(budget.floor)),
+        _passes(result), PASSES_UNDETERMINED)[1]
+
+
+def readings_theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBudget
+                                         ) -> dict[str, FigureInterval]:
+    """:func:`theodolite_figure_intervals` without the repeatability figures' intervals that
+    two passes leave undetermined (the command line's summary, the window's)."""
+    return undetermined_repeatability(theodolite_figure_intervals(result, budget),
+                                      _passes(result), PASSES_UNDETERMINED)[0]
 
 
 #: where the figures' intervals are widened for a circle error the readings do not exclude:
@@ -394,7 +426,10 @@ def theodolite_figures_json(result: TheodoliteResult, budget: UncertaintyBudget,
     keys = [f"{f}_{name}" for name in present for f in ("E", "R", "A")]
     if len(present) == 2:
         keys += ["E", "M", "B", "B_mean", "R", "A"]
-    out = figure_objects(keys, result.iso230.figures, intervals, float(budget.floor) > 0)
+    # R, R↑, R↓ of two passes: the value, no interval, and why (audit 68 finding 3)
+    out = figure_objects(keys, result.iso230.figures, intervals, float(budget.floor) > 0,
+                         withheld_theodolite_figure_reasons(result, budget, stated_u,
+                                                            pair_factor))
     withheld = figure_intervals_withheld(result)
     widening = circle_widening_note(result, budget, stated_u, pair_factor)
     pointing = pointing_in_figures(result)

@@ -361,19 +361,25 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
     from models.theodolite.figures import (
         figure_intervals_withheld,
         stated_theodolite_figure_intervals,
+        withheld_theodolite_figure_reasons,
     )
 
     if result.iso230 is None:
         return []
-    intervals = stated_theodolite_figure_intervals(result, budget,
-                                                   stated_reading_uncertainty(metadata)[0],
-                                                   stated_pair_factor(metadata))
+    stated_u, pair = stated_reading_uncertainty(metadata)[0], stated_pair_factor(metadata)
+    intervals = stated_theodolite_figure_intervals(result, budget, stated_u, pair)
+    # R, R↑, R↓ of two passes: the value as measured, its interval withheld, and why
+    alone = withheld_theodolite_figure_reasons(result, budget, stated_u, pair)
     withheld = figure_intervals_withheld(result)
     rows = []
     for key, v in result.iso230.figures.items():
         if not math.isfinite(v):
             continue
         iv = intervals.get(key)
+        if iv is None and key in alone:
+            rows.append((f"ISO 230-2 {key}", f"{v:.2f}\"", message(
+                QT_TR_NOOP("no coverage interval: {reason}"), reason=alone[key])))
+            continue
         if iv is None:
             said = withheld is None or any(r[2] for r in rows)  # the reason once
             rows.append((f"ISO 230-2 {key}", f"{v:.2f}\"", "" if said else message(

@@ -196,12 +196,15 @@ def figures_raised_to_cmc(intervals: Mapping[str, FigureInterval]) -> list[str]:
 
 
 def figure_objects(keys, values: Mapping[str, Any], intervals: Mapping[str, FigureInterval],
-                   cmc_set: bool = False) -> dict[str, Any]:
+                   cmc_set: bool = False, reasons: Mapping[str, Any] | None = None
+                   ) -> dict[str, Any]:
     """{figure: {value, interval_low, interval_high, coverage_probability}}; nulls where the
     readings do not determine it. With ``cmc_set`` (the laboratory's CMC holds the
     intervals: :func:`held_to_cmc_figures`) also ``raised_to_cmc``: {low, high}, whether each
     half-width is the CMC because the readings gave less, as the decided quantity's (null
-    where the figure has no interval)."""
+    where the figure has no interval). With ``reasons`` also ``interval_reason``: why this
+    figure alone has no interval (models.uncertainty.undetermined_repeatability), null
+    where it has one or where every figure's is withheld (the JSON's own ``*_reason``)."""
     out: dict[str, dict[str, Any]] = {}
     for key in keys:
         value = values.get(key)
@@ -211,6 +214,8 @@ def figure_objects(keys, values: Mapping[str, Any], intervals: Mapping[str, Figu
                     "interval_low": None if interval is None else interval.low,
                     "interval_high": None if interval is None else interval.high,
                     "coverage_probability": None if interval is None else interval.probability}
+        if reasons is not None:
+            out[key]["interval_reason"] = reasons.get(key) if value is not None else None
         if cmc_set:
             raised = None if interval is None else interval.raised_to_cmc or (False, False)
             out[key]["raised_to_cmc"] = (None if raised is None else

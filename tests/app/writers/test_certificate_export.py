@@ -268,6 +268,12 @@ def _row_named(rows, name):
     return next(r for r in rows if r[0] == name)
 
 
+def _decided_row(rows):
+    """The decided quantity's row: named with its interval's probability where it has one
+    ("Decided quantity (p = 92.5 %)", audit 68 finding 2)."""
+    return next(r for r in rows if isinstance(r[0], str) and r[0].startswith("Decided quantity"))
+
+
 def test_xlsx_parameters_and_statistics_hold_numbers_with_units_in_headers():
     """The theodolite's set-up figures and statistics come out as numbers equal to the
     result (to the certificate's printed resolution), units in the headers, negatives
@@ -288,7 +294,7 @@ def test_xlsx_parameters_and_statistics_hold_numbers_with_units_in_headers():
     stats = _sheet_rows(book, "Statistics")
     # ranges (from … to) and the decided quantity with its asymmetric U (value, U−, U+)
     assert stats[0][:5] == ["Quantity", "Value", "Value (to | U−)", "Value (U+)", "Value: unit"]
-    decided = _row_named(stats, "Decided quantity")
+    decided = _decided_row(stats)
     # the lower half-width reaches the value itself where noise could explain the whole range
     # (the sample: 41 points, 0.5" noise); the value is the measured half range; the top is
     # the measured value itself here (U+ = 0: the budget's noise all but surely added to
@@ -399,7 +405,7 @@ def test_xlsx_gives_both_half_widths_of_the_decided_values_interval(key):
     if key == "theodolite":  # asymmetric: one U could not state it
         assert below > 1.5 * above
     stats = _sheet_rows(book, "Statistics")
-    decided = _row_named(stats, "Decided quantity")
+    decided = _decided_row(stats)
     u_minus = next(i for i, h in enumerate(stats[0]) if h and "U−" in h)
     u_plus = next(i for i, h in enumerate(stats[0]) if h and "U+" in h)
     printed = decided[u_minus], decided[u_plus]  # to 2 significant digits

@@ -81,7 +81,7 @@ def test_the_statistics_get_the_decision_rows_between_the_workbenchs_rows():
     doc = _document()
     names = [row[0] for row in doc.statistics.rows]
     assert names[0] == "Points" and names[-1] == "After"
-    assert names[1] == "Decided quantity"
+    assert names[1] == "Decided quantity (p = 95.45 %)"  # its own interval's probability
     assert names[2] == "Expanded uncertainty U (p = 95.45 %)"
     assert doc.statistics.rows[2][1] == "1.2\""
     assert "k = 2.00" in doc.statistics.rows[2][2]
@@ -95,6 +95,9 @@ def test_a_wider_statistics_table_gets_the_decision_note_in_its_last_column():
     assert doc.statistics.title == "Figures"
     assert all(len(row) == 5 for row in doc.statistics.rows)
     assert doc.statistics.rows[-1][2:4] == ("", "")
+    # the decided quantity's interval and its own probability in their columns (audit 68)
+    decided = doc.statistics.rows[1]
+    assert decided[0] == "Decided quantity" and " … " in decided[2] and decided[3] == "95.45 %"
     assert "largest over the targets" in doc.statistics.rows[-1][4]
 
 
