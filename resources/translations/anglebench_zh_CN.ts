@@ -1007,6 +1007,11 @@
         <translation>与极差一样，幅值会因读数噪声而偏大，且未评定其不确定度；仅供参考，不是校准结果</translation>
     </message>
     <message>
+        <source>indicative: no coverage interval evaluated; the ISO 230-2 figures of the sets (not printed on the certificate) are as computed from the readings, each a largest value or a range over the faces, biased high by the readings&apos; noise; the calibration results are the face deviations with their U</source>
+        <extracomment>the JSON&apos;s ``iso230_arcsec`` (E, M, R, A, B … of the sets, taken as ISO 230-2 runs): plain numbers, no interval (audit 68 finding 4: a lab&apos;s system could not tell them from calibrated figures); the reason beside them, ``iso230_arcsec_reason``</extracomment>
+        <translation>仅供参考：未评定包含区间；各组的 ISO 230-2 指标（证书上不打印）按读数直接计算，每项是各面上的最大值或极差，因读数噪声而偏大；校准结果是各面的偏差及其 U</translation>
+    </message>
+    <message>
         <source>no coverage interval: {reason}</source>
         <translation>无包含区间：{reason}</translation>
     </message>
@@ -3434,6 +3439,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>判定的量</translation>
     </message>
     <message>
+        <source>Decided quantity (p = {p} %)</source>
+        <translation>判定的量（p = {p} %）</translation>
+    </message>
+    <message>
         <source>the inputs evaluated give {u} at most, but U is incomplete: {reason}</source>
         <translation>已评定的输入量最大给出 {u}，但 U 不完整：{reason}</translation>
     </message>
@@ -5417,6 +5426,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>   *** fewer than 5 runs: flagged ***</source>
         <translation>   *** 少于 5 次测量：已标注 ***</translation>
+    </message>
+    <message>
+        <source>No coverage interval is given for {figure}: {reason}.</source>
+        <translation>{figure} 不给出包含区间：{reason}。</translation>
     </message>
     <message>
         <source>No coverage intervals: {reason}</source>
@@ -11739,6 +11752,21 @@ Replace it?</source>
     <message>
         <source>{one} vs {other}: {differences}</source>
         <translation>{one} 与 {other}：{differences}</translation>
+    </message>
+    <message>
+        <source>indicative: no coverage interval evaluated; the figures are as computed from the readings (JJF 1115&apos;s repeatability and the ISO 230-2 figures take the mountings as repeat runs, although they are remountings), and a largest value or a range is biased high by the readings&apos; noise; the calibration results are the errors at each step with their U</source>
+        <extracomment>the JSON&apos;s ``encoder_figures_arcsec`` (JJF 1115&apos;s division error and repeatability, ISO 230-2&apos;s unidirectional figures, the mountings taken as runs): plain numbers, no interval (audit 68 finding 4: a lab&apos;s system could not tell them from calibrated figures); the reason beside them, ``encoder_figures_arcsec_reason``</extracomment>
+        <translation>仅供参考：未评定包含区间；这些指标按读数直接计算（JJF 1115 的重复性和 ISO 230-2 的各项指标把各安装位置当作重复测量，而它们实为重新安装），最大值或极差因读数噪声而偏大；校准结果是各步的误差及其 U</translation>
+    </message>
+    <message>
+        <source>two runs give each target&apos;s repeatability one degree of freedom: the interval would be {low} … {high}; measure at least 3 runs each way</source>
+        <extracomment>the figures made of the targets&apos; σ and the directions whose σ each is made of why (positioning: runs at a target)</extracomment>
+        <translation>两次测量只给各目标位置的重复性一个自由度：包含区间将为 {low} … {high}；每个方向至少测量 3 次</translation>
+    </message>
+    <message>
+        <source>two passes give each θ&apos;s repeatability one degree of freedom: the interval would be {low} … {high}; measure at least 3 passes each way</source>
+        <extracomment>why (theodolite: passes at a θ)</extracomment>
+        <translation>两个测回只给各 θ 的重复性一个自由度：包含区间将为 {low} … {high}；每个方向至少测量 3 个测回</translation>
     </message>
 </context>
 </TS>
