@@ -1,5 +1,6 @@
-"""The repeatability figures' intervals withheld where two approaches a target leave each
-σ one degree of freedom (ISO 230-2's R↑, R↓, R, VDI/DGQ 3441's Ps_max).
+"""The intervals of the figures made of the targets' σ withheld where two approaches a
+target leave each σ one degree of freedom (ISO 230-2's R↑, R↓, R, A↑, A↓, A; VDI/DGQ 3441's
+Ps_max and P).
 
 R↑ = 4 max σ↑_i and its kin take their interval from each target's own s by the
 chi-square distribution (models.uncertainty.figure_intervals._repeatability_bounds). With
@@ -8,7 +9,9 @@ degree of freedom at 95 % is about 32 times s, and the interval of R says nothin
 customer can use (an audit, 68 finding 3: a theodolite with 2 passes printed R = 3.13″ in
 0.86″ … 225″, the truth 1.8″). The figure is still printed as measured; its interval is
 withheld with the reason, quoting the interval it would have been. Three approaches (ν = 2)
-keep their interval.
+keep their interval. A and P take theirs from each target's own tolerance bounds of
+μ ± 2σ (μ ± 1.5σ for P: ``_band_span_bounds``), which at ν = 1 reach as far (a theodolite with
+2 passes: A = 4.96″ in 2.93″ … 194″): withheld alike.
 """
 
 from __future__ import annotations
@@ -26,7 +29,8 @@ __all__ = ["PASSES_UNDETERMINED", "REPEATABILITY_DIRECTIONS", "RUNS_UNDETERMINED
 
 #: the figures made of the targets' σ and the directions whose σ each is made of
 REPEATABILITY_DIRECTIONS: dict[str, tuple[str, ...]] = {
-    "R_up": ("up",), "R_down": ("down",), "R": ("up", "down"), "Ps_max": ("up", "down")}
+    "R_up": ("up",), "R_down": ("down",), "R": ("up", "down"), "Ps_max": ("up", "down"),
+    "A_up": ("up",), "A_down": ("down",), "A": ("up", "down"), "P": ("up", "down")}
 
 #: why (positioning: runs at a target)
 RUNS_UNDETERMINED = QT_TR_NOOP(
