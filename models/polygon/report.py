@@ -12,7 +12,10 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
   has face 1 exact. These are systematic and are not reduced by repeating sets;
 * the reading noise: with a direction run twice or more, the standard
   deviation of the sets about their direction's mean pooled over positions
-  and directions (Type A), divided by √m for the mean of m sets; with one set
+  and directions (Type A), each set's own zero offset and steady drift taken out first
+  (:func:`models.polygon.model.within_set_noise`), divided by √m for the mean of m sets;
+  the offsets an input of their own, one unknown value per set, the same at every
+  position (:func:`_zero_offsets_component`); with one set
   each way, the scatter of the forward minus reverse errors about their mean
   reversal (:func:`models.polygon.model.reversal_pair_noise`: the encoder's own
   noise and the horizontal reading's, n − 1 degrees of freedom); with one set,
