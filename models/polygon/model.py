@@ -88,7 +88,7 @@ __all__ = ["split_sets",
     "direction_means",
     "evaluate_sets",
     "pooled_repeatability", "reversal_pair_noise", "sets_alike", "set_offsets_spread",
-    "within_set_noise",
+    "within_set_noise", "zero_offsets_warning",
     "tilt_advice",
     "tilt_not_identified",
     "wrap_deg",
@@ -574,6 +574,34 @@ def set_offsets_spread(values: np.ndarray, directions: np.ndarray,
     if dof == 0:
         return None
     return math.sqrt(squares / dof), dof
+
+
+#: how unlikely the sets' offsets must be under the reading noise alone to be named (F test)
+ZERO_OFFSETS_SIGNIFICANCE = 1e-3
+
+
+def zero_offsets_warning(values: np.ndarray, directions: np.ndarray,
+                         reading_index: np.ndarray | None = None) -> str:
+    """The warning that the autocollimator's zero moved between the sets ("" when the sets'
+    means within each direction scatter no more than the reading noise gives them, σ²/n, at
+    :data:`ZERO_OFFSETS_SIGNIFICANCE`; or when no direction was measured twice)."""
+    from scipy.special import fdtrc
+
+    values = np.asarray(values, dtype=float)
+    within = within_set_noise(values, directions, reading_index)
+    spread = set_offsets_spread(values, directions)
+    if within is None or spread is None or not within[0] > 0:
+        return ""
+    n = values.shape[1]
+    expected = within[0] / math.sqrt(n)
+    if fdtrc(spread[1], within[1], (spread[0] / expected) ** 2) >= ZERO_OFFSETS_SIGNIFICANCE:
+        return ""
+    return message(QT_TR_NOOP(
+        "The autocollimator's zero moved between the sets: the sets' mean errors within a "
+        "direction scatter by {spread} where the readings' noise gives {expected}. Each set's "
+        "offset is taken as one unknown value of that set (in U, the same at every position), "
+        "not as reading noise; check that the autocollimator was not touched between sets."),
+        spread=f"{spread[0]:.2f}\"", expected=f"{expected:.2f}\"")
 
 
 def reversal_pair_noise(values: np.ndarray, directions: np.ndarray) -> tuple[float, int] | None:
