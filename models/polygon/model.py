@@ -576,17 +576,17 @@ def set_offsets_spread(values: np.ndarray, directions: np.ndarray,
     return math.sqrt(squares / dof), dof
 
 
-#: how unlikely the sets' offsets must be under the reading noise alone to be named (F test)
-ZERO_OFFSETS_SIGNIFICANCE = 1e-3
+#: the standard normal quantile of how unlikely the sets' offsets must be under the reading
+#: noise alone to be named (1 − 0.999)
+ZERO_OFFSETS_Z = 3.090
 
 
 def zero_offsets_warning(values: np.ndarray, directions: np.ndarray,
                          reading_index: np.ndarray | None = None) -> str:
     """The warning that the autocollimator's zero moved between the sets ("" when the sets'
-    means within each direction scatter no more than the reading noise gives them, σ²/n, at
-    :data:`ZERO_OFFSETS_SIGNIFICANCE`; or when no direction was measured twice)."""
-    from scipy.special import fdtrc
-
+    means within each direction scatter no more than the reading noise gives them, σ²/n: ν s²
+    /(σ²/n) below the chi-square's 99.9 % quantile for ν = Σ (m_d − 1), by Wilson–Hilferty,
+    no scipy for a plain analysis; or when no direction was measured twice)."""
     values = np.asarray(values, dtype=float)
     within = within_set_noise(values, directions, reading_index)
     spread = set_offsets_spread(values, directions)
@@ -594,7 +594,9 @@ def zero_offsets_warning(values: np.ndarray, directions: np.ndarray,
         return ""
     n = values.shape[1]
     expected = within[0] / math.sqrt(n)
-    if fdtrc(spread[1], within[1], (spread[0] / expected) ** 2) >= ZERO_OFFSETS_SIGNIFICANCE:
+    nu = spread[1]
+    quantile = nu * (1.0 - 2.0 / (9.0 * nu) + ZERO_OFFSETS_Z * math.sqrt(2.0 / (9.0 * nu))) ** 3
+    if nu * (spread[0] / expected) ** 2 <= quantile:
         return ""
     return message(QT_TR_NOOP(
         "The autocollimator's zero moved between the sets: the sets' mean errors within a "
