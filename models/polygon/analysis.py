@@ -47,6 +47,7 @@ from models.polygon.model import (
     tilt_advice,
     vertical_fits_noise,
     wrap_deg,
+    zero_offsets_warning,
 )
 from models.polygon.rounding import horizontal_rounding
 from models.polygon.setup_statement import setup_statement
@@ -499,6 +500,10 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     mean_error, _ = direction_means(errors, directions)
     mean_corrected, reversal = direction_means(corrected, directions)
     repeat = pooled_repeatability(corrected, directions)
+    offsets_moved = zero_offsets_warning(
+        corrected, directions, np.array([r.reading_index for r in results], dtype=float))
+    if offsets_moved:
+        warnings.append(offsets_moved)
     if sets_alike(corrected, directions):
         warnings.append(message(QT_TR_NOOP(
             "The sets of each direction read alike at every face: their repeatability cannot "

@@ -12,7 +12,10 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
   has face 1 exact. These are systematic and are not reduced by repeating sets;
 * the reading noise: with a direction run twice or more, the standard
   deviation of the sets about their direction's mean pooled over positions
-  and directions (Type A), divided by √m for the mean of m sets; with one set
+  and directions (Type A), each set's own zero offset and steady drift taken out first
+  (:func:`models.polygon.model.within_set_noise`), divided by √m for the mean of m sets;
+  the offsets an input of their own, one unknown value per set, the same at every
+  position (:func:`_zero_offsets_component`); with one set
   each way, the scatter of the forward minus reverse errors about their mean
   reversal (:func:`models.polygon.model.reversal_pair_noise`: the encoder's own
   noise and the horizontal reading's, n − 1 degrees of freedom); with one set,
@@ -107,7 +110,9 @@ from models.polygon.model import (
     pooled_repeatability,
     pyramidal_correction_arcsec,
     reversal_pair_noise,
+    set_offsets_spread,
     vertical_fits_noise,
+    within_set_noise,
 )
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.polygon.setup_statement import setup_statement
@@ -301,7 +306,26 @@ def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: fl
     corrected = np.array([s.corrected_error_arcsec for s in result.sets])
     repeat = pooled_repeatability(corrected, directions)
     share = mean_zero_share(directions) if share is None else share
-    if repeat is not None:
+    within = None if repeat is None else within_set_noise(corrected, directions,
+                                                           _reading_indices(result))
+    if repeat is not None and within is not None:
+        # each set's own zero offset and steady drift taken out: the offsets are an input of
+        # their own (:func:`_zero_offsets_component`), never reading noise that the decided
+        # half range's bias removal would take off
+        noise, dof = within
+        name = (QT_TR_NOOP("Repeatability (mean of {sets} sets)") if len(result.sets) > 1
+                else QT_TR_NOOP("Repeatability (mean of 1 set)"))
+        note = message(QT_TR_NOOP("standard deviation {s} of the sets about their direction's "
+                                  "mean, each set's own zero offset and steady drift taken "
+                                  "out first (the autocollimator's zero moving between sets "
+                                  "is no reading noise), {dof} degrees of freedom"),
+                       s=f"{noise:.3f}\"", dof=dof)
+        if result.repeats is not None:  # each face's n readings were averaged first
+            note = message(QT_TR_NOOP("{note}; each face's {n} readings averaged first, so "
+                                      "their s/√n is inside this scatter and not counted "
+                                      "again"), note=note, n=result.repeats.n)
+        evaluation = "A"
+    elif repeat is not None:
         s_i, sets_dof = repeat
         noise = float(np.sqrt(np.mean(s_i**2)))
         dof = sets_dof * n
@@ -381,6 +405,56 @@ def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: fl
                                                        "reduced"), common=True,
                         dof_group="repeatability"),
     ], noise
+
+
+def _reading_indices(result: PolygonResult) -> np.ndarray | None:
+    """Each position's reading index in its set (sets × positions), None when a set lacks it."""
+    if any(s.reading_index is None for s in result.sets):
+        return None
+    return np.array([np.asarray(s.reading_index, dtype=float) for s in result.sets])
+
+
+ZERO_OFFSETS_INPUT = QT_TR_NOOP("Autocollimator zero offsets between the sets")
+
+
+def _zero_offsets_component(result: PolygonResult, noise: float, n: int,
+                            share: ZeroFaceShare) -> list[BudgetComponent]:
+    """The autocollimator's zero as each set found it: one unknown offset per set against
+    set 1's zero reading (a jump between sets, or what a drift carried on leaves beyond its
+    steady part), a systematic of the set that the sets' scatter about each set's own level
+    no longer holds (:func:`within_set_noise`). It moves the whole of a set, so the mean over
+    the sets by c = Σ w_s ζ_s − ζ_1 at every position alike (common; the half range does not
+    see it); its u from the scatter of the sets' means within each direction,
+    √((1 − w_1)² + Σ_{s≥2} w_s²) times the offset of one set (each set's zero its own
+    unknown); for one set's array, set 1's none (its own zero) and a later set's √2 times.
+    None without a repeated direction (one set each way: the offset is the mean reversal's,
+    which the readings cannot tell apart)."""
+    if share == ZERO_READING:
+        return []
+    directions = np.array([s.direction for s in result.sets])
+    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
+    if within_set_noise(corrected, directions, _reading_indices(result)) is None:
+        return []
+    steady = _kept_steady_drift(result, noise)
+    # the errors carry −H of each closure drift H before them (eq 1 takes −x)
+    carried = None if steady is None else -np.arange(len(result.sets), dtype=float) * steady
+    spread = set_offsets_spread(corrected, directions, carried)
+    if spread is None or not spread[0] > 0:
+        return []
+    tau, dof = spread
+    if share == OTHER_SET:
+        factor = math.sqrt(2.0)
+    else:
+        w = _mean_weights(directions)
+        factor = math.sqrt((1.0 - w[0]) ** 2 + float(np.sum(w[1:] ** 2)))
+    return [BudgetComponent(
+        ZERO_OFFSETS_INPUT, "A", "normal", tau * factor, 1.0, 1.0, float(dof),
+        message(QT_TR_NOOP("one unknown offset per set against set 1's zero reading "
+                           "(standard deviation {s} of a set's, from the scatter of the sets' "
+                           "means within each direction, {dof} degrees of freedom): the same "
+                           "at every position, so it moves the errors but not their half "
+                           "range"), s=f"{tau:.3f}\"", dof=dof),
+        common=True)]
 
 
 def _why_no_fit(result: PolygonResult) -> str:
@@ -529,14 +603,10 @@ def _carried_drift_component(result: PolygonResult, noise: float, zero: int,
     # a steady drift, the closures' mean (known to 2σ²/m, σ of one reading), shrunk by the
     # share of its power beyond that noise (positive part): the mean within its noise leaves
     # little drift to carry, a drift well beyond it all of it. What varies from set to set
-    # is not carried again: it puts the sets apart, and their scatter, the reading noise's
-    # input, holds it (a random walk's carried offsets were covered 0.96–0.98 without it)
+    # is not carried again: it puts the sets apart, an offset per set, and the zero
+    # offsets' input holds it (:func:`_zero_offsets_component`)
     closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
-    sigma = _noise_about_each_set(result)
-    sigma = noise if sigma is None else sigma
-    steady = float(np.mean(closures))
-    keep = max(0.0, 1.0 - 2.0 * sigma**2 / (m * steady**2)) if steady else 0.0
-    bias = multiplier * math.sqrt(keep) * steady  # per position
+    bias = multiplier * (_kept_steady_drift(result, noise) or 0.0)  # per position
     if not np.any(bias):
         return []
     how = (QT_TR_NOOP("spread within each set and removed; what the sets before carry on, not "
@@ -551,6 +621,22 @@ def _carried_drift_component(result: PolygonResult, noise: float, zero: int,
                            "quadrature"),
                 closures=", ".join(f"{c:+.2f}" for c in closures) + "\"", how=message(how)),
         common=True)]
+
+
+def _kept_steady_drift(result: PolygonResult, noise: float) -> float | None:
+    """The steady zero drift a set (its closures' mean, known to 2σ²/m, σ of one reading)
+    carries on to the next, shrunk by the share of its power beyond that noise (positive
+    part): the mean within its noise leaves little drift to carry, a drift well beyond it all
+    of it; None when a set has no closure or there is one set only."""
+    m = len(result.sets)
+    if m < 2 or any(s.closure_drift_arcsec is None for s in result.sets):
+        return None
+    closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
+    sigma = _noise_about_each_set(result)
+    sigma = noise if sigma is None else sigma
+    steady = float(np.mean(closures))
+    keep = max(0.0, 1.0 - 2.0 * sigma**2 / (m * steady**2)) if steady else 0.0
+    return math.sqrt(keep) * steady
 
 
 def _noise_about_each_set(result: PolygonResult) -> float | None:
@@ -610,6 +696,7 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
         result, n, zero, float(stated.get("reading_noise_arcsec",
                                           result.reading_noise_stated_arcsec) or 0.0), share)
     components += noise_components
+    components += _zero_offsets_component(result, noise, n, share)
     if not _noise_from_sets(result):
         components += repeated_readings_components(result, share)
     u_pyr = _pyramidal_uncertainty(result)

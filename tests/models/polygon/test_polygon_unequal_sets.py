@@ -89,7 +89,11 @@ def test_the_reading_noise_enters_with_the_means_own_weights(directions):
     budget = polygon_budget(result, CertificateMetadata.from_dict(bench.metadata()))
     d = np.array(directions)
     weights = np.where(d > 0, 1.0 / (2 * np.sum(d > 0)), 1.0 / (2 * np.sum(d < 0)))
-    sigma = float(np.sqrt(np.mean(result.repeatability_arcsec ** 2)))
+    # the σ of a reading about each set's own level (zero offsets taken out, zerojump)
+    from models.polygon.model import within_set_noise
+
+    sigma = within_set_noise(np.array([s.corrected_error_arcsec for s in result.sets]), d,
+                             np.array([s.reading_index for s in result.sets]))[0]
     noise = next(c for c in budget.components
                  if getattr(c.name, "template", "") == "Repeatability (mean of {sets} sets)")
     assert float(np.max(noise.value)) == pytest.approx(sigma * np.sqrt(np.sum(weights ** 2)),
