@@ -313,6 +313,10 @@
         <translation>{note}；每个面的 {n} 个读数先取平均，其 s/√n 已包含在此离散中，不再重复计入</translation>
     </message>
     <message>
+        <source>standard deviation {s} of the sets about their direction&apos;s mean, each set&apos;s own zero offset and steady drift taken out first (the autocollimator&apos;s zero moving between sets is no reading noise), {dof} degrees of freedom</source>
+        <translation>各测回相对于同方向平均值的标准偏差 {s}，先扣除每个测回自身的零位偏移和稳定漂移（自准直仪零位在测回间的移动不是读数噪声），自由度 {dof}</translation>
+    </message>
+    <message>
         <source>Reading noise, encoder and autocollimator (mean of {sets} sets)</source>
         <translation>读数噪声，编码器与自准直仪合计（{sets} 个测回的平均）</translation>
     </message>
@@ -347,6 +351,14 @@
     <message>
         <source>one reading shared by every set: not reduced</source>
         <translation>各测回共用的一个读数：不因平均而减小</translation>
+    </message>
+    <message>
+        <source>Autocollimator zero offsets between the sets</source>
+        <translation>测回间的自准直仪零位偏移</translation>
+    </message>
+    <message>
+        <source>one unknown offset per set against set 1&apos;s zero reading (standard deviation {s} of a set&apos;s, from the scatter of the sets&apos; means within each direction, {dof} degrees of freedom): the same at every position, so it moves the errors but not their half range</source>
+        <translation>每个测回相对于第 1 测回零位读数的一个未知偏移（单个测回偏移的标准偏差 {s}，由每个方向内各测回平均值的离散求得，自由度 {dof}）：在每个位置都相同，因此它移动误差，但不改变其半峰峰值</translation>
     </message>
     <message>
         <source>spread linearly and removed, half the drift left</source>
@@ -5307,6 +5319,11 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{set}: {why}</source>
         <translation>{set}：{why}</translation>
+    </message>
+    <message>
+        <source>The autocollimator&apos;s zero moved between the sets: the sets&apos; mean errors within a direction scatter by {spread} where the readings&apos; noise gives {expected}. Each set&apos;s offset is taken as one unknown value of that set (in U, the same at every position), not as reading noise; check that the autocollimator was not touched between sets.</source>
+        <extracomment>the standard normal quantile of how unlikely the sets&apos; offsets must be under the reading noise alone to be named (1 − 0.999)</extracomment>
+        <translation>自准直仪的零位在测回之间移动了：同一方向内各测回的平均误差离散为 {spread}，而读数噪声只给出 {expected}。每个测回的偏移作为该测回的一个未知值（计入 U，在每个位置都相同），而不是读数噪声；请检查测回之间是否碰动了自准直仪。</translation>
     </message>
     <message>
         <source>deviation_unit {s} is for an axis in {belongs}, but target_unit is {s2}: choose arcsec or urad for deg, um or nm for mm</source>
