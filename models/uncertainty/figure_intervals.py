@@ -958,28 +958,30 @@ def _band_span_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
         out[key] = (max(top_low - bottom_high - widen_low, 0.0),
                     top - bottom + widen_high)
     if "up" in x and "down" in x and x["up"].size:
-        xu, xd, su, sd, nu_, nd = x["up"], x["down"], s["up"], s["down"], n["up"], n["down"]
         eighth = rest / 8.0
-        v_high = np.maximum(_band_edge_bound(xu, su, nu_, 1.5, eighth, True)
-                            + 1.5 * _sigma_bound(sd, nd, eighth, True),
-                            _band_edge_bound(xd, sd, nd, 1.5, eighth, True)
-                            + 1.5 * _sigma_bound(su, nu_, eighth, True))
-        w_low = np.minimum(_band_edge_bound(xu, su, nu_, -1.5, eighth, False)
-                           - 1.5 * _sigma_bound(sd, nd, eighth, True),
-                           _band_edge_bound(xd, sd, nd, -1.5, eighth, False)
-                           - 1.5 * _sigma_bound(su, nu_, eighth, True))
-        cut = (1.0 - (1.0 - rest) ** (1.0 / (2 * xu.size))) / 3.0
-        v_low = np.maximum(_band_edge_bound(xu, su, nu_, 1.5, cut, False)
-                           + 1.5 * _sigma_bound(sd, nd, cut, False),
-                           _band_edge_bound(xd, sd, nd, 1.5, cut, False)
-                           + 1.5 * _sigma_bound(su, nu_, cut, False))
-        w_high = np.minimum(_band_edge_bound(xu, su, nu_, -1.5, cut, True)
-                            - 1.5 * _sigma_bound(sd, nd, cut, False),
-                            _band_edge_bound(xd, sd, nd, -1.5, cut, True)
-                            - 1.5 * _sigma_bound(su, nu_, cut, False))
+        cut = (1.0 - (1.0 - rest) ** (1.0 / (2 * x["up"].size))) / 3.0
+        v_high = _vdi_band_edge(x, s, n, 1.5, eighth, outward=True)
+        w_low = _vdi_band_edge(x, s, n, -1.5, eighth, outward=True)
+        v_low = _vdi_band_edge(x, s, n, 1.5, cut, outward=False)
+        w_high = _vdi_band_edge(x, s, n, -1.5, cut, outward=False)
         out["P"] = (max(float(np.max(v_low) - np.min(w_high)) - widen_low, 0.0),
                     float(np.max(v_high) - np.min(w_low)) + widen_high)
     return out
+
+
+def _vdi_band_edge(x, s, n, k: float, tail: float, outward: bool) -> np.ndarray:
+    """Per target, a bound of VDI/DGQ 3441's band edge x̄ + k·σ (k = +1.5: the top, −1.5:
+    the bottom) with the other direction's σ added to it, the larger of the two directions'
+    (top) or the smaller (bottom): each direction's own tolerance bound of μ + kσ at ``tail``
+    plus k times the other direction's chi-square bound of σ. ``outward``: the bound that
+    moves the edge away from the band's middle (upper for the top, lower for the bottom),
+    else the one toward it."""
+    pick = np.maximum if k > 0 else np.minimum
+    band_upper = outward if k > 0 else not outward
+    return pick(_band_edge_bound(x["up"], s["up"], n["up"], k, tail, band_upper)
+                + k * _sigma_bound(s["down"], n["down"], tail, outward),
+                _band_edge_bound(x["down"], s["down"], n["down"], k, tail, band_upper)
+                + k * _sigma_bound(s["up"], n["up"], tail, outward))
 
 
 #: the ranges of the means whose interval, where the bootstrap's collapses to a point, takes
