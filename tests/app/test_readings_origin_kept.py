@@ -10,37 +10,10 @@ import json
 import os
 
 import pytest
-from PySide6.QtCore import QCoreApplication, QEvent, QSettings
-from PySide6.QtWidgets import QMessageBox
-
-from app.main_window import MainWindow
-from models.project.recovery import RecoveryStore
 
 pytestmark = pytest.mark.slow  # windows, each analysing the polygon's readings
 
 TYPED = "readings typed in AngleBench"
-
-
-@pytest.fixture
-def make_window(qtbot, tmp_path):
-    made = []
-
-    def factory():
-        settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
-        window = MainWindow(settings=settings, recovery=RecoveryStore(tmp_path / "recovery"))
-        window.told = []
-        window.tell = lambda title, text: window.told.append(text)
-        window.ask = lambda *a: QMessageBox.StandardButton.Discard
-        window.projects.view.ask_recover = lambda name, when: True
-        qtbot.addWidget(window)
-        made.append(window)
-        return window
-
-    yield factory
-    for window in made:
-        window.projects.autosave_timer.stop()
-        window.deleteLater()
-    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
 def _session(rows: list[int]) -> dict:
@@ -91,8 +64,8 @@ def _said(digest: str, rows: int) -> str:
 
 
 def test_a_saved_and_reopened_project_names_the_file_imported_and_the_rows_pasted(
-        make_window, qtbot, tmp_path, samples_dir):
-    window = make_window()
+        recovering_window, qtbot, tmp_path, samples_dir):
+    window = recovering_window()
     polygon, digest = _imported_edited_pasted_captured(window, qtbot, tmp_path, samples_dir)
     rows = polygon.sheet.row_count
     assert _line(window, polygon) == _said(digest, rows)
@@ -104,7 +77,7 @@ def test_a_saved_and_reopened_project_names_the_file_imported_and_the_rows_paste
     assert stored["readings_origin"] == {"source": "imported", "name": "bench_run_0512.csv",
                                          "sha256": digest, "edited": True,
                                          "pasted_rows": [5, 6]}
-    reopened = make_window()
+    reopened = recovering_window()
     assert reopened.projects.open_project(path), reopened.told
     again = _polygon(reopened, qtbot)
     assert _line(reopened, again) == f"job.anglebench.json: {_said(digest, rows)}"
@@ -115,8 +88,8 @@ def test_a_saved_and_reopened_project_names_the_file_imported_and_the_rows_paste
 
 
 def test_a_recovered_autosave_names_the_file_imported_and_the_rows_pasted(
-        make_window, qtbot, tmp_path, samples_dir):
-    window = make_window()
+        recovering_window, qtbot, tmp_path, samples_dir):
+    window = recovering_window()
     polygon, digest = _imported_edited_pasted_captured(window, qtbot, tmp_path, samples_dir)
     rows = polygon.sheet.row_count
     window.projects.autosave()
@@ -124,7 +97,7 @@ def test_a_recovered_autosave_names_the_file_imported_and_the_rows_pasted(
     os.close(window.projects.recovery._lock_fd)
     window.projects.recovery._lock_fd = None
     window.projects.autosave_timer.stop()
-    survivor = make_window()
+    survivor = recovering_window()
     assert survivor.projects.offer_recovery()
     recovered = _polygon(survivor, qtbot)
     assert survivor.projects.path is None
@@ -132,10 +105,10 @@ def test_a_recovered_autosave_names_the_file_imported_and_the_rows_pasted(
 
 
 def test_a_project_file_that_does_not_say_names_itself_never_typed(
-        make_window, qtbot, tmp_path, samples_dir):
+        recovering_window, qtbot, tmp_path, samples_dir):
     """A file written before the origin was kept: "from project NAME", also once saved
     under another name or as an untitled project's autosave; typed rows saved are typed."""
-    window = make_window()
+    window = recovering_window()
     polygon = _polygon(window, qtbot)
     lines = (samples_dir / polygon.kind.sample_file).read_text(encoding="utf-8").splitlines()
     old = tmp_path / "old.anglebench.json"
@@ -150,7 +123,7 @@ def test_a_project_file_that_does_not_say_names_itself_never_typed(
     new = tmp_path / "new.anglebench.json"
     assert window.projects.save_to(new), window.told
     assert _line(window, polygon) == "new.anglebench.json: from project old.anglebench.json"
-    reopened = make_window()
+    reopened = recovering_window()
     assert reopened.projects.open_project(new), reopened.told
     assert _line(reopened, _polygon(reopened, qtbot)) == (
         "new.anglebench.json: from project old.anglebench.json")
@@ -161,7 +134,7 @@ def test_a_project_file_that_does_not_say_names_itself_never_typed(
                                  for c in range(polygon.sheet.column_count)])
     assert _line(reopened, typed) == TYPED
     assert reopened.projects.save_to(tmp_path / "typed.anglebench.json"), reopened.told
-    third = make_window()
+    third = recovering_window()
     assert third.projects.open_project(tmp_path / "typed.anglebench.json"), third.told
     assert _line(third, _polygon(third, qtbot)) == "typed.anglebench.json"
 
@@ -202,11 +175,11 @@ def _typing(window, qtbot, presenter, row: int, column: int, text: str):
 
 
 def test_a_value_being_typed_when_the_window_died_makes_the_recovered_readings_edited(
-        make_window, qtbot, tmp_path, samples_dir):
+        recovering_window, qtbot, tmp_path, samples_dir):
     """Day review (stop 65) F1: a file imported, a reading typed over it and not entered,
     kill -9: the recovered sheet holds the typed value, so its certificate must not state
     the file's name and SHA-256 as if the readings were the file's."""
-    window = make_window()
+    window = recovering_window()
     polygon = _polygon(window, qtbot)
     csv = tmp_path / "bench_run_0512.csv"
     csv.write_bytes((samples_dir / polygon.kind.sample_file).read_bytes())
@@ -221,7 +194,7 @@ def test_a_value_being_typed_when_the_window_died_makes_the_recovered_readings_e
     os.close(window.projects.recovery._lock_fd)  # the window dies (kill -9)
     window.projects.recovery._lock_fd = None
     window.projects.autosave_timer.stop()
-    survivor = make_window()
+    survivor = recovering_window()
     assert survivor.projects.offer_recovery()
     recovered = _polygon(survivor, qtbot)
     assert recovered.sheet.text(9, column) == typed
@@ -230,12 +203,12 @@ def test_a_value_being_typed_when_the_window_died_makes_the_recovered_readings_e
 
 
 def test_closing_the_window_enters_what_is_being_typed_and_asks_to_save_it(
-        make_window, qtbot, tmp_path, samples_dir):
+        recovering_window, qtbot, tmp_path, samples_dir):
     """Day review (stop 65) F2: a saved project, a reading typed over and not entered, then
     Ctrl+Q: the window closed without asking, its autosave deleted, the file without the
     value typed. It is entered (as Return enters it) and the question about unsaved work is
     asked; answered Cancel, the window stays with the value."""
-    window = make_window()
+    window = recovering_window()
     polygon = _polygon(window, qtbot)
     polygon.import_file(samples_dir / polygon.kind.sample_file)
     qtbot.waitUntil(lambda: not polygon.analysis_pending, timeout=20000)

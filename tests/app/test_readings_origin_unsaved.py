@@ -12,8 +12,6 @@ import shutil
 import subprocess
 
 import pytest
-from PySide6.QtCore import QCoreApplication, QEvent, QSettings
-from PySide6.QtWidgets import QMessageBox
 
 from models.certificate.metadata import CertificateMetadata
 
@@ -21,32 +19,6 @@ pytestmark = pytest.mark.slow  # windows, each analysing the polygon's readings
 
 JOB = "job.anglebench.json"
 CHANGED = f"changed in AngleBench after {JOB} was saved (not the readings in that file)"
-
-
-@pytest.fixture
-def make_window(qtbot, tmp_path):
-    from app.main_window import MainWindow
-    from models.project.recovery import RecoveryStore
-
-    made = []
-
-    def factory():
-        settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
-        window = MainWindow(settings=settings, recovery=RecoveryStore(tmp_path / "recovery"))
-        window.told = []
-        window.tell = lambda title, text: window.told.append(text)
-        window.ask = lambda *a: QMessageBox.StandardButton.Discard
-        window.projects.view.ask_recover = lambda name, when: True
-        qtbot.addWidget(window)
-        made.append(window)
-        return window
-
-    yield factory
-    for window in made:
-        window.projects.autosave_timer.stop()
-        window.capture_panel.close()
-        window.deleteLater()
-    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
 def _polygon(window, qtbot):
@@ -85,9 +57,9 @@ def _pdf_text(path) -> str:
     return "".join(out.split())
 
 
-def test_readings_changed_after_the_save_are_not_the_files(make_window, qtbot, tmp_path,
+def test_readings_changed_after_the_save_are_not_the_files(recovering_window, qtbot, tmp_path,
                                                            samples_dir):
-    window = make_window()
+    window = recovering_window()
     polygon = _polygon(window, qtbot)
     csv = tmp_path / "bench_run_0512.csv"
     csv.write_bytes((samples_dir / polygon.kind.sample_file).read_bytes())
@@ -111,7 +83,7 @@ def test_readings_changed_after_the_save_are_not_the_files(make_window, qtbot, t
 
     # recovered after a crash: still not the file's (which holds the value saved)
     _killed(window)
-    survivor = make_window()
+    survivor = recovering_window()
     assert survivor.projects.offer_recovery()
     recovered = _polygon(survivor, qtbot)
     assert survivor.projects.path == path
@@ -138,6 +110,6 @@ def test_readings_changed_after_the_save_are_not_the_files(make_window, qtbot, t
     assert _line(survivor, recovered) == f"{JOB}: {imported}, edited in AngleBench"
     _set_up_changed(recovered)
     _killed(survivor)
-    third = make_window()
+    third = recovering_window()
     assert third.projects.offer_recovery()
     assert _line(third, _polygon(third, qtbot)) == f"{JOB}: {imported}, edited in AngleBench"

@@ -15,39 +15,11 @@ import shutil
 import subprocess
 
 import pytest
-from PySide6.QtCore import QCoreApplication, QEvent, QSettings
-from PySide6.QtWidgets import QMessageBox
 
 from models.certificate.metadata import CertificateMetadata
 from models.messages import in_language, translator
 
 pytestmark = pytest.mark.slow  # windows, each analysing a polygon run and a positioning one
-
-
-@pytest.fixture
-def make_window(qtbot, tmp_path):
-    from app.main_window import MainWindow
-    from models.project.recovery import RecoveryStore
-
-    made = []
-
-    def factory(tag, recovery="recovery"):
-        settings = QSettings(str(tmp_path / f"{tag}.ini"), QSettings.Format.IniFormat)
-        window = MainWindow(settings=settings, recovery=RecoveryStore(tmp_path / recovery))
-        window.told = []
-        window.tell = lambda title, text: window.told.append(text)
-        window.ask = lambda *a: QMessageBox.StandardButton.Discard
-        window.projects.view.ask_recover = lambda name, when: True
-        qtbot.addWidget(window)
-        made.append(window)
-        return window
-
-    yield factory
-    for window in made:
-        window.projects.autosave_timer.stop()
-        window.capture_panel.close()
-        window.deleteLater()
-    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
 def _four_sets(samples_dir, path) -> None:
@@ -97,13 +69,13 @@ def _chinese_specimen(window, samples_dir, path) -> str:
     return _pdf_text(path)
 
 
-def _sent(make_window, qtbot, tmp_path, samples_dir, recovery="recovery"):
+def _sent(recovering_window, qtbot, tmp_path, samples_dir, recovery="recovery"):
     """A window whose polygon run (imported, one reading typed over) was sent to the
     positioning workbench: (the window, the run file's SHA-256)."""
     run = tmp_path / "bench_run_4sets.csv"
     _four_sets(samples_dir, run)
     digest = hashlib.sha256(run.read_bytes()).hexdigest()
-    window = make_window("a", recovery)
+    window = recovering_window("a", recovery)
     polygon = window.presenter("polygon")
     window.tabs.setCurrentIndex(window.presenters.index(polygon))
     polygon.import_file(run)
@@ -116,13 +88,13 @@ def _sent(make_window, qtbot, tmp_path, samples_dir, recovery="recovery"):
 
 
 def test_a_sent_origin_is_worded_in_chinese_after_the_project_is_opened_again(
-        make_window, qtbot, tmp_path, samples_dir):
-    window, digest = _sent(make_window, qtbot, tmp_path, samples_dir, "reca")
+        recovering_window, qtbot, tmp_path, samples_dir):
+    window, digest = _sent(recovering_window, qtbot, tmp_path, samples_dir, "reca")
     before = _chinese_specimen(window, samples_dir, tmp_path / "before.pdf")
     project = tmp_path / "sent_positioning.anglebench.json"
     assert window.projects.save_to(project), window.told
 
-    reopened = make_window("b", "recb")
+    reopened = recovering_window("b", "recb")
     assert reopened.projects.open_project(project), reopened.told
     positioning = reopened.presenter("positioning")
     reopened.tabs.setCurrentIndex(reopened.presenters.index(positioning))
@@ -139,9 +111,9 @@ def test_a_sent_origin_is_worded_in_chinese_after_the_project_is_opened_again(
     assert said.startswith("由") and f"{project.name}：{said}" in after, (said, after)
 
 
-def test_a_sent_origin_is_worded_in_chinese_after_a_crash(make_window, qtbot, tmp_path,
+def test_a_sent_origin_is_worded_in_chinese_after_a_crash(recovering_window, qtbot, tmp_path,
                                                           samples_dir):
-    window, digest = _sent(make_window, qtbot, tmp_path, samples_dir)
+    window, digest = _sent(recovering_window, qtbot, tmp_path, samples_dir)
     line = window._readings_line(window.presenter("positioning"))
     chinese = in_language(line, translator("zh_CN"))
     # the window dies (kill -9) after an autosave: its lock goes with the process
@@ -149,7 +121,7 @@ def test_a_sent_origin_is_worded_in_chinese_after_a_crash(make_window, qtbot, tm
     os.close(window.projects.recovery._lock_fd)
     window.projects.recovery._lock_fd = None
     window.projects.autosave_timer.stop()
-    survivor = make_window("b")
+    survivor = recovering_window("b")
     assert survivor.projects.offer_recovery(), survivor.told
     positioning = survivor.presenter("positioning")
     _settle(survivor, qtbot)
