@@ -21,11 +21,14 @@ from models.polygon.budget_inputs import (
 )
 from models.polygon.indicative_figures import (
     ISO230_NO_INTERVAL,
+    SCATTER_FREE_ISO230,
+    ZERO_MOVED,
     harmonics_reason,
     indicative_figures_json,
     no_interval,
     reversal_figures,
     reversal_reason,
+    zero_moved,
 )
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
@@ -803,7 +806,11 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
                            float(np.min(result.mean_corrected_arcsec)),
                            float(np.max(result.mean_corrected_arcsec)),
                            decimals)[2] + "\"")]
-        if result.repeatability_arcsec is not None:
+        moved = zero_moved(result)  # the sets' scatter and reversal hold the zero's moves
+        if moved:
+            jjf.append(message(QT_TR_NOOP(", repeatability and reversal not evaluated: "
+                                          "{reason}"), reason=message(ZERO_MOVED)))
+        elif result.repeatability_arcsec is not None:
             jjf.append(message(QT_TR_NOOP(", repeatability {value}"),
                                value=f"{np.max(result.repeatability_arcsec):.2f}\""))
         elif sets_alike(np.array([r.corrected_error_arcsec for r in result.sets]),
@@ -813,7 +820,7 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
         else:
             jjf.append(message(QT_TR_NOOP(", repeatability not evaluated (no direction was "
                                           "measured twice)")))
-        if (reversal_why := reversal_reason(result)) is not None:
+        if not moved and (reversal_why := reversal_reason(result)) is not None:
             jjf.append(no_interval(message(
                 QT_TR_NOOP(", reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward "
                            "sets' error minus reverse sets')"),
@@ -821,8 +828,13 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
                 mean=f"{-reversal_figures(result)['B_mean']:+.2f}\""), reversal_why))
         out.append(joined(jjf))
         figs = iso230_figures(result)
-        out.append("ISO 230-2: " + ", ".join(
-            f"{k} = {v:.2f}\"" for k, v in figs.items() if math.isfinite(v)))
+        kept = [k for k in figs if math.isfinite(figs[k])
+                and (not moved or k in SCATTER_FREE_ISO230)]
+        iso = "ISO 230-2: " + ", ".join(f"{k} = {figs[k]:.2f}\"" for k in kept)
+        withheld = [k for k in figs if math.isfinite(figs[k]) and k not in kept]
+        out.append(iso if not withheld else joined((iso, message(
+            QT_TR_NOOP("; {figures} not evaluated (as the repeatability and reversal "
+                       "above)"), figures=", ".join(withheld)))))
     out.append(result.tilt_verdict)
     out.append(setup_statement(result))
     return lines(out)

@@ -97,10 +97,12 @@ from models.polygon.budget_inputs import (
     is_set_up_input,
 )
 from models.polygon.indicative_figures import (
+    ZERO_MOVED,
     harmonics_reason,
     no_interval,
     reversal_figures,
     reversal_reason,
+    zero_moved,
 )
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
@@ -1064,13 +1066,19 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                           f"{h.amplitude[1]:.3f}\" / {h.amplitude[2]:.3f}\"",
                           no_interval(message(QT_TR_NOOP("eccentricity / ellipticity")),
                                       harmonics_why)))
-    if result.repeatability_arcsec is not None:
+    moved = zero_moved(result)  # the sets' scatter and reversal hold the zero's moves
+    if moved:
+        more_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"), ZERO_MOVED))
+    elif result.repeatability_arcsec is not None:
         more_rows.append((QT_TR_NOOP("Repeatability (largest s over positions)"),
                           f"{np.max(result.repeatability_arcsec):.2f}\"", ""))
     else:
         more_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"),
                           _unevaluated_repeatability(result)))
-    if (reversal_why := reversal_reason(result)) is not None:
+    if moved and result.reversal_arcsec is not None:
+        more_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),
+                          QT_TR_NOOP("not evaluated"), ZERO_MOVED))
+    elif (reversal_why := reversal_reason(result)) is not None:
         reversal = reversal_figures(result)
         more_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),
                           f"{reversal['B']:.2f}\"",
