@@ -979,11 +979,23 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
             s.min, s.max, 2 if printed is None else printed)[2]}
 
     def verdict(self, r, printed=None):
+        """The window's bold line. Where no U can be given whatever the details state (one
+        set, no σ of a reading: :func:`models.polygon.report.reading_noise_withheld`) it
+        says first that no statement of conformity can be made, why and what to state, and
+        claims no grade "met" or "NOT met"."""
+        from models.polygon.report import reading_noise_withheld  # the budget's own reason
+
         s = r.stats
         ptp = printed_range(s.min, s.max, 2 if printed is None else printed)[2]
+        withheld = reading_noise_withheld(r)
         return joined((
             certificate_doubt(r), " " if certificate_doubt(r) else "",
             "" if r.valid else message(QT_TR_NOOP("RUN INVALID: closure failed. ")),
+            message(QT_TR_NOOP("No statement of conformity: {reason}. Grade {grade} "
+                               "(±{accuracy}): corrected error peak-to-peak {ptp}, U left out; "),
+                    reason=withheld, grade=r.grade,
+                    accuracy=f"{GRADE_ACCURACY_ARCSEC[r.grade]:g}\"", ptp=f"{ptp}\"")
+            if withheld is not None else
             message(QT_TR_NOOP("Grade {grade} (±{accuracy}) met: corrected error peak-to-peak "
                                "{ptp}; ") if r.accuracy_ok else
                     QT_TR_NOOP("Grade {grade} (±{accuracy}) NOT met: corrected error "

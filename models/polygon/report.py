@@ -88,7 +88,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.withheld import UncertaintyWithheld
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, message, reason_of
 from models.polygon import KEY, TITLE
 from models.polygon.budget_inputs import (
     PYRAMIDAL_INPUT,
@@ -295,6 +295,20 @@ ONE_SET_NOISE_NOT_DETERMINED = QT_TR_NOOP(
     "holds both, and the encoder's own noise is in neither). State the σ of a reading, "
     "encoder and autocollimator together, in the settings (reading_noise_arcsec; on the "
     "command line --reading-noise-arcsec), or measure each direction, or one direction twice")
+
+
+def reading_noise_withheld(result: PolygonResult) -> str | None:
+    """Why no U can be given whatever the certificate details state, with the σ of a reading
+    ``result`` was analysed with: the budget's own refusal of the readings' noise
+    (:func:`_noise_components`, e.g. :data:`ONE_SET_NOISE_NOT_DETERMINED`); None where the
+    noise is given. The window says it in its verdict line (day review 68 F9: it said
+    "Grade 3 met" and the refusal came only at Export)."""
+    try:
+        _noise_components(result, result.faces, _zero_index(result),
+                          result.reading_noise_stated_arcsec)
+    except UncertaintyWithheld as exc:
+        return reason_of(exc)
+    return None
 
 
 def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: float = 0.0,
