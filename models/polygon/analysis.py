@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
+from models.messages import QT_TR_NOOP, joined, lines, message, reason_of, separated
 from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, TITLE
 from models.polygon.acquisition import polygon_guide
@@ -690,6 +690,7 @@ def iso230_figures(result: PolygonResult) -> dict[str, float]:
 
 def to_json(result: PolygonResult) -> dict[str, Any]:
     first = result.sets[0]
+    moved = zero_moved(result)
     closures = [r.closure_arcsec for r in result.sets]
     out: dict[str, Any] = {
         "error_arcsec": np.concatenate([r.error_arcsec for r in result.sets]).tolist(),
@@ -725,18 +726,26 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
         "harmonics": {"order": result.harmonics.order.tolist(),
                       "amplitude_arcsec": result.harmonics.amplitude.tolist(),
                       "phase_deg": result.harmonics.phase_deg.tolist()},
-        "reversal_arcsec": None if result.reversal_arcsec is None else result.reversal_arcsec.tolist(),
-        "mean_reversal_arcsec": result.mean_reversal_arcsec,
-        "repeatability_arcsec": None if result.repeatability_arcsec is None
+        # null where the autocollimator's zero moved between the sets: the sets' scatter and
+        # the directions' difference hold its moves (models.polygon.indicative_figures)
+        "reversal_arcsec": None if result.reversal_arcsec is None or moved
+        else result.reversal_arcsec.tolist(),
+        "mean_reversal_arcsec": None if moved else result.mean_reversal_arcsec,
+        "repeatability_arcsec": None if result.repeatability_arcsec is None or moved
         else float(np.max(result.repeatability_arcsec)),
         "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
     }
     if len(result.sets) > 1:
-        out["iso230_arcsec"] = iso230_figures(result)
+        figures = iso230_figures(result)
+        out["iso230_arcsec"] = figures if not moved else {
+            k: v for k, v in figures.items() if k in SCATTER_FREE_ISO230}
         # plain numbers, no interval: said beside them (the key's meaning kept, #39)
-        out["iso230_arcsec_reason"] = message(ISO230_NO_INTERVAL)
-        if result.reversal_arcsec is not None:
+        out["iso230_arcsec_reason"] = message(ISO230_NO_INTERVAL) if not moved else separated((
+            message(ISO230_NO_INTERVAL), message(
+                QT_TR_NOOP("{figures} not given: {reason}"), reason=message(ZERO_MOVED),
+                figures=", ".join(k for k in figures if k not in SCATTER_FREE_ISO230))))
+        if result.reversal_arcsec is not None and not moved:
             out["reversal_error_arcsec"] = float(np.max(np.abs(result.reversal_arcsec)))
     # B, B̄ and the harmonics as measured, with null intervals and why (day review 66 F4)
     out.update(indicative_figures_json(result))

@@ -126,7 +126,9 @@ def indicative_figures_json(result: PolygonResult) -> dict[str, Any]:
     out: dict[str, Any] = {}
     reversal = reversal_reason(result)
     if reversal is not None:
-        out["reversal_figures"] = figure_objects(("B", "B_mean"), reversal_figures(result), {})
+        # where the zero moved, no value: the reason says why (:data:`ZERO_MOVED`)
+        out["reversal_figures"] = figure_objects(
+            ("B", "B_mean"), {} if reversal == ZERO_MOVED else reversal_figures(result), {})
         out["reversal_figures_reason"] = message(reversal)
     harmonics = harmonics_reason(result)
     if harmonics is not None:

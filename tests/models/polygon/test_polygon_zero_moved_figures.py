@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from app.main import main
-from models.polygon.analysis import POLYGON
+from models.polygon.analysis import POLYGON, to_json
 from models.readings.sheet import ReadingsSheet
 from tests.pdf_text import pdf_text
 from tests.polygon_zero_jump_rig import ZeroJumpRig
@@ -73,6 +73,15 @@ def test_the_summary_withholds_the_sets_scatter_where_the_zero_moved(jump_sd):
         assert ", repeatability 0." in text and "reversal |ē↑ − ē↓| up to" in text, text
         for name in HELD:
             assert f" {name} = " in " " + iso.replace("ISO 230-2:", ""), (name, iso)
+    # the JSON alike: no number of the encoder the jumps hold, and why
+    data = to_json(result)
+    assert (data["repeatability_arcsec"] is None) == moved
+    assert (data["mean_reversal_arcsec"] is None) == moved
+    assert (data["reversal_figures"]["B"]["value"] is None) == moved
+    assert (MOVED in data["reversal_figures_reason"]) == moved
+    assert (MOVED in data["iso230_arcsec_reason"]) == moved
+    assert all((name in data["iso230_arcsec"]) != moved for name in HELD), data["iso230_arcsec"]
+    assert {"E_up", "E_down", "M"} <= set(data["iso230_arcsec"])
 
 
 @pytest.mark.slow  # two certificates through the command line
