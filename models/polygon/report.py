@@ -308,6 +308,8 @@ def reading_noise_withheld(result: PolygonResult) -> str | None:
                           result.reading_noise_stated_arcsec)
     except UncertaintyWithheld as exc:
         return reason_of(exc)
+    except (ValueError, ArithmeticError, IndexError):  # the budget's own refusal, at export
+        return None
     return None
 
 
