@@ -20,19 +20,13 @@ from PySide6.QtWidgets import (
 )
 
 from models.certificate.metadata import CertificateMetadata
+from models.messages import as_sentence
 from widgets.certificate_dialog import CertificateDialog
 from widgets.i18n import tr, translated
 from widgets.save_file import ask_save_file
 from widgets.screen_fit import fit_to_screen
 
 __all__ = ["CertificateDialogs", "as_sentence"]
-
-
-def as_sentence(text: str) -> str:
-    """``text`` beginning with a capital, as a sentence does (the register's reasons begin
-    in lower case, to follow "anglebench analyze: " on the command line); a text in a
-    script without case as it is."""
-    return text[:1].upper() + text[1:]
 
 
 class CertificateDialogs:

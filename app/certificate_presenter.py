@@ -27,6 +27,7 @@ from models.certificate.standards_fit import (
     with_workbench_standards,
 )
 from models.display_units import ANGLE_UNITS, AngleUnit
+from models.messages import as_sentence
 from models.project.output_guard import check_output
 from models.register.wording import revision_words
 from models.workbench import IssuesCertificates
@@ -535,7 +536,8 @@ class CertificatePresenter:
                                                settings).is_test_report
         except ValueError as exc:
             self.view.tell(tr("Cannot export"), tr("{reason}. Nothing was written; the details "
-                                                   "are kept.").format(reason=explained(exc)))
+                                                   "are kept.").format(
+                reason=as_sentence(explained(exc))))  # a reason in lower case (day 68 F9)
             return False
         revision = self.pending if self.pending and self.pending.workbench == kind.key else None
         note, separate = "", ""

@@ -23,8 +23,8 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
-__all__ = ["JOINS", "LIST_JOIN", "QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue",
-           "declared_text", "in_language", "joined", "lines", "listed", "message", "reason_of",
+__all__ = ["JOINS", "LIST_JOIN", "QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "as_sentence",
+           "catalogue", "declared_text", "in_language", "joined", "lines", "listed", "message", "reason_of",
            "rendered", "separated", "translator", "unit_tail"]
 
 #: the .ts sources and compiled .qm files (the window loads the .qm; the command line reads
@@ -115,6 +115,13 @@ def lines(parts: Iterable[Any]) -> Message:
     for part in parts:
         out += (["\n"] if out else []) + [part]
     return joined(out)
+
+
+def as_sentence(text: str) -> str:
+    """``text`` beginning with a capital, as a sentence does (a reason begins in lower case,
+    to follow "anglebench analyze: " on the command line or "…: " in a longer message); a
+    text in a script without case as it is."""
+    return text[:1].upper() + text[1:]
 
 
 def reason_of(exc: BaseException) -> str:

@@ -1144,7 +1144,10 @@ class WorkbenchPresenter(QObject):
             self._show_readout_decimals(shown.rounding)
             self.view.set_summary(progress + unit_text(shown.summary))
             verdict = unit_text(shown.verdict) if isinstance(self.kind, ShowsHeadline) else ""
-            if shown.conformity is not None:  # the certificate's statement, before issuing
+            # the certificate's statement, before issuing; a reason the verdict already
+            # gives (no U whatever the details: the kind's verdict says why) not said twice
+            if shown.conformity is not None and not (
+                    isinstance(shown.conformity, str) and translated(shown.conformity) in verdict):
                 verdict = "\n".join(t for t in (verdict, conformity_text(shown.conformity)) if t)
             self.view.set_verdict(verdict, conformity_statement(shown.conformity))
             printed = {}  # by the name shown; a figure shown in another unit: its value

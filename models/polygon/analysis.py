@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
+from models.messages import QT_TR_NOOP, joined, lines, message, reason_of, separated
 from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, TITLE
 from models.polygon.acquisition import polygon_guide
@@ -21,11 +21,14 @@ from models.polygon.budget_inputs import (
 )
 from models.polygon.indicative_figures import (
     ISO230_NO_INTERVAL,
+    SCATTER_FREE_ISO230,
+    ZERO_MOVED,
     harmonics_reason,
     indicative_figures_json,
     no_interval,
     reversal_figures,
     reversal_reason,
+    zero_moved,
 )
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
@@ -687,6 +690,7 @@ def iso230_figures(result: PolygonResult) -> dict[str, float]:
 
 def to_json(result: PolygonResult) -> dict[str, Any]:
     first = result.sets[0]
+    moved = zero_moved(result)
     closures = [r.closure_arcsec for r in result.sets]
     out: dict[str, Any] = {
         "error_arcsec": np.concatenate([r.error_arcsec for r in result.sets]).tolist(),
@@ -722,18 +726,26 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
         "harmonics": {"order": result.harmonics.order.tolist(),
                       "amplitude_arcsec": result.harmonics.amplitude.tolist(),
                       "phase_deg": result.harmonics.phase_deg.tolist()},
-        "reversal_arcsec": None if result.reversal_arcsec is None else result.reversal_arcsec.tolist(),
-        "mean_reversal_arcsec": result.mean_reversal_arcsec,
-        "repeatability_arcsec": None if result.repeatability_arcsec is None
+        # null where the autocollimator's zero moved between the sets: the sets' scatter and
+        # the directions' difference hold its moves (models.polygon.indicative_figures)
+        "reversal_arcsec": None if result.reversal_arcsec is None or moved
+        else result.reversal_arcsec.tolist(),
+        "mean_reversal_arcsec": None if moved else result.mean_reversal_arcsec,
+        "repeatability_arcsec": None if result.repeatability_arcsec is None or moved
         else float(np.max(result.repeatability_arcsec)),
         "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
     }
     if len(result.sets) > 1:
-        out["iso230_arcsec"] = iso230_figures(result)
+        figures = iso230_figures(result)
+        out["iso230_arcsec"] = figures if not moved else {
+            k: v for k, v in figures.items() if k in SCATTER_FREE_ISO230}
         # plain numbers, no interval: said beside them (the key's meaning kept, #39)
-        out["iso230_arcsec_reason"] = message(ISO230_NO_INTERVAL)
-        if result.reversal_arcsec is not None:
+        out["iso230_arcsec_reason"] = message(ISO230_NO_INTERVAL) if not moved else separated((
+            message(ISO230_NO_INTERVAL), message(
+                QT_TR_NOOP("{figures} not given: {reason}"), reason=message(ZERO_MOVED),
+                figures=", ".join(k for k in figures if k not in SCATTER_FREE_ISO230))))
+        if result.reversal_arcsec is not None and not moved:
             out["reversal_error_arcsec"] = float(np.max(np.abs(result.reversal_arcsec)))
     # B, B̄ and the harmonics as measured, with null intervals and why (day review 66 F4)
     out.update(indicative_figures_json(result))
@@ -803,7 +815,11 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
                            float(np.min(result.mean_corrected_arcsec)),
                            float(np.max(result.mean_corrected_arcsec)),
                            decimals)[2] + "\"")]
-        if result.repeatability_arcsec is not None:
+        moved = zero_moved(result)  # the sets' scatter and reversal hold the zero's moves
+        if moved:
+            jjf.append(message(QT_TR_NOOP(", repeatability and reversal not evaluated: "
+                                          "{reason}"), reason=message(ZERO_MOVED)))
+        elif result.repeatability_arcsec is not None:
             jjf.append(message(QT_TR_NOOP(", repeatability {value}"),
                                value=f"{np.max(result.repeatability_arcsec):.2f}\""))
         elif sets_alike(np.array([r.corrected_error_arcsec for r in result.sets]),
@@ -813,7 +829,7 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
         else:
             jjf.append(message(QT_TR_NOOP(", repeatability not evaluated (no direction was "
                                           "measured twice)")))
-        if (reversal_why := reversal_reason(result)) is not None:
+        if not moved and (reversal_why := reversal_reason(result)) is not None:
             jjf.append(no_interval(message(
                 QT_TR_NOOP(", reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward "
                            "sets' error minus reverse sets')"),
@@ -821,8 +837,13 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
                 mean=f"{-reversal_figures(result)['B_mean']:+.2f}\""), reversal_why))
         out.append(joined(jjf))
         figs = iso230_figures(result)
-        out.append("ISO 230-2: " + ", ".join(
-            f"{k} = {v:.2f}\"" for k, v in figs.items() if math.isfinite(v)))
+        kept = [k for k in figs if math.isfinite(figs[k])
+                and (not moved or k in SCATTER_FREE_ISO230)]
+        iso = "ISO 230-2: " + ", ".join(f"{k} = {figs[k]:.2f}\"" for k in kept)
+        withheld = [k for k in figs if math.isfinite(figs[k]) and k not in kept]
+        out.append(iso if not withheld else joined((iso, message(
+            QT_TR_NOOP("; {figures} not evaluated (as the repeatability and reversal "
+                       "above)"), figures=", ".join(withheld)))))
     out.append(result.tilt_verdict)
     out.append(setup_statement(result))
     return lines(out)
@@ -967,11 +988,23 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
             s.min, s.max, 2 if printed is None else printed)[2]}
 
     def verdict(self, r, printed=None):
+        """The window's bold line. Where no U can be given whatever the details state (one
+        set, no σ of a reading: :func:`models.polygon.report.reading_noise_withheld`) it
+        says first that no statement of conformity can be made, why and what to state, and
+        claims no grade "met" or "NOT met"."""
+        from models.polygon.report import reading_noise_withheld  # the budget's own reason
+
         s = r.stats
         ptp = printed_range(s.min, s.max, 2 if printed is None else printed)[2]
+        withheld = reading_noise_withheld(r)
         return joined((
             certificate_doubt(r), " " if certificate_doubt(r) else "",
             "" if r.valid else message(QT_TR_NOOP("RUN INVALID: closure failed. ")),
+            message(QT_TR_NOOP("No statement of conformity: {reason}. Grade {grade} "
+                               "(±{accuracy}): corrected error peak-to-peak {ptp}, U left out; "),
+                    reason=withheld, grade=r.grade,
+                    accuracy=f"{GRADE_ACCURACY_ARCSEC[r.grade]:g}\"", ptp=f"{ptp}\"")
+            if withheld is not None else
             message(QT_TR_NOOP("Grade {grade} (±{accuracy}) met: corrected error peak-to-peak "
                                "{ptp}; ") if r.accuracy_ok else
                     QT_TR_NOOP("Grade {grade} (±{accuracy}) NOT met: corrected error "

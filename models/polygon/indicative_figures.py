@@ -7,7 +7,17 @@ with one set per direction B cannot be told from the zero drift carried between 
 Each is marked "no coverage interval: …" with its reason in the statistics table (and so
 the DCC) and stated in the JSON as {value, interval_low: null, interval_high: null,
 coverage_probability: null} beside the reason, as the ISO 230-2 figures' JSON states a figure
-the readings do not bound."""
+the readings do not bound.
+
+Where the autocollimator's zero moved between the sets (:func:`zero_moved`), the figures made
+from the sets' scatter or from the difference of the directions are withheld as figures of
+the encoder, with that reason (:data:`ZERO_MOVED`), not printed with a qualifier: one offset of
+a whole set is the same unknown whether the autocollimator's zero or the encoder moved, so
+the readings cannot tell the encoder's share, and a number in an encoder's "Repeatability"
+or "Reversal" row is read as the encoder's whatever the note beside it says (day review 68
+F3: 1.34″ and B̄ +1.05″ printed beside a budget whose repeatability, each set's offset taken
+out, was 0.097″). U is not touched: the budget already takes each set's offset as an input
+of its own (models.polygon.report)."""
 
 from __future__ import annotations
 
@@ -16,12 +26,12 @@ from typing import Any
 import numpy as np
 
 from models.messages import QT_TR_NOOP, message, separated
-from models.polygon.model import PolygonResult
+from models.polygon.model import PolygonResult, zero_offsets_warning
 
 __all__ = ["HARMONICS_NO_INTERVAL", "ISO230_NO_INTERVAL", "REVERSAL_CONFOUNDED",
-           "REVERSAL_NOT_EVALUATED",
+           "REVERSAL_NOT_EVALUATED", "SCATTER_FREE_ISO230", "ZERO_MOVED",
            "harmonics_reason", "indicative_figures_json", "no_interval", "reversal_figures",
-           "reversal_reason"]
+           "reversal_reason", "zero_moved"]
 
 #: one set in each direction: each direction's mean is one set, whose offset from the common
 #: zero is the zero drift it carries (and its reading noise): a difference of the two
@@ -49,11 +59,38 @@ ISO230_NO_INTERVAL = QT_TR_NOOP(
     "a range over the faces, biased high by the readings' noise; the calibration results are "
     "the face deviations with their U")
 
+#: the autocollimator's zero moved between the sets (:func:`zero_moved`): why the
+#: repeatability, the reversal and the ISO 230-2 figures made from them are not given
+ZERO_MOVED = QT_TR_NOOP(
+    "the autocollimator's zero moved between the sets: the sets' scatter and the difference "
+    "between the directions hold its moves, which the readings cannot tell from the "
+    "encoder's, so no figure of the encoder can be made from them (U takes each set's offset "
+    "out as an input of its own)")
+#: the ISO 230-2 figures a set's offset cannot move: each a range over the faces of one
+#: direction's mean, or of the mean of the two directions' (the offsets shift all faces alike)
+SCATTER_FREE_ISO230 = ("E_up", "E_down", "M")
+
+
+def zero_moved(result: PolygonResult) -> bool:
+    """Whether the autocollimator's zero moved between the sets: the analysis's warning
+    (:func:`models.polygon.model.zero_offsets_warning`) on the same errors."""
+    if len(result.sets) < 2:
+        return False
+    index = (None if any(s.reading_index is None for s in result.sets) else
+             np.array([np.asarray(s.reading_index, dtype=float) for s in result.sets]))
+    return bool(zero_offsets_warning(
+        np.array([s.corrected_error_arcsec for s in result.sets]),
+        np.array([s.direction for s in result.sets]), index))
+
 
 def reversal_reason(result: PolygonResult) -> str | None:
-    """Why the reversal has no coverage interval (None: no reversal, one direction run)."""
+    """Why the reversal has no coverage interval (None: no reversal, one direction run);
+    :data:`ZERO_MOVED` where the autocollimator's zero moved between the sets (the
+    certificate and the summary then give no reversal at all)."""
     if result.reversal_arcsec is None:
         return None
+    if zero_moved(result):
+        return ZERO_MOVED
     directions = np.array([s.direction for s in result.sets])
     once = min(int(np.sum(directions > 0)), int(np.sum(directions < 0))) == 1
     return REVERSAL_CONFOUNDED if once else REVERSAL_NOT_EVALUATED
@@ -89,7 +126,9 @@ def indicative_figures_json(result: PolygonResult) -> dict[str, Any]:
     out: dict[str, Any] = {}
     reversal = reversal_reason(result)
     if reversal is not None:
-        out["reversal_figures"] = figure_objects(("B", "B_mean"), reversal_figures(result), {})
+        # where the zero moved, no value: the reason says why (:data:`ZERO_MOVED`)
+        out["reversal_figures"] = figure_objects(
+            ("B", "B_mean"), {} if reversal == ZERO_MOVED else reversal_figures(result), {})
         out["reversal_figures_reason"] = message(reversal)
     harmonics = harmonics_reason(result)
     if harmonics is not None:

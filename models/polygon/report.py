@@ -88,7 +88,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.withheld import UncertaintyWithheld
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, message, reason_of
 from models.polygon import KEY, TITLE
 from models.polygon.budget_inputs import (
     PYRAMIDAL_INPUT,
@@ -97,10 +97,12 @@ from models.polygon.budget_inputs import (
     is_set_up_input,
 )
 from models.polygon.indicative_figures import (
+    ZERO_MOVED,
     harmonics_reason,
     no_interval,
     reversal_figures,
     reversal_reason,
+    zero_moved,
 )
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
@@ -293,6 +295,22 @@ ONE_SET_NOISE_NOT_DETERMINED = QT_TR_NOOP(
     "holds both, and the encoder's own noise is in neither). State the σ of a reading, "
     "encoder and autocollimator together, in the settings (reading_noise_arcsec; on the "
     "command line --reading-noise-arcsec), or measure each direction, or one direction twice")
+
+
+def reading_noise_withheld(result: PolygonResult) -> str | None:
+    """Why no U can be given whatever the certificate details state, with the σ of a reading
+    ``result`` was analysed with: the budget's own refusal of the readings' noise
+    (:func:`_noise_components`, e.g. :data:`ONE_SET_NOISE_NOT_DETERMINED`); None where the
+    noise is given. The window says it in its verdict line (day review 68 F9: it said
+    "Grade 3 met" and the refusal came only at Export)."""
+    try:
+        _noise_components(result, result.faces, _zero_index(result),
+                          result.reading_noise_stated_arcsec)
+    except UncertaintyWithheld as exc:
+        return reason_of(exc)
+    except (ValueError, ArithmeticError, IndexError):  # the budget's own refusal, at export
+        return None
+    return None
 
 
 def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: float = 0.0,
@@ -1064,13 +1082,19 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                           f"{h.amplitude[1]:.3f}\" / {h.amplitude[2]:.3f}\"",
                           no_interval(message(QT_TR_NOOP("eccentricity / ellipticity")),
                                       harmonics_why)))
-    if result.repeatability_arcsec is not None:
+    moved = zero_moved(result)  # the sets' scatter and reversal hold the zero's moves
+    if moved:
+        more_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"), ZERO_MOVED))
+    elif result.repeatability_arcsec is not None:
         more_rows.append((QT_TR_NOOP("Repeatability (largest s over positions)"),
                           f"{np.max(result.repeatability_arcsec):.2f}\"", ""))
     else:
         more_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"),
                           _unevaluated_repeatability(result)))
-    if (reversal_why := reversal_reason(result)) is not None:
+    if moved and result.reversal_arcsec is not None:
+        more_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),
+                          QT_TR_NOOP("not evaluated"), ZERO_MOVED))
+    elif (reversal_why := reversal_reason(result)) is not None:
         reversal = reversal_figures(result)
         more_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),
                           f"{reversal['B']:.2f}\"",
