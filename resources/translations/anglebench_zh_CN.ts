@@ -1024,7 +1024,13 @@
         <translation>仅供参考：未评定包含区间；各组的 ISO 230-2 指标（证书上不打印）按读数直接计算，每项是各面上的最大值或极差，因读数噪声而偏大；校准结果是各面的偏差及其 U</translation>
     </message>
     <message>
+        <source>the autocollimator&apos;s zero moved between the sets: the sets&apos; scatter and the difference between the directions hold its moves, which the readings cannot tell from the encoder&apos;s, so no figure of the encoder can be made from them (U takes each set&apos;s offset out as an input of its own)</source>
+        <extracomment>the autocollimator&apos;s zero moved between the sets (:func:`zero_moved`): why the repeatability, the reversal and the ISO 230-2 figures made from them are not given</extracomment>
+        <translation>自准直仪的零位在测回之间移动了：各测回的离散以及两个方向之间的差值包含了它的移动，而读数无法将其与编码器的区分开，因此不能由它们得出编码器的量值（U 已将每个测回的偏移作为单独的输入量扣除）</translation>
+    </message>
+    <message>
         <source>no coverage interval: {reason}</source>
+        <extracomment>the ISO 230-2 figures a set&apos;s offset cannot move: each a range over the faces of one direction&apos;s mean, or of the mean of the two directions&apos; (the offsets shift all faces alike)</extracomment>
         <translation>无包含区间：{reason}</translation>
     </message>
     <message>
@@ -5190,6 +5196,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{what}读数录入到 {step} 的步距，且{why}：其舍入不因各测回平均而减小，作为 U 的一个独立输入量（矩形分布，半宽 {half}）。</translation>
     </message>
     <message>
+        <source>{figures} not given: {reason}</source>
+        <translation>未给出 {figures}：{reason}</translation>
+    </message>
+    <message>
         <source>{faces}-face polygon, {sets} set(s), grade {grade} ({accuracy})</source>
         <translation>{faces} 面棱体，{sets} 组，{grade} 级（{accuracy}）</translation>
     </message>
@@ -5220,6 +5230,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>ψ = {psi} ± {u}, ω not identified (ψ not told from 0)</source>
         <translation>ψ = {psi} ± {u}，ω 未辨识（ψ 与 0 无法区分）</translation>
+    </message>
+    <message>
+        <source>, repeatability and reversal not evaluated: {reason}</source>
+        <translation>，未评定重复性和反向差：{reason}</translation>
+    </message>
+    <message>
+        <source>; {figures} not evaluated (as the repeatability and reversal above)</source>
+        <translation>；未评定 {figures}（同上文的重复性和反向差）</translation>
+    </message>
+    <message>
+        <source>No statement of conformity: {reason}. Grade {grade} (±{accuracy}): corrected error peak-to-peak {ptp}, U left out; </source>
+        <translation>不作符合性声明：{reason}。{grade} 级（±{accuracy}）：修正后误差峰峰值 {ptp}，未计 U；</translation>
     </message>
     <message>
         <source>tilt not identified</source>
