@@ -75,6 +75,7 @@ from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import interval_ends
 from models.uncertainty.undetermined_repeatability import (
     RUNS_UNDETERMINED,
+    RUNS_UNDETERMINED_READINGS,
     undetermined_repeatability,
 )
 
@@ -402,8 +403,10 @@ def withheld_figure_reasons(result: PositioningResult, budget: UncertaintyBudget
     :func:`stated_figure_intervals` for ``budget``; without it the readings' own)."""
     intervals = (figure_uncertainties(result) if budget is None else held_to_cmc_figures(
         figure_uncertainties(result, budget), float(budget.floor)))
-    return undetermined_repeatability(intervals, _runs(result), RUNS_UNDETERMINED,
-                                      result.symbol)[1]
+    # the readings' own interval said so: a certificate's, with the standards' U, is wider
+    return undetermined_repeatability(
+        intervals, _runs(result), RUNS_UNDETERMINED if budget is not None else
+        RUNS_UNDETERMINED_READINGS, result.symbol)[1]
 
 
 def readings_figure_intervals(result: PositioningResult) -> dict[str, FigureInterval]:
