@@ -298,6 +298,10 @@ def decided_interval_probability(conformity: Conformity) -> float | None:
     return float(conformity.probability)
 
 
+#: the decided quantity's row where every point decides: which point its value is
+DECIDING_POINT = QT_TR_NOOP("the deciding point: {point}")
+
+
 def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
                   points: str, unit: str = "\"", uncertainty_withheld: str = "",
                   interval_columns: bool = False) -> list[tuple[str, ...]]:
@@ -314,7 +318,10 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
     p_decided = decided_interval_probability(conformity)
     if math.isfinite(conformity.value):
         lower = conformity.expanded_lower
-        if math.isfinite(lower) and lower > 0:  # an asymmetric interval, printed as such
+        # a half range's interval (asymmetric, its lower end held at 0), printed as such; a
+        # point's error is signed, its interval ±U of that point (0.8.17 printed a point at
+        # −6″ as "6″ −6″/+18″, 0″ … 25″, … as a half range is not negative")
+        if conformity.monte_carlo is not None and math.isfinite(lower) and lower > 0:
             # two significant digits at most on either side (GUM 7.2.6): the larger's decimal
             d = significant_decimals(max(lower, conformity.expanded)) or digits
             # U₋, U₊ the value to the interval's ends, after clipping (the statement's)
@@ -339,7 +346,8 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
             d = significant_decimals(conformity.expanded)
             low, high = (interval_ends(conformity.interval_low, conformity.interval_high, d)
                          if d is not None else (math.nan, math.nan))
-            note = conformity.quantity
+            note = separated([message(DECIDING_POINT, point=conformity.point)
+                              if conformity.point else "", conformity.quantity], "; ")
         if interval_columns:
             shown = p_decided is not None and math.isfinite(low) and math.isfinite(high)
             rows.append((QT_TR_NOOP("Decided quantity"), value,

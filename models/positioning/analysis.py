@@ -25,7 +25,7 @@ from models.positioning.model import (
     infer_directions,
 )
 from models.positioning.report import (
-    figure_uncertainties,
+    figure_decimals,
     intervals_withheld,
     positioning_budget,
     positioning_certificate,
@@ -40,7 +40,6 @@ from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.resolution import readings_step
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
-from models.uncertainty.conformity import interval_decimals
 from models.uncertainty.figure_intervals import FIGURE_VALUE_NOTE, figure_objects
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
@@ -572,8 +571,10 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
     keys = ("A", "R", "B", "B_mean", "E", "M") if result.bidirectional else tuple(
         f"{figure}_{n}" for n in present for figure in ("A", "R", "E"))
     intervals = readings_figure_intervals(result)
-    # each figure to the decimal of its interval's half-width (GUM 7.2.6), as the certificate
-    decimals = _decimals(intervals) | (printed or {})
+    # each figure to the decimal of its interval's half-width (GUM 7.2.6), as the certificate;
+    # one whose interval is withheld to that of the interval withheld (day 68 F5: "A =
+    # 19.866″" here beside the window's "A = 20″")
+    decimals = figure_decimals(result) | (printed or {})
     out.append(_figures_line("ISO 230-2: ", ((k, f.get(k)) for k in keys), sym, decimals))
     out.append(_figures_line("VDI/DGQ 3441: ", result.vdi.as_dict().items(), sym, decimals))
     if intervals:
@@ -602,11 +603,6 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
                                   "(Export compensation table… below the set-up)."),
                        standard=message(STANDARDS[result.standard])))
     return lines(out)
-
-
-def _decimals(intervals) -> dict[str, int]:
-    """Each figure's decimal: that of its interval's half-width (GUM 7.2.6)."""
-    return {k: interval_decimals(iv.low, iv.high) for k, iv in (intervals or {}).items()}
 
 
 def _figures_line(prefix: str, figures, symbol: str, decimals: dict[str, int] | None = None):
@@ -722,13 +718,12 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         from models.positioning.report import positioning_budget
 
         try:
-            return _decimals(stated_figure_intervals(
-                result, positioning_budget(result, metadata, settings)))
+            return figure_decimals(result, positioning_budget(result, metadata, settings))
         except (ValueError, ArithmeticError, IndexError):
             return None
 
     def printed_headline(self, result, printed=None):
-        decimals = _decimals(figure_uncertainties(result)) | (printed or {})
+        decimals = figure_decimals(result) | (printed or {})
         return {f"{k} ({result.deviation_unit})": figure_text(v, "", decimals[k])
                 for k, v in result.iso.figures.items() if k in decimals and math.isfinite(v)}
 
@@ -736,7 +731,7 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         # each figure to its interval's decimal, as the summary and the certificate print it
         # (GUM 7.2.6; the window said "A 22.447″" beside a summary's "A = 22.4″"), with the
         # certificate's reference standards' U where ``printed`` gives them
-        decimals = _decimals(figure_uncertainties(r)) | (printed or {})
+        decimals = figure_decimals(r) | (printed or {})
         return joined((
             _figures_line(f"{STANDARDS[r.standard].split(' (')[0]}: ",
                           ((k, r.iso.figures.get(k)) for k in (

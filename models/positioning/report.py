@@ -75,11 +75,13 @@ from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import interval_ends
 from models.uncertainty.undetermined_repeatability import (
     RUNS_UNDETERMINED,
+    RUNS_UNDETERMINED_READINGS,
     undetermined_repeatability,
 )
 
-__all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
-           "intervals_withheld", "readings_figure_intervals", "readings_step_component",
+__all__ = ["FIGURE_NAMES", "axis_figures", "figure_decimals", "figure_uncertainties",
+           "intervals_determined", "intervals_withheld", "readings_figure_intervals",
+           "readings_step_component",
            "stated_figure_intervals", "withheld_figure_reasons",
            "positioning_budget", "positioning_certificate", "repeated_readings_components"]
 
@@ -374,6 +376,21 @@ def stated_figure_intervals(result: PositioningResult, budget: UncertaintyBudget
         _runs(result), RUNS_UNDETERMINED, result.symbol)[0]
 
 
+def figure_decimals(result: PositioningResult, budget: UncertaintyBudget | None = None
+                    ) -> dict[str, int]:
+    """Each figure's printed decimal: that of its coverage interval's half-width, two
+    significant digits (GUM 7.2.6) — for a figure whose interval is withheld (two runs:
+    :func:`withheld_figure_reasons`) that of the interval its reason quotes, the figure's
+    own scatter as the readings show it, as the window's verdict line prints it (day 68 F5:
+    "A 19.866″ —" on the certificate beside the window's "A = 20″", its interval withheld
+    at 14″ … 974″). ``budget``: the certificate's (its reference standards' U, held to the
+    laboratory's CMC); None: the readings' own. A figure with no interval at all is not here
+    (a target approached once: printed to 0.001, as before)."""
+    intervals = (figure_uncertainties(result) if budget is None else held_to_cmc_figures(
+        figure_uncertainties(result, budget), float(budget.floor)))
+    return {key: interval_decimals(iv.low, iv.high) for key, iv in intervals.items()}
+
+
 def _runs(result: PositioningResult) -> dict[str, np.ndarray]:
     return {name: stats.runs for name, _, stats in result.directions_present()}
 
@@ -386,8 +403,10 @@ def withheld_figure_reasons(result: PositioningResult, budget: UncertaintyBudget
     :func:`stated_figure_intervals` for ``budget``; without it the readings' own)."""
     intervals = (figure_uncertainties(result) if budget is None else held_to_cmc_figures(
         figure_uncertainties(result, budget), float(budget.floor)))
-    return undetermined_repeatability(intervals, _runs(result), RUNS_UNDETERMINED,
-                                      result.symbol)[1]
+    # the readings' own interval said so: a certificate's, with the standards' U, is wider
+    return undetermined_repeatability(
+        intervals, _runs(result), RUNS_UNDETERMINED if budget is not None else
+        RUNS_UNDETERMINED_READINGS, result.symbol)[1]
 
 
 def readings_figure_intervals(result: PositioningResult) -> dict[str, FigureInterval]:
@@ -407,12 +426,16 @@ def _deviation_text(s: float) -> str:
 
 
 def _figure_cells(value: float | None, interval: FigureInterval | None,
-                  sym: str) -> tuple[str, str, str]:
+                  sym: str, withheld: int | None = None) -> tuple[str, str, str]:
     """The figure, its interval "10.2″ … 12.0″" and the interval's probability "95.45 %":
     the figure and the interval's ends to the decimal of the interval's half-width, two
-    significant digits (GUM 7.2.6); without an interval the figure to 0.001 and "—"."""
+    significant digits (GUM 7.2.6); without an interval the figure to ``withheld`` (the
+    decimal of the interval withheld: :func:`figure_decimals`; None: 0.001) and "—"."""
     if interval is None:
-        return figure_text(value, sym), "—", ""
+        text = figure_text(value, sym, 3 if withheld is None else withheld)
+        # the DCC states the figure at full precision, as the JSON does
+        return (Exact(text, float(value)) if isinstance(text, str) and value is not None
+                and math.isfinite(value) else text), "—", ""
     d = interval_decimals(interval.low, interval.high)
     low, high = interval_ends(interval.low, interval.high, d)  # rounded outwards
     text = figure_text(value, sym, d)
@@ -424,9 +447,9 @@ def _figure_cells(value: float | None, interval: FigureInterval | None,
 
 
 def _figure_rows(result: PositioningResult,
-                 uncertainty: dict[str, FigureInterval] | None = None
-                 ) -> list[tuple[str, ...]]:
-    uncertainty = uncertainty or {}
+                 uncertainty: dict[str, FigureInterval] | None = None,
+                 decimals: dict[str, int] | None = None) -> list[tuple[str, ...]]:
+    uncertainty, decimals = uncertainty or {}, decimals or {}
     sym, f = result.symbol, result.iso.figures
     gb = result.standard == "gb17421.2"
     present = {name for name, _, _ in result.directions_present()}
@@ -437,10 +460,11 @@ def _figure_rows(result: PositioningResult,
             continue
         name = f"{chinese} {key}" if gb else message("{key}: {name}", key=key,
                                                      name=message(english))
-        iso_rows.append((name, *_figure_cells(f.get(key), uncertainty.get(key), sym),
+        iso_rows.append((name, *_figure_cells(f.get(key), uncertainty.get(key), sym,
+                                                  decimals.get(key)),
                          "GB/T 17421.2" if gb else "ISO 230-2"))
     vdi_rows = [(message("{key}: {name}", key=k, name=message(VDI_NAMES[k])),
-                 *_figure_cells(v, uncertainty.get(k), sym), "VDI/DGQ 3441")
+                 *_figure_cells(v, uncertainty.get(k), sym, decimals.get(k)), "VDI/DGQ 3441")
                 for k, v in result.vdi.as_dict().items()]
     return vdi_rows + iso_rows if result.standard == "vdi3441" else iso_rows + vdi_rows
 
@@ -525,7 +549,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                         not_stated(result),
                         estimate=decided_half_range(result, budget, intervals))
     stated = stated_figure_intervals(result, budget)
-    statistics = Statistics(_figure_rows(result, stated),
+    statistics = Statistics(_figure_rows(result, stated, figure_decimals(result, budget)),
                             QT_TR_NOOP("targets and directions"),
                             title=QT_TR_NOOP("Figures of the axis"),
                             header=(QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"),

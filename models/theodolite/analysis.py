@@ -260,7 +260,8 @@ def _intervals_line(result: TheodoliteResult) -> str:
         if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
             parts.append(f" ({percent_text(iv.probability)} %)")
     # R, R↑, R↓ of two passes: no interval, and why (audit 68 finding 3)
-    for key, reason in withheld_theodolite_figure_reasons(result, budget).items():
+    for key, reason in withheld_theodolite_figure_reasons(result, budget,
+                                                          readings_alone=True).items():
         parts += ["\n", message(QT_TR_NOOP("No coverage interval is given for {figure}: "
                                            "{reason}."), figure=key, reason=reason)]
     return joined(parts)

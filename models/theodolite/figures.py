@@ -92,6 +92,7 @@ from models.uncertainty.figure_intervals import (
 from models.uncertainty.stated_excess import excess_not_excluded
 from models.uncertainty.undetermined_repeatability import (
     PASSES_UNDETERMINED,
+    PASSES_UNDETERMINED_READINGS,
     undetermined_repeatability,
 )
 
@@ -359,16 +360,18 @@ def _passes(result: TheodoliteResult) -> dict[str, np.ndarray]:
 
 
 def withheld_theodolite_figure_reasons(result: TheodoliteResult, budget: UncertaintyBudget,
-                                       stated_u: float = 0.0, pair_factor: float = 2.0
-                                       ) -> dict[str, Message]:
+                                       stated_u: float = 0.0, pair_factor: float = 2.0,
+                                       readings_alone: bool = False) -> dict[str, Message]:
     """Why R, R↑ or R↓ has no interval where the other figures have theirs, by figure:
     every θ read at most twice in a direction (two passes: ν = 1,
     models.uncertainty.undetermined_repeatability), quoting the interval withheld (that of
-    :func:`stated_theodolite_figure_intervals`, the same arguments)."""
+    :func:`stated_theodolite_figure_intervals`, the same arguments); ``readings_alone``:
+    said to be the readings' own, without the stated standards' u (the summary's)."""
     return undetermined_repeatability(
         held_to_cmc_figures(theodolite_figure_intervals(result, budget, stated_u, pair_factor),
                             float(budget.floor)),
-        _passes(result), PASSES_UNDETERMINED)[1]
+        _passes(result),
+        PASSES_UNDETERMINED_READINGS if readings_alone else PASSES_UNDETERMINED)[1]
 
 
 def readings_theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBudget

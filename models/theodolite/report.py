@@ -80,6 +80,7 @@ from models.certificate.builder import (
 )
 from models.certificate.document import (
     CertificateDocument,
+    Exact,
     Table,
     gum_pair,
     range_cells,
@@ -361,8 +362,10 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
     from models.theodolite.figures import (
         figure_intervals_withheld,
         stated_theodolite_figure_intervals,
+        theodolite_figure_intervals,
         withheld_theodolite_figure_reasons,
     )
+    from models.uncertainty.figure_intervals import held_to_cmc_figures
 
     if result.iso230 is None:
         return []
@@ -377,7 +380,13 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
             continue
         iv = intervals.get(key)
         if iv is None and key in alone:
-            rows.append((f"ISO 230-2 {key}", f"{v:.2f}\"", message(
+            # to the decimal of the interval its reason quotes, the figure's own scatter, as
+            # positioning's (day 68 F5: "R_up 4.24″" beside an interval 0″ … 443″ withheld);
+            # the DCC states it at full precision
+            quoted = held_to_cmc_figures(theodolite_figure_intervals(
+                result, budget, stated_u, pair), float(budget.floor)).get(key)
+            d = 2 if quoted is None else interval_decimals(quoted.low, quoted.high)
+            rows.append((f"ISO 230-2 {key}", Exact(f"{v:.{d}f}\"", float(v)), message(
                 QT_TR_NOOP("no coverage interval: {reason}"), reason=alone[key])))
             continue
         if iv is None:

@@ -462,6 +462,9 @@ class Conformity:
     # and upper half-widths were raised to it, (low, high); None when no CMC is set or no
     # interval is stated (the JSON's decided_quantity.raised_to_cmc)
     raised_to_cmc: tuple[bool, bool] | None = None
+    # where every point decides: the deciding point, named as the results table names it
+    # (its error is ``value``, signed, with ±U of that point); "" for a half range
+    point: str = ""
 
     @property
     def conforms(self) -> bool | None:
@@ -730,7 +733,11 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
                        for xi, wi in zip(e, u, strict=True)])
     conforming = (max(0.0, 1.0 - float(np.sum(1.0 - inside)))
                   if verdict in ("pass", "conditional pass") else float(np.min(inside)))
-    values = {"value": x, "expanded": w, "expanded_lower": w, "conforming_probability": conforming}
+    # the deciding point's error as the results table prints it, signed, with its ±U (until
+    # 0.8.17 |e|, which the certificate's row then printed as a half range held at 0: "6″
+    # −6″/+18″, 0″ … 25″" for a point at −6″)
+    values = {"value": float(e[worst]), "expanded": w, "expanded_lower": w,
+              "conforming_probability": conforming, "point": point}
     largest = int(np.argmax(u))
     if float(u[largest]) >= t:
         w_max = float(u[largest])

@@ -24,8 +24,8 @@ import numpy as np
 from models.messages import QT_TR_NOOP, Message, message
 from models.uncertainty.figure_intervals import FigureInterval
 
-__all__ = ["PASSES_UNDETERMINED", "REPEATABILITY_DIRECTIONS", "RUNS_UNDETERMINED",
-           "undetermined_repeatability"]
+__all__ = ["PASSES_UNDETERMINED", "PASSES_UNDETERMINED_READINGS", "REPEATABILITY_DIRECTIONS",
+           "RUNS_UNDETERMINED", "RUNS_UNDETERMINED_READINGS", "undetermined_repeatability"]
 
 #: the figures made of the targets' σ and the directions whose σ each is made of
 REPEATABILITY_DIRECTIONS: dict[str, tuple[str, ...]] = {
@@ -40,6 +40,17 @@ RUNS_UNDETERMINED = QT_TR_NOOP(
 PASSES_UNDETERMINED = QT_TR_NOOP(
     "two passes give each θ's repeatability one degree of freedom: the interval would be "
     "{low} … {high}; measure at least 3 passes each way")
+#: the same where the interval quoted is the readings' own, without the reference standards'
+#: U (the window's and the command line's summary): a certificate quotes a wider one, with
+#: them (day 68 F7: "16″ … 487″" in the window, "14″ … 974″" on the certificate, unsaid)
+RUNS_UNDETERMINED_READINGS = QT_TR_NOOP(
+    "two runs give each target's repeatability one degree of freedom: the interval from the "
+    "readings without the reference standards' U would be {low} … {high} (a certificate's "
+    "includes it); measure at least 3 runs each way")
+PASSES_UNDETERMINED_READINGS = QT_TR_NOOP(
+    "two passes give each θ's repeatability one degree of freedom: the interval from the "
+    "readings alone would be {low} … {high} (a certificate adds its stated standards' u); "
+    "measure at least 3 passes each way")
 
 
 def undetermined_repeatability(intervals: Mapping[str, FigureInterval],

@@ -87,9 +87,9 @@ def test_points_rule_at_the_band_edges(edge, rule, verdict):
     errors = np.array([0.0, 0.1, error, -0.05])
     c = decide_conformity(errors, _budget(0.1, errors.size), T, rule, "points")
     assert c.verdict == verdict
-    assert c.value == pytest.approx(abs(error))
-    assert c.interval_low == pytest.approx(abs(error) - U)
-    assert c.interval_high == pytest.approx(abs(error) + U)
+    assert c.value == pytest.approx(error)  # signed: the deciding point's error
+    assert c.interval_low == pytest.approx(error - U)
+    assert c.interval_high == pytest.approx(error + U)
 
 
 def _fixed_half_range(monkeypatch, value: float, lower: float, upper: float) -> None:

@@ -152,7 +152,7 @@ def test_decision_rules_on_every_point(x, rule, verdict):
     c = decide_conformity(errors, _flat_budget(3, 0.3), 1.0, rule, "points")
     assert c.verdict == verdict
     assert "ILAC-G8:09/2019, 4.2." in c.rule
-    assert c.value == pytest.approx(x) and c.expanded == pytest.approx(0.3)
+    assert c.value == pytest.approx(-x) and c.expanded == pytest.approx(0.3)  # signed
     assert "the deciding point is point 2:" in c.statement
 
 
