@@ -3445,6 +3445,11 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>被校对象示值的分辨力 {r}</translation>
     </message>
     <message>
+        <source>the deciding point: {point}</source>
+        <extracomment>the decided quantity&apos;s row where every point decides: which point its value is</extracomment>
+        <translation>起决定作用的点：{point}</translation>
+    </message>
+    <message>
         <source>interval {low} … {high}</source>
         <translation>包含区间 {low} … {high}</translation>
     </message>
@@ -11806,6 +11811,15 @@ Replace it?</source>
         <source>two passes give each θ&apos;s repeatability one degree of freedom: the interval would be {low} … {high}; measure at least 3 passes each way</source>
         <extracomment>why (theodolite: passes at a θ)</extracomment>
         <translation>两个测回只给各 θ 的重复性一个自由度：包含区间将为 {low} … {high}；每个方向至少测量 3 个测回</translation>
+    </message>
+    <message>
+        <source>two runs give each target&apos;s repeatability one degree of freedom: the interval from the readings without the reference standards&apos; U would be {low} … {high} (a certificate&apos;s includes it); measure at least 3 runs each way</source>
+        <extracomment>the same where the interval quoted is the readings&apos; own, without the reference standards&apos; U (the window&apos;s and the command line&apos;s summary): a certificate quotes a wider one, with them (day 68 F7: &quot;16″ … 487″&quot; in the window, &quot;14″ … 974″&quot; on the certificate, unsaid)</extracomment>
+        <translation>两次测量只给各目标位置的重复性一个自由度：仅由读数得出、未计参考标准器的 U 的包含区间将为 {low} … {high}（证书中的区间计入了它）；每个方向至少测量 3 次</translation>
+    </message>
+    <message>
+        <source>two passes give each θ&apos;s repeatability one degree of freedom: the interval from the readings alone would be {low} … {high} (a certificate adds its stated standards&apos; u); measure at least 3 passes each way</source>
+        <translation>两个测回只给各 θ 的重复性一个自由度：仅由读数得出的包含区间将为 {low} … {high}（证书还计入所列标准器的 u）；每个方向至少测量 3 个测回</translation>
     </message>
 </context>
 </TS>
