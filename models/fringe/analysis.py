@@ -484,6 +484,26 @@ def folded_orders_warning(theta_rad: np.ndarray, folds: tuple[FoldedOrder, ...],
         named=named)
 
 
+#: what the compensation is, where orders fold (day review 68 F8): at the sampled phases the
+#: compensated error is the readings' own, between them the table is the model's, whose
+#: folded amplitudes are not the signals' (the same reason the half range is withheld)
+COMPENSATION_AT_SAMPLES = QT_TR_NOOP(
+    "at the sampled phases only: between them the correction table is built from fitted "
+    "orders that hold orders not fitted ({folds}), and the error it leaves there is not "
+    "determined")
+
+
+def compensation_caveat(result: FringeResult) -> str:
+    """Where orders fold into fitted ones, what the compensated error and the correction
+    table hold (:data:`COMPENSATION_AT_SAMPLES`); "" when none folds."""
+    folds = getattr(result, "folded_orders", ())
+    if not folds:
+        return ""
+    return message(COMPENSATION_AT_SAMPLES, folds=separated(
+        [message(QT_TR_NOOP("order {order} into order {into}"), order=order, into=into)
+         for order, into in folds], ", "))
+
+
 def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
     """How often the motion turned back: a turn counts once the phase has gone
     ``hysteresis_rad`` the other way, so noise while standing still does not, nor a single
@@ -797,6 +817,9 @@ def to_json(result: FringeResult) -> dict[str, Any]:
         # orders not fitted that the sampled phases fold into a fitted amplitude
         "folded_orders": [{"order": order, "into": into}
                           for order, into in result.folded_orders],
+        # False where orders fold: the compensated error and the table hold at the sampled
+        # phases only (compensation_caveat)
+        "compensation_determined_between_samples": not result.folded_orders,
     }
     # the signals along the record (#45): per window of periods, in the record's units; the
     # command line's --signal-preset gives them in a preset's units, judged
@@ -862,6 +885,9 @@ def summary(result: FringeResult) -> str:
                 ptp=f"{result.compensated_peak_to_peak:.3f}{sym}",
                 share=f"{result.compensated_peak_to_peak / period * 100:.2f}"),
     ]
+    caveat = compensation_caveat(result)
+    if caveat:
+        out.append(message(QT_TR_NOOP("The compensated error holds {caveat}."), caveat=caveat))
     return lines(out)
 
 
@@ -870,8 +896,11 @@ def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: s
     from models.fringe.export import write_correction_table
 
     write_correction_table(path, result)
-    return message(QT_TR_NOOP("Correction table, {n} entries (C header)") if str(path).endswith(".h")
-                   else QT_TR_NOOP("Correction table, {n} entries (CSV)"), n=result.table.size)
+    written = message(QT_TR_NOOP("Correction table, {n} entries (C header)")
+                      if str(path).endswith(".h")
+                      else QT_TR_NOOP("Correction table, {n} entries (CSV)"), n=result.table.size)
+    caveat = compensation_caveat(result)
+    return separated([written, caveat], ", ") if caveat else written
 
 
 class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
@@ -977,12 +1006,14 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
         return figures(result)["errors"]
 
     def verdict(self, r):
-        return message(
+        said = message(
             QT_TR_NOOP("Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} "
                        "after compensation"),
             ptp=f"{r.raw_peak_to_peak:.3f}{r.unit_symbol}",
             share=f"{r.raw_peak_to_peak / r.period_length * 100:.2f}",
             after=f"{r.compensated_peak_to_peak:.3f}{r.unit_symbol}")
+        caveat = compensation_caveat(r)
+        return separated([said, caveat], ", ") if caveat else said
 
     def printed_headline(self, result, printed=None):
         # the certificate's statistics print both to 0.001 (models/fringe/report.py)
