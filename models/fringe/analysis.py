@@ -10,6 +10,7 @@ import numpy as np
 
 from models.cancellation import checkpoint
 from models.fringe import KEY, TITLE
+from models.fringe.compensation_at_samples import compensation_caveat
 from models.fringe.folded_orders import FoldedOrder, folded_orders
 from models.fringe.model import (
     MODEL_INPUT,
@@ -482,26 +483,6 @@ def folded_orders_warning(theta_rad: np.ndarray, folds: tuple[FoldedOrder, ...],
         "samples, and its half range over the whole period, is not determined (a decision "
         "on the half range is withheld). Sample more finely to tell them apart."),
         named=named)
-
-
-#: what the compensation is, where orders fold (day review 68 F8): at the sampled phases the
-#: compensated error is the readings' own, between them the table is the model's, whose
-#: folded amplitudes are not the signals' (the same reason the half range is withheld)
-COMPENSATION_AT_SAMPLES = QT_TR_NOOP(
-    "at the sampled phases only: between them the correction table is built from fitted "
-    "orders that hold orders not fitted ({folds}), and the error it leaves there is not "
-    "determined")
-
-
-def compensation_caveat(result: FringeResult) -> str:
-    """Where orders fold into fitted ones, what the compensated error and the correction
-    table hold (:data:`COMPENSATION_AT_SAMPLES`); "" when none folds."""
-    folds = getattr(result, "folded_orders", ())
-    if not folds:
-        return ""
-    return message(COMPENSATION_AT_SAMPLES, folds=separated(
-        [message(QT_TR_NOOP("order {order} into order {into}"), order=order, into=into)
-         for order, into in folds], ", "))
 
 
 def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:

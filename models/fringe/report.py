@@ -48,7 +48,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import KEY, TITLE
 from models.fringe import plots as fringe_plots
-from models.fringe.analysis import compensation_caveat
+from models.fringe.compensation_at_samples import compensation_caveat
 from models.fringe.model import (  # MODEL_INPUT: the compensation's own input
     MODEL_INPUT,
     interpolation_error_rad,
