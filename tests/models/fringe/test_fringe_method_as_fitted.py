@@ -157,12 +157,17 @@ def test_the_json_says_whether_the_compensation_holds_between_the_samples(
 
 
 def test_the_summary_and_the_windows_line_say_it(tmp_path, capsys):
-    """The CLI's summary (the window's summary too) and the bold line of the window
-    (the workbench's verdict) say where the compensated error holds."""
-    code = main(["analyze", "fringe", str(_record(tmp_path, 8)), *_options(8, 3)])
-    out = capsys.readouterr().out
-    assert code == 0
+    """The CLI's summary (the window's summary too), the table written and the bold line of
+    the window (the workbench's verdict) say where the compensated error holds."""
+    table = tmp_path / "table.csv"
+    code = main(["analyze", "fringe", str(_record(tmp_path, 8)), *_options(8, 3),
+                 "--table", str(table)])
+    said = capsys.readouterr()
+    out = said.out + said.err
+    assert code == 0 and table.exists()
     assert "The compensated error holds at the sampled phases only" in out
+    # the table written says it too, where it is written
+    assert "Correction table, 1024 entries (CSV), " + AT_SAMPLES in out
     from models.fringe.analysis import FRINGE
 
     line = str(FRINGE.verdict(_result(8, 3)))
