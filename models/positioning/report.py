@@ -554,7 +554,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "Beran 1987) from a model of the axis whose spread over the targets is estimated "
         "without the scatter's (constrained empirical Bayes, Louis 1984), {trials} trials "
         "seeded from the readings; each Type B input drawn once per target, the same in both "
-        "directions. For E, M and B (and Pa and U) it is united "
+        "directions. For E, E↑, E↓, M and B (and Pa and U) it is united "
         "with the interval from the measured means taken as the truth, so that a target far off "
         "that the scatter hides is still covered (the curve's spread taken at both ends of "
         "what the readings allow, Berger & Boos 1994). For the ranges of the mean deviations "
