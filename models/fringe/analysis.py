@@ -10,6 +10,7 @@ import numpy as np
 
 from models.cancellation import checkpoint
 from models.fringe import KEY, TITLE
+from models.fringe.compensation_at_samples import compensation_caveat
 from models.fringe.folded_orders import FoldedOrder, folded_orders
 from models.fringe.model import (
     MODEL_INPUT,
@@ -797,6 +798,9 @@ def to_json(result: FringeResult) -> dict[str, Any]:
         # orders not fitted that the sampled phases fold into a fitted amplitude
         "folded_orders": [{"order": order, "into": into}
                           for order, into in result.folded_orders],
+        # False where orders fold: the compensated error and the table hold at the sampled
+        # phases only (compensation_caveat)
+        "compensation_determined_between_samples": not result.folded_orders,
     }
     # the signals along the record (#45): per window of periods, in the record's units; the
     # command line's --signal-preset gives them in a preset's units, judged
@@ -862,6 +866,9 @@ def summary(result: FringeResult) -> str:
                 ptp=f"{result.compensated_peak_to_peak:.3f}{sym}",
                 share=f"{result.compensated_peak_to_peak / period * 100:.2f}"),
     ]
+    caveat = compensation_caveat(result)
+    if caveat:
+        out.append(message(QT_TR_NOOP("The compensated error holds {caveat}."), caveat=caveat))
     return lines(out)
 
 
@@ -870,8 +877,11 @@ def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: s
     from models.fringe.export import write_correction_table
 
     write_correction_table(path, result)
-    return message(QT_TR_NOOP("Correction table, {n} entries (C header)") if str(path).endswith(".h")
-                   else QT_TR_NOOP("Correction table, {n} entries (CSV)"), n=result.table.size)
+    written = message(QT_TR_NOOP("Correction table, {n} entries (C header)")
+                      if str(path).endswith(".h")
+                      else QT_TR_NOOP("Correction table, {n} entries (CSV)"), n=result.table.size)
+    caveat = compensation_caveat(result)
+    return separated([written, caveat], ", ") if caveat else written
 
 
 class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
@@ -977,12 +987,14 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
         return figures(result)["errors"]
 
     def verdict(self, r):
-        return message(
+        said = message(
             QT_TR_NOOP("Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} "
                        "after compensation"),
             ptp=f"{r.raw_peak_to_peak:.3f}{r.unit_symbol}",
             share=f"{r.raw_peak_to_peak / r.period_length * 100:.2f}",
             after=f"{r.compensated_peak_to_peak:.3f}{r.unit_symbol}")
+        caveat = compensation_caveat(r)
+        return separated([said, caveat], ", ") if caveat else said
 
     def printed_headline(self, result, printed=None):
         # the certificate's statistics print both to 0.001 (models/fringe/report.py)

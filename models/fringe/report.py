@@ -48,6 +48,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import KEY, TITLE
 from models.fringe import plots as fringe_plots
+from models.fringe.compensation_at_samples import compensation_caveat
 from models.fringe.model import (  # MODEL_INPUT: the compensation's own input
     MODEL_INPUT,
     interpolation_error_rad,
@@ -62,15 +63,32 @@ from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["fringe_budget", "fringe_certificate", "model_error_curve", "model_error_budget"]
 
+#: the method, worded from the orders actually fitted ({orders}: "1, 3"; it said "odd
+#: harmonics (3rd, 5th)" whatever was fitted: day review 68 F2)
 METHOD = QT_TR_NOOP(
     "The sine and cosine signals of the encoder's grating are sampled over whole periods. Each "
-    "channel is modelled as an offset plus fundamental and odd harmonics (3rd, 5th) with their "
-    "phases, u = A₀ + Σ A_k sin(kθ + c_k), and fitted by linear least squares (the paper fits "
+    "channel is modelled as an offset plus the harmonics of order {orders} (order 1 the "
+    "fundamental) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and fitted by linear "
+    "least squares (the paper fits "
     "the same model by particle swarm optimisation). The interpolation error is the phase "
     "atan2(u_sin, u_cos) minus θ, given with its mean over the period removed (the phase's "
     "origin is arbitrary); the modelled error, tabulated over the measured phase, is the "
     "correction, and the compensated error is what remains after applying it."
 )
+#: an order not fitted that the sampled phases fold into a fitted one, said in the method
+FOLDED_METHOD = QT_TR_NOOP(
+    "Order {order} is not fitted: at the sampled phases it cannot be told from order {into}, "
+    "so {amplitude} holds the two together.")
+
+
+def method_text(result) -> Any:
+    """The method as fitted: the orders of the fit, and each order folded into one of them
+    (models.fringe.folded_orders)."""
+    orders = ", ".join(str(k) for k in result.sin_fit.orders)
+    folded = [message(FOLDED_METHOD, order=order, into=into,
+                      amplitude=f"A{into}" if into else "A₀")
+              for order, into in getattr(result, "folded_orders", ())]
+    return separated([message(METHOD, orders=orders), *folded], " ")
 
 
 OBSERVABILITY_STATEMENT = QT_TR_NOOP(
@@ -486,6 +504,9 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
               "theta_column": message(QT_TR_NOOP("phase from the θ column")),
               "estimated": message(QT_TR_NOOP("phase estimated from the signals"))}
     share = QT_TR_NOOP("peak-to-peak {ptp} ({share} % of a period)")
+    # where orders fold, the compensated error and the table hold at the sampled phases only
+    # (day review 68 F8): said at both rows and in place of the opinion on the table
+    caveat = compensation_caveat(result)
     stat_rows = [
         (QT_TR_NOOP("Samples"), f"{raw.size}", separated([source[result.phase_source], scale])),
         (QT_TR_NOOP("Interpolation error as found"),
@@ -494,7 +515,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         (QT_TR_NOOP("After compensation (as left)") if as_left else
          QT_TR_NOOP("After compensation (not applied to the item)"),
          f"{comp.min():+.3f}{sym} … {comp.max():+.3f}{sym}",
-         message(share, ptp=f"{pp_comp:.3f}{sym}", share=f"{pp_comp / period * 100:.2f}")),
+         separated([message(share, ptp=f"{pp_comp:.3f}{sym}",
+                            share=f"{pp_comp / period * 100:.2f}"), caveat], "; ")),
         (QT_TR_NOOP("Offsets, amplitude ratio, quadrature error"),
          f"{1e3 * result.sin_fit.offset:+.2f} / {1e3 * result.cos_fit.offset:+.2f} mV",
          message(QT_TR_NOOP("ratio {ratio}, quadrature {quadrature}"),
@@ -503,7 +525,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     ]
     more_rows = [(QT_TR_NOOP("Correction table"),
                   message(QT_TR_NOOP("{n} entries"), n=result.table.size),
-                  f"sha256 {result.table.sha256[:16]}…")]
+                  separated([f"sha256 {result.table.sha256[:16]}…", caveat], "; "))]
     if result.sin_periods.shape[0] > 1:
         amp = result.sin_periods[:, 1]
         more_rows.append((QT_TR_NOOP("Drift of sin A1 over the periods"),
@@ -557,9 +579,11 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         sha=result.table.sha256)
     advice = () if as_left else (opinion(QT_TR_NOOP(
         "The compensated error is the error the correction table is expected to leave, if the "
-        "signals stay as they were measured.")),)
+        "signals stay as they were measured.")),) if not caveat else (message(QT_TR_NOOP(
+            "The compensated error and the correction table hold {caveat}; sample more finely "
+            "before loading the table into the encoder."), caveat=caveat),)
     return build_certificate(
-        kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
+        kind_key=KEY, kind_title=TITLE, method=method_text(result), metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,
         parameters=parameters, results=results, decision=decision,
         statistics=Statistics(stat_rows, QT_TR_NOOP("samples"), more_rows, budget=found_budget),

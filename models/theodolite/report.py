@@ -416,26 +416,41 @@ def _iso230_raised_to_cmc(result: TheodoliteResult, budget: UncertaintyBudget,
         result, budget, stated_reading_uncertainty(metadata)[0], stated_pair_factor(metadata))))
 
 
-#: how the ISO 230-2 figures of a run with passes get their intervals
+#: how the ISO 230-2 figures of a run with passes get their intervals: which figure's from
+#: which method, so that an assessor can reproduce each (models.theodolite.figures; it said
+#: A's was the bootstrap's: day review 68 F1, F6)
 FIGURES_STATEMENT = QT_TR_NOOP(
     "Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value "
     "or a range over the θ, biased high by the scatter, so its interval, that of the true "
     "figure (of the true means and standard deviations at each θ and direction as this "
     "theodolite reads them: R and A hold its pointing noise), may lie below the value "
-    "stated. It is a parametric bootstrap of the figure's error from a model "
+    "stated. The interval of E, E↑, E↓, M, B and B̄ is a parametric bootstrap of the "
+    "figure's error from a model "
     "of the axis fitted to the means and standard deviations over the passes (the "
     "positioning workbench's, models/uncertainty/figure_intervals.py), with the set-up "
     "model's error (one curve over θ, drawn as its fit's covariance correlates it) and the "
     "part of the stated theodolite u that the passes' scatter does not show (the circle's "
     "error where it reads that θ, drawn once per θ), the same in every pass and both "
-    "directions; the interval is also widened for a circle error shaped as the curve's "
-    "worst, as large as the readings do not exclude (the stated u over the pointing noise's "
-    "lower confidence bound, at a quarter of the tail, the widened interval at the rest); "
-    "the interval of R, R↑ and R↓ is, in place of the bootstrap's, the bounds from each θ's "
-    "own standard deviation over the passes (chi-square, ν = passes − 1: the upper end the "
-    "largest θ's upper bound, the lower end the largest lower bound taken at once over the "
-    "θ), which hold however the repeatability changes from θ to θ; "
-    "the probability stated is the one a simulation study reached where that is lower.")
+    "directions. The intervals of R and A use no bootstrap: they are bounds from each θ's "
+    "own readings over the passes, never pooled. The interval of R, R↑ and R↓ is the "
+    "bounds from each θ's own standard deviation (chi-square, ν = passes − 1: the upper end "
+    "the largest θ's upper bound, the lower end the largest lower bound taken at once over "
+    "the θ), which hold however the repeatability changes from θ to θ. The interval of A, "
+    "A↑ and A↓ is the bounds from each θ's own mean and standard deviation: each end of a "
+    "θ's band x̄ ± 2s by its one-sided tolerance bound, from the noncentral t distribution "
+    "with ν = passes − 1 (Owen 1968; ISO 16269-6); the upper end the largest bound of a "
+    "band's top less the smallest bound of a band's bottom, each at half the tail (the "
+    "intersection–union bound, Berger 1982), the lower end from every θ's bounds taken at "
+    "once (Šidák over the θ and directions, Bonferroni within each); the set-up "
+    "model's error enters them at a tenth of the tail, as the "
+    "largest difference of its errors at two θ. These intervals of R and A are wide at few "
+    "passes, because each θ's σ is known only from its own readings (at 3 passes each σ has "
+    "2 degrees of freedom), so a specification of R or A may not be decidable. The interval "
+    "of E, M and A (and E↑, E↓, A↑, A↓) is also widened for a circle error shaped as the "
+    "curve's worst, as large as the readings do not exclude (the stated u over the pointing "
+    "noise's lower confidence bound, at a quarter of the tail, the widened interval at the "
+    "rest). The probability stated is the one a simulation study reached where that is "
+    "lower.")
 #: how a run with passes is decided
 MEANS_STATEMENT = QT_TR_NOOP(
     "The half range is decided on the means over the passes at each θ and direction (the "
