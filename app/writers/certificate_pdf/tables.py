@@ -99,9 +99,19 @@ def _long_cells_below(cells: list[list], widths: tuple[float, ...], size: float
             if lines * size * 0.5 > _TALLEST_CELL_MM:
                 mark = f"[{len(moved) + 1}]"  # the text once, below: no figure twice
                 row[j] = mark
-                moved.append(f"{mark} {row[0]}: {cell}" if j else f"{mark} {cell}")
+                moved.append(f"{mark} {_without_probability(row[0])}: {cell}" if j
+                             else f"{mark} {cell}")
         out.append(row)
     return out, moved
+
+
+_ROW_PROBABILITY = re.compile(r"\s*[(（]p = [^)）]*[)）]$")
+
+
+def _without_probability(name: str) -> str:
+    """A row's name as a moved cell's text names it, without the "(p = 92.5 %)" the row
+    carries ("[1] Decided quantity: …"): the probability is printed once, in the row."""
+    return _ROW_PROBABILITY.sub("", name) if isinstance(name, str) else name
 
 
 _NEGATIVE_ZERO = re.compile(r"(?<![\w.])[-−](0(?:\.0+)?)(?![\d.])")

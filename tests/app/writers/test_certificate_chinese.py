@@ -45,8 +45,9 @@ SYMBOLS = {"sin", "cos", "rad", "zero", "ISO", "IEC", "GUM", "JCGM", "ILAC", "VI
            "XLSX", "VDI", "DGQ", "Welch", "Satterthwaite", "AngleBench", "anglebench",
            "validate", "CNAS", "atan", "dev", "asin", "ADC", "LSB", "git",
            "sha", "SHA", "CMC", "Beran", "Louis", "Shen", "Efron", "Tibshirani", "Berger", "Boos",
-           "Romano", "Shaikh", "Wolf", "max"}  # git: the software's commit; CMC: as CNAS writes it;
-#: cited authors' names too; max: the operator of a formula (z · 2 max u)
+           "Romano", "Shaikh", "Wolf", "Owen", "Bonferroni", "max"}
+#: git: the software's commit; CMC: as CNAS writes it; cited authors' names too (Owen,
+#: Bonferroni: A's and P's tolerance bounds, 0.8.17); max: the operator of a formula (z · 2 max u)
 WORD = re.compile(r"(?<![\w.])[A-Za-z]{3,}(?![\w])")  # "down" of A_down is a symbol's
 FIGURE = re.compile(r"[+-]?\d+\.\d+(?:\"|°| mV| V| %| rad)")
 
