@@ -128,6 +128,14 @@ def test_the_decided_interval_is_printed_from_the_jsons_ends(issued, name):
     data, pdf = issued[name]
     decided = data["decided_quantity"]
     value, low, high = decided["value"], decided["interval_low"], decided["interval_high"]
+    if name == "positioning":  # every point decides: its interval in the table's own column,
+        # the deciding point named in the note, its value signed ± U (0.8.17)
+        d = _decimals(max(value - low, high - value))
+        low_text, high_text = _outward(low, high, d)
+        assert f"{low_text}{Q} … {high_text}{Q}" in pdf, (name, low, high)
+        assert "Every point's" in pdf and "the deciding point: target" in pdf, name
+        assert f"{value:.{d}f}{Q} ±{high - value:.{d}f}{Q}" in pdf.replace("± ", "±"), name
+        return
     note = NOTE.search(pdf)
     assert note, name
     # the decimal of the larger half-width (two significant digits); where the CMC raised a
