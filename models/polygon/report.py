@@ -331,31 +331,19 @@ def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: fl
         # their own (:func:`_zero_offsets_component`), never reading noise that the decided
         # half range's bias removal would take off
         noise, dof = within
-        name = (QT_TR_NOOP("Repeatability (mean of {sets} sets)") if len(result.sets) > 1
-                else QT_TR_NOOP("Repeatability (mean of 1 set)"))
-        note = message(QT_TR_NOOP("standard deviation {s} of the sets about their direction's "
-                                  "mean, each set's own zero offset and steady drift taken "
-                                  "out first (the autocollimator's zero moving between sets "
-                                  "is no reading noise), {dof} degrees of freedom"),
-                       s=f"{noise:.3f}\"", dof=dof)
-        if result.repeats is not None:  # each face's n readings were averaged first
-            note = message(QT_TR_NOOP("{note}; each face's {n} readings averaged first, so "
-                                      "their s/√n is inside this scatter and not counted "
-                                      "again"), note=note, n=result.repeats.n)
+        name, note = _sets_repeatability_row(result, message(QT_TR_NOOP(
+            "standard deviation {s} of the sets about their direction's mean, each set's own "
+            "zero offset and steady drift taken out first (the autocollimator's zero moving "
+            "between sets is no reading noise), {dof} degrees of freedom"),
+            s=f"{noise:.3f}\"", dof=dof))
         evaluation = "A"
     elif repeat is not None:
         s_i, sets_dof = repeat
         noise = float(np.sqrt(np.mean(s_i**2)))
         dof = sets_dof * n
-        name = (QT_TR_NOOP("Repeatability (mean of {sets} sets)") if len(result.sets) > 1
-                else QT_TR_NOOP("Repeatability (mean of 1 set)"))
-        note = message(QT_TR_NOOP("pooled standard deviation {s} of the sets about their "
-                                  "direction's mean, {dof} degrees of freedom"),
-                       s=f"{noise:.3f}\"", dof=dof)
-        if result.repeats is not None:  # each face's n readings were averaged first
-            note = message(QT_TR_NOOP("{note}; each face's {n} readings averaged first, so "
-                                      "their s/√n is inside this scatter and not counted "
-                                      "again"), note=note, n=result.repeats.n)
+        name, note = _sets_repeatability_row(result, message(QT_TR_NOOP(
+            "pooled standard deviation {s} of the sets about their direction's mean, {dof} "
+            "degrees of freedom"), s=f"{noise:.3f}\"", dof=dof))
         evaluation = "A"
     elif (pair := reversal_pair_noise(corrected, directions)) is not None:
         noise, dof = pair
@@ -433,6 +421,18 @@ def _reading_indices(result: PolygonResult) -> np.ndarray | None:
 
 
 ZERO_OFFSETS_INPUT = QT_TR_NOOP("Autocollimator zero offsets between the sets")
+
+
+def _sets_repeatability_row(result: PolygonResult, note: str) -> tuple[str, str]:
+    """The repeatability input's name ("Repeatability (mean of {sets} sets)") and ``note``,
+    which says where a face's n readings were averaged first that their s/√n is inside."""
+    name = (QT_TR_NOOP("Repeatability (mean of {sets} sets)") if len(result.sets) > 1
+            else QT_TR_NOOP("Repeatability (mean of 1 set)"))
+    if result.repeats is not None:  # each face's n readings were averaged first
+        note = message(QT_TR_NOOP("{note}; each face's {n} readings averaged first, so "
+                                  "their s/√n is inside this scatter and not counted "
+                                  "again"), note=note, n=result.repeats.n)
+    return name, note
 
 
 def _zero_offsets_component(result: PolygonResult, noise: float, n: int,
