@@ -40,11 +40,13 @@ def _hazen(x: np.ndarray, q: float) -> float:
     return float(x[lo - 1] + (pos - lo) * (x[hi - 1] - x[lo - 1]))
 
 
-def summary(records: list[dict]) -> dict:
-    """Coverage against the printed probability, and the median width ÷ the oracle's (the
-    spread of value − truth between the (1 ∓ p)/2 quantiles)."""
+def summary(records: list[dict], figures: tuple[str, ...] = FIGURES) -> dict:
+    """Per figure of ``figures``: coverage against the printed probability (covered, below,
+    above, the lowest probability printed), and the median width ÷ the oracle's (the spread
+    of value − truth between the (1 ∓ p)/2 quantiles: the width an interval about the value
+    needs)."""
     out = {}
-    for key in FIGURES:
+    for key in figures:
         rows = [r[key] for r in records if r.get(key) and r[key]["low"] is not None]
         if not rows:
             continue

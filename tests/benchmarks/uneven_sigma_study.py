@@ -28,34 +28,20 @@ def _rig():
     return uneven_sigma_axes
 
 
-def _hazen(x: np.ndarray, q: float) -> float:
-    x = np.sort(np.asarray(x, float))
-    pos = min(max(q * x.size + 0.5, 1.0), float(x.size))
-    lo = int(pos)
-    hi = min(lo + 1, x.size)
-    return float(x[lo - 1] + (pos - lo) * (x[hi - 1] - x[lo - 1]))
+def _tally():
+    """tests/benchmarks/repeatability_study.py (its ``summary``): from this checkout's tests
+    package, or from this file's folder when a script compares another checkout."""
+    try:
+        from tests.benchmarks import repeatability_study
+    except ImportError:
+        import repeatability_study  # type: ignore[import-not-found]
+    return repeatability_study
 
 
 def summary(records: list[dict]) -> dict:
     """Per figure: covered, below, above, the lowest probability printed, and the median
-    width ÷ the oracle's (the spread of value − truth over the cell's tests between the
-    (1 ∓ p)/2 quantiles: the width an interval about the value needs)."""
-    out = {}
-    for key in FIGURES:
-        rows = [r[key] for r in records if r.get(key) and r[key]["low"] is not None]
-        if not rows:
-            continue
-        p = min(r["p"] for r in rows)
-        err = np.array([r["value"] - r["truth"] for r in rows])
-        oracle = _hazen(err, (1 + p) / 2) - _hazen(err, (1 - p) / 2)
-        width = float(np.median([r["high"] - r["low"] for r in rows]))
-        out[key] = {"tests": len(rows),
-                    "covered": sum(r["low"] <= r["truth"] <= r["high"] for r in rows),
-                    "below": sum(r["truth"] < r["low"] for r in rows),
-                    "above": sum(r["truth"] > r["high"] for r in rows),
-                    "p": p, "width": width,
-                    "width_oracle": width / oracle if oracle > 0 else float("nan")}
-    return out
+    width ÷ the oracle's (repeatability_study.summary over this study's figures)."""
+    return _tally().summary(records, FIGURES)
 
 
 def cell(pattern: str, m: int, runs: int, tests: int, seed: int) -> list[dict]:
