@@ -99,3 +99,19 @@ def theodolite_passes_csv(pattern: str, m: int, passes: int, pointing: float,
     mu_up = error + 0.5 * reversal
     mu_down = error - 0.5 * reversal
     return "\n".join(lines) + "\n", truth(mu_up, mu_down, s_up, s_down)
+
+
+def iso230_rows(angles: np.ndarray, mu: dict[str, np.ndarray], runs: int, noise: float,
+                rng: np.random.Generator) -> tuple[list[list[str]], dict]:
+    """The readings sheet's rows of an ISO 230-2 test of a rotary axis whose approaches read
+    ``mu`` ("+" and "-": each target's true mean deviation by direction) plus normal noise
+    ``noise``, each run up through the targets and back down, rounded to 0.001 as typed;
+    and the readings by (target, direction)."""
+    rows, readings = [], {}
+    for run in range(1, runs + 1):
+        for sign, order in (("+", range(angles.size)), ("-", range(angles.size - 1, -1, -1))):
+            for i in order:
+                x = round(float(mu[sign][i] + noise * rng.standard_normal()), 3)
+                rows.append([f"{angles[i]:.6f}", str(run), sign, f"{x:.3f}", ""])
+                readings.setdefault((float(angles[i]), sign), []).append(x)
+    return rows, readings

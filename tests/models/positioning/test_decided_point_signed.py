@@ -12,6 +12,8 @@ import math
 import numpy as np
 import pytest
 
+from tests.repeatability_rig import iso230_rows
+
 TROUGH = 90.0  # the target whose forward approach lies far below the rest
 
 
@@ -23,14 +25,7 @@ def _axis(rng, runs: int, targets: int = 8, noise: float = 0.3):
     f = 1.5 * np.sin(np.radians(angles))
     mu = {"+": f + 0.5, "-": f - 0.5}
     mu["+"][int(np.argmin(abs(angles - TROUGH)))] = -8.0
-    rows, readings = [], {}
-    for run in range(1, runs + 1):
-        for sign, order in (("+", range(targets)), ("-", range(targets - 1, -1, -1))):
-            for i in order:
-                x = round(float(mu[sign][i] + noise * rng.standard_normal()), 3)
-                rows.append([f"{angles[i]:.6f}", str(run), sign, f"{x:.3f}", ""])
-                readings.setdefault((float(angles[i]), sign), []).append(x)
-    return rows, readings
+    return iso230_rows(angles, mu, runs, noise, rng)
 
 
 def _certificate(rows):

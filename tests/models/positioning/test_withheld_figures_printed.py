@@ -15,6 +15,8 @@ import re
 import numpy as np
 import pytest
 
+from tests.repeatability_rig import iso230_rows
+
 
 def _axis(rng, runs: int = 2, targets: int = 9, noise: float = 0.8):
     """An ISO 230-2 test of a rotary axis, x = f(P) ± b/2 + σ z at every approach, each run up
@@ -22,14 +24,7 @@ def _axis(rng, runs: int = 2, targets: int = 9, noise: float = 0.8):
     angles = np.linspace(0.0, 360.0, targets, endpoint=False)
     f = 4.0 * np.sin(np.radians(angles)) + 1.5 * np.cos(np.radians(2 * angles))
     mu = {"+": f + 1.0, "-": f - 1.0}
-    rows, readings = [], {}
-    for run in range(1, runs + 1):
-        for sign, order in (("+", range(targets)), ("-", range(targets - 1, -1, -1))):
-            for i in order:
-                x = round(float(mu[sign][i] + noise * rng.standard_normal()), 3)
-                rows.append([f"{angles[i]:.6f}", str(run), sign, f"{x:.3f}", ""])
-                readings.setdefault((float(angles[i]), sign), []).append(x)
-    return rows, readings
+    return iso230_rows(angles, mu, runs, noise, rng)
 
 
 def _accuracy(readings) -> float:
