@@ -32,14 +32,15 @@ NUMBER = r"([+-]?\d+(?:\.\d+)?)"
 
 
 @functools.lru_cache(maxsize=2)  # one analysis a noise for all the checks
-def _summary(noise_v: float = NOISE_V) -> str:
-    theta = equal_steps(PER_PERIOD * PERIODS, PER_PERIOD)
+def _summary(noise_v: float = NOISE_V, per_period: int = PER_PERIOD,
+             periods: int = PERIODS) -> str:
+    theta = equal_steps(per_period * periods, per_period)
     head = Channels(**{**HEAD.__dict__, "noise_v": noise_v})
     u_sin, u_cos = head.sample(theta, np.random.default_rng(11))
     parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
                              "theta_deg": np.full(theta.size, np.nan)}, np.arange(theta.size))
     result = FRINGE.analyze(parsed, {"max_order": 3, "lines_per_rev": LINES,
-                                     "samples_per_period": PER_PERIOD})
+                                     "samples_per_period": per_period})
     return FRINGE.summary(result)
 
 
@@ -80,8 +81,11 @@ def test_the_offsets_are_printed_to_their_uncertainty_and_the_uncertainty_named(
 
 
 def test_a_larger_noise_gives_fewer_decimals_never_a_third_significant_digit():
-    text = _summary(noise_v=0.03)  # u(A1) ≈ 0.0019 V
+    # 32 samples with 50 mV of noise: u(A1) ≈ 0.0125 V, printed to 0.001 V, not "0.0125"
+    text = _summary(noise_v=0.05, per_period=16, periods=2)
     found = re.search(rf"A1 = {NUMBER} ± {NUMBER} V", text)
     assert found, text
     value, u = found.group(1), found.group(2)
-    assert len(_significant(u)) == 2 and len(value.split(".")[1]) == 4, (value, u)
+    assert len(_significant(u)) == 2 and len(value.split(".")[1]) == 3, (value, u)
+    expected_u = 0.05 * math.sqrt(2.0 / 32)
+    assert 0.8 * expected_u < float(u) < 1.25 * expected_u, (u, expected_u)
