@@ -21,12 +21,39 @@ from PySide6.QtWidgets import (
 
 from models.certificate.metadata import CertificateMetadata
 from models.messages import as_sentence
+from models.register.serial_differences import differences_named, serial_difference
 from widgets.certificate_dialog import CertificateDialog
 from widgets.i18n import tr, translated
 from widgets.save_file import ask_save_file
 from widgets.screen_fit import fit_to_screen
+from widgets.unbroken_identifiers import unbroken
 
-__all__ = ["CertificateDialogs", "as_sentence"]
+__all__ = ["LISTED_LOOKALIKES", "CertificateDialogs", "as_sentence", "lookalikes_listed"]
+
+#: the earlier serials a look-alike question lists, one a line; the others are counted
+LISTED_LOOKALIKES = 3
+
+
+def lookalikes_listed(serial: str, lookalikes) -> str:
+    """The facts of a look-alike question about ``serial`` with several earlier serials
+    (``lookalikes``: each serial with the numbers of its certificates): a line each, its
+    characters that differ from ``serial`` in brackets, at most :data:`LISTED_LOOKALIKES`,
+    then how many more, and the characters that print alike named once (day review 68
+    F11: with three look-alikes the question was a paragraph of 16 lines comparing the
+    serial with each in turn). No "." at its end (the question's template puts it)."""
+    shown = list(lookalikes[:LISTED_LOOKALIKES])
+    out = [tr("Serial {serial} is in no certificate of the register, but looks like these "
+              "serials (the characters that differ in brackets):").format(serial=serial)]
+    for kept, numbers in shown:
+        out.append(tr("• {serial} ({numbers})").format(
+            serial=serial_difference(serial, kept).other_marked, numbers=", ".join(numbers)))
+    if len(lookalikes) > LISTED_LOOKALIKES:
+        out.append(tr("• and {count} more").format(count=len(lookalikes) - LISTED_LOOKALIKES))
+    named = translated(differences_named(serial, [kept for kept, _numbers in shown]))
+    out.append(tr("{differences}. If it is one of those items with its serial mistyped, a "
+                  "certificate under this serial would split its history and due date").format(
+                      differences=as_sentence(named)))
+    return "\n".join(out)
 
 
 class CertificateDialogs:
@@ -128,11 +155,23 @@ class CertificateDialogs:
         has none beside that day's item with one: is this another item? (rev65 F7; the
         answer Yes is recorded in the register). Asked from the register's facts, the
         differing characters marked, without the command line's option (day review 67 F6)."""
-        return self._yes(tr("Another item?"), tr(
+        serial = getattr(question, "serial", "")
+        lookalikes = getattr(question, "lookalikes", ())
+        facts: str
+        asked: str
+        if len(lookalikes) > 1:  # one a line, at most a few (day review 68 F11)
+            facts, asked = lookalikes_listed(serial, lookalikes), tr(
+                "Is {serial} a different item from each of them?").format(serial=serial)
+        else:
+            facts = as_sentence(translated(question.facts))
+            asked = translated(question.question)
+        marked = [serial_difference(serial, kept) for kept, _numbers in lookalikes]
+        return self._yes(tr("Another item?"), unbroken(tr(
             "{facts}.\n\n{question} Yes: issue it; the register records that you said so. "
             "No: nothing is issued. {advice}").format(
-                facts=as_sentence(translated(question.facts)),
-                question=translated(question.question), advice=translated(question.advice)))
+                facts=facts, question=asked, advice=translated(question.advice)),
+            [serial, *(kept for kept, _n in lookalikes), *(d.one_marked for d in marked),
+             *(d.other_marked for d in marked)]))
 
     def _yes(self, title: str, text: str) -> bool:
         """Whether the user answers Yes to ``text`` (No the default: nothing is done)."""

@@ -86,11 +86,19 @@ def main(argv: list[str] | None = None) -> int:
         print(software_identity().line())  # noqa: T201 - the command's output
         return 0
     if args.screenshot:
-        os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-        from app.screenshot import write_screenshots
+        import tempfile
+        from pathlib import Path
 
-        for path in write_screenshots(args.screenshot, args.size, args.language or "en"):
-            print(path)  # noqa: T201 - the command's output
+        from app.screenshot import offscreen_platform, write_screenshots
+
+        with tempfile.TemporaryDirectory(prefix="anglebench-screenshot-") as scratch:
+            # rendered offscreen on a screen of the window's size, so that a window fitted
+            # to its screen (the Live signals) is laid out as on that screen (day review 68
+            # F10: Qt's offscreen screen of 800×800 px gave another layout than the window's)
+            if "QT_QPA_PLATFORM" not in os.environ:
+                os.environ["QT_QPA_PLATFORM"] = offscreen_platform(args.size, Path(scratch))
+            for path in write_screenshots(args.screenshot, args.size, args.language or "en"):
+                print(path)  # noqa: T201 - the command's output
         return 0
     return run_gui(args.project, args.samples, words, args.language)
 

@@ -4,6 +4,8 @@ head's figures."""
 
 from __future__ import annotations
 
+import json
+import os
 import tempfile
 import time
 from pathlib import Path
@@ -24,6 +26,30 @@ def _example_metadata() -> CertificateMetadata:
         "item_serial": "LRA-0815", "calibration_date": "2026-11-20", "operator": "Wang",
         "standards": [{"description": "Autocollimating theodolite", "certificate_no": "NIM-1187",
                        "uncertainty": 0.5, "basis": "U95"}]})
+
+
+def offscreen_platform(size: tuple[int, int], folder: Path) -> str:
+    """``QT_QPA_PLATFORM`` for the screenshots: Qt's offscreen platform with one screen of
+    ``size`` logical px (the window's, device px × ``QT_SCALE_FACTOR``), described in a file
+    written to ``folder``, so that a window fitted to its screen takes the size it takes on
+    such a screen. Qt's own offscreen screen is 800×800 px: at 200 % the Live signals window
+    was fitted to 392×368 px, widened to its least width, and laid out as no window on a
+    screen of the window's size is (day review 68 F10). Plain ``offscreen`` where the file's
+    name cannot be given (a ":" in it, which separates the platform's options)."""
+    try:
+        scale = float(os.environ.get("QT_SCALE_FACTOR") or 1.0)
+    except ValueError:  # Qt ignores it too
+        scale = 1.0
+    if not (0.1 <= scale <= 10.0):
+        scale = 1.0
+    width, height = (max(1, round(v * scale)) for v in size)
+    path = folder / "offscreen-screen.json"
+    if ":" in str(path):
+        return "offscreen"
+    path.write_text(json.dumps({"screens": [{
+        "name": "AngleBench", "x": 0, "y": 0, "width": width, "height": height,
+        "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]}), encoding="utf-8")
+    return f"offscreen:configfile={path}"
 
 
 def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900),

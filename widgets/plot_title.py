@@ -9,10 +9,12 @@ import pyqtgraph as pg
 from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QTextOption
 
-__all__ = ["fit_title", "wrap_title"]
+__all__ = ["TITLE_LINES", "fit_title", "set_fitting_title", "wrap_title"]
 
 #: pyqtgraph's height of a title's row (PlotItem.setTitle), kept when one line fits
 _ROW_PX = 30
+#: the lines a title may take before its shorter wording is used (:func:`set_fitting_title`)
+TITLE_LINES = 2
 
 
 def fit_title(plot: pg.PlotWidget) -> None:
@@ -21,7 +23,7 @@ def fit_title(plot: pg.PlotWidget) -> None:
     again after each ``setTitle`` (which sets the row's height back)."""
     item = plot.getPlotItem()
     label = item.titleLabel
-    if not label.isVisible():
+    if not label.isVisible() or getattr(plot, "_fitting_title", False):
         return
     text = label.item
     option = QTextOption(Qt.AlignmentFlag.AlignHCenter)
@@ -33,9 +35,19 @@ def fit_title(plot: pg.PlotWidget) -> None:
                if item.getAxis(side).isVisible())
     left, _top, right, _bottom = item.layout.getContentsMargins()
     room = max(40.0, plot.viewport().width() - axes - left - right - 2)
-    text.setTextWidth(-1)
-    natural = text.boundingRect().width()
-    text.setTextWidth(min(natural, room))
+    plot._fitting_title = True  # the label's new text lays the plot out again
+    try:
+        for candidate in getattr(plot, "title_texts", None) or [label.text]:
+            if label.text != candidate:
+                label.setText(candidate)  # its size and colour kept
+            text.document().setDefaultTextOption(option)
+            text.setTextWidth(-1)
+            natural, line = text.boundingRect().width(), text.boundingRect().height()
+            text.setTextWidth(min(natural, room))
+            if text.boundingRect().height() <= TITLE_LINES * line + 1:
+                break
+    finally:
+        plot._fitting_title = False
     height = max(_ROW_PX, int(text.boundingRect().height()) + 2)
     label.setMaximumHeight(height)
     item.layout.setRowFixedHeight(0, height)
@@ -45,6 +57,17 @@ def fit_title(plot: pg.PlotWidget) -> None:
         # held wider than the widget by the title's former width: laid out in it again,
         # once this layout is done
         QTimer.singleShot(0, plot, lambda: item.setGeometry(plot.range))
+
+
+def set_fitting_title(plot: pg.PlotWidget, texts: list[str], **options) -> None:
+    """``plot``'s title: the first of ``texts`` that :func:`fit_title` wraps to at most
+    :data:`TITLE_LINES` lines of the figure's width, else the last (a shorter wording):
+    at 200 % on a 1280×720 screen the Live signals' "Rings: amplitude band (green inside,
+    amber outer)" wrapped to four lines in its 183 px plot and took half of it (day review
+    68 F10). ``options``: PlotItem.setTitle's (size, color)."""
+    plot.title_texts = list(texts)
+    plot.setTitle(texts[0], **options)
+    fit_title(plot)
 
 
 def wrap_title(plot: pg.PlotWidget) -> None:

@@ -44,6 +44,7 @@ from models.messages import QT_TR_NOOP, joined, lines, message, reason_of, separ
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.lab_scope import cmc_parameter
+from models.uncertainty.rounding import uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     IssuesCertificates,
@@ -816,13 +817,24 @@ def to_json(result: FringeResult) -> dict[str, Any]:
     return out
 
 
+def _with_u(value: float, u: float | None, signed: bool = False) -> str:
+    """A fitted parameter in V and its standard uncertainty, u to two significant digits and
+    the value to its decimal (GUM 7.2.6; the certificate rounds its U so too): "0.500000 ±
+    0.000019", never a u printed as "0.0000" (day review 68 F12: "A1 = 0.5000 ± 0.0000 V"
+    where the certificate printed U = 0.000038 V); without a u, four decimals."""
+    spec = "+" if signed else ""
+    if u is None or not (math.isfinite(u) and u > 0):
+        return f"{value:{spec}.4f}"
+    decimals = uncertainty_decimals(u)
+    return f"{value:{spec}.{decimals}f} ± {u:.{decimals}f}"
+
+
 def _fit_line(name: str, fit: ChannelFit) -> str:
-    parts = [f"{name}0 = {fit.offset:+.4f} V"]
+    parts = [f"{name}0 = {_with_u(fit.offset, fit.u_offset, signed=True)} V"]
     for k in fit.orders:
-        ua = fit.u_amplitude.get(k)
-        unc = f" ± {ua:.4f}" if ua is not None and math.isfinite(ua) else ""
-        parts.append(f"{name}{k} = {fit.amplitude[k]:.4f}{unc} V ∠ {fit.phase[k]:+.4f} rad")
-    return "  " + ", ".join(parts)
+        parts.append(f"{name}{k} = {_with_u(fit.amplitude[k], fit.u_amplitude.get(k))} V "
+                     f"∠ {fit.phase[k]:+.4f} rad")
+    return "  " + ", ".join(parts) + " (± u, k = 1)"
 
 
 _SOURCE_TEXT = {"samples_per_period": QT_TR_NOOP("phase from equal steps, {n} samples per period"),

@@ -17,10 +17,13 @@ from __future__ import annotations
 import dataclasses
 import difflib
 import unicodedata
+from collections.abc import Sequence
+from typing import Any
 
 from models.messages import QT_TR_NOOP, Message, listed, message
 
-__all__ = ["SerialDifference", "character_words", "differences_sentence", "serial_difference"]
+__all__ = ["SerialDifference", "character_words", "differences_named", "differences_sentence",
+           "serial_difference"]
 
 #: the marks put around a run of differing characters
 OPEN, CLOSE = "[", "]"
@@ -127,10 +130,9 @@ def character_words(text: str) -> Message | str:
                    name=unicodedata.name(text, "unnamed"), code=ord(text))
 
 
-def differences_sentence(one: str, other: str) -> Message:
-    """The two serials, marked, and what differs in words: "RX-26-[o]815 vs RX-26-[0]815:
-    the small letter o and the digit 0 print alike, case aside"; a run only ``one`` or only
-    ``other`` has is named as such."""
+def _pair_words(one: str, other: str) -> tuple[list[Message], list[Message]]:
+    """The differing runs of ``one`` and ``other`` in words: the pairs that print alike
+    ("the small letter o and the digit 0"), and the runs only one of them has."""
     found = serial_difference(one, other)
     alike = [message(QT_TR_NOOP("{one} and {other}"), one=character_words(mine),
                      other=character_words(theirs))
@@ -138,6 +140,43 @@ def differences_sentence(one: str, other: str) -> Message:
     alone = [message(QT_TR_NOOP("{chars} only in {serial}"),
                      chars=character_words(mine or theirs), serial=one if mine else other)
              for mine, theirs in found.pairs if not (mine and theirs)]
+    return alike, alone
+
+
+def differences_named(one: str, others: Sequence[str]) -> Any:
+    """What differs between ``one`` and each of ``others`` in words, each pair once, for a
+    list of look-alike serials marked in brackets (day review 68 F11: with three look-alikes
+    the question compared the serial with each in turn, "the small letter o and the digit 0"
+    three times, a paragraph of 16 lines): "the small letter o and the digit 0, the digit 6
+    and the capital letter G print alike, case aside"; a run only one serial has is named as
+    such; "" where nothing differs."""
+    alike: list[Message] = []
+    alone: list[Message] = []
+    seen: set[tuple[str, str]] = set()
+    for other in others:
+        for mine, theirs in serial_difference(one, other).pairs:
+            key = (mine, theirs) if mine and theirs else (mine, theirs + "\0" + other)
+            if key in seen:
+                continue
+            seen.add(key)
+            if mine and theirs:
+                alike.append(message(QT_TR_NOOP("{one} and {other}"),
+                                     one=character_words(mine), other=character_words(theirs)))
+            else:
+                alone.append(message(QT_TR_NOOP("{chars} only in {serial}"),
+                                     chars=character_words(mine or theirs),
+                                     serial=one if mine else other))
+    said = [message(QT_TR_NOOP("{pairs} print alike, case aside"), pairs=listed(alike))] \
+        if alike else []
+    return listed([*said, *alone])
+
+
+def differences_sentence(one: str, other: str) -> Message:
+    """The two serials, marked, and what differs in words: "RX-26-[o]815 vs RX-26-[0]815:
+    the small letter o and the digit 0 print alike, case aside"; a run only ``one`` or only
+    ``other`` has is named as such."""
+    found = serial_difference(one, other)
+    alike, alone = _pair_words(one, other)
     said = [message(QT_TR_NOOP("{pairs} print alike, case aside"), pairs=listed(alike))] \
         if alike else []
     return message(QT_TR_NOOP("{one} vs {other}: {differences}"), one=found.one_marked,

@@ -113,10 +113,15 @@ class LookalikeSerial(RegisterError):
     after a No)."""
 
     def __init__(self, text, numbers: tuple[str, ...], facts: str = "", question: str = "",
-                 advice: str = "") -> None:
+                 advice: str = "", serial: str = "",
+                 lookalikes: tuple[tuple[str, tuple[str, ...]], ...] = ()) -> None:
         super().__init__(text)
         self.numbers = numbers
         self.facts, self.question, self.advice = facts or text, question, advice
+        #: the serial asked about and the serials it looks like, each once with the
+        #: certificates of it, in the register's order: a window lists them one a line
+        #: (day review 68 F11); () where the question is not about a serial's characters
+        self.serial, self.lookalikes = serial, lookalikes
 
 
 class SerialLeftOut(LookalikeSerial):
@@ -2240,7 +2245,9 @@ def _lookalike_serial(meta: CertificateMetadata, lookalikes) -> LookalikeSerial:
         message(QT_TR_NOOP("Is {serial} a different item from {kept}?"), serial=meta.item_serial,
                 kept=_either(list(serials))),
         message(QT_TR_NOOP("If it is the same item, correct the serial number in the "
-                           "certificate details, then issue the certificate again.")))
+                           "certificate details, then issue the certificate again.")),
+        meta.item_serial, tuple((serial, tuple(numbers))
+                                for serial, (numbers, _makers) in serials.items()))
 
 
 def _either(items: list[str]) -> Any:

@@ -26,7 +26,7 @@ from collections.abc import Callable
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, QObject, Qt, QTimer, Signal
+from PySide6.QtCore import QEvent, QObject, QPoint, Qt, QTimer, Signal
 from PySide6.QtWidgets import (
     QBoxLayout,
     QComboBox,
@@ -41,6 +41,7 @@ from PySide6.QtWidgets import (
     QPushButton,
     QScrollArea,
     QSizePolicy,
+    QSpacerItem,
     QSpinBox,
     QVBoxLayout,
     QWidget,
@@ -63,7 +64,7 @@ from widgets.fringe.preset_editor import PresetEditorDialog
 from widgets.fringe.signal_bar import SignalBar
 from widgets.i18n import declared, explained, live, on_language_change, tr, translated
 from widgets.plot_grid import keep_axis_title_room, show_grid
-from widgets.plot_title import fit_title, wrap_title
+from widgets.plot_title import set_fitting_title, wrap_title
 
 __all__ = ["INSTRUMENT", "REFRESH_MS", "LiveSignalsPanel"]
 
@@ -292,39 +293,54 @@ class LiveSignalsPanel(QWidget):
         plots = self.plots_grid = QGridLayout()
         # at the top, no taller than the body's view (:meth:`_fit_plots`); side by side, or
         # one above the other where two would not fit beside the bars (:meth:`_arrange`)
-        plots.addWidget(self.lissajous, 0, 0, Qt.AlignmentFlag.AlignTop)
-        plots.addWidget(self.error_plot, 0, 1, Qt.AlignmentFlag.AlignTop)
+        plots.addWidget(self.lissajous, 0, 0)
+        plots.addWidget(self.error_plot, 0, 1)
         plots.setColumnStretch(0, 1)
         plots.setColumnStretch(1, 1)
+        # the plots' rows grow to the plots' greatest height, the room below goes to this
+        # row (aligned to the top instead, a plot was as tall as its size hint, not as the
+        # height fitted to the view: 160 px in a 261 px view under --screenshot at 200 %)
+        plots.addItem(QSpacerItem(0, 0, QSizePolicy.Policy.Minimum,
+                                  QSizePolicy.Policy.Expanding), 2, 0, 1, 2)
+        plots.setRowStretch(0, 1)
         self.bars_column = left
         self.plots_beside: bool | None = True
         body = self.body_layout = QHBoxLayout()
-        # narrow margins: at 200 % on a 1280×720 screen (627 px of window) the bars and
-        # plots at their least width were wider than the view, and a sideways scroll bar
-        # took a line off the plots' height (day review 67 F8)
-        body.setContentsMargins(2, 2, 2, 2)
+        body.setContentsMargins(0, 0, 0, 0)
         body.addWidget(left, 2)
         body.addLayout(plots, 5)
-        # the bars and plots scroll when the screen is smaller than they need; the rows
-        # above and Take below stay in sight
+        # one page that scrolls: the stream's and the window's rows, the bars and plots and
+        # the note under them; Reset/Take and the status line stay in sight below it. At 200 %
+        # on a 1280×720 screen (627×331 px of window) the rows were fixed above a body that
+        # scrolled on its own, and that body had 105 px: the plots stood in a strip, their
+        # x axes below the fold, the y title cut to "polation error" (day review 68 F10). Now
+        # the page scrolls to the plots, each no taller than the page's view
+        # (:meth:`_fit_plots`). Narrow margins: at 200 % the bars and plots at their least
+        # width were wider than the view, and a sideways scroll bar took a line off the
+        # plots' height (day review 67 F8)
+        page = self.page_layout = QVBoxLayout()
+        page.setContentsMargins(2, 2, 2, 2)
+        page.addLayout(link)
+        page.addLayout(view)
+        page.addLayout(window)
+        page.addLayout(body, 1)
+        page.addWidget(self.note)
         self.body = QScrollArea()
         self.body.setWidgetResizable(True)
         self.body.setFrameShape(QFrame.Shape.NoFrame)
-        inside = QWidget()
-        inside.setLayout(body)
+        inside = self.page = QWidget()
+        inside.setLayout(page)
         self.body.setWidget(inside)
-        # the plots follow the body's view, not only the window: the status line below
+        # it scrolls down only: the window is at least as wide as the page (:meth:`_arrange`)
+        self.body.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        # the plots follow the page's view, not only the window: the status line below
         # wrapping to two lines once figures come shortens the view with the window unchanged
         # (day review 67 F8: the x axis titles were cut on the first open at 150 %)
         self.body.viewport().installEventFilter(self)
         outer = self.outer_layout = QVBoxLayout(self)
         outer.setContentsMargins(4, 4, 4, 4)
-        outer.addLayout(link)
-        outer.addLayout(view)
-        outer.addLayout(window)
         outer.addWidget(self.body, 1)
         outer.addLayout(actions)
-        outer.addWidget(self.note)
         outer.addWidget(self.status)
         for plot in (self.lissajous, self.error_plot):
             plot.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
@@ -377,13 +393,17 @@ class LiveSignalsPanel(QWidget):
             + field(self.port, self.PORT_SHOWN) + field(self.pattern, self.LINE_SHOWN)
         buttons = sum(b.sizeHint().width() for b in (self.connect_button,
                                                      self.disconnect_button, self.demo_button))
-        one_row = fields + buttons + 9 * spacing <= room
+        # the rows are on the page, beside its scroll bar
+        page = self.page_layout.contentsMargins()
+        page_room = room - page.left() - page.right() \
+            - self.body.verticalScrollBar().sizeHint().width()
+        one_row = fields + buttons + 9 * spacing <= page_room
         direction = QBoxLayout.Direction.LeftToRight if one_row else \
             QBoxLayout.Direction.TopToBottom
         if self.link_rows.direction() != direction:
             self.link_rows.setDirection(direction)
         inside = self.body_layout
-        margins = inside.contentsMargins()
+        margins = self.page_layout.contentsMargins()
         scroll_bar = self.body.verticalScrollBar().sizeHint().width()
         beside = room - scroll_bar - margins.left() - margins.right() \
             - self.bars_column.minimumWidth() - 2 * max(inside.spacing(), 0) \
@@ -392,10 +412,16 @@ class LiveSignalsPanel(QWidget):
             self.plots_beside = beside
             self.plots_grid.removeWidget(self.error_plot)
             row, column = (0, 1) if beside else (1, 0)
-            self.plots_grid.addWidget(self.error_plot, row, column, Qt.AlignmentFlag.AlignTop)
+            self.plots_grid.addWidget(self.error_plot, row, column)
             self.plots_grid.setColumnStretch(1, 1 if beside else 0)
-            # one above the other: the room the bars leave below them, not between them
-            self.plots_grid.setRowStretch(2, 0 if beside else 1)
+            # one above the other: both rows grow to the plots' height, the room the bars
+            # leave below them to the row below, not between them
+            self.plots_grid.setRowStretch(1, 0 if beside else 1)
+        # no wider a window than its page (its rows in two, the plots one above the other
+        # at least): the page never scrolls sideways
+        least = self.page.minimumSizeHint().width() + scroll_bar
+        if self.body.minimumWidth() != least:
+            self.body.setMinimumWidth(least)
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:  # noqa: N802 - Qt's name
         if event.type() == QEvent.Type.Resize and watched is self.body.viewport():
@@ -403,12 +429,18 @@ class LiveSignalsPanel(QWidget):
         return super().eventFilter(watched, event)
 
     def _fit_plots(self) -> None:
-        """The plots no taller than the body's view (their least height aside): as tall as
-        the bars beside them, they scrolled with them, and the interpolation error's y title,
-        centred on its axis, was partly out of view at 150 % on a 1280×720 screen (day
-        review 66)."""
-        margins = self.body.widget().layout().contentsMargins()
-        height = self.body.viewport().height() - margins.top() - margins.bottom()
+        """The plots no taller than the page's view (their least height aside): below the
+        rows above them where they fit there whole, so that they are seen whole without
+        scrolling (at 100 % and 150 %); else a view's height each, the page scrolled down to
+        them showing one whole, x axis and y title in view (200 % on a 1280×720 screen, day
+        review 68 F10: 105 px of view for plots 176 and 193 px tall). As tall as the bars
+        beside them, they scrolled with them, and the interpolation error's y title,
+        centred on its axis, was partly out of view at 150 % (day review 66)."""
+        margins = self.page_layout.contentsMargins()
+        view = self.body.viewport().height() - margins.top() - margins.bottom()
+        top = self.bars_column.mapTo(self.page, QPoint(0, 0)).y() - margins.top()
+        least = max(plot.minimumHeight() for plot in (self.lissajous, self.error_plot))
+        height = view - top if view - top >= least else view
         for plot in (self.lissajous, self.error_plot):
             plot.setMaximumHeight(max(height, plot.minimumHeight()))
 
@@ -425,9 +457,11 @@ class LiveSignalsPanel(QWidget):
                            ("roll_mrad", tr("Roll")), ("dirt", tr("Dirt on the scale"))):
             self.knob_labels[name].setText(text)
         self.note.setText(translated(NOT_CONFORMITY))
-        self.lissajous.setTitle(tr("Rings: amplitude band (green inside, amber outer)"),
-                                size="9pt", color="#455a64")
-        fit_title(self.lissajous)  # wrapped to the plot's width (day review 67)
+        # wrapped to the plot's width (day review 67), the shorter wording where the whole
+        # one takes more than two lines (day review 68 F10: four lines at 200 %)
+        set_fitting_title(self.lissajous, [
+            tr("Rings: amplitude band (green inside, amber outer)"),
+            tr("Band: green inside, amber outer")], size="9pt", color="#455a64")
         self.lissajous.setLabel("left", tr("u sin (V)"))
         self.lissajous.setLabel("bottom", tr("u cos (V)"))
         self.error_plot.setLabel("left", tr("interpolation error (° el.)"))
@@ -577,6 +611,7 @@ class LiveSignalsPanel(QWidget):
         self.refused = self.samples = 0
         self._fault = ""
         self.figures = None
+        self._figures_unseen = True  # the page brought to them with the first figures
         self.timer.start()
         self._show_connected()
         self._show_status()
@@ -689,6 +724,26 @@ class LiveSignalsPanel(QWidget):
                              self.extremes.high.get(quantity, math.nan))
         self._draw(u_sin, u_cos)
         self.redraws += 1
+        if self._figures_unseen:
+            self._figures_unseen = False
+            QTimer.singleShot(0, self, self._bring_figures_into_view)  # once laid out
+
+    _figures_unseen = False
+
+    def _bring_figures_into_view(self) -> None:
+        """The page scrolled down to the bars and plots when the first figures of a stream
+        come and a plot is cut at the bottom of the view (a short window: 200 % on a
+        1280×720 screen, where they cannot be whole below the rows; day review 68 F10):
+        they are what is watched while a head is mounted. Never scrolled back up, nor when
+        they are whole where they are."""
+        inside = self.page
+        bar = self.body.verticalScrollBar()
+        view = self.body.viewport().height()
+        top = self.bars_column.mapTo(inside, QPoint(0, 0)).y()
+        first = self.lissajous
+        bottom = first.mapTo(inside, QPoint(0, first.height())).y()
+        if bottom - bar.value() > view and top > bar.value():
+            bar.setValue(min(top - self.page_layout.contentsMargins().top(), bar.maximum()))
 
     def _draw(self, u_sin, u_cos) -> None:
         step = max(1, u_sin.size // 2000)
