@@ -32,6 +32,7 @@ from models.positioning.report import (
     readings_figure_intervals,
     stated_figure_intervals,
     withheld_figure_reasons,
+    without_interval,
 )
 from models.readings.copied_runs import COPIED_RUN, copied_run
 from models.readings.entry_plan import positioning_plan, targets_from_text
@@ -732,12 +733,17 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         # (GUM 7.2.6; the window said "A 22.447″" beside a summary's "A = 22.4″"), with the
         # certificate's reference standards' U where ``printed`` gives them
         decimals = figure_decimals(r) | (printed or {})
+        keys = (("A", "R", "B") if r.bidirectional else
+                tuple(f"{f}_{n}" for n, _, _ in r.directions_present() for f in ("A", "R")))
+        # a figure printed with no coverage interval says so, here as on the certificate,
+        # where its row has none (day review 68 F5)
+        none = without_interval(r, readings_figure_intervals(r))
+        alone = [k for k in keys if k in none]
         return joined((
             _figures_line(f"{STANDARDS[r.standard].split(' (')[0]}: ",
-                          ((k, r.iso.figures.get(k)) for k in (
-                              ("A", "R", "B") if r.bidirectional else
-                              tuple(f"{f}_{n}" for n, _, _ in r.directions_present()
-                                    for f in ("A", "R")))), r.symbol, decimals),
+                          ((k, r.iso.figures.get(k)) for k in keys), r.symbol, decimals),
+            message(QT_TR_NOOP(" (no coverage interval: {figures})"), figures=", ".join(alone))
+            if alone else "",
             "" if r.minimum_runs_met else message(QT_TR_NOOP(" — fewer than 5 runs: flagged"))))
 
     def headline(self, r):

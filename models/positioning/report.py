@@ -72,7 +72,7 @@ from models.uncertainty.figure_intervals import (
 )
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.probability_text import percent_text
-from models.uncertainty.rounding import interval_ends
+from models.uncertainty.rounding import interval_ends, without_interval_decimals
 from models.uncertainty.undetermined_repeatability import (
     RUNS_UNDETERMINED,
     RUNS_UNDETERMINED_READINGS,
@@ -80,6 +80,7 @@ from models.uncertainty.undetermined_repeatability import (
 )
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_decimals", "figure_uncertainties",
+           "without_interval",
            "intervals_determined", "intervals_withheld", "readings_figure_intervals",
            "readings_step_component",
            "stated_figure_intervals", "withheld_figure_reasons",
@@ -384,11 +385,25 @@ def figure_decimals(result: PositioningResult, budget: UncertaintyBudget | None 
     own scatter as the readings show it, as the window's verdict line prints it (day 68 F5:
     "A 19.866″ —" on the certificate beside the window's "A = 20″", its interval withheld
     at 14″ … 974″). ``budget``: the certificate's (its reference standards' U, held to the
-    laboratory's CMC); None: the readings' own. A figure with no interval at all is not here
-    (a target approached once: printed to 0.001, as before)."""
+    laboratory's CMC); None: the readings' own. A figure with no interval at all (a target
+    approached once, readings alike or coarser than they scatter: :func:`intervals_withheld`;
+    a figure whose interval the study does not give) to the decimal its own readings support,
+    their pooled s to two significant digits and no finer than their step
+    (models.uncertainty.rounding.without_interval_decimals; day review 68 F5: "P = 21.151″"
+    beside figures printed to 1″)."""
     intervals = (figure_uncertainties(result) if budget is None else held_to_cmc_figures(
         figure_uncertainties(result, budget), float(budget.floor)))
-    return {key: interval_decimals(iv.low, iv.high) for key, iv in intervals.items()}
+    decimals = {key: interval_decimals(iv.low, iv.high) for key, iv in intervals.items()}
+    alone = without_interval_decimals(result.pooled_s(), result.readings_step)
+    return {key: alone for key in without_interval(result, decimals)} | decimals
+
+
+def without_interval(result: PositioningResult, intervals) -> tuple[str, ...]:
+    """The figures of ``result`` (ISO 230-2's, then VDI/DGQ 3441's) that were evaluated but
+    are not keys of ``intervals``: those printed with no coverage interval."""
+    figures = (*result.iso.figures.items(), *result.vdi.as_dict().items())
+    return tuple(key for key, value in figures
+                 if key not in intervals and value is not None and math.isfinite(value))
 
 
 def _runs(result: PositioningResult) -> dict[str, np.ndarray]:
