@@ -25,6 +25,7 @@ from models.positioning.model import (
     infer_directions,
 )
 from models.positioning.report import (
+    axis_figure_values,
     figure_decimals,
     intervals_withheld,
     positioning_budget,
@@ -45,6 +46,7 @@ from models.uncertainty.figure_intervals import FIGURE_VALUE_NOTE, figure_object
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.probability_text import percent_text
+from models.uncertainty.wide_intervals import wide_intervals_statement
 from models.workbench import (
     AcceptsRuns,
     ComparesAfterLog,
@@ -597,6 +599,11 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
         out += [message(QT_TR_NOOP("No coverage interval is given for {figure}: {reason}."),
                         figure=key, reason=reason)
                 for key, reason in withheld_figure_reasons(result).items()]
+        # an upper end far above its figure (few runs): why, as the certificate says (F6)
+        wide = wide_intervals_statement(axis_figure_values(result), intervals,
+                                        min(result.least_runs.values()), sym, outwards=False)
+        if wide is not None:
+            out.append(wide)
     elif (withheld := intervals_withheld(result)) is not None:
         out.append(message(QT_TR_NOOP("No coverage intervals: {reason}"),
                            reason=message(withheld)))

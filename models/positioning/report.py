@@ -78,9 +78,10 @@ from models.uncertainty.undetermined_repeatability import (
     RUNS_UNDETERMINED_READINGS,
     undetermined_repeatability,
 )
+from models.uncertainty.wide_intervals import wide_intervals_statement
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_decimals", "figure_uncertainties",
-           "without_interval",
+           "axis_figure_values", "without_interval",
            "intervals_determined", "intervals_withheld", "readings_figure_intervals",
            "readings_step_component",
            "stated_figure_intervals", "withheld_figure_reasons",
@@ -398,6 +399,13 @@ def figure_decimals(result: PositioningResult, budget: UncertaintyBudget | None 
     return {key: alone for key in without_interval(result, decimals)} | decimals
 
 
+def axis_figure_values(result: PositioningResult) -> dict[str, float]:
+    """Every figure of ``result`` evaluated, ISO 230-2's and VDI/DGQ 3441's, by key."""
+    figures = (*result.iso.figures.items(), *result.vdi.as_dict().items())
+    return {key: float(value) for key, value in figures
+            if value is not None and math.isfinite(value)}
+
+
 def without_interval(result: PositioningResult, intervals) -> tuple[str, ...]:
     """The figures of ``result`` (ISO 230-2's, then VDI/DGQ 3441's) that were evaluated but
     are not keys of ``intervals``: those printed with no coverage interval."""
@@ -652,6 +660,12 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "A specification of A, R, E, B or P conforms when the upper end of the figure's "
         "coverage interval is within it, does not conform when the lower end exceeds it, and "
         "is not decided in between (ISO 14253-1)."))
+    # where an upper end lies far above its figure (few runs), why, and what it means for
+    # a specification of it (day review 68 F6: "P 22″: 16″ … 218″" at 3 runs, unsaid)
+    wide = wide_intervals_statement(axis_figure_values(result), stated,
+                                    min(result.least_runs.values()), sym)
+    if wide is not None:
+        statements.append(wide)
     statements.append(QT_TR_NOOP(
         "Each deviation is the difference of two readings of the reference, at the target and "
         "at the datum set at the start. A reference standard whose certificate states its U "

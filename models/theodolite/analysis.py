@@ -241,12 +241,14 @@ def _intervals_line(result: TheodoliteResult) -> str:
     from models.certificate.metadata import CertificateMetadata
     from models.theodolite.figures import (
         figure_intervals_withheld,
+        least_passes,
         readings_theodolite_figure_intervals,
         theodolite_figure_decimals,
         withheld_theodolite_figure_reasons,
     )
     from models.theodolite.report import theodolite_budget
     from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
+    from models.uncertainty.wide_intervals import wide_intervals_statement
 
     withheld = figure_intervals_withheld(result)
     if withheld is not None:
@@ -267,6 +269,11 @@ def _intervals_line(result: TheodoliteResult) -> str:
                                                           readings_alone=True).items():
         parts += ["\n", message(QT_TR_NOOP("No coverage interval is given for {figure}: "
                                            "{reason}."), figure=key, reason=reason)]
+    # an upper end far above its figure (few passes): why, as the certificate says (F6)
+    wide = wide_intervals_statement(result.iso230.figures if result.iso230 else {}, intervals,
+                                    least_passes(result), "\"", passes=True, outwards=False)
+    if wide is not None:
+        parts += ["\n", wide]
     return joined(parts)
 
 

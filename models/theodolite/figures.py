@@ -98,7 +98,7 @@ from models.uncertainty.undetermined_repeatability import (
 )
 
 __all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "circle_part", "circle_part_not_excluded",
-           "figure_intervals_withheld", "theodolite_figure_decimals",
+           "figure_intervals_withheld", "least_passes", "theodolite_figure_decimals",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
            "pointing_in_figures", "pointing_in_figures_note", "pointing_per_reading",
            "pooled_repeats", "readings_coarse", "readings_theodolite_figure_intervals",
@@ -373,6 +373,12 @@ def withheld_theodolite_figure_reasons(result: TheodoliteResult, budget: Uncerta
                             float(budget.floor)),
         _passes(result),
         PASSES_UNDETERMINED_READINGS if readings_alone else PASSES_UNDETERMINED)[1]
+
+
+def least_passes(result: TheodoliteResult) -> int:
+    """The fewest passes any θ was read in, in either direction (0 without passes)."""
+    present = _directions(result)
+    return min((int(np.min(stats.runs)) for _, stats in present), default=0)
 
 
 def theodolite_figure_decimals(result: TheodoliteResult, budget: UncertaintyBudget,

@@ -468,11 +468,23 @@ def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata,
     widens the figures' intervals, and how much of R and A is the theodolite's pointing
     noise (the latter wherever R is evaluated; the others nothing where the passes do not
     determine them)."""
-    from models.theodolite.figures import circle_widening_note, pointing_in_figures_note
+    from models.theodolite.figures import (
+        circle_widening_note,
+        least_passes,
+        pointing_in_figures_note,
+        stated_theodolite_figure_intervals,
+    )
     from models.theodolite.pass_means import decided_on_means
+    from models.uncertainty.wide_intervals import wide_intervals_statement
 
     pointing = pointing_in_figures_note(result)
     said = () if pointing is None else (pointing,)
+    if result.iso230 is not None:  # an upper end far above its figure: why (day 68 F6)
+        wide = wide_intervals_statement(
+            result.iso230.figures, stated_theodolite_figure_intervals(
+                result, budget, stated_reading_uncertainty(metadata)[0],
+                stated_pair_factor(metadata)), least_passes(result), "\"", passes=True)
+        said += () if wide is None else (wide,)
     if not decided_on_means(result):
         return said
     widening = circle_widening_note(result, budget, stated_reading_uncertainty(metadata)[0],
