@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, joined, lines, message
+from models.messages import QT_TR_NOOP, joined, lines, message, separated
 from models.parameters import Parameter, SettingsError
 from models.positioning import KEY, TITLE
 from models.positioning.compensation import write_compensation
@@ -749,7 +749,7 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         return joined((
             _figures_line(f"{STANDARDS[r.standard].split(' (')[0]}: ",
                           ((k, r.iso.figures.get(k)) for k in keys), r.symbol, decimals),
-            message(QT_TR_NOOP(" (no coverage interval: {figures})"), figures=", ".join(alone))
+            message(QT_TR_NOOP(" (no coverage interval: {figures})"), figures=separated(alone, ", "))
             if alone else "",
             "" if r.minimum_runs_met else message(QT_TR_NOOP(" — fewer than 5 runs: flagged"))))
 
