@@ -56,6 +56,16 @@ def _not_issued_after_no(question: LookalikeSerial) -> str:
         advice=translated(question.advice))
 
 
+def _refusal(path: str, reason: str, with_path: str, without_path: str) -> str:
+    """Why an export to ``path`` was refused, naming the file once: ``with_path`` ("{path}:
+    {reason}. …") unless ``reason`` names it already (a file the register issued: "… .pdf
+    is the PDF of certificate …"; day review 68 F12: the path was said twice), then
+    ``without_path``."""
+    if path and path in reason:
+        return without_path.format(reason=reason)
+    return with_path.format(path=path, reason=reason)
+
+
 def plan_settings_of(settings: dict) -> dict:
     """The settings of a workbench's test (entry) plan: its ``plan_…`` settings."""
     return {k: v for k, v in settings.items() if k.startswith("plan_")}
@@ -622,8 +632,9 @@ class CertificatePresenter:
             return self._issue(kind, result, entered, settings, rows or [], source_name, path,
                                revision, note, raw_capture, separate, confirmed)
         except (OSError, ValueError) as exc:
-            self.view.tell(tr("Cannot export"), tr("{path}: {reason}. Nothing else was changed.")
-                           .format(path=path, reason=explained(exc)))
+            self.view.tell(tr("Cannot export"), _refusal(
+                path, explained(exc), tr("{path}: {reason}. Nothing else was changed."),
+                tr("{reason}. Nothing else was changed.")))
             return False
         finally:
             self.view.wait_cursor(False)
@@ -868,8 +879,9 @@ class CertificatePresenter:
         except (OSError, ValueError) as exc:
             # what was refused: the results (day review 67 F9: "no certificate is issued"
             # was said, of an export where none was being issued)
-            self.view.tell(tr("Cannot export"), tr("{path}: {reason}. No results were written.")
-                           .format(path=path, reason=explained(exc)))
+            self.view.tell(tr("Cannot export"), _refusal(
+                path, explained(exc), tr("{path}: {reason}. No results were written."),
+                tr("{reason}. No results were written.")))
             return False
         self.view.show_status(tr("Results written to {path}").format(path=path), 8000)
         return True

@@ -67,10 +67,15 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
                    max(x.size - 1, 0))
     label = (QT_TR_NOOP("error, est. phase") if result.phase_source == "estimated"
              else QT_TR_NOOP("interp. error"))
+    # where orders fold into fitted ones, the compensated error holds at the sampled phases
+    # only (models.fringe.compensation_at_samples): the legend says so, in the window and on
+    # the certificate (day review 68 F8: "after compensation" drawn as a curve between them)
+    after = (QT_TR_NOOP("after compensation, at the sampled phases only")
+             if getattr(result, "folded_orders", ()) else QT_TR_NOOP("after compensation"))
     out = {"errors": PlotFigure(QT_TR_NOOP("Interpolation error before and after compensation"), along,
                                 f"{label} ({unit})", (
         PlotSeries(QT_TR_NOOP("before compensation"), x[pick], raw[pick], BLUE, role="raw"),
-        PlotSeries(QT_TR_NOOP("after compensation"), x[pick], comp[pick], GREEN, role="corrected")))}
+        PlotSeries(after, x[pick], comp[pick], GREEN, role="corrected")))}
     res_s = drawn(_residuals(result.u_sin, result.theta_rad, result.sin_fit)) * 1e3
     res_c = drawn(_residuals(result.u_cos, result.theta_rad, result.cos_fit)) * 1e3
     out["residuals"] = PlotFigure(QT_TR_NOOP("Fit residuals"), along, QT_TR_NOOP("residual (mV)"), (
@@ -122,11 +127,15 @@ def first_period_with_uncertainty(result: FringeResult, expanded, samples: int) 
     unit = result.unit_symbol.strip()
     band = np.asarray(expanded, dtype=float)[:samples]
     with_u = bool(np.any(np.isfinite(band)))
+    folded = bool(getattr(result, "folded_orders", ()))  # at the sampled phases only (F8)
     return PlotFigure(QT_TR_NOOP("Compensated error in the first period, with U") if with_u
                       else QT_TR_NOOP("Compensated error in the first period (no U stated)"),
                       QT_TR_NOOP("phase θ (°)"),
                       f"{ERROR} ({unit})", (
-        PlotSeries(QT_TR_NOOP("compensated ± U") if with_u else QT_TR_NOOP("compensated"),
+        PlotSeries((QT_TR_NOOP("compensated ± U, at the sampled phases only") if folded else
+                    QT_TR_NOOP("compensated ± U")) if with_u else
+                   (QT_TR_NOOP("compensated, at the sampled phases only") if folded else
+                    QT_TR_NOOP("compensated")),
                    np.degrees(result.theta_rad[:samples]),
                    result.compensated_error[:samples], GREEN, samples <= 256,
                    band=band if with_u else None, role="corrected"),))

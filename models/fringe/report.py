@@ -569,19 +569,33 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                             _SampleNames(),
                             withheld=withheld, budget=found_budget)
     drawn = fringe_plots.figures(result)
-    table_statement = message(
-        QT_TR_NOOP("As left: the lab states that the correction table with sha256 {sha} was "
-                   "loaded into the encoder; the compensated error and its U are the item as "
-                   "left.") if as_left else
-        QT_TR_NOOP("Conformity is judged on the interpolation error as found. The compensated "
-                   "error is not the item's unless the table is loaded into it (table sha256 "
-                   "{sha})."),
-        sha=result.table.sha256)
-    advice = () if as_left else (opinion(QT_TR_NOOP(
+    # where orders fold, the table's own statement says where it holds, as left or not
+    # (day review 68 F8: "the compensated error and its U are the item as left" of a table
+    # whose error between the samples is not determined)
+    if caveat:
+        table_statement = message(
+            QT_TR_NOOP("As left: the lab states that the correction table with sha256 {sha} "
+                       "was loaded into the encoder; the compensated error and its U are the "
+                       "item as left {caveat}.") if as_left else
+            QT_TR_NOOP("Conformity is judged on the interpolation error as found. The "
+                       "compensated error is not the item's unless the table is loaded into it "
+                       "(table sha256 {sha}), and the compensated error and the table hold "
+                       "{caveat}; sample more finely before loading the table into the "
+                       "encoder."),
+            sha=result.table.sha256, caveat=caveat)
+    else:
+        table_statement = message(
+            QT_TR_NOOP("As left: the lab states that the correction table with sha256 {sha} "
+                       "was loaded into the encoder; the compensated error and its U are the "
+                       "item as left.") if as_left else
+            QT_TR_NOOP("Conformity is judged on the interpolation error as found. The "
+                       "compensated error is not the item's unless the table is loaded into it "
+                       "(table sha256 {sha})."),
+            sha=result.table.sha256)
+    # the opinion on what the table will leave: only where it is determined
+    advice = () if as_left or caveat else (opinion(QT_TR_NOOP(
         "The compensated error is the error the correction table is expected to leave, if the "
-        "signals stay as they were measured.")),) if not caveat else (message(QT_TR_NOOP(
-            "The compensated error and the correction table hold {caveat}; sample more finely "
-            "before loading the table into the encoder."), caveat=caveat),)
+        "signals stay as they were measured.")),)
     return build_certificate(
         kind_key=KEY, kind_title=TITLE, method=method_text(result), metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,

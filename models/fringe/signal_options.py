@@ -11,7 +11,7 @@ import math
 from pathlib import Path
 from typing import Any
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, message, separated
 
 
 def add_arguments(p: argparse.ArgumentParser, words) -> None:
@@ -186,7 +186,7 @@ def write_table(args, result, table):
     write_interpolator_table(args.interpolator_table, table, Path(args.file).name,
                              result.period_length, result.unit)
     r, period, unit = table.residual, result.period_length, result.unit
-    return message(QT_TR_NOOP(
+    written = message(QT_TR_NOOP(
         "Interpolator table ({chip}, {entries} entries of {bits} bits, LSB {lsb} of a "
         "period) written to {path}: predicted residual {worst} {unit} largest, {rms} {unit} "
         "RMS (the entries alone {ideal} {unit}; without a table {without} {unit})"),
@@ -196,3 +196,9 @@ def write_table(args, result, table):
         rms=f"{r.rms * period:.4g}",
         ideal=f"{table.residual_unquantised.max_abs * period:.4g}",
         without=f"{table.residual_without.max_abs * period:.4g}", unit=unit)
+    # where orders fold, the predicted residual is the fitted signals', which hold orders
+    # not fitted: it holds at the sampled phases only (day review 68 F8)
+    from models.fringe.compensation_at_samples import compensation_caveat
+
+    caveat = compensation_caveat(result)
+    return separated([written, caveat], "; ") if caveat else written

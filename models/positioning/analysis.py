@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, joined, lines, message
+from models.messages import QT_TR_NOOP, joined, lines, message, separated
 from models.parameters import Parameter, SettingsError
 from models.positioning import KEY, TITLE
 from models.positioning.compensation import write_compensation
@@ -25,6 +25,7 @@ from models.positioning.model import (
     infer_directions,
 )
 from models.positioning.report import (
+    axis_figure_values,
     figure_decimals,
     intervals_withheld,
     positioning_budget,
@@ -32,6 +33,7 @@ from models.positioning.report import (
     readings_figure_intervals,
     stated_figure_intervals,
     withheld_figure_reasons,
+    without_interval,
 )
 from models.readings.copied_runs import COPIED_RUN, copied_run
 from models.readings.entry_plan import positioning_plan, targets_from_text
@@ -44,6 +46,7 @@ from models.uncertainty.figure_intervals import FIGURE_VALUE_NOTE, figure_object
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.probability_text import percent_text
+from models.uncertainty.wide_intervals import wide_intervals_statement
 from models.workbench import (
     AcceptsRuns,
     ComparesAfterLog,
@@ -596,6 +599,11 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
         out += [message(QT_TR_NOOP("No coverage interval is given for {figure}: {reason}."),
                         figure=key, reason=reason)
                 for key, reason in withheld_figure_reasons(result).items()]
+        # an upper end far above its figure (few runs): why, as the certificate says (F6)
+        wide = wide_intervals_statement(axis_figure_values(result), intervals,
+                                        min(result.least_runs.values()), sym, outwards=False)
+        if wide is not None:
+            out.append(wide)
     elif (withheld := intervals_withheld(result)) is not None:
         out.append(message(QT_TR_NOOP("No coverage intervals: {reason}"),
                            reason=message(withheld)))
@@ -732,12 +740,17 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         # (GUM 7.2.6; the window said "A 22.447″" beside a summary's "A = 22.4″"), with the
         # certificate's reference standards' U where ``printed`` gives them
         decimals = figure_decimals(r) | (printed or {})
+        keys = (("A", "R", "B") if r.bidirectional else
+                tuple(f"{f}_{n}" for n, _, _ in r.directions_present() for f in ("A", "R")))
+        # a figure printed with no coverage interval says so, here as on the certificate,
+        # where its row has none (day review 68 F5)
+        none = without_interval(r, readings_figure_intervals(r))
+        alone = [k for k in keys if k in none]
         return joined((
             _figures_line(f"{STANDARDS[r.standard].split(' (')[0]}: ",
-                          ((k, r.iso.figures.get(k)) for k in (
-                              ("A", "R", "B") if r.bidirectional else
-                              tuple(f"{f}_{n}" for n, _, _ in r.directions_present()
-                                    for f in ("A", "R")))), r.symbol, decimals),
+                          ((k, r.iso.figures.get(k)) for k in keys), r.symbol, decimals),
+            message(QT_TR_NOOP(" (no coverage interval: {figures})"), figures=separated(alone, ", "))
+            if alone else "",
             "" if r.minimum_runs_met else message(QT_TR_NOOP(" — fewer than 5 runs: flagged"))))
 
     def headline(self, r):

@@ -72,14 +72,16 @@ from models.uncertainty.figure_intervals import (
 )
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.probability_text import percent_text
-from models.uncertainty.rounding import interval_ends
+from models.uncertainty.rounding import interval_ends, without_interval_decimals
 from models.uncertainty.undetermined_repeatability import (
     RUNS_UNDETERMINED,
     RUNS_UNDETERMINED_READINGS,
     undetermined_repeatability,
 )
+from models.uncertainty.wide_intervals import wide_intervals_statement
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_decimals", "figure_uncertainties",
+           "axis_figure_values", "without_interval",
            "intervals_determined", "intervals_withheld", "readings_figure_intervals",
            "readings_step_component",
            "stated_figure_intervals", "withheld_figure_reasons",
@@ -384,11 +386,32 @@ def figure_decimals(result: PositioningResult, budget: UncertaintyBudget | None 
     own scatter as the readings show it, as the window's verdict line prints it (day 68 F5:
     "A 19.866″ —" on the certificate beside the window's "A = 20″", its interval withheld
     at 14″ … 974″). ``budget``: the certificate's (its reference standards' U, held to the
-    laboratory's CMC); None: the readings' own. A figure with no interval at all is not here
-    (a target approached once: printed to 0.001, as before)."""
+    laboratory's CMC); None: the readings' own. A figure with no interval at all (a target
+    approached once, readings alike or coarser than they scatter: :func:`intervals_withheld`;
+    a figure whose interval the study does not give) to the decimal its own readings support,
+    their pooled s to two significant digits and no finer than their step
+    (models.uncertainty.rounding.without_interval_decimals; day review 68 F5: "P = 21.151″"
+    beside figures printed to 1″)."""
     intervals = (figure_uncertainties(result) if budget is None else held_to_cmc_figures(
         figure_uncertainties(result, budget), float(budget.floor)))
-    return {key: interval_decimals(iv.low, iv.high) for key, iv in intervals.items()}
+    decimals = {key: interval_decimals(iv.low, iv.high) for key, iv in intervals.items()}
+    alone = without_interval_decimals(result.pooled_s(), result.readings_step)
+    return {key: alone for key in without_interval(result, decimals)} | decimals
+
+
+def axis_figure_values(result: PositioningResult) -> dict[str, float]:
+    """Every figure of ``result`` evaluated, ISO 230-2's and VDI/DGQ 3441's, by key."""
+    figures = (*result.iso.figures.items(), *result.vdi.as_dict().items())
+    return {key: float(value) for key, value in figures
+            if value is not None and math.isfinite(value)}
+
+
+def without_interval(result: PositioningResult, intervals) -> tuple[str, ...]:
+    """The figures of ``result`` (ISO 230-2's, then VDI/DGQ 3441's) that were evaluated but
+    are not keys of ``intervals``: those printed with no coverage interval."""
+    figures = (*result.iso.figures.items(), *result.vdi.as_dict().items())
+    return tuple(key for key, value in figures
+                 if key not in intervals and value is not None and math.isfinite(value))
 
 
 def _runs(result: PositioningResult) -> dict[str, np.ndarray]:
@@ -637,6 +660,12 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "A specification of A, R, E, B or P conforms when the upper end of the figure's "
         "coverage interval is within it, does not conform when the lower end exceeds it, and "
         "is not decided in between (ISO 14253-1)."))
+    # where an upper end lies far above its figure (few runs), why, and what it means for
+    # a specification of it (day review 68 F6: "P 22″: 16″ … 218″" at 3 runs, unsaid)
+    wide = wide_intervals_statement(axis_figure_values(result), stated,
+                                    min(result.least_runs.values()), sym)
+    if wide is not None:
+        statements.append(wide)
     statements.append(QT_TR_NOOP(
         "Each deviation is the difference of two readings of the reference, at the target and "
         "at the datum set at the start. A reference standard whose certificate states its U "

@@ -241,11 +241,14 @@ def _intervals_line(result: TheodoliteResult) -> str:
     from models.certificate.metadata import CertificateMetadata
     from models.theodolite.figures import (
         figure_intervals_withheld,
+        least_passes,
         readings_theodolite_figure_intervals,
+        theodolite_figure_decimals,
         withheld_theodolite_figure_reasons,
     )
     from models.theodolite.report import theodolite_budget
     from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
+    from models.uncertainty.wide_intervals import wide_intervals_statement
 
     withheld = figure_intervals_withheld(result)
     if withheld is not None:
@@ -255,8 +258,10 @@ def _intervals_line(result: TheodoliteResult) -> str:
     parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %, from the readings alone; a "
                                       "certificate adds its stated standards' u): "),
                            p=f"{100 * DEFAULT_COVERAGE_PROBABILITY:.2f}")]
+    decimals = theodolite_figure_decimals(result, budget, held=False)
     for i, (key, iv) in enumerate(intervals.items()):
-        parts += [", " if i else "", f"{key} {iv.low:.2f} … {iv.high:.2f}\""]
+        d = decimals.get(key, 2)  # the figure's, as its value is printed
+        parts += [", " if i else "", f"{key} {iv.low:.{d}f} … {iv.high:.{d}f}\""]
         if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
             parts.append(f" ({percent_text(iv.probability)} %)")
     # R, R↑, R↓ of two passes: no interval, and why (audit 68 finding 3)
@@ -264,6 +269,11 @@ def _intervals_line(result: TheodoliteResult) -> str:
                                                           readings_alone=True).items():
         parts += ["\n", message(QT_TR_NOOP("No coverage interval is given for {figure}: "
                                            "{reason}."), figure=key, reason=reason)]
+    # an upper end far above its figure (few passes): why, as the certificate says (F6)
+    wide = wide_intervals_statement(result.iso230.figures if result.iso230 else {}, intervals,
+                                    least_passes(result), "\"", passes=True, outwards=False)
+    if wide is not None:
+        parts += ["\n", wide]
     return joined(parts)
 
 
@@ -302,7 +312,16 @@ def summary(result: TheodoliteResult, printed: int | None = None) -> str:
                 **_printed(c, d), rms=f"{c.rms:.{d}f}\""),
     ]
     if result.iso230 is not None:
-        figs = ", ".join(f"{k} = {v:.2f}\"" for k, v in result.iso230.figures.items())
+        # each figure to the decimal of its interval, as the certificate prints it (day
+        # review 68 F5: "R_up = 4.24″" here, "4″" on the certificate)
+        from models.certificate.metadata import CertificateMetadata
+        from models.theodolite.figures import theodolite_figure_decimals
+        from models.theodolite.report import theodolite_budget
+
+        decimals = theodolite_figure_decimals(
+            result, theodolite_budget(result, CertificateMetadata()), held=False)
+        figs = ", ".join(f"{k} = {v:.{decimals.get(k, 2)}f}\""
+                         for k, v in result.iso230.figures.items())
         out.append(f"ISO 230-2: {figs}")
         out.append(_intervals_line(result))
         from models.theodolite.figures import pointing_in_figures_note

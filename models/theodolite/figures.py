@@ -89,6 +89,7 @@ from models.uncertainty.figure_intervals import (
     held_to_cmc_figures,
     pair_widening,
 )
+from models.uncertainty.rounding import interval_decimals, without_interval_decimals
 from models.uncertainty.stated_excess import excess_not_excluded
 from models.uncertainty.undetermined_repeatability import (
     PASSES_UNDETERMINED,
@@ -97,7 +98,7 @@ from models.uncertainty.undetermined_repeatability import (
 )
 
 __all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "circle_part", "circle_part_not_excluded",
-           "figure_intervals_withheld",
+           "figure_intervals_withheld", "least_passes", "theodolite_figure_decimals",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
            "pointing_in_figures", "pointing_in_figures_note", "pointing_per_reading",
            "pooled_repeats", "readings_coarse", "readings_theodolite_figure_intervals",
@@ -372,6 +373,35 @@ def withheld_theodolite_figure_reasons(result: TheodoliteResult, budget: Uncerta
                             float(budget.floor)),
         _passes(result),
         PASSES_UNDETERMINED_READINGS if readings_alone else PASSES_UNDETERMINED)[1]
+
+
+def least_passes(result: TheodoliteResult) -> int:
+    """The fewest passes any θ was read in, in either direction (0 without passes)."""
+    present = _directions(result)
+    return min((int(np.min(stats.runs)) for _, stats in present), default=0)
+
+
+def theodolite_figure_decimals(result: TheodoliteResult, budget: UncertaintyBudget,
+                               stated_u: float = 0.0, pair_factor: float = 2.0,
+                               held: bool = True) -> dict[str, int]:
+    """Each ISO 230-2 figure's printed decimal: that of its coverage interval's half-width
+    (GUM 7.2.6; ``held``: held to the laboratory's CMC, as a certificate states it), for a
+    figure whose interval two passes withhold that of the interval its reason quotes, and
+    for one with no interval at all (a θ read once, readings alike or coarser than they
+    scatter) that which its own readings support: their pooled s to its first digit, no
+    finer than their step (models.uncertainty.rounding.without_interval_decimals). The
+    certificate and the summary alike (day review 68 F5: the summary's "R_up = 4.24″" beside
+    the certificate's "4″", a figure with no interval at all "5.10″" on both)."""
+    if result.iso230 is None:
+        return {}
+    intervals = theodolite_figure_intervals(result, budget, stated_u, pair_factor)
+    if held:
+        intervals = held_to_cmc_figures(intervals, float(budget.floor))
+    decimals = {key: interval_decimals(iv.low, iv.high) for key, iv in intervals.items()}
+    alone = without_interval_decimals(passes_scatter(result)[0],
+                                      readings_step(result.raw_error_arcsec))
+    return {key: alone for key, value in result.iso230.figures.items()
+            if math.isfinite(value) and key not in decimals} | decimals
 
 
 def readings_theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBudget

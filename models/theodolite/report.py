@@ -362,10 +362,9 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
     from models.theodolite.figures import (
         figure_intervals_withheld,
         stated_theodolite_figure_intervals,
-        theodolite_figure_intervals,
+        theodolite_figure_decimals,
         withheld_theodolite_figure_reasons,
     )
-    from models.uncertainty.figure_intervals import held_to_cmc_figures
 
     if result.iso230 is None:
         return []
@@ -374,6 +373,7 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
     # R, R↑, R↓ of two passes: the value as measured, its interval withheld, and why
     alone = withheld_theodolite_figure_reasons(result, budget, stated_u, pair)
     withheld = figure_intervals_withheld(result)
+    decimals = theodolite_figure_decimals(result, budget, stated_u, pair)
     rows = []
     for key, v in result.iso230.figures.items():
         if not math.isfinite(v):
@@ -383,15 +383,14 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
             # to the decimal of the interval its reason quotes, the figure's own scatter, as
             # positioning's (day 68 F5: "R_up 4.24″" beside an interval 0″ … 443″ withheld);
             # the DCC states it at full precision
-            quoted = held_to_cmc_figures(theodolite_figure_intervals(
-                result, budget, stated_u, pair), float(budget.floor)).get(key)
-            d = 2 if quoted is None else interval_decimals(quoted.low, quoted.high)
+            d = decimals[key]
             rows.append((f"ISO 230-2 {key}", Exact(f"{v:.{d}f}\"", float(v)), message(
                 QT_TR_NOOP("no coverage interval: {reason}"), reason=alone[key])))
             continue
-        if iv is None:
+        if iv is None:  # no interval at all: to the decimal its readings support (F5)
             said = withheld is None or any(r[2] for r in rows)  # the reason once
-            rows.append((f"ISO 230-2 {key}", f"{v:.2f}\"", "" if said else message(
+            rows.append((f"ISO 230-2 {key}", Exact(f"{v:.{decimals[key]}f}\"", float(v)),
+                         message(QT_TR_NOOP("no coverage interval")) if said else message(
                 QT_TR_NOOP("no coverage interval: {reason}"), reason=message(withheld))))
             continue
         d = interval_decimals(iv.low, iv.high)  # the interval's half-width's (GUM 7.2.6)
@@ -469,11 +468,23 @@ def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata,
     widens the figures' intervals, and how much of R and A is the theodolite's pointing
     noise (the latter wherever R is evaluated; the others nothing where the passes do not
     determine them)."""
-    from models.theodolite.figures import circle_widening_note, pointing_in_figures_note
+    from models.theodolite.figures import (
+        circle_widening_note,
+        least_passes,
+        pointing_in_figures_note,
+        stated_theodolite_figure_intervals,
+    )
     from models.theodolite.pass_means import decided_on_means
+    from models.uncertainty.wide_intervals import wide_intervals_statement
 
     pointing = pointing_in_figures_note(result)
     said = () if pointing is None else (pointing,)
+    if result.iso230 is not None:  # an upper end far above its figure: why (day 68 F6)
+        wide = wide_intervals_statement(
+            result.iso230.figures, stated_theodolite_figure_intervals(
+                result, budget, stated_reading_uncertainty(metadata)[0],
+                stated_pair_factor(metadata)), least_passes(result), "\"", passes=True)
+        said += () if wide is None else (wide,)
     if not decided_on_means(result):
         return said
     widening = circle_widening_note(result, budget, stated_reading_uncertainty(metadata)[0],

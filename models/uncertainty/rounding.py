@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 __all__ = ["interval_decimals", "interval_ends", "printed_range", "significant_decimals",
-           "uncertainty_decimals"]
+           "uncertainty_decimals", "without_interval_decimals"]
 
 
 def significant_decimals(expanded: float) -> int | None:
@@ -36,6 +36,32 @@ def interval_decimals(low: float, high: float) -> int:
     most two significant digits (GUM 7.2.6, JJF 1059.1): a figure with an interval 4″ wide
     to 0.1″, not 0.001″. Two decimals where the interval has no width."""
     return uncertainty_decimals((high - low) / 2.0)
+
+
+def without_interval_decimals(scatter: float, step: float | None) -> int:
+    """The decimal a figure with no coverage interval at all is printed to (a target
+    approached once, readings alike or entered coarser than they scatter): that which shows
+    the readings' own scatter ``scatter`` (their pooled s) to its first significant digit
+    — a figure made of the readings is known no better than one reading, and how much
+    worse no interval says, so its last digit stands where s's first does — and never
+    finer than the readings' ``step`` as
+    entered (models.readings.resolution.readings_step); the step's alone where the readings
+    show no scatter; three decimals where neither is known. Day review 68 F5: such a figure
+    was printed to 0.001″ beside figures with intervals printed to 1″."""
+    first = significant_decimals(scatter) if math.isfinite(scatter) else None
+    shown = [d for d in (None if first is None else max(0, first - 1), _step_decimals(step))
+             if d is not None]
+    return min(shown) if shown else 3
+
+
+def _step_decimals(step: float | None) -> int | None:
+    """The decimals of readings entered on a grid of ``step`` (0.01 → 2, 0.5 → 1, 2 → 0)."""
+    if step is None or not math.isfinite(step) or step <= 0:
+        return None
+    for decimals in range(7):
+        if abs(step * 10.0 ** decimals - round(step * 10.0 ** decimals)) < 1e-6:
+            return decimals
+    return 6
 
 
 def interval_ends(low: float, high: float, decimals: int) -> tuple[float, float]:

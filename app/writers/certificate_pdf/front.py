@@ -53,7 +53,10 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
         (label(document, "Date of calibration", "\n"), meta.calibration_date),
         (label(document, "Place of calibration", "\n"), _place(meta, _colon(document))),
         (label(document, "Environment", "\n"), _environment(meta)),
-        (label(document, "Readings", "\n"), document.source_name),
+        # on a bilingual certificate in Chinese, then in English, as every line of the
+        # heading (day review 68 F12: English only under "原始记录 Readings")
+        (label(document, "Readings", "\n"),
+         joined(_between("\n", _in_both(document, document.source_name)))),
         *([(label(document, "Instrument output", "\n"),
             f"SHA-256 {document.raw_data_sha256}")] if document.raw_data_sha256 else []),
         # edits, cleared and deleted readings, rows captured again (review 62 F1: a row taken

@@ -9,12 +9,17 @@ from fpdf.enums import TableCellFillMode
 from fpdf.fonts import FontFace
 
 from app.writers.certificate_pdf.fonts import FONT
-from app.writers.certificate_pdf.line_breaks import _wrapmode
+from app.writers.certificate_pdf.line_breaks import _CLOSING, _wrapmode
 from app.writers.certificate_pdf.page import GREY, PageFrame
 from app.writers.certificate_pdf.wording import _both
 from models.certificate.document import Table
 
 HEADER_FILL = (228, 233, 240)
+
+
+def _marks_begin_a_line(text: str) -> bool:
+    """Whether a line after the first of ``text`` begins with a closing mark ("），")."""
+    return any(line[:1] in _CLOSING for line in str(text or "").split("\n")[1:])
 
 
 class TableDrawing(PageFrame):
@@ -36,18 +41,37 @@ class TableDrawing(PageFrame):
         self.set_font(FONT, "", 9)
         rows = [(self.say(key), self.say(value)) for key, value in rows]
         wrapmode = _wrapmode(cell for row in rows for cell in row)
+        sizes = [9.0] * len(rows)
         if wrapmode == "CHAR":
-            rows = [(key, self._cells_wrapped([["", value]], (45, 129), 9, False)[0][1])
-                    for key, value in rows]
+            wrapped = []
+            for i, (key, value) in enumerate(rows):
+                sizes[i], text = self._value_wrapped(value)
+                wrapped.append((key, text))
+            rows = wrapped
+            self.set_font(FONT, "", 9)  # the wrapping leaves its last size selected
         with self.table(col_widths=(45, 129), first_row_as_headings=False, borders_layout="NONE",
                         line_height=4.8, text_align=("LEFT", "LEFT"), padding=(0.6, 1.0),
                         wrapmode=wrapmode) as table:
-            for key, value in rows:
+            for (key, value), size in zip(rows, sizes, strict=True):
                 row = table.row()
                 # a two-line bilingual label is set plain: fpdf2 drops the English line of a
                 # bold cell that falls back to the CJK font (seen in poppler: "No font in show")
                 row.cell(key, style=None if "\n" in key else FontFace(emphasis="BOLD"))
-                row.cell(value or "—")
+                row.cell(value or "—", style=None if size == 9.0 else FontFace(size_pt=size))
+
+    def _value_wrapped(self, value: str) -> tuple[float, str]:
+        """A details value wrapped for its 129 mm column, at 9 pt, or a little smaller where
+        that keeps a word no line holds with the closing marks after it (a SHA-256 and its
+        "），") on one line: at 9 pt the marks began the next line (day review 68 F12; the
+        digest alone fills 125 of the line's 126 mm). The size and the text."""
+        text = self._cells_wrapped([["", value]], (45, 129), 9, False)[0][1]
+        if not value or not _marks_begin_a_line(text):
+            return 9.0, text
+        for size in (8.5, 8.0):
+            smaller = self._cells_wrapped([["", value]], (45, 129), size, False)[0][1]
+            if not _marks_begin_a_line(smaller):
+                return size, smaller
+        return 9.0, text  # no size a reader can read holds them: the marks go down
 
     def data_table(self, t: Table, widths: tuple[float, ...], align: tuple[str, ...],
                    size: float = 8) -> None:

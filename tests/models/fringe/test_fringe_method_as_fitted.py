@@ -104,7 +104,9 @@ def test_the_certificate_says_the_compensation_holds_at_the_samples_only(tmp_pat
     statistics' "After compensation" and "Correction table" rows carry the same words (read
     from the document: a table's cells come back interleaved from pdftotext)."""
     text = _certificate_text(tmp_path, 8, 3, "en", capsys)
-    assert ("The compensated error and the correction table hold " + SAID
+    # the table's own statement (its sha256) says it, in place of a statement of its own
+    # (day review 68 F8, the rest)
+    assert ("and the compensated error and the table hold " + SAID
             + "; sample more finely before loading the table into the encoder.") in text
     assert "the correction table is expected to leave" not in text
     from models.certificate.metadata import CertificateMetadata
