@@ -202,10 +202,6 @@
         <translation>幅值比 {ratio}，正交误差 {quadrature}</translation>
     </message>
     <message>
-        <source>The compensated error and the correction table hold {caveat}; sample more finely before loading the table into the encoder.</source>
-        <translation>补偿后误差和修正表{caveat}；将修正表载入编码器之前，请以更细的间隔采样。</translation>
-    </message>
-    <message>
         <source>samples</source>
         <translation>采样点</translation>
     </message>
@@ -1004,6 +1000,10 @@
         <translation>读数误差（瞄准）</translation>
     </message>
     <message>
+        <source>no coverage interval</source>
+        <translation>无包含区间</translation>
+    </message>
+    <message>
         <source>Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value or a range over the θ, biased high by the scatter, so its interval, that of the true figure (of the true means and standard deviations at each θ and direction as this theodolite reads them: R and A hold its pointing noise), may lie below the value stated. The interval of E, E↑, E↓, M, B and B̄ is a parametric bootstrap of the figure&apos;s error from a model of the axis fitted to the means and standard deviations over the passes (the positioning workbench&apos;s, models/uncertainty/figure_intervals.py), with the set-up model&apos;s error (one curve over θ, drawn as its fit&apos;s covariance correlates it) and the part of the stated theodolite u that the passes&apos; scatter does not show (the circle&apos;s error where it reads that θ, drawn once per θ), the same in every pass and both directions. The intervals of R and A use no bootstrap: they are bounds from each θ&apos;s own readings over the passes, never pooled. The interval of R, R↑ and R↓ is the bounds from each θ&apos;s own standard deviation (chi-square, ν = passes − 1: the upper end the largest θ&apos;s upper bound, the lower end the largest lower bound taken at once over the θ), which hold however the repeatability changes from θ to θ. The interval of A, A↑ and A↓ is the bounds from each θ&apos;s own mean and standard deviation: each end of a θ&apos;s band x̄ ± 2s by its one-sided tolerance bound, from the noncentral t distribution with ν = passes − 1 (Owen 1968; ISO 16269-6); the upper end the largest bound of a band&apos;s top less the smallest bound of a band&apos;s bottom, each at half the tail (the intersection–union bound, Berger 1982), the lower end from every θ&apos;s bounds taken at once (Šidák over the θ and directions, Bonferroni within each); the set-up model&apos;s error enters them at a tenth of the tail, as the largest difference of its errors at two θ. These intervals of R and A are wide at few passes, because each θ&apos;s σ is known only from its own readings (at 3 passes each σ has 2 degrees of freedom), so a specification of R or A may not be decidable. The interval of E, M and A (and E↑, E↓, A↑, A↓) is also widened for a circle error shaped as the curve&apos;s worst, as large as the readings do not exclude (the stated u over the pointing noise&apos;s lower confidence bound, at a quarter of the tail, the widened interval at the rest). The probability stated is the one a simulation study reached where that is lower.</source>
         <extracomment>how the ISO 230-2 figures of a run with passes get their intervals: which figure&apos;s from which method, so that an assessor can reproduce each (models.theodolite.figures; it said A&apos;s was the bootstrap&apos;s: day review 68 F1, F6)</extracomment>
         <translation>多测回各项 ISO 230-2 指标的包含区间：指标是各 θ 上的最大值或极差，受分散影响偏高，因此其区间（真实指标即本经纬仪读出的各 θ 和方向上真实均值与标准偏差的指标的区间：R 和 A 包含其指向噪声）可能位于所给数值之下。E、E↑、E↓、M、B 和 B̄ 的区间由轴系模型对指标误差作参数自助法得到，模型按各测回的均值和标准偏差拟合（定位工作台的方法，models/uncertainty/figure_intervals.py），安装模型的误差（随 θ 变化的一条曲线，按其拟合的协方差相关地抽样）以及所给经纬仪 u 中测回分散性未显示的部分（度盘在该 θ 读数处的误差，在每个 θ 抽取一次）在每个测回和两个方向上相同。R 和 A 的区间不用自助法：它们是由各 θ 自身各测回读数求得的界限，从不合并。R、R↑ 和 R↓ 的区间是由各 θ 自身标准偏差求得的界限（卡方分布，ν = 测回数 − 1：上端为各 θ 上界中的最大值，下端为对所有 θ 同时成立的下界中的最大值），无论重复性在各 θ 之间如何变化均成立。A、A↑ 和 A↓ 的区间是由各 θ 自身均值和标准偏差求得的界限：θ 的带 x̄ ± 2s 的每一端取其单侧容许界限，按自由度 ν = 测回数 − 1 的非中心 t 分布求得（Owen 1968；ISO 16269-6）；上端为各带上端界限中的最大值减去各带下端界限中的最小值，各取一半尾部概率（交-并界限，Berger 1982），下端由所有 θ 的界限同时成立求得（对 θ 和方向用 Šidák，各自内部用 Bonferroni）；安装模型的误差以十分之一的尾部概率计入，取其在两个 θ 上误差之差的最大值。R 和 A 的这些区间在测回少时很宽，因为每个 θ 的 σ 只能由其自身读数得知（3 个测回时每个 σ 只有 2 个自由度），因此对 R 或 A 的规范可能无法判定。E、M 和 A（以及 E↑、E↓、A↑、A↓）的区间还按形状最不利的度盘误差加宽，其大小取读数不能排除的最大值（所给 u 超出指向噪声置信下限的部分，取尾部概率的四分之一，加宽后的区间取其余部分）。所给概率在仿真研究达到的概率较低时取后者。</translation>
@@ -1292,6 +1292,10 @@
         <translation>误差（估计相位）</translation>
     </message>
     <message>
+        <source>after compensation, at the sampled phases only</source>
+        <translation>补偿后（仅在采样相位上）</translation>
+    </message>
+    <message>
         <source>Interpolation error before and after compensation</source>
         <translation>补偿前后的细分误差</translation>
     </message>
@@ -1328,8 +1332,16 @@
         <translation>相位 θ (°)</translation>
     </message>
     <message>
+        <source>compensated ± U, at the sampled phases only</source>
+        <translation>补偿后 ± U（仅在采样相位上）</translation>
+    </message>
+    <message>
         <source>compensated ± U</source>
         <translation>补偿后 ± U</translation>
+    </message>
+    <message>
+        <source>compensated, at the sampled phases only</source>
+        <translation>补偿后（仅在采样相位上）</translation>
     </message>
     <message>
         <source>phase within the period (°); the motion stood or turned back</source>
@@ -1787,6 +1799,10 @@
         <translation>{path}：{reason}。其他内容均未改变。</translation>
     </message>
     <message>
+        <source>{reason}. Nothing else was changed.</source>
+        <translation>{reason}。其他内容均未改变。</translation>
+    </message>
+    <message>
         <source>SPECIMEN {number} written to {path} (training): watermarked SPECIMEN, not a certificate, and recorded in no register</source>
         <translation>样本 {number} 已写入 {path}（培训）：带“样本”水印，不是证书，未记录在任何登记册中</translation>
     </message>
@@ -1841,6 +1857,10 @@
     <message>
         <source>{path}: {reason}. No results were written.</source>
         <translation>{path}：{reason}。未写出任何结果。</translation>
+    </message>
+    <message>
+        <source>{reason}. No results were written.</source>
+        <translation>{reason}。未写出任何结果。</translation>
     </message>
     <message>
         <source>Results written to {path}</source>
@@ -2229,6 +2249,23 @@ Yes: replace it with this window&apos;s project. No: save this window&apos;s pro
         <translation>缺少以下信息：{missing}。PDF 将标记为草稿，不是证书，也不会记录在登记册中。仍要导出草稿吗？</translation>
     </message>
     <message>
+        <source>Serial {serial} is in no certificate of the register, but looks like these serials (the characters that differ in brackets):</source>
+        <extracomment>the earlier serials a look-alike question lists, one a line; the others are counted</extracomment>
+        <translation>序列号 {serial} 不在登记册的任何证书中，但形似以下序列号（不同的字符在方括号中）：</translation>
+    </message>
+    <message>
+        <source>• {serial} ({numbers})</source>
+        <translation>• {serial}（{numbers}）</translation>
+    </message>
+    <message>
+        <source>• and {count} more</source>
+        <translation>• 另有 {count} 个</translation>
+    </message>
+    <message>
+        <source>{differences}. If it is one of those items with its serial mistyped, a certificate under this serial would split its history and due date</source>
+        <translation>{differences}。如果它是其中一件被校准对象而序列号输错了，以此序列号签发的证书会把其历史和有效期分开</translation>
+    </message>
+    <message>
         <source>These details are missing: {missing}. The PDF will be marked DRAFT, is not a test report, and nothing is recorded in the register. Export the draft anyway?</source>
         <translation>缺少以下信息：{missing}。PDF 将标记为草稿，不是检测报告，也不会记录在登记册中。仍要导出草稿吗？</translation>
     </message>
@@ -2303,6 +2340,10 @@ Is this item another manufacturer&apos;s than that of {numbers}? Yes: issue it; 
         <translation>{reason}。
 
 该被校件是否属于与 {numbers} 不同的另一制造商？是：签发，登记册会记录这是您的说明。否：不签发任何证书（要更正 {numbers}，请在 文件 › 证书登记册 中修订或替代它）。</translation>
+    </message>
+    <message>
+        <source>Is {serial} a different item from each of them?</source>
+        <translation>{serial} 是不同于以上每一件的另一件被校准对象吗？</translation>
     </message>
     <message>
         <source>Another item?</source>
@@ -5488,6 +5529,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>参考测量系统</translation>
     </message>
     <message>
+        <source> (no coverage interval: {figures})</source>
+        <translation>（无包含区间：{figures}）</translation>
+    </message>
+    <message>
         <source> — fewer than 5 runs: flagged</source>
         <translation> — 少于 5 次测量：已标注</translation>
     </message>
@@ -6638,7 +6683,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>the number scheme &apos;{scheme}&apos; has no {{seq}}: the register cannot number certificates with it</source>
-        <extracomment>the register already recorded that this PDF&apos;s record is missing (the &quot;missing&quot; entry at place + 1) a record elsewhere in the chain has this PDF&apos;s SHA-256 (the head printed is not its)</extracomment>
+        <extracomment>the serial asked about and the serials it looks like, each once with the certificates of it, in the register&apos;s order: a window lists them one a line (day review 68 F11); () where the question is not about a serial&apos;s characters the register already recorded that this PDF&apos;s record is missing (the &quot;missing&quot; entry at place + 1) a record elsewhere in the chain has this PDF&apos;s SHA-256 (the head printed is not its)</extracomment>
         <translation>编号方案 &apos;{scheme}&apos; 中没有 {{seq}}：登记册无法用它为证书编号</translation>
     </message>
     <message>
@@ -8522,6 +8567,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>as-found interpolation error, its mean removed</source>
         <translation>补偿前细分误差，已扣除其平均值</translation>
+    </message>
+    <message>
+        <source>As left: the lab states that the correction table with sha256 {sha} was loaded into the encoder; the compensated error and its U are the item as left {caveat}.</source>
+        <translation>交付状态：实验室声明已将 sha256 为 {sha} 的修正表载入编码器；补偿后误差及其 U 为被校对象交付时的状态，{caveat}。</translation>
+    </message>
+    <message>
+        <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}), and the compensated error and the table hold {caveat}; sample more finely before loading the table into the encoder.</source>
+        <translation>符合性按补偿前的细分误差判定。除非修正表已载入被校对象，补偿后误差不是被校对象的误差（修正表 sha256 {sha}）；补偿后误差和修正表{caveat}；将修正表载入编码器之前，请以更细的间隔采样。</translation>
     </message>
     <message>
         <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
@@ -11230,6 +11283,10 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <translation>圆环：幅值容差带（绿色为内带，琥珀色为外带）</translation>
     </message>
     <message>
+        <source>Band: green inside, amber outer</source>
+        <translation>容差带：绿色为内，琥珀色为外</translation>
+    </message>
+    <message>
         <source>u sin (V)</source>
         <translation>u sin (V)</translation>
     </message>
@@ -11839,6 +11896,20 @@ Replace it?</source>
     <message>
         <source>two passes give each θ&apos;s repeatability one degree of freedom: the interval from the readings alone would be {low} … {high} (a certificate adds its stated standards&apos; u); measure at least 3 passes each way</source>
         <translation>两个测回只给各 θ 的重复性一个自由度：仅由读数得出的包含区间将为 {low} … {high}（证书还计入所列标准器的 u）；每个方向至少测量 3 个测回</translation>
+    </message>
+    <message>
+        <source>At {runs} runs the upper end of the coverage interval lies far above the figure for {figures}: each target&apos;s σ is known only from its own {runs} readings ({nu} degrees of freedom) and may lie far above its s. A specification of such a figure conforms only when it is at least the upper end, so no specification that a figure of this size would be given can be decided at this number of runs; more runs narrow the interval.</source>
+        <extracomment>an upper end at least this many times the figure is &quot;far above&quot; it: a specification that wide is not one a figure of this size is given (a figure&apos;s own scatter at the 5 runs ISO 230-2 asks for takes the upper end to about 2–2.7 times: A 22″ … 44″, P 24″ … 64″ in the bundled sample) the figures made of each target&apos;s standard deviation, whose intervals are its bounds</extracomment>
+        <translation>测量 {runs} 次时，以下指标的包含区间上端远高于指标值：{figures}。各目标位置的 σ 仅由其自身的 {runs} 个读数得出（自由度 {nu}），可能远大于其 s。此类指标的技术要求只有不小于区间上端时才判定为符合，因此在此测量次数下，对这样大小的指标所规定的技术要求均无法作出判定；增加测量次数可使区间变窄。</translation>
+    </message>
+    <message>
+        <source>At {runs} passes the upper end of the coverage interval lies far above the figure for {figures}: each θ&apos;s σ is known only from its own {runs} readings ({nu} degrees of freedom) and may lie far above its s. A specification of such a figure conforms only when it is at least the upper end, so no specification that a figure of this size would be given can be decided at this number of passes; more passes narrow the interval.</source>
+        <translation>测回 {runs} 次时，以下指标的包含区间上端远高于指标值：{figures}。各 θ 的 σ 仅由其自身的 {runs} 个读数得出（自由度 {nu}），可能远大于其 s。此类指标的技术要求只有不小于区间上端时才判定为符合，因此在此测回数下，对这样大小的指标所规定的技术要求均无法作出判定；增加测回数可使区间变窄。</translation>
+    </message>
+    <message>
+        <source>{figure} {value} (upper end {high})</source>
+        <extracomment>one figure in the list: &quot;A 20″ (upper end 107″)&quot;</extracomment>
+        <translation>{figure} {value}（区间上端 {high}）</translation>
     </message>
 </context>
 </TS>
