@@ -79,3 +79,34 @@ def test_a_standard_stated_per_angle_covers_each_point_at_95_percent(capsys, tmp
         covered += int(np.sum(np.abs(error[points]) <= u[points]))
         total += int(points.sum())
     assert 0.92 <= covered / total <= 0.98, (covered, total)
+
+
+def test_the_budget_says_a_per_angle_standard_enters_each_reading_at_u_over_root_2(tmp_path):
+    """The reading error's note (and, with passes, the circle part's) says why the u in it is
+    the stated figure over √2 where the standard is stated per angle; per reading it says
+    nothing of it."""
+    from models.certificate.metadata import CertificateMetadata
+    from models.theodolite.pass_means import pass_means_budget
+    from models.theodolite.report import (
+        READING_INPUT,
+        stated_reading_uncertainty,
+        theodolite_budget,
+    )
+    from tests.models.theodolite.test_theodolite_figures import _analysed
+
+    record = tmp_path / "r.csv"
+    passes_record(record, np.random.default_rng(3), 3, SIGMA, REVERSAL, circle=U_C)
+    result = _analysed(record)
+    for per in ("angle", "reading"):
+        metadata = CertificateMetadata.from_dict({"standards": [{
+            "description": "Autocollimating theodolite", "uncertainty": 2.0,
+            "uncertainty_unit": "arcsec", "basis": "u", "applies_to": per}]})
+        u = stated_reading_uncertainty(metadata)[0]
+        assert u == pytest.approx(2.0 / math.sqrt(2.0) if per == "angle" else 2.0)
+        notes = [str(c.note) for c in theodolite_budget(result, metadata).components
+                 if str(c.name) == READING_INPUT]
+        notes += [str(c.note) for c in pass_means_budget(result, metadata, u).components
+                  if str(c.note).startswith("√(u² − s²)")]
+        assert len(notes) == 2
+        for note in notes:
+            assert ("u/√2" in note) == (per == "angle"), note
