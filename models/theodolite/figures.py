@@ -97,7 +97,8 @@ from models.uncertainty.undetermined_repeatability import (
     undetermined_repeatability,
 )
 
-__all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "circle_part", "circle_part_not_excluded",
+__all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "PER_ANGLE_NOTE", "circle_part",
+           "circle_part_not_excluded",
            "figure_intervals_withheld",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
            "pointing_in_figures", "pointing_in_figures_note", "pointing_per_reading",
@@ -260,6 +261,13 @@ def pointing_in_figures_note(result: TheodoliteResult) -> str | None:
 #: every case of the study of #39 (σ 0.1–1.5″, u_c 0–0.8″, ν 22–328; 0.4–0.5 the least where
 #: the circle hides under the pointing noise, 0.1 where it stands above it)
 CIRCLE_NUISANCE_SHARE = 0.25
+
+
+#: a budget note where a standard is stated for any angle between two readings: the stated
+#: u per reading is then its figure over √2 (models.theodolite.report.stated_reading_uncertainty)
+PER_ANGLE_NOTE = QT_TR_NOOP("{note}; a standard stated for any angle between two readings "
+                            "enters each reading at u/√2 (an angle holds two readings' "
+                            "errors), so once at each point")
 
 
 def circle_part(result: TheodoliteResult, stated_u: float) -> float:

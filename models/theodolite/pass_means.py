@@ -43,6 +43,7 @@ from models.certificate.document import resolution_component
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite.figures import (
+    PER_ANGLE_NOTE,
     circle_part,
     circle_part_not_excluded,
     figure_intervals_withheld,
@@ -170,8 +171,6 @@ def pass_means_budget(result: TheodoliteResult, metadata: CertificateMetadata,
                        s=f"{pointing_per_reading(result):.3f}\"")
         if any(std.applies_to == "angle" and std.uncertainty is not None
                for std in metadata.standards):
-            from models.theodolite.report import PER_ANGLE_NOTE  # report imports this module
-
             note = message(PER_ANGLE_NOTE, note=note)
         components.append(BudgetComponent(CIRCLE_INPUT, "B", "normal", circle, 1.0, 1.0,
                                           math.inf, note, in_curve=True))

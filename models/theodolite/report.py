@@ -89,7 +89,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite import KEY, TITLE
-from models.theodolite.figures import MODEL_INPUT, pooled_repeats
+from models.theodolite.figures import MODEL_INPUT, PER_ANGLE_NOTE, pooled_repeats
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import (
@@ -160,12 +160,6 @@ def _point_names(theta_deg: np.ndarray) -> list[str]:
 #: it was taken whole per reading, and a point, the difference of its reading and θ₀'s,
 #: got √2 u — an audit's per-point U 2.48 times what the errors needed, coverage 100 %)
 PER_ANGLE_READING_SHARE = 1.0 / math.sqrt(2.0)
-
-
-#: the reading error's note where a standard is stated for any angle between two readings
-PER_ANGLE_NOTE = QT_TR_NOOP("{note}; a standard stated for any angle between two readings "
-                            "enters each reading at u/√2 (an angle holds two readings' "
-                            "errors), so once at each point")
 
 
 def _per_reading(std) -> float:
