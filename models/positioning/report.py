@@ -360,6 +360,11 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
             budget.probability, u_b,
             readings_seed(result.targets, result.directions, result.deviations),
             figures=figures, pair_u=pair,
+            # the reference's errors within their U at every target, whatever their shape: a
+            # bias of at most k · pair on a range, the readings' interval at the whole tail
+            # moved out by it (as the theodolite's circle error; #39's widths: it was a union
+            # bound, z(1 − tail/2) · pair on the interval at half the tail)
+            pair_envelope=True,
             # the bootstrap without the Type B inputs, drawn once for the window's intervals
             # and the certificate's (which unites them with its own)
             cache=result.__dict__.setdefault("_figure_bootstraps", {}))
@@ -637,11 +642,13 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "where "
         "the reference is better than its certificate states the range holds less of them; "
         "and, as the reference's errors need not be independent from target to target (a "
-        "once-a-turn error lowers the crests and raises the troughs), with that interval at "
-        "half the tail widened each way by z · 2 max u, the largest difference of two targets' "
-        "errors whatever their correlation (u of those inputs but the roundings, which are "
-        "independent from target to target; z · u for a standard whose U is stated for any "
-        "angle between two readings, as that difference is one more such angle). The truth it "
+        "once-a-turn error lowers the crests and raises the troughs), with that interval "
+        "moved out each way by k · 2 max u (k the two-sided normal factor of the probability, "
+        "2 at 95.45 %), the largest range errors within their U can give a largest value less "
+        "a smallest one, a bias and not a scatter, whatever their correlation (u of those "
+        "inputs but the roundings, which are independent from target to target; k · u for a "
+        "standard whose U is stated for any angle between two readings, as the difference of "
+        "two targets' errors is one more such angle). The truth it "
         "covers is the figure of "
         "the axis's true mean deviations and true standard deviations (R = 4σ at the worst "
         "target). The interval may lie below the measured value. Its probability is the one "

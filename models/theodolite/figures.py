@@ -34,7 +34,8 @@ inputs that are one value at a θ, with the readings without them), fed with:
   The circle's error is taken within its U at the probability of the interval at every θ,
   whatever its shape (the statement taken at its U: ±2u_c per reading at 95.45 %), so it
   moves E, M and A (and E↑, E↓, A↑, A↓: a largest value less a smallest one) by at most its
-  range, k · pair (k · 2u_c per reading, k · u_c for a theodolite stated for any angle): a
+  range, k · pair (k · 2u_c per reading, k · √2 u_c for a theodolite stated for any angle,
+  u_c then of each reading's share u/√2 of the angle's u, #39): a
   bias, not a scatter. The readings' own interval at the whole rest of the tail each side,
   widened by that, holds at the probability printed (models.uncertainty.figure_intervals,
   ``pair_envelope``). Until 0.8.15 the circle was taken as a normal error and the widening
@@ -97,8 +98,9 @@ from models.uncertainty.undetermined_repeatability import (
     undetermined_repeatability,
 )
 
-__all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "circle_part", "circle_part_not_excluded",
-           "figure_intervals_withheld", "least_passes", "theodolite_figure_decimals",
+__all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "PER_ANGLE_NOTE", "circle_part",
+           "circle_part_not_excluded", "figure_intervals_withheld", "least_passes",
+           "theodolite_figure_decimals",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
            "pointing_in_figures", "pointing_in_figures_note", "pointing_per_reading",
            "pooled_repeats", "readings_coarse", "readings_theodolite_figure_intervals",
@@ -262,6 +264,13 @@ def pointing_in_figures_note(result: TheodoliteResult) -> str | None:
 CIRCLE_NUISANCE_SHARE = 0.25
 
 
+#: a budget note where a standard is stated for any angle between two readings: the stated
+#: u per reading is then its figure over √2 (models.theodolite.report.stated_reading_uncertainty)
+PER_ANGLE_NOTE = QT_TR_NOOP("{note}; a standard stated for any angle between two readings "
+                            "enters each reading at u/√2 (an angle holds two readings' "
+                            "errors), so once at each point")
+
+
 def circle_part(result: TheodoliteResult, stated_u: float) -> float:
     """The part of the stated u per reading that the readings do not show to scatter, the
     circle's error at the position it reads for a θ, the same in every pass:
@@ -278,7 +287,8 @@ def circle_part_not_excluded(result: TheodoliteResult, stated_u: float,
     (models.uncertainty.stated_excess.scatter_lower_bound, σ ≥ s_lo at 1 − γ(1 − p)); 0
     where u is at or below s_lo, or no u is stated. It sizes the figures' widening for a
     circle error shaped as the curve's worst (k · 2 u each way, k the two-sided normal
-    factor of ``probability``; k · u for a theodolite stated for any angle,
+    factor of ``probability``; k · √2 u for a theodolite stated for any angle, u then each
+    reading's share u/√2,
     models.theodolite.report.stated_pair_factor), whose interval is held at the rest of the
     tail. :func:`circle_part` (the point estimate) stays the draw at each θ
     and the budgets'."""
@@ -311,7 +321,8 @@ def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBud
     :func:`figure_intervals_withheld` says why, or when the run has no figures.
     ``pair_factor``: how many times its own u the difference of the circle's errors at two
     θ can have as its standard deviation (models.theodolite.report.stated_pair_factor: 2 for
-    a theodolite stated per reading, 1 for one stated for any angle between two readings)."""
+    a theodolite stated per reading, √2 for one stated for any angle between two readings,
+    whose ``stated_u`` is each reading's share u/√2)."""
     present = _directions(result)
     if not present or figure_intervals_withheld(result) is not None:
         return {}

@@ -43,6 +43,7 @@ from models.certificate.document import resolution_component
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite.figures import (
+    PER_ANGLE_NOTE,
     circle_part,
     circle_part_not_excluded,
     figure_intervals_withheld,
@@ -161,16 +162,18 @@ def pass_means_budget(result: TheodoliteResult, metadata: CertificateMetadata,
                         common=True, dof_group="set-up model")
         for k, mode in enumerate(modes)]
     if circle > 0.0:
-        components.append(BudgetComponent(
-            CIRCLE_INPUT, "B", "normal", circle, 1.0, 1.0, math.inf,
-            message(QT_TR_NOOP("√(u² − s²) = {circle}: the stated u = {u} per reading less "
-                               "the theodolite's pointing noise the readings show, s = {s} "
-                               "(the smaller of the passes' scatter and the vertical readings' "
-                               "about the fit, or the repeats' at a point), the same at a θ in "
-                               "every pass"),
-                    circle=f"{circle:.3f}\"", u=f"{stated_u:.3f}\"",
-                    s=f"{pointing_per_reading(result):.3f}\""),
-            in_curve=True))
+        note = message(QT_TR_NOOP("√(u² − s²) = {circle}: the stated u = {u} per reading less "
+                                  "the theodolite's pointing noise the readings show, s = {s} "
+                                  "(the smaller of the passes' scatter and the vertical "
+                                  "readings' about the fit, or the repeats' at a point), the "
+                                  "same at a θ in every pass"),
+                       circle=f"{circle:.3f}\"", u=f"{stated_u:.3f}\"",
+                       s=f"{pointing_per_reading(result):.3f}\"")
+        if any(std.applies_to == "angle" and std.uncertainty is not None
+               for std in metadata.standards):
+            note = message(PER_ANGLE_NOTE, note=note)
+        components.append(BudgetComponent(CIRCLE_INPUT, "B", "normal", circle, 1.0, 1.0,
+                                          math.inf, note, in_curve=True))
     components += resolution_component(metadata, math.sqrt(2.0))
     return UncertaintyBudget(tuple(components), points, metadata.coverage_probability,
                              floor=cmc_of(settings, "cmc_arcsec"))

@@ -89,7 +89,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite import KEY, TITLE
-from models.theodolite.figures import MODEL_INPUT, pooled_repeats
+from models.theodolite.figures import MODEL_INPUT, PER_ANGLE_NOTE, pooled_repeats
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import (
@@ -155,34 +155,44 @@ def _point_names(theta_deg: np.ndarray) -> list[str]:
             for i, t in enumerate(shown)]
 
 
+#: a standard stated for any angle between two readings (``applies_to`` "angle"): its u is
+#: that of one angle, the difference of two readings, so each reading's share is u/√2 (#39:
+#: it was taken whole per reading, and a point, the difference of its reading and θ₀'s,
+#: got √2 u — an audit's per-point U 2.48 times what the errors needed, coverage 100 %)
+PER_ANGLE_READING_SHARE = 1.0 / math.sqrt(2.0)
+
+
+def _per_reading(std) -> float:
+    """A stated standard's u as one reading's (arcsec): its own per reading, u/√2 for one
+    stated for any angle between two readings (:data:`PER_ANGLE_READING_SHARE`)."""
+    divisor, _ = divisor_for_basis(std.basis)
+    u = std.uncertainty_in("arcsec") / divisor
+    return u * PER_ANGLE_READING_SHARE if std.applies_to == "angle" else u
+
+
 def stated_reading_uncertainty(metadata: CertificateMetadata) -> tuple[float, list]:
     """u_std, the root sum of squares of the stated standards' per-reading standard
-    uncertainties (arcsec), and the standards that state one."""
+    uncertainties (arcsec; one stated for any angle between two readings enters at u/√2,
+    :func:`_per_reading`), and the standards that state one. A point's error is the
+    difference of two readings (the point's and θ₀'s), so a standard stated per angle counts
+    once at each point, √2 · u/√2 = u, and between two points (an angle it measured) u."""
     stated = [std for std in metadata.standards if std.uncertainty is not None]
-    u2 = 0.0
-    for std in stated:
-        divisor, _ = divisor_for_basis(std.basis)
-        u2 += (std.uncertainty_in("arcsec") / divisor) ** 2
-    return math.sqrt(u2), stated
+    return math.sqrt(sum(_per_reading(std) ** 2 for std in stated)), stated
 
 
 def stated_pair_factor(metadata: CertificateMetadata) -> float:
     """How many times the stated u per reading (:func:`stated_reading_uncertainty`) the
     difference of the stated standards' errors at two θ can have as its standard
     deviation, whatever their correlation from θ to θ: 2 for a standard stated for each
-    reading (its errors at two θ may be opposite), 1 for one stated for any angle between two
-    readings (ReferenceStandard.applies_to "angle": that difference is one more angle it
-    measured, within its own u), the standards in quadrature (independent of one another),
-    as the positioning workbench's ``pair_u`` (models.positioning.report); 2 with none. It
-    sizes the figures' widening for a circle error shaped as the curve's worst
-    (models.theodolite.figures.theodolite_figure_intervals)."""
-    parts = []
-    for std in metadata.standards:
-        if std.uncertainty is None:
-            continue
-        divisor, _ = divisor_for_basis(std.basis)
-        parts.append((std.uncertainty_in("arcsec") / divisor,
-                      1.0 if std.applies_to == "angle" else 2.0))
+    reading (its errors at two θ may be opposite), √2 for one stated for any angle between
+    two readings (ReferenceStandard.applies_to "angle": that difference is one more angle it
+    measured, within its own u, √2 times its per-reading share u/√2), the standards in
+    quadrature (independent of one another), as the positioning workbench's ``pair_u``
+    (models.positioning.report); 2 with none. It sizes the figures' widening for a circle
+    error shaped as the curve's worst (models.theodolite.figures
+    .theodolite_figure_intervals)."""
+    parts = [(_per_reading(std), math.sqrt(2.0) if std.applies_to == "angle" else 2.0)
+             for std in metadata.standards if std.uncertainty is not None]
     u2 = sum(u**2 for u, _ in parts)
     if not u2 > 0.0:
         return 2.0
@@ -272,9 +282,12 @@ def reading_error_components(result: TheodoliteResult,
     u_mean = math.hypot(circle, s_rep)
     if u_mean > s and s_rep == 0.0:  # one reading a point (or n equal ones): the standard
         governs, evaluation, nu = "standard", "B", math.inf
-        if len(stated) == 1:  # its own figure and distribution
+        if len(stated) == 1:  # its own figure and distribution (per reading: u/√2 of
+            # one stated for any angle, an angle being two readings)
             value = stated[0].uncertainty_in("arcsec")
             divisor, distribution = divisor_for_basis(stated[0].basis)
+            if stated[0].applies_to == "angle":
+                value *= PER_ANGLE_READING_SHARE
         else:
             value, divisor, distribution = u_std, 1.0, "normal"
     elif u_mean > s and circle == 0.0:  # no standard, or one the repeats' scatter shows whole
@@ -288,6 +301,8 @@ def reading_error_components(result: TheodoliteResult,
         governs, evaluation, nu, value, divisor, distribution = (
             "scatter", "A", float(dof), s, 1.0, "normal")
     note = _reading_error_notes(result, s, dof, u_std, bool(stated), governs, nu, pooled)
+    if any(std.applies_to == "angle" for std in stated):
+        note = message(PER_ANGLE_NOTE, note=note)
     own = (QT_TR_NOOP("{governs}; the point's own reading, one value per point")
            if pooled is None else
            QT_TR_NOOP("{governs}; the point's own mean, one value per point"))

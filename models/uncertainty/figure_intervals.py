@@ -481,7 +481,12 @@ RANGE_FIGURES = frozenset({"E", "E_up", "E_down"})
 #: correlation; the interval is also united with the one without them at half the tail,
 #: widened by z(1 − tail/2) · 2 max u each way (a union bound: it holds at 1 − tail). A
 #: reference whose U is stated for any angle between two readings (applies_to "angle") has
-#: that difference within its own u: 1 × u, not 2 × (``pair_u``).
+#: that difference within its own u: 1 × u, not 2 × (``pair_u``). The positioning workbench
+#: now takes them within their U (``pair_envelope``, as the theodolite's circle error, #39's
+#: widths): the interval without them at the whole tail moved out by k · pair, E's, M's and
+#: the decided half range's 0.88–0.95 of the union bound's width, A's 0.80–0.83, every figure
+#: still at its floor in 8 cells of 30 runs (scale, constant, per target, once a turn, the
+#: curve's own shape at U against and with it; per angle and per reading).
 TYPE_B_FIGURES = frozenset({"E", "E_up", "E_down", "M", "Pa", "A", "A_up", "A_down", "P"})
 
 #: the grid and the most EM steps of the true means' distribution (:func:`_ensemble`)

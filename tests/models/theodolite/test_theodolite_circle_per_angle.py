@@ -44,9 +44,10 @@ def test_stated_for_any_angle_the_circle_widening_is_u_not_2u(capsys, tmp_path):
     """The same readings (a once-a-turn circle error of 0.4″ under 0.15″ pointing, 3
     passes), analysed with the theodolite's u per reading and per angle: E's upper end
     (the circle's widening k · pair_u above the readings' own interval at the rest of the
-    tail: the circle within its U) comes down by k · u_c (k = 2 at p = 95.45 %, u_c the
-    largest part of u the readings do not exclude, models.theodolite.figures
-    .circle_part_not_excluded), and so do M's and A's; the decided half range's, united
+    tail: the circle within its U) comes down from k · 2u_c to k · √2 u_c′ (k = 2 at
+    p = 95.45 %, u_c the largest part of u the readings do not exclude, models.theodolite
+    .figures.circle_part_not_excluded, u_c′ that of each reading's share u/√2 of an angle's
+    u: the pointing of both readings taken out, #39), and so do M's and A's; the decided half range's, united
     with E's halved, by half that. Before, the *Per* was not read: both the same (pair_u =
     2 u_c always); until #39's widths, z(1 − tail/2) · pair_u, tail = (1 − γ)(1 − p)/2."""
     from models.theodolite.figures import circle_part_not_excluded
@@ -58,20 +59,29 @@ def test_stated_for_any_angle_the_circle_widening_is_u_not_2u(capsys, tmp_path):
                                                                          record, "angle")
     not_excluded = circle_part_not_excluded(_analysed(record), STATED, 0.9545)
     assert U_C - 0.05 < not_excluded < STATED  # the circle's part, not excluded
+    # per angle, each reading's share of u is u/√2 (an angle is two readings): the part not
+    # excluded of that, √2 times it between two θ (#39: u itself, the pointing counted once)
+    per_angle = math.sqrt(2.0) * circle_part_not_excluded(_analysed(record),
+                                                          STATED / math.sqrt(2.0), 0.9545)
+    assert 0.0 < per_angle < not_excluded
     z = float(ndtri(0.5 * (1.0 + 0.9545)))  # k: the two-sided normal factor
+    less = z * (2.0 * not_excluded - per_angle)
     for key in ("E", "M", "A"):
         r, a = reading["iso230_2_figures"][key], angle["iso230_2_figures"][key]
         assert r["value"] == a["value"]
-        assert r["interval_high"] - a["interval_high"] == pytest.approx(z * not_excluded, rel=1e-3)
+        # the circle drawn at each θ is now smaller per angle too (its u/√2 over the
+        # pointing): the bootstrap's own interval moves a little with it (E, M: 0.4 %, 4 %)
+        assert r["interval_high"] - a["interval_high"] == pytest.approx(less, rel=0.05)
         width_r = r["interval_high"] - r["interval_low"]
         width_a = a["interval_high"] - a["interval_low"]
-        assert width_a <= width_r - 0.999 * z * not_excluded, key  # narrower by at least that
+        assert width_a <= width_r - 0.99 * less, key  # narrower by at least that
     # B does not see the circle (the same at a θ both ways): its interval unchanged
     assert reading["iso230_2_figures"]["B"] == angle["iso230_2_figures"]["B"]
     dr, da = reading["decided_quantity"], angle["decided_quantity"]
-    assert dr["value"] == da["value"]
-    assert dr["interval_high"] - da["interval_high"] == pytest.approx(0.5 * z * not_excluded,
-                                                                      rel=1e-3)
+    # the decided value takes off the excess of the noise the budget carries: less of the
+    # circle's per angle, so a little less taken off
+    assert dr["value"] <= da["value"] <= dr["value"] + 0.02
+    assert dr["interval_high"] - da["interval_high"] == pytest.approx(0.5 * less, rel=0.05)
 
 
 @pytest.mark.slow

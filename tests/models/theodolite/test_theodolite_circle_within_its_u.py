@@ -42,17 +42,20 @@ def _widening(note: str) -> tuple[float, float, float]:
     return float(found[1]), float(found[2]), float(found[3])
 
 
-@pytest.mark.parametrize("per, pair_factor", [("reading", 2.0), ("angle", 1.0)])
+@pytest.mark.parametrize("per, pair_factor", [("reading", 2.0), ("angle", math.sqrt(2.0))])
 def test_the_widening_is_the_largest_range_a_circle_error_within_its_u_can_have(
         capsys, tmp_path, per, pair_factor):
-    """A theodolite stated at exactly its pointing noise (0.5″, no circle error, 2 passes
-    over 11 θ): the widening the figures' note states is the range of a circle error within
-    its U at 95.45 % at every θ, 2 · 2u_c per reading and 2 · u_c per angle (u_c the part
-    not excluded, as printed). Before: z(1 − tail′/2) · pair, 2.39 · 2u_c and 2.39 · u_c."""
+    """A theodolite stated at exactly its pointing noise (0.5″ per reading, or 0.5·√2″ for
+    any angle, two readings; no circle error, 2 passes over 11 θ): the widening the figures'
+    note states is the range of a circle error within its U at 95.45 % at every θ, 2 · 2u_c
+    per reading and 2 · √2 u_c per angle (u_c the part not excluded of a reading's share,
+    as printed; #39: an angle's u is two readings'). Before: z(1 − tail′/2) · pair, 2.39 ·
+    2u_c and 2.39 · u_c."""
     record = tmp_path / "r.csv"
     passes_record(record, np.random.default_rng(7), 2, 0.5, 0.6, curve="smooth",
                   theta=np.linspace(-20.0, 20.0, 11))
-    note = _json(capsys, tmp_path, record, 0.5, per)["iso230_2_figures_note"]
+    stated = 0.5 if per == "reading" else 0.5 * math.sqrt(2.0)
+    note = _json(capsys, tmp_path, record, stated, per)["iso230_2_figures_note"]
     shift, circle, pair = _widening(note)
     assert circle > 0.1  # a circle error of that size not excluded by 22 degrees of freedom
     assert pair == pytest.approx(pair_factor * circle, abs=2e-3)
