@@ -9,7 +9,8 @@ angle. The shaft (the item: an encoder with a smooth error curve) is stopped wit
 one unknown ρ a run, reads the normal's azimuth and elevation with noise σ each, the encoder
 with noise ``sigma_enc``. Its zero: one offset a set, drawn N(0, ``jump_sd``) at the start of
 every set after the first ("jumps", constant within the set, so every closure is within its
-limit), and/or a steady drift ``rate`` per reading over the whole test. A set reads its faces
+limit; ``offsets`` says how the sets' offsets relate), and/or a steady drift ``rate`` per
+reading over the whole test. A set reads its faces
 forward, or reverse from face 1, then face 1 again (the closure).
 
 The truth: the encoder's error at faces 1…n against face 1, and half its peak-to-peak; the
@@ -44,6 +45,10 @@ class ZeroJumpRig:
     sigma: float = 0.1  # autocollimator x and y noise, a reading (″)
     sigma_enc: float = 0.1  # the encoder's own reading noise (″)
     jump_sd: float = 0.0  # the zero's offset at the start of each set after the first (″)
+    # how the sets' offsets relate: "from_first" each later set's N(0, jump_sd) about set 1's
+    # zero; "walk" each later set's jump added to the set before's (the zero does not come
+    # back); "each" every set's own N(0, jump_sd), set 1's too (one zero about which all scatter)
+    offsets: str = "from_first"
     rate: float = 0.0  # the zero's steady drift per reading (″)
     curve_rms: float = 0.8  # the encoder's error curve (4 harmonics), rms (″)
     tilt_arcsec: float = 150.0
@@ -71,11 +76,12 @@ class ZeroJumpRig:
         seat = _turn_z(towards) @ _turn_y(self.tilt_arcsec * ARCSEC) @ _turn_z(-towards)
         rho = rng.uniform(-1.0, 1.0) * self.roll_arcmin * 60.0 * ARCSEC
         enc_zero = rng.uniform(0.0, 360.0)
-        lines, t = [HEADER], 0
+        lines, t, offset = [HEADER], 0, 0.0
         for k in range(self.sets):
             forward = k % 2 == 0
             order = list(range(n)) if forward else [0] + list(range(n - 1, 0, -1))
-            offset = rng.normal(0.0, self.jump_sd) if k else 0.0
+            if self.offsets == "each" or k:
+                offset = rng.normal(0.0, self.jump_sd) + (offset if self.offsets == "walk" else 0.0)
             for f in order + [order[0]]:
                 g = -f * step - true_dev[f] * ARCSEC
                 normal = np.array([math.cos(beta[f]) * math.cos(g),

@@ -551,29 +551,40 @@ def within_set_noise(values: np.ndarray, directions: np.ndarray,
 
 
 def set_offsets_spread(values: np.ndarray, directions: np.ndarray,
-                       carried: np.ndarray | None = None) -> tuple[float, int] | None:
+                       carried: np.ndarray | None = None,
+                       carried_covariance: np.ndarray | None = None,
+                       floor: float = 0.0) -> tuple[float, int] | None:
     """The standard deviation of one set's zero offset, from the scatter of the means over
     the positions of the sets of each direction measured twice or more, pooled, with its
     degrees of freedom (Σ (m_d − 1)); None without a repeated direction. ``carried``: each
     set's offset a steady drift carried from set to set explains (taken out first: it is
-    an input of its own). The scatter also holds the mean's reading noise σ²/n: not taken
-    out (a few per cent, on the safe side, and no positive part that reads 0 where the
-    offsets are merely hidden by the noise). Between the directions the offsets cannot be
-    told from the mean reversal."""
+    an input of its own). That is an estimate, and its own error puts the sets apart as
+    well: its share of the scatter, trace(P·C) for its covariance ``carried_covariance``
+    (sets × sets) and P the centring within each direction, is taken out (counted in the
+    carried drift's input, not here again). The scatter also holds the means' reading noise
+    σ²/n: not taken out (a few per cent, on the safe side); ``floor`` (σ/√n; 0: none) is the
+    least it is taken as once the estimate's share is out, so that offsets merely hidden in
+    that noise never read 0. Between the directions the offsets cannot be told from the
+    mean reversal."""
     values = np.asarray(values, dtype=float)
     directions = np.asarray(directions)
     means = values.mean(axis=1)
     if carried is not None:
         means = means - np.asarray(carried, dtype=float)
     squares, dof = 0.0, 0
+    centring = np.zeros((means.size, means.size))
     for d in (1, -1):
-        group = means[directions == d]
-        if group.size >= 2:
+        rows = np.nonzero(directions == d)[0]
+        if rows.size >= 2:
+            group = means[rows]
             squares += float(np.sum((group - group.mean()) ** 2))
-            dof += group.size - 1
+            dof += rows.size - 1
+            centring[np.ix_(rows, rows)] = np.eye(rows.size) - 1.0 / rows.size
     if dof == 0:
         return None
-    return math.sqrt(squares / dof), dof
+    if carried_covariance is not None:
+        squares -= float(np.trace(centring @ np.asarray(carried_covariance, dtype=float)))
+    return math.sqrt(max(squares / dof, floor**2)), dof
 
 
 #: the standard normal quantile of how unlikely the sets' offsets must be under the reading

@@ -14,8 +14,9 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
   deviation of the sets about their direction's mean pooled over positions
   and directions (Type A), each set's own zero offset and steady drift taken out first
   (:func:`models.polygon.model.within_set_noise`), divided by √m for the mean of m sets;
-  the offsets an input of their own, one unknown value per set, the same at every
-  position (:func:`_zero_offsets_component`); with one set
+  the offsets inputs of their own, one value per set, the same at every position: within a
+  direction seen in the sets' means (a known bias), between the directions unknown
+  (:func:`_zero_offsets_component`); with one set
   each way, the scatter of the forward minus reverse errors about their mean
   reversal (:func:`models.polygon.model.reversal_pair_noise`: the encoder's own
   noise and the horizontal reading's, n − 1 degrees of freedom); with one set,
@@ -52,7 +53,9 @@ a reading standard's calibration error at x_i and at x_z (a systematic function 
 reading, not reduced by repeating sets, so not the sets' scatter); the drift, what the
 closures show beyond 2u² of their two readings' noise. None of these is the same error as
 another, and each is drawn with its nature: the budget's per-point u agrees with the spread
-of simulated runs (``polygon_budget_trials``: 0.94–1.05). Unlike the theodolite, whose
+of simulated runs (``polygon_budget_trials``: 0.94–1.05 with one set or one direction; with
+2 sets each way 0.81–0.89, the carried drift's input holding a drift the noisy closures cannot
+rule out, tests/models/uncertainty/test_uncertainty_monte_carlo.py). Unlike the theodolite, whose
 stated figure is the per-reading error of the instrument that makes the readings, the
 standards here cannot be told apart by their statement (a polygon's per-face figure may be
 stated per "reading"), so none is merged with the noise.
@@ -421,6 +424,8 @@ def _reading_indices(result: PolygonResult) -> np.ndarray | None:
 
 
 ZERO_OFFSETS_INPUT = QT_TR_NOOP("Autocollimator zero offsets between the sets")
+SEEN_OFFSETS_INPUT = QT_TR_NOOP("Autocollimator zero offsets within each direction, as the "
+                                "sets' means show them")
 
 
 def _sets_repeatability_row(result: PolygonResult, note: str) -> tuple[str, str]:
@@ -437,42 +442,113 @@ def _sets_repeatability_row(result: PolygonResult, note: str) -> tuple[str, str]
 
 def _zero_offsets_component(result: PolygonResult, noise: float, n: int,
                             share: ZeroFaceShare) -> list[BudgetComponent]:
-    """The autocollimator's zero as each set found it: one unknown offset per set against
-    set 1's zero reading (a jump between sets, or what a drift carried on leaves beyond its
-    steady part), a systematic of the set that the sets' scatter about each set's own level
-    no longer holds (:func:`within_set_noise`). It moves the whole of a set, so the mean over
-    the sets by c = Σ w_s ζ_s − ζ_1 at every position alike (common; the half range does not
-    see it); its u from the scatter of the sets' means within each direction,
-    √((1 − w_1)² + Σ_{s≥2} w_s²) times the offset of one set (each set's zero its own
-    unknown); for one set's array, set 1's none (its own zero) and a later set's √2 times.
-    None without a repeated direction (one set each way: the offset is the mean reversal's,
-    which the readings cannot tell apart)."""
+    """The autocollimator's zero as each set found it: one offset ζ_s per set against set 1's
+    zero reading (a jump between sets, or what a drift carried on leaves beyond its steady
+    part), a systematic of the set that the sets' scatter about each set's own level no
+    longer holds (:func:`within_set_noise`). It moves the whole of a set: set s's errors by
+    ζ_s − ζ_1, the mean over the sets by c = Σ w_s ζ_s − ζ_1 at every position alike (common;
+    the half range, and the errors about their mean, do not see it).
+
+    Within a direction the sets' means show their offsets from the direction's first set f_d,
+    D_s = x̄_s − x̄_{f_d} (to their readings' noise σ√(2/n)); between the directions they do
+    not (the mean reversal holds the same). So c = Σ w_s D_s + W·(ζ_f − ζ_1), W the other
+    direction's share of the mean and ζ_f its first set's offset: the first part is seen,
+    left in the errors, and enters as a known bias |Σ w_s D_s| in quadrature (as the carried
+    drift's; RSS_u), with no degrees of freedom to lose; only the second is unknown, of
+    variance W²·2τ² (the offset between two sets, τ the standard deviation of one set's from
+    the scatter of the sets' means within each direction). With 2 sets each way, W = ½: u =
+    τ/√2 with 2 degrees of freedom, where all of c was counted unknown (0.866τ, 2 degrees of
+    freedom: U 2.7–2.9 times what its scatter needs, tests/models/polygon/
+    test_polygon_zero_offsets_seen.py); one direction only: all of c is seen. For one set's
+    array, set 1's none (its own zero) and a later set's √2·τ. None without a repeated
+    direction (one set each way: the offset is the mean reversal's, which the readings cannot
+    tell apart)."""
     if share == ZERO_READING:
         return []
     directions = np.array([s.direction for s in result.sets])
     corrected = np.array([s.corrected_error_arcsec for s in result.sets])
     if within_set_noise(corrected, directions, _reading_indices(result)) is None:
         return []
-    steady = _kept_steady_drift(result, noise)
-    # the errors carry −H of each closure drift H before them (eq 1 takes −x)
-    carried = None if steady is None else -np.arange(len(result.sets), dtype=float) * steady
-    spread = set_offsets_spread(corrected, directions, carried)
+    steady = _steady_drift_estimate(result, noise)
+    carried = covariance = None
+    if steady is not None:
+        # the errors carry −H of each closure drift H before them (eq 1 takes −x). The
+        # estimate's own error puts the sets apart too: its variance is taken out, the
+        # carried drift's input holding that estimate (its square unbiased for the drift's)
+        before = -np.arange(len(result.sets), dtype=float)
+        carried = before * steady[0]
+        covariance = np.outer(before, before) * steady[1]
+    spread = set_offsets_spread(corrected, directions, carried, covariance,
+                                noise / math.sqrt(n))
     if spread is None or not spread[0] > 0:
         return []
     tau, dof = spread
     if share == OTHER_SET:
-        factor = math.sqrt(2.0)
-    else:
-        w = _mean_weights(directions)
-        factor = math.sqrt((1.0 - w[0]) ** 2 + float(np.sum(w[1:] ** 2)))
-    return [BudgetComponent(
-        ZERO_OFFSETS_INPUT, "A", "normal", tau * factor, 1.0, 1.0, float(dof),
+        return [_unseen_offsets(math.sqrt(2.0) * tau, tau, dof)]
+    means = corrected.mean(axis=1) - (0.0 if carried is None else carried)
+    w = _mean_weights(directions)
+    seen, seen_steps, unseen_weight, unseen_apart = 0.0, 0.0, 0.0, 0
+    for d in (1, -1):
+        rows = np.nonzero(directions == d)[0]
+        if rows.size == 0:
+            continue
+        seen += float(np.sum(w[rows] * (means[rows] - means[rows[0]])))
+        seen_steps += float(np.sum(w[rows] * (rows - rows[0])))
+        if directions[0] != d:  # this direction's first set against set 1: not seen
+            unseen_weight += float(np.sum(w[rows]))
+            unseen_apart = int(rows[0])
+    if steady is not None and seen:
+        # the carried drift's estimate put its own error into the seen part (seen_steps
+        # times it): its variance out, as from the spread (the carried input holds it)
+        seen *= math.sqrt(max(0.0, 1.0 - seen_steps**2 * steady[1] / seen**2))
+    out = []
+    if seen != 0.0:
+        out.append(BudgetComponent(
+            SEEN_OFFSETS_INPUT, "A", "normal", abs(seen), 1.0, 1.0 if seen > 0 else -1.0,
+            math.inf,
+            message(QT_TR_NOOP("the sets' offsets from their direction's first set as their "
+                               "means show them, weighted as in the mean: {b}, left in the "
+                               "errors (the same at every position) and counted as a known "
+                               "bias, in quadrature"), b=f"{seen:+.3f}\""),
+            common=True))
+    if unseen_weight > 0.0:
+        per_step = _offsets_per_set_step(means, directions, 0.0 if steady is None else steady[1])
+        between = math.sqrt(max(2.0 * tau * tau, unseen_apart * per_step))
+        out.append(_unseen_offsets(unseen_weight * between, tau, dof))
+    return out
+
+
+def _offsets_per_set_step(means: np.ndarray, directions: np.ndarray, carried_variance: float
+                          ) -> float:
+    """The variance a zero that wanders on (each set's offset the last one's plus a jump)
+    adds per set between two sets, from the successive sets of each direction, D² / Δk pooled
+    (each set's mean ``means``, its carried drift taken out, whose estimate's own variance
+    ``carried_variance`` per set is taken out of D² with it): a zero that scatters about one
+    level gives the offset between two sets 2τ² however far apart, one that wanders Δk times
+    this. The unseen offset between the directions' first sets is taken as the larger (3 sets
+    forward and 1 reverse, the zero wandering by σ 0.15″ a set: the zero face covered 91.5 %
+    with 2τ² alone; tests/models/polygon/test_polygon_unequal_sets.py)."""
+    squares, steps = 0.0, 0
+    for d in (1, -1):
+        rows = np.nonzero(directions == d)[0]
+        for a, b in zip(rows[:-1], rows[1:], strict=True):
+            apart = int(b - a)
+            squares += float(means[b] - means[a]) ** 2 - apart * apart * carried_variance
+            steps += apart
+    return max(squares, 0.0) / steps if steps else 0.0
+
+
+def _unseen_offsets(u: float, tau: float, dof: int) -> BudgetComponent:
+    """The offsets' input the readings cannot show: ``u`` from τ, one set's offset."""
+    return BudgetComponent(
+        ZERO_OFFSETS_INPUT, "A", "normal", u, 1.0, 1.0, float(dof),
         message(QT_TR_NOOP("one unknown offset per set against set 1's zero reading "
                            "(standard deviation {s} of a set's, from the scatter of the sets' "
-                           "means within each direction, {dof} degrees of freedom): the same "
-                           "at every position, so it moves the errors but not their half "
-                           "range"), s=f"{tau:.3f}\"", dof=dof),
-        common=True)]
+                           "means within each direction, {dof} degrees of freedom); between "
+                           "the directions the readings cannot show it: the same at every "
+                           "position, so it moves the errors but not their half range"),
+                s=f"{tau:.3f}\"", dof=dof),
+        common=True)
 
 
 def _why_no_fit(result: PolygonResult) -> str:
@@ -646,6 +722,13 @@ def _kept_steady_drift(result: PolygonResult, noise: float) -> float | None:
     carries on to the next, shrunk by the share of its power beyond that noise (positive
     part): the mean within its noise leaves little drift to carry, a drift well beyond it all
     of it; None when a set has no closure or there is one set only."""
+    estimate = _steady_drift_estimate(result, noise)
+    return None if estimate is None else estimate[0]
+
+
+def _steady_drift_estimate(result: PolygonResult, noise: float) -> tuple[float, float] | None:
+    """:func:`_kept_steady_drift` and the variance of the closures' mean it is taken from,
+    2σ²/m."""
     m = len(result.sets)
     if m < 2 or any(s.closure_drift_arcsec is None for s in result.sets):
         return None
@@ -653,8 +736,9 @@ def _kept_steady_drift(result: PolygonResult, noise: float) -> float | None:
     sigma = _noise_about_each_set(result)
     sigma = noise if sigma is None else sigma
     steady = float(np.mean(closures))
-    keep = max(0.0, 1.0 - 2.0 * sigma**2 / (m * steady**2)) if steady else 0.0
-    return math.sqrt(keep) * steady
+    variance = 2.0 * sigma**2 / m
+    keep = max(0.0, 1.0 - variance / steady**2) if steady else 0.0
+    return math.sqrt(keep) * steady, variance
 
 
 def _noise_about_each_set(result: PolygonResult) -> float | None:

@@ -50,6 +50,13 @@ CELLS: dict[str, dict[str, Any]] = {
     "12f_jumps1.0": dict(faces=12, sigma=0.05, sigma_enc=0.05, jump_sd=1.0),
     "12f_rate0.02": dict(faces=12, sigma=0.05, sigma_enc=0.05, rate=0.02),
     "12f_control": dict(faces=12, sigma=0.05, sigma_enc=0.05),
+    # the offsets drawn other ways (tests/polygon_zero_jump_rig.py ``offsets``): one zero
+    # about which every set scatters, set 1's too; a zero that jumps on from where it was
+    "24f_jumps1.0_each": dict(faces=24, sigma=0.1, sigma_enc=0.1, jump_sd=1.0, offsets="each"),
+    "24f_jumps1.0_walk": dict(faces=24, sigma=0.1, sigma_enc=0.1, jump_sd=1.0, offsets="walk"),
+    "12f_jumps1.0_each": dict(faces=12, sigma=0.05, sigma_enc=0.05, jump_sd=1.0, offsets="each"),
+    "12f_jumps1.0_walk": dict(faces=12, sigma=0.05, sigma_enc=0.05, jump_sd=1.0, offsets="walk"),
+    "12f_jumps0.3+rate0.01": dict(faces=12, sigma=0.05, sigma_enc=0.05, jump_sd=0.3, rate=0.01),
 }
 
 

@@ -25,7 +25,10 @@ workbench; the study is tests/benchmarks/polygon_zero_jump_study.py (60 runs a c
 
 (floor 54 of 60). U at a point, with jumps: 96.5–98.3 % (U 2.7–2.9 times the oracle's: the
 offsets' spread has 2 degrees of freedom with 2 sets each way); with drift alone 99.8–100 %
-(1.4–1.5×, before 2.0×); controls 96.8–98.3 % (1.05–1.15×, as before).
+(1.4–1.5×, before 2.0×); controls 96.8–98.3 % (1.05–1.15×, as before). Since the offsets
+within each direction are seen (a known bias; only the offset between the directions
+unknown), with jumps 96.6–96.8 % at 1.6–2.0× over 150 runs, 93–98 % at 1.0–1.3× where
+every set's zero scatters or the zero wanders on (test_polygon_zero_offsets_seen.py).
 """
 
 from __future__ import annotations
@@ -107,7 +110,9 @@ def test_study_smoke_zero_jumps_24_faces():
     assert c["hits"] >= 14, c
     assert abs(c["median_offset"]) < 0.08, c
     assert c["false_pass"] <= 1, c
-    assert c["point_coverage"] >= 0.93, c
+    # per point: the points of a run share its offsets, so 16 runs count as a few more than
+    # 16 (±5 %); 96.8 % over 150 runs (tests/models/polygon/test_polygon_zero_offsets_seen.py)
+    assert c["point_coverage"] >= 0.90, c
 
 
 def test_study_smoke_zero_drift_24_faces():
@@ -150,3 +155,32 @@ def test_the_noise_estimate_is_unbiased_whatever_the_offsets_and_drifts():
             estimates.append(sigma**2)
             assert nu == dof
         assert abs(float(np.mean(estimates)) - 1.0) < 0.05, np.mean(estimates)
+
+
+def test_the_offsets_spread_holds_the_carried_drift_estimates_error_once():
+    """The sets' means, a steady drift carried from set to set taken out, hold that estimate's
+    own error as well (set s carries s times it, so the sets of a direction are put apart by
+    it): with its covariance given it is taken out, and the spread is one set's offset again
+    (σ_ζ 0.3″, the means' noise 0.03″, an estimate of σ 0.1″ a set: 2 sets each way; 4000
+    draws, the mean of τ̂² within 5 % of σ_ζ² + 0.03², where it held 2·0.1² more)."""
+    from models.polygon.model import set_offsets_spread
+
+    rng = np.random.default_rng(11)
+    directions = np.array([1, -1, 1, -1])
+    steps = np.arange(4.0)
+    sigma_zeta, noise, u_estimate = 0.3, 0.03, 0.1
+    with_it, without = [], []
+    for _ in range(4000):
+        drift = rng.normal(0.0, 0.5)
+        estimate = drift + rng.normal(0.0, u_estimate)
+        # one error per position: the curve (the same in every set), each set's offset and
+        # the drift it carries (−s·drift, eq 1 takes −x), and noise; the means' noise σ/√24
+        values = (np.sin(np.arange(24.0))[None, :] + rng.normal(0.0, sigma_zeta, (4, 1))
+                  - steps[:, None] * drift + rng.normal(0.0, noise * math.sqrt(24.0), (4, 24)))
+        carried = -steps * estimate
+        with_it.append(set_offsets_spread(values, directions, carried,
+                                          np.outer(steps, steps) * u_estimate**2)[0] ** 2)
+        without.append(set_offsets_spread(values, directions, carried)[0] ** 2)
+    expected = sigma_zeta**2 + noise**2
+    assert abs(float(np.mean(with_it)) / expected - 1.0) < 0.05, np.mean(with_it)
+    assert float(np.mean(without)) > expected + 1.5 * u_estimate**2, np.mean(without)
