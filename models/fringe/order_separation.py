@@ -137,8 +137,12 @@ def pair_separation(gram: np.ndarray, orders: tuple[int, ...], a: int, b: int) -
     """The least singular value of the columns of orders ``a`` and ``b`` (of order ``a``
     alone when ``a == b``) from :func:`order_gram` over ``orders``."""
     where = _slices(orders)
-    index = np.r_[where[a]] if a == b else np.r_[where[a], where[b]]
-    return _least_singular(gram[np.ix_(index, index)])
+    index = list(range(where[a].start, where[a].stop))
+    if a != b:
+        index += range(where[b].start, where[b].stop)
+    # the same rows and columns as gram[np.ix_(index, index)], without np.r_ and np.ix_'s
+    # building of index arrays (most of the time of a pair: a fringe analysis takes ~160)
+    return _least_singular(gram[index][:, index])
 
 
 def least_separation(gram: np.ndarray, orders: tuple[int, ...]) -> list[PairSeparation]:

@@ -262,22 +262,30 @@ def _large_signal_file(tmp_path) -> object:
     return path
 
 
+def _the_worker_import_lands(qtbot, presenter):
+    """Waits, on leaving the block, until the import read on a worker has landed in the GUI
+    thread: its result is delivered to the presenter (which keeps or drops it) before this
+    waiter's copy, both connections queued to the GUI thread in the order they were made
+    (the tests waited 3 s, ~10 times the worker's read, for the same)."""
+    return qtbot.waitSignal(presenter._signals.imported, timeout=30000)
+
+
 @pytest.mark.slow
 def test_the_last_import_asked_for_is_the_one_shown(qtbot, fringe, tmp_path, samples_dir):
-    fringe.start_import(_large_signal_file(tmp_path))  # read on a worker …
-    fringe.start_import(samples_dir / "fringe_sample.csv")  # … then a small one at once
-    assert fringe.sheet.row_count == 512 and not fringe.busy
-    qtbot.wait(3000)  # the large one lands meanwhile and is dropped
-    assert fringe.sheet.row_count == 512
+    with _the_worker_import_lands(qtbot, fringe):
+        fringe.start_import(_large_signal_file(tmp_path))  # read on a worker …
+        fringe.start_import(samples_dir / "fringe_sample.csv")  # … then a small one at once
+        assert fringe.sheet.row_count == 512 and not fringe.busy
+    assert fringe.sheet.row_count == 512  # the large one landed and was dropped
 
 
 @pytest.mark.slow
 def test_opening_a_project_during_an_import_keeps_the_project(qtbot, fringe, tmp_path):
     from models.project.file import WorkbenchState
 
-    fringe.start_import(_large_signal_file(tmp_path))
-    fringe.load_state(WorkbenchState([["0.1", "1.0"], ["0.9", "0.2"]], {}))
-    qtbot.wait(3000)
+    with _the_worker_import_lands(qtbot, fringe):
+        fringe.start_import(_large_signal_file(tmp_path))
+        fringe.load_state(WorkbenchState([["0.1", "1.0"], ["0.9", "0.2"]], {}))
     assert fringe.sheet.copy_rows()[:2] == [["0.1", "1.0", ""], ["0.9", "0.2", ""]]
     assert fringe.sheet.row_count == 2 and not fringe.busy
 

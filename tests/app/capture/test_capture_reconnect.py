@@ -50,25 +50,37 @@ class _ScriptedPort:
         pass
 
 
-def _run(instrument, connections: list[_ScriptedPort], seconds: float) -> tuple[list, CaptureWorker]:
+def _run(instrument, connections: list[_ScriptedPort], until) -> tuple[list, CaptureWorker]:
+    """The worker's events on these connections, stopped once ``until(events)`` holds (what
+    the test reads has all arrived: the scripted ports have nothing more to give) or after
+    10 s; it ran a fixed 0.25–1 s before, of which its events needed a tenth."""
     ports = iter(connections)
     worker = CaptureWorker("FAKE", instrument, silence_s=0.3, reply_timeout_s=0.3,
                            retries=len(connections) - 1, retry_pause_s=0.01,
                            opener=lambda _port, _baud: next(ports, None) or _ScriptedPort())
     worker.start()
-    time.sleep(seconds)
+    events: list = []
+    deadline = time.monotonic() + 10.0
+    while not until(events) and time.monotonic() < deadline:
+        time.sleep(0.01)
+        while not worker.events.empty():
+            events.append(worker.events.get())
     worker.stop()
-    events = []
     while not worker.events.empty():
         events.append(worker.events.get())
     return events, worker
+
+
+def _readings(count: int):
+    """``until``: that many readings have arrived."""
+    return lambda events: sum(isinstance(e, Reading) for e in events) >= count
 
 
 def test_a_line_half_read_at_the_connection_is_kept_whole_and_not_read():
     """A readout's reply "+105.00012 deg" was on its way when the link was reopened: "+10"
     waits in the buffer, the rest comes after the new request. It was read as 5.00012 deg."""
     second = _ScriptedPort(b"+10", (b"5.00012 deg\r\n", b"+105.00013 deg\r\n"))
-    events, worker = _run(LineReadoutInstrument(), [_ScriptedPort(), second], 1.0)
+    events, worker = _run(LineReadoutInstrument(), [_ScriptedPort(), second], _readings(1))
     readings = [e for e in events if isinstance(e, Reading)]
     assert [r.values for r in readings] == [(105.00013,)]
     kept = [(line, used) for _, line, used in worker.raw]
@@ -81,7 +93,7 @@ def test_the_first_line_of_a_joined_stream_is_not_read():
     one ("5.00012 deg" of "+105.00012 deg"); it is kept in the raw trace and not read."""
     port = _ScriptedPort(b"", (b"5.00012 deg\r\n+105.00013 deg\r\n", b"+105.00014 deg\r\n"),
                          unasked=True)
-    events, worker = _run(LineReadoutInstrument(ask=None), [port], 0.25)
+    events, worker = _run(LineReadoutInstrument(ask=None), [port], _readings(2))
     assert [e.values for e in events if isinstance(e, Reading)] == [(105.00013,), (105.00014,)]
     assert (worker.raw[0][1], worker.raw[0][2]) == (b"5.00012 deg", False)
 
@@ -108,7 +120,7 @@ def test_a_late_reply_to_the_last_connections_request_is_not_read():
     new connection numbered its request 1 again and took the old reply for it."""
     first = _ScriptedPort()  # no reply: the reply timeout ends it
     second = _ScriptedPort(b"", (_geocom_reply(1, 10.0), _geocom_reply(2, 50.0)))
-    events, worker = _run(Theodolite(), [first, second], 1.0)
+    events, worker = _run(Theodolite(), [first, second], _readings(1))
     readings = [e for e in events if isinstance(e, Reading)]
     assert readings and readings[0].values[0] == pytest.approx(50.0)
     assert not any(r.values[0] == pytest.approx(10.0) for r in readings)
@@ -140,7 +152,8 @@ def test_a_link_that_read_well_and_went_quiet_says_no_answer():
     wrong baud rate?)", which sent a technician to the baud rate of a link that had worked."""
     port = _ScriptedPort(b"", tuple(f"3 003 {i:.3f} 2.000\r".encode() for i in range(5)),
                          unasked=True)
-    events, _ = _run(Autocollimator(), [port], 0.6)
+    events, _ = _run(Autocollimator(), [port],
+                     lambda events: any(isinstance(e, Fault) for e in events))
     assert sum(isinstance(e, Reading) for e in events) == 5
     fault = next(e for e in events if isinstance(e, Fault))
     assert fault.message.endswith("no answer for 0.3 s"), fault.message
