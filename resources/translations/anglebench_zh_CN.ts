@@ -353,10 +353,6 @@
         <translation>测回间的自准直仪零位偏移</translation>
     </message>
     <message>
-        <source>one unknown offset per set against set 1&apos;s zero reading (standard deviation {s} of a set&apos;s, from the scatter of the sets&apos; means within each direction, {dof} degrees of freedom): the same at every position, so it moves the errors but not their half range</source>
-        <translation>每个测回相对于第 1 测回零位读数的一个未知偏移（单个测回偏移的标准偏差 {s}，由每个方向内各测回平均值的离散求得，自由度 {dof}）：在每个位置都相同，因此它移动误差，但不改变其半峰峰值</translation>
-    </message>
-    <message>
         <source>spread linearly and removed, half the drift left</source>
         <translation>线性分配并扣除，余下一半漂移</translation>
     </message>
@@ -552,6 +548,18 @@
     <message>
         <source>scatter of the vertical readings about the tilt fits between the sets, face by face (each face&apos;s own pyramidal error, the same in every set, cancels), {dof} degrees of freedom (no direction was measured twice)</source>
         <translation>各测回垂直读数对倾斜拟合的残差在测回之间逐面比较的离散（各面自身的塔差在每个测回中相同，相互抵消），自由度 {dof}（没有任何方向测量两次）</translation>
+    </message>
+    <message>
+        <source>Autocollimator zero offsets within each direction, as the sets&apos; means show them</source>
+        <translation>各方向内由测回平均值显示的自准直仪零位偏移</translation>
+    </message>
+    <message>
+        <source>the sets&apos; offsets from their direction&apos;s first set as their means show them, weighted as in the mean: {b}, left in the errors (the same at every position) and counted as a known bias, in quadrature</source>
+        <translation>各测回相对于其方向第一个测回的偏移（由各测回平均值显示，按平均值中的权重加权）：{b}，保留在误差中（在每个位置都相同），作为已知偏差以方和根计入</translation>
+    </message>
+    <message>
+        <source>one unknown offset per set against set 1&apos;s zero reading (standard deviation {s} of a set&apos;s, from the scatter of the sets&apos; means within each direction, {dof} degrees of freedom); between the directions the readings cannot show it: the same at every position, so it moves the errors but not their half range</source>
+        <translation>每个测回相对于第 1 测回零位读数的一个未知偏移（单个测回偏移的标准偏差 {s}，由每个方向内各测回平均值的离散求得，自由度 {dof}）；两个方向之间的偏移读数无法显示：在每个位置都相同，因此它移动误差，但不改变其半峰峰值</translation>
     </message>
     <message>
         <source>eccentricity / ellipticity</source>
