@@ -198,10 +198,11 @@ def _systematic_components(result, u_scatter: np.ndarray) -> list[BudgetComponen
                                "frame, through the design"),
                     count=len(unmeasured), psi=f"{result.tilt_bound_arcsec:g}\"")))
     unchecked = result.unchecked_drift_mountings
-    if unchecked and result.drift_bound_arcsec > 0:
+    drift_effect = result.drift_bound_arcsec * drift_effect_arcsec(s)[block]
+    if unchecked and np.max(drift_effect, initial=0.0) > 1e-9:  # (none for the faces)
         out.append(BudgetComponent(
             QT_TR_NOOP("Autocollimator drift (no closure reading)"), "B", "rectangular",
-            result.drift_bound_arcsec * drift_effect_arcsec(s)[block], math.sqrt(3.0),
+            drift_effect, math.sqrt(3.0),
             np.where(drift_pattern_arcsec(s)[block] < 0, -1.0, 1.0), math.inf,
             message(QT_TR_NOOP("no closure reading in mounting(s) {mountings}: a linear drift "
                                "up to ±{drift} over each such mounting (stated, not measured), "
@@ -229,10 +230,19 @@ def budget_remarks(result) -> tuple[str, ...]:
                                   "it is in the reading scatter"),
              "report": QT_TR_NOOP("each mounting's drift is reported, not removed; within a "
                                   "mounting it is in the reading scatter")}[result.drift_mode]
+    said = message(drift)
+    if result.unchecked_drift_mountings:  # mountings with no closure reading
+        said = message(QT_TR_NOOP("where a mounting ends with a closure reading, {how}; where "
+                                  "none does, its row above, from the drift bound stated")
+                       if result.certificate_of == "encoder" else
+                       QT_TR_NOOP("where a mounting ends with a closure reading, {how}; where "
+                                  "none does, a drift the same in every mounting does not move "
+                                  "the face deviations, and what differs between mountings is "
+                                  "in the reading scatter"), how=said)
     parts = [message(QT_TR_NOOP("Not separate rows of the budget: drift ({drift}); temperature "
                                 "(the angles between a polygon's faces, and an encoder's steps "
                                 "over a full turn, are insensitive to a uniform temperature)"),
-                     drift=message(drift))]
+                     drift=said)]
     fitted = tilt_fit_effect_arcsec(s, r.mounting, r.position)[_item_block(result)]
     if np.any(fitted > 0) and np.max(fitted) <= 0.1 * np.min(_per_point(result)[1]):
         parts.append(message(QT_TR_NOOP("the fitted tilts' own uncertainty changes the "
