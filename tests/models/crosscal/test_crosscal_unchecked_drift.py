@@ -123,7 +123,7 @@ def test_with_closure_readings_the_bound_changes_nothing():
         assert to_json(plain)["encoder_error_U_arcsec"] is not None
 
 
-@pytest.mark.slow  # 120 runs, ~10 s
+@pytest.mark.slow  # 120 runs, ~3 s
 def test_the_encoders_u_with_a_stated_bound_covers_a_common_drift_on_the_bench():
     """The audit's design (12 faces, mountings 0, 1, 5, σ 0.05″, no closure reading), the
     drift the same in every mounting, anywhere within the stated bound (0.3″ over a
