@@ -555,6 +555,10 @@ def verdict(result: CrossCalResult, printed: Mapping[str, float] | None = None) 
     encoder = _printed(e, float(np.max(result.expanded_u_arcsec[0])), printed, "encoder")
     face = _printed(d, float(np.max(result.expanded_u_arcsec[1])), printed, "polygon")
     low, high = face["span"].split(" … ")
+    if result.encoder_u_withheld is not None:
+        return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U withheld: drift not "
+                                  "measured); face deviations {low} … {high} (U ≤ {ud})"),
+                       ptp=encoder["ptp"], low=low, high=high, ud=face["u"])
     return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations "
                               "{low} … {high} (U ≤ {ud})"),
                    ptp=encoder["ptp"], ue=encoder["u"], low=low, high=high, ud=face["u"])

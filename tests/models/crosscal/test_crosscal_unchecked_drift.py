@@ -24,7 +24,7 @@ import pytest
 
 from models.certificate.metadata import CertificateMetadata
 from models.certificate.uncertainty_json import workbench_uncertainty_json
-from models.crosscal.analysis import to_json
+from models.crosscal.analysis import summary, to_json, verdict
 from models.crosscal.report import crosscal_budget
 from models.readings.sheet import ReadingsSheet
 from models.registry import KINDS
@@ -92,6 +92,7 @@ def test_without_closure_and_no_bound_the_encoders_u_is_withheld_and_its_certifi
     assert "closure reading" in reason and "drift_bound_arcsec" in reason
     assert out["encoder_error_arcsec"] is not None  # the values stay, labelled
     assert out["polygon_deviation_U_arcsec"] is not None  # the faces are not affected
+    assert "U withheld" in summary(result) and "U withheld" in verdict(result)
     extra = workbench_uncertainty_json(KIND, result, details(), None)
     assert extra["expanded_uncertainty_encoder_error_arcsec"] is None
     assert extra["expanded_uncertainty_encoder_error_from_step0_arcsec"] is None
