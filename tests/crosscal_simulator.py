@@ -30,7 +30,8 @@ constraints or the polygon workbench's tilt equations. Frames and senses:
   turns the shaft so each face in turn stands within ±``stop_arcsec`` of the AC's null
   (faces j+1, j+2, … as the encoder counts its steps), and, with ``closure``, once more to
   the first face after a full turn. The AC's zero drifts linearly in time within each
-  mounting (by up to ±``drift_arcsec`` over its n steps); both readings have Gaussian
+  mounting (by up to ±``drift_arcsec`` over its n steps; with ``drift_common`` the same
+  drift in every mounting); both readings have Gaussian
   noise σ = ``noise_arcsec``. The AC's horizontal scale may be off by ``ac_scale`` (relative):
   it then indicates (1 + s) times the face normal's angle from its null.
 """
@@ -68,12 +69,17 @@ class Bench:
     face_elevation_arcsec: np.ndarray | None = None  # β_i per face (1 … n), ″; None: square faces
     ac_scale: float = 0.0  # the AC's relative scale error: it indicates (1 + s)·(angle from its null)
     ac_roll_arcmin: float = 0.0  # the AC's axes rolled about its line of sight (x) by this
+    #: the AC's zero drifts the same in every mounting (thermal drift the same way all day):
+    #: one drift over a mounting, uniform within ±drift_arcsec, drawn for the whole run
+    drift_common: bool = False
     rng: np.random.Generator = field(default_factory=lambda: np.random.default_rng(0))
 
     def __post_init__(self) -> None:
         self.face_dev_arcsec = np.asarray(self.face_dev_arcsec, dtype=float)
         self.start_deg = float(self.rng.uniform(-0.002, 0.002))  # where mounting 0 starts (true θ)
         self.mounts: list[dict] = []
+        self.common_drift_arcsec = float(self.rng.uniform(-1, 1) * self.drift_arcsec) \
+            if self.drift_common else 0.0
 
     def encoder_error(self, theta_deg) -> np.ndarray:
         th = np.radians(np.asarray(theta_deg, dtype=float))
@@ -141,6 +147,8 @@ class Bench:
             psi = float(self.rng.uniform(0.0, self.tilt_arcsec))
             omega = float(self.rng.uniform(0.0, 2 * np.pi))
             drift = float(self.rng.uniform(-1, 1) * self.drift_arcsec)
+            if self.drift_common:
+                drift = self.common_drift_arcsec
             self.mounts.append({"mounting": j, "seat_deg": seat, "psi_arcsec": psi,
                                 "omega_rad": omega, "drift_arcsec": drift})
             faces = np.array([(j + k) % n + 1 for k in range(n)] + ([j + 1] if closure else []))

@@ -92,6 +92,17 @@ PARAMETERS = (
                    "identified nor removed: its exact effect for a tilt up to this, the worst "
                    "direction, enters the uncertainty (rectangular); not used when vertical "
                    "readings are given (the tilt is then fitted and removed)"),
+    Parameter("drift_bound_arcsec", "largest autocollimator drift over a mounting, when not "
+              "measured", "float", 0.0, "\"", 0.0, 100.0, decimals=3, step=0.05,
+              zero="none stated",
+              help="Without a closure reading (the first face read again at the end of the "
+                   "mounting) a mounting's drift is neither measured nor removed, and a drift "
+                   "the same way in every mounting is a ramp over the encoder's steps that the "
+                   "readings cannot tell from the encoder's error: its exact effect for a "
+                   "linear drift up to this over a mounting (a full turn), in every such "
+                   "mounting, enters the uncertainty (rectangular); 0: none stated, and the "
+                   "encoder's U is then withheld (the face deviations are not affected by a "
+                   "drift common to the mountings)"),
     Parameter("certificate_of", "certificate of", "choice", "polygon",
               choices=(("polygon", "the polygon (face deviations)"),
                        ("encoder", "the encoder (error at its steps)")),
@@ -128,6 +139,34 @@ class CrossCalResult:
     incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
     cmc_polygon_arcsec: float = 0.0  # setting: the lab's CMC for face deviations (U floor)
     cmc_encoder_arcsec: float = 0.0  # setting: the lab's CMC for the encoder's error (U floor)
+    #: setting: the largest autocollimator drift over a mounting without a closure reading
+    #: (budget, through the design); 0: none stated
+    drift_bound_arcsec: float = 0.0
+
+    @property
+    def unchecked_drift_mountings(self) -> tuple[int, ...]:
+        """The mountings with no closure reading (their drift neither measured nor removed)."""
+        from models.crosscal.uncertainty import unchecked_drift_mountings
+
+        return unchecked_drift_mountings(self.solution)
+
+    @property
+    def encoder_u_withheld(self) -> str | None:
+        """Why the encoder's U is not given (None when it is): mountings without a closure
+        reading and no drift bound stated. A drift the same way in every mounting is, step by
+        step, exactly an encoder error growing linearly over the steps (every mounting starts
+        at step 0 and reads in step order); only a closure reading — step 0 read again after
+        the full turn — tells the two apart. The face deviations are not affected by it."""
+        unchecked = self.unchecked_drift_mountings
+        if not unchecked or self.drift_bound_arcsec > 0:
+            return None
+        return message(QT_TR_NOOP(
+            "the encoder's U is withheld: mounting(s) {mountings} have no closure reading, so "
+            "the autocollimator's drift is not measured, and a drift the same way in every "
+            "mounting is a ramp over the encoder's steps that these readings cannot tell from "
+            "the encoder's error; add a closure reading to each mounting (its first face read "
+            "again at the end) or state the largest drift over a mounting "
+            "(drift_bound_arcsec)"), mountings=", ".join(map(str, unchecked)))
 
     @property
     def cmc(self) -> float:
@@ -238,7 +277,10 @@ class CrossCalResult:
 
 
         e, d = (budget.expanded for budget in self.bench_budgets)
-        return np.asarray(e, dtype=float), np.asarray(d, dtype=float)
+        e = np.asarray(e, dtype=float)
+        if self.encoder_u_withheld is not None:  # not determined: no figure (NaN)
+            e = np.full(e.shape, np.nan)
+        return e, np.asarray(d, dtype=float)
 
     @functools.cached_property
     def bench_budgets(self) -> tuple[UncertaintyBudget, UncertaintyBudget]:
@@ -259,6 +301,7 @@ class CrossCalResult:
         bounds (the autocollimator's scale error; the tilt when not measured), each
         rectangular, through the design (models.crosscal.uncertainty)."""
         from models.crosscal.uncertainty import (
+            drift_effect_arcsec,
             roll_effect_arcsec,
             scale_effect_arcsec,
             tilt_effect_arcsec,
@@ -270,7 +313,8 @@ class CrossCalResult:
                                   combine=combine)
         roll = math.radians(self.ac_roll_arcmin / 60.0) * roll_effect_arcsec(
             s, r.ac_y_arcsec, combine)
-        return np.sqrt(scale**2 + tilt**2 + roll**2) / math.sqrt(3.0)
+        drift = self.drift_bound_arcsec * drift_effect_arcsec(s, combine)
+        return np.sqrt(scale**2 + tilt**2 + roll**2 + drift**2) / math.sqrt(3.0)
 
     def cross_correlation(self) -> float:
         """The largest |correlation| between an encoder error and a face deviation."""
@@ -338,7 +382,9 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
                             float(settings.get("tilt_bound_arcsec", 60.0) or 0.0),
                             cmc_polygon_arcsec=float(settings.get("cmc_arcsec", 0.0) or 0.0),
                             cmc_encoder_arcsec=float(settings.get("cmc_encoder_arcsec", 0.0) or 0.0),
-                            ac_roll_arcmin=float(settings.get("ac_roll_arcmin", 1.0) or 0.0))
+                            ac_roll_arcmin=float(settings.get("ac_roll_arcmin", 1.0) or 0.0),
+                            drift_bound_arcsec=float(settings.get("drift_bound_arcsec", 0.0)
+                                                     or 0.0))
     if result.outliers.size:
         shown = ", ".join(str(readings.row(i)) for i in result.outliers[:8])
         warnings.append(message(QT_TR_NOOP("{count} reading(s) lie beyond {sigmas}σ of the fit "
@@ -354,6 +400,7 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
 _ANALYSED_WITH = (("certificate_of", "certificate_of"), ("closure_drift", "drift_mode"),
                   ("ac_scale_pct", "ac_scale_pct"), ("tilt_bound_arcsec", "tilt_bound_arcsec"),
                   ("ac_roll_arcmin", "ac_roll_arcmin"),
+                  ("drift_bound_arcsec", "drift_bound_arcsec"),
                   ("cmc_arcsec", "cmc_polygon_arcsec"),
                   ("cmc_encoder_arcsec", "cmc_encoder_arcsec"))
 
@@ -386,7 +433,8 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
         "encoder_error_reference": "mean",
         "polygon_deviation_reference": "mean",
         "encoder_error_arcsec": _list(s.encoder_error_arcsec),
-        "encoder_error_U_arcsec": None if s.encoder_error_arcsec is None else _list(u_e),
+        "encoder_error_U_arcsec": None if s.encoder_error_arcsec is None
+        or result.encoder_u_withheld is not None else _list(u_e),
         "polygon_deviation_arcsec": _list(s.polygon_deviation_arcsec),
         "polygon_deviation_U_arcsec": None if s.polygon_deviation_arcsec is None else _list(u_d),
         "coverage_factor": s.coverage_factor,
@@ -406,6 +454,8 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
         "polygon_deviation_sign_convention": POLYGON_SIGN_CONVENTION,
         "warnings": result.warnings,
     }
+    if result.encoder_u_withheld is not None:  # the encoder's U null, and why
+        out["encoder_error_U_withheld"] = result.encoder_u_withheld
     # not separable (E or d not determined): what the design does see, labelled, never the result
     d = s.polygon_deviation_arcsec
     if s.encoder_error_arcsec is None or d is None:
@@ -454,7 +504,12 @@ def summary(result: CrossCalResult, printed: Mapping[str, float] | None = None) 
                    nu=nu, k=f"{s.coverage_factor:.2f}")]
     if result.readings.nominal_encoder:
         out.append(message(QT_TR_NOOP("Encoder set to its nominal steps (no encoder readings).")))
-    if s.encoder_error_arcsec is not None:
+    if s.encoder_error_arcsec is not None and result.encoder_u_withheld is not None:
+        encoder = _printed(s.encoder_error_arcsec, math.nan, None, "encoder")
+        out.append(message(QT_TR_NOOP("Encoder error {span} (peak-to-peak {ptp}), U withheld: "
+                                      "drift not measured (no closure reading) and no drift "
+                                      "bound stated"), span=encoder["span"], ptp=encoder["ptp"]))
+    elif s.encoder_error_arcsec is not None:
         out.append(message(QT_TR_NOOP("Encoder error {span} (peak-to-peak {ptp}), U up to {u}"),
                            **_printed(s.encoder_error_arcsec,
                                       float(np.max(result.expanded_u_arcsec[0])), printed,
@@ -500,6 +555,10 @@ def verdict(result: CrossCalResult, printed: Mapping[str, float] | None = None) 
     encoder = _printed(e, float(np.max(result.expanded_u_arcsec[0])), printed, "encoder")
     face = _printed(d, float(np.max(result.expanded_u_arcsec[1])), printed, "polygon")
     low, high = face["span"].split(" … ")
+    if result.encoder_u_withheld is not None:
+        return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U withheld: drift not "
+                                  "measured); face deviations {low} … {high} (U ≤ {ud})"),
+                       ptp=encoder["ptp"], low=low, high=high, ud=face["u"])
     return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations "
                               "{low} … {high} (U ≤ {ud})"),
                    ptp=encoder["ptp"], ue=encoder["u"], low=low, high=high, ud=face["u"])
@@ -609,7 +668,7 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
         :meth:`uncertainty_budgets`."""
 
         s = result.solution
-        if not s.separable:
+        if not s.separable or result.encoder_u_withheld is not None:
             return {}
         return {"error_from_step0_arcsec": result.u_from_first("encoder", metadata)}
 
@@ -643,6 +702,9 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
         budgets["polygon_deviation_from_face1_arcsec"] = result.u_from_first("polygon", metadata)
         # the certificate's "U from step 0" (models/crosscal/report.py), the comparators in
         budgets["encoder_error_from_step0_arcsec"] = result.u_from_first("encoder", metadata)
+        if result.encoder_u_withheld is not None:  # the encoder's U null (to_json says why)
+            budgets["encoder_error_arcsec"] = None
+            budgets["encoder_error_from_step0_arcsec"] = None
         return budgets
 
     def certified_json(self, result, metadata, settings=None):
@@ -652,7 +714,8 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
         if not result.solution.separable:
             return {}
         budgets = self.uncertainty_budgets(result, metadata, settings)
-        return {"encoder_error_U_arcsec": _list(budgets["encoder_error_arcsec"].expanded),
+        encoder = budgets["encoder_error_arcsec"]
+        return {"encoder_error_U_arcsec": None if encoder is None else _list(encoder.expanded),
                 "polygon_deviation_U_arcsec": _list(budgets["polygon_deviation_arcsec"].expanded),
                 "polygon_deviation_U_from_face1_arcsec":
                     _list(budgets["polygon_deviation_from_face1_arcsec"].expanded)}
@@ -674,7 +737,7 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
             return None
         out = {item: float(budgets[name].max_expanded) for item, name in (
             ("encoder", "encoder_error_arcsec"), ("polygon", "polygon_deviation_arcsec"))
-            if name in budgets}
+            if budgets.get(name) is not None}
         return out or None
 
     def printed_headline(self, result, printed=None):

@@ -68,8 +68,14 @@ def encoder_figure(result, parsed=None, u=None) -> PlotFigure | None:
     s = result.solution
     if s.encoder_error_arcsec is None:
         return None
-    series = [PlotSeries(QT_TR_NOOP("encoder error ± U"), result.step_deg, s.encoder_error_arcsec,
-                         BLUE, True, band=_band(result, 0, u), role="corrected")]
+    if result.encoder_u_withheld is not None:  # no closure reading, no drift bound: no band
+        series = [PlotSeries(QT_TR_NOOP("encoder error (U withheld: drift not measured)"),
+                             result.step_deg, s.encoder_error_arcsec, BLUE, True,
+                             role="corrected")]
+    else:
+        series = [PlotSeries(QT_TR_NOOP("encoder error ± U"), result.step_deg,
+                             s.encoder_error_arcsec, BLUE, True, band=_band(result, 0, u),
+                             role="corrected")]
     x, y = in_progress_errors(parsed, result)
     if x.size:
         series.append(PlotSeries(QT_TR_NOOP("mounting in progress (as taken)"), x, y, GREY, True,

@@ -152,6 +152,8 @@ def _systematic_components(result, u_scatter: np.ndarray) -> list[BudgetComponen
     readings' span, and an unmeasured tilt of the polygon on the shaft (its fitted tilt's own
     uncertainty, when vertical readings were given, if it is not negligible)."""
     from models.crosscal.uncertainty import (
+        drift_effect_arcsec,
+        drift_pattern_arcsec,
         roll_pattern_arcsec,
         scale_effect_arcsec,
         tilt_effect_arcsec,
@@ -195,6 +197,18 @@ def _systematic_components(result, u_scatter: np.ndarray) -> list[BudgetComponen
                                "(stated) in its worst direction, exact effect in the set-up's "
                                "frame, through the design"),
                     count=len(unmeasured), psi=f"{result.tilt_bound_arcsec:g}\"")))
+    unchecked = result.unchecked_drift_mountings
+    drift_effect = result.drift_bound_arcsec * drift_effect_arcsec(s)[block]
+    if unchecked and np.max(drift_effect, initial=0.0) > 1e-9:  # (none for the faces)
+        out.append(BudgetComponent(
+            QT_TR_NOOP("Autocollimator drift (no closure reading)"), "B", "rectangular",
+            drift_effect, math.sqrt(3.0),
+            np.where(drift_pattern_arcsec(s)[block] < 0, -1.0, 1.0), math.inf,
+            message(QT_TR_NOOP("no closure reading in mounting(s) {mountings}: a linear drift "
+                               "up to ±{drift} over each such mounting (stated, not measured), "
+                               "the same in all of them, through the design"),
+                    mountings=", ".join(map(str, unchecked)),
+                    drift=f"{result.drift_bound_arcsec:g}\""), common=True))
     fitted = tilt_fit_effect_arcsec(s, r.mounting, r.position)[block]
     if np.any(fitted > 0) and np.max(fitted) > 0.1 * np.min(u_scatter):
         out.append(BudgetComponent(
@@ -216,10 +230,19 @@ def budget_remarks(result) -> tuple[str, ...]:
                                   "it is in the reading scatter"),
              "report": QT_TR_NOOP("each mounting's drift is reported, not removed; within a "
                                   "mounting it is in the reading scatter")}[result.drift_mode]
+    said = message(drift)
+    if result.unchecked_drift_mountings:  # mountings with no closure reading
+        said = message(QT_TR_NOOP("where a mounting ends with a closure reading, {how}; where "
+                                  "none does, its row above, from the drift bound stated")
+                       if result.certificate_of == "encoder" else
+                       QT_TR_NOOP("where a mounting ends with a closure reading, {how}; where "
+                                  "none does, a drift the same in every mounting does not move "
+                                  "the face deviations, and what differs between mountings is "
+                                  "in the reading scatter"), how=said)
     parts = [message(QT_TR_NOOP("Not separate rows of the budget: drift ({drift}); temperature "
                                 "(the angles between a polygon's faces, and an encoder's steps "
                                 "over a full turn, are insensitive to a uniform temperature)"),
-                     drift=message(drift))]
+                     drift=said)]
     fitted = tilt_fit_effect_arcsec(s, r.mounting, r.position)[_item_block(result)]
     if np.any(fitted > 0) and np.max(fitted) <= 0.1 * np.min(_per_point(result)[1]):
         parts.append(message(QT_TR_NOOP("the fitted tilts' own uncertainty changes the "
@@ -299,7 +322,7 @@ def _pair_systematic_u2(result, item: str, metadata: CertificateMetadata | None 
     """A bound on the squared standard uncertainty that the bench's stated bounds (scale,
     unmeasured tilt; rectangular) add to the difference of two values of the set: the scale
     effect's largest difference within the set, and twice the largest tilt effect."""
-    from models.crosscal.uncertainty import tilt_effect_arcsec
+    from models.crosscal.uncertainty import drift_effect_arcsec, tilt_effect_arcsec
 
     n, s, r = result.faces, result.solution, result.readings
     block = slice(0, n) if item == "encoder" else slice(n, 2 * n)
@@ -318,7 +341,8 @@ def _pair_systematic_u2(result, item: str, metadata: CertificateMetadata | None 
                 from models.uncertainty.budget import divisor_for_basis
 
                 comparators += (stated / divisor_for_basis(std.basis)[0]) ** 2 * spread
-    return (scale**2 + tilt**2) / 3.0 + comparators
+    drift = 2.0 * result.drift_bound_arcsec * float(np.max(drift_effect_arcsec(s)[block]))
+    return (scale**2 + tilt**2 + drift**2) / 3.0 + comparators
 
 
 def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str = "",
@@ -326,6 +350,9 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
                          settings: Mapping[str, Any] | None = None) -> CertificateDocument:
     s = result.solution
     values, _, item = _per_point(result)
+    if item == "encoder" and values is not None and result.encoder_u_withheld is not None:
+        raise MetadataError(message(QT_TR_NOOP("no certificate of the encoder: {reason}"),
+                                    reason=result.encoder_u_withheld))
     if values is None:
         raise MetadataError(message(QT_TR_NOOP(
             "no certificate: this design does not determine the {what} (harmonic(s) {orders} "

@@ -152,6 +152,8 @@ class CrossCalibration:
     row_step: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     row_time: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     row_closure: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
+    #: per row: its mounting j (as given)
+    row_mounting: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     #: per row: whether the reading entered the least squares (closure readings in
     #: "spread"/"report" do not)
     row_used: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
@@ -632,6 +634,7 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
         residuals_arcsec=residuals, rank_deficiency=deficiency,
         closure_drift_arcsec=h_drift, drift_mode=mode, tilts=tilts, ac_alignment=ac_alignment,
         pyramidal_arcsec=pyramidal, row_step=k, row_time=t, row_closure=closure, row_used=used,
+        row_mounting=mounting,
         probability=probability, warnings=tuple(warnings),
         face_pyramidal_arcsec=None if faces_fit is None else faces_fit.elevation_arcsec,
         face_pyramidal_u_arcsec=None if faces_fit is None else faces_fit.u_arcsec,

@@ -21,8 +21,9 @@ import numpy as np
 
 from models.crosscal.solve import CrossCalibration, solve_crosscal
 
-__all__ = ["MonteCarloCheck", "design_uncertainty", "estler_full_rosette", "monte_carlo_check",
-           "scale_effect_arcsec", "tilt_effect_arcsec", "tilt_fit_effect_arcsec"]
+__all__ = ["MonteCarloCheck", "design_uncertainty", "drift_effect_arcsec", "drift_pattern_arcsec",
+           "estler_full_rosette", "monte_carlo_check", "scale_effect_arcsec", "tilt_effect_arcsec",
+           "tilt_fit_effect_arcsec", "unchecked_drift_mountings"]
 
 
 def estler_full_rosette(n: int, sigma_arcsec: float) -> tuple[float, float, int]:
@@ -128,6 +129,49 @@ def roll_pattern_arcsec(solution: CrossCalibration, ac_y_arcsec, combine=None) -
 def roll_effect_arcsec(solution: CrossCalibration, ac_y_arcsec, combine=None) -> np.ndarray:
     """|:func:`roll_pattern_arcsec`|: the half-width per radian of roll bound."""
     return np.abs(roll_pattern_arcsec(solution, ac_y_arcsec, combine))
+
+
+def unchecked_drift_mountings(solution: CrossCalibration) -> tuple[int, ...]:
+    """The mountings with no closure reading: their autocollimator drift is neither measured
+    nor removed (the drift over a mounting is seen only by reading its first face again at the
+    end, at the same encoder step)."""
+    mounting = np.asarray(solution.row_mounting)
+    closed = set(mounting[np.asarray(solution.row_closure, dtype=bool)].tolist())
+    return tuple(j for j in solution.mountings if j not in closed)
+
+
+def drift_effect_arcsec(solution: CrossCalibration, combine=None) -> np.ndarray:
+    """Half-width per value of (E, d) (2n) — of ``combine``·(E, d) when given — of the results'
+    change per 1″ of autocollimator drift over a mounting (a full turn), the same in every
+    mounting with no closure reading and linear in the reading's order t: δy = −D·t/n on
+    those mountings' rows, δ(E, d) = −D·Σ_j G_j·(t/n) exactly (|:func:`drift_pattern_arcsec`|).
+    Every mounting starts at step 0 and reads in step order, so t is the step k: a drift of
+    one sign in every mounting is exactly a ramp over the encoder's steps, which no reading
+    but a closure (step 0 read again after the turn) can tell from the encoder's error. Where
+    the mountings drift differently, the difference is seen by the design (with three
+    mountings or more the drifts are determined but for their common part) and is in the
+    reading scatter; the common part is what this bounds. A constant part cancels in each
+    mounting's offset. Zero for the face deviations of such a drift (it follows the steps)."""
+    return np.abs(drift_pattern_arcsec(solution, combine))
+
+
+def drift_pattern_arcsec(solution: CrossCalibration, combine=None) -> np.ndarray:
+    """G·(t/n) summed over the mountings with no closure reading, per value of (E, d) (2n):
+    the results' change per 1″ of drift over a mounting the same in every such mounting
+    (its sign, point by point, is the ramp's over the encoder's steps)."""
+    return np.sum(_drift_patterns(solution, combine), axis=0)
+
+
+def _drift_patterns(solution: CrossCalibration, combine=None) -> np.ndarray:
+    """(mountings with no closure reading × values): G_j·(t/n) of each such mounting."""
+    gain = _gain(solution, combine)
+    t = np.asarray(solution.row_time, dtype=float)
+    mounting = np.asarray(solution.row_mounting)
+    out = [np.zeros(gain.shape[0])]
+    for j in unchecked_drift_mountings(solution):
+        rows = np.flatnonzero(mounting == j)
+        out.append(gain[:, rows] @ (t[rows] / solution.faces))
+    return np.array(out)
 
 
 def tilt_effect_arcsec(solution: CrossCalibration, mounting, position, bound_arcsec: float,

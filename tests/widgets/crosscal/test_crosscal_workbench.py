@@ -422,6 +422,25 @@ def test_presenter_tells_a_bad_design_and_a_refused_save(mocked, tmp_path):
     assert "row 4: mounting 0, face 3 is read again" in view.set_summary.call_args.args[0]
 
 
+def test_presenter_draws_no_encoder_band_without_closure_readings_or_a_drift_bound(mocked):
+    """No closure reading and no drift bound stated: the encoder's U is withheld (a drift of
+    one sign in every mounting is a ramp over its steps), so its curve is drawn without a
+    band and says why; the face deviations keep theirs (audit 69, finding 1)."""
+    from tests.crosscal_simulator import Bench  # the independent bench (numpy only)
+
+    presenter, view = mocked
+    bench = Bench(8, HARMONICS, np.random.default_rng(5).normal(0, 0.4, 8), noise_arcsec=0.02,
+                  drift_arcsec=0.2, drift_common=True, rng=np.random.default_rng(6))
+    rows = [[str(j), str(i), f"{a:.9f}", f"{x:.6f}", ""]
+            for j, i, a, x in bench.rows([0, 1, 3], closure=False)]
+    presenter.table_model.replace_all(rows)
+    presenter.refresh()
+    encoder, polygon, _, _ = view.show_figures.call_args.args
+    assert encoder.series[0].band is None and "withheld" in encoder.series[0].label
+    assert polygon.series[0].band is not None and np.all(np.isfinite(polygon.series[0].band))
+    view.set_reference_enabled.assert_called_with(True)  # the faces are still determined
+
+
 @pytest.mark.slow
 def test_presenter_takes_a_matrix_where_it_would_ask_for_the_mapping(mocked, tmp_path):
     presenter, view = mocked
