@@ -7855,6 +7855,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>当竖直读数无法辨识倾斜时（未给出、全部相等，或只有 3 个面：没有自由度），塔差误差不予扣除：不超过此值、处于最不利方向的倾斜的精确影响计入不确定度（矩形分布）；倾斜已拟合时不使用</translation>
     </message>
     <message>
+        <source>Without a closure reading (the first face read again at the end of the mounting) a mounting&apos;s drift is neither measured nor removed, and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that the readings cannot tell from the encoder&apos;s error: its exact effect for a linear drift up to this over a mounting (a full turn), in every such mounting, enters the uncertainty (rectangular); 0: none stated, and the encoder&apos;s U is then withheld (the face deviations are not affected by a drift common to the mountings)</source>
+        <translation>没有闭合读数（安装位置末尾再读一次第一面）时，该安装位置的漂移既未测量也未消除，而各安装位置同向的漂移是编码器各步上的一个斜坡，读数无法将其与编码器误差区分：每个这样的安装位置中不超过此值（一整转内）的线性漂移的精确影响计入不确定度（矩形分布）；0：未给出，此时编码器的 U 不予给出（各安装位置共同的漂移不影响面偏差）</translation>
+    </message>
+    <message>
         <source>Without vertical readings the polygon&apos;s tilt on the shaft is neither identified nor removed: its exact effect for a tilt up to this, the worst direction, enters the uncertainty (rectangular); not used when vertical readings are given (the tilt is then fitted and removed)</source>
         <translation>无竖直读数时，多面棱体在轴上的倾斜既未辨识也未修正：按不超过此值的倾斜、最不利方向精确计算其影响，计入不确定度（矩形分布）；给出竖直读数时不用（此时倾斜被拟合并修正）</translation>
     </message>
@@ -7933,6 +7937,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>laboratory&apos;s CMC (smallest U), polygon</source>
         <translation>实验室 CMC（最小 U），多面棱体</translation>
+    </message>
+    <message>
+        <source>largest autocollimator drift over a mounting, when not measured</source>
+        <translation>安装位置内自准直仪的最大漂移（未测量时）</translation>
     </message>
     <message>
         <source>largest tilt of the polygon on the shaft, when not identified</source>
@@ -9690,7 +9698,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the encoder&apos;s errors and the face deviations are uncorrelated (a full rosette)</source>
-        <extracomment>a reading further than this from its step is no reading of that step (fraction of a step) vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about their tilt curve are said to be suspect a fitted tilt above this (1°) is no seating but wrong vertical readings how each mounting&apos;s drift is taken from its closure reading (see the module&apos;s text) E_k at steps k = 0 … n−1 (first step first), Σ = 0; None when not determined d_i for faces 1 … n, Σ = 0; None when not determined harmonic orders of E and of d the design cannot see (empty when all are determined) E and d with the undetermined harmonics removed (equal to the results when none is) covariance of (E, d) — of their determined parts — arcsec², 2n × 2n per mounting (in ``mountings`` order): the drift used — fitted (&quot;fit&quot;), the closure drift H (&quot;spread&quot;, &quot;report&quot;); nan without a closure reading per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench computes it (tilt removed), nan without a closure reading per mounting: models.pyramidal.TiltFit, or None (no vertical readings) per row: the tilt&apos;s horizontal effect removed from the reading, arcsec (zeros without) per row: the encoder step k, the reading&apos;s order t in its mounting (closure: n), and whether it is a closure reading per row: whether the reading entered the least squares (closure readings in &quot;spread&quot;/&quot;report&quot; do not) per face (1 … n): the face normal&apos;s own elevation β_i (its pyramidal error), arcsec, in the sense of the vertical reading, relative to the faces&apos; mean plane (mean and first harmonic over the faces removed — they cannot be told from the autocollimator&apos;s vertical zero and a tilt common to all mountings); None without vertical readings of at least two mountings standard uncertainty (k = 1) of each face_pyramidal_arcsec, from the vertical scatter per mounting: RMS of its vertical readings about its tilt and the faces&apos; pyramidal errors (their median over the mountings), arcsec — what the vertical readings are judged by; nan without vertical readings (2n × rows): (E, d) = gain · y, y per row the reading the model sees, y = (a − a_start − k·360°/n)·3600 − c − tilt correction (closure rows included; zero where not used), so a systematic pattern δy in the readings moves the results by exactly gain · δy (a pattern δc in the autocollimator&apos;s readings by −gain · δc)</extracomment>
+        <extracomment>a reading further than this from its step is no reading of that step (fraction of a step) vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about their tilt curve are said to be suspect a fitted tilt above this (1°) is no seating but wrong vertical readings how each mounting&apos;s drift is taken from its closure reading (see the module&apos;s text) E_k at steps k = 0 … n−1 (first step first), Σ = 0; None when not determined d_i for faces 1 … n, Σ = 0; None when not determined harmonic orders of E and of d the design cannot see (empty when all are determined) E and d with the undetermined harmonics removed (equal to the results when none is) covariance of (E, d) — of their determined parts — arcsec², 2n × 2n per mounting (in ``mountings`` order): the drift used — fitted (&quot;fit&quot;), the closure drift H (&quot;spread&quot;, &quot;report&quot;); nan without a closure reading per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench computes it (tilt removed), nan without a closure reading per mounting: models.pyramidal.TiltFit, or None (no vertical readings) per row: the tilt&apos;s horizontal effect removed from the reading, arcsec (zeros without) per row: the encoder step k, the reading&apos;s order t in its mounting (closure: n), and whether it is a closure reading per row: its mounting j (as given) per row: whether the reading entered the least squares (closure readings in &quot;spread&quot;/&quot;report&quot; do not) per face (1 … n): the face normal&apos;s own elevation β_i (its pyramidal error), arcsec, in the sense of the vertical reading, relative to the faces&apos; mean plane (mean and first harmonic over the faces removed — they cannot be told from the autocollimator&apos;s vertical zero and a tilt common to all mountings); None without vertical readings of at least two mountings standard uncertainty (k = 1) of each face_pyramidal_arcsec, from the vertical scatter per mounting: RMS of its vertical readings about its tilt and the faces&apos; pyramidal errors (their median over the mountings), arcsec — what the vertical readings are judged by; nan without vertical readings (2n × rows): (E, d) = gain · y, y per row the reading the model sees, y = (a − a_start − k·360°/n)·3600 − c − tilt correction (closure rows included; zero where not used), so a systematic pattern δy in the readings moves the results by exactly gain · δy (a pattern δc in the autocollimator&apos;s readings by −gain · δc)</extracomment>
         <translation>编码器误差与各面偏差不相关（全组合测量）</translation>
     </message>
     <message>
@@ -9883,6 +9891,14 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>{count} 个安装位置无竖直读数：倾斜至多 {psi}（给定值），取最不利方向，按装置坐标系精确计算其影响，经测量设计传递</translation>
     </message>
     <message>
+        <source>Autocollimator drift (no closure reading)</source>
+        <translation>自准直仪漂移（无闭合读数）</translation>
+    </message>
+    <message>
+        <source>no closure reading in mounting(s) {mountings}: a linear drift up to ±{drift} over each such mounting (stated, not measured), the same in all of them, through the design</source>
+        <translation>安装位置 {mountings} 无闭合读数：每个这样的安装位置内不超过 ±{drift} 的线性漂移（给出值，未测量），各位置相同，经由设计传播</translation>
+    </message>
+    <message>
         <source>Tilt correction (fitted ψ, ω)</source>
         <translation>倾斜修正（拟合的 ψ、ω）</translation>
     </message>
@@ -9903,6 +9919,14 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>各安装位置的漂移仅报告、未修正；安装位置内的漂移含于读数分散性中</translation>
     </message>
     <message>
+        <source>where a mounting ends with a closure reading, {how}; where none does, its row above, from the drift bound stated</source>
+        <translation>以闭合读数结束的安装位置，{how}；没有闭合读数的，见上面其所在行，按给出的漂移界限</translation>
+    </message>
+    <message>
+        <source>where a mounting ends with a closure reading, {how}; where none does, a drift the same in every mounting does not move the face deviations, and what differs between mountings is in the reading scatter</source>
+        <translation>以闭合读数结束的安装位置，{how}；没有闭合读数的，各安装位置相同的漂移不改变面偏差，各安装位置之间不同的部分含在读数分散中</translation>
+    </message>
+    <message>
         <source>Not separate rows of the budget: drift ({drift}); temperature (the angles between a polygon&apos;s faces, and an encoder&apos;s steps over a full turn, are insensitive to a uniform temperature)</source>
         <translation>不单列于预算中：漂移（{drift}）；温度（多面棱体各面间的夹角及编码器整周各步对均匀温度变化不敏感）</translation>
     </message>
@@ -9917,6 +9941,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>The laboratory&apos;s CMC for this quantity, U = {cmc}, holds the U stated from {first} and the U of the difference of any two too: from {first}, at {count} of the {others} other points the U these readings give (down to {lowest}) is below it, so it is stated as the CMC, with the same coverage factor k (ILAC-P14 5.4).</source>
         <translation>实验室对该量的校准和测量能力（CMC）U = {cmc} 同样适用于相对{first}给出的 U 及任意两值之差的 U：相对{first}给出时，在其余 {others} 个点中有 {count} 个点，由本次读数得到的 U（最小 {lowest}）低于此值，因此其 U 按 CMC 给出，包含因子 k 不变（ILAC-P14 5.4）。</translation>
+    </message>
+    <message>
+        <source>no certificate of the encoder: {reason}</source>
+        <translation>不出具编码器证书：{reason}</translation>
     </message>
     <message>
         <source>Encoder</source>
@@ -10052,6 +10080,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>编码器误差 ± U</translation>
     </message>
     <message>
+        <source>encoder error (U withheld: drift not measured)</source>
+        <translation>编码器误差（U 不予给出：未测量漂移）</translation>
+    </message>
+    <message>
         <source>mounting in progress (as taken)</source>
         <translation>进行中的安装位置（按测得）</translation>
     </message>
@@ -10104,8 +10136,12 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>闭合差 (&quot;)</translation>
     </message>
     <message>
+        <source>the encoder&apos;s U is withheld: mounting(s) {mountings} have no closure reading, so the autocollimator&apos;s drift is not measured, and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that these readings cannot tell from the encoder&apos;s error; add a closure reading to each mounting (its first face read again at the end) or state the largest drift over a mounting (drift_bound_arcsec)</source>
+        <extracomment>a residual beyond this many σ is marked as an outlier setting: the largest autocollimator drift over a mounting without a closure reading (budget, through the design); 0: none stated</extracomment>
+        <translation>编码器的 U 不予给出：安装位置 {mountings} 没有闭合读数，因此未测量自准直仪的漂移，而各安装位置同向的漂移是编码器各步上的一个斜坡，这些读数无法将其与编码器误差区分；请为每个安装位置补充闭合读数（末尾再读一次其第一面），或给出安装位置内的最大漂移（drift_bound_arcsec）</translation>
+    </message>
+    <message>
         <source>row {row}: {reason}</source>
-        <extracomment>a residual beyond this many σ is marked as an outlier</extracomment>
         <translation>第 {row} 行：{reason}</translation>
     </message>
     <message>
@@ -10123,6 +10159,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>Encoder set to its nominal steps (no encoder readings).</source>
         <translation>编码器置于标称步位（无编码器读数）。</translation>
+    </message>
+    <message>
+        <source>Encoder error {span} (peak-to-peak {ptp}), U withheld: drift not measured (no closure reading) and no drift bound stated</source>
+        <translation>编码器误差 {span}（峰峰值 {ptp}），U 不予给出：未测量漂移（无闭合读数）且未给出漂移界限</translation>
     </message>
     <message>
         <source>Encoder error {span} (peak-to-peak {ptp}), U up to {u}</source>
@@ -10151,6 +10191,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>This design cannot separate every harmonic: the undetermined results are withheld (see the warnings).</source>
         <translation>此测量设计不能分离全部谐波：未能确定的结果不予给出（见警告）。</translation>
+    </message>
+    <message>
+        <source>Encoder error peak-to-peak {ptp} (U withheld: drift not measured); face deviations {low} … {high} (U ≤ {ud})</source>
+        <translation>编码器误差峰峰值 {ptp}（U 不予给出：未测量漂移）；面偏差 {low} … {high}（U ≤ {ud}）</translation>
     </message>
     <message>
         <source>Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations {low} … {high} (U ≤ {ud})</source>
