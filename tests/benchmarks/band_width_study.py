@@ -28,7 +28,10 @@ def _rig():
 
 
 def cell(curve: str, pattern: str, m: int, runs: int, tests: int, seed: int) -> dict:
-    """Per figure: tests, covered, below, above, lowest probability printed, median width."""
+    """Per figure: tests, covered, below, above, lowest probability printed, median width,
+    and the width ÷ the oracle's (tests/benchmarks/repeatability_study.py: the spread of
+    value − truth between its (1 ∓ p)/2 quantiles, the width an interval about the value
+    needs; the values, and so the oracle, are the same in every checkout)."""
     from models.uncertainty.figure_intervals import figure_intervals, readings_seed
 
     rig = _rig()
@@ -43,7 +46,7 @@ def cell(curve: str, pattern: str, m: int, runs: int, tests: int, seed: int) -> 
                                  seed=readings_seed(readings["up"], readings["down"]))
         for k in rig.BAND_KEYS:
             f = found[k]
-            rows[k].append((f.low, f.high, f.probability, true[k]))
+            rows[k].append((f.low, f.high, f.probability, true[k], f.value))
     out = {}
     for k, r in rows.items():
         a = np.array(r)
@@ -52,6 +55,10 @@ def cell(curve: str, pattern: str, m: int, runs: int, tests: int, seed: int) -> 
                   "p": float(np.min(a[:, 2])), "width": float(np.median(a[:, 1] - a[:, 0])),
                   "low": float(np.median(a[:, 0])), "high": float(np.median(a[:, 1])),
                   "truth": float(a[0, 3])}
+        p = out[k]["p"]
+        err = a[:, 4] - a[:, 3]
+        oracle = float(np.quantile(err, (1 + p) / 2) - np.quantile(err, (1 - p) / 2))
+        out[k]["width_oracle"] = out[k]["width"] / oracle if oracle > 0 else float("nan")
     return out
 
 
