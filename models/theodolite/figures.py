@@ -53,8 +53,10 @@ inputs that are one value at a θ, with the readings without them), fed with:
   place of the bootstrap's interval (models.uncertainty.figure_intervals._band_span_bounds,
   #39), which hold however the scatter changes from θ to θ; the set-up model's error enters
   them at a tenth of the tail, as the largest difference of its errors at two θ. They are
-  wide at few passes (a θ's μ + 2σ up to x̄ + 19.4 s from 3 passes, x̄ + 140 s from 2): 19.5
-  times the width the figure's spread needs at 3 passes, against 2.8 for the bootstrap's.
+  wide at few passes (a θ's μ + 2σ up to x̄ + 13.7 s from 3 passes, x̄ + 70 s from 2; each
+  bound at the whole tail, the pair exact at the least favourable σ, #39's widths; until
+  0.8.17 at half the tail, x̄ + 19.4 s and 140 s): at 0.8.17, 19.5 times the width the
+  figure's spread needs at 3 passes, against 2.8 for the bootstrap's.
 
 Where the laboratory states its CMC (the setting *cmc_arcsec*, the axis error's, in
 arcsec as the figures), a certificate, its JSON and DCC state the intervals held to it

@@ -48,9 +48,10 @@ whose spread over the targets is that of the truth, not that of the noisy means:
 * A↑, A↓, A and P (spans of the targets' bands μ ± 2σ, VDI/DGQ 3441's μ ± (|β|/2 + 3σ̄))
   likewise take bounds from each target's own x̄ and s in place of the bootstrap's interval
   (:func:`_band_span_bounds`: each band's end by the noncentral t, the upper end the
-  intersection–union bound of the two targets that make the figure, the lower end every
-  target's at once, Šidák): with one target's σ × 2 or × 3 the bootstrap's A covered 45–70
-  of 80 tests (#39);
+  intersection–union bound of the two targets that make the figure, each bound at the
+  whole tail, the pair exact at the least favourable σ; the lower end every target's at
+  once, Šidák): with one target's σ × 2 or × 3 the bootstrap's A covered 45–70 of 80
+  tests (#39);
 * with Type B inputs, the interval of the figures of the means (:data:`TYPE_B_FIGURES`) is
   also united with the one from the same readings without them: the reference's errors at
   the targets are in the measured curve, and a reference better than its certificate states
@@ -819,7 +820,11 @@ def _repeatability_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
       from σ↑'s, σ↓'s and |β_i|'s bounds at a third of the tail each (Bonferroni), |β_i| by
       |b_i| ± t·√(s↑²/n↑ + s↓²/n↓) (:func:`_reversal_t`), b_i = x̄↑ − x̄↓; its lower end
       from the 3m bounds of all the targets at once (Bonferroni);
-    * Ps_max = max 3(σ↑ + σ↓) (VDI/DGQ 3441) likewise, at half the tail each direction.
+    * Ps_max = max 3(σ↑ + σ↓) (VDI/DGQ 3441) likewise: a target's σ↑ + σ↓ by the sum of its
+      two bounds, each at the whole tail (upper end) or at Šidák's share of the targets
+      (lower end): the sum holds at that tail whatever σ↓/σ↑, exact where one σ is far the
+      larger (tests/models/uncertainty/test_joint_band_bounds.py; until 0.8.17 at half the
+      tail each, and the lower end's Šidák over both directions' 2m bounds).
 
     :func:`_intervals` states them in place of the bootstrap's interval, which holds only
     where σ is the same at every target (the hull of the two, tried first, covered as these
@@ -857,12 +862,12 @@ def _repeatability_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
         out["R"] = (float(np.max(two_way_low)),
                     float(max(np.max(two_way_high), np.max(high_one["up"]),
                               np.max(high_one["down"]))))
-        half = 0.5 * tail
-        sidak2 = 1.0 - (1.0 - tail) ** (1.0 / (2 * m))
-        out["Ps_max"] = (3.0 * float(np.max(_sigma_bound(s_up, n_up, sidak2, upper=False)
-                                           + _sigma_bound(s_down, n_down, sidak2, upper=False))),
-                         3.0 * float(np.max(_sigma_bound(s_up, n_up, half, upper=True)
-                                           + _sigma_bound(s_down, n_down, half, upper=True))))
+        # σ↑ + σ↓ of a target by the sum of its two bounds at the whole tail, upper at the
+        # tail, lower at Šidák's over the targets (:func:`_band_span_bounds`: the joint bound)
+        out["Ps_max"] = (3.0 * float(np.max(_sigma_bound(s_up, n_up, sidak, upper=False)
+                                           + _sigma_bound(s_down, n_down, sidak, upper=False))),
+                         3.0 * float(np.max(_sigma_bound(s_up, n_up, tail, upper=True)
+                                           + _sigma_bound(s_down, n_down, tail, upper=True))))
     return out
 
 
@@ -915,18 +920,30 @@ def _band_span_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
     targets (and directions) of the figure, A = max U_i − min L_i:
 
     * upper end: the maximum and the minimum are attained at two fixed targets, so their own
-      one-sided bounds (:func:`_band_edge_bound`, each at half the tail, Bonferroni) hold
-      together at 1 − tail with no correction for the m targets, and max Û_i − min L̂_i is
-      above them (the intersection–union bound, Berger 1982, Technometrics 24:295, as R's
-      and B's upper ends);
+      one-sided bounds (:func:`_band_edge_bound`) bound A with no correction for the m
+      targets, and max Û_i − min L̂_i is above them (the intersection–union bound, Berger
+      1982, Technometrics 24:295, as R's and B's upper ends). Each bound is at the WHOLE
+      tail, not half (Bonferroni, until 0.8.17): the miss of Û_i − L̂_j is a function of
+      σ_j/σ_i alone, tends to the tail of one bound where one σ is much the larger (the
+      other term's error counts for nothing there) and is below it in between; where one
+      target and direction makes both ends (A = 4σ_i) it is P(2F s_i < 4σ_i), 0.93 of the
+      tail at 3 runs. The level is exact at the least favourable σ (computed by numerical
+      integration: tests/models/uncertainty/test_joint_band_bounds.py);
     * lower end: every target's lower bound of U_i and upper bound of L_i at once (Šidák
       1967, JASA 62:626, over the independent targets and directions; Bonferroni between a
-      target's two bounds), so max Ǔ_i − min Ľ_i is below A;
+      target's two bounds), so max Ǔ_i − min Ľ_i is below A; where every target is alike
+      this is exact but for the two bounds' overlap (negligible);
     * P = max V_i − min W_i, V_i = max(μ↑ + 1.5σ↑, μ↓ + 1.5σ↓) + 1.5σ of the other direction
-      (m_i + (|β_i| + 3(σ↑ + σ↓))/2), W_i likewise below: each from the bounds of μ ± 1.5σ
-      (:func:`_band_edge_bound`) and of the other direction's σ (:func:`_sigma_bound`), the
-      upper end's 8 at a fixed pair of targets at tail/8 each, the lower end's three per
-      target and direction at once (Šidák over them, Bonferroni within);
+      (m_i + (|β_i| + 3(σ↑ + σ↓))/2), W_i likewise below: each direction's band end by the
+      bound of μ ± 1.5σ (:func:`_band_edge_bound`) with 1.5 times the bound of the other
+      direction's σ (:func:`_sigma_bound`) added, both at the same tail. The sum holds at
+      that tail whatever σ↓/σ↑ (exact at the least favourable ratio, as A's pair above), only
+      the direction that makes V_i (W_i) needs its bound, and the pair V̂_i − Ŵ_j holds at the
+      tail as A's does (a simulation over the three σ ratios of two targets' four samples,
+      2 × 10⁶ draws each: at most 0.996 of the tail): the upper end takes every bound at
+      the whole tail (until 0.8.17, 8 at tail/8: P's interval 1.8–3.1 times as wide). The
+      lower end: every target's four band ends at once, Šidák over the targets and a quarter
+      within (until 0.8.17, each term on its own, six a target);
     * with a set-up model's error at the targets (``modes``: the same in every run and both
       directions, error = z @ modes), :data:`MODEL_SHARE` of the tail goes to it: the upper
       end is widened by the normal quantile times the largest standard deviation of the
@@ -934,9 +951,13 @@ def _band_span_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
       same (every pair at once, ‖z‖ bounded).
 
     The price is width where the runs are few: the bound of μ + 2σ from a target's own 3
-    readings is x̄ + 19.4 s at 98.9 % (x̄ + 7.5 s from 5), and the readings cannot tell which
-    target scatters most; no interval that holds one noisier target the readings do not name
-    can be much narrower."""
+    readings is x̄ + 13.7 s at 97.7 % (x̄ + 6.2 s from 5), and the readings cannot tell which
+    target scatters most; at the least favourable σ (one target's far the largest) these
+    bounds miss at exactly the tail, so no interval of this form that holds one noisier
+    target the readings do not name is narrower. The study of #39's widths (smooth and rough
+    curves, σ varying 1.0–1.3 × or one target's × 3, 12 and 36 targets, 3 and 5 runs, 200
+    tests a cell: tests/benchmarks/band_width_study.py): every cell 199–200 of 200 before and
+    after, widths against 0.8.17's A, A↑, A↓ 0.67–0.81, P 0.32–0.55, Ps_max 0.69–0.80."""
     out: dict[str, tuple[float, float]] = {}
     pair = _model_pair(modes)
     share = MODEL_SHARE if pair > 0.0 else 0.0
@@ -951,10 +972,10 @@ def _band_span_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
         count = sum(x[d].size for d in directions)
         if count == 0:
             continue
-        top = max(float(np.max(_band_edge_bound(x[d], s[d], n[d], 2.0, 0.5 * rest, True)))
+        top = max(float(np.max(_band_edge_bound(x[d], s[d], n[d], 2.0, rest, True)))
                   for d in directions)
-        bottom = min(float(np.min(_band_edge_bound(x[d], s[d], n[d], -2.0, 0.5 * rest,
-                                                   False))) for d in directions)
+        bottom = min(float(np.min(_band_edge_bound(x[d], s[d], n[d], -2.0, rest, False)))
+                     for d in directions)
         cut = 0.5 * (1.0 - (1.0 - rest) ** (1.0 / count))
         top_low = max(float(np.max(_band_edge_bound(x[d], s[d], n[d], 2.0, cut, False)))
                       for d in directions)
@@ -963,10 +984,9 @@ def _band_span_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
         out[key] = (max(top_low - bottom_high - widen_low, 0.0),
                     top - bottom + widen_high)
     if "up" in x and "down" in x and x["up"].size:
-        eighth = rest / 8.0
-        cut = (1.0 - (1.0 - rest) ** (1.0 / (2 * x["up"].size))) / 3.0
-        v_high = _vdi_band_edge(x, s, n, 1.5, eighth, outward=True)
-        w_low = _vdi_band_edge(x, s, n, -1.5, eighth, outward=True)
+        cut = (1.0 - (1.0 - rest) ** (1.0 / x["up"].size)) / 4.0
+        v_high = _vdi_band_edge(x, s, n, 1.5, rest, outward=True)
+        w_low = _vdi_band_edge(x, s, n, -1.5, rest, outward=True)
         v_low = _vdi_band_edge(x, s, n, 1.5, cut, outward=False)
         w_high = _vdi_band_edge(x, s, n, -1.5, cut, outward=False)
         out["P"] = (max(float(np.max(v_low) - np.min(w_high)) - widen_low, 0.0),

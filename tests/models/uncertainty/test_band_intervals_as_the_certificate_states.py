@@ -6,14 +6,15 @@ The certificate says, for A, A↑, A↓ and P: "each end of a target's band (x̄
 P, x̄ ± 1.5s of one direction with 1.5 times the other direction's σ added, that σ bounded
 by chi-square) by its one-sided tolerance bound, from the noncentral t distribution with
 ν = n − 1 (Owen 1968; ISO 16269-6); its upper end the largest bound of a band's top less the
-smallest bound of a band's bottom (… A's two bounds at half the tail each, P's eight at an
-eighth), its lower end from every target's bounds in both directions taken at once (Šidák
-over the targets and directions, Bonferroni within each)"; for R↑: "the bounds from each
-target's own standard deviation (chi-square, ν = n − 1): its upper end the largest of the
-targets' upper bounds, its lower end the largest of their lower bounds taken at once over
-the targets (Šidák)". Computed here from those words with scipy alone, from readings
-simulated by tests/uneven_sigma_axes.py, and compared with the intervals the workbench
-prints (no Type B input: no widening)."""
+smallest bound of a band's bottom (… each bound at the whole tail …), its lower end from
+every target's bounds in both directions taken at once (Šidák over the targets and
+directions, for P over the targets, Bonferroni within each)"; for R↑ and Ps: "the bounds
+from each target's own standard deviation (chi-square, ν = n − 1): its upper end the largest
+of the targets' upper bounds, its lower end the largest of their lower bounds taken at once
+over the targets (Šidák)", Ps = 3(σ↑ + σ↓) by the sum of a target's two bounds. Computed
+here from those words with scipy alone, from readings simulated by
+tests/uneven_sigma_axes.py, and compared with the intervals the workbench prints (no Type B
+input: no widening)."""
 
 from __future__ import annotations
 
@@ -44,8 +45,8 @@ def _sigma(s, n, tail: float, upper: bool) -> np.ndarray:
 
 def _a(x, s, n, directions) -> tuple[float, float]:
     count = sum(x[d].size for d in directions)
-    top = max(_end(x[d], s[d], n[d], 2, TAIL / 2, True).max() for d in directions)
-    bottom = min(_end(x[d], s[d], n[d], -2, TAIL / 2, False).min() for d in directions)
+    top = max(_end(x[d], s[d], n[d], 2, TAIL, True).max() for d in directions)
+    bottom = min(_end(x[d], s[d], n[d], -2, TAIL, False).min() for d in directions)
     each = 1 - (1 - TAIL) ** (1 / count)  # Šidák over the targets and directions
     top_low = max(_end(x[d], s[d], n[d], 2, each / 2, False).max() for d in directions)
     bottom_high = min(_end(x[d], s[d], n[d], -2, each / 2, True).min() for d in directions)
@@ -60,9 +61,8 @@ def _p(x, s, n) -> tuple[float, float]:
                  for d, o in (("up", "down"), ("down", "up"))]
         return np.maximum(*terms) if k > 0 else np.minimum(*terms)
 
-    eighth = TAIL / 8
-    each = (1 - (1 - TAIL) ** (1 / (2 * x["up"].size))) / 3  # three bounds a target and way
-    high = edge(1.5, eighth, True).max() - edge(-1.5, eighth, True).min()
+    each = (1 - (1 - TAIL) ** (1 / x["up"].size)) / 4  # four band ends a target
+    high = edge(1.5, TAIL, True).max() - edge(-1.5, TAIL, True).min()
     low = edge(1.5, each, False).max() - edge(-1.5, each, False).min()
     return max(low, 0.0), high
 
@@ -74,11 +74,16 @@ def test_the_band_figures_intervals_are_reproduced_from_the_words_of_the_certifi
     x, s, n = summary_stats(readings)
     n = {k: v.astype(float) for k, v in n.items()}
     found = figure_intervals(x, s, n, PROBABILITY, seed=68, trials=200, outer=0, inner=0)
+    each_target = 1 - (1 - TAIL) ** (1 / x["up"].size)
     expected = {"A": _a(x, s, n, ("up", "down")), "A_up": _a(x, s, n, ("up",)),
                 "A_down": _a(x, s, n, ("down",)), "P": _p(x, s, n),
                 "R_up": (4 * _sigma(s["up"], n["up"],
                                     1 - (1 - TAIL) ** (1 / x["up"].size), False).max(),
-                         4 * _sigma(s["up"], n["up"], TAIL, True).max())}
+                         4 * _sigma(s["up"], n["up"], TAIL, True).max()),
+                "Ps_max": (3 * (_sigma(s["up"], n["up"], each_target, False)
+                                + _sigma(s["down"], n["down"], each_target, False)).max(),
+                           3 * (_sigma(s["up"], n["up"], TAIL, True)
+                                + _sigma(s["down"], n["down"], TAIL, True)).max())}
     for key, (low, high) in expected.items():
         assert found[key].low == pytest.approx(low, rel=1e-9, abs=1e-12), key
         assert found[key].high == pytest.approx(high, rel=1e-9, abs=1e-12), key
