@@ -952,6 +952,13 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
 
         return fringe_certificate(result, metadata, source_name, self.method_reference, settings)
 
+    def certified_json(self, result, metadata, settings=None):
+        # each signal parameter's U beside it, at the certificate's probability, as the
+        # certificate's parameters table prints it (issue 39; audit 69 finding 2)
+        from models.fringe.report import parameters_json
+
+        return parameters_json(result, float(metadata.coverage_probability))
+
     def inputs_not_stated(self, result, metadata):
         from models.fringe.report import not_stated
 

@@ -62,7 +62,8 @@ def test_following_the_refusals_advice_names_the_order_folded_into_a3(with_theta
     assert "lower the highest harmonic to 3 (below half of N = 8)" in said
     result = FRINGE.analyze(parsed, _settings(with_theta, 3))  # the advice followed
     assert result.sin_fit.orders == (1, 3)
-    assert result.folded_orders == ((5, 3),)
+    # (and order 7 into A1: 7 ≡ −1 mod 8, the next odd order above the model's, audit 69 F6)
+    assert result.folded_orders == ((5, 3), (7, 1))
     folded = [w for w in result.warnings if "hold any harmonic of order 5" in w]
     assert len(folded) == 1
     assert "A3 and B3 hold any harmonic of order 5: orders 5 and 3 alias at N = 8" in folded[0]
@@ -128,13 +129,13 @@ def test_the_half_range_over_the_whole_period_is_withheld_with_the_reason(
     true half range (0.34" here) was outside the interval stated in 77 of 80 records of
     3rd and 5th harmonics of 2-5 mV. No value, no interval, no verdict: the reason."""
     data, truth = _decided(capsys, tmp_path, with_theta, "half_range")
-    assert data["folded_orders"] == [{"order": 5, "into": 3}]
+    assert data["folded_orders"] == [{"order": 5, "into": 3}, {"order": 7, "into": 1}]
     decided = data["decided_quantity"]
     assert decided["value"] is None
     assert decided["interval_low"] is None and decided["interval_high"] is None
     assert decided["verdict"] is None
-    assert "(order 5 into order 3): the error between the samples is not determined" in \
-        decided["reason"]
+    assert "(order 5 into order 3, order 7 into order 1): the error between the samples is " \
+        "not determined" in decided["reason"]
     assert truth > 0.1  # (the rig's truth is there to be missed: a 5th of 4 mV bends it)
 
 
@@ -157,7 +158,9 @@ def test_the_certificate_says_it_at_the_amplitude_and_in_its_remarks():
     names = [str(row[0]) for row in document.parameters.rows]
     assert "sin: A3, with order 5 folded in (they alias at these phases)" in names
     assert "cos: A3, with order 5 folded in (they alias at these phases)" in names
-    assert "sin: A1" in names  # (order 7 folds into A1 too, but is not a harmonic looked at)
+    # order 7 folds into A1 at N = 8 (7 ≡ −1): the next odd order above the model's is
+    # looked at (audit 69 F6)
+    assert "sin: A1, with order 7 folded in (they alias at these phases)" in names
     assert any("A3 and B3 hold any harmonic of order 5" in str(w) for w in document.warnings)
     assert document.conformity.verdict == "not assessed"
     assert "order 5 into order 3" in document.conformity.reason
