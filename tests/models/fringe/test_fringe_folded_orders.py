@@ -164,3 +164,42 @@ def test_the_certificate_says_it_at_the_amplitude_and_in_its_remarks():
     assert any("A3 and B3 hold any harmonic of order 5" in str(w) for w in document.warnings)
     assert document.conformity.verdict == "not assessed"
     assert "order 5 into order 3" in document.conformity.reason
+
+
+#: a head with a 7th harmonic of 1 % (audit 69 finding 6, repro fringe_N12_order7_not_named)
+HEAD7 = Channels(offsets_v=(0.003, -0.004), amplitudes_v=(0.5, 0.49), quadrature_deg=0.5,
+                 sin_harmonics={3: (0.0025, 0.7), 5: (0.001, 2.1), 7: (0.005, 0.3)},
+                 cos_harmonics={3: (0.002, 1.9), 5: (0.0011, -0.6), 7: (0.005, -1.2)},
+                 noise_v=0.0003)
+
+
+def test_at_n12_the_7th_folding_into_the_fitted_5th_is_named():
+    """N = 12, orders 1, 3, 5 fitted: 7 ≡ −5 (mod 12), so a 7th lands whole in A5 (the
+    same as 5 into 3 at N = 8); it was analysed with nothing said. Named now, and A5 seen
+    to hold it (far outside its U of the 5th alone)."""
+    theta = equal_steps(12 * 20, 12)
+    u_sin, u_cos = HEAD7.sample(theta, np.random.default_rng(12))
+    parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
+                             "theta_deg": np.full(theta.size, np.nan)}, np.arange(theta.size))
+    result = FRINGE.analyze(parsed, {"max_order": 5, "lines_per_rev": LINES,
+                                     "samples_per_period": 12})
+    assert result.sin_fit.orders == (1, 3, 5)
+    assert result.folded_orders == ((7, 5),)
+    assert any("A5 and B5 hold any harmonic of order 7: orders 7 and 5 alias at N = 12" in w
+               for w in result.warnings)
+    a5, u5 = result.sin_fit.amplitude[5], result.sin_fit.u_amplitude[5]
+    assert abs(a5 - 0.001) > 10 * u5
+
+
+def test_at_n16_the_7th_is_resolved_and_fitted_and_the_next_order_named():
+    """N = 16: order 7 is below half the phases, so the residuals show it and it is fitted,
+    not folded; the next odd order above it, 9 ≡ −7 (mod 16), is then the one looked at and
+    named (signals that hold a 7th may hold a 9th); 11 ≡ −5 is not looked at."""
+    theta = equal_steps(16 * 20, 16)
+    u_sin, u_cos = HEAD7.sample(theta, np.random.default_rng(16))
+    parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
+                             "theta_deg": np.full(theta.size, np.nan)}, np.arange(theta.size))
+    result = FRINGE.analyze(parsed, {"max_order": 5, "lines_per_rev": LINES,
+                                     "samples_per_period": 16})
+    assert 7 in result.sin_fit.orders
+    assert result.folded_orders == ((9, 7),)
