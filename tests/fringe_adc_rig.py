@@ -82,10 +82,7 @@ class Adc:
         rounding per reading."""
         offsets = rng.normal(0.0, self.offset_u_v, 2)
         ratio = 1.0 + rng.normal(0.0, self.gain_u)
-        if rng.random() < 0.5:
-            gains = (1.0, ratio)
-        else:
-            gains = (1.0 / ratio, 1.0)
+        gains = (1.0, ratio) if rng.random() < 0.5 else (1.0 / ratio, 1.0)
         out = []
         for u, gain, offset in ((u_sin, gains[0], offsets[0]), (u_cos, gains[1], offsets[1])):
             v = gain * u + offset + rng.normal(0.0, self.noise_v, u.size)

@@ -49,7 +49,6 @@ from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import KEY, TITLE
 from models.fringe import plots as fringe_plots
 from models.fringe.compensation_at_samples import compensation_caveat
-from models.fringe.parameter_uncertainty import parameter_uncertainty
 from models.fringe.model import (  # MODEL_INPUT: the compensation's own input
     MODEL_INPUT,
     interpolation_error_rad,
@@ -57,6 +56,7 @@ from models.fringe.model import (  # MODEL_INPUT: the compensation's own input
     model_signal_modes,
     model_signal_std,
 )
+from models.fringe.parameter_uncertainty import parameter_uncertainty
 from models.messages import QT_TR_NOOP, listed, message, separated
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import HalfRangeEstimate

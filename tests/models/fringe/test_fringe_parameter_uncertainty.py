@@ -92,8 +92,7 @@ def _coverage(theta_of_run, per_period: int, adc: Adc = ADC, runs: int = RUNS):
             stated[name] = stated.get(name, 0) + 1
             covered[name] = covered.get(name, 0) + (abs(error) <= expanded)
         for name, value, true in (
-                ("ratio", data["amplitude_ratio"] if "amplitude_ratio" in data
-                 else result.amplitude_ratio, HEAD.amplitude_ratio),
+                ("ratio", result.amplitude_ratio, HEAD.amplitude_ratio),
                 ("quadrature", result.quadrature_error_deg, HEAD.quadrature_deg)):
             key = ("expanded_uncertainty_amplitude_ratio" if name == "ratio"
                    else "expanded_uncertainty_quadrature_error_deg")
