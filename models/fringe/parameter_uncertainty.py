@@ -17,6 +17,19 @@ gain-ratio u of 0.1 % and 0.3 %. So, with the figures the settings state:
 * neither on a harmonic's phase c_k nor the quadrature error (a gain or an offset moves no
   zero crossing of a harmonic's own phasor).
 
+A harmonic's phase: its U is not the linearised k·u_A/A where the amplitude is a few of its
+U (audit 69 finding 2c: c5 covered 144 of 158 runs, floor 146; a rig of the tests' with
+harmonics of 2–4 σ, 89–91 %). The fitted phasor is the true one plus a normal error of σ
+across it and along it; the error across, σ⊥ = u(c)·Â, is normal whatever the amplitude, so
+the true phase lies within arcsin(k·σ⊥/A) of the estimate's at the probability of k. The
+amplitude there is not the fitted Â, biased high by the noise (Rice: E[Â²] = A² + σ∥² +
+σ⊥²), and a phase is printed only where Â is large, which selects noise that lengthened it:
+A is taken as √(Â² − 2(σ∥² + σ⊥²)), twice the bias removed, and the phase is stated only
+where that exceeds k·σ⊥ (the arcsine defined). Measured on the exact phasor distribution
+(k = 2, 400 000 draws a point): the runs printed covered 95.4 % at A = 2σ, 96.5–97.2 % at
+2.5–4σ, 95.6 % at 20σ (the linearised U, printed above U: 92.4 %, 94.0 %, 94.8 % at 2, 2.5,
+3σ); at A = 1.5σ, printed in 14 % of runs, 93 %.
+
 The quantisation and linearity figures are errors of each reading bounded by the figure,
 not one value a run: what they leave in a parameter is in the fit's scatter (quantisation)
 or not stated here (linearity, a pattern over the voltage: see docs).
@@ -37,7 +50,8 @@ from dataclasses import dataclass, field
 
 from models.messages import QT_TR_NOOP
 
-__all__ = ["ESTIMATED_REASON", "ParameterUncertainty", "parameter_uncertainty"]
+__all__ = ["ESTIMATED_REASON", "ParameterUncertainty", "parameter_uncertainty",
+           "phase_expanded"]
 
 #: why no parameter has a U when the phase was estimated from the signals
 ESTIMATED_REASON = QT_TR_NOOP(
@@ -87,3 +101,15 @@ def parameter_uncertainty(result) -> ParameterUncertainty:
     quadrature = math.hypot(s.u_phase.get(1, math.nan), c.u_phase.get(1, math.nan))
     return ParameterUncertainty(channels, u_ratio, quadrature, "",
                                 adc_stated=bool(offset_v or gain))
+
+
+def phase_expanded(amplitude: float, u_amplitude: float, u_phase: float, k: float) -> float:
+    """U of a harmonic's phase (rad) from the fit's amplitude ``amplitude`` and its standard
+    uncertainties of the amplitude and of the phase (linearised), at the coverage factor
+    ``k``: arcsin(k·σ⊥ / A'), A' the amplitude with twice its noise bias removed; NaN where
+    the phase is not stated (A' ≤ k·σ⊥, or the figures not finite)."""
+    perp = u_phase * abs(amplitude)
+    reduced = amplitude ** 2 - 2.0 * (u_amplitude ** 2 + perp ** 2)
+    if not (math.isfinite(reduced) and math.isfinite(perp)) or reduced <= (k * perp) ** 2:
+        return math.nan
+    return math.asin(k * perp / math.sqrt(reduced))

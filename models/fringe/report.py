@@ -56,7 +56,7 @@ from models.fringe.model import (  # MODEL_INPUT: the compensation's own input
     model_signal_modes,
     model_signal_std,
 )
-from models.fringe.parameter_uncertainty import parameter_uncertainty
+from models.fringe.parameter_uncertainty import parameter_uncertainty, phase_expanded
 from models.messages import QT_TR_NOOP, listed, message, separated
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import HalfRangeEstimate
@@ -423,21 +423,19 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
             # each parameter to the decimal of its U, two significant digits (GUM 7.2.6)
             rows.append((named(f"{label}: A{h}", h),
                          *gum_pair(fit.amplitude[h], k * ua, " V")))
-            if phase_stated(fit.amplitude[h], ua, up, k):
-                rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], k * up, " rad",
+            phase_u = phase_expanded(fit.amplitude[h], fit.u_amplitude.get(h, math.nan), up, k)
+            if math.isfinite(phase_u):
+                rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], phase_u, " rad",
                                                          signed=True)))
+            elif abs(fit.amplitude[h]) > k * ua:  # a phase, but its U would not hold
+                rows.append((f"{label}: c{h}", message(QT_TR_NOOP("undefined")),
+                             message(QT_TR_NOOP("amplitude A{k} too small against its U for "
+                                                "the phase's U to hold"), k=h)))
             else:  # the phase of a harmonic indistinguishable from zero means nothing
                 rows.append((f"{label}: c{h}", message(QT_TR_NOOP("undefined")),
                              message(QT_TR_NOOP("amplitude not significant (A{k} ≤ U)"), k=h)))
         rows += _fit_quality_rows(label, fit)
     return rows
-
-
-def phase_stated(amplitude: float, u_amplitude: float, u_phase: float, k: float) -> bool:
-    """Whether a harmonic's phase is stated with a U: its amplitude above its U and the
-    phase's U below half a turn (else the phase of a harmonic indistinguishable from zero
-    means nothing)."""
-    return abs(amplitude) > k * u_amplitude and bool(np.isfinite(u_phase)) and k * u_phase < np.pi
 
 
 def _fit_quality_rows(label: str, fit) -> list[tuple[str, str, str]]:
@@ -467,11 +465,13 @@ def parameters_json(result, probability: float) -> dict[str, Any]:
         params: dict[str, Any] = {}
         for name, value in fit.as_dict().items():
             params[name] = value
-            figure = u.get(name)
-            if name.startswith("c") and figure is not None and not phase_stated(
-                    fit.amplitude[int(name[1:])], u[f"A{name[1:]}"], figure, k):
-                figure = None
-            params[f"expanded_uncertainty_{name}"] = expanded(figure)
+            figure = expanded(u.get(name))
+            if name.startswith("c") and figure is not None:  # (as the table: phase_expanded)
+                h = int(name[1:])
+                phase_u = phase_expanded(fit.amplitude[h], fit.u_amplitude.get(h, math.nan),
+                                         u[name], k)
+                figure = phase_u if math.isfinite(phase_u) else None
+            params[f"expanded_uncertainty_{name}"] = figure
         out[f"{label}_params"] = params
     sin_u, cos_u = (stated.channels.get(c, {}).get("A0") for c in ("sin", "cos"))
     out["expanded_uncertainty_offsets_v"] = [expanded(sin_u), expanded(cos_u)]
