@@ -31,8 +31,9 @@ where that exceeds k·σ⊥ (the arcsine defined). Measured on the exact phasor 
 3σ); at A = 1.5σ, printed in 14 % of runs, 93 %.
 
 The quantisation and linearity figures are errors of each reading bounded by the figure,
-not one value a run: what they leave in a parameter is in the fit's scatter (quantisation)
-or not stated here (linearity, a pattern over the voltage: see docs).
+not one value a run: what quantisation leaves in a parameter is in the fit's scatter; what
+an integral nonlinearity (a pattern over the voltage) leaves in the offsets and amplitudes
+is not in these U (not yet studied).
 
 With the phase estimated from the signals (no θ column, no N), the parameters are those of
 the estimated phase's frame, which the harmonics shift: any distortion of the phase that
