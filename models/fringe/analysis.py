@@ -829,11 +829,20 @@ def _with_u(value: float, u: float | None, signed: bool = False) -> str:
     return f"{value:{spec}.{decimals}f} ± {u:.{decimals}f}"
 
 
-def _fit_line(name: str, fit: ChannelFit) -> str:
-    parts = [f"{name}0 = {_with_u(fit.offset, fit.u_offset, signed=True)} V"]
+def _fit_line(name: str, fit: ChannelFit, u: Mapping[str, float] | None) -> Any:
+    """A channel's parameters with their standard uncertainty ``u`` (the fit's scatter and
+    the ADC's stated figures: models.fringe.parameter_uncertainty), or without any (None:
+    the phase estimated from the signals, no u determined)."""
+    def of(key: str) -> float | None:
+        return None if u is None else u.get(key)
+
+    parts = [f"{name}0 = {_with_u(fit.offset, of('A0'), signed=True)} V"]
     for k in fit.orders:
-        parts.append(f"{name}{k} = {_with_u(fit.amplitude[k], fit.u_amplitude.get(k))} V "
+        parts.append(f"{name}{k} = {_with_u(fit.amplitude[k], of(f'A{k}'))} V "
                      f"∠ {fit.phase[k]:+.4f} rad")
+    if u is None:
+        return joined(("  " + ", ".join(parts) + " ",
+                       message(QT_TR_NOOP("(no u: the phase was estimated from the signals)"))))
     return "  " + ", ".join(parts) + " (± u, k = 1)"
 
 
@@ -843,6 +852,9 @@ _SOURCE_TEXT = {"samples_per_period": QT_TR_NOOP("phase from equal steps, {n} sa
 
 
 def summary(result: FringeResult) -> str:
+    from models.fringe.parameter_uncertainty import parameter_uncertainty
+
+    stated = parameter_uncertainty(result)
     period, sym = result.period_length, result.unit_symbol
     raw = result.raw_error
     scale = (message(QT_TR_NOOP("L = {lines} (period {period})"), lines=result.lines_per_rev,
@@ -856,8 +868,10 @@ def summary(result: FringeResult) -> str:
                         n=raw.size, source=source, scale=scale),
                 message(QT_TR_NOOP("; the motion reversed {count} time(s)"),
                         count=result.reversals) if result.reversals else "")),
-        _fit_line("A", result.sin_fit) + f"; R² = {result.sin_fit.r_squared:.8f}",
-        _fit_line("B", result.cos_fit) + f"; R² = {result.cos_fit.r_squared:.8f}",
+        joined((_fit_line("A", result.sin_fit, stated.channels.get("sin")),
+                f"; R² = {result.sin_fit.r_squared:.8f}")),
+        joined((_fit_line("B", result.cos_fit, stated.channels.get("cos")),
+                f"; R² = {result.cos_fit.r_squared:.8f}")),
         message(QT_TR_NOOP("Offsets {sin} / {cos} mV, amplitude ratio {ratio}, quadrature error "
                            "{quadrature}°"),
                 sin=f"{1e3 * result.sin_fit.offset:+.2f}", cos=f"{1e3 * result.cos_fit.offset:+.2f}",
@@ -951,6 +965,13 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
         from models.fringe.report import fringe_certificate
 
         return fringe_certificate(result, metadata, source_name, self.method_reference, settings)
+
+    def certified_json(self, result, metadata, settings=None):
+        # each signal parameter's U beside it, at the certificate's probability, as the
+        # certificate's parameters table prints it (issue 39; audit 69 finding 2)
+        from models.fringe.report import parameters_json
+
+        return parameters_json(result, float(metadata.coverage_probability))
 
     def inputs_not_stated(self, result, metadata):
         from models.fringe.report import not_stated

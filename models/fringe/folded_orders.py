@@ -16,10 +16,18 @@ alone about N steps) and at least :data:`FOLD_SHARE` of j's harmonic lands in k'
 (j regressed on the fitted columns at the sampled phases: the largest singular value of the
 block of order k's coefficients, 1 when j and k alias). An order the phases do tell apart
 (random phases, a record of a few samples that does not alias) is not named: the residuals
-show it if the signals hold it (models.fringe.unmodelled_harmonics). The orders looked at are
-those of the method's model (1, 3, 5) and every order up to the highest fitted: the
-harmonics a read head's signals are known to hold; higher orders fold likewise and are not
-claimed either way.
+show it if the signals hold it (models.fringe.unmodelled_harmonics).
+
+The orders looked at: every order not fitted up to :data:`BEYOND` above the highest of the
+method's model (5) or of the fit, whichever is higher: 1 … 7 for the model's orders. An
+order below half the sampled phases is also in the residuals' test; one above folds and
+only this check can name it. A read head's signals hold odd harmonics falling with their
+order, and the next odd order above the fitted ones is the first the fit leaves out (audit
+69 finding 6: at N = 12 a 7th of 1 % folds into the fitted 5th exactly, 7 ≡ −5 mod 12,
+and nothing was said; at N = 8 orders 6 and 7 fold into 2 and 1 as 5 does into 3). Higher
+orders fold likewise at any N (at N = 64, 59 into 5), and a check of every order would
+name a fold at every N: they are not claimed either way, smaller still than the one above
+the fit.
 """
 
 from __future__ import annotations
@@ -31,10 +39,13 @@ import numpy as np
 
 from models.fringe.order_separation import order_gram, pair_separation, required_separation
 
-__all__ = ["FOLD_SHARE", "MODEL_HIGHEST", "FoldedOrder", "folded_orders"]
+__all__ = ["BEYOND", "FOLD_SHARE", "MODEL_HIGHEST", "FoldedOrder", "folded_orders"]
 
 #: the highest order of the method's model (Gao et al. 2013, eqs 8–9: orders 1, 3, 5)
 MODEL_HIGHEST = 5
+#: the orders looked at reach this far above the highest of the model's or the fit's: the
+#: next odd order, the first a read head's signals hold that the fit leaves out
+BEYOND = 2
 #: an order not fitted is named when at least this share of its harmonic's amplitude lands
 #: in one fitted amplitude (1 at exact aliasing; random phases give about 1/√n)
 FOLD_SHARE = 0.5
@@ -53,13 +64,14 @@ class FoldedOrder:
 def folded_orders(phases_rad: np.ndarray, orders: tuple[int, ...],
                   weights: np.ndarray | None = None,
                   phase_u_rad: float = 0.0) -> tuple[FoldedOrder, ...]:
-    """The orders not in ``orders`` (up to :data:`MODEL_HIGHEST` or the highest fitted) that
+    """The orders not in ``orders`` (up to :data:`BEYOND` above :data:`MODEL_HIGHEST` or the
+    highest fitted, whichever is higher) that
     fold into a fitted order's amplitude (or the offset) at the phases ``phases_rad``
     (``weights``: samples at each, when they are distinct phases; ``phase_u_rad`` their
     standard uncertainty, as the refusal takes it), the lowest first. The fitted design must
     be of full rank (the orders fitted are told apart)."""
     fitted = (0, *orders)
-    highest = max(MODEL_HIGHEST, max(orders, default=0))
+    highest = max(MODEL_HIGHEST, max(orders, default=0)) + BEYOND
     others = [j for j in range(1, highest + 1) if j not in orders]
     if not others:
         return ()

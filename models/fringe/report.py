@@ -56,6 +56,7 @@ from models.fringe.model import (  # MODEL_INPUT: the compensation's own input
     model_signal_modes,
     model_signal_std,
 )
+from models.fringe.parameter_uncertainty import parameter_uncertainty, phase_expanded
 from models.messages import QT_TR_NOOP, listed, message, separated
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import HalfRangeEstimate
@@ -395,29 +396,93 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
                                   "these phases)"),
                        name=name, orders=", ".join(map(str, folded[h])))
 
+    # each parameter's u: the fit's scatter and the ADC's stated offset and gain where they
+    # act on it; none with an estimated phase (parameter_uncertainty)
+    stated = parameter_uncertainty(result)
+    if stated.withheld:
+        no_u = message(QT_TR_NOOP("no U (phase estimated from the signals)"))
+        rows = []
+        for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
+            rows.append((named(message(QT_TR_NOOP("{channel}: offset A₀"), channel=label), 0),
+                         gum_pair(fit.offset, math.nan, " V", signed=True)[0], no_u))
+            for h in fit.orders:
+                rows.append((named(f"{label}: A{h}", h),
+                             gum_pair(fit.amplitude[h], math.nan, " V")[0], no_u))
+                rows.append((f"{label}: c{h}",
+                             gum_pair(fit.phase[h], math.nan, " rad", signed=True)[0], no_u))
+            rows += _fit_quality_rows(label, fit)
+        return rows
     rows = []
     for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
+        u = stated.channels[label]
         rows.append((named(message(QT_TR_NOOP("{channel}: offset A₀"), channel=label), 0),
-                     *gum_pair(fit.offset, k * fit.u_offset, " V", signed=True)))
+                     *gum_pair(fit.offset, k * u["A0"], " V", signed=True)))
         for h in fit.orders:
-            ua = fit.u_amplitude.get(h, float("nan"))
-            up = fit.u_phase.get(h, float("nan"))
+            ua = u[f"A{h}"]
+            up = u[f"c{h}"]
             # each parameter to the decimal of its U, two significant digits (GUM 7.2.6)
             rows.append((named(f"{label}: A{h}", h),
                          *gum_pair(fit.amplitude[h], k * ua, " V")))
-            if abs(fit.amplitude[h]) > k * ua and np.isfinite(up) and k * up < np.pi:
-                rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], k * up, " rad",
+            phase_u = phase_expanded(fit.amplitude[h], fit.u_amplitude.get(h, math.nan), up, k)
+            if math.isfinite(phase_u):
+                rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], phase_u, " rad",
                                                          signed=True)))
+            elif abs(fit.amplitude[h]) > k * ua:  # a phase, but its U would not hold
+                rows.append((f"{label}: c{h}", message(QT_TR_NOOP("undefined")),
+                             message(QT_TR_NOOP("amplitude A{k} too small against its U for "
+                                                "the phase's U to hold"), k=h)))
             else:  # the phase of a harmonic indistinguishable from zero means nothing
                 rows.append((f"{label}: c{h}", message(QT_TR_NOOP("undefined")),
                              message(QT_TR_NOOP("amplitude not significant (A{k} ≤ U)"), k=h)))
-        # the fit's quality figures have no U: each in the value column of a row of its own,
-        # the U column empty (the residual RMS printed there read as the U of R²)
-        rows.append((message(QT_TR_NOOP("{channel}: R² of the fit"), channel=label),
-                     f"{fit.r_squared:.8f}", ""))
-        rows.append((message(QT_TR_NOOP("{channel}: residual RMS of the fit"), channel=label),
-                     f"{fit.residual_rms * 1e3:.3g} mV", ""))
+        rows += _fit_quality_rows(label, fit)
     return rows
+
+
+def _fit_quality_rows(label: str, fit) -> list[tuple[str, str, str]]:
+    # the fit's quality figures have no U: each in the value column of a row of its own,
+    # the U column empty (the residual RMS printed there read as the U of R²)
+    return [(message(QT_TR_NOOP("{channel}: R² of the fit"), channel=label),
+             f"{fit.r_squared:.8f}", ""),
+            (message(QT_TR_NOOP("{channel}: residual RMS of the fit"), channel=label),
+             f"{fit.residual_rms * 1e3:.3g} mV", "")]
+
+
+def parameters_json(result, probability: float) -> dict[str, Any]:
+    """The JSON's signal parameters with their U beside each (``expanded_uncertainty_A0``
+    beside ``A0`` …, null where the certificate's table states none: a phase of a harmonic
+    not significant, or every one with an estimated phase, ``parameters_uncertainty_withheld``
+    then saying why), the offsets', the amplitude ratio's and the quadrature error's, and
+    the k and ν of the table (:func:`parameter_coverage`)."""
+    k, nu = parameter_coverage(result, probability)
+    stated = parameter_uncertainty(result)
+
+    def expanded(u: float | None) -> float | None:
+        return k * u if u is not None and math.isfinite(u) else None
+
+    out: dict[str, Any] = {}
+    for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
+        u = stated.channels.get(label, {})
+        params: dict[str, Any] = {}
+        for name, value in fit.as_dict().items():
+            params[name] = value
+            figure = expanded(u.get(name))
+            if name.startswith("c") and figure is not None:  # (as the table: phase_expanded)
+                h = int(name[1:])
+                phase_u = phase_expanded(fit.amplitude[h], fit.u_amplitude.get(h, math.nan),
+                                         u[name], k)
+                figure = phase_u if math.isfinite(phase_u) else None
+            params[f"expanded_uncertainty_{name}"] = figure
+        out[f"{label}_params"] = params
+    sin_u, cos_u = (stated.channels.get(c, {}).get("A0") for c in ("sin", "cos"))
+    out["expanded_uncertainty_offsets_v"] = [expanded(sin_u), expanded(cos_u)]
+    out["expanded_uncertainty_amplitude_ratio"] = expanded(stated.ratio)
+    out["expanded_uncertainty_quadrature_error_deg"] = expanded(
+        math.degrees(stated.quadrature_rad))
+    out["parameters_coverage_factor"] = k if not stated.withheld else None
+    out["parameters_effective_dof_at_least"] = nu if not stated.withheld else None
+    if stated.withheld:
+        out["parameters_uncertainty_withheld"] = str(message(stated.withheld))
+    return out
 
 
 #: a record of up to this many samples is printed whole on the certificate
@@ -459,10 +524,14 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     correction = comp - raw
     period, sym, unit = result.period_length, result.unit_symbol, result.unit
     k_fit, nu_fit = parameter_coverage(result, budget.probability)
+    stated = parameter_uncertainty(result)
+    # the ADC's figures (ν infinite) raise the effective degrees of freedom above the fit's:
+    # k of the fit's ν is then on the safe side, and ν is said as a bound
     parameters = Table(QT_TR_NOOP("Signal parameters identified"),
                        (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
-                        f"U (k = {k_fit:.2f}, ν = {nu_fit})"),
-                       _parameter_rows(result, k_fit))
+                        f"U (k = {k_fit:.2f}, ν {'≥' if stated.adc_stated else '='} {nu_fit})"),
+                       _parameter_rows(result, k_fit),
+                       message(stated.withheld) if stated.withheld else "")
     per = min(result.samples_per_period or 64, raw.size)
     idx = printed_samples(raw, comp, big_u, per)
     if idx.size == raw.size:

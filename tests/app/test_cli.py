@@ -105,7 +105,10 @@ def test_fringe_json_keys(capsys, samples_dir):
                              "--lines-per-rev", "16384", "--samples-per-period", "64")
     assert code == 0, err
     data = json.loads(out)
-    assert set(data["sin_params"]) == {"A0", "A1", "c1", "A3", "c3", "A5", "c5"}
+    names = {"A0", "A1", "c1", "A3", "c3", "A5", "c5"}
+    # each parameter's U beside it (issue 39, audit 69 finding 2)
+    assert set(data["sin_params"]) == names | {f"expanded_uncertainty_{n}" for n in names}
+    assert all(data["sin_params"][f"expanded_uncertainty_{n}"] > 0 for n in names)
     assert data["sin_params"]["A1"] == pytest.approx(3.7763, abs=0.001)
     assert data["cos_params"]["A3"] == pytest.approx(0.079, abs=0.001)
     assert len(data["raw_error_arcsec"]) == 512

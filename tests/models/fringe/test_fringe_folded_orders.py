@@ -62,7 +62,8 @@ def test_following_the_refusals_advice_names_the_order_folded_into_a3(with_theta
     assert "lower the highest harmonic to 3 (below half of N = 8)" in said
     result = FRINGE.analyze(parsed, _settings(with_theta, 3))  # the advice followed
     assert result.sin_fit.orders == (1, 3)
-    assert result.folded_orders == ((5, 3),)
+    # (and order 7 into A1: 7 ≡ −1 mod 8, the next odd order above the model's, audit 69 F6)
+    assert result.folded_orders == ((5, 3), (7, 1))
     folded = [w for w in result.warnings if "hold any harmonic of order 5" in w]
     assert len(folded) == 1
     assert "A3 and B3 hold any harmonic of order 5: orders 5 and 3 alias at N = 8" in folded[0]
@@ -128,13 +129,13 @@ def test_the_half_range_over_the_whole_period_is_withheld_with_the_reason(
     true half range (0.34" here) was outside the interval stated in 77 of 80 records of
     3rd and 5th harmonics of 2-5 mV. No value, no interval, no verdict: the reason."""
     data, truth = _decided(capsys, tmp_path, with_theta, "half_range")
-    assert data["folded_orders"] == [{"order": 5, "into": 3}]
+    assert data["folded_orders"] == [{"order": 5, "into": 3}, {"order": 7, "into": 1}]
     decided = data["decided_quantity"]
     assert decided["value"] is None
     assert decided["interval_low"] is None and decided["interval_high"] is None
     assert decided["verdict"] is None
-    assert "(order 5 into order 3): the error between the samples is not determined" in \
-        decided["reason"]
+    assert "(order 5 into order 3, order 7 into order 1): the error between the samples is " \
+        "not determined" in decided["reason"]
     assert truth > 0.1  # (the rig's truth is there to be missed: a 5th of 4 mV bends it)
 
 
@@ -157,7 +158,48 @@ def test_the_certificate_says_it_at_the_amplitude_and_in_its_remarks():
     names = [str(row[0]) for row in document.parameters.rows]
     assert "sin: A3, with order 5 folded in (they alias at these phases)" in names
     assert "cos: A3, with order 5 folded in (they alias at these phases)" in names
-    assert "sin: A1" in names  # (order 7 folds into A1 too, but is not a harmonic looked at)
+    # order 7 folds into A1 at N = 8 (7 ≡ −1): the next odd order above the model's is
+    # looked at (audit 69 F6)
+    assert "sin: A1, with order 7 folded in (they alias at these phases)" in names
     assert any("A3 and B3 hold any harmonic of order 5" in str(w) for w in document.warnings)
     assert document.conformity.verdict == "not assessed"
     assert "order 5 into order 3" in document.conformity.reason
+
+
+#: a head with a 7th harmonic of 1 % (audit 69 finding 6, repro fringe_N12_order7_not_named)
+HEAD7 = Channels(offsets_v=(0.003, -0.004), amplitudes_v=(0.5, 0.49), quadrature_deg=0.5,
+                 sin_harmonics={3: (0.0025, 0.7), 5: (0.001, 2.1), 7: (0.005, 0.3)},
+                 cos_harmonics={3: (0.002, 1.9), 5: (0.0011, -0.6), 7: (0.005, -1.2)},
+                 noise_v=0.0003)
+
+
+def test_at_n12_the_7th_folding_into_the_fitted_5th_is_named():
+    """N = 12, orders 1, 3, 5 fitted: 7 ≡ −5 (mod 12), so a 7th lands whole in A5 (the
+    same as 5 into 3 at N = 8); it was analysed with nothing said. Named now, and A5 seen
+    to hold it (far outside its U of the 5th alone)."""
+    theta = equal_steps(12 * 20, 12)
+    u_sin, u_cos = HEAD7.sample(theta, np.random.default_rng(12))
+    parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
+                             "theta_deg": np.full(theta.size, np.nan)}, np.arange(theta.size))
+    result = FRINGE.analyze(parsed, {"max_order": 5, "lines_per_rev": LINES,
+                                     "samples_per_period": 12})
+    assert result.sin_fit.orders == (1, 3, 5)
+    assert result.folded_orders == ((7, 5),)
+    assert any("A5 and B5 hold any harmonic of order 7: orders 7 and 5 alias at N = 12" in w
+               for w in result.warnings)
+    a5, u5 = result.sin_fit.amplitude[5], result.sin_fit.u_amplitude[5]
+    assert abs(a5 - 0.001) > 10 * u5
+
+
+def test_at_n16_the_7th_is_resolved_and_fitted_and_the_next_order_named():
+    """N = 16: order 7 is below half the phases, so the residuals show it and it is fitted,
+    not folded; the next odd order above it, 9 ≡ −7 (mod 16), is then the one looked at and
+    named (signals that hold a 7th may hold a 9th); 11 ≡ −5 is not looked at."""
+    theta = equal_steps(16 * 20, 16)
+    u_sin, u_cos = HEAD7.sample(theta, np.random.default_rng(16))
+    parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
+                             "theta_deg": np.full(theta.size, np.nan)}, np.arange(theta.size))
+    result = FRINGE.analyze(parsed, {"max_order": 5, "lines_per_rev": LINES,
+                                     "samples_per_period": 16})
+    assert 7 in result.sin_fit.orders
+    assert result.folded_orders == ((9, 7),)

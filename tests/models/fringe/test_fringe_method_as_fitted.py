@@ -95,7 +95,8 @@ def test_the_method_names_the_5th_where_it_is_fitted_and_folds_nothing(tmp_path,
 
 
 SAID = ("at the sampled phases only: between them the correction table is built from fitted "
-        "orders that hold orders not fitted (order 5 into order 3), and the error it leaves "
+        "orders that hold orders not fitted (order 5 into order 3, order 7 into order 1), and "
+        "the error it leaves "
         "there is not determined")
 
 
