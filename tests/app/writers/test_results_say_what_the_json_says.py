@@ -326,3 +326,20 @@ def test_the_theodolite_figures_are_figures_with_their_interval_in_the_dcc(issue
                                          r"\arcsecond")
         assert listed["coverageProbability"][0] == pytest.approx(
             figure["coverage_probability"], rel=1e-9)
+
+
+def test_an_interferometers_budget_is_headed_and_stated_in_nanometres(tmp_path):
+    """The fringe workbench on an interferometer (errors in nm): the budget in nm, as the
+    PDF's, and the same numbers when the results are read in µrad (they were headed ″ and
+    converted as arcseconds)."""
+    signals = tmp_path / "interferometer.csv"
+    _fringe_csv(signals, np.random.default_rng(316))
+    sheets = {}
+    for unit in ("arcsec", "urad"):
+        book = tmp_path / f"{unit}.xlsx"
+        _main(["analyze", "fringe", str(signals), "--period-nm", "316.4",
+               "--samples-per-period", "16", "--results", str(book), "--unit", unit])
+        sheets[unit] = _budget(load_workbook(book))
+    header, rows = sheets["arcsec"]
+    assert header[3] == "Value (nm)" and header[5] == "u (nm)" and header[7] == "c·u (nm)"
+    assert sheets["urad"] == (header, rows)
