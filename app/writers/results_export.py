@@ -30,10 +30,11 @@ from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
-from models.certificate.document import CertificateDocument, budget_table
+from models.certificate.document import CertificateDocument, Table, budget_table
 from models.certificate.export_resolution import rounded_point_columns
+from models.certificate.interval_note import interval_cells
 from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_in_unit, text_in_unit
-from models.messages import Message, joined, message, separated
+from models.messages import QT_TR_NOOP, Message, joined, message, separated
 from models.project.atomic_write import write_bytes_atomic
 from models.quantity import UNITS
 from models.register.wording import revision_words
@@ -68,11 +69,14 @@ _JOINS = {" … ": ("from", "to"), " ± ": ("", "U"), " / ": ("first", "second")
           ", U = ": ("", "U"), "U−/U+": ("", "U−", "U+")}
 _NUMBER = r"[+\-−]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-−]?\d+)?"
 # a figure with its U as the certificate prints it: "12.34\", U = 0.81\"", or an asymmetric
-# interval "12.34\", U = −0.62\"/+0.81\"" (also on a line of its own under the figure)
-_WITH_U = re.compile(r"\s*(?P<value>.+?)(?:, U = |\s*\n\s*)(?P<lower>−\S+?)/(?P<upper>\+\S+)\s*")
+# interval "12.34\", U = −0.62\"/+0.81\"" (also on a line of its own under the figure); a
+# unit after a space, "4.9 µm\n−1.8 µm/+1.5 µm" (a linear axis: audit 69 finding 4, the
+# figure was left a text cell)
+_WITH_U = re.compile(r"\s*(?P<value>.+?)(?:, U = |\s*\n\s*)(?P<lower>−[^/\n]+?)/"
+                     r"(?P<upper>\+[^/\n]+?)\s*")
 # the same with a symmetric interval: "25.01\", U = ±1.35\"", or "0.407\"\n±0.094\"" (its U
 # both below and above the value: the same columns as an asymmetric one)
-_WITH_SYMMETRIC_U = re.compile(r"\s*(?P<value>.+?)(?:, U = |\s*\n\s*)±(?P<u>\S+)\s*")
+_WITH_SYMMETRIC_U = re.compile(r"\s*(?P<value>.+?)(?:, U = |\s*\n\s*)±(?P<u>[^\n]+?)\s*")
 
 
 def split_figures(text: str) -> tuple[tuple[float, ...], str, str] | None:
@@ -171,6 +175,26 @@ def _figure_columns(header: tuple[str, ...], rows: list[tuple[object, ...]],
             if unit is None:
                 out.append(figure[1] if figure is not None else None)
     return out_header, out_rows
+
+
+def _with_interval_columns(table: Table) -> Table:
+    """A table whose figures state their coverage interval in a note beside them (the
+    theodolite's ISO 230-2 figures: models/certificate/interval_note.py) with the columns
+    "Coverage interval" and "Probability" before the notes' column, as positioning's table
+    has them, so that the sheet holds each interval as numbers (from, to, probability) as it
+    holds positioning's (audit 69 finding 5: they were in the note's text only); the notes
+    stay. Any other table as it is."""
+    found = {j for row in table.rows for j, cell in enumerate(row) if interval_cells(cell)}
+    if not found:
+        return table
+    at = min(found)
+    header = (*table.header[:at], QT_TR_NOOP("Coverage interval"), QT_TR_NOOP("Probability"),
+              *table.header[at:])
+    rows: list[tuple[str, ...]] = []
+    for row in table.rows:
+        cells = next(filter(None, map(interval_cells, row)), ("", ""))
+        rows.append((*row[:at], *cells, *row[at:]))
+    return Table(table.title, header, rows, table.note)
 
 
 def _point_columns(document: CertificateDocument,
@@ -309,8 +333,13 @@ def _metadata_rows(document: CertificateDocument,
         (f"Decided value: interval low ({q})", document.conformity.interval_low),
         (f"Decided value: interval high ({q})", document.conformity.interval_high),
         ("Decided value: coverage probability (%)", 100.0 * document.conformity.probability),
-        ("Probability of conformity (%)", 100.0 * document.conformity.conforming_probability),
-        ("Probability of a wrong decision (%)", 100.0 * document.conformity.decision_risk),
+        # only with a statement of conformity, as the JSON (null) and the PDF: where none is
+        # made (the error not traceable, U incomplete, U ≥ T) a probability would rest on
+        # that U (audit 69 finding 3: "100" beside "not assessed")
+        ("Probability of conformity (%)", 100.0 * document.conformity.conforming_probability
+         if document.conformity.stated else None),
+        ("Probability of a wrong decision (%)", 100.0 * document.conformity.decision_risk
+         if document.conformity.stated else None),
         ("Verdict", document.conformity.verdict),
         ("No statement of conformity because", document.conformity.reason),
         ("Conformity", document.conformity.statement),
@@ -455,9 +484,12 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
         block = np.column_stack(columns)
         for row in block.tolist():
             sheet.append([v if np.isfinite(v) else None for v in row])
-    for title, table in (("Parameters", document.parameters), ("Statistics", document.statistics),
+    for title, table in (("Parameters", document.parameters),
+                         ("Statistics", _with_interval_columns(document.statistics)),
+                         # in the errors' unit, as the PDF's (a linear axis's µm was
+                         # headed ″, and converted as arcseconds: audit 69 finding 4)
                          ("Uncertainty budget", budget_table(
-                             document.budget, document.budget_point,
+                             document.budget, document.budget_point, document.unit,
                              withheld=bool(document.uncertainty_withheld)))):
         ws = book.create_sheet(title)
         header, rows = _figure_columns(*table_in_unit(table.header, table.rows, unit),

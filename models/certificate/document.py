@@ -86,6 +86,10 @@ class CertificateDocument:
     warnings: tuple[str, ...] = ()
     # every point's figures, for the CSV/XLSX export: (column header, values)
     point_columns: tuple[tuple[str, np.ndarray], ...] = ()
+    # the unit symbol of a point column whose key names none (positioning's "target": "mm"
+    # on a linear axis, "°" on a rotary one), as (key, symbol): the DCC states it (it said
+    # \one: audit 69 finding 4); a key ending in its unit ("theta_deg") needs none
+    point_column_units: tuple[tuple[str, str], ...] = ()
     # statements of this workbench's own (why U is zero somewhere, a specification's
     # source, as found / as left …), printed with the shared ones
     statements: tuple[str, ...] = ()

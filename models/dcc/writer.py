@@ -23,6 +23,7 @@ import numpy as np
 from lxml import etree
 
 from models.certificate.document import CertificateDocument, Table
+from models.certificate.interval_note import interval_cells
 from models.certificate.metadata import revision_statement, separate_statement
 from models.dcc import vocabulary as v
 from models.messages import QT_TR_NOOP, declared_text, message, rendered, translator
@@ -80,8 +81,13 @@ def _say(text: Any, lang: str) -> str:
     return declared_text(str(text), words)  # a label ending in a unit: its words, the unit kept
 
 
-def column_unit(name: str, error_unit: str) -> str:
-    """The D-SI unit of a per-point column from its name ("theta_deg": \\degree)."""
+def column_unit(name: str, error_unit: str, stated: Mapping[str, str] | None = None) -> str:
+    """The D-SI unit of a per-point column from its name ("theta_deg": \\degree), or from
+    the unit symbol ``stated`` for it (CertificateDocument.point_column_units: positioning's
+    "target" in "mm" is \\milli\\metre)."""
+    symbol = (stated or {}).get(name)
+    if symbol is not None and symbol.strip() in _SYMBOLS:
+        return _SYMBOLS[symbol.strip()]
     for suffix, unit in _UNIT_SUFFIXES.items():
         if name.endswith(suffix):
             return unit
@@ -435,12 +441,16 @@ def _table_result(b: _Builder, results, table: Table, ref: str, description: str
         u = _parse(rest[0]) if rest and header_k else None
         if figure and u and u[1] != figure[1] and u[1] in _ARCSEC and figure[1] in _ARCSEC:
             u = (u[0] * _ARCSEC[u[1]] / _ARCSEC[figure[1]], figure[1])
-        span = _INTERVAL.match(rest[0].replace("−", "-")) if rest else None
+        # an interval in the note beside the figure (the theodolite's ISO 230-2 figures) as
+        # positioning's in its columns: a list of numbers, not the note's text (audit 69 F5)
+        noted = interval_cells(rest[0]) if rest else None
+        spans = [*noted, *rest[1:]] if noted else rest
+        span = _INTERVAL.match(spans[0].replace("−", "-")) if spans else None
         ends = (_parse(span.group(1)), _parse(span.group(2))) if span else (None, None)
-        exact = getattr(rest[0], "exact", None) if rest else None  # the ends unrounded
+        exact = getattr(spans[0], "exact", None) if spans else None  # the ends unrounded
         if isinstance(exact, tuple) and ends[0] and ends[1]:
             ends = ((float(exact[0]), ends[0][1]), (float(exact[1]), ends[1][1]))
-        share = _PERCENT.match(rest[1].strip()) if len(rest) > 1 else None
+        share = _PERCENT.match(spans[1].strip()) if len(spans) > 1 else None
         if figure and ends[0] and ends[1] and share and ends[0][1] == ends[1][1] == figure[1]:
             _interval(b, data, label, figure[0], figure[1], ends[0][0], ends[1][0],
                       _printed_probability(share.group(1), p), row_ref)
@@ -526,7 +536,7 @@ def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str
         if name.startswith("expanded_uncertainty_"):
             continue
         values = np.asarray(values)
-        unit = column_unit(name, doc.unit)
+        unit = column_unit(name, doc.unit, dict(doc.point_column_units))
         stem = next((name[:-len(s)] for s in _UNIT_SUFFIXES if name.endswith(s)), name)
         expanded: np.ndarray | None = None
         k: np.ndarray | None = None

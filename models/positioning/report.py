@@ -702,6 +702,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         warnings=result.warnings, unit=sym, statements=statements,
         standard=standard, sign_convention=SIGN_CONVENTION_TEXT,
         figures_raised_to_cmc=tuple(figures_raised_to_cmc(stated)),
+        point_column_units=(("target", result.target_symbol.strip()),),
         point_columns=(
             ("target", np.tile(result.positions, len(points))), ("direction", directions),
             (f"mean_deviation_{result.deviation_unit}", curve),

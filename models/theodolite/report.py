@@ -86,6 +86,7 @@ from models.certificate.document import (
     range_cells,
     resolution_component,
 )
+from models.certificate.interval_note import interval_note
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite import KEY, TITLE
@@ -410,10 +411,11 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
             continue
         d = interval_decimals(iv.low, iv.high)  # the interval's half-width's (GUM 7.2.6)
         low, high = interval_ends(iv.low, iv.high, d)  # rounded outwards, as every interval
-        rows.append((f"ISO 230-2 {key}", f"{v:.{d}f}\"", message(
-            QT_TR_NOOP("coverage interval {low} … {high} ({p} %)"),
-            low=f"{low:.{d}f}\"", high=f"{high:.{d}f}\"",
-            p=percent_text(iv.probability))))
+        # the value and the interval's ends at full precision for the DCC and the results
+        # export, which state them as numbers, as positioning's (audit 69 finding 5)
+        rows.append((f"ISO 230-2 {key}", Exact(f"{v:.{d}f}\"", float(v)), interval_note(
+            iv.low, iv.high, f"{low:.{d}f}\"", f"{high:.{d}f}\"",
+            percent_text(iv.probability))))
     return rows
 
 
