@@ -446,11 +446,12 @@ def test_parameters_carry_their_printed_u_and_k_and_summary_figures_their_interv
     figures = {q.findtext("dcc:name/dcc:content", namespaces=NS):
                float(q.findtext("si:real/si:value", namespaces=NS))
                for q in a.iterfind("dcc:quantity", NS)}
-    # printed: A = 22.4", interval 16.8" … 44.0" at 95.45 % (#39: A's interval from each
+    # printed: A = 22.4", interval 17.0" … 35.8" at 95.45 % (#39: A's interval from each
     # target's own x̄ and s, which holds however σ changes from target to target; 17.4" …
     # 25.3" at 93.5 % before, from the bootstrap, which covered 45–70 of 80 tests with one
-    # target's σ × 2 or × 3; the sample's laser calibrator stated per angle: its widening
-    # z · u, not z · 2u); the
+    # target's σ × 2 or × 3; 16.8" … 44.0" in 0.8.17, each target's bound at half the tail
+    # and the laser calibrator's widening z · u at 97.7 %; now each bound at the whole tail
+    # and the widening k · u, audit 68); the
     # DCC states them unrounded, as the JSON does (review 61, F7: the print to the interval's
     # half-width, the machine-readable figures whole)
     a_json = issued["positioning"][4]["iso230_2_figures"]["A"]
@@ -459,7 +460,7 @@ def test_parameters_carry_their_printed_u_and_k_and_summary_figures_their_interv
                        "intervalMax": pytest.approx(a_json["interval_high"], rel=1e-9),
                        "coverageProbability": pytest.approx(0.9545, abs=1e-6)}
     assert figures["value"] == pytest.approx(22.4466, abs=1e-4)
-    assert (round(figures["intervalMin"], 4), round(figures["intervalMax"], 4)) == (16.7796, 43.9656)
+    assert (round(figures["intervalMin"], 4), round(figures["intervalMax"], 4)) == (17.0306, 35.7147)
 
 
 def test_the_polygon_workbench_states_its_reference_polygon_in_the_shared_form(issued):
