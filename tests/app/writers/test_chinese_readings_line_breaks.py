@@ -7,24 +7,14 @@ from __future__ import annotations
 
 import hashlib
 import json
-import shutil
-import subprocess
 
 import pytest
 
 from models.certificate.metadata import CertificateMetadata
+from tests.pdf_text import CLOSING, pdf_lines
 
 pytestmark = pytest.mark.slow  # a Chinese specimen written for each file name
 
-CLOSING = "。，、；：？！）》」』】”’)],;:"
-
-
-def _raw_lines(path) -> list[str]:
-    if shutil.which("pdftotext") is None:
-        pytest.fail("pdftotext is missing: apt-get install poppler-utils (.ci/run does)")
-    out = subprocess.run(["pdftotext", "-raw", "-enc", "UTF-8", str(path), "-"],
-                         capture_output=True, text=True, check=True).stdout
-    return [line.strip() for line in out.splitlines() if line.strip()]
 
 
 @pytest.mark.parametrize("name", ["r.csv", "rrr.csv", "bench_run_0512.csv"])
@@ -46,7 +36,7 @@ def test_no_line_of_the_chinese_readings_line_is_a_closing_mark_alone(
     window.certificates.view.choose_save_path = (
         lambda title, suggested, kinds: str(tmp_path / "cert.pdf"))
     assert window.export_certificate(), window.told
-    lines = _raw_lines(tmp_path / "cert.pdf")
+    lines = pdf_lines(tmp_path / "cert.pdf")
     first = next(i for i, line in enumerate(lines) if name in line)
     last = next(i for i in range(first, len(lines)) if "编辑过" in lines[i])
     said = lines[first:last + 1]

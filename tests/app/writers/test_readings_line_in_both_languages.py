@@ -10,24 +10,14 @@ from __future__ import annotations
 
 import hashlib
 import json
-import shutil
-import subprocess
 
 import pytest
 
 from models.certificate.metadata import CertificateMetadata
+from tests.pdf_text import CLOSING, pdf_lines
 
 pytestmark = pytest.mark.slow  # certificates printed from the window
 
-CLOSING = "。，、；：？！）》」』】”’)],;:"
-
-
-def _raw_lines(path) -> list[str]:
-    if shutil.which("pdftotext") is None:
-        pytest.fail("pdftotext is missing: apt-get install poppler-utils (.ci/run does)")
-    out = subprocess.run(["pdftotext", "-raw", "-enc", "UTF-8", str(path), "-"],
-                         capture_output=True, text=True, check=True).stdout
-    return [line.strip() for line in out.splitlines() if line.strip()]
 
 
 def _issue(window, qtbot, tmp_path, samples_dir, name: str, language: str, pdf: str,
@@ -64,7 +54,7 @@ def test_a_bilingual_certificates_readings_line_is_in_chinese_and_in_english(
     digest = _issue(window, qtbot, tmp_path, samples_dir, name, "zh+en",
                     str(tmp_path / "both.pdf"))
     assert window.export_certificate(), window.told
-    said = " ".join(_readings(_raw_lines(tmp_path / "both.pdf"), name))
+    said = " ".join(_readings(pdf_lines(tmp_path / "both.pdf"), name))
     # the Chinese (导入自 …，导入后在 AngleBench 中编辑过), then the English, each with the digest
     assert "导入自" in said and "imported from" in said, said
     assert said.index("导入自") < said.index("imported from"), said
@@ -77,7 +67,7 @@ def test_no_line_of_the_chinese_readings_line_begins_with_a_closing_mark(
     digest = _issue(window, qtbot, tmp_path, samples_dir, name, "zh",
                     str(tmp_path / "zh.pdf"))
     assert window.export_certificate(), window.told
-    said = _readings(_raw_lines(tmp_path / "zh.pdf"), name)
+    said = _readings(pdf_lines(tmp_path / "zh.pdf"), name)
     assert any(digest in line for line in said), said  # whole, on one line
     assert not [line for line in said[1:] if line[:1] in CLOSING], said
     line = next(line for line in said if digest in line)
