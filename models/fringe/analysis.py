@@ -999,7 +999,11 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
         return figures(result)["errors"]
 
     def verdict(self, r):
+        # where orders fold, the error as found is the sampled phases' too (day review 69 F1)
         said = message(
+            QT_TR_NOOP("Interpolation error {ptp} peak-to-peak at the sampled phases only "
+                       "({share} % of a period); {after} after compensation")
+            if getattr(r, "folded_orders", ()) else
             QT_TR_NOOP("Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} "
                        "after compensation"),
             ptp=f"{r.raw_peak_to_peak:.3f}{r.unit_symbol}",
