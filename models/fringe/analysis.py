@@ -40,7 +40,15 @@ from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
 from models.fringe.result import FringeResult
 from models.fringe.signal_quality import default_window, signal_quality
 from models.fringe.unmodelled_harmonics import unmodelled_harmonics
-from models.messages import QT_TR_NOOP, joined, lines, message, reason_of, separated
+from models.messages import (
+    QT_TR_NOOP,
+    Message,
+    joined,
+    lines,
+    message,
+    reason_of,
+    separated,
+)
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.lab_scope import cmc_parameter
@@ -818,23 +826,33 @@ def to_json(result: FringeResult) -> dict[str, Any]:
 
 
 def _with_u(value: float, u: float | None, signed: bool = False) -> str:
-    """A fitted parameter in V and its standard uncertainty, u to two significant digits and
+    """A fitted parameter and its standard uncertainty, u to two significant digits and
     the value to its decimal (GUM 7.2.6; the certificate rounds its U so too): "0.500000 ±
     0.000019", never a u printed as "0.0000" (day review 68 F12: "A1 = 0.5000 ± 0.0000 V"
-    where the certificate printed U = 0.000038 V); without a u, four decimals."""
+    where the certificate printed U = 0.000038 V); without a u, four decimals. A value that
+    rounds to zero is printed "0…", never "-0.0000" (day review 69 F6)."""
     spec = "+" if signed else ""
     if u is None or not (math.isfinite(u) and u > 0):
-        return f"{value:{spec}.4f}"
-    decimals = uncertainty_decimals(u)
-    return f"{value:{spec}.{decimals}f} ± {u:.{decimals}f}"
+        decimals, shown_u = 4, ""
+    else:
+        decimals = uncertainty_decimals(u)
+        shown_u = f" ± {u:.{decimals}f}"
+    rounded = round(value, decimals)
+    if rounded == 0.0:  # no sign on a zero, and never a negative one
+        return f"{0.0:.{decimals}f}{shown_u}"
+    return f"{rounded:{spec}.{decimals}f}{shown_u}"
 
 
-def _fit_line(name: str, fit: ChannelFit) -> str:
+def _fit_line(name: str, fit: ChannelFit, r_squared: float) -> Message:
+    """One channel's fitted parameters, each ± its standard uncertainty: the offset and each
+    order's amplitude and phase, the phase to the decimal its own u supports (day review 69
+    F6: "∠ -0.0000 rad"), and the fit's R²."""
     parts = [f"{name}0 = {_with_u(fit.offset, fit.u_offset, signed=True)} V"]
     for k in fit.orders:
         parts.append(f"{name}{k} = {_with_u(fit.amplitude[k], fit.u_amplitude.get(k))} V "
-                     f"∠ {fit.phase[k]:+.4f} rad")
-    return "  " + ", ".join(parts) + " (± u, k = 1)"
+                     f"∠ {_with_u(fit.phase[k], fit.u_phase.get(k), signed=True)} rad")
+    return joined(("  ", message(QT_TR_NOOP("{parameters} (± u, k = 1); R² = {r_squared}"),
+                                 parameters=", ".join(parts), r_squared=f"{r_squared:.8f}")))
 
 
 _SOURCE_TEXT = {"samples_per_period": QT_TR_NOOP("phase from equal steps, {n} samples per period"),
@@ -856,8 +874,8 @@ def summary(result: FringeResult) -> str:
                         n=raw.size, source=source, scale=scale),
                 message(QT_TR_NOOP("; the motion reversed {count} time(s)"),
                         count=result.reversals) if result.reversals else "")),
-        _fit_line("A", result.sin_fit) + f"; R² = {result.sin_fit.r_squared:.8f}",
-        _fit_line("B", result.cos_fit) + f"; R² = {result.cos_fit.r_squared:.8f}",
+        _fit_line("A", result.sin_fit, result.sin_fit.r_squared),
+        _fit_line("B", result.cos_fit, result.cos_fit.r_squared),
         message(QT_TR_NOOP("Offsets {sin} / {cos} mV, amplitude ratio {ratio}, quadrature error "
                            "{quadrature}°"),
                 sin=f"{1e3 * result.sin_fit.offset:+.2f}", cos=f"{1e3 * result.cos_fit.offset:+.2f}",
