@@ -31,6 +31,7 @@ def _one_run():
 def test_one_run_is_refused_before_the_details_naming_both_directions():
     result = _one_run()
     view = mock.create_autospec(CertificateView, instance=True)
+    view.edit_certificate_details.return_value = None  # were it asked: cancelled
     presenter = CertificatePresenter(view, mock.MagicMock(), dict, lambda: None)
     assert not presenter.export_certificate(POSITIONING, result, {}, "axis.csv")
     view.edit_certificate_details.assert_not_called()
