@@ -571,6 +571,7 @@ class LiveSignalsPanel(QWidget):
         review 68 F10: four lines at 200 %)."""
         preset = self.current_preset
         band = preset.band("amplitude_a") if preset is not None else None
+        texts: list[str]
         if band is None:
             texts = [tr("No amplitude band in this preset: no rings"), tr("No rings")]
         elif band.outer is None:
