@@ -510,6 +510,12 @@ class CertificatePresenter:
                 "mounting or run complete; finish it, or delete its rows to certify the "
                 "complete ones.").format(progress=translated(incomplete.text())))
             return False
+        refusal = (kind.certificate_refusal(result) if isinstance(kind, IssuesCertificates)
+                   else "")
+        if refusal:  # before any dialog: no details would make it issuable (day review 69 F6)
+            self.view.tell(tr("Certificate"), tr("No certificate: {reason}.").format(
+                reason=translated(refusal)))
+            return False
         doubt = kind.certificate_doubt(result) if isinstance(kind, IssuesCertificates) else ""
         if doubt and not self.view.confirm_implausible(translated(doubt)):
             return False

@@ -362,6 +362,12 @@ class IssuesCertificates(ABC, Generic[ResultT]):
         line refuses without --confirm-implausible)."""
         return ""
 
+    def certificate_refusal(self, result: ResultT) -> Any:
+        """Why no certificate of ``result`` can be issued whatever its details ("" when one
+        can): the window says so before it asks for the details (day review 69 F6: a
+        positioning record of 1 run was refused only after the whole details dialog)."""
+        return ""
+
 
 class WritesCorrectionTable(ABC, Generic[ResultT]):
     """Writes a correction or compensation table (``anglebench analyze … --table``, the

@@ -38,6 +38,7 @@ from widgets.plot_grid import keep_axis_title_room
 from widgets.plot_image import ImageWrite, add_image_actions, plot_panels, write_png
 from widgets.readings_table_view import ReadingsTableView
 from widgets.settings_form import SettingsForm
+from widgets.wrapped_text_area import WrappedTextArea
 
 
 class _Resized(QObject):
@@ -180,8 +181,11 @@ class WorkbenchView(QWidget):
         fit_layout = QVBoxLayout(fit_box)
         fit_layout.setContentsMargins(2, 2, 2, 2)
         fit_layout.addWidget(self.busy)
-        fit_layout.addWidget(self.verdict)
-        fit_layout.addWidget(self.warnings)  # every warning, above the text, never scrolled
+        # the bold line and every warning, above the text, each whole: as tall as their
+        # text where there is room, scrolling where there is not (200 % on a 1280×720
+        # screen cut both mid-line: day review 69 F5)
+        self.messages_area = WrappedTextArea([self.verdict, self.warnings])
+        fit_layout.addWidget(self.messages_area)
         self._fit_layout = fit_layout
         # the text and the figures' table side by side, scrolling sideways together where
         # the pane is narrower than their least widths: at 200 % on a 1280×720 screen
@@ -510,7 +514,7 @@ class WorkbenchView(QWidget):
         window size, never in the set-up's scrolled form (day review 64 P2: a stale
         reference's notice there sat at y = 936 in a 720-px window)."""
         layout = self._fit_layout
-        layout.insertWidget(layout.indexOf(self.warnings) + 1, notice)
+        layout.insertWidget(layout.indexOf(self.messages_area) + 1, notice)
 
     def set_warnings(self, warnings: list[str]) -> None:
         self.warnings.setText("\n".join(f"⚠ {w}" for w in warnings))

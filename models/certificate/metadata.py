@@ -23,6 +23,7 @@ from models.uncertainty.budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILI
 from models.uncertainty.conformity import DECISION_QUANTITIES, DECISION_RULES
 
 __all__ = [
+    "APPLIES_TO_NAMES",
     "DECISION_QUANTITIES",
     "DECISION_RULES",
     "DOCUMENT_TYPES",
@@ -71,6 +72,12 @@ _REFUSED_CATEGORIES = frozenset({"Cc", "Cf", "Zl", "Zp", "Cs", "Co", "Cn"})
 
 #: What a reference standard's uncertainty figure applies to (see ReferenceStandard).
 APPLIES_TO = ("reading", "angle", "from face 1")
+#: each as a certificate names it after "per" ("standard uncertainty u per angle between two
+#: readings"), in the standards table as in the budget (day review 69 F2: the table said
+#: "0.5″ (standard uncertainty u)" alike for both, and the budget took 0.354″ unexplained)
+APPLIES_TO_NAMES = {"reading": QT_TR_NOOP("reading"),
+                    "angle": QT_TR_NOOP("angle between two readings"),
+                    "from face 1": QT_TR_NOOP("face, stated from face 1")}
 
 
 class MetadataError(ValueError):

@@ -66,9 +66,13 @@ def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
     families = {str(name).split()[0] for name in stated_inputs if str(name).strip()}
     carried = len(with_u) + min(len(by_settings), len(families))
     if carried < len(roles):
+        # a list of none is not printed as "0 listed so" (day review 69 F6)
         gaps.append(message(QT_TR_NOOP(
             "the standards that carry the measurand are {roles}, each to be listed with a "
-            "calibration certificate and a stated uncertainty; {count} listed so"),
+            "calibration certificate and a stated uncertainty; {count} listed so")
+            if carried else QT_TR_NOOP(
+            "the standards that carry the measurand are {roles}, each to be listed with a "
+            "calibration certificate and a stated uncertainty; none of them is listed so"),
             roles=separated((message(r) for r in roles), "; "), count=carried))
     expired = expired_standards(metadata)
     for std in standards:

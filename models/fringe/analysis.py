@@ -40,7 +40,14 @@ from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
 from models.fringe.result import FringeResult
 from models.fringe.signal_quality import default_window, signal_quality
 from models.fringe.unmodelled_harmonics import unmodelled_harmonics
-from models.messages import QT_TR_NOOP, joined, lines, message, reason_of, separated
+from models.messages import (
+    QT_TR_NOOP,
+    joined,
+    lines,
+    message,
+    reason_of,
+    separated,
+)
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.lab_scope import cmc_parameter
@@ -818,32 +825,42 @@ def to_json(result: FringeResult) -> dict[str, Any]:
 
 
 def _with_u(value: float, u: float | None, signed: bool = False) -> str:
-    """A fitted parameter in V and its standard uncertainty, u to two significant digits and
+    """A fitted parameter and its standard uncertainty, u to two significant digits and
     the value to its decimal (GUM 7.2.6; the certificate rounds its U so too): "0.500000 ±
     0.000019", never a u printed as "0.0000" (day review 68 F12: "A1 = 0.5000 ± 0.0000 V"
-    where the certificate printed U = 0.000038 V); without a u, four decimals."""
+    where the certificate printed U = 0.000038 V); without a u, four decimals. A value that
+    rounds to zero is printed "0…", never "-0.0000" (day review 69 F6)."""
     spec = "+" if signed else ""
     if u is None or not (math.isfinite(u) and u > 0):
-        return f"{value:{spec}.4f}"
-    decimals = uncertainty_decimals(u)
-    return f"{value:{spec}.{decimals}f} ± {u:.{decimals}f}"
+        decimals, shown_u = 4, ""
+    else:
+        decimals = uncertainty_decimals(u)
+        shown_u = f" ± {u:.{decimals}f}"
+    rounded = round(value, decimals)
+    if rounded == 0.0:  # no sign on a zero, and never a negative one
+        return f"{0.0:.{decimals}f}{shown_u}"
+    return f"{rounded:{spec}.{decimals}f}{shown_u}"
 
 
 def _fit_line(name: str, fit: ChannelFit, u: Mapping[str, float] | None) -> Any:
-    """A channel's parameters with their standard uncertainty ``u`` (the fit's scatter and
-    the ADC's stated figures: models.fringe.parameter_uncertainty), or without any (None:
-    the phase estimated from the signals, no u determined)."""
+    """One channel's fitted parameters, each ± its standard uncertainty ``u`` (the fit's
+    scatter and the ADC's stated figures: models.fringe.parameter_uncertainty): the offset and
+    each order's amplitude and phase, the phase to the decimal its own u supports (day review
+    69 F6: "∠ -0.0000 rad"), and the fit's R²; or without any u (None: the phase estimated from
+    the signals, no u determined)."""
     def of(key: str) -> float | None:
         return None if u is None else u.get(key)
 
     parts = [f"{name}0 = {_with_u(fit.offset, of('A0'), signed=True)} V"]
     for k in fit.orders:
         parts.append(f"{name}{k} = {_with_u(fit.amplitude[k], of(f'A{k}'))} V "
-                     f"∠ {fit.phase[k]:+.4f} rad")
+                     f"∠ {_with_u(fit.phase[k], of(f'c{k}'), signed=True)} rad")
     if u is None:
         return joined(("  " + ", ".join(parts) + " ",
-                       message(QT_TR_NOOP("(no u: the phase was estimated from the signals)"))))
-    return "  " + ", ".join(parts) + " (± u, k = 1)"
+                       message(QT_TR_NOOP("(no u: the phase was estimated from the signals)")),
+                       f"; R² = {fit.r_squared:.8f}"))
+    return joined(("  ", message(QT_TR_NOOP("{parameters} (± u, k = 1); R² = {r_squared}"),
+                                 parameters=", ".join(parts), r_squared=f"{fit.r_squared:.8f}")))
 
 
 _SOURCE_TEXT = {"samples_per_period": QT_TR_NOOP("phase from equal steps, {n} samples per period"),
@@ -868,10 +885,8 @@ def summary(result: FringeResult) -> str:
                         n=raw.size, source=source, scale=scale),
                 message(QT_TR_NOOP("; the motion reversed {count} time(s)"),
                         count=result.reversals) if result.reversals else "")),
-        joined((_fit_line("A", result.sin_fit, stated.channels.get("sin")),
-                f"; R² = {result.sin_fit.r_squared:.8f}")),
-        joined((_fit_line("B", result.cos_fit, stated.channels.get("cos")),
-                f"; R² = {result.cos_fit.r_squared:.8f}")),
+        _fit_line("A", result.sin_fit, stated.channels.get("sin")),
+        _fit_line("B", result.cos_fit, stated.channels.get("cos")),
         message(QT_TR_NOOP("Offsets {sin} / {cos} mV, amplitude ratio {ratio}, quadrature error "
                            "{quadrature}°"),
                 sin=f"{1e3 * result.sin_fit.offset:+.2f}", cos=f"{1e3 * result.cos_fit.offset:+.2f}",
@@ -1020,7 +1035,11 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
         return figures(result)["errors"]
 
     def verdict(self, r):
+        # where orders fold, the error as found is the sampled phases' too (day review 69 F1)
         said = message(
+            QT_TR_NOOP("Interpolation error {ptp} peak-to-peak at the sampled phases only "
+                       "({share} % of a period); {after} after compensation")
+            if getattr(r, "folded_orders", ()) else
             QT_TR_NOOP("Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} "
                        "after compensation"),
             ptp=f"{r.raw_peak_to_peak:.3f}{r.unit_symbol}",

@@ -70,11 +70,16 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
     # where orders fold into fitted ones, the compensated error holds at the sampled phases
     # only (models.fringe.compensation_at_samples): the legend says so, in the window and on
     # the certificate (day review 68 F8: "after compensation" drawn as a curve between them)
+    # the error as found too: the readings' own at the samples, the whole period's not
+    # determined (day review 69 F1: 0.497″ at the 8 phases, 0.671″ over the period, unsaid)
+    folded = bool(getattr(result, "folded_orders", ()))
     after = (QT_TR_NOOP("after compensation, at the sampled phases only")
-             if getattr(result, "folded_orders", ()) else QT_TR_NOOP("after compensation"))
+             if folded else QT_TR_NOOP("after compensation"))
+    before = (QT_TR_NOOP("before compensation, at the sampled phases only")
+              if folded else QT_TR_NOOP("before compensation"))
     out = {"errors": PlotFigure(QT_TR_NOOP("Interpolation error before and after compensation"), along,
                                 f"{label} ({unit})", (
-        PlotSeries(QT_TR_NOOP("before compensation"), x[pick], raw[pick], BLUE, role="raw"),
+        PlotSeries(before, x[pick], raw[pick], BLUE, role="raw"),
         PlotSeries(after, x[pick], comp[pick], GREEN, role="corrected")))}
     res_s = drawn(_residuals(result.u_sin, result.theta_rad, result.sin_fit)) * 1e3
     res_c = drawn(_residuals(result.u_cos, result.theta_rad, result.cos_fit)) * 1e3

@@ -48,7 +48,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import KEY, TITLE
 from models.fringe import plots as fringe_plots
-from models.fringe.compensation_at_samples import compensation_caveat
+from models.fringe.compensation_at_samples import FOUND_AT_SAMPLES, compensation_caveat
 from models.fringe.model import (  # MODEL_INPUT: the compensation's own input
     MODEL_INPUT,
     interpolation_error_rad,
@@ -580,7 +580,9 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         (QT_TR_NOOP("Samples"), f"{raw.size}", separated([source[result.phase_source], scale])),
         (QT_TR_NOOP("Interpolation error as found"),
          f"{raw.min():+.3f}{sym} … {raw.max():+.3f}{sym}",
-         message(share, ptp=f"{pp_raw:.3f}{sym}", share=f"{pp_raw / period * 100:.2f}")),
+         separated([message(share, ptp=f"{pp_raw:.3f}{sym}",
+                            share=f"{pp_raw / period * 100:.2f}"),
+                    message(FOUND_AT_SAMPLES) if caveat else ""], "; ")),
         (QT_TR_NOOP("After compensation (as left)") if as_left else
          QT_TR_NOOP("After compensation (not applied to the item)"),
          f"{comp.min():+.3f}{sym} … {comp.max():+.3f}{sym}",
@@ -646,11 +648,19 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
             QT_TR_NOOP("As left: the lab states that the correction table with sha256 {sha} "
                        "was loaded into the encoder; the compensated error and its U are the "
                        "item as left {caveat}.") if as_left else
-            QT_TR_NOOP("Conformity is judged on the interpolation error as found. The "
-                       "compensated error is not the item's unless the table is loaded into it "
-                       "(table sha256 {sha}), and the compensated error and the table hold "
-                       "{caveat}; sample more finely before loading the table into the "
-                       "encoder."),
+            # the half range is withheld where orders fold: nothing is judged on the error
+            # as found, known at the samples only (day review 69 F1)
+            QT_TR_NOOP("No conformity is judged on the interpolation error as found: it is "
+                       "known at the sampled phases only, and over the whole period it is not "
+                       "determined. The compensated error is not the item's unless the table "
+                       "is loaded into it (table sha256 {sha}), and the compensated error and "
+                       "the table hold {caveat}; sample more finely before loading the table "
+                       "into the encoder.") if metadata.decision_quantity == "half_range" else
+            QT_TR_NOOP("Conformity is judged on the interpolation error as found at the "
+                       "samples, each with its own U. The compensated error is not the item's "
+                       "unless the table is loaded into it (table sha256 {sha}), and the "
+                       "compensated error and the table hold {caveat}; sample more finely "
+                       "before loading the table into the encoder."),
             sha=result.table.sha256, caveat=caveat)
     else:
         table_statement = message(

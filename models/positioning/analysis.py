@@ -452,14 +452,13 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
     short = {k: n for k, n in result.least_runs.items() if n < MIN_RUNS}
     if short:
         words = {"up": QT_TR_NOOP("forward {runs}"), "down": QT_TR_NOOP("backward {runs}")}
-        parts: list = []
-        for key, n in short.items():
-            parts += ([", "] if parts else []) + [message(words[key], runs=n)]
+        # joined in the language's own punctuation (Chinese "，": day review 69 F6)
+        parts = separated([message(words[key], runs=n) for key, n in short.items()], ", ")
         warnings.append(message(
             QT_TR_NOOP("Fewer runs than ISO 230-2 asks (5 in each direction at every target): "
                        "{runs} at the least measured target. Evaluated, and flagged as the "
                        "standard requires."),
-            runs=joined(parts)))
+            runs=parts))
     if not result.bidirectional:
         warnings.append(message(QT_TR_NOOP(
             "One approach direction only: the unidirectional figures are given; B, M, the "
@@ -675,6 +674,12 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
     def certificate(self, result, metadata, source_name="", settings=None):
         return positioning_certificate(result, metadata, source_name, self.method_reference,
                                        settings)
+
+    def certificate_refusal(self, result):
+        # no U whatever the details: a target approached once, readings that show no scatter
+        from models.positioning.report import uncertainty_refusal
+
+        return uncertainty_refusal(result) or ""
 
     def decided_errors(self, result, metadata):
         return np.concatenate([stats.mean for _, _, stats in result.directions_present()])

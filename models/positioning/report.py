@@ -123,28 +123,47 @@ def _points(result: PositioningResult) -> list[tuple[str, np.ndarray, np.ndarray
             for name, _, stats in result.directions_present()]
 
 
+def uncertainty_refusal(result: PositioningResult):
+    """Why no U can be stated for ``result``, whatever the certificate's details (None when
+    it can be): readings that show neither scatter nor a step, or a target approached fewer
+    than twice in a direction, every direction's targets named (day review 69 F6: 1 run
+    named only the forward targets, and only after the whole details dialog)."""
+    points = _points(result)
+    if result.without_scatter and result.readings_step is None:
+        return message(QT_TR_NOOP(
+            "the readings of every target came out identical in each direction and show no "
+            "step of their display: their repeatability, part of U, cannot be told, so U "
+            "cannot be stated"))
+    once = {name: result.positions[(n < 2) | ~np.isfinite(s)] for name, _, s, n in points}
+    once = {name: targets for name, targets in once.items() if targets.size}
+    if len(once) > 1:
+        return message(
+            QT_TR_NOOP("target(s) {forward} forward and {backward} backward were approached "
+                       "fewer than twice: their repeatability, part of U, is unknown, so U "
+                       "cannot be stated"),
+            forward=", ".join(f"{t:g}" for t in once["up"]),
+            backward=", ".join(f"{t:g}" for t in once["down"]))
+    for name, targets in once.items():
+        return message(
+            # what is refused (a certificate, the results) the caller says (day review
+            # 67 F9: an export of results was refused with "no certificate is issued")
+            QT_TR_NOOP("target(s) {targets} forward were approached fewer than twice: their "
+                       "repeatability, part of U, is unknown, so U cannot be stated")
+            if name == "up" else
+            QT_TR_NOOP("target(s) {targets} backward were approached fewer than twice: their "
+                       "repeatability, part of U, is unknown, so U cannot be stated"),
+            targets=", ".join(f"{t:g}" for t in targets))
+    return None
+
+
 def positioning_budget(result: PositioningResult, metadata: CertificateMetadata,
                        settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
     """The budget of the mean deviations, held to the laboratory's CMC of the ``settings``
     ``result`` was analysed with (None: none)."""
     points = _points(result)
-    if result.without_scatter and result.readings_step is None:
-        raise MetadataError(message(QT_TR_NOOP(
-            "the readings of every target came out identical in each direction and show no "
-            "step of their display: their repeatability, part of U, cannot be told, so U "
-            "cannot be stated")))
-    for name, _, s, n in points:
-        once = result.positions[(n < 2) | ~np.isfinite(s)]
-        if once.size:
-            raise MetadataError(message(
-                # what is refused (a certificate, the results) the caller says (day review
-                # 67 F9: an export of results was refused with "no certificate is issued")
-                QT_TR_NOOP("target(s) {targets} forward were approached fewer than twice: their "
-                           "repeatability, part of U, is unknown, so U cannot be stated")
-                if name == "up" else
-                QT_TR_NOOP("target(s) {targets} backward were approached fewer than twice: their "
-                           "repeatability, part of U, is unknown, so U cannot be stated"),
-                targets=", ".join(f"{t:g}" for t in once)))
+    refusal = uncertainty_refusal(result)
+    if refusal:
+        raise MetadataError(refusal)
     # a target whose runs read alike while the others scatter: the pooled s (models
     # .positioning.model.PositioningResult.repeatability), not 0
     s = np.concatenate([result.repeatability(stats) for _, _, stats in

@@ -235,9 +235,11 @@ def to_json(result: TheodoliteResult) -> dict[str, Any]:
     return out
 
 
-def _intervals_line(result: TheodoliteResult) -> str:
+def _intervals_line(result: TheodoliteResult, printed: Mapping[str, int] | None = None
+                    ) -> str:
     """The ISO 230-2 figures' coverage intervals (the stated standards' u not known here:
-    the readings alone, at 95.45 %), or why there are none."""
+    the readings alone, at 95.45 %), or why there are none; each to its figure's decimal
+    (``printed``: the certificate's, where known)."""
     from models.certificate.metadata import CertificateMetadata
     from models.theodolite.figures import (
         figure_intervals_withheld,
@@ -258,7 +260,7 @@ def _intervals_line(result: TheodoliteResult) -> str:
     parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %, from the readings alone; a "
                                       "certificate adds its stated standards' u): "),
                            p=f"{100 * DEFAULT_COVERAGE_PROBABILITY:.2f}")]
-    decimals = theodolite_figure_decimals(result, budget, held=False)
+    decimals = theodolite_figure_decimals(result, budget, held=False) | dict(printed or {})
     for i, (key, iv) in enumerate(intervals.items()):
         d = decimals.get(key, 2)  # the figure's, as its value is printed
         parts += [", " if i else "", f"{key} {iv.low:.{d}f} … {iv.high:.{d}f}\""]
@@ -283,9 +285,23 @@ def _printed(stats, decimals: int) -> dict[str, str]:
     return {"low": f"{low}\"", "high": f"{high}\"", "ptp": f"{ptp}\""}
 
 
+class PrintedDecimals(int):
+    """How a theodolite certificate rounds: its decimal for the errors (the int itself) and
+    each ISO 230-2 figure's, ``figures`` (its interval's with the stated standards' u and
+    the laboratory's CMC), which the window's summary prints its figures to."""
+
+    figures: dict[str, int]
+
+    def __new__(cls, errors: int, figures: Mapping[str, int]) -> PrintedDecimals:
+        made = super().__new__(cls, errors)
+        made.figures = dict(figures)
+        return made
+
+
 def summary(result: TheodoliteResult, printed: int | None = None) -> str:
     """The result as text; ``printed``: the certificate's decimal for the error ranges and
-    the RMS (:meth:`Theodolite.printed_rounding`; None: two), each peak-to-peak as printed."""
+    the RMS (:meth:`Theodolite.printed_rounding`; None: two), each peak-to-peak as printed,
+    and its figures' decimals (:class:`PrintedDecimals`) where it gives them."""
     d = 2 if printed is None else printed
     ident = result.identification
     u = ident.uncertainty_deg * 3600.0
@@ -320,10 +336,11 @@ def summary(result: TheodoliteResult, printed: int | None = None) -> str:
 
         decimals = theodolite_figure_decimals(
             result, theodolite_budget(result, CertificateMetadata()), held=False)
+        decimals |= getattr(printed, "figures", {})  # the certificate's, where known
         figs = ", ".join(f"{k} = {v:.{decimals.get(k, 2)}f}\""
                          for k, v in result.iso230.figures.items())
         out.append(f"ISO 230-2: {figs}")
-        out.append(_intervals_line(result))
+        out.append(_intervals_line(result, getattr(printed, "figures", {})))
         from models.theodolite.figures import pointing_in_figures_note
 
         pointing = pointing_in_figures_note(result)
@@ -417,13 +434,23 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
         return error_figure(result)
 
     def printed_rounding(self, result, metadata, settings=None):
-        from models.theodolite.report import theodolite_budget  # not for a plain analysis
+        from models.theodolite.figures import theodolite_figure_decimals
+        from models.theodolite.report import (  # not for a plain analysis
+            stated_pair_factor,
+            stated_reading_uncertainty,
+            theodolite_budget,
+        )
 
         try:  # the certificate's statistics: to the decimal of its largest U
             budget = theodolite_budget(result, metadata, settings)
+            # and each ISO 230-2 figure to its certificate interval's decimal (day review
+            # 69 F6: "E_up 1.70″ M 1.55″" in the window, "1.7″ 1.5″" on the certificate)
+            figures = (theodolite_figure_decimals(
+                result, budget, stated_reading_uncertainty(metadata)[0],
+                stated_pair_factor(metadata)) if result.iso230 is not None else {})
         except (ValueError, ArithmeticError, IndexError):
             return None
-        return uncertainty_decimals(budget.max_expanded)
+        return PrintedDecimals(uncertainty_decimals(budget.max_expanded), figures)
 
     def printed_headline(self, result, printed=None):
         d = 2 if printed is None else printed

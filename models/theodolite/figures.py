@@ -78,11 +78,11 @@ from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, Message, message
+from models.messages import QT_TR_NOOP, Message, message, separated
 from models.readings.repeats import RepeatedReadings
 from models.readings.resolution import coarse, readings_step
 from models.theodolite.model import MODEL_INPUT, TheodoliteResult, model_error_modes
-from models.uncertainty.budget import UncertaintyBudget
+from models.uncertainty.budget import UncertaintyBudget, divisor_for_basis
 from models.uncertainty.conformity import readings_seed
 from models.uncertainty.figure_intervals import (
     FIGURE_VALUE_NOTE,
@@ -100,7 +100,8 @@ from models.uncertainty.undetermined_repeatability import (
     undetermined_repeatability,
 )
 
-__all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "PER_ANGLE_NOTE", "circle_part",
+__all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "PER_ANGLE_NOTE", "PER_ANGLE_STANDARD", "circle_part",
+           "per_angle_note",
            "circle_part_not_excluded", "figure_intervals_withheld", "least_passes",
            "theodolite_figure_decimals",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
@@ -267,10 +268,32 @@ CIRCLE_NUISANCE_SHARE = 0.25
 
 
 #: a budget note where a standard is stated for any angle between two readings: the stated
-#: u per reading is then its figure over √2 (models.theodolite.report.stated_reading_uncertainty)
-PER_ANGLE_NOTE = QT_TR_NOOP("{note}; a standard stated for any angle between two readings "
-                            "enters each reading at u/√2 (an angle holds two readings' "
-                            "errors), so once at each point")
+#: u per reading is then its figure over √2 (models.theodolite.report.stated_reading_uncertainty);
+#: each such standard named with its figure and its share a reading (day review 69 F2: "u =
+#: 0.354″ per reading" beside "0.5″" in the table, and the reader left to find 0.5/√2)
+PER_ANGLE_NOTE = QT_TR_NOOP("{note}; {standards}: a standard stated for any angle between two "
+                            "readings enters each reading at u/√2, since an angle is the "
+                            "difference of two readings, each with its own error, so a point "
+                            "(its reading less θ₀'s) takes u once")
+#: one standard stated per angle in :data:`PER_ANGLE_NOTE`
+PER_ANGLE_STANDARD = QT_TR_NOOP("{standard} u = {u} per angle, u/√2 = {share} per reading")
+
+
+def per_angle_note(note, standards) -> Any:
+    """``note`` with :data:`PER_ANGLE_NOTE` where any of ``standards`` (the certificate's)
+    states a u for any angle between two readings, each such standard named with its u (its
+    basis's divisor applied) and u/√2; ``note`` as it is where none does."""
+    named = []
+    for std in standards:
+        if std.applies_to != "angle" or std.uncertainty is None:
+            continue
+        u = std.uncertainty_in("arcsec") / divisor_for_basis(std.basis)[0]
+        named.append(message(PER_ANGLE_STANDARD, u=f"{u:.3f}\"",
+                             share=f"{u / math.sqrt(2.0):.3f}\"",
+                             standard=std.description or message(QT_TR_NOOP("standard"))))
+    if not named:
+        return note
+    return message(PER_ANGLE_NOTE, note=note, standards=separated(named, ", "))
 
 
 def circle_part(result: TheodoliteResult, stated_u: float) -> float:

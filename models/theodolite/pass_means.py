@@ -43,12 +43,12 @@ from models.certificate.document import resolution_component
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite.figures import (
-    PER_ANGLE_NOTE,
     circle_part,
     circle_part_not_excluded,
     figure_intervals_withheld,
     model_modes_at_each_theta,
     passes_scatter,
+    per_angle_note,
     pointing_per_reading,
     readings_coarse,
     theodolite_figure_intervals,
@@ -169,9 +169,7 @@ def pass_means_budget(result: TheodoliteResult, metadata: CertificateMetadata,
                                   "same at a θ in every pass"),
                        circle=f"{circle:.3f}\"", u=f"{stated_u:.3f}\"",
                        s=f"{pointing_per_reading(result):.3f}\"")
-        if any(std.applies_to == "angle" and std.uncertainty is not None
-               for std in metadata.standards):
-            note = message(PER_ANGLE_NOTE, note=note)
+        note = per_angle_note(note, metadata.standards)
         components.append(BudgetComponent(CIRCLE_INPUT, "B", "normal", circle, 1.0, 1.0,
                                           math.inf, note, in_curve=True))
     components += resolution_component(metadata, math.sqrt(2.0))

@@ -90,7 +90,7 @@ from models.certificate.interval_note import interval_note
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite import KEY, TITLE
-from models.theodolite.figures import MODEL_INPUT, PER_ANGLE_NOTE, pooled_repeats
+from models.theodolite.figures import MODEL_INPUT, per_angle_note, pooled_repeats
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import (
@@ -302,8 +302,7 @@ def reading_error_components(result: TheodoliteResult,
         governs, evaluation, nu, value, divisor, distribution = (
             "scatter", "A", float(dof), s, 1.0, "normal")
     note = _reading_error_notes(result, s, dof, u_std, bool(stated), governs, nu, pooled)
-    if any(std.applies_to == "angle" for std in stated):
-        note = message(PER_ANGLE_NOTE, note=note)
+    note = per_angle_note(note, stated)
     own = (QT_TR_NOOP("{governs}; the point's own reading, one value per point")
            if pooled is None else
            QT_TR_NOOP("{governs}; the point's own mean, one value per point"))

@@ -69,16 +69,27 @@ def undetermined_repeatability(intervals: Mapping[str, FigureInterval],
         if interval is None or not any(d in thin for d in directions if d in runs):
             continue
         del kept[key]
-        why[key] = message(reason, low=_end(interval.low, math.floor, symbol),
-                           high=_end(interval.high, math.ceil, symbol))
+        # both ends to one decimal, the upper end's (day review 69 F6: "0.084″ … 443″"
+        # beside "0″ … 443″")
+        d = _decimals(interval.high)
+        why[key] = message(reason, low=_end(interval.low, math.floor, symbol, d),
+                           high=_end(interval.high, math.ceil, symbol, d))
     return kept, why
 
 
-def _end(value: float, rounding, symbol: str) -> str:
-    """An end of the interval withheld, to two significant digits (whole units at least),
-    rounded outward (``rounding``: floor for the lower end, ceil for the upper): "0.8″",
-    "225″"; the end of an interval 70 times its value is quoted, not stated."""
+def _decimals(value: float) -> int:
+    """The decimal of ``value`` to two significant digits, whole units at least."""
     if not (math.isfinite(value) and value > 0):
-        return f"{0:.0f}{symbol}" if value == 0 else f"{value:g}{symbol}"
-    d = max(0, 1 - math.floor(math.log10(value)))
-    return f"{rounding(value * 10 ** d) / 10 ** d:.{d}f}{symbol}"
+        return 0
+    return max(0, 1 - math.floor(math.log10(value)))
+
+
+def _end(value: float, rounding, symbol: str, d: int) -> str:
+    """An end of the interval withheld, to the decimal ``d`` of its upper end's two
+    significant digits (whole units at least), rounded outward (``rounding``: floor for the
+    lower end, ceil for the upper): "0.8″ … 2.3″", "0″ … 225″"; the end of an interval 70
+    times its value is quoted, not stated."""
+    if not (math.isfinite(value) and value >= 0):
+        return f"{value:g}{symbol}"
+    shown = rounding(value * 10 ** d) / 10 ** d
+    return f"{shown:.{d}f}{symbol}"

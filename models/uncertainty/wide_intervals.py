@@ -8,10 +8,11 @@ bounds from each target's own readings (models.uncertainty.figure_intervals: chi
 freedom, and its upper bound is s·√((n − 1)/χ²) — at 3 runs and 95.45 % per target up to
 about 6 s, more with the targets taken at once. So the upper end lies several times above
 the figure while the figure itself is as measured. A specification of the figure is decided
-to conform only when the upper end is within it (ISO 14253-1, as the certificate states):
-with the upper end at :data:`FAR_ABOVE` times the figure or more, no specification that a
-figure of this size would be given can be decided at this number of runs. Said only where
-it is so, naming the figures and their upper ends."""
+to conform only when the upper end is within it, and not to conform only when it is below
+the lower end (ISO 14253-1, as the certificate states): with the upper end at
+:data:`FAR_ABOVE` times the figure or more, a specification between the interval's ends —
+the range a figure of this size is specified in — cannot be decided at this number of runs.
+Said only where it is so, naming the figures and their intervals' ends."""
 
 from __future__ import annotations
 
@@ -34,18 +35,21 @@ SIGMA_FIGURES = ("A", "A_up", "A_down", "R", "R_up", "R_down", "P", "Ps_max")
 RUNS = QT_TR_NOOP(
     "At {runs} runs the upper end of the coverage interval lies far above the figure for "
     "{figures}: each target's σ is known only from its own {runs} readings ({nu} degrees of "
-    "freedom) and may lie far above its s. A specification of such a figure conforms only "
-    "when it is at least the upper end, so no specification that a figure of this size "
-    "would be given can be decided at this number of runs; more runs narrow the interval.")
+    "freedom) and may lie far above its s. A specification of such a figure is decided only "
+    "outside its interval: it conforms when the specification is at least the upper end and "
+    "does not conform when it is below the lower end; a specification between the "
+    "interval's ends cannot be decided at this number of runs; more runs narrow the interval.")
 PASSES = QT_TR_NOOP(
     "At {runs} passes the upper end of the coverage interval lies far above the figure for "
     "{figures}: each θ's σ is known only from its own {runs} readings ({nu} degrees of "
-    "freedom) and may lie far above its s. A specification of such a figure conforms only "
-    "when it is at least the upper end, so no specification that a figure of this size "
-    "would be given can be decided at this number of passes; more passes narrow the "
+    "freedom) and may lie far above its s. A specification of such a figure is decided only "
+    "outside its interval: it conforms when the specification is at least the upper end and "
+    "does not conform when it is below the lower end; a specification between the "
+    "interval's ends cannot be decided at this number of passes; more passes narrow the "
     "interval.")
-#: one figure in the list: "A 20″ (upper end 107″)"
-FIGURE = QT_TR_NOOP("{figure} {value} (upper end {high})")
+#: one figure in the list with its interval's ends: "A 20″ (interval 16″ … 107″)" (day
+#: review 69 F4: "no specification … can be decided" overstated, one below the lower end is)
+FIGURE = QT_TR_NOOP("{figure} {value} (interval {low} … {high})")
 
 
 def far_above(figures: Mapping[str, float], intervals: Mapping) -> list[str]:
@@ -70,8 +74,8 @@ def wide_intervals_statement(figures: Mapping[str, float], intervals: Mapping, r
     for key in keys:
         iv = intervals[key]
         d = interval_decimals(iv.low, iv.high)
-        high = interval_ends(iv.low, iv.high, d)[1] if outwards else iv.high
+        low, high = interval_ends(iv.low, iv.high, d) if outwards else (iv.low, iv.high)
         listed.append(message(FIGURE, figure=key, value=f"{figures[key]:.{d}f}{symbol}",
-                              high=f"{high:.{d}f}{symbol}"))
+                              low=f"{low:.{d}f}{symbol}", high=f"{high:.{d}f}{symbol}"))
     return message(PASSES if passes else RUNS, runs=runs, nu=runs - 1,
                    figures=separated(listed, ", "))

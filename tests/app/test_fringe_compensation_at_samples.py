@@ -85,7 +85,7 @@ def _statement(text: str, begins: str) -> str:
 def test_the_certificates_statement_on_the_table_says_it_holds_at_the_samples_only(
         tmp_path, capsys):
     text = _certificate(tmp_path, capsys)
-    table = _statement(text, "Conformity is judged on the interpolation error as found.")
+    table = _statement(text, "No conformity is judged on the interpolation error as found")
     assert "table sha256" in table and AT_SAMPLES in table, table
     assert "the correction table is expected to leave" not in text
 

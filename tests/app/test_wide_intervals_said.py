@@ -26,7 +26,22 @@ from tests.repeatability_rig import iso230_rows
 
 SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
 SAID = "the upper end of the coverage interval lies far above the figure for"
-LISTED = re.compile(r"(\w+) (-?[\d.]+)\" \(upper end ([\d.]+)\"\)")
+# each figure with its interval's two ends (day review 69 F4: the lower end too)
+LISTED = re.compile(r"(\w+) (-?[\d.]+)\" \(interval ([\d.]+)\" … ([\d.]+)\"\)")
+#: what cannot be decided, and what can (day review 69 F4: "no specification … can be
+#: decided" overstated, a specification below the lower end is decided: does not conform)
+UNDECIDED = ("it conforms when the specification is at least the upper end and does not "
+             "conform when it is below the lower end; a specification between the interval's "
+             "ends cannot be decided at this number of")
+
+
+def _listed(sentence: str) -> dict[str, tuple[float, float]]:
+    """Each listed figure: its value and its interval's upper end, the lower end checked
+    to lie at or below the figure."""
+    found = LISTED.findall(sentence)
+    assert found, sentence
+    assert all(float(low) <= float(v) <= float(high) for _, v, low, high in found), found
+    return {key: (float(v), float(high)) for key, v, low, high in found}
 
 
 def _axis_csv(tmp_path: Path, runs: int, seed: int) -> Path:
@@ -63,15 +78,15 @@ def test_the_certificate_says_why_an_upper_end_lies_far_above_its_figure(tmp_pat
                           text=True, encoding="utf-8", check=True).stdout
     assert "At 3 runs " + SAID in re.sub(r"\s+", " ", text)
     sentence = _sentence(text)
-    listed = {key: (float(v), float(h)) for key, v, h in LISTED.findall(sentence)}
+    listed = _listed(sentence)
     # R's upper end is at least its worst target's chi-square bound: ≈ 6.6 R at 3 runs
     ratio = np.sqrt(2 / stats.chi2.ppf(stats.norm.sf(2.0), 2))
     assert ratio > 3
     assert "R" in listed, sentence
     assert all(h >= 3 * v for v, h in listed.values()), listed
     assert "(2 degrees of freedom)" in sentence
-    assert "no specification that a figure of this size would be given can be decided at " \
-           "this number of runs" in sentence
+    assert UNDECIDED + " runs" in sentence, sentence
+    assert "no specification" not in sentence
 
 
 def test_the_summary_says_it_too_and_nothing_where_no_upper_end_is_far_above(
@@ -82,7 +97,8 @@ def test_the_summary_says_it_too_and_nothing_where_no_upper_end_is_far_above(
                  "--language", "en"]) == 0
     out = capsys.readouterr().out
     assert "At 3 runs " + SAID in out, out
-    listed = dict((key, (float(v), float(h))) for key, v, h in LISTED.findall(_sentence(out)))
+    listed = _listed(_sentence(out))
+    assert UNDECIDED + " runs" in _sentence(out)
     assert "R" in listed and all(h >= 3 * v for v, h in listed.values()), listed
     # many runs: each σ known to 19 degrees of freedom, every upper end within 3 times
     assert main(["analyze", "positioning", str(_axis_csv(tmp_path, 20, 6863)),
@@ -109,8 +125,9 @@ def test_the_theodolites_summary_and_certificate_say_it_at_three_passes(tmp_path
     out = capsys.readouterr().out
     said = "At 3 passes the upper end of the coverage interval lies far above the figure for"
     assert said in out, out
-    listed = {key: (float(v), float(h)) for key, v, h in LISTED.findall(
-        out[out.index(said):out.index("more passes narrow the interval")])}
+    sentence = re.sub(r"\s+", " ", out[out.index(said):out.index("more passes narrow")])
+    listed = _listed(sentence)
+    assert UNDECIDED + " passes" in sentence, sentence
     assert {"R", "R_up", "R_down"} <= set(listed), listed
     assert all(h >= 3 * v for v, h in listed.values()), listed
     lines = [line.split(",") for line in text.splitlines()]

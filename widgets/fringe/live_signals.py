@@ -457,11 +457,7 @@ class LiveSignalsPanel(QWidget):
                            ("roll_mrad", tr("Roll")), ("dirt", tr("Dirt on the scale"))):
             self.knob_labels[name].setText(text)
         self.note.setText(translated(NOT_CONFORMITY))
-        # wrapped to the plot's width (day review 67), the shorter wording where the whole
-        # one takes more than two lines (day review 68 F10: four lines at 200 %)
-        set_fitting_title(self.lissajous, [
-            tr("Rings: amplitude band (green inside, amber outer)"),
-            tr("Band: green inside, amber outer")], size="9pt", color="#455a64")
+        self._title_rings()
         self.lissajous.setLabel("left", tr("u sin (V)"))
         self.lissajous.setLabel("bottom", tr("u cos (V)"))
         self.error_plot.setLabel("left", tr("interpolation error (° el.)"))
@@ -567,7 +563,26 @@ class LiveSignalsPanel(QWidget):
         self.extremes.reset()
         self.refresh()
 
+    def _title_rings(self) -> None:
+        """The Lissajous figure's title naming only the rings drawn: the amber outer ring
+        only where the preset has an outer amplitude band (day review 69 F6: "amber outer"
+        over a HEIDENHAIN 1 Vpp preset, which has none); wrapped to the plot's width (day
+        review 67), the shorter wording where the whole one takes more than two lines (day
+        review 68 F10: four lines at 200 %)."""
+        preset = self.current_preset
+        band = preset.band("amplitude_a") if preset is not None else None
+        texts: list[str]
+        if band is None:
+            texts = [tr("No amplitude band in this preset: no rings"), tr("No rings")]
+        elif band.outer is None:
+            texts = [tr("Rings: amplitude band (green)"), tr("Band: green")]
+        else:
+            texts = [tr("Rings: amplitude band (green inside, amber outer)"),
+                     tr("Band: green inside, amber outer")]
+        set_fitting_title(self.lissajous, texts, size="9pt", color="#455a64")
+
     def _show_bands(self) -> None:
+        self._title_rings()
         preset = self.current_preset
         titles = _quantity_titles()
         for quantity, bar in self.bars.items():

@@ -38,12 +38,16 @@ class PlotDrawing(PageFrame):
         x_ticks = _nice_ticks(float(xs[finite].min()), float(xs[finite].max()))
         if xs[finite].min() >= 0 and 270 < xs[finite].max() <= 360:  # a turn: 0…360°, not 400°
             x_ticks = [float(v) for v in range(0, 361, 45)]
+            x_lo, x_hi = 0.0, 360.0
+        else:
+            x_lo, x_hi = _data_ends(x_ticks, float(xs[finite].min()), float(xs[finite].max()))
         y_ticks = _nice_ticks(float(ys[finite].min()), float(ys[finite].max()))
         if (float(ys[finite].max()) - y_ticks[0]) > 0.85 * (y_ticks[-1] - y_ticks[0]):
             # headroom for the legend, which is drawn inside the top of the frame: a band or
             # curve reaching the top would be hidden under it
             y_ticks.append(round(y_ticks[-1] + y_ticks[-1] - y_ticks[-2], 12))
-        xlo, xhi, ylo, yhi = x_ticks[0], x_ticks[-1], y_ticks[0], y_ticks[-1]
+        xlo, xhi, ylo, yhi = x_lo, x_hi, y_ticks[0], y_ticks[-1]
+        x_ticks = [t for t in x_ticks if xlo - 1e-9 * (xhi - xlo) <= t <= xhi + 1e-9 * (xhi - xlo)]
 
         def px(v):
             return x0 + (np.asarray(v) - xlo) / (xhi - xlo) * w
@@ -112,6 +116,22 @@ class PlotDrawing(PageFrame):
         self.set_line_width(0.2)
         self.set_draw_color(*INK)
         self.set_y(y0 + h + 9)
+
+
+#: the share of the axis a tick may reach past the data before the axis ends at the data
+#: instead (day review 69 F6: the fringe plots' x axis ran to 80 periods for 64 of data)
+PAST_DATA = 0.1
+
+
+def _data_ends(ticks: list[float], lo: float, hi: float) -> tuple[float, float]:
+    """The x axis's ends: the outer ticks, or the data's own end where the tick beyond it
+    lies more than :data:`PAST_DATA` of the axis past it."""
+    span = ticks[-1] - ticks[0]
+    if not hi - lo > 1e-9 * max(span, 1e-300):
+        return ticks[0], ticks[-1]
+    low = lo if lo - ticks[0] > PAST_DATA * span else ticks[0]
+    high = hi if ticks[-1] - hi > PAST_DATA * span else ticks[-1]
+    return low, high
 
 
 def _nice_ticks(lo: float, hi: float, count: int = 6) -> list[float]:

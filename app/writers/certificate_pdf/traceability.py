@@ -6,7 +6,7 @@ from __future__ import annotations
 from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.wording import _between, _listed, _translatable, label
 from models.certificate.document import CertificateDocument, Table
-from models.certificate.metadata import ReferenceStandard
+from models.certificate.metadata import APPLIES_TO_NAMES, ReferenceStandard
 from models.messages import QT_TR_NOOP, joined, message, separated
 from models.quantity import UNITS, Quantity
 from models.uncertainty.budget import BASIS_DIVISORS
@@ -39,18 +39,24 @@ def _standards_table(document: CertificateDocument) -> Table:
 
 
 def _stated_uncertainty(s: ReferenceStandard):
-    """A standard's figure as its certificate states it: as typed, with its basis; read
-    from its DCC (its k known), U with that k to two significant digits (GUM 7.2.6), not
-    the every digit of the U/k the budget takes."""
+    """A standard's figure as its certificate states it: as typed, with its basis and what it
+    is stated per (a reading, an angle between two readings, a face from face 1: day review
+    69 F2, the budget takes u/√2 a reading of one stated per angle); read from its DCC (its
+    k known), U with that k to two significant digits (GUM 7.2.6), not the every digit of
+    the U/k the budget takes."""
+    per = message(APPLIES_TO_NAMES.get(s.applies_to, s.applies_to))
     if s.coverage_factor is None:
         return message("{u} ({basis})", u=Quantity(s.uncertainty, s.uncertainty_unit),
-                       basis=message(BASIS_DIVISORS[s.basis][0]))
+                       basis=message(QT_TR_NOOP("{basis} per {per}"), per=per,
+                                     basis=message(BASIS_DIVISORS[s.basis][0])))
     k = s.coverage_factor
     expanded = s.uncertainty * (k if s.basis == "u" else 1.0)
     return message("{u} ({basis})",
                    u=f"{expanded:.{uncertainty_decimals(expanded)}f}"
                      f"{UNITS[s.uncertainty_unit].written()}",
-                   basis=message(QT_TR_NOOP("expanded uncertainty U (k = {k})"), k=f"{k:.2f}"))
+                   basis=message(QT_TR_NOOP("{basis} per {per}"), per=per,
+                                 basis=message(QT_TR_NOOP("expanded uncertainty U (k = {k})"),
+                                               k=f"{k:.2f}")))
 
 
 def _traceability(document: CertificateDocument) -> str:

@@ -33,9 +33,10 @@ def test_a_standard_from_its_dcc_is_printed_as_u_with_its_k(k, basis):
     row = _standards_table(document).rows[0]
     d = two_digits(U)
     assert d == 3
-    assert str(row[3]) == f"{U:.{d}f}\" (expanded uncertainty U (k = {k:.2f}))"
-    assert str(row[3]) in ("0.050\" (expanded uncertainty U (k = 2.02))",
-                           "0.050\" (expanded uncertainty U (k = 2.00))")
+    # and what it is stated per (day review 69 F2): the polygon's, each face's reading
+    assert str(row[3]) == f"{U:.{d}f}\" (expanded uncertainty U (k = {k:.2f}) per reading)"
+    assert str(row[3]) in ("0.050\" (expanded uncertainty U (k = 2.02) per reading)",
+                           "0.050\" (expanded uncertainty U (k = 2.00) per reading)")
     # the budget still takes u = U/k exactly
     rows = {r["name"]: r for r in document.budget.table()}
     assert rows["Polygon P12"]["u"] == pytest.approx(U / k)
@@ -45,7 +46,7 @@ def test_a_standard_typed_is_printed_as_typed():
     kind, result = _sample("polygon")
     document = kind.certificate_document(result, _bundled("polygon"))
     row = _standards_table(document).rows[-1]
-    assert str(row[3]) == "0.1\" (expanded uncertainty U (k = 2))"
+    assert str(row[3]) == "0.1\" (expanded uncertainty U (k = 2) per reading)"
 
 
 def test_a_metadata_standard_keeps_a_k_read_only_where_one_was():

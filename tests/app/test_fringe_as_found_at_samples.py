@@ -1,0 +1,93 @@
+"""Where an order folds into a fitted one (N = 8, highest harmonic 3: order 5 into order 3),
+the error *as found* is the readings' own at the 8 sampled phases only, as the compensated
+error is (day review 69, finding 1): the Statistics row "Interpolation error as found …
+peak-to-peak", the legend "before compensation" and the window's bold line gave the
+sampled phases' peak-to-peak with no note, 26 % below the head's error over the whole
+period, while the after side said "at the sampled phases only"; and the statement on the
+table began "Conformity is judged on the interpolation error as found" where no conformity
+is judged (the half range is withheld). Checked on the real window (qtbot) and on a printed
+certificate (pdftotext).
+
+The channels come from tests/fringe_channels.py (first principles), nothing from models/."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from tests.fringe_channels import Channels, equal_steps
+
+pytestmark = pytest.mark.slow  # a window, and a fringe certificate
+
+LINES = 16384
+PERIOD_ARCSEC = 1296000.0 / LINES
+SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
+# the day review's record: true A3 5 mV, A5 4 mV
+HEAD = Channels(offsets_v=(0.003, -0.004), amplitudes_v=(0.5, 0.49), quadrature_deg=0.5,
+                sin_harmonics={3: (0.005, 0.4), 5: (0.004, 1.1)},
+                cos_harmonics={3: (0.003, -0.3), 5: (0.0025, 0.2)}, noise_v=0.0003)
+AT_SAMPLES = "at the sampled phases only"
+OPTIONS = {"max_order": 3, "lines_per_rev": LINES, "samples_per_period": 8}
+
+
+def _record(tmp_path: Path) -> Path:
+    theta = equal_steps(64 * 8, 8)
+    u_sin, u_cos = HEAD.sample(theta, np.random.default_rng(6901))
+    path = tmp_path / "n8.csv"
+    path.write_text("u_sin,u_cos\n" + "".join(f"{s:.9f},{c:.9f}\n"
+                                             for s, c in zip(u_sin, u_cos, strict=True)))
+    return path
+
+
+def test_the_windows_line_and_legend_say_the_error_as_found_is_at_the_samples(
+        window, qtbot, tmp_path):
+    fringe = window.presenter("fringe")
+    window.tabs.setCurrentIndex(window.presenters.index(fringe))
+    fringe.import_file(_record(tmp_path))
+    fringe.set_settings({**fringe._settings, **OPTIONS})
+    qtbot.waitUntil(lambda: fringe.result is not None and not fringe.analysis_pending
+                    and bool(fringe.result.folded_orders), timeout=60000)
+    line = fringe.view.verdict.text()
+    found = line[:line.index("after compensation")]
+    assert "peak-to-peak " + AT_SAMPLES in found, line
+    legend = [item[1].text for item in fringe.view.error_plot.legend.items]
+    assert any("before compensation" in name and AT_SAMPLES in name for name in legend), legend
+
+
+def test_the_certificate_qualifies_the_error_as_found_and_judges_nothing_on_it(
+        tmp_path, capsys):
+    from app.main import main
+
+    if shutil.which("pdftotext") is None:
+        pytest.fail("pdftotext is missing: apt-get install poppler-utils (.ci/run does)")
+    data = json.loads((SAMPLES / "certificate_fringe.json").read_text("utf-8"))
+    data.pop("certificate_number", None)  # the register allocates one
+    data.update({"language": "en", "decision_quantity": "half_range"})
+    meta = tmp_path / "meta.json"
+    meta.write_text(json.dumps(data), encoding="utf-8")
+    pdf = tmp_path / "c.pdf"
+    code = main(["analyze", "fringe", str(_record(tmp_path)), "--metadata", str(meta),
+                 "--certificate", str(pdf), "--max-order", "3", "--lines-per-rev", str(LINES),
+                 "--samples-per-period", "8"])
+    assert code == 0, capsys.readouterr().err
+    text = re.sub(r"\s+", " ", subprocess.run(
+        ["pdftotext", "-enc", "UTF-8", str(pdf), "-"], capture_output=True, text=True,
+        encoding="utf-8", check=True).stdout)
+    # the row's columns interleave in pdftotext: its note begins after the peak-to-peak,
+    # the range's figures may stand between its words
+    row = re.search(r"Interpolation error as found .{0,120}?peak-to-peak ([\d.]+)\" "
+                    r"\([\d.]+ % of a period\)(; at the [-+\d.\"… ]*sampled phases only: "
+                    r"the error between them is not determined)?", text)
+    assert row is not None, text
+    assert row.group(2), row.group(0)
+    # the figure is the sampled phases': below the whole period's true error
+    assert float(row.group(1)) < np.ptp(HEAD.true_error_rad()) * PERIOD_ARCSEC / (2 * np.pi)
+    assert "before compensation, " + AT_SAMPLES in text
+    assert "Conformity is judged on the interpolation error as found" not in text
+    assert "No conformity is judged on the interpolation error as found" in text
