@@ -202,6 +202,14 @@
         <translation>幅值比 {ratio}，正交误差 {quadrature}</translation>
     </message>
     <message>
+        <source>No conformity is judged on the interpolation error as found: it is known at the sampled phases only, and over the whole period it is not determined. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}), and the compensated error and the table hold {caveat}; sample more finely before loading the table into the encoder.</source>
+        <translation>不按补偿前的细分误差作符合性判定：它仅在采样相位处已知，在整个周期上未确定。除非修正表已载入被校对象，补偿后误差不是被校对象的误差（修正表 sha256 {sha}）；补偿后误差和修正表{caveat}；将修正表载入编码器之前，请以更细的间隔采样。</translation>
+    </message>
+    <message>
+        <source>Conformity is judged on the interpolation error as found at the samples, each with its own U. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}), and the compensated error and the table hold {caveat}; sample more finely before loading the table into the encoder.</source>
+        <translation>符合性按各采样点处补偿前的细分误差判定，各点采用其自身的 U。除非修正表已载入被校对象，补偿后误差不是被校对象的误差（修正表 sha256 {sha}）；补偿后误差和修正表{caveat}；将修正表载入编码器之前，请以更细的间隔采样。</translation>
+    </message>
+    <message>
         <source>samples</source>
         <translation>采样点</translation>
     </message>
@@ -1306,6 +1314,10 @@
         <translation>补偿后（仅在采样相位上）</translation>
     </message>
     <message>
+        <source>before compensation, at the sampled phases only</source>
+        <translation>补偿前，仅在采样相位处</translation>
+    </message>
+    <message>
         <source>Interpolation error before and after compensation</source>
         <translation>补偿前后的细分误差</translation>
     </message>
@@ -1783,6 +1795,10 @@
     <message>
         <source>No certificate: {progress} is not complete. A certificate needs every set, mounting or run complete; finish it, or delete its rows to certify the complete ones.</source>
         <translation>不能出具证书：{progress} 尚未完成。证书要求每个测回、安装位置或测量循环都已完成；请完成它，或删除其各行以对已完成部分出具证书。</translation>
+    </message>
+    <message>
+        <source>No certificate: {reason}.</source>
+        <translation>不出具证书：{reason}。</translation>
     </message>
     <message>
         <source>{reason}. Nothing was written; the details are kept.</source>
@@ -2840,7 +2856,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>certificate field &apos;{field_name}&apos; must be text</source>
-        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides, U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned code points What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard).</extracomment>
         <translation>证书字段 &apos;{field_name}&apos; 必须是文本</translation>
     </message>
     <message>
@@ -4725,7 +4740,9 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>reading</source>
-        <extracomment>what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO), in the words of the certificate&apos;s budget (models.certificate.document.reference_standard_components)</extracomment>
+        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides, U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned code points What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard). each as a certificate names it after &quot;per&quot; (&quot;standard uncertainty u per angle between two readings&quot;), in the standards table as in the budget (day review 69 F2: the table said &quot;0.5″ (standard uncertainty u)&quot; alike for both, and the budget took 0.354″ unexplained)
+----------
+what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO), in the words of the certificate&apos;s budget (models.certificate.document.reference_standard_components)</extracomment>
         <translation>读数</translation>
     </message>
     <message>
@@ -4739,6 +4756,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>the readings of every target came out identical in each direction and show no step of their display: their repeatability, part of U, cannot be told, so U cannot be stated</source>
         <translation>各目标位置在每个方向上的读数完全相同，且看不出其显示的步距：其重复性（U 的一部分）无法得知，因此无法给出 U</translation>
+    </message>
+    <message>
+        <source>target(s) {forward} forward and {backward} backward were approached fewer than twice: their repeatability, part of U, is unknown, so U cannot be stated</source>
+        <translation>目标 {forward} 正向、目标 {backward} 反向趋近少于两次：其重复性（U 的组成部分）未知，因此无法给出 U</translation>
     </message>
     <message>
         <source>target(s) {targets} forward were approached fewer than twice: their repeatability, part of U, is unknown, so U cannot be stated</source>
@@ -5058,6 +5079,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>（无 u：相位由信号估计）</translation>
     </message>
     <message>
+        <source>{parameters} (± u, k = 1); R² = {r_squared}</source>
+        <translation>{parameters}（± u，k = 1）；R² = {r_squared}</translation>
+    </message>
+    <message>
         <source>phase from equal steps, {n} samples per period</source>
         <translation>相位取自等间隔采样，每周期 {n} 个</translation>
     </message>
@@ -5126,8 +5151,12 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>ADC（其指标在分析设置中给出）</translation>
     </message>
     <message>
-        <source>Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} after compensation</source>
+        <source>Interpolation error {ptp} peak-to-peak at the sampled phases only ({share} % of a period); {after} after compensation</source>
         <extracomment>what the DCC says of the raw error&apos;s U (the printed &quot;U as found&quot;): the one rule</extracomment>
+        <translation>细分误差峰峰值 {ptp}，仅在采样相位处（一个周期的 {share} %）；补偿后 {after}</translation>
+    </message>
+    <message>
+        <source>Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} after compensation</source>
         <translation>细分误差峰峰值 {ptp}（一个周期的 {share} %）；补偿后 {after}</translation>
     </message>
     <message>
@@ -8587,6 +8616,11 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>仅在采样相位上成立：采样点之间的修正表由含有未拟合阶次（{folds}）的拟合阶次构成，其在该处留下的误差无法确定</translation>
     </message>
     <message>
+        <source>at the sampled phases only: the error between them is not determined</source>
+        <extracomment>where the error as found holds, where orders fold: the readings&apos; own at the samples, its peak-to-peak the sampled phases&apos; (day review 69 F1: 0.497″ at the 8 phases of a head whose whole period holds 0.671″, printed with no note beside the qualified after side)</extracomment>
+        <translation>仅在采样相位处：其间的误差未确定</translation>
+    </message>
+    <message>
         <source>order {order} into order {into}</source>
         <translation>{order} 次折入 {into} 次</translation>
     </message>
@@ -8601,10 +8635,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>As left: the lab states that the correction table with sha256 {sha} was loaded into the encoder; the compensated error and its U are the item as left {caveat}.</source>
         <translation>交付状态：实验室声明已将 sha256 为 {sha} 的修正表载入编码器；补偿后误差及其 U 为被校对象交付时的状态，{caveat}。</translation>
-    </message>
-    <message>
-        <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}), and the compensated error and the table hold {caveat}; sample more finely before loading the table into the encoder.</source>
-        <translation>符合性按补偿前的细分误差判定。除非修正表已载入被校对象，补偿后误差不是被校对象的误差（修正表 sha256 {sha}）；补偿后误差和修正表{caveat}；将修正表载入编码器之前，请以更细的间隔采样。</translation>
     </message>
     <message>
         <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
@@ -10721,7 +10751,11 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so</source>
-        <translation>承载被测量的计量标准为 {roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项</translation>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项</translation>
+    </message>
+    <message>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; none of them is listed so</source>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；目前一项也未如此列出</translation>
     </message>
     <message>
         <source>{standard}: its calibration was due on {due}, before the date of calibration {date}: it had expired</source>
@@ -11345,6 +11379,22 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <translation>光栅尺污渍</translation>
     </message>
     <message>
+        <source>No amplitude band in this preset: no rings</source>
+        <translation>此预设无幅值容差带：不绘制圆环</translation>
+    </message>
+    <message>
+        <source>No rings</source>
+        <translation>无圆环</translation>
+    </message>
+    <message>
+        <source>Rings: amplitude band (green)</source>
+        <translation>圆环：幅值容差带（绿色）</translation>
+    </message>
+    <message>
+        <source>Band: green</source>
+        <translation>容差带：绿色</translation>
+    </message>
+    <message>
         <source>Rings: amplitude band (green inside, amber outer)</source>
         <translation>圆环：幅值容差带（绿色为内带，琥珀色为外带）</translation>
     </message>
@@ -11725,9 +11775,14 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <translation>ISO 230-2 R 和 A（及 R↑、R↓、A↑、A↓）是用本经纬仪读出的轴系的指标：构成它们的各测回标准偏差包含其指向噪声，读数显示为每次读数 {s}（ν = {dof}）；用它读出的完全重复的轴系有 R ≈ {r}，其包含区间是如此读出的指标的区间。E、M、B 和 B̄ 是各测回均值的指标：即轴系自身的指标。</translation>
     </message>
     <message>
-        <source>{note}; a standard stated for any angle between two readings enters each reading at u/√2 (an angle holds two readings&apos; errors), so once at each point</source>
-        <extracomment>the share of the coverage interval&apos;s tail spent on the pointing noise&apos;s lower confidence bound, which sizes the widening for a circle error of the curve&apos;s worst shape (:func:`circle_part_not_excluded`); the widened interval is held at the rest (Berger &amp; Boos 1994). 0.25: the expected half-width z(1 − (1 − γ) tail/2) · s_E + 2k √(u² − s_lo(γ)²) (s_E the figure&apos;s own spread, about 1.2 σ/√passes) is within 1.3 % of its least over γ in every case of the study of #39 (σ 0.1–1.5″, u_c 0–0.8″, ν 22–328; 0.4–0.5 the least where the circle hides under the pointing noise, 0.1 where it stands above it) a budget note where a standard is stated for any angle between two readings: the stated u per reading is then its figure over √2 (models.theodolite.report.stated_reading_uncertainty)</extracomment>
-        <translation>{note}；按两次读数之间任意角度给出的标准器，每次读数计入 u/√2（一个角度含两次读数的误差），因此在每个点只计入一次</translation>
+        <source>{note}; {standards}: a standard stated for any angle between two readings enters each reading at u/√2, since an angle is the difference of two readings, each with its own error, so a point (its reading less θ₀&apos;s) takes u once</source>
+        <extracomment>the share of the coverage interval&apos;s tail spent on the pointing noise&apos;s lower confidence bound, which sizes the widening for a circle error of the curve&apos;s worst shape (:func:`circle_part_not_excluded`); the widened interval is held at the rest (Berger &amp; Boos 1994). 0.25: the expected half-width z(1 − (1 − γ) tail/2) · s_E + 2k √(u² − s_lo(γ)²) (s_E the figure&apos;s own spread, about 1.2 σ/√passes) is within 1.3 % of its least over γ in every case of the study of #39 (σ 0.1–1.5″, u_c 0–0.8″, ν 22–328; 0.4–0.5 the least where the circle hides under the pointing noise, 0.1 where it stands above it) a budget note where a standard is stated for any angle between two readings: the stated u per reading is then its figure over √2 (models.theodolite.report.stated_reading_uncertainty); each such standard named with its figure and its share a reading (day review 69 F2: &quot;u = 0.354″ per reading&quot; beside &quot;0.5″&quot; in the table, and the reader left to find 0.5/√2)</extracomment>
+        <translation>{note}；{standards}：按两次读数之间任意角度给出的标准器，每次读数计入 u/√2，因为一个角度是两次读数之差，每次读数各有其误差，因此一个点（其读数减去 θ₀ 的读数）计入一次 u</translation>
+    </message>
+    <message>
+        <source>{standard} u = {u} per angle, u/√2 = {share} per reading</source>
+        <extracomment>one standard stated per angle in :data:`PER_ANGLE_NOTE`</extracomment>
+        <translation>{standard} 每个角度 u = {u}，每次读数 u/√2 = {share}</translation>
     </message>
     <message>
         <source>Here the interval of E, M and A (E↑, E↓, A↑, A↓) reaches at least {shift} beyond the scatter&apos;s own at each end (that at the rest of the tail), for a circle error the readings do not exclude: up to {circle} per reading (the stated theodolite u over the pointing noise&apos;s lower confidence bound), the same at a θ in every pass, whose shape is not known and may be the curve&apos;s worst ({pair} between two θ); that widening, not the scatter, takes such a lower end to 0 where the figure is smaller than it.</source>
@@ -11969,23 +12024,23 @@ Replace it?</source>
         <translation>两个测回只给各 θ 的重复性一个自由度：仅由读数得出的包含区间将为 {low} … {high}（证书还计入所列标准器的 u）；每个方向至少测量 3 个测回</translation>
     </message>
     <message>
-        <source>At {runs} runs the upper end of the coverage interval lies far above the figure for {figures}: each target&apos;s σ is known only from its own {runs} readings ({nu} degrees of freedom) and may lie far above its s. A specification of such a figure conforms only when it is at least the upper end, so no specification that a figure of this size would be given can be decided at this number of runs; more runs narrow the interval.</source>
-        <extracomment>an upper end at least this many times the figure is &quot;far above&quot; it: a specification that wide is not one a figure of this size is given (a figure&apos;s own scatter at the 5 runs ISO 230-2 asks for takes the upper end to about 2–2.7 times: A 22″ … 44″, P 24″ … 64″ in the bundled sample) the figures made of each target&apos;s standard deviation, whose intervals are its bounds</extracomment>
-        <translation>测量 {runs} 次时，以下指标的包含区间上端远高于指标值：{figures}。各目标位置的 σ 仅由其自身的 {runs} 个读数得出（自由度 {nu}），可能远大于其 s。此类指标的技术要求只有不小于区间上端时才判定为符合，因此在此测量次数下，对这样大小的指标所规定的技术要求均无法作出判定；增加测量次数可使区间变窄。</translation>
-    </message>
-    <message>
-        <source>At {runs} passes the upper end of the coverage interval lies far above the figure for {figures}: each θ&apos;s σ is known only from its own {runs} readings ({nu} degrees of freedom) and may lie far above its s. A specification of such a figure conforms only when it is at least the upper end, so no specification that a figure of this size would be given can be decided at this number of passes; more passes narrow the interval.</source>
-        <translation>测回 {runs} 次时，以下指标的包含区间上端远高于指标值：{figures}。各 θ 的 σ 仅由其自身的 {runs} 个读数得出（自由度 {nu}），可能远大于其 s。此类指标的技术要求只有不小于区间上端时才判定为符合，因此在此测回数下，对这样大小的指标所规定的技术要求均无法作出判定；增加测回数可使区间变窄。</translation>
-    </message>
-    <message>
-        <source>{figure} {value} (upper end {high})</source>
-        <extracomment>one figure in the list: &quot;A 20″ (upper end 107″)&quot;</extracomment>
-        <translation>{figure} {value}（区间上端 {high}）</translation>
-    </message>
-    <message>
         <source>no U is stated for the signal parameters: the phase was estimated from the signals, so they are identified in the estimated phase&apos;s frame, which the signals&apos; harmonics shift (a distortion of the phase that leaves the Lissajous figure round is not observable); the bias is not determined, and a U from the fit would not cover it</source>
         <extracomment>why no parameter has a U when the phase was estimated from the signals</extracomment>
         <translation>信号参数不给出 U：相位由信号估计，因此这些参数是在估计相位的坐标系中识别的，而信号的谐波会使该坐标系偏移（使李萨如图保持为圆的相位畸变不可观测）；该偏差无法确定，由拟合得到的 U 不能覆盖它</translation>
+    </message>
+    <message>
+        <source>At {runs} runs the upper end of the coverage interval lies far above the figure for {figures}: each target&apos;s σ is known only from its own {runs} readings ({nu} degrees of freedom) and may lie far above its s. A specification of such a figure is decided only outside its interval: it conforms when the specification is at least the upper end and does not conform when it is below the lower end; a specification between the interval&apos;s ends cannot be decided at this number of runs; more runs narrow the interval.</source>
+        <extracomment>an upper end at least this many times the figure is &quot;far above&quot; it: a specification that wide is not one a figure of this size is given (a figure&apos;s own scatter at the 5 runs ISO 230-2 asks for takes the upper end to about 2–2.7 times: A 22″ … 44″, P 24″ … 64″ in the bundled sample) the figures made of each target&apos;s standard deviation, whose intervals are its bounds</extracomment>
+        <translation>测量 {runs} 次时，以下指标的包含区间上端远高于指标值：{figures}。各目标位置的 σ 仅由其自身的 {runs} 个读数得出（自由度 {nu}），可能远大于其 s。此类指标的技术要求只有在其包含区间之外时才能判定：技术要求不小于区间上端时判定为符合，小于区间下端时判定为不符合；技术要求介于区间两端之间时，在此测量次数下无法判定；增加测量次数可使区间变窄。</translation>
+    </message>
+    <message>
+        <source>At {runs} passes the upper end of the coverage interval lies far above the figure for {figures}: each θ&apos;s σ is known only from its own {runs} readings ({nu} degrees of freedom) and may lie far above its s. A specification of such a figure is decided only outside its interval: it conforms when the specification is at least the upper end and does not conform when it is below the lower end; a specification between the interval&apos;s ends cannot be decided at this number of passes; more passes narrow the interval.</source>
+        <translation>测回 {runs} 次时，以下指标的包含区间上端远高于指标值：{figures}。各 θ 的 σ 仅由其自身的 {runs} 个读数得出（自由度 {nu}），可能远大于其 s。此类指标的技术要求只有在其包含区间之外时才能判定：技术要求不小于区间上端时判定为符合，小于区间下端时判定为不符合；技术要求介于区间两端之间时，在此测回数下无法判定；增加测回数可使区间变窄。</translation>
+    </message>
+    <message>
+        <source>{figure} {value} (interval {low} … {high})</source>
+        <extracomment>one figure in the list with its interval&apos;s ends: &quot;A 20″ (interval 16″ … 107″)&quot; (day review 69 F4: &quot;no specification … can be decided&quot; overstated, one below the lower end is)</extracomment>
+        <translation>{figure} {value}（区间 {low} … {high}）</translation>
     </message>
 </context>
 </TS>
