@@ -165,8 +165,9 @@ class CrossCalResult:
             "the autocollimator's drift is not measured, and a drift the same way in every "
             "mounting is a ramp over the encoder's steps that these readings cannot tell from "
             "the encoder's error; add a closure reading to each mounting (its first face read "
-            "again at the end) or state the largest drift over a mounting "
-            "(drift_bound_arcsec)"), mountings=", ".join(map(str, unchecked)))
+            "again at the end) or state the largest drift over a mounting (the setting "
+            "\"largest autocollimator drift over a mounting\"; --drift-bound-arcsec, "
+            "drift_bound_arcsec in the metadata)"), mountings=", ".join(map(str, unchecked)))
 
     @property
     def cmc(self) -> float:

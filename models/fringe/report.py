@@ -215,7 +215,7 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
            "adc_gain_u_pct": QT_TR_NOOP("gain"), "adc_linearity_mv": QT_TR_NOOP("linearity")}
     missing = [name for key, name in adc.items() if not inputs.get(key)]
     if missing:
-        out.append(message(QT_TR_NOOP("the ADC's {figures} have no stated uncertainty"),
+        out.append(message(QT_TR_NOOP("no stated uncertainty for the ADC's {figures}"),
                            figures=listed(message(name) for name in missing)))
     return out
 

@@ -100,6 +100,10 @@
         <translation>相位由信号本身估计，无相位参考：直流偏置、幅值比和正交误差可以辨识；光栅的纯相位畸变用此方法不可观测，不包含在所给出的误差中。</translation>
     </message>
     <message>
+        <source>no stated uncertainty for the ADC&apos;s {figures}</source>
+        <translation>ADC 的{figures}未给出不确定度</translation>
+    </message>
+    <message>
         <source>sample</source>
         <translation>采样点</translation>
     </message>
@@ -8530,10 +8534,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>线性度</translation>
     </message>
     <message>
-        <source>the ADC&apos;s {figures} have no stated uncertainty</source>
-        <translation>ADC 的{figures}未给出不确定度</translation>
-    </message>
-    <message>
         <source>Fitted model, {channel} channel, direction {j}</source>
         <extracomment>the points a period is judged on when the decided quantity is the half range of the continuous as-found error (the fitted model&apos;s, over the whole period)</extracomment>
         <translation>拟合模型，{channel} 通道，第 {j} 个方向</translation>
@@ -10179,9 +10179,9 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>闭合差 (&quot;)</translation>
     </message>
     <message>
-        <source>the encoder&apos;s U is withheld: mounting(s) {mountings} have no closure reading, so the autocollimator&apos;s drift is not measured, and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that these readings cannot tell from the encoder&apos;s error; add a closure reading to each mounting (its first face read again at the end) or state the largest drift over a mounting (drift_bound_arcsec)</source>
+        <source>the encoder&apos;s U is withheld: mounting(s) {mountings} have no closure reading, so the autocollimator&apos;s drift is not measured, and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that these readings cannot tell from the encoder&apos;s error; add a closure reading to each mounting (its first face read again at the end) or state the largest drift over a mounting (the setting &quot;largest autocollimator drift over a mounting&quot;; --drift-bound-arcsec, drift_bound_arcsec in the metadata)</source>
         <extracomment>a residual beyond this many σ is marked as an outlier setting: the largest autocollimator drift over a mounting without a closure reading (budget, through the design); 0: none stated</extracomment>
-        <translation>编码器的 U 不予给出：安装位置 {mountings} 没有闭合读数，因此未测量自准直仪的漂移，而各安装位置同向的漂移是编码器各步上的一个斜坡，这些读数无法将其与编码器误差区分；请为每个安装位置补充闭合读数（末尾再读一次其第一面），或给出安装位置内的最大漂移（drift_bound_arcsec）</translation>
+        <translation>编码器的 U 不予给出：安装位置 {mountings} 没有闭合读数，因此未测量自准直仪的漂移，而各安装位置同向的漂移是编码器各步上的一个斜坡，这些读数无法将其与编码器误差区分；请为每个安装位置补充闭合读数（末尾再读一次其第一面），或给出安装位置内的最大漂移（设置项“安装位置内自准直仪的最大漂移”；命令行 --drift-bound-arcsec，元数据 drift_bound_arcsec）</translation>
     </message>
     <message>
         <source>row {row}: {reason}</source>

@@ -253,7 +253,7 @@ def test_fringe_without_stated_inputs_is_not_traceable_and_not_judged():
     assert "Metrological traceability: not established for these results" in flat
     assert "the phase reference (the sampling's uniformity (the timing of the samples)) has no " \
            "stated uncertainty" in flat
-    assert "the ADC's quantisation, offset, gain, linearity have no stated uncertainty" in flat
+    assert "no stated uncertainty for the ADC's quantisation, offset, gain, linearity" in flat
     assert "Data acquisition (16-bit ADC): no uncertainty stated" in flat
 
 
