@@ -113,8 +113,9 @@ def test_results_read_at_a_glance(window):
     view.result_splitter.setSizes([before + 150, plots - 150])
     assert view.result_splitter.sizes()[0] > before  # the technician gave it more room
     positioning = window.presenter("positioning").view
-    # A to 1″ beside its interval 17 … 44″ (each target's own bounds: 0.8.17)
-    assert positioning.verdict.text().startswith("ISO 230-2:2014: A = 22\", R = 10\"")
+    # A to 0.1″ beside its interval 18.0 … 34.7″ (each target's own bounds, at the whole tail:
+    # 0.8.18), R to 1″ beside 3 … 28″
+    assert positioning.verdict.text().startswith("ISO 230-2:2014: A = 22.4\", R = 10\"")
     window.presenter("theodolite").table_model.set_cells([(r, 0, "") for r in range(41)])
     window.presenter("theodolite").refresh()
     assert window.presenter("theodolite").view.verdict.text().startswith("No result")
