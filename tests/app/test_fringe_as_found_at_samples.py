@@ -12,44 +12,31 @@ The channels come from tests/fringe_channels.py (first principles), nothing from
 
 from __future__ import annotations
 
-import json
 import re
-import shutil
-import subprocess
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from tests.fringe_channels import Channels, equal_steps
+from tests.app.test_fringe_compensation_at_samples import (
+    AT_SAMPLES,
+    HEAD,
+    LINES,
+    OPTIONS,
+    _certificate,
+    _record,
+)
 
 pytestmark = pytest.mark.slow  # a window, and a fringe certificate
 
-LINES = 16384
 PERIOD_ARCSEC = 1296000.0 / LINES
-SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
-# the day review's record: true A3 5 mV, A5 4 mV
-HEAD = Channels(offsets_v=(0.003, -0.004), amplitudes_v=(0.5, 0.49), quadrature_deg=0.5,
-                sin_harmonics={3: (0.005, 0.4), 5: (0.004, 1.1)},
-                cos_harmonics={3: (0.003, -0.3), 5: (0.0025, 0.2)}, noise_v=0.0003)
-AT_SAMPLES = "at the sampled phases only"
-OPTIONS = {"max_order": 3, "lines_per_rev": LINES, "samples_per_period": 8}
-
-
-def _record(tmp_path: Path) -> Path:
-    theta = equal_steps(64 * 8, 8)
-    u_sin, u_cos = HEAD.sample(theta, np.random.default_rng(6901))
-    path = tmp_path / "n8.csv"
-    path.write_text("u_sin,u_cos\n" + "".join(f"{s:.9f},{c:.9f}\n"
-                                             for s, c in zip(u_sin, u_cos, strict=True)))
-    return path
+SEED = 6901
 
 
 def test_the_windows_line_and_legend_say_the_error_as_found_is_at_the_samples(
         window, qtbot, tmp_path):
     fringe = window.presenter("fringe")
     window.tabs.setCurrentIndex(window.presenters.index(fringe))
-    fringe.import_file(_record(tmp_path))
+    fringe.import_file(_record(tmp_path, SEED))
     fringe.set_settings({**fringe._settings, **OPTIONS})
     qtbot.waitUntil(lambda: fringe.result is not None and not fringe.analysis_pending
                     and bool(fringe.result.folded_orders), timeout=60000)
@@ -62,23 +49,7 @@ def test_the_windows_line_and_legend_say_the_error_as_found_is_at_the_samples(
 
 def test_the_certificate_qualifies_the_error_as_found_and_judges_nothing_on_it(
         tmp_path, capsys):
-    from app.main import main
-
-    if shutil.which("pdftotext") is None:
-        pytest.fail("pdftotext is missing: apt-get install poppler-utils (.ci/run does)")
-    data = json.loads((SAMPLES / "certificate_fringe.json").read_text("utf-8"))
-    data.pop("certificate_number", None)  # the register allocates one
-    data.update({"language": "en", "decision_quantity": "half_range"})
-    meta = tmp_path / "meta.json"
-    meta.write_text(json.dumps(data), encoding="utf-8")
-    pdf = tmp_path / "c.pdf"
-    code = main(["analyze", "fringe", str(_record(tmp_path)), "--metadata", str(meta),
-                 "--certificate", str(pdf), "--max-order", "3", "--lines-per-rev", str(LINES),
-                 "--samples-per-period", "8"])
-    assert code == 0, capsys.readouterr().err
-    text = re.sub(r"\s+", " ", subprocess.run(
-        ["pdftotext", "-enc", "UTF-8", str(pdf), "-"], capture_output=True, text=True,
-        encoding="utf-8", check=True).stdout)
+    text = _certificate(tmp_path, capsys, SEED, decision_quantity="half_range")
     # the row's columns interleave in pdftotext: its note begins after the peak-to-peak,
     # the range's figures may stand between its words
     row = re.search(r"Interpolation error as found .{0,120}?peak-to-peak ([\d.]+)\" "

@@ -33,9 +33,10 @@ AT_SAMPLES = "at the sampled phases only"
 OPTIONS = {"max_order": 3, "lines_per_rev": LINES, "samples_per_period": 8}
 
 
-def _record(tmp_path: Path) -> Path:
+def _record(tmp_path: Path, seed: int = 6808) -> Path:
+    """The head's record at N = 8, 64 periods, its noise drawn from ``seed``."""
     theta = equal_steps(64 * 8, 8)
-    u_sin, u_cos = HEAD.sample(theta, np.random.default_rng(6808))
+    u_sin, u_cos = HEAD.sample(theta, np.random.default_rng(seed))
     path = tmp_path / "n8.csv"
     path.write_text("u_sin,u_cos\n" + "".join(f"{s:.9f},{c:.9f}\n"
                                              for s, c in zip(u_sin, u_cos, strict=True)))
@@ -55,7 +56,9 @@ def test_the_windows_line_and_legend_say_where_the_compensation_holds(window, qt
     assert any("after compensation" in name and AT_SAMPLES in name for name in legend), legend
 
 
-def _certificate(tmp_path: Path, capsys, **details) -> str:
+def _certificate(tmp_path: Path, capsys, seed: int = 6808, **details) -> str:
+    """The certificate of the head's record (``seed``) with ``details`` over the sample's, its
+    text as pdftotext reads it, whitespace runs as one space."""
     from app.main import main
 
     if shutil.which("pdftotext") is None:
@@ -66,7 +69,7 @@ def _certificate(tmp_path: Path, capsys, **details) -> str:
     meta = tmp_path / "meta.json"
     meta.write_text(json.dumps(data), encoding="utf-8")
     pdf = tmp_path / f"c{len(list(tmp_path.glob('c*.pdf')))}.pdf"
-    code = main(["analyze", "fringe", str(_record(tmp_path)), "--metadata", str(meta),
+    code = main(["analyze", "fringe", str(_record(tmp_path, seed)), "--metadata", str(meta),
                  "--certificate", str(pdf), "--max-order", "3", "--lines-per-rev", str(LINES),
                  "--samples-per-period", "8"])
     out = capsys.readouterr()
