@@ -14,6 +14,8 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import QPoint, QRectF
 
+from tests.widgets.fringe.live_signals_window import open_live_signals
+
 pytestmark = pytest.mark.slow  # the window and its live window
 
 #: the window on a 640×360 px screen (1280×720 at 200 %), as fitted to it on its first open
@@ -37,11 +39,7 @@ def _in_view(panel, plot, rect: QRectF) -> bool:
 
 @pytest.fixture
 def streaming(window, qtbot):
-    window.show()
-    window.menus.live_signals_action.trigger()
-    fringe = window.presenters[window.tabs.currentIndex()]
-    panel = fringe.view.live_signals
-    qtbot.waitExposed(panel)
+    panel = open_live_signals(window, qtbot)
     panel.resize(*WINDOW)
     qtbot.wait(200)
     panel.start_demonstration()

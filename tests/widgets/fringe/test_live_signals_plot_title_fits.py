@@ -9,6 +9,8 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import QRectF
 
+from tests.widgets.fringe.live_signals_window import open_live_signals
+
 pytestmark = pytest.mark.slow  # the window and its live window
 
 
@@ -22,11 +24,7 @@ def _drawn(plot) -> QRectF:
 @pytest.mark.parametrize("language", ["en", "zh_CN"])
 def test_the_lissajous_title_is_whole_at_150_percent(window, qtbot, language):
     window.set_language(language)
-    window.show()
-    window.menus.live_signals_action.trigger()
-    fringe = window.presenters[window.tabs.currentIndex()]
-    panel = fringe.view.live_signals
-    qtbot.waitExposed(panel)
+    panel = open_live_signals(window, qtbot)
     try:
         panel.start_demonstration()  # the plots with their figures, as at the bench
         qtbot.waitUntil(lambda: panel.samples >= 2000, timeout=30000)

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import pytest
 
+from tests.widgets.fringe.live_signals_window import open_live_signals
+
 pytestmark = pytest.mark.slow  # the window and its live window
 
 GREEN, AMBER = "#2e7d32", "#ef8f00"
@@ -24,11 +26,7 @@ def _drawn(panel) -> set[str]:
 
 
 def test_the_lissajous_title_names_only_the_rings_drawn(window, qtbot):
-    window.show()
-    window.menus.live_signals_action.trigger()
-    fringe = window.presenters[window.tabs.currentIndex()]
-    panel = fringe.view.live_signals
-    qtbot.waitExposed(panel)
+    panel = open_live_signals(window, qtbot)
     try:
         panel.start_demonstration()
         qtbot.waitUntil(lambda: panel.samples >= 2000, timeout=30000)

@@ -8,6 +8,8 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import QRectF
 
+from tests.widgets.fringe.live_signals_window import open_live_signals
+
 pytestmark = pytest.mark.slow  # the window and its live window
 
 
@@ -17,11 +19,7 @@ def _title_length(axis) -> float:
 
 
 def test_the_interpolation_errors_title_stays_whole_at_150_percent(window, qtbot):
-    window.show()
-    window.menus.live_signals_action.trigger()
-    fringe = window.presenters[window.tabs.currentIndex()]
-    panel = fringe.view.live_signals
-    qtbot.waitExposed(panel)
+    panel = open_live_signals(window, qtbot)
     try:
         panel.start_demonstration()  # the bars and plots with their figures, as at the bench
         qtbot.waitUntil(lambda: panel.samples >= 2000, timeout=30000)

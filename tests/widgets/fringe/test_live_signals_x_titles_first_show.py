@@ -12,6 +12,8 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import QRectF
 
+from tests.widgets.fringe.live_signals_window import open_live_signals
+
 pytestmark = pytest.mark.slow  # the window and its live window
 
 
@@ -22,11 +24,7 @@ def _drawn(axis) -> QRectF:
 
 
 def test_the_x_titles_are_whole_on_the_first_open(window, qtbot):
-    window.show()
-    window.menus.live_signals_action.trigger()
-    fringe = window.presenters[window.tabs.currentIndex()]
-    panel = fringe.view.live_signals
-    qtbot.waitExposed(panel)
+    panel = open_live_signals(window, qtbot)
     try:
         panel.resize(835, 441)  # as fitted to the 150 % screen on its first open
         qtbot.wait(300)
