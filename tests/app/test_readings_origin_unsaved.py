@@ -8,29 +8,17 @@ from __future__ import annotations
 import hashlib
 import json
 import os
-import shutil
-import subprocess
 
 import pytest
 
 from models.certificate.metadata import CertificateMetadata
+from tests.app.test_readings_origin_kept import _line, _polygon
+from tests.pdf_text import pdf_lines
 
 pytestmark = pytest.mark.slow  # windows, each analysing the polygon's readings
 
 JOB = "job.anglebench.json"
 CHANGED = f"changed in AngleBench after {JOB} was saved (not the readings in that file)"
-
-
-def _polygon(window, qtbot):
-    presenter = window.presenter("polygon")
-    window.tabs.setCurrentIndex(window.presenters.index(presenter))
-    qtbot.waitUntil(lambda: not presenter.analysis_pending, timeout=20000)
-    return presenter
-
-
-def _line(window, presenter) -> str:
-    """The "Readings:" line a certificate of ``presenter``'s readings prints."""
-    return str(window._readings_line(presenter))
 
 
 def _killed(window) -> None:
@@ -50,11 +38,8 @@ def _set_up_changed(presenter) -> None:
 
 
 def _pdf_text(path) -> str:
-    if shutil.which("pdftotext") is None:
-        pytest.fail("pdftotext is missing: apt-get install poppler-utils (.ci/run does)")
-    out = subprocess.run(["pdftotext", "-raw", "-enc", "UTF-8", str(path), "-"],
-                         capture_output=True, text=True, check=True).stdout
-    return "".join(out.split())
+    """The PDF's text as pdftotext -raw reads it, every space taken out."""
+    return "".join("".join(pdf_lines(path)).split())
 
 
 def test_readings_changed_after_the_save_are_not_the_files(recovering_window, qtbot, tmp_path,

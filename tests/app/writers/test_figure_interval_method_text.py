@@ -18,11 +18,10 @@ import shutil
 import subprocess
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from app.main import main
-from tests.repeatability_rig import theodolite_passes_csv
+from tests.app.writers.test_decided_row_probability import _readings
 
 SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
 
@@ -43,15 +42,6 @@ SAID = {
                    "standard deviation",
                    "at 3 passes each σ has 2 degrees of freedom"),
 }
-
-
-def _readings(kind: str, tmp_path: Path) -> Path:
-    if kind == "positioning":
-        return SAMPLES / "positioning_sample.csv"
-    text, _ = theodolite_passes_csv("varying", 13, 3, 0.3, np.random.default_rng(6801))
-    path = tmp_path / "passes.csv"
-    path.write_text(text, encoding="utf-8")
-    return path
 
 
 def _text(kind: str, language: str, tmp_path: Path, capsys) -> str:
