@@ -130,17 +130,34 @@ def character_words(text: str) -> Message | str:
                    name=unicodedata.name(text, "unnamed"), code=ord(text))
 
 
-def _pair_words(one: str, other: str) -> tuple[list[Message], list[Message]]:
+def _pair_words(one: str, other: str, seen: set[tuple[str, str]] | None = None
+                ) -> tuple[list[Message], list[Message]]:
     """The differing runs of ``one`` and ``other`` in words: the pairs that print alike
-    ("the small letter o and the digit 0"), and the runs only one of them has."""
-    found = serial_difference(one, other)
-    alike = [message(QT_TR_NOOP("{one} and {other}"), one=character_words(mine),
-                     other=character_words(theirs))
-             for mine, theirs in found.pairs if mine and theirs]
-    alone = [message(QT_TR_NOOP("{chars} only in {serial}"),
-                     chars=character_words(mine or theirs), serial=one if mine else other)
-             for mine, theirs in found.pairs if not (mine and theirs)]
+    ("the small letter o and the digit 0"), and the runs only one of them has; with ``seen``
+    (the runs already named, updated here), each run named once over several ``other``."""
+    alike: list[Message] = []
+    alone: list[Message] = []
+    for mine, theirs in serial_difference(one, other).pairs:
+        if seen is not None:
+            key = (mine, theirs) if mine and theirs else (mine, theirs + "\0" + other)
+            if key in seen:
+                continue
+            seen.add(key)
+        if mine and theirs:
+            alike.append(message(QT_TR_NOOP("{one} and {other}"), one=character_words(mine),
+                                 other=character_words(theirs)))
+        else:
+            alone.append(message(QT_TR_NOOP("{chars} only in {serial}"),
+                                 chars=character_words(mine or theirs),
+                                 serial=one if mine else other))
     return alike, alone
+
+
+def _said(alike: list[Message], alone: list[Message]) -> Any:
+    """The pairs that print alike in one clause, then the runs only one serial has."""
+    said = [message(QT_TR_NOOP("{pairs} print alike, case aside"), pairs=listed(alike))] \
+        if alike else []
+    return listed([*said, *alone])
 
 
 def differences_named(one: str, others: Sequence[str]) -> Any:
@@ -154,21 +171,10 @@ def differences_named(one: str, others: Sequence[str]) -> Any:
     alone: list[Message] = []
     seen: set[tuple[str, str]] = set()
     for other in others:
-        for mine, theirs in serial_difference(one, other).pairs:
-            key = (mine, theirs) if mine and theirs else (mine, theirs + "\0" + other)
-            if key in seen:
-                continue
-            seen.add(key)
-            if mine and theirs:
-                alike.append(message(QT_TR_NOOP("{one} and {other}"),
-                                     one=character_words(mine), other=character_words(theirs)))
-            else:
-                alone.append(message(QT_TR_NOOP("{chars} only in {serial}"),
-                                     chars=character_words(mine or theirs),
-                                     serial=one if mine else other))
-    said = [message(QT_TR_NOOP("{pairs} print alike, case aside"), pairs=listed(alike))] \
-        if alike else []
-    return listed([*said, *alone])
+        more_alike, more_alone = _pair_words(one, other, seen)
+        alike += more_alike
+        alone += more_alone
+    return _said(alike, alone)
 
 
 def differences_sentence(one: str, other: str) -> Message:
@@ -176,8 +182,5 @@ def differences_sentence(one: str, other: str) -> Message:
     the small letter o and the digit 0 print alike, case aside"; a run only ``one`` or only
     ``other`` has is named as such."""
     found = serial_difference(one, other)
-    alike, alone = _pair_words(one, other)
-    said = [message(QT_TR_NOOP("{pairs} print alike, case aside"), pairs=listed(alike))] \
-        if alike else []
     return message(QT_TR_NOOP("{one} vs {other}: {differences}"), one=found.one_marked,
-                   other=found.other_marked, differences=listed([*said, *alone]))
+                   other=found.other_marked, differences=_said(*_pair_words(one, other)))
