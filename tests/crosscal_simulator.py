@@ -136,8 +136,10 @@ class Bench:
             theta -= np.degrees(np.arctan2(v[1], v[0]))
         return theta
 
-    def rows(self, mountings, closure: bool = True, vertical: bool = False) -> list[tuple]:
-        """(mounting, face, encoder_deg, ac_x_arcsec[, ac_y_arcsec]) in the order measured."""
+    def rows(self, mountings, closure=True, vertical: bool = False) -> list[tuple]:
+        """(mounting, face, encoder_deg, ac_x_arcsec[, ac_y_arcsec]) in the order measured;
+        ``closure``: every mounting ends with its closure reading (True), none (False), or the
+        mountings named (a collection of mounting numbers)."""
         n = self.faces
         step = 360.0 / n
         out = []
@@ -151,7 +153,8 @@ class Bench:
                 drift = self.common_drift_arcsec
             self.mounts.append({"mounting": j, "seat_deg": seat, "psi_arcsec": psi,
                                 "omega_rad": omega, "drift_arcsec": drift})
-            faces = np.array([(j + k) % n + 1 for k in range(n)] + ([j + 1] if closure else []))
+            closed = closure if isinstance(closure, bool) else j in closure
+            faces = np.array([(j + k) % n + 1 for k in range(n)] + ([j + 1] if closed else []))
             t = np.arange(faces.size)
             theta = self._null_turns(faces, seat, t * step, psi, omega)
             theta += self.rng.uniform(-1, 1, faces.size) * self.stop_arcsec / 3600.0

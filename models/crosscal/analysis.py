@@ -96,7 +96,8 @@ PARAMETERS = (
               "measured", "float", 0.0, "\"", 0.0, 100.0, decimals=3, step=0.05,
               zero="none stated",
               help="Without a closure reading (the first face read again at the end of the "
-                   "mounting) a mounting's drift is neither measured nor removed, and a drift "
+                   "mounting) a mounting's drift is neither measured nor removed (unless the "
+                   "other mountings' closure readings let it be fitted), and a drift "
                    "the same way in every mounting is a ramp over the encoder's steps that the "
                    "readings cannot tell from the encoder's error: its exact effect for a "
                    "linear drift up to this over a mounting (a full turn), in every such "

@@ -21,10 +21,15 @@ Each reading gives ``y = (a − a_start − k·360°/n)·3600 − c`` (a wrapped
 step), and the model is ``y = E_k + d_i + o_j + δ_j·t/n + noise``, with o_j a
 per-mounting offset (the autocollimator's zero and the mounting's error) and
 δ_j a per-mounting linear drift in time, t the reading's order in its mounting
-(0 … n − 1, the closure reading t = n). δ_j is fitted only for mountings that
-end with a closure reading (the repeat of their first face); the drift reported
-is −δ_j, the polygon workbench's (c′ − c) − (a′ − a): an autocollimator that
-drifted by D gives D.
+(0 … n − 1, the closure reading t = n). δ_j is fitted for mountings that end
+with a closure reading (the repeat of their first face), and for the others too
+where the design determines their drift (every added drift a new rank, and a
+degree of freedom left for the scatter when σ is not stated): the closure
+readings fix the encoder's error over the turn, and a mounting's readings against
+it show its drift; otherwise theirs is neither measured nor removed (a drift the
+same way in every such mounting is a ramp over the encoder's steps:
+models.crosscal.uncertainty.drift_effect_arcsec). The drift reported is −δ_j, the
+polygon workbench's (c′ − c) − (a′ − a): an autocollimator that drifted by D gives D.
 
 Drift (``drift``), as in the polygon workbench, from the closure reading:
 
@@ -76,7 +81,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -414,6 +419,59 @@ def _tilts(y: np.ndarray, ac_y: np.ndarray | None, position: np.ndarray, closure
             np.array([scatter.get(j, math.nan) for j in order]))
 
 
+@dataclass(frozen=True)
+class _Fit:
+    """The least squares of :func:`solve_crosscal` with drifts fitted for ``drifting``."""
+
+    drifting: list[int]
+    dindex: dict[int, int]
+    p: int
+    design_all: Any
+    design: Any
+    z: np.ndarray
+    vec: np.ndarray
+    seen: np.ndarray
+    rank: int
+    solver: np.ndarray
+    x: np.ndarray
+
+
+def _fit(y_data, used_index, mounting, k, position, t, order, mindex, drifting, n) -> _Fit:
+    """Columns E (n), d (n), o (m), δ (``drifting``), solved under the closure constraints
+    Σ E = 0 and Σ d = 0 (they also fix the offsets' level) on the constraints' null space."""
+    from scipy import sparse
+
+    m = len(order)
+    dindex = {j: q for q, j in enumerate(drifting)}
+    p = 2 * n + m + len(drifting)
+    ar = np.arange(y_data.size)
+    mcol = 2 * n + np.array([mindex[j] for j in mounting])
+    dcol = np.array([dindex.get(int(j), -1) for j in mounting])
+    cols = [k, n + position - 1, mcol]
+    vals = [np.ones(y_data.size)] * 3
+    has = dcol >= 0
+    design_all = sparse.csr_matrix(
+        (np.concatenate(vals + [t[has] / n]),
+         (np.concatenate([ar] * 3 + [ar[has]]), np.concatenate(cols + [2 * n + m + dcol[has]]))),
+        shape=(y_data.size, p))
+    design = design_all[used_index]
+    normal_full = (design.T @ design).toarray()
+    constraint = np.zeros((2, p))
+    constraint[0, :n] = 1.0
+    constraint[1, n:2 * n] = 1.0
+    _, _, vt = np.linalg.svd(constraint)
+    z = vt[2:].T  # p × (p − 2), orthonormal, spans {x : C x = 0}
+    normal = z.T @ normal_full @ z
+    lam, vec = np.linalg.eigh(normal)
+    tol = 1e-9 * max(float(lam[-1]), 1.0)
+    seen = lam > tol
+    rank = int(seen.sum())
+    pinv_normal = (vec[:, seen] / lam[seen]) @ vec[:, seen].T
+    solver = z @ pinv_normal @ z.T  # p × p: x = solver · Xᵀ y
+    x = solver @ (design.T @ y_data[used_index])
+    return _Fit(list(drifting), dindex, p, design_all, design, z, vec, seen, rank, solver, x)
+
+
 def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | None = None,
                    noise_arcsec: float | None = None, fit_drift: bool = True,
                    probability: float = DEFAULT_COVERAGE_PROBABILITY, *,
@@ -484,11 +542,7 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
         f = first_row[j]
         h_drift[mindex[j]] = closure_drift_arcsec(a[f], c[f] + pyramidal[f], a[r], c[r] + pyramidal[r])
     for j in order:
-        if j not in closure_row:
-            warnings.append(message(QT_TR_NOOP("mounting {mounting}: no closure reading (its first "
-                                               "face read again at the end): drift not checked"),
-                                    mounting=j))
-        elif abs(h_drift[mindex[j]]) > closure_limit_arcsec:
+        if j in closure_row and abs(h_drift[mindex[j]]) > closure_limit_arcsec:
             warnings.append(message(QT_TR_NOOP("mounting {mounting}: closure drift {drift} exceeds "
                                                "the limit ±{limit}: repeat the mounting"),
                                     mounting=j, drift=f"{h_drift[mindex[j]]:+.3f}\"",
@@ -505,37 +559,32 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
             rows = rows_of[j]
             y_data[rows] -= t[rows] / n * (y[r] - y[first_row[j]])
 
-    # design: columns E (n), d (n), o (m), δ (mountings with closure, when fitted)
-    drifting = [j for j in order if j in closure_row] if mode == "fit" else []
-    dindex = {j: q for q, j in enumerate(drifting)}
-    p = 2 * n + m + len(drifting)
-    ar = np.arange(y.size)
-    mcol = 2 * n + np.array([mindex[j] for j in mounting])
-    dcol = np.array([dindex.get(int(j), -1) for j in mounting])
-    cols = [k, n + position - 1, mcol]
-    vals = [np.ones(y.size)] * 3
-    has = dcol >= 0
-    design_all = sparse.csr_matrix(
-        (np.concatenate(vals + [t[has] / n]),
-         (np.concatenate([ar] * 3 + [ar[has]]), np.concatenate(cols + [2 * n + m + dcol[has]]))),
-        shape=(y.size, p))
-    design = design_all[used_index]
-    normal_full = (design.T @ design).toarray()
-    # closure constraints Σ E = 0 and Σ d = 0 (they also fix the offsets' level); solved on
-    # the constraints' null space
-    constraint = np.zeros((2, p))
-    constraint[0, :n] = 1.0
-    constraint[1, n:2 * n] = 1.0
-    _, _, vt = np.linalg.svd(constraint)
-    z = vt[2:].T  # p × (p − 2), orthonormal, spans {x : C x = 0}
-    normal = z.T @ normal_full @ z
-    lam, vec = np.linalg.eigh(normal)
-    tol = 1e-9 * max(float(lam[-1]), 1.0)
-    seen = lam > tol
-    rank = int(seen.sum())
-    pinv_normal = (vec[:, seen] / lam[seen]) @ vec[:, seen].T
-    solver = z @ pinv_normal @ z.T  # p × p: x = solver · Xᵀ y
-    x = solver @ (design.T @ y_data[used_index])
+    # design: columns E (n), d (n), o (m), δ (mountings with closure, when fitted; and the
+    # mountings without one where the design determines their drift through the others)
+    closed = [j for j in order if j in closure_row] if mode == "fit" else []
+    fit = _fit(y_data, used_index, mounting, k, position, t, order, mindex, closed, n)
+    if closed and len(closed) < m:
+        every = _fit(y_data, used_index, mounting, k, position, t, order, mindex, list(order), n)
+        # each added drift determined, and (σ from the residuals) a degree of freedom left
+        if every.rank == fit.rank + m - len(closed) and (noise_arcsec is not None
+                                                         or rows_n > every.rank):
+            fit = every
+    drifting, dindex, p, design_all, design = (fit.drifting, fit.dindex, fit.p, fit.design_all,
+                                               fit.design)
+    z, vec, seen, rank = fit.z, fit.vec, fit.seen, fit.rank
+    solver = fit.solver
+    x = fit.x
+    for j in order:
+        if j in closure_row:
+            continue
+        if j in dindex:
+            warnings.append(message(QT_TR_NOOP(
+                "mounting {mounting}: no closure reading (its first face read again at the end): "
+                "its drift fitted through the other mountings' closure readings"), mounting=j))
+        else:
+            warnings.append(message(QT_TR_NOOP("mounting {mounting}: no closure reading (its first "
+                                               "face read again at the end): drift not checked"),
+                                    mounting=j))
     residuals = y_data - design_all @ x
     null = z @ vec[:, ~seen]  # p × deficiency, orthonormal
     deficiency = p - 2 - rank

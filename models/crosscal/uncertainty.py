@@ -132,12 +132,14 @@ def roll_effect_arcsec(solution: CrossCalibration, ac_y_arcsec, combine=None) ->
 
 
 def unchecked_drift_mountings(solution: CrossCalibration) -> tuple[int, ...]:
-    """The mountings with no closure reading: their autocollimator drift is neither measured
-    nor removed (the drift over a mounting is seen only by reading its first face again at the
-    end, at the same encoder step)."""
-    mounting = np.asarray(solution.row_mounting)
-    closed = set(mounting[np.asarray(solution.row_closure, dtype=bool)].tolist())
-    return tuple(j for j in solution.mountings if j not in closed)
+    """The mountings whose autocollimator drift is neither measured nor fitted: no closure
+    reading of their own (the drift over a mounting is seen only by reading its first face
+    again at the end, at the same encoder step), and not fitted through the other mountings'
+    closure readings (solve_crosscal fits it, in the "fit" mode, where the design determines
+    it: the other mountings' closure readings fix the encoder's error over the turn, and the
+    mounting's readings against it then show its drift)."""
+    drift = np.asarray(solution.drift_arcsec, dtype=float)
+    return tuple(j for j, d in zip(solution.mountings, drift, strict=True) if not np.isfinite(d))
 
 
 def drift_effect_arcsec(solution: CrossCalibration, combine=None) -> np.ndarray:

@@ -279,7 +279,7 @@ def test_messages_are_translated():
 
 def test_a_stated_sigma_with_its_dof_sets_k_and_a_missing_closure_is_said():
     """σ stated from an earlier repeatability with ν = 5: k = 2.65 (GUM G.2 at 95.45 %);
-    a mounting read without its closure reading is named, its drift not checked."""
+    a mounting read without its closure reading is named, its drift fitted through the others'."""
     n = 8
     rows = bench(n, 12, noise_arcsec=0.02).rows([0, 1, 3])
     result = solve([r for q, r in enumerate(rows) if q != 8], n, noise_arcsec=0.02, noise_dof=5)
@@ -287,8 +287,9 @@ def test_a_stated_sigma_with_its_dof_sets_k_and_a_missing_closure_is_said():
     np.testing.assert_allclose(result.encoder_error_expanded_arcsec,
                                result.coverage_factor * result.encoder_error_u_arcsec)
     assert np.isnan(result.closure_drift_arcsec[0]) and np.isfinite(result.closure_drift_arcsec[1:]).all()
-    assert "mounting 0: no closure reading (its first face read again at the end): drift not checked" \
-        in result.warnings
+    assert ("mounting 0: no closure reading (its first face read again at the end): its drift "
+            "fitted through the other mountings' closure readings") in result.warnings
+    assert result.dof == 5  # the σ stated: the added drift takes no degree of freedom from it
     for mode in ("spread", "report"):
         other = solve([r for q, r in enumerate(rows) if q != 8], n, drift=mode)
         assert not other.row_used[other.row_closure].any() and other.row_used[~other.row_closure].all()
