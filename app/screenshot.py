@@ -72,8 +72,9 @@ def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900),
             path = out_dir / f"{presenter.kind.key}.png"
             window.grab().save(str(path))
             paths.append(path)
+        # at the size it opens at on this screen (it fits itself to it), not a fixed
+        # 1100×760 that a 1280×720 screen cannot hold
         dialog = CertificateDialog(_example_metadata(), window)
-        dialog.resize(1100, 760)
         dialog.show()
         app.processEvents()
         path = out_dir / "certificate_dialog.png"

@@ -82,11 +82,14 @@ def angle_unit(key: str) -> AngleUnit:
             key=f"{key!r}", join=', '.join(ANGLE_UNITS))) from None
 
 
-def _places(value: float, decimals: int, factor: float) -> int:
+def _places(value: float, decimals: int, factor: float, resolution_only: bool = False) -> int:
     """Decimals of a converted figure: the original's resolution carried over, and never
-    fewer than three significant digits (1" is 0.278 mdeg, not 0.3)."""
+    fewer than three significant digits (1" is 0.278 mdeg, not 0.3); ``resolution_only``:
+    the resolution alone (a figure printed to its interval's decimal, and its interval's
+    ends, keep one decimal between them: R = 3" in 0" … 30" is 0.8 mdeg in 0.0 … 8.3 mdeg,
+    not 0.833 mdeg)."""
     places = decimals + max(0, math.ceil(-math.log10(factor)))
-    if value != 0.0 and math.isfinite(value):
+    if value != 0.0 and math.isfinite(value) and not resolution_only:
         places = max(places, 2 - math.floor(math.log10(abs(value))))
     return max(0, places)
 
@@ -117,7 +120,7 @@ def header_in_unit(header: str, unit: AngleUnit) -> tuple[str, float]:
     return header, 1.0
 
 
-def _rewrite(match: re.Match[str], unit: AngleUnit) -> str:
+def _rewrite(match: re.Match[str], unit: AngleUnit, resolution_only: bool = False) -> str:
     """A number written with its angle unit, in ``unit`` at the resolution it had."""
     sign, number, decimals, spelt = match.groups()
     factor = _factor(spelt, unit)
@@ -127,43 +130,46 @@ def _rewrite(match: re.Match[str], unit: AngleUnit) -> str:
     if "e" in number.lower():
         digits = f"{value:.3g}"
     else:
-        digits = f"{value:.{_places(value, len(decimals or ''), factor)}f}"
+        digits = f"{value:.{_places(value, len(decimals or ''), factor, resolution_only)}f}"
     gap = "" if unit.symbol == "\"" else " "
     return f"{sign}{digits}{gap}{unit.symbol}"
 
 
-def text_in_unit(text: str, unit: AngleUnit) -> str:
+def text_in_unit(text: str, unit: AngleUnit, resolution_only: bool = False) -> str:
     """Plain ``text`` (not a Message) with every number written with an angle unit
     converted to ``unit``, keeping the figure's resolution and its sign; a D°M'S"
-    reading is left as it is. A Message goes through :func:`in_unit` instead."""
+    reading is left as it is. A Message goes through :func:`in_unit` instead.
+    ``resolution_only``: no significant digits added to a small figure (:func:`_places`)."""
     if isinstance(text, Message):
-        return in_unit(text, unit)
-    return _NUMBER_WITH_UNIT.sub(lambda m: _rewrite(m, unit), text)
+        return in_unit(text, unit, resolution_only)
+    return _NUMBER_WITH_UNIT.sub(lambda m: _rewrite(m, unit, resolution_only), text)
 
 
-def _figure_in_unit(figure: Any, unit: AngleUnit) -> Any:
+def _figure_in_unit(figure: Any, unit: AngleUnit, resolution_only: bool = False) -> Any:
     if isinstance(figure, Quantity):
         return figure.to(unit.key) if figure.unit.dimension == "angle" else figure
     if isinstance(figure, Message):
-        return in_unit(figure, unit)
+        return in_unit(figure, unit, resolution_only)
     if isinstance(figure, str):  # a figure passed formatted: "0.45\"", "±3.05\" (u, k = 1)"
-        return text_in_unit(figure, unit)
+        return text_in_unit(figure, unit, resolution_only)
     return figure
 
 
-def in_unit(text: str, unit: AngleUnit) -> str:
+def in_unit(text: str, unit: AngleUnit, resolution_only: bool = False) -> str:
     """A result text with its angle figures in ``unit``. A :class:`Message` is rebuilt
     from its own figures (a Quantity converted by its unit, a figure given as text by
     :func:`text_in_unit`), so it can still be translated and its template's own words
     are never touched; its plain-text parts and any other text go through
     :func:`text_in_unit`."""
     if not isinstance(text, Message):
-        return text_in_unit(text, unit) if isinstance(text, str) else text
+        return text_in_unit(text, unit, resolution_only) if isinstance(text, str) else text
     if text.parts:
-        return Message(text.template, None, tuple(in_unit(p, unit) for p in text.parts))
+        return Message(text.template, None, tuple(in_unit(p, unit, resolution_only)
+                                                  for p in text.parts))
     if not text.figures:
         return text
-    return Message(text.template, {k: _figure_in_unit(v, unit) for k, v in text.figures.items()})
+    return Message(text.template, {k: _figure_in_unit(v, unit, resolution_only)
+                                   for k, v in text.figures.items()})
 
 
 def figures_in_unit(figures: Mapping[str, Any], unit: AngleUnit) -> dict[str, Any]:
@@ -192,7 +198,8 @@ def figure_in_unit(figure: PlotFigure, unit: AngleUnit) -> PlotFigure:
     return replace(figure, y_label=y_label, series=series, y_unit=unit.key)
 
 
-def _cell_in_unit(cell: Any, factor: float, unit: AngleUnit) -> Any:
+def _cell_in_unit(cell: Any, factor: float, unit: AngleUnit,
+                  resolution_only: bool = False) -> Any:
     if isinstance(cell, bool) or cell is None:
         return cell
     if isinstance(cell, int | float | np.floating | np.integer):
@@ -201,24 +208,28 @@ def _cell_in_unit(cell: Any, factor: float, unit: AngleUnit) -> Any:
     try:
         value = float(text.replace("−", "-"))
     except ValueError:
-        return text_in_unit(text, unit)
+        return text_in_unit(text, unit, resolution_only)
     decimals = len(text.split(".")[1]) if "." in text and "e" not in text.lower() else None
     if decimals is None:
         return f"{value * factor:.6g}"
     sign = "+" if text.startswith("+") else ""
-    return f"{value * factor:{sign}.{_places(value * factor, decimals, factor)}f}"
+    places = _places(value * factor, decimals, factor, resolution_only)
+    return f"{value * factor:{sign}.{places}f}"
 
 
 def table_in_unit(header: Sequence[str], rows: Sequence[Sequence[Any]],
-                  unit: AngleUnit) -> tuple[tuple[str, ...], list[tuple[Any, ...]]]:
+                  unit: AngleUnit, resolution_only: bool = False
+                  ) -> tuple[tuple[str, ...], list[tuple[Any, ...]]]:
     """A table with each column whose header states an angle unit converted: numbers
-    scaled, numeric text rewritten at its resolution, other text converted as text."""
+    scaled, numeric text rewritten at its resolution, other text converted as text.
+    ``resolution_only``: each printed figure at its own resolution carried over, no
+    significant digits added (a table of figures printed to their intervals' decimal)."""
     converted = [header_in_unit(h, unit) for h in header]
     new_rows = []
     for row in rows:
         new_rows.append(tuple(
-            _cell_in_unit(cell, converted[i][1], unit) if i < len(converted) and
-            converted[i][1] != 1.0 else (text_in_unit(cell, unit) if isinstance(cell, str)
-                                         else cell)
+            _cell_in_unit(cell, converted[i][1], unit, resolution_only) if i < len(converted)
+            and converted[i][1] != 1.0 else (text_in_unit(cell, unit, resolution_only)
+                                             if isinstance(cell, str) else cell)
             for i, cell in enumerate(row)))
     return tuple(h for h, _ in converted), new_rows

@@ -492,7 +492,11 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
                              document.budget, document.budget_point, document.unit,
                              withheld=bool(document.uncertainty_withheld)))):
         ws = book.create_sheet(title)
-        header, rows = _figure_columns(*table_in_unit(table.header, table.rows, unit),
+        # the statistics are printed to their intervals' decimal (GUM 7.2.6): in another
+        # unit each keeps that resolution, no digits added (R = 3" in 0" … 30" was
+        # 0.833 mdeg beside 0.0 … 8.33 mdeg)
+        header, rows = _figure_columns(*table_in_unit(table.header, table.rows, unit,
+                                                      resolution_only=title == "Statistics"),
                                        heading=words.column)
         ws.append([neutralise(h) for h in header])
         for row in rows:

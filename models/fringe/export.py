@@ -7,6 +7,7 @@ import io
 import math
 from pathlib import Path
 
+from models.fringe.compensation_at_samples import compensation_caveat
 from models.fringe.result import FringeResult
 from models.project.atomic_write import write_text_atomic
 
@@ -23,6 +24,9 @@ def correction_table_csv(result: FringeResult) -> str:
     out.write(f"# zero: {_ZERO_TEXT[result.table.zero]}\n")
     out.write(f"# phase from: {result.phase_source}\n")
     out.write(f"# table sha256: {result.table.sha256}\n")
+    caveat = compensation_caveat(result)
+    if caveat:  # orders fold at the sampled phases: as the certificate says (day review 68 F8)
+        out.write(f"# this table holds {caveat}\n")
     for name, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
         params = ",".join(f"{k}={v:.9g}" for k, v in fit.as_dict().items())
         out.write(f"# {name}: {params}\n")
@@ -40,6 +44,7 @@ def correction_table_c_header(result: FringeResult, name: str = "anglebench_frin
         " * corrected_phase = measured_phase - lut[j] with j = measured_phase / (2*pi) * SIZE,",
         " * linear interpolation between entries; values in radians of electrical phase.",
         f" * zero: {_ZERO_TEXT[result.table.zero]}.",
+        *([f" * this table holds {caveat}."] if (caveat := compensation_caveat(result)) else []),
         f" * table sha256: {result.table.sha256} */",
         f"#ifndef {name.upper()}_H",
         f"#define {name.upper()}_H",

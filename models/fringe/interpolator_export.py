@@ -24,7 +24,7 @@ FORMATS = (".csv", ".h", ".hex")
 
 
 def _describe(table: InterpolatorTable, source: str, period_length: float,
-              unit: str) -> list[str]:
+              unit: str, caveat: str = "") -> list[str]:
     p = table.profile
     lookup = ("linear between the two entries about the measured phase" if
               p.interpolation == "linear" else "the entry below the measured phase (no "
@@ -64,14 +64,18 @@ def _describe(table: InterpolatorTable, source: str, period_length: float,
                    f"{r.rms:.4g})")
     out.append("by simulation of the quantised table on the fitted signals (not including the "
                "chip's own angle resolution)")
+    if caveat:  # orders fold at the sampled phases: as the certificate says (day review 68 F8)
+        out.append(f"this table and its predicted residual hold {caveat}")
     out.append("profile source: " + p.source)
     return out
 
 
 def table_csv(table: InterpolatorTable, source: str = "", period_length: float = 1.0,
-              unit: str = "period") -> str:
+              unit: str = "period", caveat: str = "") -> str:
+    """``caveat``: where the table holds, when orders fold at the sampled phases
+    (models.fringe.compensation_at_samples.compensation_caveat); "" when none folds."""
     out = io.StringIO()
-    for line in _describe(table, source, period_length, unit):
+    for line in _describe(table, source, period_length, unit, caveat):
         out.write(f"# {line}\n")
     out.write("index,measured_phase_deg,code,value_period,ideal_value_period\n")
     for j, (code, ideal) in enumerate(zip(table.codes.tolist(), table.ideal_period.tolist(),
@@ -87,11 +91,12 @@ def _identifier(name: str) -> str:
 
 
 def table_c_header(table: InterpolatorTable, source: str = "", period_length: float = 1.0,
-                   unit: str = "period", name: str = "anglebench_interpolator_lut") -> str:
+                   unit: str = "period", name: str = "anglebench_interpolator_lut",
+                   caveat: str = "") -> str:
     name = _identifier(name)
     upper = name.upper()
     comment = [" * " + line.replace("*/", "* /") for line in
-               _describe(table, source, period_length, unit)]
+               _describe(table, source, period_length, unit, caveat)]
     lines = ["/* (generated)", *comment, " */", f"#ifndef {upper}_H", f"#define {upper}_H",
              "#include <stdint.h>",
              f"#define {upper}_ENTRIES {table.entries}",
@@ -137,16 +142,19 @@ def table_intel_hex(table: InterpolatorTable) -> str:
 
 
 def write_interpolator_table(path: str | Path, table: InterpolatorTable, source: str = "",
-                             period_length: float = 1.0, unit: str = "period") -> str:
-    """Write by the name's ending (.csv, .h, .hex), atomically; the format's name."""
+                             period_length: float = 1.0, unit: str = "period",
+                             caveat: str = "") -> str:
+    """Write by the name's ending (.csv, .h, .hex), atomically; the format's name.
+    ``caveat`` (where the table holds, when orders fold) goes into the CSV's and the C
+    header's comments; Intel HEX has none (the command's line says it)."""
     suffix = Path(path).suffix.lower()
     if suffix == ".h":
         text, what = table_c_header(table, source, period_length, unit,
-                                    name=Path(path).stem), "C header"
+                                    name=Path(path).stem, caveat=caveat), "C header"
     elif suffix == ".hex":
         text, what = table_intel_hex(table), "Intel HEX"
     elif suffix == ".csv":
-        text, what = table_csv(table, source, period_length, unit), "CSV"
+        text, what = table_csv(table, source, period_length, unit, caveat), "CSV"
     else:
         raise ValueError(message(QT_TR_NOOP("{path}: an interpolator table is written as .csv, .h "
                                             "or .hex"), path=str(path)))

@@ -23,6 +23,9 @@ if TYPE_CHECKING:  # the analysis imports the report, which draws with this modu
 __all__ = ["figures", "first_period_with_uncertainty"]
 
 BINS = 2000  # runs per curve
+#: a record of at most this many samples has its signals drawn as markers, each sample
+#: where it was read, and the fit as a continuous curve between them
+MARKED_SAMPLES = 2048
 ERROR = QT_TR_NOOP("error")  # an axis title, its unit after it
 BLUE, GREEN, PURPLE, RED, ORANGE, TEAL = ((31, 119, 180), (44, 160, 44), (148, 103, 189),
                                           (214, 39, 40), (230, 126, 34), (22, 160, 133))
@@ -49,6 +52,39 @@ def _residuals(u: np.ndarray, theta_rad: np.ndarray, fit) -> np.ndarray:
     if fit.residuals is not None and fit.residuals.shape == u.shape:
         return fit.residuals
     return u - model_signal(theta_rad, fit)
+
+
+def _signals(result: FringeResult, x: np.ndarray, order: np.ndarray | None, drawn,
+             along: str, bins: int) -> PlotFigure:
+    """The signals and their fit. A record of up to :data:`MARKED_SAMPLES` samples: each
+    sample a marker and the fit a continuous curve through the phases between them (straight
+    lines joining N = 8 samples a period drew a distorted signal, the fit included, which was
+    evaluated at the samples only); a longer one: the samples' envelope as lines, the fit at
+    every few samples, dense enough to be a curve."""
+    if x.size <= MARKED_SAMPLES:
+        points = min(max(16 * x.size, 361), 8 * bins)
+        if order is None:  # along the record: x is the phase in periods
+            fine_x = np.linspace(x[0], x[-1], points) if x.size else x
+            fine_theta = 2 * np.pi * fine_x
+        else:  # the phase within the period, in degrees
+            fine_x = np.linspace(0.0, 360.0, points)
+            fine_theta = np.radians(fine_x)
+        size = 6 if x.size <= 256 else 4  # (smaller where many: the fit seen between them)
+        return PlotFigure(QT_TR_NOOP("Signals and their fit"), along, "signal (V)", (
+            PlotSeries("u sin", x, drawn(result.u_sin), SIN_RED, True, width=0, marker_size=size),
+            PlotSeries("u cos", x, drawn(result.u_cos), COS_BLUE, True, width=0,
+                       marker_size=size),
+            PlotSeries("fit", fine_x, model_signal(fine_theta, result.sin_fit), (123, 36, 28),
+                       width=1.5),
+            PlotSeries("", fine_x, model_signal(fine_theta, result.cos_fit), (21, 67, 96),
+                       width=1.5)))
+    step = max(1, x.size // (2 * bins))
+    theta = drawn(result.theta_rad)[::step]
+    return PlotFigure(QT_TR_NOOP("Signals and their fit"), along, "signal (V)", (
+        PlotSeries("u sin", *envelope(x, drawn(result.u_sin), bins), (230, 176, 170), width=3),
+        PlotSeries("u cos", *envelope(x, drawn(result.u_cos), bins), (169, 204, 227), width=3),
+        PlotSeries("fit", x[::step], model_signal(theta, result.sin_fit), (123, 36, 28), width=1.5),
+        PlotSeries("", x[::step], model_signal(theta, result.cos_fit), (21, 67, 96), width=1.5)))
 
 
 def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
@@ -86,13 +122,7 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
     out["residuals"] = PlotFigure(QT_TR_NOOP("Fit residuals"), along, QT_TR_NOOP("residual (mV)"), (
         PlotSeries("sin", *envelope(x, res_s, bins), PURPLE, role="residual"),
         PlotSeries("cos", *envelope(x, res_c, bins), RED)))
-    step = max(1, x.size // (2 * bins))
-    theta = drawn(result.theta_rad)[::step]
-    out["signals"] = PlotFigure(QT_TR_NOOP("Signals and their fit"), along, "signal (V)", (
-        PlotSeries("u sin", *envelope(x, drawn(result.u_sin), bins), (230, 176, 170), width=3),
-        PlotSeries("u cos", *envelope(x, drawn(result.u_cos), bins), (169, 204, 227), width=3),
-        PlotSeries("fit", x[::step], model_signal(theta, result.sin_fit), (123, 36, 28), width=1.5),
-        PlotSeries("", x[::step], model_signal(theta, result.cos_fit), (21, 67, 96), width=1.5)))
+    out["signals"] = _signals(result, x, order, drawn, along, bins)
     shown = one_per_cell(result.u_cos, result.u_sin)  # every excursion, ~1000 points a ring
     t = np.linspace(0.0, 2 * np.pi, 361)
     e = result.ellipse

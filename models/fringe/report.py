@@ -526,9 +526,11 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     k_fit, nu_fit = parameter_coverage(result, budget.probability)
     stated = parameter_uncertainty(result)
     # the ADC's figures (ν infinite) raise the effective degrees of freedom above the fit's:
-    # k of the fit's ν is then on the safe side, and ν is said as a bound
+    # k of the fit's ν is then on the safe side, and ν is said as a bound; with the phase
+    # estimated no U is stated, so the column's header states no k over its "no U" cells
     parameters = Table(QT_TR_NOOP("Signal parameters identified"),
                        (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
+                        "U" if stated.withheld else
                         f"U (k = {k_fit:.2f}, ν {'≥' if stated.adc_stated else '='} {nu_fit})"),
                        _parameter_rows(result, k_fit),
                        message(stated.withheld) if stated.withheld else "")

@@ -181,10 +181,15 @@ STATE_TEXT = {"inside": QT_TR_NOOP("inside"), "outer": QT_TR_NOOP("in the outer 
 def write_table(args, result, table):
     """Write the interpolator table asked for (OSError when it cannot be) and say what was
     written."""
+    from models.fringe.compensation_at_samples import compensation_caveat
     from models.fringe.interpolator_export import write_interpolator_table
 
+    # where orders fold, the predicted residual is the fitted signals', which hold orders
+    # not fitted: it holds at the sampled phases only (day review 68 F8), said in the file
+    # too (its comments) and on the command's line
+    caveat = compensation_caveat(result)
     write_interpolator_table(args.interpolator_table, table, Path(args.file).name,
-                             result.period_length, result.unit)
+                             result.period_length, result.unit, caveat=str(caveat))
     r, period, unit = table.residual, result.period_length, result.unit
     written = message(QT_TR_NOOP(
         "Interpolator table ({chip}, {entries} entries of {bits} bits, LSB {lsb} of a "
@@ -196,9 +201,4 @@ def write_table(args, result, table):
         rms=f"{r.rms * period:.4g}",
         ideal=f"{table.residual_unquantised.max_abs * period:.4g}",
         without=f"{table.residual_without.max_abs * period:.4g}", unit=unit)
-    # where orders fold, the predicted residual is the fitted signals', which hold orders
-    # not fitted: it holds at the sampled phases only (day review 68 F8)
-    from models.fringe.compensation_at_samples import compensation_caveat
-
-    caveat = compensation_caveat(result)
     return separated([written, caveat], "; ") if caveat else written

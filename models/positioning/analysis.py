@@ -590,7 +590,9 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
         for i, key in enumerate(shown):
             iv = intervals[key]
             d = decimals[key]
-            parts += [", " if i else "", f"{key} {iv.low:.{d}f} … {iv.high:.{d}f}{sym}"]
+            # each end with its unit: shown in µrad or mdeg, both ends are converted (the
+            # low end, bare, stayed in arcseconds beside a converted high end)
+            parts += [", " if i else "", f"{key} {iv.low:.{d}f}{sym} … {iv.high:.{d}f}{sym}"]
             if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
                 parts.append(f" ({percent_text(iv.probability)} %)")
         out.append(joined(parts))

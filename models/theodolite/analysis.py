@@ -263,7 +263,9 @@ def _intervals_line(result: TheodoliteResult, printed: Mapping[str, int] | None 
     decimals = theodolite_figure_decimals(result, budget, held=False) | dict(printed or {})
     for i, (key, iv) in enumerate(intervals.items()):
         d = decimals.get(key, 2)  # the figure's, as its value is printed
-        parts += [", " if i else "", f"{key} {iv.low:.{d}f} … {iv.high:.{d}f}\""]
+        # each end with its unit: shown in µrad or mdeg, both ends are converted (the low
+        # end, bare, stayed in arcseconds beside a converted high end)
+        parts += [", " if i else "", f"{key} {iv.low:.{d}f}\" … {iv.high:.{d}f}\""]
         if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
             parts.append(f" ({percent_text(iv.probability)} %)")
     # R, R↑, R↓ of two passes: no interval, and why (audit 68 finding 3)

@@ -104,7 +104,7 @@ def test_the_summary_says_it_too_and_nothing_where_no_upper_end_is_far_above(
     assert main(["analyze", "positioning", str(_axis_csv(tmp_path, 20, 6863)),
                  "--language", "en"]) == 0
     out = capsys.readouterr().out
-    intervals = dict(re.findall(r"(\w+) [\d.-]+ … ([\d.]+)\"", out))
+    intervals = dict(re.findall(r"(\w+) [\d.-]+\"? … ([\d.]+)\"", out))
     figures = dict(re.findall(r"(\w+) = ([\d.]+)\"", out))
     assert all(float(intervals[k]) < 3 * float(figures[k]) for k in ("A", "R", "P")
                if k in intervals), (intervals, figures)
