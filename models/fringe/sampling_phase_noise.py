@@ -34,8 +34,10 @@ from models.fringe.order_statistics import median
 __all__ = ["EVEN_STEPS", "phase_excess_variance", "phase_noise_rad"]
 
 TWO_PI = 2.0 * math.pi
-#: samples a block when the design is built over every sample (a θ column's record)
-_BLOCK = 65536
+#: a θ column's record of more samples than this is taken as its phases binned, :data:`_BINS`
+#: a period (what the sums lose is of the order of the bin's width squared: ~1e-7 of them)
+_EXACT_MAX = 65536
+_BINS = 8192
 
 
 #: a record steps evenly when the noise its second differences show is at most this share
@@ -77,17 +79,21 @@ def _slope(phase: np.ndarray, fit) -> np.ndarray:
 
 
 def _phases_and_counts(theta_rad: np.ndarray, samples_per_period: int
-                       ) -> list[tuple[np.ndarray, np.ndarray]]:
-    """The design's phases in blocks, each with how many samples it stands for: the N phases
-    of equal steps with their counts, or every sample's (a count of 1 each)."""
+                       ) -> tuple[np.ndarray, np.ndarray]:
+    """The design's phases, each with how many samples it stands for: the N phases of equal
+    steps with their counts; a θ column's every sample (a count of 1 each), or of a long
+    record the centres of :data:`_BINS` bins a period with the samples in each."""
     theta = np.asarray(theta_rad, dtype=float)
     if samples_per_period:
         n = int(samples_per_period)
         index = np.rint(theta / (TWO_PI / n)).astype(np.intp) % n
-        counts = np.bincount(index, minlength=n).astype(float)
-        return [(np.arange(n) * (TWO_PI / n), counts)]
-    return [(theta[start:start + _BLOCK], np.ones(min(_BLOCK, theta.size - start)))
-            for start in range(0, theta.size, _BLOCK)]
+        return np.arange(n) * (TWO_PI / n), np.bincount(index, minlength=n).astype(float)
+    if theta.size <= _EXACT_MAX:
+        return theta, np.ones(theta.size)
+    index = np.floor(np.mod(theta, TWO_PI) / (TWO_PI / _BINS)).astype(np.intp) % _BINS
+    counts = np.bincount(index, minlength=_BINS).astype(float)
+    held = np.flatnonzero(counts)
+    return (held + 0.5) * (TWO_PI / _BINS), counts[held]
 
 
 def phase_excess_variance(theta_rad, samples_per_period: int, fits, phase_u_rad: float
@@ -98,26 +104,19 @@ def phase_excess_variance(theta_rad, samples_per_period: int, fits, phase_u_rad:
     if not (phase_u_rad > 0 and math.isfinite(phase_u_rad)) or not fits:
         return [{k: 0.0 for k in fit.orders} for fit in fits]
     orders = fits[0].orders
-    blocks = _phases_and_counts(theta_rad, samples_per_period)
+    phase, counts = _phases_and_counts(theta_rad, samples_per_period)
     n_par = 1 + 2 * len(orders)
-    gram = np.zeros((n_par, n_par))
-    for phase, counts in blocks:
-        x = _design(phase, orders)
-        gram += x.T @ (x * counts[:, None])
-    samples = sum(float(counts.sum()) for _, counts in blocks)
+    samples = float(counts.sum())
     if samples <= n_par:
         return [{k: 0.0 for k in fit.orders} for fit in fits]
-    inverse = np.linalg.pinv(gram)
+    x = _design(phase, orders)
+    inverse = np.linalg.pinv(x.T @ (x * counts[:, None]))
+    leverage = np.einsum("ij,jk,ik->i", x, inverse, x)
     out = []
     for fit in fits:
-        weighted = np.zeros((n_par, n_par))  # Xᵀ diag(U′²) X
-        shown = 0.0  # Σ (1 − hᵢ)·U′ᵢ²: what the residuals hold of it
-        for phase, counts in blocks:
-            x = _design(phase, orders)
-            square = _slope(phase, fit) ** 2 * counts
-            weighted += x.T @ (x * square[:, None])
-            leverage = np.einsum("ij,jk,ik->i", x, inverse, x)
-            shown += float(np.sum((1.0 - leverage) * square))
+        square = _slope(phase, fit) ** 2 * counts
+        weighted = x.T @ (x * square[:, None])  # Xᵀ diag(U′²) X
+        shown = float(np.sum((1.0 - leverage) * square))  # Σ (1 − hᵢ)·U′ᵢ²: the residuals'
         excess = inverse @ weighted @ inverse - (shown / (samples - n_par)) * inverse
         excess *= phase_u_rad ** 2
         extra: dict[int, float] = {}
