@@ -38,6 +38,7 @@ from models.fringe.order_separation import (
 from models.fringe.order_statistics import median
 from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
 from models.fringe.result import FringeResult
+from models.fringe.sampling_phase_noise import phase_noise_rad
 from models.fringe.signal_quality import default_window, signal_quality
 from models.fringe.unmodelled_harmonics import unmodelled_harmonics
 from models.messages import (
@@ -295,26 +296,6 @@ def _folded_phases(theta_rad: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     starts = np.flatnonzero(first)
     counts = np.diff(np.concatenate((starts, [folded.size])))
     return folded[starts], counts.astype(float)
-
-
-#: a record steps evenly when the noise its second differences show is at most this share
-#: of its median step
-EVEN_STEPS = 0.05
-
-
-def phase_noise_rad(theta_rad: np.ndarray) -> float:
-    """The noise of each phase of a record read at even steps (a θ column of a motion at a
-    steady or slowly changing speed), from its second differences θᵢ₊₁ − 2θᵢ + θᵢ₋₁ (√6 σ
-    for white noise; the steps themselves cancel): their median absolute value / 0.6745 /
-    √6. 0 when the record does not step evenly (the noise so found above
-    :data:`EVEN_STEPS` of the median step: random phases, a motion that changes speed from
-    sample to sample, whose second differences are no noise), or has fewer than 3 samples."""
-    theta = np.asarray(theta_rad, dtype=float)
-    if theta.size < 3:
-        return 0.0
-    noise = median(np.abs(np.diff(theta, 2))) / 0.6745 / math.sqrt(6.0)
-    step = median(np.abs(np.diff(theta)))
-    return noise if noise <= EVEN_STEPS * step else 0.0
 
 
 #: a span of one period is within the phases' noise when it falls short of a period by at

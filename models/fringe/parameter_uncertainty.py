@@ -1,5 +1,6 @@
-"""The standard uncertainty of each identified signal parameter: the fit's scatter and the
-ADC's stated errors where they act on it, or none where the data cannot give it.
+"""The standard uncertainty of each identified signal parameter: the fit's scatter, and the
+ADC's stated errors and the stated noise of each sample's phase where they act on it beyond
+that scatter, or none where the data cannot give it.
 
 A fitted parameter's u from the least-squares covariance (:class:`ChannelFit`'s ``u_*``) is
 the scatter of the digitised record alone. The ADC's offset and gain are each one unknown
@@ -15,7 +16,16 @@ gain-ratio u of 0.1 % and 0.3 %. So, with the figures the settings state:
   sit in either channel's gain, so each is given the whole of it (a gain common to both
   channels moves no phase, and its uncertainty is not stated: it is not in these U);
 * neither on a harmonic's phase c_k nor the quadrature error (a gain or an offset moves no
-  zero crossing of a harmonic's own phasor).
+  zero crossing of a harmonic's own phasor);
+* the noise of each sample's phase (the phase reference u stated: with N equal steps the
+  sampling's timing, with a θ column its reference's, or the noise the column shows if
+  larger) on each harmonic's phase c_k, as much as it leaves there beyond the fit's scatter
+  (:mod:`models.fringe.sampling_phase_noise`: the scatter holds its mean, but it is largest
+  where the fundamental's phase moves the signal most, so c1 scattered up to √1.5 × the
+  fit's u; two audits' cos c1 at 36/40 and 37/40 were the draw, 1902 and 1906 of 2000 runs
+  covered, tests/benchmarks/fringe_phase_study.py); it is common to both channels (one
+  clock), so the quadrature error, their difference, keeps the fit's u of each (which
+  holds the part of it that does not cancel).
 
 A harmonic's phase: its U is not the linearised k·u_A/A where the amplitude is a few of its
 U (audit 69 finding 2c: c5 covered 144 of 158 runs, floor 146; a rig of the tests' with
@@ -49,10 +59,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from models.fringe.sampling_phase_noise import phase_excess_variance, phase_noise_rad
 from models.messages import QT_TR_NOOP
 
 __all__ = ["ESTIMATED_REASON", "ParameterUncertainty", "parameter_uncertainty",
-           "phase_expanded"]
+           "phase_expanded", "sample_phase_u_rad"]
 
 #: why no parameter has a U when the phase was estimated from the signals
 ESTIMATED_REASON = QT_TR_NOOP(
@@ -86,13 +97,16 @@ def parameter_uncertainty(result) -> ParameterUncertainty:
     inputs = result.inputs or {}
     offset_v = float(inputs.get("adc_offset_u_mv", 0.0) or 0.0) * 1e-3
     gain = float(inputs.get("adc_gain_u_pct", 0.0) or 0.0) / 100.0
+    fits = (result.sin_fit, result.cos_fit)
+    excess = phase_excess_variance(result.theta_rad, result.samples_per_period, fits,
+                                   sample_phase_u_rad(result))
     channels: dict[str, dict[str, float]] = {}
-    for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
+    for label, fit, extra in zip(("sin", "cos"), fits, excess, strict=True):
         u = {"A0": math.sqrt(fit.u_offset ** 2 + offset_v ** 2 + (fit.offset * gain) ** 2)}
         for k in fit.orders:
             ua = fit.u_amplitude.get(k, math.nan)
             u[f"A{k}"] = math.sqrt(ua ** 2 + (fit.amplitude[k] * gain) ** 2)
-            u[f"c{k}"] = fit.u_phase.get(k, math.nan)
+            u[f"c{k}"] = math.sqrt(fit.u_phase.get(k, math.nan) ** 2 + extra.get(k, 0.0))
         channels[label] = u
     s, c = result.sin_fit, result.cos_fit
     ratio = c.amplitude[1] / s.amplitude[1]
@@ -102,6 +116,16 @@ def parameter_uncertainty(result) -> ParameterUncertainty:
     quadrature = math.hypot(s.u_phase.get(1, math.nan), c.u_phase.get(1, math.nan))
     return ParameterUncertainty(channels, u_ratio, quadrature, "",
                                 adc_stated=bool(offset_v or gain))
+
+
+def sample_phase_u_rad(result) -> float:
+    """The standard uncertainty of each sample's phase (rad) of a fringe ``result``: the
+    phase reference u stated (with N equal steps the sampling's timing), and with a θ column
+    the noise its phases show if larger (as the analysis holds the column to)."""
+    stated = math.radians(float((result.inputs or {}).get("phase_reference_u", 0.0) or 0.0))
+    if result.phase_source == "theta_column":
+        return max(stated, phase_noise_rad(result.theta_rad))
+    return stated if result.phase_source == "samples_per_period" else 0.0
 
 
 def phase_expanded(amplitude: float, u_amplitude: float, u_phase: float, k: float) -> float:
