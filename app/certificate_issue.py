@@ -126,11 +126,18 @@ def draft_reasons(metadata: CertificateMetadata) -> list[str]:
 
 def specimen_document(document):
     """The document as a SPECIMEN (``"example": true`` on the command line, the training
-    switch in the window): watermarked, numbered SPECIMEN-… from its details (a number the
-    register refuses, so it cannot clash with an issued one); never recorded."""
+    switch in the window): watermarked, numbered SPECIMEN-… from its details and its
+    results as printed (a number the register refuses, so it cannot clash with an issued
+    one); never recorded. The same readings, settings and details give the same number;
+    other results another (until 0.8.18 the details alone: the polygon sample, its one set
+    and its run with a CMC were all SPECIMEN-4ECF9DB2)."""
     import hashlib
 
-    stamp = hashlib.sha256(repr(document.metadata.to_dict()).encode()).hexdigest()[:8].upper()
+    printed = [str(document.conformity.statement), *map(str, document.settings)]
+    for table in (document.parameters, document.results, document.statistics):
+        printed += ["\x1f".join(map(str, row)) for row in table.rows]
+    stamp = hashlib.sha256(repr((document.metadata.to_dict(), printed)).encode()
+                           ).hexdigest()[:8].upper()
     number = f"SPECIMEN-{stamp}"
     return dataclasses.replace(
         document, specimen=True,

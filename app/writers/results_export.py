@@ -383,7 +383,7 @@ class _Words:
     def _heading(self, text) -> str:
         """A table's heading in Chinese as the PDF's table prints it (the catalogue's), the
         words the sheet adds to it ("to", ": unit") from the certificate's."""
-        said = self._wording._say("zh")(text)
+        said = self._wording._say("zh", self.document.is_test_report)(text)
         return said if said != str(text) else self._chinese(text)
 
     def label(self, english, unit: AngleUnit) -> tuple[str, float]:
@@ -427,7 +427,7 @@ class _Words:
         """A text cell of a table: in Chinese on a Chinese certificate, else as printed (a
         bilingual certificate's tables keep the English below their two-language headings)."""
         if isinstance(value, str) and self.language == "zh":
-            return self._wording._say("zh")(value)
+            return self._wording._say("zh", self.document.is_test_report)(value)
         return value
 
 

@@ -107,8 +107,13 @@ def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> di
         "interval_high": _number(conformity.interval_high),
         # the Monte Carlo the interval came from (seeded from the readings: rerun, the same)
         "monte_carlo_trials": getattr(conformity.monte_carlo, "trials", None) or None,
-        "monte_carlo_seed": (getattr(conformity.monte_carlo, "seed", None)
-                             if getattr(conformity.monte_carlo, "trials", None) else None),
+        # as a decimal string: a seed made from the readings' hash reaches 2⁶⁴ (positioning's
+        # 10712984201263442809), beyond an int64 reader and beyond the 2⁵³ a double holds
+        # exactly (RFC 8259 6), where a number would overflow or be silently rounded and
+        # name another seed; the draws are unchanged (until 0.8.18 a JSON number)
+        "monte_carlo_seed": (str(int(conformity.monte_carlo.seed))
+                             if conformity.monte_carlo is not None
+                             and getattr(conformity.monte_carlo, "trials", None) else None),
         "coverage_probability": _number(conformity.probability),
         "unit": conformity.unit,
         "tolerance": _number(tolerance),

@@ -25,6 +25,7 @@ from lxml import etree
 from models.certificate.document import CertificateDocument, Table
 from models.certificate.interval_note import interval_cells
 from models.certificate.metadata import revision_statement, separate_statement
+from models.certificate.report_terms import report_translator
 from models.dcc import vocabulary as v
 from models.messages import QT_TR_NOOP, declared_text, message, rendered, translator
 from models.software import SoftwareIdentity, software_identity
@@ -67,7 +68,9 @@ _NOMINAL = ("theta_deg", "nominal_deg", "step_deg", "phase_deg", "target")
 _INDICATED = ("encoder_reading_deg",)
 _NUMBER = re.compile(r"^([+\-−]?\d+(?:\.\d+)?(?:[eE][+\-]?\d+)?)\s*(.*)$")
 
-_WORDS = {"en": translator("en"), "zh": translator("zh_CN")}
+#: "zh-report": a test report's Chinese, its item in the report's terms (被检测对象)
+_WORDS = {"en": translator("en"), "zh": translator("zh_CN"),
+          "zh-report": report_translator(translator("zh_CN"))}
 
 
 def _say(text: Any, lang: str) -> str:
@@ -135,7 +138,8 @@ class _Builder:
         en = _say(content, "en")
         etree.SubElement(el, D + "content", lang="en").text = en
         if self.bilingual:
-            etree.SubElement(el, D + "content", lang="zh").text = _say(content, "zh")
+            etree.SubElement(el, D + "content", lang="zh").text = _say(
+                content, "zh-report" if self.document.is_test_report else "zh")
 
     def rich(self, parent, tag: str, content: Any, translated: bool = True, **attrs):
         return self.text(parent, tag, content, translated, **attrs)

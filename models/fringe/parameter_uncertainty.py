@@ -60,10 +60,11 @@ import math
 from dataclasses import dataclass, field
 
 from models.fringe.sampling_phase_noise import phase_excess_variance, phase_noise_rad
-from models.messages import QT_TR_NOOP
+from models.messages import QT_TR_NOOP, Message, listed, message
 
-__all__ = ["ESTIMATED_REASON", "ParameterUncertainty", "parameter_uncertainty",
-           "phase_expanded", "sample_phase_u_rad"]
+__all__ = ["ESTIMATED_REASON", "INCOMPLETE_REASON", "ParameterUncertainty",
+           "incomplete_reason", "parameter_uncertainty", "phase_expanded",
+           "sample_phase_u_rad"]
 
 #: why no parameter has a U when the phase was estimated from the signals
 ESTIMATED_REASON = QT_TR_NOOP(
@@ -71,6 +72,23 @@ ESTIMATED_REASON = QT_TR_NOOP(
     "they are identified in the estimated phase's frame, which the signals' harmonics shift "
     "(a distortion of the phase that leaves the Lissajous figure round is not observable); "
     "the bias is not determined, and a U from the fit would not cover it")
+
+
+#: why the parameters' U stated are incomplete: a figure that acts on them not stated
+#: (assessment 70 M7: the bundled record's offsets printed "U 0.00018 V" with no word of it
+#: beside the table, 5.5 times less than with the ADC's figures stated)
+INCOMPLETE_REASON = QT_TR_NOOP(
+    "The U of {parameters} is incomplete: {inputs} not stated, so not in it (what it leaves "
+    "in these parameters the fit's scatter does not show; stated, it may make these U "
+    "several times larger).")
+#: the parameters each ADC figure acts on (:func:`parameter_uncertainty`), as named there
+_ACTS_ON = {"adc_offset_u_mv": (QT_TR_NOOP("ADC offset"), (QT_TR_NOOP("the offsets A₀"),)),
+            "adc_gain_u_pct": (QT_TR_NOOP("ADC gain ratio"),
+                               (QT_TR_NOOP("the offsets A₀"), QT_TR_NOOP("the amplitudes A"),
+                                QT_TR_NOOP("the amplitude ratio"))),
+            # with N equal steps the sampling's timing (sample_phase_u_rad): on the phases
+            "phase_reference_u": (QT_TR_NOOP("Phase reference"),
+                                  (QT_TR_NOOP("the harmonics' phases c"),))}
 
 
 @dataclass(frozen=True)
@@ -87,6 +105,10 @@ class ParameterUncertainty:
     #: whether an ADC figure (offset or gain ratio) is in the U (their ν is infinite: the
     #: effective degrees of freedom are then above the fit's)
     adc_stated: bool = False
+    #: the settings' keys of the figures that act on a parameter and are not stated (not in
+    #: these U): "adc_offset_u_mv", "adc_gain_u_pct", and with N equal steps
+    #: "phase_reference_u" (the sampling's timing, on the phases c_k)
+    not_stated: tuple[str, ...] = ()
 
 
 def parameter_uncertainty(result) -> ParameterUncertainty:
@@ -115,7 +137,23 @@ def parameter_uncertainty(result) -> ParameterUncertainty:
                                      + gain ** 2)
     quadrature = math.hypot(s.u_phase.get(1, math.nan), c.u_phase.get(1, math.nan))
     return ParameterUncertainty(channels, u_ratio, quadrature, "",
-                                adc_stated=bool(offset_v or gain))
+                                adc_stated=bool(offset_v or gain),
+                                not_stated=tuple(
+                                    key for key in _ACTS_ON if not inputs.get(key) and (
+                                        key != "phase_reference_u"
+                                        or result.phase_source == "samples_per_period")))
+
+
+def incomplete_reason(stated: ParameterUncertainty) -> Message | str:
+    """Why the U stated are incomplete (:data:`INCOMPLETE_REASON`, naming the parameters
+    and the figures not stated), "" where every figure acting on them is stated or no U is
+    stated at all."""
+    if stated.withheld or not stated.not_stated:
+        return ""
+    names = [_ACTS_ON[key][0] for key in stated.not_stated]
+    parameters = list(dict.fromkeys(p for key in stated.not_stated for p in _ACTS_ON[key][1]))
+    return message(INCOMPLETE_REASON, parameters=listed(message(p) for p in parameters),
+                   inputs=listed(message(n) for n in names))
 
 
 def sample_phase_u_rad(result) -> float:

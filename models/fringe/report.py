@@ -56,7 +56,11 @@ from models.fringe.model import (  # MODEL_INPUT: the compensation's own input
     model_signal_modes,
     model_signal_std,
 )
-from models.fringe.parameter_uncertainty import parameter_uncertainty, phase_expanded
+from models.fringe.parameter_uncertainty import (
+    incomplete_reason,
+    parameter_uncertainty,
+    phase_expanded,
+)
 from models.messages import QT_TR_NOOP, listed, message, separated
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import HalfRangeEstimate
@@ -482,6 +486,9 @@ def parameters_json(result, probability: float) -> dict[str, Any]:
     out["parameters_effective_dof_at_least"] = nu if not stated.withheld else None
     if stated.withheld:
         out["parameters_uncertainty_withheld"] = str(message(stated.withheld))
+    # the U given but without an ADC figure that acts on them: null where complete
+    incomplete = incomplete_reason(stated)
+    out["parameters_uncertainty_incomplete"] = str(incomplete) if incomplete else None
     return out
 
 
@@ -533,7 +540,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                         "U" if stated.withheld else
                         f"U (k = {k_fit:.2f}, ν {'≥' if stated.adc_stated else '='} {nu_fit})"),
                        _parameter_rows(result, k_fit),
-                       message(stated.withheld) if stated.withheld else "")
+                       message(stated.withheld) if stated.withheld else
+                       incomplete_reason(stated))
     per = min(result.samples_per_period or 64, raw.size)
     idx = printed_samples(raw, comp, big_u, per)
     if idx.size == raw.size:

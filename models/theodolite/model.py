@@ -543,6 +543,11 @@ def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None
 # readings' variation (a small set-up leaves the elevations flat: a low R² with residuals
 # at σ is noise, not a failure). σ = 0 turns the check off, as it does the warning.
 RESIDUAL_WARNED = 3.0
+#: the warning of a residual RMS beyond RESIDUAL_WARNED times the accuracy setting (a
+#: certificate judges it again on its stated standards' u: models.theodolite.accuracy_check)
+RESIDUAL_ABOVE_ACCURACY = QT_TR_NOOP("Residual RMS {rms} is more than three times the "
+                                     "theodolite accuracy {accuracy}: check the readings and "
+                                     "the set-up.")
 RESIDUAL_REFUSED = 100.0
 RESIDUAL_UNEXPLAINED = 10.0
 MIN_R_SQUARED = 0.99
@@ -693,8 +698,7 @@ def analyze_run(
                                 u=f"{ident.uncertainty_deg[0] * 3600.0:.2f}\"", direction="α"))
     if accuracy_arcsec and ident.residual_rms_arcsec > RESIDUAL_WARNED * accuracy_arcsec:
         warnings.append(message(
-            QT_TR_NOOP("Residual RMS {rms} is more than three times the theodolite accuracy "
-                       "{accuracy}: check the readings and the set-up."),
+            RESIDUAL_ABOVE_ACCURACY,
             rms=f"{ident.residual_rms_arcsec:.2f}\"", accuracy=f"{accuracy_arcsec:g}\""))
     iso = None
     if directions is not None or _distinct(np.round(theta, 6)).size < theta.size:

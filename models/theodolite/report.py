@@ -90,6 +90,7 @@ from models.certificate.interval_note import interval_note
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite import KEY, TITLE
+from models.theodolite.accuracy_check import certificate_warnings
 from models.theodolite.figures import MODEL_INPUT, per_angle_note, pooled_repeats
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
@@ -596,7 +597,9 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         decision=_decision(result, metadata, settings, budget),
         budget_point=lambda worst: f"θ = {result.theta_deg[worst]:g}°",
         plots=(error_figure(result), corrected_with_uncertainty(result, big_u),
-               residual_figure(result)), warnings=result.warnings,
+               residual_figure(result)),
+        warnings=certificate_warnings(result.warnings, ident.residual_rms_arcsec,
+                                      stated_reading_uncertainty(metadata)[0], settings),
         statements=(message(QT_TR_NOOP("U is zero at the reference reading (row {row}, θ₀ = "
                                        "{theta}): the theodolite was zeroed there, so its error "
                                        "is zero by definition."),

@@ -828,12 +828,19 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     # m less e" adds up as printed (0.45″ = 0.49″ − 0.04″, not "less 0.05″": the
     # excess 0.0460″ of 0.4918″ − 0.4457″); none, as measured (positioning's E/2)
     excess = round(float(f"{measured:.{d}f}") - float(f"{x:.{d}f}"), d) + 0.0
+    # "reaches further below" only where the interval printed does: its U₋ printed above its
+    # U₊ and its lower end further from the value than its upper end (until 0.8.18 said of
+    # every lower ≥ upper, so of half-widths raised to the CMC and printed ±0.050″ alike)
+    minus, plus = printed_half_widths(x, lower, upper)
+    printed_x = round(x, d)
+    further_below = (round(minus, d) > round(plus, d)
+                     and round(printed_x - low, d) > round(high - printed_x, d))
     if excess == 0.0:
         text = (message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} as measured, coverage "
                                    "interval {low} … {high} (U = {u}, coverage probability {p} "
                                    "%; noise can only widen a measured range, so the interval "
                                    "reaches further below the value than above it). {sentence}"),
-                        **figures) if lower >= upper else
+                        **figures) if further_below else
                 message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} as measured, coverage "
                                    "interval {low} … {high} (U = {u}, coverage probability {p} "
                                    "%). {sentence}"), **figures))
@@ -853,7 +860,17 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                                    "less {excess}, the median amount by which noise widens a "
                                    "measured range. Coverage interval of the true half range "
                                    "{low} … {high} (U = {u}, coverage probability {p} %). "
-                                   "{sentence}"), **said))
+                                   "{sentence}"), **said)
+                if excess > 0.0 else
+                # the value above the measured one: in the simulation a measured range fell
+                # short of the true one in the median (until 0.8.18 "less -0.0001″, the
+                # median amount by which noise widens", a negative widening)
+                message(QT_TR_NOOP("Half the peak-to-peak {what}: {value}, the measured {measured} "
+                                   "plus {shortfall}: in the simulation of the budget's inputs "
+                                   "a measured range fell short of the true one by this much "
+                                   "in the median. Coverage interval of the true half range "
+                                   "{low} … {high} (U = {u}, coverage probability {p} %). "
+                                   "{sentence}"), shortfall=f"{-excess:.{d}f}{q}", **said))
     trials, seed = getattr(mc, "trials", 0), getattr(mc, "seed", MONTE_CARLO_SEED)
     stride = getattr(mc, "stride", 1)
     quantity_text = (message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}, on every "

@@ -15,9 +15,9 @@ from models.software import software_identity
 class _CertificatePdf(ReportPdf):
     def __init__(self, document: CertificateDocument) -> None:
         meta = document.metadata
-        say = _say(meta.language)
         # a test report speaks of itself as a report throughout (ISO/IEC 17025 7.8.2.1 a))
         report = document.is_test_report
+        say = _say(meta.language, report)
         super().__init__(
             (meta.lab_name or say(QT_TR_NOOP("Laboratory not stated")),
              say(message(QT_TR_NOOP("Test report {number}") if report else
@@ -35,6 +35,7 @@ class _CertificatePdf(ReportPdf):
                          version=software_identity().short))),
             cjk=_needs_fallback(document) or document.metadata.language != "en",
             language=meta.language)
+        self.say = say  # and names its item in its own terms (被检测对象, not 被校对象)
         self.document = document
 
     def header(self) -> None:

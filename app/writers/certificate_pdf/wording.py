@@ -8,6 +8,7 @@ import functools
 from collections.abc import Callable
 
 from models.certificate.document import CertificateDocument
+from models.certificate.report_terms import report_translator
 from models.messages import JOINS, Message, in_language, joined, message, separated, translator
 
 #: the certificate's fixed words in Chinese, metrology terms as JJF 1001-2011 names them;
@@ -105,7 +106,7 @@ def label(document: CertificateDocument, english: str, separator: str = " ") -> 
     if language == "zh+en" and english in chinese_words:
         return f"{chinese_words[english]}{separator}{english}"
     if language == "zh":
-        return chinese_words.get(english) or _say("zh")(english)
+        return chinese_words.get(english) or _say("zh", document.is_test_report)(english)
     return english
 
 
@@ -127,20 +128,22 @@ def in_chinese(document: CertificateDocument, english) -> str:
 @functools.cache
 def _chinese_words(report: bool) -> Callable[[str], str]:
     words = {**CHINESE, **REPORT_CHINESE} if report else CHINESE
-    catalogue = translator("zh_CN")
+    catalogue = report_translator(translator("zh_CN")) if report else translator("zh_CN")
     return lambda text: words.get(text) or catalogue(text)
 
 
 @functools.cache
-def _say(language: str):
+def _say(language: str, report: bool = False):
     """How the certificate's texts are printed in ``language``: a :class:`Message` in the
     translated template with its own figures, another text looked up whole (a column's
     name, a setting's label), anything else — user input, numbers — as it is. Only a
     Chinese certificate is translated throughout: the bilingual one keeps the English body
-    under its two-language headings, except what :func:`_in_both` prints twice."""
+    under its two-language headings, except what :func:`_in_both` prints twice. ``report``:
+    a test report's, which names the item in its own terms
+    (models.certificate.report_terms)."""
     if language != "zh":
         return str
-    words = translator("zh_CN")
+    words = report_translator(translator("zh_CN")) if report else translator("zh_CN")
     return lambda text: in_language(text, words)
 
 
@@ -153,7 +156,7 @@ def _in_both(document: CertificateDocument, text) -> list[str]:
     the remarks (not the tables, whose headers are already in both)."""
     if document.metadata.language != "zh+en" or not text:
         return [text]
-    chinese, english = _say("zh")(text), str(text)
+    chinese, english = _say("zh", document.is_test_report)(text), str(text)
     return [english] if chinese == english else [chinese, english]
 
 
