@@ -803,9 +803,10 @@ def _reversal_t(n_up: np.ndarray, n_down: np.ndarray, tail: float | np.ndarray) 
     return stdtrit(nu, 1.0 - tail)
 
 
-#: the share of the per-target tail of R's lower end (:func:`_repeatability_bounds`) spent
-#: on the reversal's bound, the rest on the two σ's (Šidák over the two directions)
-REVERSAL_LOW_SHARE = 0.1
+#: the part of a target's share of the tail at R's lower end (:func:`_repeatability_bounds`)
+#: left for the misses of the two-way term that the σ's bounds do not make (found below
+#: 0.002 of the share: tests/benchmarks/two_way_bound_study.py), the rest to σ↑ and σ↓
+TWO_WAY_LOW_ROOM = 0.05
 
 
 def _two_way_miss(level: float, n: float, n_t: float) -> float:
@@ -878,15 +879,19 @@ def _repeatability_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
       least favourable point (one direction's σ alone, |β| ≫ σ): 1.14–2.4 times the tail
       at 2–20 runs, as the three share s↑ and s↓ and b − β is independent of them (until
       0.8.18 each at a third of the tail, Bonferroni: the sum missed at 0.03–0.2 of the
-      tail and R's interval was 1.3–2.7 times as wide). The lower end: on the event that
-      every target's lower bounds of σ↑, σ↓ and |β_i| are below them, R is at least every
-      target's R_i made of the bounds; a target's share of the tail is Šidák's over the m targets,
-      of which :data:`REVERSAL_LOW_SHARE` goes to |β_i|'s bound max(|b_i| − t·se, 0) (t
-      two-sided: at β = 0 both signs of b miss) and the rest to the two σ's at once (Šidák
-      over the two directions; until 0.8.18 3m bounds at tail/(3m) each). A sum of lower
-      bounds each at the target's whole share, as Ps_max's, does not hold here: where
-      σ↑ = σ↓ and β = 0, 4σ↑ and 4σ↓ are both R_i, and either σ's bound above its own makes
-      the target's bound miss: twice the share;
+      tail and R's interval was 1.3–2.7 times as wide). The lower end: R is at least every
+      target's R_i made of lower bounds where none of them is above its own R_i, each
+      target's at Šidák's share of the tail over the m targets. A target's misses when σ↑'s
+      or σ↓'s lower bound is above σ (the two at once, Šidák over the two directions, at all
+      but :data:`TWO_WAY_LOW_ROOM` of the share), or when neither is and 2σ̌↑ + 2σ̌↓ +
+      max(|b_i| − t·se, 0) is above 2σ↑ + 2σ↓ + |β_i|: with t at the whole share (one-sided)
+      that is below 0.002 of the share over σ↓/σ↑ 10⁻² … 10², |β|/σ 0 … 20, 2–30 runs and
+      2–72 targets (the σ's bounds lie far below the σ's there, which leaves the reversal
+      room; tests/benchmarks/two_way_bound_study.py). Until 0.8.18 3m bounds at tail/(3m)
+      each (the reversal's two-sided). A sum of lower bounds each at the target's whole
+      share, as Ps_max's, does not hold here: where σ↑ = σ↓ and β = 0, 4σ↑ and 4σ↓ are
+      both R_i, and either σ's bound above its own makes the target's bound miss: twice
+      the share;
     * Ps_max = max 3(σ↑ + σ↓) (VDI/DGQ 3441) likewise: a target's σ↑ + σ↓ by the sum of its
       two bounds, each at the whole tail (upper end) or at Šidák's share of the targets
       (lower end): the sum holds at that tail whatever σ↓/σ↑, exact where one σ is far the
@@ -920,14 +925,14 @@ def _repeatability_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
         two_way_high = (2.0 * _sigma_bound(s_up, n_up, level, upper=True)
                         + 2.0 * _sigma_bound(s_down, n_down, level, upper=True)
                         + reversal + _reversal_t(n_up, n_down, level) * se)
-        # the lower end: a target's share of the tail (Šidák over the targets), a tenth to
-        # |β_i|'s bound (two-sided), the rest to its σ↑ and σ↓ at once (Šidák over the two)
-        reversal_cut = REVERSAL_LOW_SHARE * sidak
-        sigma_cut = 1.0 - math.sqrt(1.0 - (1.0 - REVERSAL_LOW_SHARE) * sidak)
+        # the lower end: a target's share of the tail (Šidák over the targets), its σ↑ and
+        # σ↓ at once (Šidák over the two) at all but TWO_WAY_LOW_ROOM of it, |β_i|'s bound
+        # (one-sided) at the whole share: the σ's bounds' slack keeps its own misses below
+        # the room
+        sigma_cut = 1.0 - math.sqrt(1.0 - (1.0 - TWO_WAY_LOW_ROOM) * sidak)
         low_up = _sigma_bound(s_up, n_up, sigma_cut, upper=False)
         low_down = _sigma_bound(s_down, n_down, sigma_cut, upper=False)
-        low_reversal = np.maximum(reversal - _reversal_t(n_up, n_down, 0.5 * reversal_cut) * se,
-                                  0.0)
+        low_reversal = np.maximum(reversal - _reversal_t(n_up, n_down, sidak) * se, 0.0)
         two_way_low = np.maximum(np.maximum(2.0 * low_up + 2.0 * low_down + low_reversal,
                                             4.0 * low_up), 4.0 * low_down)
         out["R"] = (float(np.max(two_way_low)),
