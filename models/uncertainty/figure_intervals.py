@@ -834,8 +834,8 @@ def _two_way_level(n_up: float, n_down: float, tail: float) -> float:
     (:func:`_two_way_miss`, the larger of the two directions'), is ``tail``.
 
     The sum's miss is below the level: the mean's error b − β is independent of the s and
-    leaves the σ bounds room, so each bound at the whole tail misses at 0.2–0.8 of it
-    (tests/benchmarks/two_way_bound_study.py). Why that point is the least favourable:
+    leaves the σ bounds room, so each bound at the whole tail misses at 0.44–0.88 of it
+    at 10 to 2 runs (tests/benchmarks/two_way_bound_study.py). Why that point is the least favourable:
     |b| ≥ b·sign β, so the miss at any β is at most the one of the linear form
     2(G s↑ − σ↑) + 2(G s↓ − σ↓) + (b − β)·sign β + t·se < 0, which |β| ≫ σ reaches; and
     over σ↓/σ↑ the miss grows toward either end (the other direction's bound then adds
@@ -878,10 +878,13 @@ def _repeatability_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
       one level (:func:`_two_way_level`) at which the sum misses at exactly the tail at the
       least favourable point (one direction's σ alone, |β| ≫ σ): 1.14–2.4 times the tail
       at 2–20 runs, as the three share s↑ and s↓ and b − β is independent of them (until
-      0.8.18 each at a third of the tail, Bonferroni: the sum missed at 0.03–0.2 of the
-      tail and R's interval was 1.3–2.7 times as wide). The lower end: R is at least every
-      target's R_i made of lower bounds where none of them is above its own R_i, each
-      target's at Šidák's share of the tail over the m targets. A target's misses when σ↑'s
+      0.8.18 each at a third of the tail, Bonferroni: the sum missed at 0.13–0.29 of the
+      tail at most, at 10 to 2 runs; R's interval is now 0.61–0.79 of that width, 0.87–0.95
+      where one target's 4σ makes R, its bound as before: #39's study,
+      tests/benchmarks/repeatability_width_study.py, 191–200 of 200 covered in every
+      cell). The lower end: R is at least every target's R_i made of lower bounds where
+      none of them is above its own R_i, each target's at Šidák's share of the tail over
+      the m targets. A target's misses when σ↑'s
       or σ↓'s lower bound is above σ (the two at once, Šidák over the two directions, at all
       but :data:`TWO_WAY_LOW_ROOM` of the share), or when neither is and 2σ̌↑ + 2σ̌↓ +
       max(|b_i| − t·se, 0) is above 2σ↑ + 2σ↓ + |β_i|: with t at the whole share (one-sided)
