@@ -878,7 +878,7 @@ def _repeatability_bounds(x: dict[str, np.ndarray], s: dict[str, np.ndarray],
       one level (:func:`_two_way_level`) at which the sum misses at exactly the tail at the
       least favourable point (one direction's σ alone, |β| ≫ σ): 1.14–2.4 times the tail
       at 2–20 runs, as the three share s↑ and s↓ and b − β is independent of them (until
-      0.8.18 each at a third of the tail, Bonferroni: the sum missed at 0.13–0.29 of the
+      0.8.18 each at a third of the tail, Bonferroni: the sum missed at 0.13–0.30 of the
       tail at most, at 10 to 2 runs; R's interval is now 0.61–0.79 of that width, 0.87–0.95
       where one target's 4σ makes R, its bound as before: #39's study,
       tests/benchmarks/repeatability_width_study.py, 191–200 of 200 covered in every
