@@ -1303,6 +1303,7 @@
     </message>
     <message>
         <source>error</source>
+        <extracomment>a record of at most this many samples has its signals drawn as markers, each sample where it was read, and the fit as a continuous curve between them</extracomment>
         <translation>误差</translation>
     </message>
     <message>
@@ -3646,7 +3647,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>not stated</source>
-        <extracomment>a column&apos;s unit by its name&apos;s ending: D-SI unit a printed unit symbol (a table cell&apos;s ending) → D-SI unit seconds of arc in one of each angle unit (a parameter&apos;s U printed in another unit) PTB&apos;s basic refTypes for a column&apos;s role</extracomment>
+        <extracomment>a column&apos;s unit by its name&apos;s ending: D-SI unit a printed unit symbol (a table cell&apos;s ending) → D-SI unit seconds of arc in one of each angle unit (a parameter&apos;s U printed in another unit) PTB&apos;s basic refTypes for a column&apos;s role &quot;zh-report&quot;: a test report&apos;s Chinese, its item in the report&apos;s terms (被检测对象)</extracomment>
         <translation>未注明</translation>
     </message>
     <message>
@@ -4963,7 +4964,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the record covers {share} % of one period ({span}° of phase): the harmonics and the interpolation error over the whole period cannot be determined from less than one whole period; record at least one period</source>
-        <extracomment>a separation below this is exact aliasing (the orders take the same values at every sampled phase), not a near one: the rounding of the phases&apos; sines a record steps evenly when the noise its second differences show is at most this share of its median step a span of one period is within the phases&apos; noise when it falls short of a period by at most this many standard deviations of the span (its two ends&apos; noise)</extracomment>
+        <extracomment>a separation below this is exact aliasing (the orders take the same values at every sampled phase), not a near one: the rounding of the phases&apos; sines a span of one period is within the phases&apos; noise when it falls short of a period by at most this many standard deviations of the span (its two ends&apos; noise)</extracomment>
         <translation>记录仅覆盖一个周期的 {share} %（相位 {span}°）：不足一个完整周期，无法确定各次谐波及整个周期上的细分误差；请至少记录一个周期</translation>
     </message>
     <message>
@@ -5689,6 +5690,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>Residual RMS {rms} is more than three times the theodolite accuracy {accuracy}: check the readings and the set-up.</source>
+        <extracomment>the warning of a residual RMS beyond RESIDUAL_WARNED times the accuracy setting (a certificate judges it again on its stated standards&apos; u: models.theodolite.accuracy_check)</extracomment>
         <translation>残差均方根 {rms} 超过经纬仪准确度 {accuracy} 的三倍：请检查读数和安装。</translation>
     </message>
     <message>
@@ -6224,6 +6226,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>The item does not conform to the specification ±{t} (fail).</source>
         <translation>被校对象不符合技术要求 ±{t}（不合格）。</translation>
+    </message>
+    <message>
+        <source>Half the peak-to-peak {what}: {value}, the measured {measured} plus {shortfall}: in the simulation of the budget&apos;s inputs a measured range fell short of the true one by this much in the median. Coverage interval of the true half range {low} … {high} (U = {u}, coverage probability {p} %). {sentence}</source>
+        <translation>{what}峰峰值的一半：{value}，即实测值 {measured} 加上 {shortfall}：在按不确定度分量所作的模拟中，实测极差比真实极差小此量（中位数）。真实峰峰值一半的包含区间 {low} … {high}（U = {u}，包含概率 {p} %）。{sentence}</translation>
     </message>
     <message>
         <source>the lower end held at 0, as a half range is not negative: U₋ = {minus} is the value less it</source>
@@ -7889,10 +7895,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>当竖直读数无法辨识倾斜时（未给出、全部相等，或只有 3 个面：没有自由度），塔差误差不予扣除：不超过此值、处于最不利方向的倾斜的精确影响计入不确定度（矩形分布）；倾斜已拟合时不使用</translation>
     </message>
     <message>
-        <source>Without a closure reading (the first face read again at the end of the mounting) a mounting&apos;s drift is neither measured nor removed, and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that the readings cannot tell from the encoder&apos;s error: its exact effect for a linear drift up to this over a mounting (a full turn), in every such mounting, enters the uncertainty (rectangular); 0: none stated, and the encoder&apos;s U is then withheld (the face deviations are not affected by a drift common to the mountings)</source>
-        <translation>没有闭合读数（安装位置末尾再读一次第一面）时，该安装位置的漂移既未测量也未消除，而各安装位置同向的漂移是编码器各步上的一个斜坡，读数无法将其与编码器误差区分：每个这样的安装位置中不超过此值（一整转内）的线性漂移的精确影响计入不确定度（矩形分布）；0：未给出，此时编码器的 U 不予给出（各安装位置共同的漂移不影响面偏差）</translation>
-    </message>
-    <message>
         <source>Without vertical readings the polygon&apos;s tilt on the shaft is neither identified nor removed: its exact effect for a tilt up to this, the worst direction, enters the uncertainty (rectangular); not used when vertical readings are given (the tilt is then fitted and removed)</source>
         <translation>无竖直读数时，多面棱体在轴上的倾斜既未辨识也未修正：按不超过此值的倾斜、最不利方向精确计算其影响，计入不确定度（矩形分布）；给出竖直读数时不用（此时倾斜被拟合并修正）</translation>
     </message>
@@ -8474,8 +8476,29 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>相位由信号本身估计，无相位参考：谐波失真中使李萨如图形保持为圆的部分不可观测，因此误差的 U 不完整（请给出参考的 θ 列或每周期 N 个采样）</translation>
     </message>
     <message>
+        <source>The U of {parameters} is incomplete: {inputs} not stated, so not in it (what it leaves in these parameters the fit&apos;s scatter does not show; stated, it may make these U several times larger).</source>
+        <extracomment>why the parameters&apos; U stated are incomplete: a figure that acts on them not stated (assessment 70 M7: the bundled record&apos;s offsets printed &quot;U 0.00018 V&quot; with no word of it beside the table, 5.5 times less than with the ADC&apos;s figures stated)</extracomment>
+        <translation>{parameters}的 U 不完整：{inputs}未给出，因而未计入（它在这些参数中造成的影响，拟合的分散性无法显示；给出后这些 U 可能大数倍）。</translation>
+    </message>
+    <message>
+        <source>the offsets A₀</source>
+        <translation>偏置 A₀</translation>
+    </message>
+    <message>
+        <source>the amplitudes A</source>
+        <translation>幅值 A</translation>
+    </message>
+    <message>
+        <source>the amplitude ratio</source>
+        <translation>幅值比</translation>
+    </message>
+    <message>
         <source>Phase reference</source>
         <translation>相位参考</translation>
+    </message>
+    <message>
+        <source>the harmonics&apos; phases c</source>
+        <translation>谐波相位 c</translation>
     </message>
     <message>
         <source>{what}: u = {u}° of a period (stated)</source>
@@ -8491,6 +8514,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>ADC offset</source>
+        <extracomment>the parameters each ADC figure acts on (:func:`parameter_uncertainty`), as named there</extracomment>
         <translation>ADC 偏置</translation>
     </message>
     <message>
@@ -9769,6 +9793,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>没有竖直读数：未辨识也未消除多面棱体在轴上的倾斜</translation>
     </message>
     <message>
+        <source>mounting {mounting}: no closure reading (its first face read again at the end): its drift fitted through the other mountings&apos; closure readings</source>
+        <translation>安装位置 {mounting}：没有闭合读数（最后再读一次第一个面）：其漂移借助其他安装的闭合读数拟合</translation>
+    </message>
+    <message>
         <source>{readings} readings determine {unknowns} unknowns with none left over: the scatter of a reading cannot be evaluated — add a mounting, or state the autocollimator&apos;s σ</source>
         <translation>{readings} 个读数确定 {unknowns} 个未知量，没有剩余自由度：无法评定单次读数的分散性——请增加安装位置，或给出自准直仪的 σ</translation>
     </message>
@@ -10284,6 +10312,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>Which instrument the certificate is issued for: the polygon&apos;s face deviations or the encoder&apos;s error at its steps</source>
         <translation>证书所针对的器具：多面棱体的面偏差，或编码器各步的误差</translation>
+    </message>
+    <message>
+        <source>Without a closure reading (the first face read again at the end of the mounting) a mounting&apos;s drift is neither measured nor removed (unless the other mountings&apos; closure readings let it be fitted), and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that the readings cannot tell from the encoder&apos;s error: its exact effect for a linear drift up to this over a mounting (a full turn), in every such mounting, enters the uncertainty (rectangular); 0: none stated, and the encoder&apos;s U is then withheld (the face deviations are not affected by a drift common to the mountings)</source>
+        <translation>没有闭合读数（安装位置末尾再读一次第一面）时，该安装位置的漂移既未测量也未消除（除非其他安装位置的闭合读数使其可以拟合），而各安装位置同向的漂移是编码器各步上的一个斜坡，读数无法将其与编码器误差区分：每个这样的安装位置中不超过此值（一整转内）的线性漂移的精确影响计入不确定度（矩形分布）；0：未给出，此时编码器的 U 不予给出（各安装位置共同的漂移不影响面偏差）</translation>
     </message>
     <message>
         <source>certificate of</source>
@@ -12041,6 +12073,16 @@ Replace it?</source>
         <source>{figure} {value} (interval {low} … {high})</source>
         <extracomment>one figure in the list with its interval&apos;s ends: &quot;A 20″ (interval 16″ … 107″)&quot; (day review 69 F4: &quot;no specification … can be decided&quot; overstated, one below the lower end is)</extracomment>
         <translation>{figure} {value}（区间 {low} … {high}）</translation>
+    </message>
+    <message>
+        <source>Residual RMS {rms} is more than three times the stated standards&apos; u = {u} per reading, which the uncertainty budget uses: check the readings and the set-up.</source>
+        <extracomment>the residuals judged on the stated standards&apos; u, which the budget uses</extracomment>
+        <translation>残差均方根 {rms} 超过所列标准器每个读数的 u = {u}（不确定度分量一览表所用之值）的三倍：请检查读数和安装。</translation>
+    </message>
+    <message>
+        <source>The theodolite accuracy setting {setting} (1σ) differs from the stated standards&apos; u = {u} per reading: the uncertainty budget and the check of the fit&apos;s residuals use {u}, the setting is not used for these results.</source>
+        <extracomment>the setting differs from the u the budget uses: which one the certificate rests on</extracomment>
+        <translation>经纬仪准确度设置 {setting}（1σ）与所列标准器每个读数的 u = {u} 不同：不确定度分量一览表和拟合残差的检查均采用 {u}，这些结果未采用该设置。</translation>
     </message>
 </context>
 </TS>
