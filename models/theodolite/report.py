@@ -89,6 +89,7 @@ from models.certificate.document import (
 from models.certificate.interval_note import interval_note
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
+from models.printed_figure import printed
 from models.theodolite import KEY, TITLE
 from models.theodolite.figures import MODEL_INPUT, per_angle_note, pooled_repeats
 from models.theodolite.model import TheodoliteResult
@@ -587,7 +588,9 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
          message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=raw_ptp)),
         (QT_TR_NOOP("Corrected error"), corrected_range,
          message(QT_TR_NOOP("peak-to-peak {ptp}, RMS {rms}"), ptp=corrected_ptp,
-                 rms=f"{c.rms:.{d}f}\"")),
+                 rms=printed(c.rms, "\"", u=budget.max_expanded)
+                 if budget.max_expanded > 0 and math.isfinite(budget.max_expanded) else
+                 printed(c.rms, "\"", decimals=d))),
     ], QT_TR_NOOP("points"), after=_iso230_rows(result, budget, metadata))
     return build_certificate(
         kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,

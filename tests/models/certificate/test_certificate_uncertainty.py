@@ -182,8 +182,17 @@ def test_asymmetric_half_range_interval_is_printed_as_such():
     assert c.expanded_lower == mc.u_lower and c.expanded == mc.u_upper
     row = decision_rows(c, budget, "points")[0][1]
     d = 2 if min(mc.u_lower, mc.u_upper) >= 0.1 else 3
-    assert f"−{mc.u_lower:.{d}f}\"/+{mc.u_upper:.{d}f}\"" in row and "±" not in row
-    assert f"−{mc.u_lower:.{d}f}\"/+{mc.u_upper:.{d}f}\"" in c.statement
+    # each U rounded up, and at least the printed value to its end rounded outward, so that
+    # value ± U is the printed interval (assessment 70 M1)
+    step = 10.0 ** -d
+    value = round(mc.value, d)
+    minus = max(math.ceil(mc.u_lower / step - 1e-9) * step,
+                value - math.floor((mc.value - mc.u_lower) / step + 1e-9) * step)
+    plus = max(math.ceil(mc.u_upper / step - 1e-9) * step,
+               math.ceil((mc.value + mc.u_upper) / step - 1e-9) * step - value)
+    assert f"−{minus:.{d}f}\"/+{plus:.{d}f}\"" in row and "±" not in row
+    assert f"−{minus:.{d}f}\"/+{plus:.{d}f}\"" in c.statement
+    assert f"{value - minus:.{d}f}\" … {value + plus:.{d}f}\"" in c.statement
 
 
 # 17. α and β as the certificate defines them, against two independent rigs -------------------
