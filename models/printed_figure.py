@@ -36,7 +36,8 @@ import math
 from models.quantity import UnitError, unit
 from models.uncertainty.rounding import stated_interval, uncertainty_decimals
 
-__all__ = ["PrintedFigure", "printed", "printed_interval_figures", "rounded_to", "tolerance_figure"]
+__all__ = ["PrintedFigure", "PrintedRange", "interval_range", "printed", "printed_interval_figures",
+           "rounded_to", "tolerance_figure"]
 
 
 def rounded_to(value: float, decimals: int, rounding: str = "nearest") -> float:
@@ -77,12 +78,13 @@ class PrintedFigure(str):
     part: str
     clip: bool
     less: float | None
+    stated_exactly: bool
 
     def __new__(cls, value: float, symbol: str, *, u: float | None = None,
                 decimals: int | None = None, rounding: str = "nearest", sign: str = "",
                 unit_key: str = "", interval: tuple[float, float, float] | None = None,
                 part: str = "value", clip: bool = False,
-                less: float | None = None) -> PrintedFigure:
+                less: float | None = None, stated_exactly: bool = False) -> PrintedFigure:
         value = float(value)
         if interval is not None:
             interval = tuple(float(x) for x in interval)  # type: ignore[assignment]
@@ -101,7 +103,7 @@ class PrintedFigure(str):
         figure.rounding, figure.sign, figure.symbol = rounding, sign, symbol
         figure.unit_key = unit_key or _unit_key(symbol)
         figure.interval, figure.part, figure.clip = interval, part, clip
-        figure.less = less
+        figure.less, figure.stated_exactly = less, stated_exactly
         return figure
 
     @staticmethod
@@ -118,12 +120,14 @@ class PrintedFigure(str):
                                             "rounding": self.rounding, "sign": self.sign,
                                             "unit_key": self.unit_key,
                                             "interval": self.interval, "part": self.part,
-                                            "clip": self.clip, "less": self.less})
+                                            "clip": self.clip, "less": self.less,
+                                            "stated_exactly": self.stated_exactly})
 
     @property
-    def exact(self) -> float:
-        """The unrounded value (the DCC states it, not the digits printed)."""
-        return self.value
+    def exact(self) -> float | None:
+        """The unrounded value where the machine-readable outputs state it so
+        (``stated_exactly``: the DCC then states it, not the digits printed), else None."""
+        return self.value if self.stated_exactly else None
 
     @property
     def places(self) -> int:
@@ -153,7 +157,44 @@ class PrintedFigure(str):
                              decimals=decimals, rounding=self.rounding, sign=self.sign,
                              unit_key=target.key, interval=interval,  # type: ignore[arg-type]
                              part=self.part, clip=self.clip,
-                             less=None if self.less is None else self.less * factor)
+                             less=None if self.less is None else self.less * factor,
+                             stated_exactly=self.stated_exactly)
+
+
+class PrintedRange(str):
+    """Two printed figures joined by " … " (a coverage interval's ends), which converts as
+    its ends do; ``exact``: both ends unrounded (the DCC states them)."""
+
+    low: PrintedFigure
+    high: PrintedFigure
+
+    def __new__(cls, low: PrintedFigure, high: PrintedFigure) -> PrintedRange:
+        made = super().__new__(cls, f"{low} … {high}")
+        made.low, made.high = low, high
+        return made
+
+    def __getnewargs__(self):  # copied, pickled
+        return self.low, self.high
+
+    @property
+    def exact(self) -> tuple[float, float]:
+        return self.low.value, self.high.value
+
+    @property
+    def unit_key(self) -> str:
+        return self.low.unit_key
+
+    def to(self, key: str) -> PrintedRange:
+        return PrintedRange(self.low.to(key), self.high.to(key))
+
+
+def interval_range(low: float, high: float, symbol: str) -> PrintedRange:
+    """A coverage interval [``low``, ``high``] as printed, alone (no U beside it): each end
+    to the decimal of its half-width (two significant digits, GUM 7.2.6) rounded outward, in
+    any unit it is read in."""
+    half = (high - low) / 2.0
+    return PrintedRange(PrintedFigure(low, symbol, u=half, rounding="down"),
+                        PrintedFigure(high, symbol, u=half, rounding="up"))
 
 
 def _unit_key(symbol: str) -> str:
@@ -164,10 +205,11 @@ def _unit_key(symbol: str) -> str:
 
 
 def printed(value: float, symbol: str, *, u: float | None = None, decimals: int | None = None,
-            rounding: str = "nearest", sign: str = "", unit_key: str = "") -> PrintedFigure:
+            rounding: str = "nearest", sign: str = "", unit_key: str = "",
+            stated_exactly: bool = False) -> PrintedFigure:
     """:class:`PrintedFigure` (the name the formatting helpers use)."""
     return PrintedFigure(value, symbol, u=u, decimals=decimals, rounding=rounding, sign=sign,
-                         unit_key=unit_key)
+                         unit_key=unit_key, stated_exactly=stated_exactly)
 
 
 def printed_interval_figures(value: float, lower: float, upper: float, symbol: str,
