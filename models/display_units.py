@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from models.messages import QT_TR_NOOP, Message, message
-from models.printed_figure import PrintedFigure, PrintedRange
+from models.printed_figure import PrintedFigure, PrintedRange, StatedTolerance
 from models.quantity import Quantity
 
 if TYPE_CHECKING:  # a plot's module is loaded by whoever draws one
@@ -133,7 +133,12 @@ def _rewrite(match: re.Match[str], unit: AngleUnit) -> str:
     return f"{sign}{digits}{gap}{unit.symbol}"
 
 
-def _printed_in_unit(figure: PrintedFigure | PrintedRange, unit: AngleUnit) -> str:
+#: a figure printed that converts itself from its value (models/printed_figure.py)
+_PRINTED = PrintedFigure | PrintedRange | StatedTolerance
+
+
+def _printed_in_unit(figure: PrintedFigure | PrintedRange | StatedTolerance,
+                     unit: AngleUnit) -> str:
     """A printed figure in ``unit`` from its unrounded value, rounded there by its own rule
     (:mod:`models.printed_figure`), when it is in one of the units results are read in; a
     figure in degrees (a set-up parameter), nm or V as it is."""
@@ -146,7 +151,7 @@ def text_in_unit(text: str, unit: AngleUnit) -> str:
     reading is left as it is. A Message goes through :func:`in_unit` instead."""
     if isinstance(text, Message):
         return in_unit(text, unit)
-    if isinstance(text, PrintedFigure | PrintedRange):  # converted from its value, rounded in ``unit``
+    if isinstance(text, _PRINTED):  # converted from its value, rounded in ``unit``
         return _printed_in_unit(text, unit)
     return _NUMBER_WITH_UNIT.sub(lambda m: _rewrite(m, unit), text)
 
@@ -156,7 +161,7 @@ def _figure_in_unit(figure: Any, unit: AngleUnit) -> Any:
         return figure.to(unit.key) if figure.unit.dimension == "angle" else figure
     if isinstance(figure, Message):
         return in_unit(figure, unit)
-    if isinstance(figure, PrintedFigure | PrintedRange):
+    if isinstance(figure, _PRINTED):
         return _printed_in_unit(figure, unit)
     if isinstance(figure, str):  # a figure passed formatted: "0.45\"", "±3.05\" (u, k = 1)"
         return text_in_unit(figure, unit)
@@ -209,7 +214,7 @@ def _cell_in_unit(cell: Any, factor: float, unit: AngleUnit) -> Any:
         return cell
     if isinstance(cell, int | float | np.floating | np.integer):
         return float(cell) * factor
-    if isinstance(cell, PrintedFigure | PrintedRange | Message):  # from its own figures, not its digits
+    if isinstance(cell, _PRINTED | Message):  # from its own figures, not its digits
         return in_unit(cell, unit)
     text = str(cell)
     try:

@@ -37,7 +37,7 @@ from models.quantity import UnitError, unit
 from models.uncertainty.rounding import stated_interval, uncertainty_decimals
 
 __all__ = ["PrintedFigure", "PrintedRange", "interval_range", "printed", "printed_interval_figures",
-           "rounded_to", "tolerance_figure"]
+           "rounded_to", "StatedLimit", "StatedTolerance", "tolerance_figure"]
 
 
 def rounded_to(value: float, decimals: int, rounding: str = "nearest") -> float:
@@ -226,7 +226,63 @@ def printed_interval_figures(value: float, lower: float, upper: float, symbol: s
             for part in exact}
 
 
-def tolerance_figure(tolerance: float, symbol: str) -> PrintedFigure:
-    """A tolerance T as the decision texts print it: exactly, to six significant digits
-    (3″ is 14.5444 µrad read in µrad, never 14.5 µrad from a rounded figure)."""
+class StatedLimit(float):
+    """A tolerance in the unit of the errors it is judged against that remembers how the
+    customer stated it (``stated``: its number and unit key), so that the texts quote the
+    specification as stated (assessment 70 M4)."""
+
+    stated: tuple[float, str]
+
+    def __new__(cls, value: float, stated: tuple[float, str]) -> StatedLimit:
+        made = super().__new__(cls, value)
+        made.stated = stated
+        return made
+
+    def __getnewargs__(self):  # copied, pickled
+        return float(self), self.stated
+
+
+def _as_stated(number: float) -> str:
+    """A number as it was typed: its shortest digits, in positional notation."""
+    import numpy as np
+
+    return np.format_float_positional(number, unique=True, trim="-")
+
+
+class StatedTolerance(str):
+    """A specification quoted as the customer stated it ("14.5 µrad"), followed, where it
+    is read in another unit, by its value there to three significant digits ("14.5 µrad
+    (2.99″)"): the decision uses the exact conversion, the text never restates the limit
+    with the spurious digits of a conversion ("±2.99084″")."""
+
+    stated: tuple[float, str]
+    unit_key: str
+
+    def __new__(cls, stated: tuple[float, str], unit_key: str) -> StatedTolerance:
+        number, key = stated
+        said = f"{_as_stated(number)}{unit(key).written()}"
+        if unit_key and unit_key != key:
+            value = float(number) * unit(key).size / unit(unit_key).size
+            digits = max(0, 2 - math.floor(math.log10(abs(value)))) if value else 0
+            said += f" ({value:.{digits}f}{unit(unit_key).written()})"
+        made = super().__new__(cls, said)
+        made.stated, made.unit_key = stated, unit_key
+        return made
+
+    def __getnewargs__(self):  # copied, pickled
+        return self.stated, self.unit_key
+
+    def to(self, key: str) -> StatedTolerance:
+        return StatedTolerance(self.stated, key)
+
+
+def tolerance_figure(tolerance: float, symbol: str) -> str:
+    """A tolerance T as the decision texts print it: as the customer stated it where it is
+    a :class:`StatedLimit` in another unit (:class:`StatedTolerance`), else exactly, to six
+    significant digits (3″ is 14.5444 µrad read in µrad, never 14.5 µrad from a rounded
+    figure)."""
+    stated = getattr(tolerance, "stated", None)
+    key = _unit_key(symbol)
+    if stated is not None and key:
+        return StatedTolerance(stated, key)
     return PrintedFigure(tolerance, symbol, rounding="g", decimals=0)

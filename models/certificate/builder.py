@@ -29,6 +29,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata
 from models.certificate.traceability import expired_withheld
 from models.messages import QT_TR_NOOP, listed, message, separated
+from models.printed_figure import StatedLimit
 from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
@@ -177,7 +178,13 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
     # also a test report, Workbench.certificate_document)
     expired = expired_withheld(metadata)
     withheld = separated([decision.withheld, expired], "; ")
-    conformity = decide_conformity(decision.errors, decision.budget or budget, tol,
+    # the details' tolerance as the customer stated it, for the texts (assessment 70 M4)
+    stated = (metadata.tolerance_quantity if isinstance(tolerance, _FromDetails) and
+              tol is not None else None)
+    if stated is not None and tol is not None:
+        tol = StatedLimit(tol, (float(stated.value), stated.unit.key))
+    conformity = decide_conformity(decision.errors, decision.budget or budget,
+                                   stated if stated is not None else tol,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    withheld, what=decision.what,
                                    point_names=decision.point_names,

@@ -39,6 +39,7 @@ import numpy as np
 from models.messages import QT_TR_NOOP, joined, listed, message, separated
 from models.printed_figure import (
     PrintedFigure,
+    StatedLimit,
     printed,
     printed_interval_figures,
     tolerance_figure,
@@ -46,6 +47,7 @@ from models.printed_figure import (
 from models.quantity import Quantity
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.lab_scope import held_to_cmc
+from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import (
     interval_decimals,
     interval_ends,
@@ -685,10 +687,12 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     """
     q = budget.unit.written()
     if isinstance(tolerance, Quantity):
-        tolerance = float(tolerance.in_unit(budget.unit))
+        # judged in the errors' unit, quoted as stated (assessment 70 M4)
+        tolerance = StatedLimit(float(f"{float(tolerance.in_unit(budget.unit)):.15g}"),
+                                (float(tolerance.value), tolerance.unit.key))
     what = message(what) if not hasattr(what, "template") else what
     rule_text = message(DECISION_RULES[rule])
-    sentence = {v: message(template, t=tolerance_figure(float(tolerance or 0), q))
+    sentence = {v: message(template, t=tolerance_figure(tolerance or 0.0, q))
                 for v, template in _SENTENCE.items()}
     if quantity not in DECISION_QUANTITIES:
         raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
@@ -704,7 +708,7 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     if not_stated:
         withheld.append(_incomplete_reason(not_stated))
     e = np.asarray(errors, dtype=float)
-    t = float(tolerance)
+    t = tolerance if isinstance(tolerance, StatedLimit) else float(tolerance)
     if not e.size or not np.all(np.isfinite(e)):
         reason = _withheld_text([*withheld, message(QT_TR_NOOP(
             "the decided quantity is withheld (the errors are not all determined)"))])
@@ -834,7 +838,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     measured = float(getattr(mc, "measured", x))
     low, high = shown["low"], shown["high"]
     figures = dict(what=what, value=shown["value"], low=low, high=high, u=interval,
-                   p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
+                   p=percent_text(mc.probability), sentence=sentence[verdict])
     # the noise's median excess as the printed figures give it, so that "value, the measured
     # m less e" adds up as printed (0.45″ = 0.49″ − 0.04″, not "less 0.05″": the
     # excess 0.0460″ of 0.4918″ − 0.4457″); none, as measured (positioning's E/2)
@@ -883,7 +887,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
         "curves; no cell below the {p} % stated beyond the binomial scatter of its runs"),
         smooth=f"{100 * achieved['smooth']:.1f}", rough=f"{100 * achieved['rough']:.1f}",
         spike=f"{100 * achieved['spike']:.1f}", sample=f"{100 * achieved['sample']:.1f}",
-        p=f"{100 * mc.probability:.2f}")])
+        p=percent_text(mc.probability))])
     if held:
         quantity_text = separated([quantity_text, message(QT_TR_NOOP(
             "each half-width of the interval held to at least the laboratory's CMC U = {cmc} "
