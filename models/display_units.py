@@ -27,8 +27,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from models.messages import QT_TR_NOOP, Message, message
-from models.printed_figure import PrintedFigure, PrintedRange, StatedTolerance
 from models.quantity import Quantity
+from models.uncertainty.printed_figure import PrintedFigure, PrintedRange, StatedTolerance
 
 if TYPE_CHECKING:  # a plot's module is loaded by whoever draws one
     from models.plots import PlotFigure
@@ -140,7 +140,7 @@ _PRINTED = PrintedFigure | PrintedRange | StatedTolerance
 def _printed_in_unit(figure: PrintedFigure | PrintedRange | StatedTolerance,
                      unit: AngleUnit) -> str:
     """A printed figure in ``unit`` from its unrounded value, rounded there by its own rule
-    (:mod:`models.printed_figure`), when it is in one of the units results are read in; a
+    (:mod:`models.uncertainty.printed_figure`), when it is in one of the units results are read in; a
     figure in degrees (a set-up parameter), nm or V as it is."""
     return figure.to(unit.key) if figure.unit_key in ANGLE_UNITS else figure
 

@@ -29,10 +29,10 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata
 from models.certificate.traceability import expired_withheld
 from models.messages import QT_TR_NOOP, listed, message, separated
-from models.printed_figure import StatedLimit
 from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
+from models.uncertainty.printed_figure import StatedLimit
 
 __all__ = ["Column", "Decision", "PointTable", "Statistics", "build_certificate",
            "difference_column", "figure_column", "text_column", "uncertainty_column"]

@@ -16,7 +16,6 @@ import numpy as np
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
 from models.messages import QT_TR_NOOP, joined, listed, message, separated
 from models.plots import PlotFigure, PlotSeries
-from models.printed_figure import PrintedFigure, printed, printed_interval_figures
 from models.quantity import Quantity
 from models.sign_convention import SIGN_CONVENTION_TEXT
 from models.uncertainty.budget import (
@@ -34,6 +33,7 @@ from models.uncertainty.conformity import (
     significant_decimals,
     uncertainty_decimals,
 )
+from models.uncertainty.printed_figure import PrintedFigure, printed, printed_interval_figures
 from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import printed_range
 

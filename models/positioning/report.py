@@ -58,7 +58,6 @@ from models.positioning.model import (
     figure_text,
 )
 from models.positioning.plots import deviation_figure, reversal_figure
-from models.printed_figure import interval_range, printed
 from models.readings.resolution import step_counts
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import interval_decimals, significant_decimals
@@ -72,6 +71,7 @@ from models.uncertainty.figure_intervals import (
     readings_seed,
 )
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.printed_figure import interval_range, printed
 from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import without_interval_decimals
 from models.uncertainty.undetermined_repeatability import (

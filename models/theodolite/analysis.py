@@ -304,7 +304,7 @@ def _standard_u(u_arcsec: float) -> str:
     significant digits in whichever angle unit it is read in (converted from its value, not
     from its printed digits: assessment 70 H3)."""
     from models.messages import joined
-    from models.printed_figure import printed
+    from models.uncertainty.printed_figure import printed
 
     return joined([printed(u_arcsec, "\""), " (u, k = 1)"])
 

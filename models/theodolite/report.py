@@ -89,7 +89,6 @@ from models.certificate.document import (
 from models.certificate.interval_note import interval_note
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
-from models.printed_figure import printed
 from models.theodolite import KEY, TITLE
 from models.theodolite.figures import MODEL_INPUT, per_angle_note, pooled_repeats
 from models.theodolite.model import TheodoliteResult
@@ -102,6 +101,7 @@ from models.uncertainty.budget import (
 )
 from models.uncertainty.conformity import expanded_text, interval_decimals
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.printed_figure import printed
 from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import interval_ends
 from models.uncertainty.tilt_direction import NOT_IDENTIFIED

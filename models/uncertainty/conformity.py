@@ -37,16 +37,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.messages import QT_TR_NOOP, joined, listed, message, separated
-from models.printed_figure import (
+from models.quantity import Quantity
+from models.uncertainty.budget import UncertaintyBudget
+from models.uncertainty.lab_scope import held_to_cmc
+from models.uncertainty.printed_figure import (
     PrintedFigure,
     StatedLimit,
     printed,
     printed_interval_figures,
     tolerance_figure,
 )
-from models.quantity import Quantity
-from models.uncertainty.budget import UncertaintyBudget
-from models.uncertainty.lab_scope import held_to_cmc
 from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import (
     interval_decimals,
@@ -970,7 +970,7 @@ def held_at_zero_note(value: float, lower: float, d: int, q: str, cmc: float = 0
 
 
 def asymmetric_figures(shown: dict) -> str:
-    """A stated interval's half-widths (:func:`models.printed_figure.printed_interval_figures`):
+    """A stated interval's half-widths (:func:`models.uncertainty.printed_figure.printed_interval_figures`):
     "±U" when they agree to the digits shown, else "−a/+b", each converted from its value
     in any unit the text is read in."""
     lower, upper = shown["lower"], shown["upper"]

@@ -69,7 +69,7 @@ def test_a_decided_interval_reads_value_plus_minus_u_in_every_unit(value, lower,
     computed one rounded up, and the printed interval holds the computed one."""
     from models.display_units import ANGLE_UNITS, in_unit
     from models.messages import message
-    from models.printed_figure import printed_interval_figures
+    from models.uncertainty.printed_figure import printed_interval_figures
 
     f = PER_ARCSEC[key]
     lower = min(lower, value) if value > 0 else lower

@@ -13,7 +13,7 @@ from app.writers.certificate_pdf.wording import _between, _colon, _in_both, _lis
 from models.certificate.document import CertificateDocument
 from models.certificate.metadata import PLACES, revision_statement, separate_statement
 from models.messages import QT_TR_NOOP, joined, message
-from models.printed_figure import tolerance_figure
+from models.uncertainty.printed_figure import tolerance_figure
 
 
 def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.datetime) -> None:
