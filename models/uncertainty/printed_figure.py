@@ -193,8 +193,8 @@ def interval_range(low: float, high: float, symbol: str) -> PrintedRange:
     to the decimal of its half-width (two significant digits, GUM 7.2.6) rounded outward, in
     any unit it is read in."""
     half = (high - low) / 2.0
-    return PrintedRange(PrintedFigure(low, symbol, u=half, rounding="down"),
-                        PrintedFigure(high, symbol, u=half, rounding="up"))
+    return PrintedRange(PrintedFigure(low, symbol, u=half, rounding="down", stated_exactly=True),
+                        PrintedFigure(high, symbol, u=half, rounding="up", stated_exactly=True))
 
 
 def _unit_key(symbol: str) -> str:
