@@ -98,3 +98,32 @@ def test_a_polygon_tolerance_that_is_the_grade_in_mdeg(capsys, samples_dir, tmp_
                          r"\(±([\d.]+)\"\)", err)
         assert said and float(said.group(1)) != float(said.group(2)), err
         assert float(said.group(1)) == pytest.approx(mdeg * 3.6, rel=1e-6)
+
+
+def test_positioning_in_urad_read_in_arcsec(capsys, samples_dir, tmp_path):
+    """Assessment 70 H3 (b): deviations in µrad, a tolerance of 0.004° (exactly 14.4″), the
+    results read in arcseconds: the *Conformity* text quotes ±0.004° (14.4″) and states |e|
+    and U as the same workbook's cells (the decided value and its U+) rounded to U's two
+    significant digits, not 10.3 µrad converted and rounded again."""
+    from openpyxl import load_workbook
+
+    details = _details(samples_dir, tmp_path, "certificate_positioning.json", tolerance=0.004,
+                       tolerance_unit="deg", decision_quantity="points")
+    book = tmp_path / "q.xlsx"
+    code = main(["analyze", "positioning", str(samples_dir / "positioning_sample.csv"),
+                 "--misalignment-u", "0.2", "--reference-resolution", "0.1",
+                 "--temperature-u", "0.2", "--deviation-unit", "urad", "--metadata", details,
+                 "--certificate", str(tmp_path / "q.pdf"), "--results", str(book)])
+    capsys.readouterr()
+    assert code == 0
+    sheet = {r[0]: r[1] for r in load_workbook(book)["Certificate"].iter_rows(values_only=True)}
+    text = sheet["Conformity"]
+    assert "±0.004° (14.4\")" in text and "14.4000" not in text
+    u = sheet["U of the decided value, above it (U+) (\")"]
+    d = 1 - math.floor(math.log10(u))
+    d -= round(u, d) >= 10.0 ** (2 - d)
+    found = re.search(r"\|e\| = ([\d.]+)\", U = ([\d.]+)\"", text)
+    assert found, text
+    value = abs(sheet["Decided value (\")"])
+    assert found.group(1) == f"{value:.{d}f}"
+    assert found.group(2) == f"{u:.{d}f}"
