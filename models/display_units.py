@@ -28,6 +28,7 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP, Message, message
 from models.quantity import Quantity
+from models.uncertainty.printed_figure import PrintedFigure, PrintedRange, StatedTolerance
 
 if TYPE_CHECKING:  # a plot's module is loaded by whoever draws one
     from models.plots import PlotFigure
@@ -135,6 +136,18 @@ def _rewrite(match: re.Match[str], unit: AngleUnit, resolution_only: bool = Fals
     return f"{sign}{digits}{gap}{unit.symbol}"
 
 
+#: a figure printed that converts itself from its value (models/printed_figure.py)
+_PRINTED = PrintedFigure | PrintedRange | StatedTolerance
+
+
+def _printed_in_unit(figure: PrintedFigure | PrintedRange | StatedTolerance,
+                     unit: AngleUnit) -> str:
+    """A printed figure in ``unit`` from its unrounded value, rounded there by its own rule
+    (:mod:`models.uncertainty.printed_figure`), when it is in one of the units results are read in; a
+    figure in degrees (a set-up parameter), nm or V as it is."""
+    return figure.to(unit.key) if figure.unit_key in ANGLE_UNITS else figure
+
+
 def text_in_unit(text: str, unit: AngleUnit, resolution_only: bool = False) -> str:
     """Plain ``text`` (not a Message) with every number written with an angle unit
     converted to ``unit``, keeping the figure's resolution and its sign; a D°M'S"
@@ -142,6 +155,8 @@ def text_in_unit(text: str, unit: AngleUnit, resolution_only: bool = False) -> s
     ``resolution_only``: no significant digits added to a small figure (:func:`_places`)."""
     if isinstance(text, Message):
         return in_unit(text, unit, resolution_only)
+    if isinstance(text, _PRINTED):  # converted from its value, rounded in ``unit``
+        return _printed_in_unit(text, unit)
     return _NUMBER_WITH_UNIT.sub(lambda m: _rewrite(m, unit, resolution_only), text)
 
 
@@ -150,6 +165,8 @@ def _figure_in_unit(figure: Any, unit: AngleUnit, resolution_only: bool = False)
         return figure.to(unit.key) if figure.unit.dimension == "angle" else figure
     if isinstance(figure, Message):
         return in_unit(figure, unit, resolution_only)
+    if isinstance(figure, _PRINTED):
+        return _printed_in_unit(figure, unit)
     if isinstance(figure, str):  # a figure passed formatted: "0.45\"", "±3.05\" (u, k = 1)"
         return text_in_unit(figure, unit, resolution_only)
     return figure
@@ -204,6 +221,8 @@ def _cell_in_unit(cell: Any, factor: float, unit: AngleUnit,
         return cell
     if isinstance(cell, int | float | np.floating | np.integer):
         return float(cell) * factor
+    if isinstance(cell, _PRINTED | Message):  # from its own figures, not its digits
+        return in_unit(cell, unit)
     text = str(cell)
     try:
         value = float(text.replace("−", "-"))

@@ -42,7 +42,8 @@ from models.register.wording import revision_words
 if TYPE_CHECKING:
     from models.register.store import CertificateRecord
 
-__all__ = ["NOT_ISSUED", "XLSX_MAX_ROWS", "issued_status", "neutralise", "not_issued", "results_bytes",
+__all__ = ["NOT_ISSUED", "XLSX_MAX_ROWS", "issued_status", "neutralise", "not_issued",
+           "probability_cell", "results_bytes",
            "split_figures", "write_results_csv", "write_results_xlsx"]
 
 XLSX_MAX_ROWS = 1_048_576
@@ -281,6 +282,20 @@ def _revision(issued: CertificateRecord) -> Message:
     return revision
 
 
+def probability_cell(probability: float) -> float | str | None:
+    """A probability of conformity or of a wrong decision as the sheet gives it, in percent,
+    by the certificate's rule (assessment 70 L1: "100" and "0" beside the PDF's "< 0.01 %"):
+    to two decimals, a number; within 0.01 % of 0 or of 100 the bound as text, "< 0.01" or
+    "> 99.99", as no such probability is certain (the JSON keeps it unrounded)."""
+    if probability is None or not math.isfinite(probability):
+        return None
+    if probability < 1e-4:
+        return "< 0.01"
+    if probability > 1.0 - 1e-4:
+        return "> 99.99"
+    return round(100.0 * probability, 2)
+
+
 def _metadata_rows(document: CertificateDocument,
                    issued: CertificateRecord | None = None) -> list[tuple[str, object]]:
     """The *Certificate* sheet, its labels in English (a test report's own words and the
@@ -336,9 +351,11 @@ def _metadata_rows(document: CertificateDocument,
         # only with a statement of conformity, as the JSON (null) and the PDF: where none is
         # made (the error not traceable, U incomplete, U ≥ T) a probability would rest on
         # that U (audit 69 finding 3: "100" beside "not assessed")
-        ("Probability of conformity (%)", 100.0 * document.conformity.conforming_probability
+        ("Probability of conformity (%)",
+         probability_cell(document.conformity.conforming_probability)
          if document.conformity.stated else None),
-        ("Probability of a wrong decision (%)", 100.0 * document.conformity.decision_risk
+        ("Probability of a wrong decision (%)",
+         probability_cell(document.conformity.decision_risk)
          if document.conformity.stated else None),
         ("Verdict", document.conformity.verdict),
         ("No statement of conformity because", document.conformity.reason),
@@ -451,7 +468,9 @@ def _metadata_in_unit(rows: list[tuple[str, object]], unit: AngleUnit,
     for key, value in rows:
         header, factor = words.label(key, unit)
         if isinstance(value, int | float) and not isinstance(value, bool):
-            value = value * factor
+            # a converted figure without the binary noise of the multiplication (a tolerance
+            # of 3″ is 14.5444104332861 µrad, not …08 or 14.50000000000001: assessment 70 M4)
+            value = float(f"{value * factor:.15g}") if factor != 1.0 else value
         elif isinstance(value, str):
             value = words.text(text_in_unit(value, unit))
         out.append((header, value))

@@ -32,6 +32,7 @@ from models.messages import QT_TR_NOOP, listed, message, separated
 from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
+from models.uncertainty.printed_figure import StatedLimit
 
 __all__ = ["Column", "Decision", "PointTable", "Statistics", "build_certificate",
            "difference_column", "figure_column", "text_column", "uncertainty_column"]
@@ -177,7 +178,13 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
     # also a test report, Workbench.certificate_document)
     expired = expired_withheld(metadata)
     withheld = separated([decision.withheld, expired], "; ")
-    conformity = decide_conformity(decision.errors, decision.budget or budget, tol,
+    # the details' tolerance as the customer stated it, for the texts (assessment 70 M4)
+    stated = (metadata.tolerance_quantity if isinstance(tolerance, _FromDetails) and
+              tol is not None else None)
+    if stated is not None and tol is not None:
+        tol = StatedLimit(tol, (float(stated.value), stated.unit.key))
+    conformity = decide_conformity(decision.errors, decision.budget or budget,
+                                   stated if stated is not None else tol,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    withheld, what=decision.what,
                                    point_names=decision.point_names,

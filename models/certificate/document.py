@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
-from models.messages import QT_TR_NOOP, listed, message, separated
+from models.messages import QT_TR_NOOP, joined, listed, message, separated
 from models.plots import PlotFigure, PlotSeries
 from models.quantity import Quantity
 from models.sign_convention import SIGN_CONVENTION_TEXT
@@ -27,15 +27,15 @@ from models.uncertainty.budget import (
 from models.uncertainty.conformity import (
     REFERENCE_POINT_TEXT,
     Conformity,
-    asymmetric_text,
+    asymmetric_figures,
     held_at_zero_note,
     printed_half_widths,
-    printed_interval,
     significant_decimals,
     uncertainty_decimals,
 )
+from models.uncertainty.printed_figure import PrintedFigure, printed, printed_interval_figures
 from models.uncertainty.probability_text import percent_text
-from models.uncertainty.rounding import interval_ends, printed_range
+from models.uncertainty.rounding import printed_range
 
 __all__ = ["CertificateDocument", "Exact", "decision_rows", "PlotFigure", "PlotSeries", "Table",
            "budget_table", "format_uncertain", "gum_pair", "range_cells", "rounded_cells",
@@ -330,33 +330,42 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
             d = significant_decimals(max(lower, conformity.expanded)) or digits
             # U₋, U₊ the value to the interval's ends, after clipping (the statement's)
             minus, plus = printed_half_widths(conformity.value, lower, conformity.expanded)
-            value = (f"{conformity.value:.{d}f}{unit}\n"  # a line each: never broken
-                     f"{asymmetric_text(minus, plus, unit, d)}")
-            low, high = printed_interval(conformity.value, lower, conformity.expanded, d)
+            # value ± U the printed interval, each figure in any unit it is read in
+            # (assessment 70 H3, M1)
+            shown = printed_interval_figures(conformity.value, minus, plus, unit, clip=True)
+            value = joined([shown["value"], "\n",  # a line each: never broken
+                            asymmetric_figures(shown)])
+            low, high = shown["low"], shown["high"]
             measured = conformity.measured
             raised = conformity.raised_to_cmc
             # what the value was made from and the interval's ends, first in the note (the
             # figure's cell stays figures, which the results workbook reads as numbers)
             note = separated([message(QT_TR_NOOP("interval {low} … {high}"),
-                                      low=f"{low:.{d}f}{unit}", high=f"{high:.{d}f}{unit}"),
+                                      low=low, high=high),
                               held_at_zero_note(conformity.value, lower, d, unit,
                                                 float(budget.floor), bool(raised and raised[0])),
                               message(QT_TR_NOOP("measured {measured}"),
-                                      measured=f"{measured:.{d}f}{unit}")
+                                      measured=printed(measured, unit, u=max(lower, plus)))
                               if f"{measured:.{d}f}" != f"{conformity.value:.{d}f}" else "",
                               conformity.quantity], "; ")
         else:
             value = format_uncertain(conformity.value, conformity.expanded, unit)
             d = significant_decimals(conformity.expanded)
-            low, high = (interval_ends(conformity.interval_low, conformity.interval_high, d)
-                         if d is not None else (math.nan, math.nan))
+            if d is not None:  # value ± U the printed interval (assessment 70 M1)
+                shown = printed_interval_figures(conformity.value, conformity.expanded,
+                                                 conformity.expanded, unit)
+                value = joined([shown["value"], " ± ", shown["upper"]])
+                low, high = shown["low"], shown["high"]
+            else:
+                low, high = math.nan, math.nan
             note = separated([message(DECIDING_POINT, point=conformity.point)
                               if conformity.point else "", conformity.quantity], "; ")
         if interval_columns:
-            shown = p_decided is not None and math.isfinite(low) and math.isfinite(high)
+            stated = (p_decided is not None and math.isfinite(float(getattr(low, "value", low)))
+                      and math.isfinite(float(getattr(high, "value", high))))
             rows.append((QT_TR_NOOP("Decided quantity"), value,
-                         f"{low:.{d}f}{unit} … {high:.{d}f}{unit}" if shown else "—",
-                         f"{percent_text(p_decided)} %" if shown and p_decided else "", note))
+                         joined([low, " … ", high]) if stated else "—",
+                         f"{percent_text(p_decided)} %" if stated and p_decided else "", note))
         elif p_decided is not None:
             rows.append((message(QT_TR_NOOP("Decided quantity (p = {p} %)"),
                                  p=percent_text(p_decided)), value, note))
@@ -368,10 +377,11 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
                      *padding,
                      message(QT_TR_NOOP("the inputs evaluated give {u} at most, but U is "
                                         "incomplete: {reason}"),
-                             u=f"{big_u:.{digits}f}{unit}", reason=uncertainty_withheld)))
+                             u=printed(big_u, unit), reason=uncertainty_withheld)))
         return rows
     rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
                          p=f"{100 * budget.probability:.2f}"),
+                 printed(big_u, unit) if digits is not None and big_u > 0 else
                  f"{big_u:.{digits}f}{unit}", *padding,
                  message(QT_TR_NOOP("largest over the {points}; k = {k} there"),
                          points=message(points), k=f"{budget.coverage_factor:.2f}")))
@@ -383,7 +393,7 @@ def format_uncertain(value: float, expanded: float, unit: str, digits: int = 2) 
     decimals = significant_decimals(expanded)
     if decimals is None:
         return f"{value:.{digits}f}{unit}"
-    return f"{value:.{decimals}f}{unit} ± {expanded:.{decimals}f}{unit}"
+    return joined([printed(value, unit, u=expanded), " ± ", printed(expanded, unit)])
 
 
 def range_cells(low: float, high: float, expanded: float, unit: str = "\"",
@@ -393,9 +403,14 @@ def range_cells(low: float, high: float, expanded: float, unit: str = "\"",
     7.2.6; ``fallback`` decimals where U is not a positive number) and the peak-to-peak the
     difference of the ends as printed, so that it adds up as printed."""
     d = significant_decimals(expanded)
-    d = fallback if d is None else d
-    a, b, ptp = printed_range(low, high, d)  # the window's rule too (its headline, summary)
-    return f"{a}{unit} … {b}{unit}", f"{ptp}{unit}", d
+    if d is None:
+        a, b, ptp = printed_range(low, high, fallback)
+        return f"{a}{unit} … {b}{unit}", f"{ptp}{unit}", fallback
+    # the window's rule too (its headline, summary), in any unit it is read in: each end
+    # signed, to the decimal of U there, the peak-to-peak the ends' difference as printed
+    ends = joined([printed(low, unit, u=expanded, sign="+"), " … ",
+                   printed(high, unit, u=expanded, sign="+")])
+    return ends, PrintedFigure(high, unit, u=expanded, less=low), d
 
 
 def table_decimals(expanded, fallback: int = 2) -> int:
@@ -429,5 +444,5 @@ def gum_pair(value: float, expanded: float, unit: str, signed: bool = False,
     spec = "+" if signed else ""
     if not (math.isfinite(expanded) and expanded > 0):
         return f"{value:{spec}.{fallback}f}{unit}", "—"
-    d = uncertainty_decimals(expanded)
-    return f"{value:{spec}.{d}f}{unit}", f"{expanded:.{d}f}{unit}"
+    return (printed(value, unit, u=expanded, sign=spec),  # in any unit, rounded there
+            printed(expanded, unit))

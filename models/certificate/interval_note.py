@@ -25,8 +25,12 @@ def interval_note(low: float, high: float, printed_low: str, printed_high: str,
                   percent: str) -> Message:
     """The note of an interval from ``low`` to ``high`` printed as ``printed_low`` …
     ``printed_high`` (each with its unit) at ``percent`` ("92", "95.45")."""
-    return message(INTERVAL_NOTE, low=Exact(printed_low, float(low)),
-                   high=Exact(printed_high, float(high)), p=percent)
+    # an end that converts itself from its value (a PrintedFigure) kept as it is
+    return message(INTERVAL_NOTE,
+                   low=printed_low if hasattr(printed_low, "to") else Exact(printed_low, float(low)),
+                   high=printed_high if hasattr(printed_high, "to") else Exact(printed_high,
+                                                                               float(high)),
+                   p=percent)
 
 
 def interval_cells(note: Any) -> tuple[str, str] | None:

@@ -476,7 +476,11 @@ class CertificateMetadata:
         if self.tolerance is None:
             return None
         try:
-            return float(Quantity(self.tolerance, self.tolerance_unit).in_unit(unit))
+            converted = float(Quantity(self.tolerance, self.tolerance_unit).in_unit(unit))
+            # to 15 significant digits: the number the customer stated, converted, without
+            # the binary noise of the multiplication (0.01 µm is 10 nm, not
+            # 9.999999999999998 nm: assessment 70 M4)
+            return float(f"{converted:.15g}")
         except UnitError:
             raise MetadataError(message(
                 QT_TR_NOOP("certificate field 'tolerance' is in {given}, but the errors are in "

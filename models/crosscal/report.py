@@ -34,6 +34,7 @@ from models.crosscal.figures import encoder_figures
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
 from models.messages import QT_TR_NOOP, message, separated
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.uncertainty.printed_figure import printed
 
 __all__ = ["crosscal_budget", "crosscal_certificate"]
 
@@ -288,7 +289,7 @@ def _correlation_statement(result, item: str, metadata: CertificateMetadata | No
                    first=message(QT_TR_NOOP("step 0") if item == "encoder"
                                  else QT_TR_NOOP("face 1")),
                    r_first=f"{mean_r(first[1:, 1:]):+.2f}",
-                   u_pair=f"{u_pair:.3f}\"")
+                   u_pair=printed(u_pair, "\""))  # in any unit, rounded there (H3)
 
 
 def _cmc_of_item(result, item: str) -> float:

@@ -61,10 +61,11 @@ from models.fringe.parameter_uncertainty import (
     parameter_uncertainty,
     phase_expanded,
 )
-from models.messages import QT_TR_NOOP, listed, message, separated
+from models.messages import QT_TR_NOOP, joined, listed, message, separated
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import HalfRangeEstimate
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.printed_figure import printed
 
 __all__ = ["fringe_budget", "fringe_certificate", "model_error_curve", "model_error_budget"]
 
@@ -589,14 +590,14 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     stat_rows = [
         (QT_TR_NOOP("Samples"), f"{raw.size}", separated([source[result.phase_source], scale])),
         (QT_TR_NOOP("Interpolation error as found"),
-         f"{raw.min():+.3f}{sym} … {raw.max():+.3f}{sym}",
-         separated([message(share, ptp=f"{pp_raw:.3f}{sym}",
+         _fixed_range(raw.min(), raw.max(), sym),
+         separated([message(share, ptp=printed(pp_raw, sym, decimals=3),
                             share=f"{pp_raw / period * 100:.2f}"),
                     message(FOUND_AT_SAMPLES) if caveat else ""], "; ")),
         (QT_TR_NOOP("After compensation (as left)") if as_left else
          QT_TR_NOOP("After compensation (not applied to the item)"),
-         f"{comp.min():+.3f}{sym} … {comp.max():+.3f}{sym}",
-         separated([message(share, ptp=f"{pp_comp:.3f}{sym}",
+         _fixed_range(comp.min(), comp.max(), sym),
+         separated([message(share, ptp=printed(pp_comp, sym, decimals=3),
                             share=f"{pp_comp / period * 100:.2f}"), caveat], "; ")),
         (QT_TR_NOOP("Offsets, amplitude ratio, quadrature error"),
          f"{1e3 * result.sin_fit.offset:+.2f} / {1e3 * result.cos_fit.offset:+.2f} mV",
@@ -709,3 +710,10 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         + (() if no_u else ((f"expanded_uncertainty_raw_error_{unit}", found_budget.expanded),
                             (f"expanded_uncertainty_compensated_error_{unit}",
                              compensated_budget.expanded))))
+
+
+def _fixed_range(low: float, high: float, sym: str) -> str:
+    """A range "-0.537″ … +0.454″" to 0.001 of its unit, each end converted from its value
+    where it is read in another angle unit (assessment 70 H3), not from its printed digits."""
+    return joined([printed(low, sym, decimals=3, sign="+"), " … ",
+                   printed(high, sym, decimals=3, sign="+")])

@@ -755,8 +755,12 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
 def _with_u(value: float, u: float, unit: str) -> tuple[str, str]:
     """A figure and its standard uncertainty, u to two significant digits and the figure to
     its decimal (GUM 7.2.6): ("120.0003°", "0.0012°"), never a u of "0.00°"."""
-    decimals = uncertainty_decimals(u)
-    return f"{value:.{decimals}f}{unit}", f"{u:.{decimals}f}{unit}"
+    if not (math.isfinite(u) and u > 0):
+        decimals = uncertainty_decimals(u)
+        return f"{value:.{decimals}f}{unit}", f"{u:.{decimals}f}{unit}"
+    from models.uncertainty.printed_figure import printed  # each in any unit it is read in (H3)
+
+    return printed(value, unit, u=u), printed(u, unit)
 
 
 def summary(result: PolygonResult, printed: int | None = None) -> str:
@@ -783,7 +787,8 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
         elif r.tilt.omega_determined:
             psi, u_psi = _with_u(r.tilt.psi_arcsec, r.tilt.u_psi_arcsec, '"')
             omega, u_omega = _with_u(r.tilt.omega_deg, r.tilt.u_omega_deg, "°")
-            tilt = f"ψ = {psi} ± {u_psi}, ω = {omega} ± {u_omega} (u, k = 1)"
+            tilt = joined(["ψ = ", psi, " ± ", u_psi, ", ω = ", omega, " ± ", u_omega,
+                           " (u, k = 1)"])
         else:
             psi, u_psi = _with_u(r.tilt.psi_arcsec, r.tilt.u_psi_arcsec, '"')
             tilt = message(QT_TR_NOOP("ψ = {psi} ± {u}, ω not identified (ψ not told from 0)"),

@@ -1040,18 +1040,34 @@ def not_stated(result: PolygonResult, metadata: CertificateMetadata | None = Non
     return out
 
 
+#: how far (relative) a tolerance stated in the details may lie from the grade's and still be
+#: the grade's: a tolerance converted from another unit and rounded to seven digits
+SAME_TOLERANCE = 1e-6
+
+
+def _differing_digits(given: float, grade: float) -> str:
+    """``given`` (arcsec) to as many significant digits as show it is not ``grade``'s."""
+    for digits in range(6, 16):
+        text = f"{given:.{digits}g}"
+        if float(text) != grade:
+            return text
+    return repr(given)
+
+
 def polygon_tolerance_arcsec(result: PolygonResult, metadata: CertificateMetadata) -> float:
     """The tolerance from the one source, the workbench's grade; metadata that states
     another grade or tolerance is refused rather than silently overruled."""
     tol = GRADE_ACCURACY_ARCSEC[result.grade]
     given = metadata.tolerance_in("arcsec")
-    if given is not None and not math.isclose(given, tol):
+    # a tolerance stated in another unit is the grade's when it agrees to the digits a
+    # conversion leaves (0.5555556 mdeg is 2.0000002″, the ±2″ of grade 4: assessment 70 M5)
+    if given is not None and not math.isclose(given, tol, rel_tol=SAME_TOLERANCE):
         raise MetadataError(
             message(
             QT_TR_NOOP("the certificate details give a tolerance of ±{tolerance_arcsec}\" but the "
                        "workbench is set to grade {grade} (±{tol}\"): change the grade or clear the "
                        "tolerance in the details"),
-            tolerance_arcsec=f"{given:g}", grade=result.grade, tol=f"{tol:g}"))
+            tolerance_arcsec=_differing_digits(given, tol), grade=result.grade, tol=f"{tol:g}"))
     match = _GRADE_IN_TEXT.search(metadata.item_grade or "")
     if match and int(match.group(1)) != result.grade:
         raise MetadataError(

@@ -71,8 +71,9 @@ from models.uncertainty.figure_intervals import (
     readings_seed,
 )
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.printed_figure import interval_range, printed
 from models.uncertainty.probability_text import percent_text
-from models.uncertainty.rounding import interval_ends, without_interval_decimals
+from models.uncertainty.rounding import without_interval_decimals
 from models.uncertainty.undetermined_repeatability import (
     RUNS_UNDETERMINED,
     RUNS_UNDETERMINED_READINGS,
@@ -483,12 +484,15 @@ def _figure_cells(value: float | None, interval: FigureInterval | None,
         # the DCC states the figure at full precision, as the JSON does
         return (Exact(text, float(value)) if isinstance(text, str) and value is not None
                 and math.isfinite(value) else text), "—", ""
-    d = interval_decimals(interval.low, interval.high)
-    low, high = interval_ends(interval.low, interval.high, d)  # rounded outwards
-    text = figure_text(value, sym, d)
-    # the DCC states the figure and its interval at full precision (Exact), not as printed
-    return (Exact(text, float(value)) if isinstance(text, str) and value is not None else text,
-            Exact(f"{low:.{d}f}{sym} … {high:.{d}f}{sym}",
+    # the figure and its interval's ends (rounded outwards) to the decimal of its half-width,
+    # in any unit they are read in, converted from their values (assessment 70 H3); each
+    # keeps its value (``exact``) for the DCC, which states them at full precision
+    half = (interval.high - interval.low) / 2.0
+    text = (printed(value, sym, u=half, stated_exactly=True) if value is not None and math.isfinite(value) and
+            half > 0 else figure_text(value, sym, interval_decimals(interval.low,
+                                                                     interval.high)))
+    return (text, interval_range(interval.low, interval.high, sym) if half > 0 else
+            Exact(f"{interval.low:.2f}{sym} … {interval.high:.2f}{sym}",
                   (float(interval.low), float(interval.high))),
             f"{percent_text(interval.probability)} %")
 

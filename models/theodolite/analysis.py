@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
@@ -300,6 +301,25 @@ class PrintedDecimals(int):
         return made
 
 
+def _standard_u(u_arcsec: float) -> str:
+    """A set-up parameter's standard uncertainty u as the summary prints it, to two
+    significant digits in whichever angle unit it is read in (converted from its value, not
+    from its printed digits: assessment 70 H3)."""
+    from models.messages import joined
+    from models.uncertainty.printed_figure import printed
+
+    return joined([printed(u_arcsec, "\""), " (u, k = 1)"])
+
+
+def _to_digit_of(value_deg: float, u_arcsec: float) -> str:
+    """A set-up parameter in degrees to the digit of its u's second significant digit
+    (GUM 7.2.6; assessment 70 L8: β = -0.0395° beside a u of 0.12″ = 0.00003°), four
+    decimals at the least and where u is not a positive number."""
+    if not (math.isfinite(u_arcsec) and u_arcsec > 0):
+        return f"{value_deg:.4f}"
+    return f"{value_deg:.{max(4, uncertainty_decimals(u_arcsec / 3600.0))}f}"
+
+
 def summary(result: TheodoliteResult, printed: int | None = None) -> str:
     """The result as text; ``printed``: the certificate's decimal for the error ranges and
     the RMS (:meth:`Theodolite.printed_rounding`; None: two), each peak-to-peak as printed,
@@ -314,14 +334,14 @@ def summary(result: TheodoliteResult, printed: int | None = None) -> str:
                 QT_TR_NOOP("Set-up identified from the azimuth readings ({n} points, "
                            "reference θ = {theta}°):"),
                 n=r.n, theta=f"{result.reference_theta_deg:g}"),
-        message(QT_TR_NOOP("  axis tilt       ψ = {value}° ± {u}"), value=f"{s.psi_deg:.4f}",
-                u=f"{u[0]:.{uncertainty_decimals(u[0])}f}\" (u, k = 1)"),
-        message(QT_TR_NOOP("  tilt direction  α = {value}° ± {u}"), value=f"{s.alpha_deg:.4f}",
-                u=f"{u[1]:.{uncertainty_decimals(u[1])}f}\" (u, k = 1)")
+        message(QT_TR_NOOP("  axis tilt       ψ = {value}° ± {u}"),
+                value=_to_digit_of(s.psi_deg, u[0]), u=_standard_u(u[0])),
+        message(QT_TR_NOOP("  tilt direction  α = {value}° ± {u}"),
+                value=_to_digit_of(s.alpha_deg, u[1]), u=_standard_u(u[1]))
         if ident.alpha_determined else
         message(QT_TR_NOOP("  tilt direction  α not identified (ψ not told from 0)")),
-        message(QT_TR_NOOP("  mirror normal   β = {value}° ± {u}"), value=f"{s.beta_deg:.4f}",
-                u=f"{u[2]:.{uncertainty_decimals(u[2])}f}\" (u, k = 1)"),
+        message(QT_TR_NOOP("  mirror normal   β = {value}° ± {u}"),
+                value=_to_digit_of(s.beta_deg, u[2]), u=_standard_u(u[2])),
         message(QT_TR_NOOP("  R² = {r2}, residual RMS = {rms}"), r2=f"{ident.r_squared:.8f}",
                 rms=f"{ident.residual_rms_arcsec:.3f}\""),
         message(QT_TR_NOOP("Raw error        {low} … {high} (peak-to-peak {ptp})"),

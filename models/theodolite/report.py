@@ -100,10 +100,10 @@ from models.uncertainty.budget import (
     coverage_factor,
     divisor_for_basis,
 )
-from models.uncertainty.conformity import expanded_text, interval_decimals
+from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.printed_figure import interval_range, printed
 from models.uncertainty.probability_text import percent_text
-from models.uncertainty.rounding import interval_ends
 from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
 __all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
@@ -409,13 +409,14 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
                          message(QT_TR_NOOP("no coverage interval")) if said else message(
                 QT_TR_NOOP("no coverage interval: {reason}"), reason=message(withheld))))
             continue
-        d = interval_decimals(iv.low, iv.high)  # the interval's half-width's (GUM 7.2.6)
-        low, high = interval_ends(iv.low, iv.high, d)  # rounded outwards, as every interval
-        # the value and the interval's ends at full precision for the DCC and the results
-        # export, which state them as numbers, as positioning's (audit 69 finding 5)
-        rows.append((f"ISO 230-2 {key}", Exact(f"{v:.{d}f}\"", float(v)), interval_note(
-            iv.low, iv.high, f"{low:.{d}f}\"", f"{high:.{d}f}\"",
-            percent_text(iv.probability))))
+        # the value and the interval's ends (rounded outwards, as every interval) to the
+        # decimal of its half-width (GUM 7.2.6), at full precision for the DCC and the
+        # results export, which state them as numbers, as positioning's (audit 69 finding 5),
+        # and converted from their values where read in another unit (assessment 70 H3)
+        ends = interval_range(iv.low, iv.high, "\"")
+        rows.append((f"ISO 230-2 {key}", printed(v, "\"", u=(iv.high - iv.low) / 2.0,
+                                                 stated_exactly=True), interval_note(
+            iv.low, iv.high, ends.low, ends.high, percent_text(iv.probability))))
     return rows
 
 
@@ -588,7 +589,9 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
          message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=raw_ptp)),
         (QT_TR_NOOP("Corrected error"), corrected_range,
          message(QT_TR_NOOP("peak-to-peak {ptp}, RMS {rms}"), ptp=corrected_ptp,
-                 rms=f"{c.rms:.{d}f}\"")),
+                 rms=printed(c.rms, "\"", u=budget.max_expanded)
+                 if budget.max_expanded > 0 and math.isfinite(budget.max_expanded) else
+                 printed(c.rms, "\"", decimals=d))),
     ], QT_TR_NOOP("points"), after=_iso230_rows(result, budget, metadata))
     return build_certificate(
         kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,

@@ -36,10 +36,18 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, listed, message, separated
+from models.messages import QT_TR_NOOP, joined, listed, message, separated
 from models.quantity import Quantity
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.lab_scope import held_to_cmc
+from models.uncertainty.printed_figure import (
+    PrintedFigure,
+    StatedLimit,
+    printed,
+    printed_interval_figures,
+    tolerance_figure,
+)
+from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import (
     interval_decimals,
     interval_ends,
@@ -139,7 +147,7 @@ def expanded_text(expanded: float, unit: str = "\"", reference: bool | None = No
         return message(REFERENCE_POINT_TEXT)
     if not math.isfinite(expanded):
         return "—"
-    return f"{expanded:.{uncertainty_decimals(expanded)}f}{unit}"
+    return printed(expanded, unit)  # in any unit it is read in, rounded there
 
 
 @dataclass(frozen=True)
@@ -556,24 +564,28 @@ def probability_conforming(value: float, lower: float, upper: float, tolerance: 
 def _zones(t: float, w_accept: float, w_reject: float, rule: str, d: int,
            q: str = "\"", asymmetric: bool = False) -> str:
     """The decision's zones; ``asymmetric``: the guard bands are the interval's two
-    half-widths, named so (U₊ on acceptance, U₋ on rejection), not one w."""
+    half-widths, named so (U₊ on acceptance, U₋ on rejection), not one w. Each figure to
+    the decimal of the larger guard band, in any unit it is read in."""
+    w = max(w_accept, w_reject)
+
+    def fig(value: float) -> str:
+        return printed(value, q, u=w) if w > 0 else printed(value, q, decimals=d)
+
     if rule == "simple":
-        return message(QT_TR_NOOP("pass ≤ {t} < fail"), t=f"{t:g}{q}")
+        return message(QT_TR_NOOP("pass ≤ {t} < fail"), t=tolerance_figure(t, q))
     if asymmetric and rule == "guarded_binary":
         return message(QT_TR_NOOP("pass ≤ {low} (T − U₊, U₊ = {up}) < fail"),
-                       low=f"{t - w_accept:.{d}f}{q}", up=f"{w_accept:.{d}f}{q}")
+                       low=fig(t - w_accept), up=fig(w_accept))
     if asymmetric:
         return message(QT_TR_NOOP("pass ≤ {low} (T − U₊, U₊ = {up}) < conditional pass ≤ {t} (T) "
                                   "< conditional fail ≤ {high} (T + U₋, U₋ = {down}) < fail"),
-                       low=f"{t - w_accept:.{d}f}{q}", t=f"{t:g}{q}",
-                       high=f"{t + w_reject:.{d}f}{q}", up=f"{w_accept:.{d}f}{q}",
-                       down=f"{w_reject:.{d}f}{q}")
+                       low=fig(t - w_accept), t=tolerance_figure(t, q),
+                       high=fig(t + w_reject), up=fig(w_accept), down=fig(w_reject))
     if rule == "guarded_binary":
-        return message(QT_TR_NOOP("pass ≤ {low} (T − w) < fail"), low=f"{t - w_accept:.{d}f}{q}")
+        return message(QT_TR_NOOP("pass ≤ {low} (T − w) < fail"), low=fig(t - w_accept))
     return message(QT_TR_NOOP("pass ≤ {low} (T − w) < conditional pass ≤ {t} (T) < conditional "
                               "fail ≤ {high} (T + w) < fail"),
-                   low=f"{t - w_accept:.{d}f}{q}", t=f"{t:g}{q}",
-                   high=f"{t + w_reject:.{d}f}{q}")
+                   low=fig(t - w_accept), t=tolerance_figure(t, q), high=fig(t + w_reject))
 
 
 def _verdict(x: float, t: float, w_accept: float, rule: str,
@@ -613,8 +625,8 @@ def _too_uncertain(w: float, t: float, q: str, d: int) -> str:
     """The statement when U ≥ T: no result could be shown to conform (ILAC-G8)."""
     return message(QT_TR_NOOP("No statement of conformity is possible: the expanded uncertainty "
                               "U = {u} is not smaller than the tolerance T = {t}, so no result "
-                              "could be shown to lie within it."), u=f"{w:.{d}f}{q}",
-                   t=f"{t:g}{q}")
+                              "could be shown to lie within it."), u=printed(w, q),
+                   t=tolerance_figure(t, q))
 
 
 def _incomplete_reason(inputs) -> str:
@@ -675,10 +687,12 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     """
     q = budget.unit.written()
     if isinstance(tolerance, Quantity):
-        tolerance = float(tolerance.in_unit(budget.unit))
+        # judged in the errors' unit, quoted as stated (assessment 70 M4)
+        tolerance = StatedLimit(float(f"{float(tolerance.in_unit(budget.unit)):.15g}"),
+                                (float(tolerance.value), tolerance.unit.key))
     what = message(what) if not hasattr(what, "template") else what
     rule_text = message(DECISION_RULES[rule])
-    sentence = {v: message(template, t=f"{float(tolerance or 0):g}{q}")
+    sentence = {v: message(template, t=tolerance_figure(tolerance or 0.0, q))
                 for v, template in _SENTENCE.items()}
     if quantity not in DECISION_QUANTITIES:
         raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
@@ -694,7 +708,7 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     if not_stated:
         withheld.append(_incomplete_reason(not_stated))
     e = np.asarray(errors, dtype=float)
-    t = float(tolerance)
+    t = tolerance if isinstance(tolerance, StatedLimit) else float(tolerance)
     if not e.size or not np.all(np.isfinite(e)):
         reason = _withheld_text([*withheld, message(QT_TR_NOOP(
             "the decided quantity is withheld (the errors are not all determined)"))])
@@ -747,8 +761,8 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
         text = separated([_too_uncertain(w_max, t, q, d),
                           message(QT_TR_NOOP("(at {point})"), point=name)], " ")
         reason = _withheld_text([*withheld, message(
-            QT_TR_NOOP("U = {u} is not smaller than T = {t}"), u=f"{w_max:.{d}f}{q}",
-            t=f"{t:g}{q}")])
+            QT_TR_NOOP("U = {u} is not smaller than T = {t}"), u=printed(w_max, q),
+            t=tolerance_figure(t, q))])
         if withheld:
             text = message(QT_TR_NOOP("No statement of conformity: {reason}."), reason=reason)
         return Conformity("not assessed", text, rule_text, quantity_text, reason=reason,
@@ -761,8 +775,8 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
     text = message(QT_TR_NOOP("Every point's {what} was judged against ±{t} with its own U; "
                               "the deciding point is {point}: |e| = {e}, U = {u}. "
                               "{sentence}"),
-                   what=what, t=f"{t:g}{q}", point=point, e=f"{x:.{d}f}{q}",
-                   u=f"{w:.{d}f}{q}", sentence=sentence[verdict])
+                   what=what, t=tolerance_figure(t, q), point=point, e=printed(x, q, u=w),
+                   u=printed(w, q), sentence=sentence[verdict])
     zones = message(QT_TR_NOOP("per point, with w = U of that point: {zones}"),
                     zones=_zones(t, w, w, rule, d, q))
     return Conformity(verdict, text, rule_text, quantity_text, zones=zones,
@@ -805,14 +819,16 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                        0.0 if rule == "simple" else lower)
     # U₋ and U₊ as printed: the value to the interval's ends after the lower end is held at
     # 0 (the note says so, and whether the CMC had raised that half-width first)
-    interval = separated([asymmetric_text(*printed_half_widths(x, lower, upper), q, d),
-                          held_at_zero_note(
+    # the value, its U₋, U₊ and the interval's ends as printed, value ± U the ends, in any
+    # unit the text is read in (assessment 70 H3, M1)
+    shown = printed_interval_figures(x, *printed_half_widths(x, lower, upper), q, clip=True)
+    interval = separated([asymmetric_figures(shown), held_at_zero_note(
         x, lower, d, q, float(budget.floor), bool(raised and raised[0]))], "; ")
     conforming = probability_conforming(x, lower, upper, t, mc.probability)
     reasons = list(withheld)
     if max(upper, lower) >= t:
         reasons.append(message(QT_TR_NOOP("U = {u} is not smaller than T = {t}"),
-                               u=f"{max(upper, lower):.{d}f}{q}", t=f"{t:g}{q}"))
+                               u=printed(max(upper, lower), q), t=tolerance_figure(t, q)))
     if reasons:
         verdict = "not assessed"
         sentence[verdict] = (_too_uncertain(max(upper, lower), t, q, d)
@@ -820,10 +836,9 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                              message(QT_TR_NOOP("No statement of conformity: {reason}."),
                                      reason=_withheld_text(reasons)))
     measured = float(getattr(mc, "measured", x))
-    low, high = printed_interval(x, lower, upper, d)
-    figures = dict(what=what, value=f"{x:.{d}f}{q}", low=f"{low:.{d}f}{q}",
-                   high=f"{high:.{d}f}{q}", u=interval,
-                   p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
+    low, high = shown["low"], shown["high"]
+    figures = dict(what=what, value=shown["value"], low=low, high=high, u=interval,
+                   p=percent_text(mc.probability), sentence=sentence[verdict])
     # the noise's median excess as the printed figures give it, so that "value, the measured
     # m less e" adds up as printed (0.45″ = 0.49″ − 0.04″, not "less 0.05″": the
     # excess 0.0460″ of 0.4918″ − 0.4457″); none, as measured (positioning's E/2)
@@ -845,8 +860,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                                    "interval {low} … {high} (U = {u}, coverage probability {p} "
                                    "%). {sentence}"), **figures))
     else:
-        said = dict(measured=f"{measured:.{d}f}{q}", excess=f"{excess:.{d}f}{q}",
-                    **figures)
+        said = dict(measured=printed(measured, q, u=max(upper, lower)),
+                    excess=PrintedFigure(measured, q, u=max(upper, lower), less=x), **figures)
         # the interval is the true half range's: a measured one above it is what noise does,
         # said where the figures printed show it (1.44″ is not above 0.02″ … 1.44″)
         text = (message(QT_TR_NOOP("Half the peak-to-peak {what}: {value}, the measured {measured} "
@@ -855,7 +870,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                                    "{low} … {high} (U = {u}, coverage probability {p} %); the "
                                    "measured value lies above it, as noise only widens a "
                                    "measured range. {sentence}"), **said)
-                if float(f"{measured:.{d}f}") > round(high, d) else
+                if float(f"{measured:.{d}f}") > float(str(high).rstrip(q)) else
                 message(QT_TR_NOOP("Half the peak-to-peak {what}: {value}, the measured {measured} "
                                    "less {excess}, the median amount by which noise widens a "
                                    "measured range. Coverage interval of the true half range "
@@ -889,19 +904,18 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
         "curves; no cell below the {p} % stated beyond the binomial scatter of its runs"),
         smooth=f"{100 * achieved['smooth']:.1f}", rough=f"{100 * achieved['rough']:.1f}",
         spike=f"{100 * achieved['spike']:.1f}", sample=f"{100 * achieved['sample']:.1f}",
-        p=f"{100 * mc.probability:.2f}")])
+        p=percent_text(mc.probability))])
     if held:
         quantity_text = separated([quantity_text, message(QT_TR_NOOP(
             "each half-width of the interval held to at least the laboratory's CMC U = {cmc} "
             "(ILAC-P14 5.4: the half range is the error at its extreme points about their "
             "mid-value, which the laboratory cannot know better than a point's error), so the "
-            "guard band and the probabilities use it"), cmc=f"{float(budget.floor):g}{q}")])
+            "guard band and the probabilities use it"), cmc=tolerance_figure(float(budget.floor), q))])
     if budget.points and budget.max_expanded >= t:
         # the results' U (the largest point's) is not smaller than T, yet a statement may be
         # made: say which U the rule uses, lest "U ≥ T, no statement" be read into it
         quantity_text = separated([quantity_text, message(
-            WHICH_U_HALF_RANGE, u=f"{budget.max_expanded:.{uncertainty_decimals(budget.max_expanded)}f}{q}",
-            t=f"{t:g}{q}")])
+            WHICH_U_HALF_RANGE, u=printed(budget.max_expanded, q), t=tolerance_figure(t, q))])
     common = {**common, "probability": float(mc.probability), "raised_to_cmc": raised}
     return Conformity(verdict, text, rule_text, quantity_text, x, upper,
                       "" if verdict == "not assessed" else
@@ -966,10 +980,20 @@ def held_at_zero_note(value: float, lower: float, d: int, q: str, cmc: float = 0
     held at 0 (and whether the CMC had raised it first); "" where it is not held."""
     if not (value - lower < 0.0):
         return ""
-    minus = f"{printed_half_widths(value, lower, 0.0)[0]:.{d}f}{q}"
+    minus = printed(printed_half_widths(value, lower, 0.0)[0], q, decimals=d)
     if raised and cmc > 0.0:
-        return message(HELD_TO_CMC_AT_ZERO, cmc=f"{cmc:g}{q}", minus=minus)
+        return message(HELD_TO_CMC_AT_ZERO, cmc=tolerance_figure(cmc, q), minus=minus)
     return message(HELD_AT_ZERO, minus=minus)
+
+
+def asymmetric_figures(shown: dict) -> str:
+    """A stated interval's half-widths (:func:`models.uncertainty.printed_figure.printed_interval_figures`):
+    "±U" when they agree to the digits shown, else "−a/+b", each converted from its value
+    in any unit the text is read in."""
+    lower, upper = shown["lower"], shown["upper"]
+    if str(lower) == str(upper):
+        return joined(["±", upper])
+    return joined(["−", lower, "/", "+" if upper.value >= 0 else "", upper])
 
 
 def asymmetric_text(lower: float, upper: float, q: str, d: int) -> str:

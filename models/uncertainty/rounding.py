@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["interval_decimals", "interval_ends", "printed_range", "significant_decimals",
+__all__ = ["interval_decimals", "interval_ends", "printed_range", "significant_decimals", "stated_interval",
            "uncertainty_decimals", "without_interval_decimals"]
 
 
@@ -95,3 +95,39 @@ def printed_range(low: float, high: float, decimals: int) -> tuple[str, str, str
     a, b = ("+" + t[1:] if t.startswith("-") and float(t) == 0.0 else t for t in (a, b))
     ptp = round(float(b) - float(a), decimals) + 0.0
     return a, b, f"{ptp:.{decimals}f}"
+
+
+def _on_grid(value: float, decimals: int, towards) -> float:
+    units = value * 10.0 ** decimals
+    near = round(units)
+    whole = near if abs(units - near) < 1e-9 else towards(units)
+    return round(whole / 10.0 ** decimals, decimals) + 0.0
+
+
+def stated_interval(value: float, lower: float, upper: float, decimals: int,
+                    clip_at_zero: bool = False) -> dict[str, float]:
+    """A value with its coverage interval [value − ``lower``, value + ``upper``] as printed
+    to ``decimals`` (assessment 70 M1), so that the printed value ± the printed U₋, U₊ *is*
+    the printed interval: the value rounded to the nearest; each end rounded outward from
+    the computed end (:func:`interval_ends`: never inward, so the printed interval holds the
+    computed one); each U the printed value to its printed end, and never less than the
+    computed U rounded up (GUM 7.2.6 allows U rounded up), its end moved out to match where
+    that is further. ``clip_at_zero``: a half range, whose lower end is held at 0 (U₋ then
+    the value). Returns {"value", "lower", "upper", "low", "high"}."""
+    shown = round(value, decimals) + 0.0
+    if not all(math.isfinite(x) for x in (value, lower, upper)):
+        return {"value": shown, "lower": lower, "upper": upper, "low": value - lower,
+                "high": value + upper}
+    if clip_at_zero and value - lower <= 0.0:
+        minus = shown
+    else:
+        minus = max(_on_grid(lower, decimals, math.ceil),
+                    round(shown - _on_grid(value - lower, decimals, math.floor), decimals))
+    plus = max(_on_grid(upper, decimals, math.ceil),
+               round(_on_grid(value + upper, decimals, math.ceil) - shown, decimals))
+    if clip_at_zero and shown - minus < 0.0:  # held at 0: U₋ the printed value less it
+        minus = shown
+    low = round(shown - minus, decimals) + 0.0
+    return {"value": shown, "lower": round(minus, decimals) + 0.0,
+            "upper": round(plus, decimals) + 0.0, "low": low,
+            "high": round(shown + plus, decimals) + 0.0}

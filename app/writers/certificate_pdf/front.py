@@ -13,6 +13,7 @@ from app.writers.certificate_pdf.wording import _between, _colon, _in_both, _lis
 from models.certificate.document import CertificateDocument
 from models.certificate.metadata import PLACES, revision_statement, separate_statement
 from models.messages import QT_TR_NOOP, joined, message
+from models.uncertainty.printed_figure import tolerance_figure
 
 
 def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.datetime) -> None:
@@ -48,7 +49,8 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
         (label(document, "Serial number", "\n"), meta.item_serial),
         (label(document, "Grade / specification", "\n"), joined(_between("; ", [
             meta.item_grade, message(QT_TR_NOOP("tolerance ±{tolerance}"),
-                                     tolerance=f"{document.tolerance:g}{document.unit}")
+                                     tolerance=tolerance_figure(document.tolerance,
+                                                                document.unit))
             if document.tolerance else ""]))),
         (label(document, "Date of calibration", "\n"), meta.calibration_date),
         (label(document, "Place of calibration", "\n"), _place(meta, _colon(document))),

@@ -63,7 +63,14 @@ def test_the_deciding_point_is_named_with_its_signed_error(runs):
     assert value.startswith("-") and "±" in value and "/" not in value
     low, high = (float(end.strip().rstrip('"')) for end in interval.split("…"))
     step = 10.0 ** -len(value.split("±")[1].strip().rstrip('"').partition(".")[2])
-    assert mean - u - step <= low <= mean - u and mean + u <= high <= mean + u + step
+    # outward, and the printed value ± the printed U (rounded up: GUM 7.2.6) the printed ends
+    # (assessment 70 M1): at most a digit and a half beyond the computed ends
+    shown, shown_u = (float(x.strip().rstrip('"')) for x in value.split("±"))
+    assert shown_u >= u - 1e-12
+    assert low == pytest.approx(shown - shown_u, abs=1e-9)
+    assert high == pytest.approx(shown + shown_u, abs=1e-9)
+    assert mean - u - 1.5 * step - 1e-9 <= low <= mean - u
+    assert mean + u <= high <= mean + u + 1.5 * step + 1e-9
     assert "half range" not in note and "held at 0" not in note
     assert "90°" in note and "↑" in note
 

@@ -194,3 +194,44 @@ def test_invalid_run_keeps_the_figures(monkeypatch):
                           invalid_reason="the run is invalid (closure failed)")
     assert c.verdict == "not assessed" and "closure failed" in c.reason
     assert c.value == pytest.approx(0.3)
+
+
+# --- assessment 70 L5, M1: the probability and the interval as the figures table prints them
+
+@pytest.mark.parametrize("probability, said", [(0.925, "92.5"), (0.92, "92"), (P, "95.45")])
+def test_the_statement_gives_the_interval_probability_as_the_figures_table(probability, said):
+    """An interval evaluated at 92.5 % (positioning's E/2 at half_range) is "92.5 %" in the
+    statement, as in the figures table, not "92.50 %"."""
+    from models.uncertainty.conformity import HalfRangeEstimate
+
+    estimate = HalfRangeEstimate(measured=6.4, bias=0.0, value=6.4, u_upper=1.2, u_lower=1.5,
+                                 probability=probability, trials=0, seed=0)
+    c = decide_conformity(np.array([6.4, -6.4]), _budget(0.3, 2), 15.0, "guarded",
+                          "half_range", estimate=estimate)
+    assert f"coverage probability {said} %" in c.statement
+
+
+@settings(max_examples=200, deadline=None)
+@given(value=st.floats(0.05, 50.0), lower=st.floats(0.01, 5.0), upper=st.floats(0.01, 5.0))
+def test_printed_value_plus_minus_printed_u_is_the_printed_interval(value, lower, upper):
+    """M1: "x, coverage interval a … b (U = −U₋/+U₊)": x − U₋ = a and x + U₊ = b as printed;
+    the printed interval holds the computed one and each printed U is at least the computed
+    U (GUM 7.2.6: U rounded up)."""
+    import re
+
+    from models.uncertainty.conformity import HalfRangeEstimate
+
+    lower = min(lower, value)
+    estimate = HalfRangeEstimate(measured=value, bias=0.0, value=value, u_upper=upper,
+                                 u_lower=lower, probability=P, trials=0, seed=0)
+    c = decide_conformity(np.array([value, -value]), _budget(0.01, 2), 1000.0, "guarded",
+                          "half_range", estimate=estimate)
+    found = re.search(r": ([\d.]+)\" as measured, coverage interval ([\d.]+)\" … ([\d.]+)\" "
+                      r"\(U = (?:±([\d.]+)\"|−([\d.]+)\"/\+([\d.]+)\")", c.statement)
+    assert found, c.statement
+    x, a, b = (float(found.group(i)) for i in (1, 2, 3))
+    minus = float(found.group(4) or found.group(5))
+    plus = float(found.group(4) or found.group(6))
+    assert x - minus == pytest.approx(a, abs=1e-9) and x + plus == pytest.approx(b, abs=1e-9)
+    assert a <= value - lower + 1e-9 and b >= value + upper - 1e-9
+    assert plus >= upper - 1e-9 and (minus >= lower - 1e-9 or a == 0.0)
