@@ -846,10 +846,9 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     # "reaches further below" only where the interval printed does: its U₋ printed above its
     # U₊ and its lower end further from the value than its upper end (until 0.8.18 said of
     # every lower ≥ upper, so of half-widths raised to the CMC and printed ±0.050″ alike)
-    minus, plus = printed_half_widths(x, lower, upper)
-    printed_x = round(x, d)
-    further_below = (round(minus, d) > round(plus, d)
-                     and round(printed_x - low, d) > round(high - printed_x, d))
+    # (the figures as printed: value ± U is the printed interval, assessment 70 M1)
+    printed_minus, printed_plus = (float(str(shown[part]).rstrip(q)) for part in ("lower", "upper"))
+    further_below = printed_minus > printed_plus
     if excess == 0.0:
         text = (message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} as measured, coverage "
                                    "interval {low} … {high} (U = {u}, coverage probability {p} "
@@ -885,7 +884,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                                    "a measured range fell short of the true one by this much "
                                    "in the median. Coverage interval of the true half range "
                                    "{low} … {high} (U = {u}, coverage probability {p} %). "
-                                   "{sentence}"), shortfall=f"{-excess:.{d}f}{q}", **said))
+                                   "{sentence}"), shortfall=PrintedFigure(
+                                       x, q, u=max(upper, lower), less=measured), **said))
     trials, seed = getattr(mc, "trials", 0), getattr(mc, "seed", MONTE_CARLO_SEED)
     stride = getattr(mc, "stride", 1)
     quantity_text = (message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}, on every "
