@@ -287,6 +287,11 @@ class IssuesCertificates(ABC, Generic[ResultT]):
     #: states traceability only when each is listed with a certificate and a stated U;
     #: otherwise the document is a test report and says why
     measurand_standards: ClassVar[tuple[str, ...]] = ()
+    #: a standard listed with its certificate and no U stands behind inputs stated in its
+    #: settings (the fringe's ADC figures), which it names as not stated itself; otherwise a
+    #: standard listed with no stated U is an input not stated (the JSON's
+    #: uncertainty_inputs_not_stated; its certificate's build_certificate says the same)
+    standards_in_settings: ClassVar[bool] = False
     #: its digital certificate (models/dcc/writer.py): each per-point column of the
     #: certificate (its name without the unit) whose U the certificate prints beside it →
     #: that U column's middle part (``expanded_uncertainty_`` + it + the unit)

@@ -200,8 +200,10 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
                            laboratory_cmcs(kind, budgets, settings))
     # the inputs the certificate names as not stated: U does not hold them (the list empty
     # when U is complete), so a lab's system can tell an incomplete U from a complete one
+    # (a standard listed with no stated U among them, as the certificate names it under its
+    # budget: models.certificate.builder.build_certificate)
     out["uncertainty_inputs_not_stated"] = [str(name) for name in
-                                            kind.inputs_not_stated(result, metadata)]
+                                            inputs_not_stated(kind, result, metadata)]
     if why and "decided_quantity" in out:  # the certificate refused: no statement, its reason
         out["decided_quantity"].update(verdict=None, probability_conforming=None,
                                        decision_risk=None, reason=why)
@@ -232,6 +234,20 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
         # no interval, no probability of one (as positioning's figures state a withheld one)
         decided["coverage_probability"] = None
     return out
+
+
+def inputs_not_stated(kind: Any, result: Any, metadata: Any) -> list[str]:
+    """The inputs ``kind``'s certificate of ``result`` names as not stated, so not in U
+    (untranslated): the workbench's own, and each standard listed with no stated U
+    (:func:`models.certificate.traceability.standards_not_stated`) unless the workbench
+    takes a listed standard's figures as inputs of its settings and names those itself
+    (``standards_in_settings``: the fringe's ADC)."""
+    from models.certificate.traceability import standards_not_stated
+
+    named = list(kind.inputs_not_stated(result, metadata))
+    if not getattr(kind, "standards_in_settings", False):
+        named += [name for name in standards_not_stated(metadata) if name not in named]
+    return named
 
 
 def laboratory_cmcs(kind: Any, budgets: Mapping[str, Any],
