@@ -335,6 +335,18 @@ class IssuesCertificates(ABC, Generic[ResultT]):
         ``settings`` ``result`` was analysed with (None: the defaults)."""
         return {}
 
+    def uncertainty_withheld(self, result: ResultT) -> str:
+        """Why the U of some of the JSON's arrays is null although their budgets could be
+        evaluated (:meth:`uncertainty_budgets` gives them as None): the JSON's
+        ``uncertainty_withheld`` says so ("" when every U is given)."""
+        return ""
+
+    def certified_cmc_setting(self, settings: Mapping[str, Any] | None) -> str:
+        """The setting of the laboratory's CMC for the item the certificate is of, where the
+        workbench has CMCs for two items (the JSON's ``laboratory_cmc`` states it first, the
+        other under ``other_quantities``); "": the one that holds the most arrays."""
+        return ""
+
     def inputs_not_stated(self, result: ResultT, metadata: CertificateMetadata) -> list[str]:
         """The inputs the certificate names as not stated, so not in U (untranslated): the
         JSON lists them (``uncertainty_inputs_not_stated``), and no statement of conformity

@@ -196,6 +196,9 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
         except _NOT_DETERMINED as exc:
             why = str(reason_of(exc))
             conformity, tolerance = _interval_despite(kind, result, metadata, settings)
+    # some arrays' U null by the workbench's own rule (a cross-calibration's encoder without
+    # closure readings or a drift bound): said here too, as docs/command-line.md says
+    withheld = withheld or str(getattr(kind, "uncertainty_withheld", lambda _r: "")(result) or "")
     out = uncertainty_json(budgets, probability, conformity, tolerance, withheld,
                            laboratory_cmcs(kind, budgets, settings))
     # the inputs the certificate names as not stated: U does not hold them (the list empty
@@ -271,7 +274,10 @@ def laboratory_cmcs(kind: Any, budgets: Mapping[str, Any],
                   if _floor(budget) == value]
         out.append({"value": value, "unit": unit, "quantity": quantity,
                     "setting": parameter.key, "arrays": arrays})
-    out.sort(key=lambda c: -len(c["arrays"]))
+    # the certified item's CMC first (a cross-calibration's encoder certificate gave the
+    # polygon's, which held as many arrays: assessment 70 L7), then the one holding the most
+    primary = getattr(kind, "certified_cmc_setting", lambda _s: "")(settings) or ""
+    out.sort(key=lambda c: (c["setting"] != primary, -len(c["arrays"])))
     return out
 
 
