@@ -135,7 +135,7 @@ def uncertainty_json(budgets: Mapping[str, UncertaintyBudget | PointUncertainty 
     """The keys to add to a workbench's JSON: U and k beside each array of ``budgets``
     (a key ``a/b`` places them in the object ``a`` of the JSON, beside its array ``b``),
     ``coverage_probability``, and ``decided_quantity`` when a tolerance is set.
-    ``withheld``: why U is not given (every array's U then null). ``cmcs``: the laboratory's
+    ``withheld``: why U is not given (the arrays whose U is not given null). ``cmcs``: the laboratory's
     CMCs set for the workbench (:func:`laboratory_cmcs`): with one, every U array gets its
     ``uncertainty_raised_to_cmc_`` flags and the JSON ``laboratory_cmc``."""
     out: dict[str, Any] = {"coverage_probability": _number(probability)}
