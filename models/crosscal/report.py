@@ -100,7 +100,6 @@ def _drift_row(result) -> tuple[str, Any, Any]:
     return QT_TR_NOOP("Closure drift"), value, separated(notes, "; ")
 
 
-
 def _per_point(result) -> tuple[np.ndarray, np.ndarray, str]:
     """(values, u of one reading's scatter per point, what) of the certificate's item, each
     about its mean over the n faces or steps (the budget's and the conformity's quantity)."""
