@@ -287,6 +287,11 @@ class IssuesCertificates(ABC, Generic[ResultT]):
     #: states traceability only when each is listed with a certificate and a stated U;
     #: otherwise the document is a test report and says why
     measurand_standards: ClassVar[tuple[str, ...]] = ()
+    #: a standard listed with its certificate and no U stands behind inputs stated in its
+    #: settings (the fringe's ADC figures), which it names as not stated itself; otherwise a
+    #: standard listed with no stated U is an input not stated (the JSON's
+    #: uncertainty_inputs_not_stated; its certificate's build_certificate says the same)
+    standards_in_settings: ClassVar[bool] = False
     #: its digital certificate (models/dcc/writer.py): each per-point column of the
     #: certificate (its name without the unit) whose U the certificate prints beside it →
     #: that U column's middle part (``expanded_uncertainty_`` + it + the unit)
@@ -329,6 +334,18 @@ class IssuesCertificates(ABC, Generic[ResultT]):
         ``expanded_uncertainty_<name>`` and ``coverage_factor_<name>`` beside it. With the
         ``settings`` ``result`` was analysed with (None: the defaults)."""
         return {}
+
+    def uncertainty_withheld(self, result: ResultT) -> str:
+        """Why the U of some of the JSON's arrays is null although their budgets could be
+        evaluated (:meth:`uncertainty_budgets` gives them as None): the JSON's
+        ``uncertainty_withheld`` says so ("" when every U is given)."""
+        return ""
+
+    def certified_cmc_setting(self, settings: Mapping[str, Any] | None) -> str:
+        """The setting of the laboratory's CMC for the item the certificate is of, where the
+        workbench has CMCs for two items (the JSON's ``laboratory_cmc`` states it first, the
+        other under ``other_quantities``); "": the one that holds the most arrays."""
+        return ""
 
     def inputs_not_stated(self, result: ResultT, metadata: CertificateMetadata) -> list[str]:
         """The inputs the certificate names as not stated, so not in U (untranslated): the

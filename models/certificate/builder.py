@@ -27,7 +27,11 @@ from models.certificate.document import (
     table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata
-from models.certificate.traceability import expired_withheld
+from models.certificate.traceability import (
+    expired_withheld,
+    standards_not_stated,
+    traceability_withheld,
+)
 from models.messages import QT_TR_NOOP, listed, message, separated
 from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
@@ -165,19 +169,35 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
                       plots: Sequence[PlotFigure | None], warnings: Sequence[str],
                       statements: Sequence[str], point_columns: Sequence[tuple[str, Any]],
                       tolerance: float | None | _FromDetails = FROM_DETAILS,
-                      unit: str = "\"", **more: Any) -> CertificateDocument:
+                      unit: str = "\"", measurand_standards: Sequence[str] = (),
+                      standards_in_settings: bool = False, **more: Any) -> CertificateDocument:
     """The certificate of a workbench's result: the results table from its columns, the
     conformity decided on ``decision`` against ``tolerance`` (the details' by default) with
     the details' decision rule and quantity, the statistics with the decision rows, the
     budget shown at its worst point (``budget_point`` names it from its index). ``plots``:
     a None (a figure the result has not) is left out. ``more``: further fields of
-    :class:`CertificateDocument` (untraceable, standard …)."""
+    :class:`CertificateDocument` (untraceable, standard …).
+
+    The standards listed with no stated U are inputs not stated, so not in U, and no
+    statement of conformity is made (:func:`standards_not_stated`; ``standards_in_settings``:
+    the workbench takes a listed standard's figures as inputs of its settings and names the
+    ones not stated itself, the fringe's ADC); nor is one made while traceability is not
+    established (``measurand_standards``: the standards that carry the measurand, each to
+    be listed with a certificate and a stated U: :func:`traceability_withheld`), the rule
+    the fringe's untraceable error already followed (assessment 70 H1, H2)."""
     tol = (metadata.tolerance_in(unit_of(budget.unit).key) if isinstance(tolerance, _FromDetails)
            else tolerance)
     # a standard whose calibration had expired: no statement of conformity (the document is
     # also a test report, Workbench.certificate_document)
     expired = expired_withheld(metadata)
-    withheld = separated([decision.withheld, expired], "; ")
+    unstated = [] if standards_in_settings else standards_not_stated(metadata)
+    not_stated = (*decision.not_stated, *(n for n in unstated if n not in decision.not_stated))
+    # traceability not established (a standard that carries the measurand not listed with a
+    # certificate and a stated U): said as the reason where the workbench names no other
+    # reason the results are not traceable (its untraceable inputs, an input not stated)
+    untraced = "" if more.get("untraceable") or not_stated else traceability_withheld(
+        metadata, tuple(measurand_standards), tuple(more.get("stated_inputs", ())))
+    withheld = separated([decision.withheld, untraced, expired], "; ")
     # the details' tolerance as the customer stated it, for the texts (assessment 70 M4)
     stated = (metadata.tolerance_quantity if isinstance(tolerance, _FromDetails) and
               tol is not None else None)
@@ -188,17 +208,17 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    withheld, what=decision.what,
                                    point_names=decision.point_names,
-                                   not_stated=decision.not_stated,
+                                   not_stated=not_stated,
                                    estimate=decision.estimate)
-    more.setdefault("not_in_u", tuple(decision.not_stated))
-    if decision.not_stated:
+    more.setdefault("not_in_u", tuple(not_stated))
+    if not_stated:
         # U declared incomplete: traceability needs every link's contribution in U (VIM
         # 2.41, ILAC-P10), so none is claimed; the same rule as the fringe's inputs with no
         # stated U (CertificateDocument.untraceable): with standards listed the document is a
         # test report, its traceability statement and the DCC's flag say so
         more["untraceable"] = (*more.get("untraceable", ()), message(
             QT_TR_NOOP("U is incomplete: inputs not stated, so not in U: {inputs}"),
-            inputs=listed(message(name) for name in decision.not_stated)))
+            inputs=listed(message(name) for name in not_stated)))
     if more.get("uncertainty_withheld") and math.isfinite(conformity.expanded):
         # no U stated for the results: the decided value has no interval either (the fringe's
         # every-point decision on an estimated phase printed ±U of the incomplete budget)

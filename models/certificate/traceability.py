@@ -15,7 +15,8 @@ from models.messages import QT_TR_NOOP, message, separated
 if TYPE_CHECKING:  # the details' module is loaded by whoever hands them (not a plain analyze)
     from models.certificate.metadata import CertificateMetadata
 
-__all__ = ["expired_standards", "expired_withheld", "test_report_statement", "traceability_gaps"]
+__all__ = ["expired_standards", "expired_withheld", "standards_not_stated", "test_report_statement",
+           "traceability_gaps", "traceability_withheld"]
 
 
 def expired_standards(metadata: CertificateMetadata) -> list:
@@ -43,6 +44,32 @@ def expired_withheld(metadata: CertificateMetadata):
                    names=names)
 
 
+def standards_not_stated(metadata: CertificateMetadata, stated_inputs: tuple[str, ...] = ()
+                         ) -> list[str]:
+    """The standards listed with no stated uncertainty (their descriptions): inputs of every
+    result they take part in whose uncertainty is not stated, so not in U — the readings'
+    scatter cannot stand in for a standard's calibration (GUM 7.2.7; ILAC-P14). A standard
+    listed with its certificate and no U in the table while inputs are stated in the settings
+    (the fringe's ADC figures, ``stated_inputs``) stands behind those inputs: it is not one
+    (the same rule as :func:`traceability_gaps`' "has no stated uncertainty")."""
+    return [s.description or QT_TR_NOOP("standard") for s in metadata.standards
+            if s.uncertainty is None and not (stated_inputs and s.certificate_no)]
+
+
+def traceability_withheld(metadata: CertificateMetadata, roles: tuple[str, ...],
+                          stated_inputs: tuple[str, ...] = ()) -> str:
+    """Why no statement of conformity may be made while traceability is not established
+    ("" when it is, or no standard is listed yet: a draft): a decision rule rests on the
+    result's uncertainty (ISO/IEC 17025 7.1.3, 7.8.6.1; ILAC-G8:09/2019), and a result not
+    traceable to the reference has no U that relates it to the specification. An expired
+    standard is left to :func:`expired_withheld` (its own reason)."""
+    gaps = _gaps(metadata, roles, stated_inputs, expired=False)
+    if not gaps:
+        return ""
+    return message(QT_TR_NOOP("metrological traceability of the results is not established: "
+                              "{gaps}"), gaps=separated(gaps, "; "))
+
+
 def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
                       stated_inputs: tuple[str, ...] = ()) -> list[str]:
     """Why the standards listed do not make the results traceable (empty: they do, or none is
@@ -54,6 +81,12 @@ def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
     and a standard whose calibration was due before the date of calibration (its due date
     stated) had expired: the results are not traceable through it either (the same rule as
     a missing certificate: the document is a test report naming it)."""
+    return _gaps(metadata, roles, stated_inputs, expired=True)
+
+
+def _gaps(metadata: CertificateMetadata, roles: tuple[str, ...], stated_inputs: tuple[str, ...],
+          expired: bool) -> list[str]:
+    """:func:`traceability_gaps`, an expired standard among them or not (``expired``)."""
     standards = metadata.standards
     if not standards:
         return []
@@ -64,20 +97,31 @@ def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
     # the inputs stated in the settings, by the standard they come from ("Phase reference",
     # "ADC offset", "ADC gain ratio" …: two standards), one listed standard each at most
     families = {str(name).split()[0] for name in stated_inputs if str(name).strip()}
-    carried = len(with_u) + min(len(by_settings), len(families))
+    listed = with_u + by_settings[:len(families)]
+    carried = len(listed)
     if carried < len(roles):
-        # a list of none is not printed as "0 listed so" (day review 69 F6)
+        # a list of none is not printed as "0 listed so" (day review 69 F6); some: the ones
+        # listed named, and how many are not (which role a listed standard carries the
+        # details do not say: a DAQ with a U in arcsec enters the budget as an angle
+        # reference), so "1 listed so" no longer leaves the reader to guess (assessment 70 H2)
+        missing = len(roles) - carried
         gaps.append(message(QT_TR_NOOP(
             "the standards that carry the measurand are {roles}, each to be listed with a "
-            "calibration certificate and a stated uncertainty; {count} listed so")
-            if carried else QT_TR_NOOP(
+            "calibration certificate and a stated uncertainty; none of them is listed so")
+            if not carried else QT_TR_NOOP(
             "the standards that carry the measurand are {roles}, each to be listed with a "
-            "calibration certificate and a stated uncertainty; none of them is listed so"),
-            roles=separated((message(r) for r in roles), "; "), count=carried))
-    expired = expired_standards(metadata)
+            "calibration certificate and a stated uncertainty; {count} listed so ({listed}): "
+            "the standard for the other one is not listed") if missing == 1 else QT_TR_NOOP(
+            "the standards that carry the measurand are {roles}, each to be listed with a "
+            "calibration certificate and a stated uncertainty; {count} listed so ({listed}): "
+            "the standards for the other {missing} are not listed"),
+            roles=separated((message(r) for r in roles), "; "), count=carried,
+            listed=separated((s.description or message(QT_TR_NOOP("standard"))
+                              for s in listed), ", "), missing=missing))
+    expired_ones = expired_standards(metadata) if expired else []
     for std in standards:
         name = std.description or message(QT_TR_NOOP("standard"))
-        if std in expired:
+        if std in expired_ones:
             gaps.append(message(QT_TR_NOOP(
                 "{standard}: its calibration was due on {due}, before the date of calibration "
                 "{date}: it had expired"), standard=name, due=std.due_date,

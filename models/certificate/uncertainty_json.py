@@ -140,7 +140,7 @@ def uncertainty_json(budgets: Mapping[str, UncertaintyBudget | PointUncertainty 
     """The keys to add to a workbench's JSON: U and k beside each array of ``budgets``
     (a key ``a/b`` places them in the object ``a`` of the JSON, beside its array ``b``),
     ``coverage_probability``, and ``decided_quantity`` when a tolerance is set.
-    ``withheld``: why U is not given (every array's U then null). ``cmcs``: the laboratory's
+    ``withheld``: why U is not given (the arrays whose U is not given null). ``cmcs``: the laboratory's
     CMCs set for the workbench (:func:`laboratory_cmcs`): with one, every U array gets its
     ``uncertainty_raised_to_cmc_`` flags and the JSON ``laboratory_cmc``."""
     out: dict[str, Any] = {"coverage_probability": _number(probability)}
@@ -201,12 +201,17 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
         except _NOT_DETERMINED as exc:
             why = str(reason_of(exc))
             conformity, tolerance = _interval_despite(kind, result, metadata, settings)
+    # some arrays' U null by the workbench's own rule (a cross-calibration's encoder without
+    # closure readings or a drift bound): said here too, as docs/command-line.md says
+    withheld = withheld or str(getattr(kind, "uncertainty_withheld", lambda _r: "")(result) or "")
     out = uncertainty_json(budgets, probability, conformity, tolerance, withheld,
                            laboratory_cmcs(kind, budgets, settings))
     # the inputs the certificate names as not stated: U does not hold them (the list empty
     # when U is complete), so a lab's system can tell an incomplete U from a complete one
+    # (a standard listed with no stated U among them, as the certificate names it under its
+    # budget: models.certificate.builder.build_certificate)
     out["uncertainty_inputs_not_stated"] = [str(name) for name in
-                                            kind.inputs_not_stated(result, metadata)]
+                                            inputs_not_stated(kind, result, metadata)]
     if why and "decided_quantity" in out:  # the certificate refused: no statement, its reason
         out["decided_quantity"].update(verdict=None, probability_conforming=None,
                                        decision_risk=None, reason=why)
@@ -239,6 +244,20 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
     return out
 
 
+def inputs_not_stated(kind: Any, result: Any, metadata: Any) -> list[str]:
+    """The inputs ``kind``'s certificate of ``result`` names as not stated, so not in U
+    (untranslated): the workbench's own, and each standard listed with no stated U
+    (:func:`models.certificate.traceability.standards_not_stated`) unless the workbench
+    takes a listed standard's figures as inputs of its settings and names those itself
+    (``standards_in_settings``: the fringe's ADC)."""
+    from models.certificate.traceability import standards_not_stated
+
+    named = list(kind.inputs_not_stated(result, metadata))
+    if not getattr(kind, "standards_in_settings", False):
+        named += [name for name in standards_not_stated(metadata) if name not in named]
+    return named
+
+
 def laboratory_cmcs(kind: Any, budgets: Mapping[str, Any],
                     settings: Mapping[str, Any] | None) -> list[dict[str, Any]]:
     """The laboratory's CMCs set for ``kind`` (its settings of
@@ -260,7 +279,10 @@ def laboratory_cmcs(kind: Any, budgets: Mapping[str, Any],
                   if _floor(budget) == value]
         out.append({"value": value, "unit": unit, "quantity": quantity,
                     "setting": parameter.key, "arrays": arrays})
-    out.sort(key=lambda c: -len(c["arrays"]))
+    # the certified item's CMC first (a cross-calibration's encoder certificate gave the
+    # polygon's, which held as many arrays: assessment 70 L7), then the one holding the most
+    primary = getattr(kind, "certified_cmc_setting", lambda _s: "")(settings) or ""
+    out.sort(key=lambda c: (c["setting"] != primary, -len(c["arrays"])))
     return out
 
 

@@ -709,6 +709,15 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
             budgets["encoder_error_from_step0_arcsec"] = None
         return budgets
 
+    def uncertainty_withheld(self, result):
+        # the encoder's U null (no closure reading, no drift bound): why, whichever item is
+        # certified (its arrays' U are null in either JSON)
+        return result.encoder_u_withheld or ""
+
+    def certified_cmc_setting(self, settings):
+        item = str((settings or {}).get("certificate_of", "polygon"))
+        return "cmc_encoder_arcsec" if item == "encoder" else "cmc_arcsec"
+
     def certified_json(self, result, metadata, settings=None):
         """With the certificate details, the U arrays that exist since before #39 are the
         certificate's too (the comparators' stated U in): one figure for each value in the

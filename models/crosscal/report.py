@@ -54,9 +54,51 @@ METHOD = QT_TR_NOOP(
     "autocollimator is set up in.")
 
 
+#: :data:`METHOD` where a mounting has no closure reading of its own: the closure sentence
+#: said of the mountings that have one, and what is done with the others' drift (assessment
+#: 70 M8: "Each mounting ends with a closure reading" printed of a run with none)
+METHOD_SOME_WITHOUT_CLOSURE = QT_TR_NOOP(
+    "Cross-calibration by the closure principle: a polygon is fixed on the shaft of the encoder "
+    "in several mountings (turned by j faces on the shaft) and in each mounting the shaft is "
+    "turned from the same encoder reading through the encoder's n steps of 360°/n, an "
+    "autocollimator reading each face in turn. Each reading is the encoder's error at its step "
+    "plus the polygon's deviation at the face plus the mounting's offset (and drift); the faces "
+    "of the polygon and the steps of a full turn each close at 360°, so both error sets are "
+    "found together by least squares, without a calibrated polygon. Harmonics that the "
+    "mountings chosen cannot separate are named and not reported. Where a mounting ends with a "
+    "closure reading of its first face after the full turn, its change over the turn is the "
+    "mounting's drift, fitted or spread linearly over the mounting and removed, or reported, as "
+    "set; a mounting without one has its drift fitted through the other mountings' closure "
+    "readings where the design determines it, and otherwise its drift is not measured (the "
+    "set-up parameters name each). When vertical readings are given, the polygon's tilt on the "
+    "shaft is fitted for each mounting from them and its effect on the horizontal readings "
+    "removed, in the frame the autocollimator is set up in.")
+
+
 DRIFT_WORDS = {"fit": QT_TR_NOOP("fitted linearly over each mounting by least squares and removed"),
                "spread": QT_TR_NOOP("spread linearly over each mounting and removed"),
                "report": QT_TR_NOOP("reported, not removed")}
+
+
+def _drift_row(result) -> tuple[str, Any, Any]:
+    """The set-up parameters' "Closure drift" row, said of each mounting as it was done: the
+    mode's words for the mountings with a closure reading of their own; a mounting without
+    one has its drift fitted through the others' closure readings (where the design
+    determines it: models.crosscal.uncertainty.unchecked_drift_mountings) or not measured."""
+    s = result.solution
+    unchecked = set(result.unchecked_drift_mountings)
+    own = [j for j, c in zip(s.mountings, result.closure_arcsec, strict=True) if math.isfinite(c)]
+    fitted = [j for j in s.mountings if j not in own and j not in unchecked]
+    value = DRIFT_WORDS[result.drift_mode] if own else QT_TR_NOOP("not measured (no closure "
+                                                                  "readings)")
+    notes = [message(QT_TR_NOOP("no closure reading in mounting(s) {mountings}: their drift "
+                                "fitted through the other mountings' closure readings"),
+                     mountings=", ".join(map(str, fitted))) if fitted else "",
+             message(QT_TR_NOOP("no closure reading in mounting(s) {mountings}: their drift not "
+                                "measured"),
+                     mountings=", ".join(map(str, sorted(unchecked)))) if unchecked and own
+             else ""]
+    return QT_TR_NOOP("Closure drift"), value, separated(notes, "; ")
 
 
 def _per_point(result) -> tuple[np.ndarray, np.ndarray, str]:
@@ -370,7 +412,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
               (QT_TR_NOOP("Mountings"), ", ".join(map(str, s.mountings)), ""),
               (QT_TR_NOOP("σ of one reading"), f"{s.sigma_arcsec:.4f}\"",
                "ν = ∞" if not math.isfinite(s.dof) else f"ν = {s.dof:.0f}"),
-              (QT_TR_NOOP("Closure drift"), DRIFT_WORDS[result.drift_mode], ""),
+              _drift_row(result),
               (QT_TR_NOOP("Encoder"),
                QT_TR_NOOP("set to its nominal steps") if result.readings.nominal_encoder
                else QT_TR_NOOP("read at each step"),
@@ -464,13 +506,23 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
                 low=f"{np.min(result.readings.ac_x_arcsec):+.1f}\"",
                 high=f"{np.max(result.readings.ac_x_arcsec):+.1f}\""),
         _correlation_statement(result, item, metadata),
+        # the encoder's error is solved with the face deviations, but with its U withheld it
+        # is not calibrated (assessment 70 M8)
+        message(QT_TR_NOOP("The encoder's error was solved in the same run, but the encoder is "
+                           "not calibrated: its U is withheld (mounting(s) {mountings} have no "
+                           "closure reading and no drift bound is stated); the largest "
+                           "correlation between its results and these is {r}."),
+                mountings=", ".join(map(str, result.unchecked_drift_mountings)),
+                r=f"{result.cross_correlation():.2f}")
+        if item == "polygon" and result.encoder_u_withheld is not None else
         message(QT_TR_NOOP("The {other} was calibrated in the same run; the largest correlation "
                            "between its results and these is {r}."),
                 other=message(QT_TR_NOOP("polygon") if item == "encoder"
                               else QT_TR_NOOP("encoder")),
                 r=f"{result.cross_correlation():.2f}"))
     return build_certificate(
-        kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
+        kind_key=KEY, kind_title=TITLE, metadata=metadata,
+        method=METHOD if all(math.isfinite(c) for c in closures) else METHOD_SOME_WITHOUT_CLOSURE,
         source_name=source_name, method_reference=method_reference, budget=budget,
         parameters=parameters, results=results,
         statistics=Statistics(first_rows, QT_TR_NOOP("steps") if item == "encoder"

@@ -56,6 +56,9 @@ FACE_DEVIATION_UNIT = r"\arcsecond"
 REFTYPE_CALIBRATION_CERTIFICATE = "anglebench_calibrationCertificate"
 REFTYPE_TEST_REPORT = "anglebench_testReport"
 REFTYPE_NOT_A_CALIBRATION = "anglebench_notACalibration"
+#: a specimen (the bundled example details, the window's training switch): not a certificate,
+#: in no register; it takes the place of the calibration certificate's statement
+REFTYPE_SPECIMEN = "anglebench_specimen"
 REFTYPE_CONFORMITY = "anglebench_conformity"
 REFTYPE_TRACEABILITY = "anglebench_traceability"
 REFTYPE_MEASURAND = "anglebench_measurand"

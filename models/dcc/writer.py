@@ -302,6 +302,13 @@ _CONFORMITY = {"pass": "pass", "fail": "fail", "conditional pass": "conditionalP
 def _statements(b: _Builder, admin) -> None:
     doc = b.document
     sts = etree.SubElement(admin, D + "statements")
+    if doc.specimen:
+        # a specimen says so, as its PDF does, and claims no certificate, traceability or
+        # conformity a machine reader could take as issued (assessment 70 M6: it declared
+        # "This document is a calibration certificate.", traceable true, conformity pass)
+        _statement(b, sts, v.REFTYPE_SPECIMEN,
+                   "the document is a specimen: not a certificate, recorded in no register",
+                   SPECIMEN, traceable="false")
     if doc.is_test_report:
         why = [*doc.untraceable, *doc.traceability_gaps]  # as the PDF's statement names them
         _statement(b, sts, v.REFTYPE_NOT_A_CALIBRATION,
@@ -309,7 +316,7 @@ def _statements(b: _Builder, admin) -> None:
                    QT_TR_NOOP("This document is a test report, not a calibration certificate: "
                               "its results are not stated as traceable to the SI."),
                    *why, traceable="false")
-    else:
+    elif not doc.specimen:
         _statement(b, sts, v.REFTYPE_CALIBRATION_CERTIFICATE,
                    "the document is a calibration certificate",
                    DOCS_CALIBRATION)
@@ -317,15 +324,16 @@ def _statements(b: _Builder, admin) -> None:
     _statement(b, sts, v.REFTYPE_CONFORMITY,
                "statement of conformity with its decision rule and the probability of false "
                "acceptance", c.statement, c.rule, c.quantity, c.zones,
-               conformity=_CONFORMITY.get(c.verdict, ""))
+               conformity="" if doc.specimen else _CONFORMITY.get(c.verdict, ""))
     # why traceability is not established (an input with no stated U, U incomplete, a
     # standard missing), never "traceable" beside traceable=false
     trace = [*doc.untraceable, *doc.traceability_gaps] or [
-        doc.traceability_basis or QT_TR_NOOP(
+        SPECIMEN_TRACEABILITY if doc.specimen else doc.traceability_basis or QT_TR_NOOP(
             "The results are traceable to the SI through the reference standards listed with "
             "their calibration certificates (see measuringEquipments).")]
     _statement(b, sts, v.REFTYPE_TRACEABILITY, "metrological traceability", *trace,
-               traceable="false" if doc.is_test_report or doc.untraceable else "true")
+               traceable="false" if doc.is_test_report or doc.untraceable or doc.specimen
+               else "true")
     _statement(b, sts, v.REFTYPE_MEASURAND, "the measurand's definition and sign convention",
                doc.method, doc.sign_convention, convention=_say(doc.sign_convention, "en"),
                reference=_say(doc.method_reference, "en") if doc.method_reference else None)
@@ -366,6 +374,14 @@ def _statements(b: _Builder, admin) -> None:
 
 
 DOCS_CALIBRATION = QT_TR_NOOP("This document is a calibration certificate.")
+#: a specimen's first statement, in place of :data:`DOCS_CALIBRATION` (its PDF's notice)
+SPECIMEN = QT_TR_NOOP("This document is a SPECIMEN, made from example details for training or "
+                      "demonstration: not a certificate, not recorded in any register. Its "
+                      "results, traceability and statement of conformity are examples, issued "
+                      "to no one: none may be relied on.")
+#: a specimen's traceability statement (traceable false): nothing of it is issued
+SPECIMEN_TRACEABILITY = QT_TR_NOOP("A specimen claims no metrological traceability for its "
+                                   "results: it is issued to no one.")
 VALIDITY = QT_TR_NOOP("The results relate only to the item calibrated, at the time and under "
                       "the conditions of the calibration. This digital certificate and the PDF "
                       "embedded in it are one certificate; the embedded PDF is its "

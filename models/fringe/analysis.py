@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from models.cancellation import checkpoint
-from models.fringe import KEY, TITLE
+from models.fringe import KEY, MEASURAND_STANDARDS, TITLE
 from models.fringe.compensation_at_samples import compensation_caveat
 from models.fringe.folded_orders import FoldedOrder, folded_orders
 from models.fringe.model import (
@@ -914,8 +914,8 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "fringe_sample.csv"
-    measurand_standards = (QT_TR_NOOP("a phase or angle reference"),
-                           QT_TR_NOOP("the ADC (its figures stated in the settings)"))
+    measurand_standards = MEASURAND_STANDARDS
+    standards_in_settings = True  # the ADC's figures (its report's build_certificate too)
     # each error's U column (the certificate's "U as found" is the raw error's)
     dcc_uncertainty_columns = {"raw_error": "raw_error_",
                                "compensated_error": "compensated_error_"}

@@ -8,3 +8,8 @@ from models.messages import QT_TR_NOOP
 
 KEY = "polygon"
 TITLE = QT_TR_NOOP("Polygon encoder test")
+#: the standards that carry the measurand (a calibration certificate states traceability
+#: only when each is listed with a certificate and a stated U; the statement of conformity
+#: is withheld while one is not): the workbench's and its certificate's one list
+MEASURAND_STANDARDS = (QT_TR_NOOP("the polygon (its face deviations)"),
+                       QT_TR_NOOP("the autocollimator"))

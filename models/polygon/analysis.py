@@ -11,7 +11,7 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of, separated
 from models.parameters import Parameter, SettingsError
-from models.polygon import KEY, TITLE
+from models.polygon import KEY, MEASURAND_STANDARDS, TITLE
 from models.polygon.acquisition import polygon_guide
 from models.polygon.budget_inputs import (
     PYRAMIDAL_INPUT,
@@ -874,8 +874,7 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "polygon_sample.csv"
-    measurand_standards = (QT_TR_NOOP("the polygon (its face deviations)"),
-                           QT_TR_NOOP("the autocollimator"))
+    measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
     #: what the DCC says of a column's U where the PDF prints none beside it
     dcc_column_notes = {"raw_error_arcsec": raw_error_u_note(

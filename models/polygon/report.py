@@ -92,7 +92,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.withheld import UncertaintyWithheld
 from models.messages import QT_TR_NOOP, message, reason_of
-from models.polygon import KEY, TITLE
+from models.polygon import KEY, MEASURAND_STANDARDS, TITLE
 from models.polygon.budget_inputs import (
     PYRAMIDAL_INPUT,
     ROLL_INPUT,
@@ -1222,6 +1222,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         what=(QT_TR_NOOP("corrected error (the results table's mean over the sets)")
               if len(result.sets) > 1 else QT_TR_NOOP("corrected error")))
     return build_certificate(
+        measurand_standards=MEASURAND_STANDARDS,
         kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,
         parameters=parameters, results=results, statistics=statistics, decision=decision,

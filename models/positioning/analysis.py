@@ -11,7 +11,7 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP, joined, lines, message, separated
 from models.parameters import Parameter, SettingsError
-from models.positioning import KEY, TITLE
+from models.positioning import KEY, MEASURAND_STANDARDS, TITLE
 from models.positioning.compensation import write_compensation
 from models.positioning.model import (
     DEVIATION_UNITS,
@@ -632,7 +632,7 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "positioning_sample.csv"
-    measurand_standards = (QT_TR_NOOP("the reference measuring system"),)
+    measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"mean_deviation": ""}  # the certificate's U column (DCC)
     method_reference = ("ISO 230-2:2014 Test code for machine tools — Part 2: Determination of "
                         "accuracy and repeatability of positioning of numerically controlled "

@@ -48,7 +48,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, Message, listed, message
-from models.positioning import KEY, TITLE
+from models.positioning import KEY, MEASURAND_STANDARDS, TITLE
 from models.positioning.decided_quantity import decided_half_range
 from models.positioning.model import (
     MIN_RUNS,
@@ -717,6 +717,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     directions = np.concatenate([np.full(m, 1.0 if name == "up" else -1.0)
                                  for name, *_ in points])
     return build_certificate(
+        measurand_standards=MEASURAND_STANDARDS,
         kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,
         parameters=parameters, results=results, statistics=statistics, decision=decision,

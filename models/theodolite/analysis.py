@@ -14,7 +14,7 @@ from models.parameters import Parameter, SettingsError, Shortcut
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
-from models.theodolite import KEY, TITLE
+from models.theodolite import KEY, MEASURAND_STANDARDS, TITLE
 from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import MODEL_INPUT, TheodoliteResult, analyze_run
 from models.uncertainty.iso230 import once_note
@@ -382,7 +382,7 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "theodolite_sample.csv"
-    measurand_standards = (QT_TR_NOOP("the autocollimating theodolite"),)
+    measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
     #: what the DCC says of the raw error's U (the JSON's raw_error_arcsec budget)
     dcc_column_notes = {"raw_error_arcsec": raw_error_u_note(MODEL_INPUT)}

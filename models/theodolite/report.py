@@ -89,7 +89,7 @@ from models.certificate.document import (
 from models.certificate.interval_note import interval_note
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message, separated
-from models.theodolite import KEY, TITLE
+from models.theodolite import KEY, MEASURAND_STANDARDS, TITLE
 from models.theodolite.accuracy_check import certificate_warnings
 from models.theodolite.figures import MODEL_INPUT, per_angle_note, pooled_repeats
 from models.theodolite.model import TheodoliteResult
@@ -594,6 +594,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
                  printed(c.rms, "\"", decimals=d))),
     ], QT_TR_NOOP("points"), after=_iso230_rows(result, budget, metadata))
     return build_certificate(
+        measurand_standards=MEASURAND_STANDARDS,
         kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,
         parameters=parameters, results=results, statistics=statistics,

@@ -264,6 +264,8 @@ def test_a_fringe_record_with_a_traceable_phase_reference_is_a_calibration(tmp_p
          "basis": "U95"},
         {"description": "Data acquisition (16-bit ADC)", "serial": "DAQ-5",
          "certificate_no": "CAL-2026-33", "uncertainty": None}]
+    # real details: a specimen declares itself a specimen, not a calibration (assessment 70 M6)
+    del details["example"], details["certificate_number"]
     path = tmp_path / "meta.json"
     path.write_text(json.dumps(details), encoding="utf-8")
     code, said, _, xml = _issue("fringe", tmp_path, capsys, samples_dir, details=path, extra=(
@@ -564,3 +566,37 @@ def test_a_tilt_direction_not_identified_is_said_in_each_language_of_the_dcc(tmp
     assert said_not_identified, "no row says the tilt direction is not identified"
     for c in said_not_identified:
         assert c.get("zh") and "not" not in c["zh"] and "未" in c["zh"], c
+
+
+# -- a specimen says so (assessment 70, M6) --------------------------------------------------
+@pytest.mark.parametrize("case", ["theodolite", "polygon", "crosscal", "fringe"])
+def test_a_specimens_dcc_says_it_is_a_specimen_and_claims_no_certificate(issued, case):
+    """The bundled example details make a specimen: its PDF says "SPECIMEN — … not a
+    certificate, not recorded in any register"; its DCC declared "This document is a
+    calibration certificate.", traceable true and conformity pass, so a machine reader took
+    a valid certificate. It now says it is a specimen and claims neither."""
+    _, said, _, xml, _ = issued[case]
+    types = _statement_types(xml)
+    assert "anglebench_specimen" in types
+    assert v.REFTYPE_CALIBRATION_CERTIFICATE not in types
+    text = xml.read_text(encoding="utf-8")
+    assert "This document is a calibration certificate" not in text
+    assert "not a certificate, not recorded in any register" in text
+    assert "<dcc:traceable>true</dcc:traceable>" not in text
+    assert "<dcc:conformity>" not in text
+
+
+def test_an_issued_certificates_dcc_still_declares_a_traceable_calibration(tmp_path, capsys,
+                                                                           samples_dir):
+    """The control of the above: the same readings with real details (not example)."""
+    details = json.loads((samples_dir / "certificate_theodolite.json").read_text(encoding="utf-8"))
+    del details["example"], details["certificate_number"]
+    path = tmp_path / "meta.json"
+    path.write_text(json.dumps(details), encoding="utf-8")
+    code, said, _, xml = _issue("theodolite", tmp_path, capsys, samples_dir, details=path)
+    assert code == 0, said
+    types = _statement_types(xml)
+    assert v.REFTYPE_CALIBRATION_CERTIFICATE in types and "anglebench_specimen" not in types
+    text = xml.read_text(encoding="utf-8")
+    assert "<dcc:traceable>true</dcc:traceable>" in text
+    assert "<dcc:conformity>pass</dcc:conformity>" in text

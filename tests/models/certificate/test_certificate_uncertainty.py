@@ -142,9 +142,16 @@ def test_deciding_point_is_named_as_in_the_results_table(key):
     kind, result = _sample(key, settings)
     tolerance = 1000.0 if key != "polygon" else None
     meta = replace(META, decision_quantity="points", tolerance=tolerance)
+    # every standard that carries the measurand listed (a statement is made on traceable
+    # results only, assessment 70 H2): the polygon and the autocollimator; the fringe's
+    # phase reference, its u stated in the settings
     if key == "polygon":  # its tolerance is the grade's (±1")
         meta = replace(meta, tolerance=None,
-                       standards=(replace(META.standards[0], uncertainty=0.1),))
+                       standards=(replace(META.standards[0], uncertainty=0.1),
+                                  replace(META.standards[0], description="Autocollimator",
+                                          uncertainty=0.1)))
+    if key == "fringe":
+        meta = replace(meta, standards=(*meta.standards, PHASE_REFERENCE))
     document = kind.certificate_document(result, meta)
     statement = str(document.conformity.statement)
     assert "number " not in statement

@@ -1,0 +1,124 @@
+"""No statement of conformity rests on results whose traceability is not established
+(assessment 70, H1 and H2).
+
+* H1: a standard listed with no stated U (the document a test report, its PDF saying the
+  standard "is no input of the budget") left ``uncertainty_inputs_not_stated`` empty and
+  stated "pass" on the theodolite, polygon, positioning and cross-calibration workbenches:
+  the readings' scatter stood in for the standard's calibration. It is an input not stated:
+  named under the budget and in the JSON, and no statement is made (the verdict null with
+  its reason), as the fringe workbench did for its own inputs.
+* H2: a fringe record with every input stated but only the ADC listed (no phase or angle
+  reference standard) was a test report saying "traceability: not established … 1 listed
+  so", and stated "pass". No statement is made while traceability is not established, and
+  the reason names the standard listed.
+
+The readings are the bundled samples, the details the bundled ones with the standards
+changed; each case is checked against its control with every standard stated, which does
+make a statement."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+
+from models.certificate.metadata import CertificateMetadata, ReferenceStandard
+from models.certificate.uncertainty_json import workbench_uncertainty_json
+from tests.models.certificate.test_certificate_statements import FRINGE_INPUTS, _sample
+
+SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
+
+#: (settings every input of U stated with, the tolerance to add to the sample's details)
+CASES = {"theodolite": ({}, None), "polygon": ({}, None),
+         "positioning": ({"misalignment_u": 0.2, "reference_resolution": 0.1,
+                          "temperature_u": 0.2}, None),
+         "crosscal": ({}, 1.0)}
+
+
+def _details(key: str, tolerance: float | None) -> dict:
+    details = json.loads((SAMPLES / f"certificate_{key}.json").read_text(encoding="utf-8"))
+    details.update(example=False)
+    if tolerance is not None:
+        details["tolerance"] = tolerance
+    return details
+
+
+def _without_u(details: dict, index: int) -> dict:
+    standard = details["standards"][index]
+    for key in ("uncertainty", "uncertainty_arcsec"):
+        standard.pop(key, None)
+    standard["uncertainty"] = None
+    return details
+
+
+@pytest.mark.parametrize("key", sorted(CASES))
+def test_a_standard_with_no_stated_u_is_an_input_not_stated_and_no_statement_is_made(key):
+    settings, tolerance = CASES[key]
+    kind, result = _sample(key, settings)
+    stated = CertificateMetadata.from_dict(_details(key, tolerance))
+    # the control: every standard with its U, a statement of conformity is made
+    control = kind.certificate_document(result, stated)
+    assert control.conformity.verdict != "not assessed", control.conformity.reason
+    assert workbench_uncertainty_json(kind, result, stated, None)[
+        "uncertainty_inputs_not_stated"] == []
+    details = _without_u(_details(key, tolerance), -1)
+    name = details["standards"][-1]["description"]
+    meta = CertificateMetadata.from_dict(details)
+    document = kind.certificate_document(result, meta)
+    assert document.conformity.verdict == "not assessed"
+    assert name in str(document.conformity.reason)
+    assert name in document.not_in_u and name in str(document.not_in_u_statement)
+    assert document.is_test_report
+    extra = workbench_uncertainty_json(kind, result, meta, None)
+    assert name in extra["uncertainty_inputs_not_stated"]
+    decided = extra["decided_quantity"]
+    assert decided["verdict"] is None and decided["probability_conforming"] is None
+    assert name in decided["reason"]
+    assert decided["value"] is not None  # the figure is still stated, with its reason
+
+
+def _fringe_meta(*standards: ReferenceStandard) -> CertificateMetadata:
+    details = _details("fringe", 0.5)
+    return replace(CertificateMetadata.from_dict(details), standards=standards)
+
+
+#: the assessor's: the ADC listed with a U (taken as the budget's reference standard), no
+#: phase reference; and the phase reference that completes it (its u stated in the settings)
+ADC = ReferenceStandard("Data acquisition (16-bit ADC)", "DAQ-5", "CAL-2026-33", 0.3)
+PHASE_REFERENCE = ReferenceStandard("Reference angle encoder (phase of each sample)", "RE-2",
+                                    "NIM-2026-0999")
+
+
+def test_a_fringe_record_with_no_phase_reference_listed_makes_no_statement():
+    kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
+    complete = _fringe_meta(ADC, PHASE_REFERENCE)
+    control = kind.certificate_document(result, complete)
+    assert not control.is_test_report
+    assert control.conformity.verdict != "not assessed", control.conformity.reason
+    meta = _fringe_meta(ADC)
+    document = kind.certificate_document(result, meta)
+    assert document.is_test_report and document.untraceable == ()  # every input stated
+    assert document.conformity.verdict == "not assessed"
+    reason = str(document.conformity.reason)
+    assert "traceability of the results is not established" in reason
+    # "1 listed so" names the standard listed and what is not
+    assert ("1 listed so (Data acquisition (16-bit ADC)): the standard for the other one is "
+            "not listed") in reason
+    assert any("1 listed so (Data acquisition (16-bit ADC))" in str(g)
+               for g in document.traceability_gaps)
+    decided = workbench_uncertainty_json(kind, result, meta, None)["decided_quantity"]
+    assert decided["verdict"] is None
+    assert "traceability of the results is not established" in decided["reason"]
+    assert workbench_uncertainty_json(kind, result, complete, None)[
+        "decided_quantity"]["verdict"] is not None
+
+
+def test_a_polygon_with_its_polygon_not_listed_makes_no_statement():
+    kind, result = _sample("polygon")
+    details = _details("polygon", None)
+    details["standards"] = details["standards"][1:]  # the autocollimator alone
+    document = kind.certificate_document(result, CertificateMetadata.from_dict(details))
+    assert document.conformity.verdict == "not assessed"
+    assert "1 listed so (Photoelectric autocollimator)" in str(document.conformity.reason)
