@@ -414,6 +414,7 @@
     </message>
     <message>
         <source>the certificate details give a tolerance of ±{tolerance_arcsec}&quot; but the workbench is set to grade {grade} (±{tol}&quot;): change the grade or clear the tolerance in the details</source>
+        <extracomment>how far (relative) a tolerance stated in the details may lie from the grade&apos;s and still be the grade&apos;s: a tolerance converted from another unit and rounded to seven digits</extracomment>
         <translation>证书信息给出的允差为 ±{tolerance_arcsec}&quot;，但工作台设为 {grade} 级（±{tol}&quot;）：请修改等级，或清除证书信息中的允差</translation>
     </message>
     <message>
@@ -2731,6 +2732,16 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>This document is a calibration certificate.</source>
         <translation>本文件为校准证书。</translation>
+    </message>
+    <message>
+        <source>This document is a SPECIMEN, made from example details for training or demonstration: not a certificate, not recorded in any register. Its results, traceability and statement of conformity are examples, issued to no one: none may be relied on.</source>
+        <extracomment>a specimen&apos;s first statement, in place of :data:`DOCS_CALIBRATION` (its PDF&apos;s notice)</extracomment>
+        <translation>本文件为样本，由示例信息生成，用于培训或演示：不是证书，未记入任何登记册。其结果、溯源性和符合性声明均为示例，未向任何人出具：均不得作为依据。</translation>
+    </message>
+    <message>
+        <source>A specimen claims no metrological traceability for its results: it is issued to no one.</source>
+        <extracomment>a specimen&apos;s traceability statement (traceable false): nothing of it is issued</extracomment>
+        <translation>样本不声明其结果的计量溯源性：它未向任何人出具。</translation>
     </message>
     <message>
         <source>The results relate only to the item calibrated, at the time and under the conditions of the calibration. This digital certificate and the PDF embedded in it are one certificate; the embedded PDF is its human-readable form.</source>
@@ -5149,6 +5160,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>a phase or angle reference</source>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
         <translation>相位或角度参考标准</translation>
     </message>
     <message>
@@ -5375,6 +5387,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the polygon (its face deviations)</source>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
         <translation>多面棱体（其面偏差）</translation>
     </message>
     <message>
@@ -5574,6 +5587,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the reference measuring system</source>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
         <translation>参考测量系统</translation>
     </message>
     <message>
@@ -5634,6 +5648,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the autocollimating theodolite</source>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
         <translation>自准直经纬仪</translation>
     </message>
     <message>
@@ -9922,8 +9937,25 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>在各安装位置内线性分配并扣除</translation>
     </message>
     <message>
+        <source>Cross-calibration by the closure principle: a polygon is fixed on the shaft of the encoder in several mountings (turned by j faces on the shaft) and in each mounting the shaft is turned from the same encoder reading through the encoder&apos;s n steps of 360°/n, an autocollimator reading each face in turn. Each reading is the encoder&apos;s error at its step plus the polygon&apos;s deviation at the face plus the mounting&apos;s offset (and drift); the faces of the polygon and the steps of a full turn each close at 360°, so both error sets are found together by least squares, without a calibrated polygon. Harmonics that the mountings chosen cannot separate are named and not reported. Where a mounting ends with a closure reading of its first face after the full turn, its change over the turn is the mounting&apos;s drift, fitted or spread linearly over the mounting and removed, or reported, as set; a mounting without one has its drift fitted through the other mountings&apos; closure readings where the design determines it, and otherwise its drift is not measured (the set-up parameters name each). When vertical readings are given, the polygon&apos;s tilt on the shaft is fitted for each mounting from them and its effect on the horizontal readings removed, in the frame the autocollimator is set up in.</source>
+        <extracomment>:data:`METHOD` where a mounting has no closure reading of its own: the closure sentence said of the mountings that have one, and what is done with the others&apos; drift (assessment 70 M8: &quot;Each mounting ends with a closure reading&quot; printed of a run with none)</extracomment>
+        <translation>按圆周封闭原理互校：多面棱体以若干安装位置（在轴上转过 j 个面）固定在被检编码器的轴上，每个安装位置都从同一编码器读数起，将轴转过编码器的 n 步（每步 360°/n），由自准直仪依次读取各面。每个读数等于编码器在该步的误差加上该面的多面棱体偏差，再加上该安装位置的偏置（及漂移）；多面棱体各面与整周各步都在 360° 处封闭，故两组误差可由最小二乘一并求得，无需已校准的多面棱体。所选安装位置无法分离的谐波予以指明且不报告。安装位置在转满一周后以其第一面的闭合读数结束的，其在一周内的变化即该安装位置的漂移，按设置在该安装位置内线性拟合或线性分配后扣除，或仅报告；没有闭合读数的安装位置，在设计能确定时，其漂移通过其他安装位置的闭合读数拟合，否则其漂移未测量（设置参数中逐一注明）。给出竖直读数时，由其逐个安装位置拟合多面棱体在轴上的倾斜，并在自准直仪所设的坐标系中扣除其对水平读数的影响。</translation>
+    </message>
+    <message>
         <source>fitted linearly over each mounting by least squares and removed</source>
         <translation>在各安装位置内按最小二乘线性拟合并扣除</translation>
+    </message>
+    <message>
+        <source>not measured (no closure readings)</source>
+        <translation>未测量（无闭合读数）</translation>
+    </message>
+    <message>
+        <source>no closure reading in mounting(s) {mountings}: their drift fitted through the other mountings&apos; closure readings</source>
+        <translation>安装位置 {mountings} 没有闭合读数：其漂移通过其他安装位置的闭合读数拟合</translation>
+    </message>
+    <message>
+        <source>no closure reading in mounting(s) {mountings}: their drift not measured</source>
+        <translation>安装位置 {mountings} 没有闭合读数：其漂移未测量</translation>
     </message>
     <message>
         <source>Comparator calibration: {standard}</source>
@@ -10117,6 +10149,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>Deviation</source>
         <translation>偏差</translation>
+    </message>
+    <message>
+        <source>The encoder&apos;s error was solved in the same run, but the encoder is not calibrated: its U is withheld (mounting(s) {mountings} have no closure reading and no drift bound is stated); the largest correlation between its results and these is {r}.</source>
+        <translation>编码器误差在同一次测量中一并求得，但编码器未获校准：其 U 不予给出（安装位置 {mountings} 没有闭合读数，且未给出漂移限值）；其结果与本结果之间的最大相关系数为 {r}。</translation>
     </message>
     <message>
         <source>steps</source>
@@ -10782,12 +10818,20 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>有标准器的校准在校准日期之前已过期，其所给出的不确定度不再成立：{names}</translation>
     </message>
     <message>
-        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so</source>
-        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项</translation>
+        <source>metrological traceability of the results is not established: {gaps}</source>
+        <translation>本结果的计量溯源性未建立：{gaps}</translation>
     </message>
     <message>
         <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; none of them is listed so</source>
         <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；目前一项也未如此列出</translation>
+    </message>
+    <message>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}): the standard for the other one is not listed</source>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}）：另一项的计量标准未列出</translation>
+    </message>
+    <message>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}): the standards for the other {missing} are not listed</source>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}）：其余 {missing} 项的计量标准未列出</translation>
     </message>
     <message>
         <source>{standard}: its calibration was due on {due}, before the date of calibration {date}: it had expired</source>
