@@ -58,20 +58,11 @@ def cell(curve: str, reversal: str, pattern: str, m: int, runs: int, tests: int,
         for k in rig.KEYS:
             f = found[k]
             rows[k].append((f.low, f.high, f.probability, true[k], f.value))
-    out = {}
-    for k, r in rows.items():
-        a = np.array(r)
-        out[k] = {"tests": len(a),
-                  "covered": int(np.sum((a[:, 0] <= a[:, 3]) & (a[:, 3] <= a[:, 1]))),
-                  "below": int(np.sum(a[:, 1] < a[:, 3])), "above": int(np.sum(a[:, 0] > a[:, 3])),
-                  "p": float(np.min(a[:, 2])), "width": float(np.median(a[:, 1] - a[:, 0])),
-                  "low": float(np.median(a[:, 0])), "high": float(np.median(a[:, 1])),
-                  "truth": float(a[0, 3])}
-        p = out[k]["p"]
-        err = a[:, 4] - a[:, 3]
-        oracle = float(np.quantile(err, (1 + p) / 2) - np.quantile(err, (1 - p) / 2))
-        out[k]["width_oracle"] = out[k]["width"] / oracle if oracle > 0 else float("nan")
-    return out
+    try:
+        from tests.interval_study_scores import interval_scores
+    except ImportError:
+        from interval_study_scores import interval_scores  # type: ignore[import-not-found,no-redef]
+    return interval_scores(rows)
 
 
 def main(argv: list[str]) -> None:
