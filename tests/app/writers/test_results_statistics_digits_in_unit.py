@@ -17,16 +17,14 @@ import math
 import re
 from decimal import Decimal
 
-import numpy as np
 import pytest
 from openpyxl import load_workbook
 
 from app.writers.results_export import results_xlsx_bytes
 from models.certificate.metadata import CertificateMetadata
 from models.display_units import ANGLE_UNITS
-from models.readings.sheet import ReadingsSheet
-from models.registry import KINDS
-from tests.repeatability_rig import iso230_rows, theodolite_passes_csv
+from tests.models.test_summary_intervals_in_unit import _positioning as positioning_run
+from tests.models.test_summary_intervals_in_unit import _theodolite as theodolite_run
 
 pytestmark = pytest.mark.slow  # (two certificates, four workbooks)
 
@@ -38,23 +36,12 @@ ARCSEC_FIGURE = re.compile(r"[-+−]?\d+(?:\.(\d+))?\s*[\"″]")
 
 
 def _theodolite():
-    text, _ = theodolite_passes_csv("varying", 13, 3, 0.3, np.random.default_rng(6852))
-    kind = KINDS["theodolite"]
-    lines = [line.split(",") for line in text.splitlines()[1:]]
-    rows = [row + [""] * (len(kind.columns) - len(row)) for row in lines]
-    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(),
-                          kind.settings_with_defaults({}))
+    kind, result = theodolite_run()
     return kind.certificate(result, META)
 
 
 def _positioning():
-    angles = np.linspace(0.0, 360.0, 12, endpoint=False)
-    f = 5.0 * np.sin(np.radians(angles)) + 2.0 * np.cos(np.radians(3 * angles))
-    rows, _ = iso230_rows(angles, {"+": f + 2.5, "-": f - 2.5}, 3, 0.8,
-                          np.random.default_rng(6851))
-    kind = KINDS["positioning"]
-    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(),
-                          kind.settings_with_defaults({}))
+    kind, result = positioning_run()
     return kind.certificate(result, META)
 
 
