@@ -90,3 +90,63 @@ def test_a_worker_pause_holds_it_and_stop_leaves_the_collector_as_found(qapp):
     collector.stop()
     collector.deleteLater()
     assert gc.isenabled() == enabled
+
+
+def _generations_collected(check) -> list[int]:
+    """The generations the collector passed over while ``check()`` ran."""
+    seen: list[int] = []
+
+    def record(phase: str, info: dict) -> None:
+        if phase == "start":
+            seen.append(info["generation"])
+
+    gc.callbacks.append(record)
+    try:
+        check()
+    finally:
+        gc.callbacks.remove(record)
+    return seen
+
+
+def _every_count_past_its_threshold() -> list:
+    """The collector's counts as after a long busy spell: each generation's count past its
+    threshold (a pass over a generation adds one to the next one's count and zeroes its own
+    and the younger ones'); the youngest's allocations returned (kept, they stay counted)."""
+    threshold = gc.get_threshold()
+    for _ in range(threshold[2] + 1):
+        gc.collect(1)
+    for _ in range(threshold[1] + 1):
+        gc.collect(0)
+    young = [[i] for i in range(threshold[0] + 100)]
+    counts = gc.get_count()
+    assert all(counts[g] > threshold[g] for g in range(3)), (counts, threshold)
+    return young
+
+
+def test_a_full_pass_waits_until_the_oldest_generation_grew_by_a_quarter(qapp):
+    """A full pass walks every object of the process (0.2–0.6 s in a window or a test
+    worker): as CPython's own collector, the GUI thread's makes one only when the objects
+    that reached the oldest generation since its last full pass are a quarter of those that
+    pass left, and collects the middle generation otherwise; the counts alone made one every
+    few seconds of a busy window."""
+    collector = GuiThreadGarbageCollector(qapp, youngest_at_least_s=3600.0)
+    kept: list[list] = []
+    try:
+        collector.start()
+        collector.stop()  # a full pass
+        left = len(gc.get_objects(generation=2))
+
+        # a tenth of what it left joins the oldest generation: not yet
+        kept.append([[i] for i in range(left // 10)])
+        gc.collect(1)
+        kept.append(_every_count_past_its_threshold())
+        assert _generations_collected(collector.check) == [1]
+        assert gc.get_count()[2] > gc.get_threshold()[2]  # the oldest still due by its count
+
+        # more than a quarter of it has joined since the full pass: now
+        kept.append([[i] for i in range(left // 5)])
+        gc.collect(1)
+        kept.append(_every_count_past_its_threshold())
+        assert _generations_collected(collector.check) == [2]
+    finally:
+        collector.deleteLater()
