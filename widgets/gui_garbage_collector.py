@@ -11,11 +11,7 @@ the middle of a run.
 
 So automatic collection is switched off while the window lives, and a timer in the GUI
 thread collects each generation when its count passes the threshold the collector had
-(the scheme of calibre's GarbageCollector), and the youngest at least once a second. The
-oldest generation is collected, as CPython's own collector does, only when what joined it
-since its last collection is at least a quarter of what that collection left (a full pass
-over a big heap takes 0.2–0.6 s: on counts alone one ran every few seconds of a busy
-window, and every few tests of the suite); otherwise the middle one is. A pause asked by a worker
+(the scheme of calibre's GarbageCollector), and the youngest at least once a second. A pause asked by a worker
 (widgets.workers.Workers.cyclic_gc_paused: an import building a million strings that hold
 no cycles) holds the timer's full passes too.
 """
@@ -32,10 +28,6 @@ __all__ = ["GuiThreadGarbageCollector", "collect_in_gui_thread"]
 
 #: how often the GUI thread looks at the collector's counts (ms)
 INTERVAL_MS = 200
-#: the oldest generation is collected only when the objects that joined it since its last
-#: collection are at least this share of those that collection left (CPython's own rule:
-#: ``long_lived_pending < long_lived_total / 4`` holds a full pass back)
-OLDEST_GROWTH = 0.25
 #: the youngest generation is collected at least this often (s): the counts are allocations
 #: less deallocations, and a worker that builds and drops big lists passes the threshold
 #: only between two looks, so a cycle could wait for ever (a test saw it)
@@ -45,11 +37,6 @@ YOUNGEST_AT_LEAST_S = 1.0
 class GuiThreadGarbageCollector(QObject):
     """While it runs, cyclic garbage is collected here, in the thread that owns it (the GUI
     thread), and nowhere else. ``paused``: True while a worker asks for no full passes."""
-
-    #: the objects in the oldest generation after its last full pass by any collector (the
-    #: process has one oldest generation; CPython's ``long_lived_total``): 0 before the
-    #: first, which therefore always runs
-    oldest_left = 0
 
     def __init__(self, parent: QObject | None = None, interval_ms: int = INTERVAL_MS,
                  paused: Callable[[], bool] = lambda: False,
@@ -75,11 +62,7 @@ class GuiThreadGarbageCollector(QObject):
         only, what a test just made; a full pass over a big heap takes 0.1–0.3 s), and
         leave the collector as it was found."""
         self.timer.stop()
-        if full:
-            gc.collect()
-            GuiThreadGarbageCollector.oldest_left = len(gc.get_objects(generation=2))
-        else:
-            gc.collect(1)
+        gc.collect() if full else gc.collect(1)
         if self.was_enabled:
             gc.enable()
 
@@ -95,19 +78,11 @@ class GuiThreadGarbageCollector(QObject):
         generation = 0
         if counts[1] > self.threshold[1]:
             generation = 1
-            if counts[2] > self.threshold[2] and self._oldest_grown():
+            if counts[2] > self.threshold[2]:
                 generation = 2
         gc.collect(generation)
-        if generation == 2:
-            GuiThreadGarbageCollector.oldest_left = len(gc.get_objects(generation=2))
         self.collections += 1
         self.last = time.monotonic()
-
-    def _oldest_grown(self) -> bool:
-        """Whether the oldest generation grew by :data:`OLDEST_GROWTH` of what its last full
-        pass left (counting it takes ~1 ms where a full pass takes 0.2–0.6 s)."""
-        joined = len(gc.get_objects(generation=2)) - self.oldest_left
-        return joined >= OLDEST_GROWTH * self.oldest_left
 
 
 def collect_in_gui_thread(app: QObject) -> GuiThreadGarbageCollector:
