@@ -21,6 +21,7 @@ from models.tolerance_band import TOLERANCE_ROLE, UNCERTAINTY_ROLE
 from models.uncertainty.rounding import significant_decimals
 from widgets.figure_plot import FigureRenderer
 from widgets.i18n import declared, on_language_change
+from widgets.lazy_menu_view_box import LazyMenuViewBox
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
 
@@ -71,9 +72,9 @@ class ErrorPlot(QWidget):
     def _setup_ui(self, x_label: str, residual_label: str) -> None:
         self.graphics = pg.GraphicsLayoutWidget()
         self.graphics.setBackground("w")
-        self.main_plot = self.graphics.addPlot(row=0, col=0)
-        self.corrected_plot = self.graphics.addPlot(row=1, col=0)
-        self.residual_plot = self.graphics.addPlot(row=2, col=0)
+        self.main_plot = self.graphics.addPlot(row=0, col=0, viewBox=LazyMenuViewBox())
+        self.corrected_plot = self.graphics.addPlot(row=1, col=0, viewBox=LazyMenuViewBox())
+        self.residual_plot = self.graphics.addPlot(row=2, col=0, viewBox=LazyMenuViewBox())
         for row, stretch in enumerate((3, 3, 2)):
             self.graphics.ci.layout.setRowStretchFactor(row, stretch)
         for plot in (self.main_plot, self.corrected_plot, self.residual_plot):

@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets.i18n import live, on_language_change, tr
+from widgets.lazy_menu_view_box import LazyMenuViewBox
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import axis_title_height, show_grid
 from widgets.settings_form import SettingsForm
@@ -69,8 +70,8 @@ class FamilySimulation(QWidget):
         self.form.changed.connect(self.update_curves)
         self.sweep_values.editingFinished.connect(self.update_curves)
         self._labels = labels
-        self.top_plot = pg.PlotWidget(background="w")
-        self.bottom_plot = pg.PlotWidget(background="w")
+        self.top_plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox())
+        self.bottom_plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox())
         self._relabel()
         on_language_change(self, self._relabel)
         for plot in (self.top_plot, self.bottom_plot):

@@ -20,6 +20,7 @@ from PySide6.QtWidgets import QVBoxLayout, QWidget
 
 from models.plot_style import ROLE_STYLES, SeriesStyle, drawing_order, series_style
 from widgets.i18n import declared, on_language_change
+from widgets.lazy_menu_view_box import LazyMenuViewBox
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
 from widgets.plot_range import follow_new_data, show_if_empty
@@ -283,7 +284,7 @@ class FigurePlot(QWidget):
 
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
-        self.plot = pg.PlotWidget(background="w")
+        self.plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox())
         show_grid(self.plot)
         for axis in ("left", "bottom"):
             self.plot.getAxis(axis).enableAutoSIPrefix(False)

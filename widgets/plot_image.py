@@ -5,15 +5,18 @@ other output goes through, a file the register issued never replaced)."""
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable
 
 import pyqtgraph as pg
+from pyqtgraph.graphicsItems.ViewBox.ViewBoxMenu import ViewBoxMenu
 from PySide6.QtCore import QBuffer, QIODevice
 from PySide6.QtWidgets import QApplication, QMessageBox, QWidget
 
 from models.project.atomic_write import write_bytes_atomic
 from widgets.i18n import explained, live, tr
+from widgets.lazy_menu_view_box import on_plot_menu
 from widgets.save_file import ask_save_file
 
 __all__ = ["ImageWrite", "add_image_actions", "copy_image", "image_file_name",
@@ -78,11 +81,12 @@ def _graphics_views(widget: QWidget) -> list[pg.GraphicsView]:
         widget.findChildren(pg.GraphicsView)
 
 
-def localise_plot_menu(vb: pg.ViewBox) -> None:
-    """pyqtgraph's right-click menu in the window's language: "View All" and the axis
-    submenus translated; its English-only "Mouse Mode", "Plot Options" and "Export…"
-    (a dialog of its own, in English) left out: Copy image / Save image… do the export."""
-    menu = vb.menu
+def localise_plot_menu(vb: pg.ViewBox, menu: ViewBoxMenu | None = None) -> None:
+    """pyqtgraph's right-click menu (``menu``: ``vb``'s) in the window's language: "View All"
+    and the axis submenus translated; its English-only "Mouse Mode", "Plot Options" and
+    "Export…" (a dialog of its own, in English) left out: Copy image / Save image… do the
+    export."""
+    menu = vb.menu if menu is None else menu
     live(menu.viewAll.setText, tr("View All"))
     live(menu.setTitle, tr("Plot"))
     submenus = [a.menu() for a in menu.actions() if a.menu() is not None]
@@ -120,32 +124,37 @@ def localise_plot_menu(vb: pg.ViewBox) -> None:
 
 
 def localise_plot_menus(widget: QWidget) -> int:
-    """``localise_plot_menu`` for every plot inside ``widget``; returns how many."""
+    """``localise_plot_menu`` for every plot inside ``widget`` (a
+    :class:`~widgets.lazy_menu_view_box.LazyMenuViewBox`'s when its menu is built); returns
+    how many."""
     count = 0
     for view in _graphics_views(widget):
         for item in view.scene().items():
-            if isinstance(item, pg.ViewBox) and getattr(item, "menu", None) is not None:
-                localise_plot_menu(item)
+            if isinstance(item, pg.ViewBox) and on_plot_menu(
+                    item, functools.partial(localise_plot_menu, item)):
                 count += 1
     return count
 
 
 def add_image_actions(widget: QWidget, title: str, write: ImageWrite | None = None) -> int:
-    """Add the two actions to the right-click menu of every plot inside ``widget``; the
+    """Add the two actions to the right-click menu of every plot inside ``widget`` (a
+    :class:`~widgets.lazy_menu_view_box.LazyMenuViewBox`'s when its menu is built); the
     image is the whole widget (all its panels), saved through ``write`` (see
-    :func:`_save_image`). Returns how many menus got them."""
+    :func:`_save_image`). Returns how many menus get them."""
+
+    def add(vb: pg.ViewBox, menu: ViewBoxMenu) -> None:
+        menu.addSeparator()
+        copy = menu.addAction(tr("Copy image"))
+        live(copy.setText, tr("Copy image"))
+        copy.triggered.connect(lambda _=False, w=widget: copy_image(w))
+        save = menu.addAction(tr("Save image…"))
+        live(save.setText, tr("Save image…"))
+        save.triggered.connect(lambda _=False, w=widget, t=title: _save_image(w, t, write))
+        localise_plot_menu(vb, menu)
+
     count = 0
     for view in _graphics_views(widget):  # the fringe's plots are tabs of their own
         for item in view.scene().items():
-            if isinstance(item, pg.ViewBox) and getattr(item, "menu", None) is not None:
-                item.menu.addSeparator()
-                copy = item.menu.addAction(tr("Copy image"))
-                live(copy.setText, tr("Copy image"))
-                copy.triggered.connect(lambda _=False, w=widget: copy_image(w))
-                save = item.menu.addAction(tr("Save image…"))
-                live(save.setText, tr("Save image…"))
-                save.triggered.connect(
-                    lambda _=False, w=widget, t=title: _save_image(w, t, write))
-                localise_plot_menu(item)
+            if isinstance(item, pg.ViewBox) and on_plot_menu(item, functools.partial(add, item)):
                 count += 1
     return count

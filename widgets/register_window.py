@@ -29,6 +29,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets.i18n import application_language, declared, live, on_language_change, tr
+from widgets.lazy_menu_view_box import LazyMenuViewBox
 from widgets.plot_grid import show_grid
 from widgets.plot_image import localise_plot_menus
 from widgets.save_file import ask_save_file
@@ -121,7 +122,7 @@ class RegisterWindow(QDialog):
             "Is a PDF, byte for byte, one this register issued?"))
         self.history_title = QLabel()
         live(self.history_title.setText, tr("Select a certificate and press History"))
-        self.history_plot = pg.PlotWidget(background="w", axisItems={
+        self.history_plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox(), axisItems={
             "bottom": LocalDateAxis(orientation="bottom")})
         on_language_change(self, self.history_plot.getAxis("bottom").picture_again)
         show_grid(self.history_plot)

@@ -24,9 +24,10 @@ def test_a_deleted_window_leaves_no_plot_menu_and_no_text_to_set_again(qtbot, tm
     before = _alive_texts()
     window = MainWindow(settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat),
                         recovery=RecoveryStore(tmp_path / "recovery"))
-    menus = [item.menu for view in window.findChildren(pg.GraphicsView)
+    # every plot's menu opened, as a right-click opens it (a plot's menu is built then)
+    menus = [item.getMenu(None) for view in window.findChildren(pg.GraphicsView)
              for item in view.scene().items()
-             if isinstance(item, pg.ViewBox) and getattr(item, "menu", None) is not None]
+             if isinstance(item, pg.ViewBox) and item.getMenu(None) is not None]
     assert len(menus) >= 10 and _alive_texts() > before + 200
     window.deleteLater()
     for _ in range(2):  # the window, then what its deletion posted

@@ -281,8 +281,8 @@ def test_a_plots_save_image_never_replaces_an_issued_file(window, tmp_path, monk
     plot = presenter.view.error_plot
     save = next(action for view in [plot, *plot.findChildren(pg.GraphicsView)]
                 if isinstance(view, pg.GraphicsView) for item in view.scene().items()
-                if isinstance(item, pg.ViewBox) and getattr(item, "menu", None) is not None
-                for action in item.menu.actions() if action.text() == "Save image…")
+                if isinstance(item, pg.ViewBox) and item.getMenu(None) is not None
+                for action in item.getMenu(None).actions() if action.text() == "Save image…")
     save.trigger()  # the plot's right-click menu, "Save image…", plot.png chosen
     assert told and (f"{png} is the PDF of certificate {number}, as issued; an issued file "
                      "is never replaced") in told[-1]

@@ -91,7 +91,7 @@ def walk_plot_menu(vb, add) -> None:
                     if isinstance(widget, QLabel | QAbstractButton):
                         add(widget.text(), "plot menu")
 
-    walk(vb.menu)
+    walk(vb.getMenu(None))  # built as a right-click builds it
     parent = vb.parentItem()
     while parent is not None:
         if hasattr(parent, "getContextMenus"):
@@ -150,7 +150,7 @@ def window_texts(window, extra: list[QWidget] = ()) -> dict[str, str]:
                     elif isinstance(item, pg.LegendItem):
                         for _sample, label in item.items:
                             add(label.text, "legend")
-                    elif isinstance(item, pg.ViewBox) and getattr(item, "menu", None):
+                    elif isinstance(item, pg.ViewBox) and item.getMenu(None) is not None:
                         walk_plot_menu(item, add)
     for presenter in window.presenters:
         model = presenter.table_model

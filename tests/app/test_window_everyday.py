@@ -131,7 +131,7 @@ def test_every_plot_copies_and_saves_its_image_by_name(window, qtbot):
     window.load_all_samples()
     view = window.presenter("polygon").view
     error_plot = view.plot_widget(0)
-    menu = next(i for i in error_plot.graphics.scene().items() if isinstance(i, pg.ViewBox)).menu
+    menu = next(i for i in error_plot.graphics.scene().items() if isinstance(i, pg.ViewBox)).getMenu(None)
     actions = {a.text(): a for a in menu.actions()}
     assert "Copy image" in actions and "Save image…" in actions
     QApplication.clipboard().clear()

@@ -61,7 +61,7 @@ def each_set(qtbot, samples_dir):
 def test_the_label_at_the_x_axis_end_is_drawn_whole(each_set, qtbot, end):
     """The user sets the x range to end at a tick (right-click › X axis, its range typed)."""
     plot = each_set
-    menu = plot.getViewBox().menu
+    menu = plot.getViewBox().getMenu(None)
     ctrl = menu.ctrl[0]
     ctrl.minText.setText("0")
     ctrl.maxText.setText(end)

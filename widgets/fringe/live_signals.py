@@ -63,6 +63,7 @@ from models.fringe.signal_tolerance import (
 from widgets.fringe.preset_editor import PresetEditorDialog
 from widgets.fringe.signal_bar import SignalBar
 from widgets.i18n import declared, explained, live, on_language_change, tr, translated
+from widgets.lazy_menu_view_box import LazyMenuViewBox
 from widgets.plot_grid import keep_axis_title_room, show_grid
 from widgets.plot_title import set_fitting_title, wrap_title
 
@@ -98,7 +99,7 @@ def _decimals(unit: str) -> int:
 
 
 def _plot() -> pg.PlotWidget:
-    plot = pg.PlotWidget(background="w")
+    plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox())
     show_grid(plot)
     for axis in ("left", "bottom"):
         plot.getAxis(axis).enableAutoSIPrefix(False)

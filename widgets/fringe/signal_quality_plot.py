@@ -17,6 +17,7 @@ from models.fringe.signal_quality import SignalQuality
 from models.fringe.signal_tolerance import BUILTIN_PRESETS, TolerancePreset
 from widgets.fringe.live_signals import preset_name
 from widgets.i18n import live, on_language_change, tr, translated
+from widgets.lazy_menu_view_box import LazyMenuViewBox
 from widgets.plot_grid import show_grid
 from widgets.plot_range import show_if_empty
 
@@ -44,7 +45,7 @@ class SignalQualityPlot(QWidget):
             # they shrink with the tab instead of widening it (1280×720: the tab is ~720 px)
             combo.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
             combo.setMinimumContentsLength(length)
-        self.plot = pg.PlotWidget(background="w")
+        self.plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox())
         show_grid(self.plot)
         self.plot.getAxis("left").enableAutoSIPrefix(False)
         self.inside = pg.LinearRegionItem(orientation="horizontal", movable=False,

@@ -16,6 +16,7 @@ from widgets.figure_plot import FigureRenderer
 from widgets.fringe.live_signals import LiveSignalsPanel
 from widgets.fringe.signal_quality_plot import SignalQualityPlot
 from widgets.i18n import declared, live, on_language_change, tr
+from widgets.lazy_menu_view_box import LazyMenuViewBox
 from widgets.plot_grid import IntegerAxis, show_grid
 from widgets.save_file import ask_save_file
 from widgets.screen_fit import fit_to_screen
@@ -27,8 +28,8 @@ def _plot(left: str, bottom: str, legend: bool = True, downsample: bool = True,
     """A plot; ``downsample`` only for curves that are functions of x (never a Lissajous);
     ``whole_x``: x ticks at whole numbers only (a harmonic's order). Its titles and legend
     are in the window's language (``_relabel``)."""
-    plot = pg.PlotWidget(background="w", axisItems={"bottom": IntegerAxis("bottom")}
-                         if whole_x else None)
+    plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox(),
+                         axisItems={"bottom": IntegerAxis("bottom")} if whole_x else None)
     plot.english_labels = {"left": left, "bottom": bottom}
     plot.setLabel("left", declared(left))
     plot.setLabel("bottom", declared(bottom))

@@ -11,6 +11,7 @@ from models.polygon import TITLE
 from widgets.error_plot import ErrorPlot
 from widgets.figure_plot import FigurePlot, FigureRenderer
 from widgets.i18n import declared, live, on_language_change, tr
+from widgets.lazy_menu_view_box import LazyMenuViewBox
 from widgets.plot_grid import IntegerAxis, show_grid
 from widgets.polygon.simulation import PolygonSimulation
 from widgets.reference_notice import ReferenceNotice
@@ -23,7 +24,7 @@ class TiltPlot(QWidget):
 
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
-        self.plot = pg.PlotWidget(background="w")
+        self.plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox())
         self.left_label = "AC vertical − zero (\")"  # English: shown in the window's language
         show_grid(self.plot)
         self.plot.getAxis("left").enableAutoSIPrefix(False)
@@ -54,7 +55,8 @@ class HarmonicBars(QWidget):
 
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
-        self.plot = pg.PlotWidget(background="w", axisItems={"bottom": IntegerAxis("bottom")})
+        self.plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox(),
+                                 axisItems={"bottom": IntegerAxis("bottom")})
         self.left_label = "amplitude (\")"  # English: shown in the window's language
         self._relabel()
         on_language_change(self, self._relabel)

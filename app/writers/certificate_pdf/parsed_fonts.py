@@ -13,6 +13,14 @@ object number are set at output), the width map (a defaultdict, which grows on r
 missing character) and the glyph ids. fpdf2's own copy of a font (``TTFFont.__deepcopy__``,
 for its FPDFRecorder) shares the same read-only parts.
 
+Each certificate's fontTools font is given what it would read again from the file only to
+reach the same result (:func:`_for_document`): the file's glyph order (the CJK font has no
+glyph names: fontTools makes them from its whole character map, ~0.1 s), and none of the
+layout tables fpdf2's subsetter drops on output (GDEF, GSUB, GPOS: fontTools reads them
+before it drops them, ~0.1 s; and ``kern``, which it drops where the font has GPOS). The
+bytes printed are the same (tests/app/writers/test_certificate_parsed_fonts.py: the second
+certificate of a process, made so, and the first, made as fpdf2 makes it).
+
 This reaches into fpdf2's ``TTFFont`` by its slots: where the installed fpdf2's slots are
 not the ones this was written for (:data:`KNOWN_SLOTS`), or a font needed fpdf2's
 fallback ``.notdef`` glyph drawn into its file's tables, every certificate parses its fonts
@@ -49,6 +57,10 @@ _KEPT = ("type", "name", "sp", "ss", "up", "ut", "ttffile", "fontkey", "emphasis
 #: a document's own (made in :func:`_for_document`)
 _PER_DOCUMENT = ("i", "desc", "glyph_ids", "_hbfont", "cw", "subset", "ttfont",
                  "missing_glyphs", "biggest_size_pt", "color_font")
+
+#: the layout tables fpdf2 drops from the font it embeds (fpdf/output.py: ``drop_tables``)
+#: which fontTools' subsetter reads before it drops them
+_DROPPED_LAYOUT = ("GDEF", "GSUB", "GPOS")
 
 _PARSED: dict[tuple[str, str, int, int], dict[str, Any]] = {}
 _LOCK = threading.Lock()
@@ -95,6 +107,7 @@ def _kept(font: TTFFont) -> dict[str, Any]:
     kept["desc"] = copy.copy(font.desc)
     kept["cw"] = font.cw.copy()
     kept["glyph_ids"] = dict(font.glyph_ids)
+    kept["glyph_order"] = tuple(font.ttfont.getGlyphOrder())
     return kept
 
 
@@ -111,8 +124,15 @@ def _for_document(parsed: dict[str, Any], pdf: FPDF) -> TTFFont:
     font._hbfont = None
     font.ttfont = ttLib.TTFont(font.ttffile, recalcTimestamp=False,
                                fontNumber=font.collection_font_number, lazy=True)
+    font.ttfont.setGlyphOrder(list(parsed["glyph_order"]))
     if font.is_compressed:
         font.ttfont.flavor = None
+    else:  # (fpdf2's text shaping reads a compressed font's layout from this font)
+        if "GPOS" in font.ttfont and "kern" in font.ttfont:
+            del font.ttfont["kern"]  # as the subsetter does where the font has GPOS
+        for tag in _DROPPED_LAYOUT:
+            if tag in font.ttfont:
+                del font.ttfont[tag]
     font.missing_glyphs = []
     font.biggest_size_pt = 0
     font.subset = SubsetMap(font)
