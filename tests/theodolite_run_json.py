@@ -15,7 +15,7 @@ def run_json(capsys, tmp_path, record, stated: float, per: str = "reading",
     *Per*: "reading", or "angle" between two readings)."""
     meta = tmp_path / "meta.json"
     meta.write_text(json.dumps({**details, "standards": [{
-        "description": "Autocollimating theodolite", "uncertainty": stated,
+        "description": "Autocollimating theodolite", "certificate_no": "C-7", "uncertainty": stated,
         "uncertainty_unit": "arcsec", "basis": "u", "applies_to": per}]}))
     code = main(["analyze", "theodolite", str(record), "--json", "--metadata", str(meta),
                  "--language", "en"])

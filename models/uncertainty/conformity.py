@@ -775,12 +775,22 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
     text = message(QT_TR_NOOP("Every point's {what} was judged against ±{t} with its own U; "
                               "the deciding point is {point}: |e| = {e}, U = {u}. "
                               "{sentence}"),
-                   what=what, t=tolerance_figure(t, q), point=point, e=printed(x, q, u=w),
-                   u=printed(w, q), sentence=sentence[verdict])
+                   what=what, t=tolerance_figure(t, q), point=point, **_point_figures(x, w, q),
+                   sentence=sentence[verdict])
     zones = message(QT_TR_NOOP("per point, with w = U of that point: {zones}"),
                     zones=_zones(t, w, w, rule, d, q))
     return Conformity(verdict, text, rule_text, quantity_text, zones=zones,
                       decision_risk=_risk(verdict, conforming), **values, **common)
+
+
+def _point_figures(x: float, w: float, q: str) -> dict[str, PrintedFigure]:
+    """The deciding point's |e| and U as the results table prints them ("10.3″ ± 3.1″"): the
+    value to the nearest, U the printed value to its interval's printed ends, never less than
+    U rounded up (models.uncertainty.rounding.stated_interval; until 0.8.18 U to the nearest,
+    "U = 3.0″" beside the table's "± 3.1″" for a U of 3.04″)."""
+    shown = printed_interval_figures(x, w, w, q)
+    wider = max(("lower", "upper"), key=lambda part: float(str(shown[part]).rstrip(q)))
+    return {"e": shown["value"], "u": shown[wider]}
 
 
 def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, q,

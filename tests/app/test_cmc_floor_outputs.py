@@ -96,7 +96,12 @@ def test_the_decided_interval_is_held_to_the_cmc_in_every_output(issued):
     # U₋ the value to the lower end after it is held at 0
     low = math.floor(round(decided["interval_low"] * 10, 9)) / 10
     high = math.ceil(round(decided["interval_high"] * 10, 9)) / 10
-    u = "±2.0\"" if x >= CMC else f"−{x:.1f}\"/+2.0\""
+    # U₋ and U₊ as printed: the printed value to each printed end (0.8.19, value ± U the printed
+    # interval), never below the CMC's 2.0″ on the side it holds
+    shown = round(x, 1)
+    minus, plus = round(shown - low, 1), round(high - shown, 1)
+    assert plus >= CMC
+    u = f"±{plus:.1f}\"" if minus == plus else f"−{minus:.1f}\"/+{plus:.1f}\""
     assert f"Coverage interval of the true half range {low:.1f}\" … {high:.1f}\" (U = {u}" in pdf
     assert f'Zones: pass ≤ {T - CMC:.1f}" (T − w) < conditional pass ≤ 3" (T) < conditional ' \
            f'fail ≤ {T + CMC:.1f}" (T + w) < fail' in pdf

@@ -175,7 +175,7 @@ def test_the_certificate_prints_u_from_face1_held_to_the_cmc(issued):
     assert re.search(r"^\s*1\s+0\.0000\s+[+-]\d\.\d\d\s+0\.10\s+\+0\.00\s*$", text, re.M)
     flat = " ".join(text.split())
     assert flat.count("reference point, by") == 1  # face 1's U (the layout wraps it)
-    assert "U(x_j − x_i), is at most 0.100\"." in flat
+    assert "U(x_j − x_i), is at most 0.10\"." in flat  # two significant digits (GUM 7.2.6)
     assert ("The laboratory's CMC for this quantity, U = 0.1\", holds the U stated from face 1 "
             "and the U of the difference of any two too: from face 1, at 11 of the 11 other "
             f"points the U these readings give (down to {np.min(issued['u_face1'][1:]):.2g}\") "

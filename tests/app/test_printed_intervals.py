@@ -115,6 +115,22 @@ def _outward(low: float, high: float, d: int) -> tuple[str, str]:
             str(Decimal(repr(high)).quantize(step, ROUND_CEILING)))
 
 
+def _stated(value: float, low: float, high: float, d: int) -> dict[str, str]:
+    """The printed form of a value and its interval (0.8.19, assessment 70 M1), worked out
+    here: the value to the nearest; each end outward (:func:`_outward`); each U the printed
+    value to its printed end, and never less than the U rounded up, its end moved out to
+    match; a half range's lower end held at 0 (U₋ then the printed value)."""
+    step = Decimal(1).scaleb(-d)
+    v = Decimal(f"{value:.{d}f}")
+    up = lambda x: Decimal(repr(x)).quantize(step, ROUND_CEILING)  # noqa: E731
+    lo, hi = (Decimal(t) for t in _outward(low, high, d))
+    minus = max(up(value - low), v - lo) if low > 0.0 else v
+    plus = max(up(high - value), hi - v)
+    lo_shown = max(v - minus, Decimal(0)).quantize(step)
+    return {"value": str(v), "low": str(lo_shown), "high": str((v + plus).quantize(step)),
+            "minus": str((v - lo_shown).quantize(step)), "plus": str(plus.quantize(step))}
+
+
 DECIDED = re.compile(r"Half the peak-to-peak [^:]*: (?P<value>[\d.]+)\"(?:,| as measured)"
                      r".*?[Cc]overage interval (?:of the true half range )?(?P<low>[\d.]+)\" … "
                      r"(?P<high>[\d.]+)\" \(U = (?:±(?P<u>[\d.]+)\"|−(?P<minus>[\d.]+)\"/"
@@ -131,10 +147,14 @@ def test_the_decided_interval_is_printed_from_the_jsons_ends(issued, name):
     if name == "positioning":  # every point decides: its interval in the table's own column,
         # the deciding point named in the note, its value signed ± U (0.8.17)
         d = _decimals(max(value - low, high - value))
-        low_text, high_text = _outward(low, high, d)
-        assert f"{low_text}{Q} … {high_text}{Q}" in pdf, (name, low, high)
+        shown = _stated(value, low, high, d)
+        assert f"{shown['low']}{Q} … {shown['high']}{Q}" in pdf, (name, low, high)
         assert "Every point's" in pdf and "the deciding point: target" in pdf, name
-        assert f"{value:.{d}f}{Q} ±{high - value:.{d}f}{Q}" in pdf.replace("± ", "±"), name
+        wider = max(Decimal(shown["minus"]), Decimal(shown["plus"]))
+        assert f"{shown['value']}{Q} ±{wider}{Q}" in pdf.replace("± ", "±"), name
+        # the statement's |e| and U as the table prints them (0.8.19: "U = 3.0″" beside the
+        # table's "± 3.1″" before)
+        assert f"= {shown['value']}{Q}, U = {wider}{Q}" in pdf, name
         return
     note = NOTE.search(pdf)
     assert note, name
@@ -142,7 +162,8 @@ def test_the_decided_interval_is_printed_from_the_jsons_ends(issued, name):
     # half-width that the lower end then cuts, the one printed (the raised width's)
     d = (len(note["low"].split(".")[1]) if "." in note["low"] else 0) if decided.get(
         "raised_to_cmc") else _decimals(max(value - low, high - value))
-    expected = _outward(low, high, d)
+    shown = _stated(value, low, high, d)
+    expected = (shown["low"], shown["high"])
     assert (note["low"], note["high"]) == expected, (name, note.groups(), low, high)
     found = DECIDED.search(pdf)
     if found is None:  # every point decides: the table's value ± U
@@ -156,12 +177,11 @@ def test_the_decided_interval_is_printed_from_the_jsons_ends(issued, name):
         minus = plus = found["u"]
     else:
         minus, plus = found["minus"], ("" if found["sign"] == "+" else "-") + found["plus"]
-    assert minus == f"{value - low:.{d}f}", (name, found.groups(), value - low)
-    assert plus == f"{high - value:.{d}f}", (name, found.groups(), high - value)
-    # that adds up to the printed ends within the one digit a value and its U round apart
-    step = Decimal(1).scaleb(-d)
-    assert abs(Decimal(found["value"]) - Decimal(minus) - Decimal(found["low"])) <= step
-    assert abs(Decimal(found["value"]) + Decimal(plus) - Decimal(found["high"])) <= step
+    assert minus == shown["minus"], (name, found.groups(), value - low)
+    assert plus == shown["plus"], (name, found.groups(), high - value)
+    # value ± U is the printed interval, exactly (until 0.8.18 within one digit)
+    assert Decimal(found["value"]) - Decimal(minus) == Decimal(found["low"])
+    assert Decimal(found["value"]) + Decimal(plus) == Decimal(found["high"])
 
 
 FIGURE_ROW = re.compile(r"ISO 230-2 (?P<key>[A-Za-z_]+) (?P<value>[\d.]+)\" coverage interval "
@@ -205,7 +225,9 @@ def test_the_union_with_e_halved_states_es_probability_and_its_risk(issued):
         assert e["coverage_probability"] < 0.9545  # E's study reached less
         assert decided["coverage_probability"] == pytest.approx(e["coverage_probability"])
         p = decided["coverage_probability"]
-        assert f"coverage probability {100 * p:.2f} %" in pdf, name
+        # printed as the figures table prints it ("92.5 %", not "92.50 %": 0.8.19, L5)
+        percent = f"{100 * p:.2f}".rstrip("0").rstrip(".")
+        assert f"coverage probability {percent} %" in pdf, name
         # the split normal's upper side, its σ the upper half-width over z of p
         value, t = decided["value"], decided["tolerance"]
         z = norm.ppf(0.5 * (1.0 + p))

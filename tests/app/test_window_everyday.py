@@ -114,8 +114,8 @@ def test_results_read_at_a_glance(window):
     assert view.result_splitter.sizes()[0] > before  # the technician gave it more room
     positioning = window.presenter("positioning").view
     # A to 0.1″ beside its interval 18.0 … 34.7″ (each target's own bounds, at the whole tail:
-    # 0.8.18), R to 1″ beside 3 … 28″
-    assert positioning.verdict.text().startswith("ISO 230-2:2014: A = 22.4\", R = 10\"")
+    # 0.8.18), R to 0.1″ beside 4.6 … 19.8″ (0.8.19; to 1″ beside 3 … 28″ before)
+    assert positioning.verdict.text().startswith("ISO 230-2:2014: A = 22.4\", R = 10.1\"")
     window.presenter("theodolite").table_model.set_cells([(r, 0, "") for r in range(41)])
     window.presenter("theodolite").refresh()
     assert window.presenter("theodolite").view.verdict.text().startswith("No result")

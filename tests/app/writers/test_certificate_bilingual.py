@@ -69,7 +69,9 @@ def test_a_bilingual_certificate_states_conformity_in_chinese_then_english(theod
     assert chinese != english and chinese in section and english in section
     assert section.index(chinese) < section.index(english)
     # the same value, interval and U in both, each read from the printed text
-    value, u = f"{c.value:.2f}\"", "−0.93\"/+0.49\""
+    # U₋, U₊ the printed value to the printed ends (0.8.19: value ± U is the printed interval
+    # 0.01″ … 1.45″; −0.93″/+0.49″ to the nearest before)
+    value, u = f"{c.value:.2f}\"", "−0.94\"/+0.50\""
     assert f"：{value}" in chinese and f"U={u}" in chinese
     assert f":{value}" in english and f"U={u}" in english
     assert section.count(f"U={u}") == 2

@@ -33,9 +33,10 @@ def test_the_headline_prints_each_figure_to_its_intervals_decimal(window):
         expected.append(f'{key} = {result.iso.figures[key]:.{d}f}"')
     assert shown.startswith("ISO 230-2:2014: " + ", ".join(expected)), shown
     # the sample: A to 0.1″ beside its interval 18.0 … 34.7″ (half-width 8.4″: each target's
-    # bound at the whole tail, 0.8.18; "A = 22″" beside 17 … 44″ in 0.8.17), R to 1″ (3 … 28″),
-    # never to 0.001″
-    assert shown.startswith('ISO 230-2:2014: A = 22.4", R = 10", B = 6.1"'), shown
+    # bound at the whole tail, 0.8.18; "A = 22″" beside 17 … 44″ in 0.8.17), R to 0.1″ beside
+    # 4.6 … 19.8″ (half-width 7.6″: the two-way bound at one level, 0.8.19; to 1″ beside 3 … 28″
+    # before), never to 0.001″
+    assert shown.startswith('ISO 230-2:2014: A = 22.4", R = 10.1", B = 6.1"'), shown
     # the same figure and decimal as the summary's line beside it
     summary = presenter.view.summary.toPlainText()
     a = re.search(r'ISO 230-2: A = ([-\d.]+)"', summary).group(1)
