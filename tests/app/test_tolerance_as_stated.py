@@ -13,6 +13,7 @@ import json
 import math
 import re
 import subprocess
+from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal
 
 import pytest
 
@@ -126,4 +127,11 @@ def test_positioning_in_urad_read_in_arcsec(capsys, samples_dir, tmp_path):
     assert found, text
     value = abs(sheet["Decided value (\")"])
     assert found.group(1) == f"{value:.{d}f}"
-    assert found.group(2) == f"{u:.{d}f}"
+    # U as the results table prints it: the printed value to the interval's ends rounded
+    # outward, never below U rounded up (0.8.19: value ± U is the printed interval)
+    step = Decimal(1).scaleb(-d)
+    v = Decimal(f"{value:.{d}f}")
+    up = Decimal(repr(u)).quantize(step, ROUND_CEILING)
+    high = Decimal(repr(value + u)).quantize(step, ROUND_CEILING)
+    low = Decimal(repr(value - u)).quantize(step, ROUND_FLOOR)
+    assert found.group(2) == str(max(up, high - v, v - low))
