@@ -789,7 +789,7 @@ def _point_figures(x: float, w: float, q: str) -> dict[str, PrintedFigure]:
     U rounded up (models.uncertainty.rounding.stated_interval; until 0.8.18 U to the nearest,
     "U = 3.0″" beside the table's "± 3.1″" for a U of 3.04″)."""
     shown = printed_interval_figures(x, w, w, q)
-    wider = max(("lower", "upper"), key=lambda part: float(str(shown[part]).rstrip(q)))
+    wider = max(("lower", "upper"), key=lambda part: shown[part].shown)
     return {"e": shown["value"], "u": shown[wider]}
 
 
@@ -857,8 +857,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     # U₊ and its lower end further from the value than its upper end (until 0.8.18 said of
     # every lower ≥ upper, so of half-widths raised to the CMC and printed ±0.050″ alike)
     # (the figures as printed: value ± U is the printed interval, assessment 70 M1)
-    printed_minus, printed_plus = (float(str(shown[part]).rstrip(q)) for part in ("lower", "upper"))
-    further_below = printed_minus > printed_plus
+    further_below = shown["lower"].shown > shown["upper"].shown
     if excess == 0.0:
         text = (message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} as measured, coverage "
                                    "interval {low} … {high} (U = {u}, coverage probability {p} "
@@ -879,7 +878,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                                    "{low} … {high} (U = {u}, coverage probability {p} %); the "
                                    "measured value lies above it, as noise only widens a "
                                    "measured range. {sentence}"), **said)
-                if float(f"{measured:.{d}f}") > float(str(high).rstrip(q)) else
+                if float(f"{measured:.{d}f}") > high.shown else
                 message(QT_TR_NOOP("Half the peak-to-peak {what}: {value}, the measured {measured} "
                                    "less {excess}, the median amount by which noise widens a "
                                    "measured range. Coverage interval of the true half range "

@@ -79,6 +79,7 @@ class PrintedFigure(str):
     clip: bool
     less: float | None
     stated_exactly: bool
+    shown: float  # the number as printed (on its grid; nan where "—" is printed)
 
     def __new__(cls, value: float, symbol: str, *, u: float | None = None,
                 decimals: int | None = None, rounding: str = "nearest", sign: str = "",
@@ -104,6 +105,7 @@ class PrintedFigure(str):
         figure.unit_key = unit_key or _unit_key(symbol)
         figure.interval, figure.part, figure.clip = interval, part, clip
         figure.less, figure.stated_exactly = less, stated_exactly
+        figure.shown = float(shown)
         return figure
 
     @staticmethod
