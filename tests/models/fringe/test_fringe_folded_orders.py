@@ -173,16 +173,21 @@ HEAD7 = Channels(offsets_v=(0.003, -0.004), amplitudes_v=(0.5, 0.49), quadrature
                  noise_v=0.0003)
 
 
+def _head7_fitted_to_the_5th(per_period: int):
+    """HEAD7's signals at ``per_period`` equal steps over 20 periods, fitted up to order 5."""
+    theta = equal_steps(per_period * 20, per_period)
+    u_sin, u_cos = HEAD7.sample(theta, np.random.default_rng(per_period))
+    parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
+                             "theta_deg": np.full(theta.size, np.nan)}, np.arange(theta.size))
+    return FRINGE.analyze(parsed, {"max_order": 5, "lines_per_rev": LINES,
+                                   "samples_per_period": per_period})
+
+
 def test_at_n12_the_7th_folding_into_the_fitted_5th_is_named():
     """N = 12, orders 1, 3, 5 fitted: 7 ≡ −5 (mod 12), so a 7th lands whole in A5 (the
     same as 5 into 3 at N = 8); it was analysed with nothing said. Named now, and A5 seen
     to hold it (far outside its U of the 5th alone)."""
-    theta = equal_steps(12 * 20, 12)
-    u_sin, u_cos = HEAD7.sample(theta, np.random.default_rng(12))
-    parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
-                             "theta_deg": np.full(theta.size, np.nan)}, np.arange(theta.size))
-    result = FRINGE.analyze(parsed, {"max_order": 5, "lines_per_rev": LINES,
-                                     "samples_per_period": 12})
+    result = _head7_fitted_to_the_5th(12)
     assert result.sin_fit.orders == (1, 3, 5)
     assert result.folded_orders == ((7, 5),)
     assert any("A5 and B5 hold any harmonic of order 7: orders 7 and 5 alias at N = 12" in w
@@ -195,11 +200,6 @@ def test_at_n16_the_7th_is_resolved_and_fitted_and_the_next_order_named():
     """N = 16: order 7 is below half the phases, so the residuals show it and it is fitted,
     not folded; the next odd order above it, 9 ≡ −7 (mod 16), is then the one looked at and
     named (signals that hold a 7th may hold a 9th); 11 ≡ −5 is not looked at."""
-    theta = equal_steps(16 * 20, 16)
-    u_sin, u_cos = HEAD7.sample(theta, np.random.default_rng(16))
-    parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
-                             "theta_deg": np.full(theta.size, np.nan)}, np.arange(theta.size))
-    result = FRINGE.analyze(parsed, {"max_order": 5, "lines_per_rev": LINES,
-                                     "samples_per_period": 16})
+    result = _head7_fitted_to_the_5th(16)
     assert 7 in result.sin_fit.orders
     assert result.folded_orders == ((9, 7),)
