@@ -8,9 +8,7 @@ from __future__ import annotations
 
 import re
 
-import numpy as np
-
-from tests.repeatability_rig import theodolite_passes_csv
+from tests.theodolite_run_json import passes_summary
 
 WOULD_BE = re.compile(r"would be (-?[\d.]+)\" … (-?[\d.]+)\"")
 
@@ -20,13 +18,7 @@ def _decimals(text: str) -> int:
 
 
 def test_both_ends_of_a_withheld_interval_are_quoted_to_one_decimal(tmp_path, capsys):
-    from app.main import main
-
-    text, _ = theodolite_passes_csv("varying", 13, 2, 0.3, np.random.default_rng(6909))
-    csv = tmp_path / "passes2.csv"
-    csv.write_text(text, encoding="utf-8")
-    assert main(["analyze", "theodolite", str(csv), "--language", "en"]) == 0
-    out = capsys.readouterr().out
+    out = passes_summary(capsys, tmp_path, 2, 6909)
     quoted = WOULD_BE.findall(out)
     assert len(quoted) >= 3, out  # R_up, R_down, R at least
     for low, high in quoted:

@@ -15,6 +15,7 @@ import pytest
 
 from app.main import main
 from tests.repeatability_rig import theodolite_passes_csv
+from tests.theodolite_run_json import passes_summary
 
 REPEATABILITY = ("R", "R_up", "R_down")
 BANDS = ("A", "A_up", "A_down")  # μ ± 2σ from each θ's own bounds (0.8.17): alike
@@ -52,11 +53,7 @@ def test_three_passes_keep_R_intervals(tmp_path, capsys):
 
 
 def test_two_passes_summary_says_why_R_has_no_interval(tmp_path, capsys):
-    text, _ = theodolite_passes_csv("varying", 13, 2, 0.3, np.random.default_rng(6804))
-    csv = tmp_path / "passes2.csv"
-    csv.write_text(text, encoding="utf-8")
-    assert main(["analyze", "theodolite", str(csv), "--language", "en"]) == 0
-    out = capsys.readouterr().out
+    out = passes_summary(capsys, tmp_path, 2, 6804)
     intervals = next(line for line in out.splitlines() if line.startswith("Coverage intervals"))
     assert " R " not in intervals and "R_up " not in intervals and "E " in intervals
     for key in (*REPEATABILITY, *BANDS):
