@@ -101,9 +101,11 @@ PARAMETERS = (
                    "the same way in every mounting is a ramp over the encoder's steps that the "
                    "readings cannot tell from the encoder's error: its exact effect for a "
                    "linear drift up to this over a mounting (a full turn), in every such "
-                   "mounting, enters the uncertainty (rectangular); 0: none stated, and the "
-                   "encoder's U is then withheld (the face deviations are not affected by a "
-                   "drift common to the mountings)"),
+                   "mounting, enters the uncertainty (rectangular); with σ of a reading "
+                   "stated, each such mounting drifting its own way up to this too (that "
+                   "moves the face deviations as well); 0: none stated, and the encoder's U "
+                   "is then withheld (the face deviations are not affected by a drift common "
+                   "to the mountings)"),
     Parameter("certificate_of", "certificate of", "choice", "polygon",
               choices=(("polygon", "the polygon (face deviations)"),
                        ("encoder", "the encoder (error at its steps)")),
@@ -186,11 +188,14 @@ class CrossCalResult:
 
     @property
     def outliers(self) -> np.ndarray:
-        """Indices of the readings whose residual exceeds OUTLIER_SIGMAS·σ."""
+        """Indices of the readings whose residual exceeds OUTLIER_SIGMAS·σ (the residuals σ
+        is judged by: in the "report" mode those with the drifts fitted)."""
         s = self.solution
         if not s.sigma_arcsec > 0:
             return np.zeros(0, dtype=int)
-        return np.flatnonzero(np.abs(s.residuals_arcsec) > OUTLIER_SIGMAS * s.sigma_arcsec)
+        residuals = (s.scatter_residuals_arcsec if s.scatter_residuals_arcsec.size
+                     else s.residuals_arcsec)
+        return np.flatnonzero(np.abs(residuals) > OUTLIER_SIGMAS * s.sigma_arcsec)
 
     def encoder_runs_arcsec(self) -> np.ndarray:
         """Each mounting's own estimate of the encoder's error at each step (mountings ×
@@ -300,10 +305,14 @@ class CrossCalResult:
 
     def systematic_u_arcsec(self, combine=None) -> np.ndarray:
         """Standard uncertainty of (E, d) — or of ``combine``·(E, d) — from the bench's stated
-        bounds (the autocollimator's scale error; the tilt when not measured), each
-        rectangular, through the design (models.crosscal.uncertainty)."""
+        bounds (the autocollimator's scale error; the tilt when not measured; the drift of a
+        mounting with no closure reading), each rectangular, through the design, and the bias
+        the closure drifts reported, not removed, leave (in quadrature, as in the budget)
+        (models.crosscal.uncertainty)."""
         from models.crosscal.uncertainty import (
             drift_effect_arcsec,
+            own_drift_effect_arcsec,
+            reported_drift_bias_arcsec,
             roll_effect_arcsec,
             scale_effect_arcsec,
             tilt_effect_arcsec,
@@ -315,8 +324,10 @@ class CrossCalResult:
                                   combine=combine)
         roll = math.radians(self.ac_roll_arcmin / 60.0) * roll_effect_arcsec(
             s, r.ac_y_arcsec, combine)
-        drift = self.drift_bound_arcsec * drift_effect_arcsec(s, combine)
-        return np.sqrt(scale**2 + tilt**2 + roll**2 + drift**2) / math.sqrt(3.0)
+        drift = self.drift_bound_arcsec * np.hypot(drift_effect_arcsec(s, combine),
+                                                   own_drift_effect_arcsec(s, combine))
+        bias = reported_drift_bias_arcsec(s, combine)
+        return np.sqrt((scale**2 + tilt**2 + roll**2 + drift**2) / 3.0 + bias**2)
 
     def cross_correlation(self) -> float:
         """The largest |correlation| between an encoder error and a face deviation."""
