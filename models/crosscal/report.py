@@ -300,9 +300,14 @@ def budget_remarks(result) -> tuple[str, ...]:
                                   "its closure drift leaves is a row above")}[result.drift_mode]
     said = message(drift)
     if result.unchecked_drift_mountings:  # mountings with no closure reading
+        from models.crosscal.uncertainty import drift_effect_arcsec, own_drift_effect_arcsec
+
+        block = _item_block(result)
+        moved = result.drift_bound_arcsec * np.hypot(drift_effect_arcsec(s)[block],
+                                                     own_drift_effect_arcsec(s)[block])
         said = message(QT_TR_NOOP("where a mounting ends with a closure reading, {how}; where "
                                   "none does, its row above, from the drift bound stated")
-                       if result.certificate_of == "encoder" else
+                       if np.max(moved, initial=0.0) > 1e-9 else
                        QT_TR_NOOP("where a mounting ends with a closure reading, {how}; where "
                                   "none does, a drift the same in every mounting does not move "
                                   "the face deviations, and what differs between mountings is "
@@ -431,6 +436,9 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
     if item == "encoder" and values is not None and result.encoder_u_withheld is not None:
         raise MetadataError(message(QT_TR_NOOP("no certificate of the encoder: {reason}"),
                                     reason=result.encoder_u_withheld))
+    if item == "polygon" and values is not None and result.polygon_u_withheld is not None:
+        raise MetadataError(message(QT_TR_NOOP("no certificate of the polygon: {reason}"),
+                                    reason=result.polygon_u_withheld))
     if values is None:
         raise MetadataError(message(QT_TR_NOOP(
             "no certificate: this design does not determine the {what} (harmonic(s) {orders} "

@@ -11,7 +11,8 @@ Two findings of the last stop:
 2. Mountings without a closure reading and σ stated: the drift bound held only a drift the
    same in every mounting (a ramp over the encoder's steps). A drift that differs between
    mountings moves the encoder's errors and the face deviations too, and with σ stated
-   nothing in the scatter holds it: each mounting's own drift is now bounded as well.
+   nothing in the scatter holds it: each mounting's own drift is now bounded as well, and
+   with no bound stated the face deviations' U is withheld as the encoder's is.
 
 The bench (tests/crosscal_simulator.py, numpy only) drifts its autocollimator's zero
 linearly in time within each mounting, each mounting its own drift (``drifts_arcsec`` sets
@@ -26,7 +27,8 @@ import numpy as np
 import pytest
 
 from models.certificate.metadata import CertificateMetadata
-from models.crosscal.analysis import to_json
+from models.certificate.uncertainty_json import workbench_uncertainty_json
+from models.crosscal.analysis import summary, to_json, verdict
 from models.crosscal.report import crosscal_budget
 from models.readings.sheet import ReadingsSheet
 from models.registry import KINDS
@@ -206,6 +208,52 @@ def test_with_sigma_stated_and_no_bound_the_encoders_u_stays_withheld():
     out = to_json(analyze(b.rows((0, 1), closure=False), noise_arcsec=0.02))
     assert out["encoder_error_U_arcsec"] is None
     assert "closure reading" in str(out["encoder_error_U_withheld"])
+
+
+@pytest.mark.parametrize("closure", [False, {0}])
+def test_a_drift_that_moves_the_faces_with_no_bound_withholds_their_u(closure):
+    """Mountings 0, 1, σ stated, no drift bound: with no closure reading at all, or one in
+    mounting 0 only (mounting 1's drift then is not shared by the other), a drift of theirs
+    moves the face deviations (the bench: up to a third of an arcsecond here), which nothing
+    in the readings bounds. Before, the face deviations' U was given as if it did not; now
+    it is withheld, with the encoder's, and the polygon's certificate and the reference sent
+    to the polygon workbench are refused, naming what to add; a bound stated gives both."""
+    moved = bench(34, noise_arcsec=0.0, drifts_arcsec={0: 0.3, 1: -0.3})
+    still = bench(34, noise_arcsec=0.0, drifts_arcsec={0: 0.0, 1: 0.0})
+    shift = (analyze(moved.rows((0, 1), closure=closure), noise_arcsec=0.02)
+             .solution.polygon_deviation_arcsec
+             - analyze(still.rows((0, 1), closure=closure), noise_arcsec=0.02)
+             .solution.polygon_deviation_arcsec)
+    assert np.max(np.abs(shift)) > 0.25, shift
+    rows = bench(35, noise_arcsec=0.02, drift_arcsec=BOUND).rows((0, 1), closure=closure)
+    result = analyze(rows, noise_arcsec=0.02)
+    out = to_json(result)
+    assert out["polygon_deviation_U_arcsec"] is None
+    assert out["polygon_deviation_U_from_face1_arcsec"] is None
+    assert "closure reading" in str(out["polygon_deviation_U_withheld"])
+    assert out["encoder_error_U_arcsec"] is None
+    assert out["polygon_deviation_arcsec"] is not None  # the values stay, labelled
+    assert "U withheld" in summary(result) and "withheld" in verdict(result)
+    extra = workbench_uncertainty_json(KIND, result, details(), None)
+    assert extra["expanded_uncertainty_polygon_deviation_arcsec"] is None
+    assert "face deviations' U is withheld" in str(extra["uncertainty_withheld"])
+    with pytest.raises(ValueError, match="closure reading"):
+        KIND.certificate(result, details())
+    with pytest.raises(ValueError, match="closure reading"):
+        KIND.sent_reference(result, details())
+    bounded = analyze(rows, noise_arcsec=0.02, drift_bound_arcsec=BOUND)
+    assert to_json(bounded)["polygon_deviation_U_arcsec"] is not None
+    KIND.certificate(bounded, details())
+    KIND.sent_reference(bounded, details())
+
+
+def test_with_sigma_from_the_residuals_the_faces_u_stays_given_without_a_bound():
+    """No closure reading in any mounting, σ from the residuals: a drift the same in every
+    mounting does not move the faces, what differs is in the scatter; their U is given."""
+    rows = bench(36, noise_arcsec=0.05, drift_arcsec=BOUND).rows((0, 1, 5), closure=False)
+    out = to_json(analyze(rows))
+    assert out["polygon_deviation_U_arcsec"] is not None
+    assert "polygon_deviation_U_withheld" not in out
 
 
 @pytest.mark.slow  # 120 runs, ~3 s
