@@ -42,7 +42,9 @@ Drift (``drift``), as in the polygon workbench, from the closure reading:
 * ``"report"``: H is reported and judged against ``closure_limit_arcsec`` but not
   removed; the closure reading is left out of the fit. The drift left in the readings
   moves the results by −Σ_j H_j·G_j·(t/n) (the bias the budget carries:
-  models.crosscal.uncertainty.reported_drift_bias_arcsec).
+  models.crosscal.uncertainty.reported_drift_bias_arcsec); σ, when taken from the
+  residuals, is the readings' noise: from the fit with those drifts fitted, the closure
+  readings used (``scatter_residuals_arcsec``), not swollen by the drift left in.
 
 H itself (``closure_drift_arcsec``) is given in every mode.
 
