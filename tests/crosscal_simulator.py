@@ -30,8 +30,10 @@ constraints or the polygon workbench's tilt equations. Frames and senses:
   turns the shaft so each face in turn stands within ±``stop_arcsec`` of the AC's null
   (faces j+1, j+2, … as the encoder counts its steps), and, with ``closure``, once more to
   the first face after a full turn. The AC's zero drifts linearly in time within each
-  mounting (by up to ±``drift_arcsec`` over its n steps; with ``drift_common`` the same
-  drift in every mounting); both readings have Gaussian
+  mounting (by up to ±``drift_arcsec`` over its n steps, drawn for each mounting on its own;
+  with ``drift_common`` the same drift in every mounting; ``drifts_arcsec`` sets a mounting's
+  drift over its n steps outright), the closure reading carrying n/n of it; both readings
+  have Gaussian
   noise σ = ``noise_arcsec``. The AC's horizontal scale may be off by ``ac_scale`` (relative):
   it then indicates (1 + s) times the face normal's angle from its null.
 """
@@ -72,6 +74,9 @@ class Bench:
     #: the AC's zero drifts the same in every mounting (thermal drift the same way all day):
     #: one drift over a mounting, uniform within ±drift_arcsec, drawn for the whole run
     drift_common: bool = False
+    #: mounting j -> its drift over its n steps, ″, as given (the draw above still made, so the
+    #: other draws stay those of the same seed): mountings drifting each their own way
+    drifts_arcsec: dict[int, float] | None = None
     rng: np.random.Generator = field(default_factory=lambda: np.random.default_rng(0))
 
     def __post_init__(self) -> None:
@@ -151,6 +156,8 @@ class Bench:
             drift = float(self.rng.uniform(-1, 1) * self.drift_arcsec)
             if self.drift_common:
                 drift = self.common_drift_arcsec
+            if self.drifts_arcsec is not None and j in self.drifts_arcsec:
+                drift = float(self.drifts_arcsec[j])
             self.mounts.append({"mounting": j, "seat_deg": seat, "psi_arcsec": psi,
                                 "omega_rad": omega, "drift_arcsec": drift})
             closed = closure if isinstance(closure, bool) else j in closure

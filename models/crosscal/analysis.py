@@ -26,7 +26,7 @@ from models.crosscal.export import (
 from models.crosscal.figures import ENCODER_FIGURES_NO_INTERVAL, encoder_figures
 from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
-from models.messages import QT_TR_NOOP, Message, joined, lines, message, reason_of
+from models.messages import QT_TR_NOOP, Message, joined, lines, message, reason_of, separated
 from models.parameters import Parameter
 from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
@@ -101,9 +101,11 @@ PARAMETERS = (
                    "the same way in every mounting is a ramp over the encoder's steps that the "
                    "readings cannot tell from the encoder's error: its exact effect for a "
                    "linear drift up to this over a mounting (a full turn), in every such "
-                   "mounting, enters the uncertainty (rectangular); 0: none stated, and the "
-                   "encoder's U is then withheld (the face deviations are not affected by a "
-                   "drift common to the mountings)"),
+                   "mounting, enters the uncertainty (rectangular); with σ of a reading "
+                   "stated, each such mounting drifting its own way up to this too (that "
+                   "moves the face deviations as well); 0: none stated, and the encoder's U "
+                   "is then withheld (the face deviations are not affected by a drift common "
+                   "to the mountings)"),
     Parameter("certificate_of", "certificate of", "choice", "polygon",
               choices=(("polygon", "the polygon (face deviations)"),
                        ("encoder", "the encoder (error at its steps)")),
@@ -171,6 +173,37 @@ class CrossCalResult:
             "drift_bound_arcsec in the metadata)"), mountings=", ".join(map(str, unchecked)))
 
     @property
+    def polygon_u_withheld(self) -> str | None:
+        """Why the face deviations' U is not given (None when it is): mountings without a
+        closure reading, no drift bound stated, and a drift of theirs that moves the face
+        deviations — one that differs from mounting to mounting with σ stated (taken from the
+        residuals, the scatter holds it), or one not shared by every mounting (a mounting
+        with no closure reading among others whose drift is fitted). A drift the same way in
+        every mounting does not move them (it follows the steps): then the U is given."""
+        from models.crosscal.uncertainty import drift_effect_arcsec, own_drift_effect_arcsec
+
+        unchecked = self.unchecked_drift_mountings
+        if not unchecked or self.drift_bound_arcsec > 0:
+            return None
+        s, n = self.solution, self.faces
+        moved = np.hypot(drift_effect_arcsec(s), own_drift_effect_arcsec(s))[n:]
+        if not np.max(moved, initial=0.0) > 1e-9:
+            return None
+        return message(QT_TR_NOOP(
+            "the face deviations' U is withheld: mounting(s) {mountings} have no closure "
+            "reading, so the autocollimator's drift is not measured, and a drift that differs "
+            "from mounting to mounting moves the face deviations, which nothing in these "
+            "readings bounds (σ stated, or a drift not shared by every mounting); add a closure "
+            "reading to each mounting (its first face read again at the end) or state the "
+            "largest drift over a mounting (the setting \"largest autocollimator drift over a "
+            "mounting\"; --drift-bound-arcsec, drift_bound_arcsec in the metadata)"),
+            mountings=", ".join(map(str, unchecked)))
+
+    def u_withheld(self, item: str) -> str | None:
+        """Why ``item``'s U ("encoder", "polygon") is not given, or None."""
+        return self.encoder_u_withheld if item == "encoder" else self.polygon_u_withheld
+
+    @property
     def cmc(self) -> float:
         """The laboratory's CMC for the certificate's item (0: none stated)."""
         return self.cmc_encoder_arcsec if self.certificate_of == "encoder" else self.cmc_polygon_arcsec
@@ -186,11 +219,14 @@ class CrossCalResult:
 
     @property
     def outliers(self) -> np.ndarray:
-        """Indices of the readings whose residual exceeds OUTLIER_SIGMAS·σ."""
+        """Indices of the readings whose residual exceeds OUTLIER_SIGMAS·σ (the residuals σ
+        is judged by: in the "report" mode those with the drifts fitted)."""
         s = self.solution
         if not s.sigma_arcsec > 0:
             return np.zeros(0, dtype=int)
-        return np.flatnonzero(np.abs(s.residuals_arcsec) > OUTLIER_SIGMAS * s.sigma_arcsec)
+        residuals = (s.scatter_residuals_arcsec if s.scatter_residuals_arcsec.size
+                     else s.residuals_arcsec)
+        return np.flatnonzero(np.abs(residuals) > OUTLIER_SIGMAS * s.sigma_arcsec)
 
     def encoder_runs_arcsec(self) -> np.ndarray:
         """Each mounting's own estimate of the encoder's error at each step (mountings ×
@@ -279,10 +315,12 @@ class CrossCalResult:
 
 
         e, d = (budget.expanded for budget in self.bench_budgets)
-        e = np.asarray(e, dtype=float)
+        e, d = np.asarray(e, dtype=float), np.asarray(d, dtype=float)
         if self.encoder_u_withheld is not None:  # not determined: no figure (NaN)
             e = np.full(e.shape, np.nan)
-        return e, np.asarray(d, dtype=float)
+        if self.polygon_u_withheld is not None:
+            d = np.full(d.shape, np.nan)
+        return e, d
 
     @functools.cached_property
     def bench_budgets(self) -> tuple[UncertaintyBudget, UncertaintyBudget]:
@@ -300,10 +338,14 @@ class CrossCalResult:
 
     def systematic_u_arcsec(self, combine=None) -> np.ndarray:
         """Standard uncertainty of (E, d) — or of ``combine``·(E, d) — from the bench's stated
-        bounds (the autocollimator's scale error; the tilt when not measured), each
-        rectangular, through the design (models.crosscal.uncertainty)."""
+        bounds (the autocollimator's scale error; the tilt when not measured; the drift of a
+        mounting with no closure reading), each rectangular, through the design, and the bias
+        the closure drifts reported, not removed, leave (in quadrature, as in the budget)
+        (models.crosscal.uncertainty)."""
         from models.crosscal.uncertainty import (
             drift_effect_arcsec,
+            own_drift_effect_arcsec,
+            reported_drift_bias_arcsec,
             roll_effect_arcsec,
             scale_effect_arcsec,
             tilt_effect_arcsec,
@@ -315,8 +357,10 @@ class CrossCalResult:
                                   combine=combine)
         roll = math.radians(self.ac_roll_arcmin / 60.0) * roll_effect_arcsec(
             s, r.ac_y_arcsec, combine)
-        drift = self.drift_bound_arcsec * drift_effect_arcsec(s, combine)
-        return np.sqrt(scale**2 + tilt**2 + roll**2 + drift**2) / math.sqrt(3.0)
+        drift = self.drift_bound_arcsec * np.hypot(drift_effect_arcsec(s, combine),
+                                                   own_drift_effect_arcsec(s, combine))
+        bias = reported_drift_bias_arcsec(s, combine)
+        return np.sqrt((scale**2 + tilt**2 + roll**2 + drift**2) / 3.0 + bias**2)
 
     def cross_correlation(self) -> float:
         """The largest |correlation| between an encoder error and a face deviation."""
@@ -438,7 +482,8 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
         "encoder_error_U_arcsec": None if s.encoder_error_arcsec is None
         or result.encoder_u_withheld is not None else _list(u_e),
         "polygon_deviation_arcsec": _list(s.polygon_deviation_arcsec),
-        "polygon_deviation_U_arcsec": None if s.polygon_deviation_arcsec is None else _list(u_d),
+        "polygon_deviation_U_arcsec": None if s.polygon_deviation_arcsec is None
+        or result.polygon_u_withheld is not None else _list(u_d),
         "coverage_factor": s.coverage_factor,
         "sigma_arcsec": s.sigma_arcsec,
         "dof": s.dof,
@@ -458,6 +503,8 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
     }
     if result.encoder_u_withheld is not None:  # the encoder's U null, and why
         out["encoder_error_U_withheld"] = result.encoder_u_withheld
+    if result.polygon_u_withheld is not None:  # the face deviations' U null, and why
+        out["polygon_deviation_U_withheld"] = result.polygon_u_withheld
     # not separable (E or d not determined): what the design does see, labelled, never the result
     d = s.polygon_deviation_arcsec
     if s.encoder_error_arcsec is None or d is None:
@@ -468,7 +515,9 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
             "polygon_deviation_without_them_arcsec": _list(s.polygon_deviation_determined_arcsec)}
     else:
         out["polygon_deviation_from_face1_arcsec"] = _list(d - d[0])  # reference "face 1"
-        out["polygon_deviation_U_from_face1_arcsec"] = _list(result.polygon_u_from_face1_arcsec())
+        out["polygon_deviation_U_from_face1_arcsec"] = (
+            None if result.polygon_u_withheld is not None
+            else _list(result.polygon_u_from_face1_arcsec()))
         # the encoder's errors referred to step 0 (E_k − E_0, the certificate's "From step 0"
         # column): their U and k beside them come from uncertainty_budgets (#39's rule)
         e = s.encoder_error_arcsec
@@ -518,7 +567,12 @@ def summary(result: CrossCalResult, printed: Mapping[str, float] | None = None) 
                                       "encoder")))
     else:
         out.append(message(QT_TR_NOOP("Encoder error NOT determined (withheld)")))
-    if s.polygon_deviation_arcsec is not None:
+    if s.polygon_deviation_arcsec is not None and result.polygon_u_withheld is not None:
+        face = _printed(s.polygon_deviation_arcsec, math.nan, None, "polygon")
+        out.append(message(QT_TR_NOOP("Face deviations {span} (about their mean), U withheld: "
+                                      "drift not measured (no closure reading) and no drift "
+                                      "bound stated"), span=face["span"]))
+    elif s.polygon_deviation_arcsec is not None:
         face = _printed(s.polygon_deviation_arcsec, float(np.max(result.expanded_u_arcsec[1])),
                         printed, "polygon")
         out.append(message(QT_TR_NOOP("Face deviations {span} (about their mean), U up to {u}"),
@@ -557,6 +611,10 @@ def verdict(result: CrossCalResult, printed: Mapping[str, float] | None = None) 
     encoder = _printed(e, float(np.max(result.expanded_u_arcsec[0])), printed, "encoder")
     face = _printed(d, float(np.max(result.expanded_u_arcsec[1])), printed, "polygon")
     low, high = face["span"].split(" … ")
+    if result.polygon_u_withheld is not None:  # (the encoder's is then withheld too)
+        return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp}, face deviations {low} … "
+                                  "{high} (U of both withheld: drift not measured)"),
+                       ptp=encoder["ptp"], low=low, high=high)
     if result.encoder_u_withheld is not None:
         return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U withheld: drift not "
                                   "measured); face deviations {low} … {high} (U ≤ {ud})"),
@@ -707,12 +765,16 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
         if result.encoder_u_withheld is not None:  # the encoder's U null (to_json says why)
             budgets["encoder_error_arcsec"] = None
             budgets["encoder_error_from_step0_arcsec"] = None
+        if result.polygon_u_withheld is not None:  # the face deviations' U null, likewise
+            budgets["polygon_deviation_arcsec"] = None
+            budgets["polygon_deviation_from_face1_arcsec"] = None
         return budgets
 
     def uncertainty_withheld(self, result):
         # the encoder's U null (no closure reading, no drift bound): why, whichever item is
         # certified (its arrays' U are null in either JSON)
-        return result.encoder_u_withheld or ""
+        return separated([result.encoder_u_withheld or "", result.polygon_u_withheld or ""],
+                         "; ")
 
     def certified_cmc_setting(self, settings):
         item = str((settings or {}).get("certificate_of", "polygon"))
@@ -725,11 +787,12 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
         if not result.solution.separable:
             return {}
         budgets = self.uncertainty_budgets(result, metadata, settings)
-        encoder = budgets["encoder_error_arcsec"]
+        encoder, polygon = budgets["encoder_error_arcsec"], budgets["polygon_deviation_arcsec"]
+        from_face1 = budgets["polygon_deviation_from_face1_arcsec"]
         return {"encoder_error_U_arcsec": None if encoder is None else _list(encoder.expanded),
-                "polygon_deviation_U_arcsec": _list(budgets["polygon_deviation_arcsec"].expanded),
+                "polygon_deviation_U_arcsec": None if polygon is None else _list(polygon.expanded),
                 "polygon_deviation_U_from_face1_arcsec":
-                    _list(budgets["polygon_deviation_from_face1_arcsec"].expanded)}
+                    None if from_face1 is None else _list(from_face1.expanded)}
 
     def correction_table(self, result, settings, path, metadata=None) -> str:
         """The polygon's deviations as the polygon workbench reads a certificate (--table,

@@ -39,11 +39,13 @@ def comparators_stated(metadata: Any) -> bool:
 
 def polygon_deviations(result: CrossCalResult) -> np.ndarray:
     """The polygon's face deviations d_i (″); ValueError when the design does not
-    determine them."""
+    determine them, or their U is withheld (CrossCalResult.polygon_u_withheld)."""
     d = result.solution.polygon_deviation_arcsec
     if d is None:
         raise ValueError(message(QT_TR_NOOP("the face deviations are not determined by this "
                                             "design: nothing to send")))
+    if result.polygon_u_withheld is not None:  # a reference without its U is no reference
+        raise ValueError(result.polygon_u_withheld)
     return d
 
 

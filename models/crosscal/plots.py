@@ -90,10 +90,14 @@ def polygon_figure(result, u=None) -> PlotFigure | None:
     if s.polygon_deviation_arcsec is None:
         return None
     faces = np.arange(1, result.faces + 1, dtype=float)
+    if result.polygon_u_withheld is not None:  # no closure reading, no drift bound: no band
+        series = PlotSeries(QT_TR_NOOP("face deviation (U withheld: drift not measured)"), faces,
+                            s.polygon_deviation_arcsec, GREEN, True, role="corrected")
+    else:
+        series = PlotSeries(QT_TR_NOOP("face deviation ± U"), faces, s.polygon_deviation_arcsec,
+                            GREEN, True, band=_band(result, 1, u), role="corrected")
     return PlotFigure(QT_TR_NOOP("Polygon face deviations with U"), QT_TR_NOOP("face"),
-                      QT_TR_NOOP("deviation (\")"), (
-        PlotSeries(QT_TR_NOOP("face deviation ± U"), faces, s.polygon_deviation_arcsec, GREEN, True,
-                   band=_band(result, 1, u), role="corrected"),))
+                      QT_TR_NOOP("deviation (\")"), (series,))
 
 
 def residual_figure(result) -> PlotFigure:

@@ -197,6 +197,8 @@ def _systematic_components(result, u_scatter: np.ndarray) -> list[BudgetComponen
     from models.crosscal.uncertainty import (
         drift_effect_arcsec,
         drift_pattern_arcsec,
+        own_drift_effect_arcsec,
+        reported_drift_bias_arcsec,
         roll_pattern_arcsec,
         scale_effect_arcsec,
         tilt_effect_arcsec,
@@ -252,6 +254,29 @@ def _systematic_components(result, u_scatter: np.ndarray) -> list[BudgetComponen
                                "the same in all of them, through the design"),
                     mountings=", ".join(map(str, unchecked)),
                     drift=f"{result.drift_bound_arcsec:g}\""), common=True))
+    own = result.drift_bound_arcsec * own_drift_effect_arcsec(s)[block]
+    if unchecked and np.max(own, initial=0.0) > 1e-9:  # σ stated, two such mountings or more
+        out.append(BudgetComponent(
+            QT_TR_NOOP("Autocollimator drift, each mounting its own (no closure reading)"), "B",
+            "rectangular", own, math.sqrt(3.0), 1.0, math.inf,
+            message(QT_TR_NOOP("σ stated, so the reading scatter holds no drift that differs "
+                               "between mountings: each of mounting(s) {mountings} drifting its "
+                               "own way up to ±{drift} (stated, not measured), what that adds "
+                               "beyond the same drift in all of them, through the design"),
+                    mountings=", ".join(map(str, unchecked)),
+                    drift=f"{result.drift_bound_arcsec:g}\"")))
+    bias = reported_drift_bias_arcsec(s)[block]
+    if np.max(np.abs(bias), initial=0.0) > 1e-9:  # "report": the closure drifts left in
+        closures = result.closure_arcsec[np.isfinite(result.closure_arcsec)]
+        # a known bias not corrected, in quadrature (RSS_u, as the polygon workbench carries
+        # its drift: U = k·√(u_c² + b²) covers at ≥ 95 % for k = 2 whatever b/u_c)
+        out.append(BudgetComponent(
+            QT_TR_NOOP("Autocollimator drift, reported, not removed"), "B", "normal",
+            np.abs(bias), 1.0, np.where(bias < 0, -1.0, 1.0), math.inf,
+            message(QT_TR_NOOP("the closure drifts {closures} (beyond their reading noise) left "
+                               "in the readings, linear over each mounting: the bias they leave, "
+                               "through the design, in quadrature"),
+                    closures=", ".join(f"{c:+.3f}" for c in closures) + "\""), common=True))
     fitted = tilt_fit_effect_arcsec(s, r.mounting, r.position)[block]
     if np.any(fitted > 0) and np.max(fitted) > 0.1 * np.min(u_scatter):
         out.append(BudgetComponent(
@@ -271,13 +296,18 @@ def budget_remarks(result) -> tuple[str, ...]:
                                "left of it is in the reading scatter"),
              "spread": QT_TR_NOOP("each mounting's closure drift is removed, so what is left of "
                                   "it is in the reading scatter"),
-             "report": QT_TR_NOOP("each mounting's drift is reported, not removed; within a "
-                                  "mounting it is in the reading scatter")}[result.drift_mode]
+             "report": QT_TR_NOOP("each mounting's drift is reported, not removed: the bias "
+                                  "its closure drift leaves is a row above")}[result.drift_mode]
     said = message(drift)
     if result.unchecked_drift_mountings:  # mountings with no closure reading
+        from models.crosscal.uncertainty import drift_effect_arcsec, own_drift_effect_arcsec
+
+        block = _item_block(result)
+        moved = result.drift_bound_arcsec * np.hypot(drift_effect_arcsec(s)[block],
+                                                     own_drift_effect_arcsec(s)[block])
         said = message(QT_TR_NOOP("where a mounting ends with a closure reading, {how}; where "
                                   "none does, its row above, from the drift bound stated")
-                       if result.certificate_of == "encoder" else
+                       if np.max(moved, initial=0.0) > 1e-9 else
                        QT_TR_NOOP("where a mounting ends with a closure reading, {how}; where "
                                   "none does, a drift the same in every mounting does not move "
                                   "the face deviations, and what differs between mountings is "
@@ -365,7 +395,12 @@ def _pair_systematic_u2(result, item: str, metadata: CertificateMetadata | None 
     """A bound on the squared standard uncertainty that the bench's stated bounds (scale,
     unmeasured tilt; rectangular) add to the difference of two values of the set: the scale
     effect's largest difference within the set, and twice the largest tilt effect."""
-    from models.crosscal.uncertainty import drift_effect_arcsec, tilt_effect_arcsec
+    from models.crosscal.uncertainty import (
+        drift_effect_arcsec,
+        own_drift_effect_arcsec,
+        reported_drift_bias_arcsec,
+        tilt_effect_arcsec,
+    )
 
     n, s, r = result.faces, result.solution, result.readings
     block = slice(0, n) if item == "encoder" else slice(n, 2 * n)
@@ -384,8 +419,13 @@ def _pair_systematic_u2(result, item: str, metadata: CertificateMetadata | None 
                 from models.uncertainty.budget import divisor_for_basis
 
                 comparators += (stated / divisor_for_basis(std.basis)[0]) ** 2 * spread
-    drift = 2.0 * result.drift_bound_arcsec * float(np.max(drift_effect_arcsec(s)[block]))
-    return (scale**2 + tilt**2 + drift**2) / 3.0 + comparators
+    # the drift bound's rows in quadrature (the same drift in every mounting; σ stated, each
+    # its own), twice the largest; the drift reported and left in: its bias's largest
+    # difference within the set (a known pattern, in quadrature)
+    drift = 2.0 * result.drift_bound_arcsec * float(np.max(np.hypot(
+        drift_effect_arcsec(s)[block], own_drift_effect_arcsec(s)[block])))
+    bias = float(np.ptp(reported_drift_bias_arcsec(s)[block]))
+    return (scale**2 + tilt**2 + drift**2) / 3.0 + comparators + bias**2
 
 
 def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str = "",
@@ -396,6 +436,9 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
     if item == "encoder" and values is not None and result.encoder_u_withheld is not None:
         raise MetadataError(message(QT_TR_NOOP("no certificate of the encoder: {reason}"),
                                     reason=result.encoder_u_withheld))
+    if item == "polygon" and values is not None and result.polygon_u_withheld is not None:
+        raise MetadataError(message(QT_TR_NOOP("no certificate of the polygon: {reason}"),
+                                    reason=result.polygon_u_withheld))
     if values is None:
         raise MetadataError(message(QT_TR_NOOP(
             "no certificate: this design does not determine the {what} (harmonic(s) {orders} "

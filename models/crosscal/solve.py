@@ -40,7 +40,11 @@ Drift (``drift``), as in the polygon workbench, from the closure reading:
   from the readings (the polygon workbench's "spread"); the closure reading is then
   used up, and the covariance carries the two readings H came from (exact);
 * ``"report"``: H is reported and judged against ``closure_limit_arcsec`` but not
-  removed; the closure reading is left out of the fit.
+  removed; the closure reading is left out of the fit. The drift left in the readings
+  moves the results by −Σ_j H_j·G_j·(t/n) (the bias the budget carries:
+  models.crosscal.uncertainty.reported_drift_bias_arcsec); σ, when taken from the
+  residuals, is the readings' noise: from the fit with those drifts fitted, the closure
+  readings used (``scatter_residuals_arcsec``), not swollen by the drift left in.
 
 H itself (``closure_drift_arcsec``) is given in every mode.
 
@@ -181,6 +185,14 @@ class CrossCalibration:
     #: systematic pattern δy in the readings moves the results by exactly gain · δy (a pattern
     #: δc in the autocollimator's readings by −gain · δc)
     gain: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
+    #: σ was stated (``noise_arcsec``), not taken from the residuals: the readings' scatter
+    #: then holds nothing the model leaves out (a drift that differs between mountings and is
+    #: neither fitted nor removed, say), so the budget must
+    sigma_stated: bool = False
+    #: per row: the residuals σ is judged by (outliers): ``residuals_arcsec``, but in the
+    #: "report" mode (σ from the residuals) those of the fit with each closed mounting's drift
+    #: fitted (:func:`_scatter_without_drift`), so a drift left in is not taken for outliers
+    scatter_residuals_arcsec: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
     @property
     def separable(self) -> bool:
@@ -472,6 +484,24 @@ def _fit(y_data, used_index, mounting, k, position, t, order, mindex, drifting, 
     return _Fit(list(drifting), dindex, p, design_all, design, z, vec, seen, rank, solver, x)
 
 
+def _scatter_without_drift(y, mounting, k, position, t, order, mindex, closed, n, rank: int,
+                           sigma: float, dof: float, residuals: np.ndarray
+                           ) -> tuple[float, float, np.ndarray]:
+    """σ and ν of one reading in the "report" mode: from the residuals of the fit with each
+    closed mounting's drift fitted (its closure reading used), as the "fit" mode has them.
+    The drift is left in the results, and its bias is an input of the budget of its own
+    (models.crosscal.uncertainty.reported_drift_bias_arcsec): the scatter of the readings
+    about the report mode's fit would count the part of it the design does not take up
+    again, as reading noise. Returns (σ, ν, the residuals per row it is taken from); the
+    ones given when that fit leaves no degree of freedom or cannot determine every drift."""
+    drifted = _fit(y, np.arange(y.size), mounting, k, position, t, order, mindex, closed, n)
+    left = y.size - drifted.rank
+    if left <= 0 or drifted.rank != rank + len(closed):
+        return sigma, dof, residuals
+    r = y - drifted.design_all @ drifted.x
+    return float(math.sqrt(r @ r / left)), float(left), r
+
+
 def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | None = None,
                    noise_arcsec: float | None = None, fit_drift: bool = True,
                    probability: float = DEFAULT_COVERAGE_PROBABILITY, *,
@@ -630,6 +660,7 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
         gain = np.zeros((p, y.size))
         gain[:, used_index] = (design @ solver).T
     dof = float(rows_n - rank)
+    scatter_residuals = residuals
     if noise_arcsec is not None:
         sigma, dof = float(noise_arcsec), float(noise_dof)
     elif dof <= 0:
@@ -640,6 +671,10 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
     else:
         used_res = residuals[used_index]
         sigma = float(math.sqrt(used_res @ used_res / scatter_trace))
+        if mode == "report" and closure_row:
+            sigma, dof, scatter_residuals = _scatter_without_drift(
+                y, mounting, k, position, t, order, mindex,
+                [j for j in order if j in closure_row], n, rank, sigma, dof, scatter_residuals)
     cov_x = sigma**2 * cov_unit
     proj = np.zeros((2 * n, p))
     proj[:n, :n] = keep_e
@@ -687,4 +722,5 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
         probability=probability, warnings=tuple(warnings),
         face_pyramidal_arcsec=None if faces_fit is None else faces_fit.elevation_arcsec,
         face_pyramidal_u_arcsec=None if faces_fit is None else faces_fit.u_arcsec,
-        vertical_scatter_arcsec=vertical_scatter, gain=proj @ gain)
+        vertical_scatter_arcsec=vertical_scatter, gain=proj @ gain,
+        sigma_stated=noise_arcsec is not None, scatter_residuals_arcsec=scatter_residuals)

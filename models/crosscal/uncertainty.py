@@ -22,7 +22,8 @@ import numpy as np
 from models.crosscal.solve import CrossCalibration, solve_crosscal
 
 __all__ = ["MonteCarloCheck", "design_uncertainty", "drift_effect_arcsec", "drift_pattern_arcsec",
-           "estler_full_rosette", "monte_carlo_check", "scale_effect_arcsec", "tilt_effect_arcsec",
+           "estler_full_rosette", "monte_carlo_check", "own_drift_effect_arcsec",
+           "reported_drift_bias_arcsec", "scale_effect_arcsec", "tilt_effect_arcsec",
            "tilt_fit_effect_arcsec", "unchecked_drift_mountings"]
 
 
@@ -151,10 +152,62 @@ def drift_effect_arcsec(solution: CrossCalibration, combine=None) -> np.ndarray:
     one sign in every mounting is exactly a ramp over the encoder's steps, which no reading
     but a closure (step 0 read again after the turn) can tell from the encoder's error. Where
     the mountings drift differently, the difference is seen by the design (with three
-    mountings or more the drifts are determined but for their common part) and is in the
-    reading scatter; the common part is what this bounds. A constant part cancels in each
-    mounting's offset. Zero for the face deviations of such a drift (it follows the steps)."""
+    mountings or more the drifts are determined but for their common part) and, σ taken from
+    the residuals, is in the reading scatter; the common part is what this bounds (σ stated,
+    the difference is bounded too: :func:`own_drift_effect_arcsec`). A constant part cancels
+    in each mounting's offset. Zero for the face deviations of such a drift (it follows the
+    steps)."""
     return np.abs(drift_pattern_arcsec(solution, combine))
+
+
+def own_drift_effect_arcsec(solution: CrossCalibration, combine=None) -> np.ndarray:
+    """Half-width per value of (E, d) (2n) — of ``combine``·(E, d) when given — per 1″ of
+    drift over a mounting, that the mountings with no closure reading add when each drifts
+    its own way, beyond :func:`drift_effect_arcsec` (the same drift in all of them); zeros
+    unless σ was stated (taken from the residuals, the scatter holds what differs between
+    the mountings), and with one such mounting (its drift is the one that bounds).
+
+    Each such mounting j moves the results by −D_j·P_j (P_j = G_j·(t/n) on its rows,
+    exactly). The bound says |D_j| ≤ B for each, not how the D_j go together: from the same
+    in every mounting (correlation 1: half-width B·|Σ_j P_j|) to independent (B·√Σ_j P_j²)
+    — any mix of the two lies between them (the variance is linear in the correlation), so
+    the larger is taken point by point. This gives the part beyond the common one,
+    √max(0, Σ_j P_j² − (Σ_j P_j)²), so that the two rows in quadrature are that larger one:
+    where the same drift in every mounting moves a value most, nothing is added. (Drifts
+    that go against each other from mounting to mounting — the same autocollimator, the
+    same day — are not taken.)"""
+    patterns = _drift_patterns(solution, combine)[1:]
+    if not solution.sigma_stated or patterns.shape[0] == 0:
+        return np.zeros(_gain(solution, combine).shape[0])
+    common = np.sum(patterns, axis=0)
+    return np.sqrt(np.clip(np.sum(patterns**2, axis=0) - common**2, 0.0, None))
+
+
+def reported_drift_bias_arcsec(solution: CrossCalibration, combine=None) -> np.ndarray:
+    """The bias per value of (E, d) (2n) — of ``combine``·(E, d) when given — that the
+    closure drifts left in the readings make in the "report" mode (zeros in the others, which
+    remove them): each mounting j with a closure reading drifted by its H_j over the turn,
+    linear in the reading's order t, and nothing removed it, so the results carry
+    b = −Σ_j H_j·P_j exactly (P_j = G_j·(t/n) on its rows; the closure reading itself is not
+    used). Each H_j is the difference of two readings (noise 2σ²), so b is known to
+    v = 2σ²·Σ_j P_j²: it is taken beyond that noise, point by point, sign(b)·√max(0, b² − v)
+    (b² − v unbiased for the square of the bias, as the polygon workbench takes its
+    closures). Signed, point by point."""
+    gain = _gain(solution, combine)
+    if solution.drift_mode != "report":
+        return np.zeros(gain.shape[0])
+    t = np.asarray(solution.row_time, dtype=float)
+    mounting = np.asarray(solution.row_mounting)
+    bias, noise = np.zeros(gain.shape[0]), np.zeros(gain.shape[0])
+    for j, h in zip(solution.mountings, np.asarray(solution.closure_drift_arcsec, dtype=float),
+                    strict=True):
+        if not np.isfinite(h):
+            continue
+        rows = np.flatnonzero(mounting == j)
+        pattern = gain[:, rows] @ (t[rows] / solution.faces)
+        bias -= h * pattern
+        noise += 2.0 * float(solution.sigma_arcsec) ** 2 * pattern**2
+    return np.sign(bias) * np.sqrt(np.clip(bias**2 - noise, 0.0, None))
 
 
 def drift_pattern_arcsec(solution: CrossCalibration, combine=None) -> np.ndarray:
