@@ -7910,6 +7910,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>当竖直读数无法辨识倾斜时（未给出、全部相等，或只有 3 个面：没有自由度），塔差误差不予扣除：不超过此值、处于最不利方向的倾斜的精确影响计入不确定度（矩形分布）；倾斜已拟合时不使用</translation>
     </message>
     <message>
+        <source>Without a closure reading (the first face read again at the end of the mounting) a mounting&apos;s drift is neither measured nor removed (unless the other mountings&apos; closure readings let it be fitted), and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that the readings cannot tell from the encoder&apos;s error: its exact effect for a linear drift up to this over a mounting (a full turn), in every such mounting, enters the uncertainty (rectangular); with σ of a reading stated, each such mounting drifting its own way up to this too (that moves the face deviations as well); 0: none stated, and the encoder&apos;s U is then withheld (the face deviations are not affected by a drift common to the mountings)</source>
+        <translation>没有闭合读数（安装位置末尾再读一次第一面）时，该安装位置的漂移既未测量也未消除（除非其他安装位置的闭合读数使其可以拟合），而各安装位置同向的漂移是编码器各步上的一个斜坡，读数无法将其与编码器误差区分：每个这样的安装位置中不超过此值（一整转内）的线性漂移的精确影响计入不确定度（矩形分布）；给出读数的 σ 时，也计入每个这样的安装位置各自不超过此值的不同漂移（它也会影响面偏差）；0：未给出，此时编码器的 U 不予给出（各安装位置共同的漂移不影响面偏差）</translation>
+    </message>
+    <message>
         <source>Without vertical readings the polygon&apos;s tilt on the shaft is neither identified nor removed: its exact effect for a tilt up to this, the worst direction, enters the uncertainty (rectangular); not used when vertical readings are given (the tilt is then fitted and removed)</source>
         <translation>无竖直读数时，多面棱体在轴上的倾斜既未辨识也未修正：按不超过此值的倾斜、最不利方向精确计算其影响，计入不确定度（矩形分布）；给出竖直读数时不用（此时倾斜被拟合并修正）</translation>
     </message>
@@ -9780,7 +9784,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the encoder&apos;s errors and the face deviations are uncorrelated (a full rosette)</source>
-        <extracomment>a reading further than this from its step is no reading of that step (fraction of a step) vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about their tilt curve are said to be suspect a fitted tilt above this (1°) is no seating but wrong vertical readings how each mounting&apos;s drift is taken from its closure reading (see the module&apos;s text) E_k at steps k = 0 … n−1 (first step first), Σ = 0; None when not determined d_i for faces 1 … n, Σ = 0; None when not determined harmonic orders of E and of d the design cannot see (empty when all are determined) E and d with the undetermined harmonics removed (equal to the results when none is) covariance of (E, d) — of their determined parts — arcsec², 2n × 2n per mounting (in ``mountings`` order): the drift used — fitted (&quot;fit&quot;), the closure drift H (&quot;spread&quot;, &quot;report&quot;); nan without a closure reading per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench computes it (tilt removed), nan without a closure reading per mounting: models.pyramidal.TiltFit, or None (no vertical readings) per row: the tilt&apos;s horizontal effect removed from the reading, arcsec (zeros without) per row: the encoder step k, the reading&apos;s order t in its mounting (closure: n), and whether it is a closure reading per row: its mounting j (as given) per row: whether the reading entered the least squares (closure readings in &quot;spread&quot;/&quot;report&quot; do not) per face (1 … n): the face normal&apos;s own elevation β_i (its pyramidal error), arcsec, in the sense of the vertical reading, relative to the faces&apos; mean plane (mean and first harmonic over the faces removed — they cannot be told from the autocollimator&apos;s vertical zero and a tilt common to all mountings); None without vertical readings of at least two mountings standard uncertainty (k = 1) of each face_pyramidal_arcsec, from the vertical scatter per mounting: RMS of its vertical readings about its tilt and the faces&apos; pyramidal errors (their median over the mountings), arcsec — what the vertical readings are judged by; nan without vertical readings (2n × rows): (E, d) = gain · y, y per row the reading the model sees, y = (a − a_start − k·360°/n)·3600 − c − tilt correction (closure rows included; zero where not used), so a systematic pattern δy in the readings moves the results by exactly gain · δy (a pattern δc in the autocollimator&apos;s readings by −gain · δc)</extracomment>
+        <extracomment>a reading further than this from its step is no reading of that step (fraction of a step) vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about their tilt curve are said to be suspect a fitted tilt above this (1°) is no seating but wrong vertical readings how each mounting&apos;s drift is taken from its closure reading (see the module&apos;s text) E_k at steps k = 0 … n−1 (first step first), Σ = 0; None when not determined d_i for faces 1 … n, Σ = 0; None when not determined harmonic orders of E and of d the design cannot see (empty when all are determined) E and d with the undetermined harmonics removed (equal to the results when none is) covariance of (E, d) — of their determined parts — arcsec², 2n × 2n per mounting (in ``mountings`` order): the drift used — fitted (&quot;fit&quot;), the closure drift H (&quot;spread&quot;, &quot;report&quot;); nan without a closure reading per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench computes it (tilt removed), nan without a closure reading per mounting: models.pyramidal.TiltFit, or None (no vertical readings) per row: the tilt&apos;s horizontal effect removed from the reading, arcsec (zeros without) per row: the encoder step k, the reading&apos;s order t in its mounting (closure: n), and whether it is a closure reading per row: its mounting j (as given) per row: whether the reading entered the least squares (closure readings in &quot;spread&quot;/&quot;report&quot; do not) per face (1 … n): the face normal&apos;s own elevation β_i (its pyramidal error), arcsec, in the sense of the vertical reading, relative to the faces&apos; mean plane (mean and first harmonic over the faces removed — they cannot be told from the autocollimator&apos;s vertical zero and a tilt common to all mountings); None without vertical readings of at least two mountings standard uncertainty (k = 1) of each face_pyramidal_arcsec, from the vertical scatter per mounting: RMS of its vertical readings about its tilt and the faces&apos; pyramidal errors (their median over the mountings), arcsec — what the vertical readings are judged by; nan without vertical readings (2n × rows): (E, d) = gain · y, y per row the reading the model sees, y = (a − a_start − k·360°/n)·3600 − c − tilt correction (closure rows included; zero where not used), so a systematic pattern δy in the readings moves the results by exactly gain · δy (a pattern δc in the autocollimator&apos;s readings by −gain · δc) σ was stated (``noise_arcsec``), not taken from the residuals: the readings&apos; scatter then holds nothing the model leaves out (a drift that differs between mountings and is neither fitted nor removed, say), so the budget must per row: the residuals σ is judged by (outliers): ``residuals_arcsec``, but in the &quot;report&quot; mode (σ from the residuals) those of the fit with each closed mounting&apos;s drift fitted (:func:`_scatter_without_drift`), so a drift left in is not taken for outliers</extracomment>
         <translation>编码器误差与各面偏差不相关（全组合测量）</translation>
     </message>
     <message>
@@ -9909,6 +9913,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>每次读数的分辨力 {r}，经同一设计传递</translation>
     </message>
     <message>
+        <source>each mounting&apos;s drift is reported, not removed: the bias its closure drift leaves is a row above</source>
+        <translation>各安装位置的漂移仅报告、未修正：其闭合漂移留下的偏差见上面一行</translation>
+    </message>
+    <message>
         <source>no certificate: this design does not determine the {what} (harmonic(s) {orders} unseen); add a mounting</source>
         <translation>不能出具证书：此测量设计不能确定{what}（第 {orders} 次谐波不可见）；请增加安装位置</translation>
     </message>
@@ -10002,6 +10010,22 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>安装位置 {mountings} 无闭合读数：每个这样的安装位置内不超过 ±{drift} 的线性漂移（给出值，未测量），各位置相同，经由设计传播</translation>
     </message>
     <message>
+        <source>Autocollimator drift, each mounting its own (no closure reading)</source>
+        <translation>自准直仪漂移，各安装位置各自不同（无闭合读数）</translation>
+    </message>
+    <message>
+        <source>σ stated, so the reading scatter holds no drift that differs between mountings: each of mounting(s) {mountings} drifting its own way up to ±{drift} (stated, not measured), what that adds beyond the same drift in all of them, through the design</source>
+        <translation>σ 为给出值，读数分散性不包含各安装位置之间不同的漂移：安装位置 {mountings} 各自以不超过 ±{drift} 的漂移各自变化（给出值，未测量），其超出各位置相同漂移的部分，经由设计传播</translation>
+    </message>
+    <message>
+        <source>Autocollimator drift, reported, not removed</source>
+        <translation>自准直仪漂移，仅报告、未修正</translation>
+    </message>
+    <message>
+        <source>the closure drifts {closures} (beyond their reading noise) left in the readings, linear over each mounting: the bias they leave, through the design, in quadrature</source>
+        <translation>闭合漂移 {closures}（超出其读数噪声的部分）保留在读数中，在每个安装位置内呈线性：其留下的偏差经由设计传播，按方和根计入</translation>
+    </message>
+    <message>
         <source>Tilt correction (fitted ψ, ω)</source>
         <translation>倾斜修正（拟合的 ψ、ω）</translation>
     </message>
@@ -10016,10 +10040,6 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>each mounting&apos;s closure drift is removed, so what is left of it is in the reading scatter</source>
         <translation>各安装位置的闭合漂移已修正，其剩余部分已含于读数分散性中</translation>
-    </message>
-    <message>
-        <source>each mounting&apos;s drift is reported, not removed; within a mounting it is in the reading scatter</source>
-        <translation>各安装位置的漂移仅报告、未修正；安装位置内的漂移含于读数分散性中</translation>
     </message>
     <message>
         <source>where a mounting ends with a closure reading, {how}; where none does, its row above, from the drift bound stated</source>
@@ -10048,6 +10068,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>no certificate of the encoder: {reason}</source>
         <translation>不出具编码器证书：{reason}</translation>
+    </message>
+    <message>
+        <source>no certificate of the polygon: {reason}</source>
+        <translation>不出具多面棱体证书：{reason}</translation>
     </message>
     <message>
         <source>Encoder</source>
@@ -10211,6 +10235,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>面偏差 ± U</translation>
     </message>
     <message>
+        <source>face deviation (U withheld: drift not measured)</source>
+        <translation>面偏差（U 不予给出：未测量漂移）</translation>
+    </message>
+    <message>
         <source>residual per mounting</source>
         <translation>各安装位置残差</translation>
     </message>
@@ -10248,6 +10276,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>编码器的 U 不予给出：安装位置 {mountings} 没有闭合读数，因此未测量自准直仪的漂移，而各安装位置同向的漂移是编码器各步上的一个斜坡，这些读数无法将其与编码器误差区分；请为每个安装位置补充闭合读数（末尾再读一次其第一面），或给出安装位置内的最大漂移（设置项“安装位置内自准直仪的最大漂移”；命令行 --drift-bound-arcsec，元数据 drift_bound_arcsec）</translation>
     </message>
     <message>
+        <source>the face deviations&apos; U is withheld: mounting(s) {mountings} have no closure reading, so the autocollimator&apos;s drift is not measured, and a drift that differs from mounting to mounting moves the face deviations, which nothing in these readings bounds (σ stated, or a drift not shared by every mounting); add a closure reading to each mounting (its first face read again at the end) or state the largest drift over a mounting (the setting &quot;largest autocollimator drift over a mounting&quot;; --drift-bound-arcsec, drift_bound_arcsec in the metadata)</source>
+        <translation>面偏差的 U 不予给出：安装位置 {mountings} 无闭合读数，自准直仪的漂移未测量，而各安装位置之间不同的漂移会影响面偏差，这些读数中没有任何东西能界定它（σ 为给出值，或漂移并非各安装位置共有）；请为每个安装位置补充闭合读数（末尾再读一次第一面），或给出安装位置内的最大漂移（设置“安装位置内自准直仪的最大漂移”；--drift-bound-arcsec，元数据中的 drift_bound_arcsec）</translation>
+    </message>
+    <message>
         <source>row {row}: {reason}</source>
         <translation>第 {row} 行：{reason}</translation>
     </message>
@@ -10276,6 +10308,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>编码器误差 {span}（峰峰值 {ptp}），U 最大 {u}</translation>
     </message>
     <message>
+        <source>Face deviations {span} (about their mean), U withheld: drift not measured (no closure reading) and no drift bound stated</source>
+        <translation>面偏差 {span}（以平均值为零），U 不予给出：未测量漂移（无闭合读数）且未给出漂移界限</translation>
+    </message>
+    <message>
         <source>Face deviations {span} (about their mean), U up to {u}</source>
         <translation>面偏差 {span}（以平均值为零），U 最大 {u}</translation>
     </message>
@@ -10298,6 +10334,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>This design cannot separate every harmonic: the undetermined results are withheld (see the warnings).</source>
         <translation>此测量设计不能分离全部谐波：未能确定的结果不予给出（见警告）。</translation>
+    </message>
+    <message>
+        <source>Encoder error peak-to-peak {ptp}, face deviations {low} … {high} (U of both withheld: drift not measured)</source>
+        <translation>编码器误差峰峰值 {ptp}，面偏差 {low} … {high}（两者的 U 均不予给出：未测量漂移）</translation>
     </message>
     <message>
         <source>Encoder error peak-to-peak {ptp} (U withheld: drift not measured); face deviations {low} … {high} (U ≤ {ud})</source>
@@ -10348,10 +10388,6 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>Which instrument the certificate is issued for: the polygon&apos;s face deviations or the encoder&apos;s error at its steps</source>
         <translation>证书所针对的器具：多面棱体的面偏差，或编码器各步的误差</translation>
-    </message>
-    <message>
-        <source>Without a closure reading (the first face read again at the end of the mounting) a mounting&apos;s drift is neither measured nor removed (unless the other mountings&apos; closure readings let it be fitted), and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that the readings cannot tell from the encoder&apos;s error: its exact effect for a linear drift up to this over a mounting (a full turn), in every such mounting, enters the uncertainty (rectangular); 0: none stated, and the encoder&apos;s U is then withheld (the face deviations are not affected by a drift common to the mountings)</source>
-        <translation>没有闭合读数（安装位置末尾再读一次第一面）时，该安装位置的漂移既未测量也未消除（除非其他安装位置的闭合读数使其可以拟合），而各安装位置同向的漂移是编码器各步上的一个斜坡，读数无法将其与编码器误差区分：每个这样的安装位置中不超过此值（一整转内）的线性漂移的精确影响计入不确定度（矩形分布）；0：未给出，此时编码器的 U 不予给出（各安装位置共同的漂移不影响面偏差）</translation>
     </message>
     <message>
         <source>certificate of</source>
