@@ -114,6 +114,10 @@ class ParameterUncertainty:
     #: these U): "adc_offset_u_mv", "adc_gain_u_pct", and with N equal steps
     #: "phase_reference_u" (the sampling's timing, on the phases c_k)
     not_stated: tuple[str, ...] = ()
+    #: each channel's amplitudes' u from the fit's scatter and the readings' rounding alone
+    #: (V, by order: the error along a harmonic's phasor, which :func:`phase_expanded` takes
+    #: the noise bias with; without the ADC gain's share of the amplitude's U)
+    amplitude_scatter: dict[str, dict[int, float]] = field(default_factory=dict)
 
 
 def parameter_uncertainty(result) -> ParameterUncertainty:
@@ -145,6 +149,10 @@ def parameter_uncertainty(result) -> ParameterUncertainty:
                                      + gain ** 2)
     quadrature = math.sqrt(scatter["sin"]["c1"] + scatter["cos"]["c1"])
     return ParameterUncertainty(channels, u_ratio, quadrature, "",
+                                amplitude_scatter={
+                                    label: {k: math.sqrt(both[f"A{k}"]) for k in fit.orders}
+                                    for (label, both), fit in zip(scatter.items(), fits,
+                                                                  strict=True)},
                                 adc_stated=bool(offset_v or gain),
                                 not_stated=tuple(
                                     key for key in _ACTS_ON if not inputs.get(key) and (

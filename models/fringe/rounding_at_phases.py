@@ -241,8 +241,9 @@ def rounding_at_phases(theta_rad, values, orders: tuple[int, ...], per_period: i
     each other about the offset (x and 2A₀ − x), and so do their roundings' means, with a
     correlation ρ set by where 2A₀ falls on the steps (:func:`mirrored_correlation`): −1
     doubles the variance of every odd order's coefficients and cancels the offset's, +½
-    the reverse. ρ is taken over the fitted offset ``offset_v`` ± 2 ``u_offset_v`` (and 0,
-    where even harmonics the model leaves out break the mirror), each parameter at its
+    the reverse. ρ is taken over the fitted offset ``offset_v`` ± 2 u (u from the fit's
+    ``u_offset_v`` and the repeated rounding; the offset itself is off by that much) and 0
+    (where even harmonics the model leaves out break the mirror), each parameter at its
     worst.
 
     A θ column whose phases do not repeat: the floor is δ²/12 a reading over the fit's own
@@ -274,8 +275,11 @@ def rounding_at_phases(theta_rad, values, orders: tuple[int, ...], per_period: i
     mirror = _mirrors(groups.phases)
     correlations = [0.0]
     if mirror is not None and all(k % 2 for k in orders) and math.isfinite(offset_v):
-        spread = 2.0 * (u_offset_v if math.isfinite(u_offset_v) else step)
-        around = offset_v + np.linspace(-spread, spread, 33)
+        # the offset's own u: the fit's and the repeated rounding's (at most 1.5 v: ρ ≤ ½)
+        averaged = float((inv @ (weighted.T @ weighted) @ inv)[0, 0])
+        u_offset = math.sqrt((u_offset_v if math.isfinite(u_offset_v) else step) ** 2
+                             + 1.5 * REPEATED_MARGIN * repeated * averaged)
+        around = offset_v + np.linspace(-2.0 * u_offset, 2.0 * u_offset, 65)
         rhos = mirrored_correlation(around, 0.0 if math.isnan(sigma) else sigma, step)
         correlations += [float(np.min(rhos)), float(np.max(rhos))]
     cases = []
