@@ -18,7 +18,7 @@ noise, b(x), is the part repeated at a phase. For normal noise σ, b is the sawt
 series with each term damped by the noise: b(x) = Σₘ (−1)ᵐ (δ/πm) sin(2πmx/δ) e^(−2π²m²σ²/δ²),
 so over phases whose signal falls anywhere within a step its variance is
 
-    v(σ) = δ²/(2π²) Σₘ e^(−4π²m²σ²/δ²) / m²        (δ²/12 at σ = 0; 5·10⁻⁵ δ² at σ = δ/2)
+    v(σ) = δ²/(2π²) Σₘ e^(−4π²m²σ²/δ²) / m²     (δ²/12 at σ = 0, 5 % of it at δ/4, 3·10⁻⁵ of it at δ/2)
 
 The readings repeated at a phase show the rest: their scatter about the phase's mean (pure
 error) has the variance w = σ² + δ²/12 − v(σ) (σ² + δ²/12 when dithered: Sheppard), which
@@ -30,14 +30,21 @@ rounding of each reading is its own and the fit's scatter holds it.
 With b independent from phase to phase (the signal at each phase anywhere within a step),
 the parameters' covariance from the repeated part is v·(XᵀX)⁻¹(Σⱼ cⱼ² xⱼxⱼᵀ)(XᵀX)⁻¹ (xⱼ the
 design at distinct phase j, cⱼ its readings; X the whole record's design), of which the fit's
-scatter shows v·(XᵀX)⁻¹: the rest is :attr:`RoundingAtPhases.excess`. With N equal steps over
-P periods that is (1 − 1/P)·v·(XₙᵀXₙ)⁻¹, the rounding averaged over the N phases only.
+scatter shows v·(XᵀX)⁻¹: the rest is added (:attr:`RoundingAtPhases.cases`). With N equal
+steps over P periods that is (1 − 1/P)·v·(XₙᵀXₙ)⁻¹, the rounding averaged over the N phases
+only. Two things bend that independence, each taken on the safe side: readings half a period
+apart mirror each other about the offset where the signal has odd harmonics only, and so do
+their roundings (:func:`mirrored_correlation`: up to twice the variance of every odd order,
+or 1.5 times the offset's, by where twice the offset falls on the steps, which the offset's
+own u leaves open); and the rounding's pattern follows the signal's own shape
+(:data:`REPEATED_MARGIN`).
 
 And the fit's scatter cannot show what falls in the model itself: readings typed to four
 decimals from a noise-free signal, whose rounding the fitted harmonics take up whole, left a
 residual of 10⁻¹⁷ V and printed "± 0.000000000000000023 V". The rounding alone, δ²/12 a
 reading, v of it repeated at the phases, is a floor under each parameter's variance
-(:attr:`RoundingAtPhases.floor`; GUM F.2.2.1: the resolution is an input of its own).
+(the second of each pair in :attr:`RoundingAtPhases.cases`; GUM F.2.2.1: the resolution is
+an input of its own).
 """
 
 from __future__ import annotations
