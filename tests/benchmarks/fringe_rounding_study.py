@@ -11,6 +11,19 @@ with the worst coverage and the median over parameters.
 
 Run: ``nice -n 10 python -m tests.benchmarks.fringe_rounding_study [runs] [periods]`` from
 the worktree (~15 ms a record).
+
+Measured (1000 records a cell, 10 periods, seed 71; N = 8, 16, 32, 64): the worst
+parameter's coverage, and the median U/oracle over the parameters, before
+models/fringe/rounding_at_phases.py and after:
+
+* σ = 0: 327–392 of 1000, 0.28–0.36 → 979–1000, 1.62–1.85
+* σ = δ/10: 495–525, 0.48–0.54 → 986–992, 1.70–1.80
+* σ = δ/4: 874–900, 0.92–0.93 → 972–992, 1.19–1.42
+* σ = δ/2 and δ (dithered): 939–949, 1.00–1.03 before and after (one record's U moved)
+
+The width where undithered is the price of what the record cannot tell: where twice the
+offset falls on the steps (the correlation of readings half a period apart, up to twice an
+odd order's variance) is not known to better than the offset's own u.
 """
 
 from __future__ import annotations
