@@ -39,6 +39,7 @@ __all__ = [
     "fit_channel",
     "fit_channels",
     "fit_channel_pso",
+    "fit_design",
     "fit_periods",
     "fit_periods_along",
     "refine_phase",
@@ -161,6 +162,11 @@ def _design(theta: np.ndarray, orders: tuple[int, ...]) -> np.ndarray:
         x[:, 1 + 2 * i] = column.imag
         x[:, 2 + 2 * i] = column.real
     return x
+
+
+def fit_design(theta_rad, orders: tuple[int, ...]) -> np.ndarray:
+    """The fits' design at ``theta_rad``: columns 1, sin kθ, cos kθ for k in ``orders``."""
+    return _design(np.asarray(theta_rad, dtype=float), orders)
 
 
 def model_signal_std(theta_fit_rad, residual_std: float, orders: tuple[int, ...],

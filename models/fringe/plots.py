@@ -155,22 +155,38 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
     return out
 
 
+#: the x axis of the first period's plot when its samples span more than one period
+FOLDED_PHASE = QT_TR_NOOP("phase within the period (°): the samples of several periods "
+                          "folded into one")
+
+
 def first_period_with_uncertainty(result: FringeResult, expanded, samples: int) -> PlotFigure:
     """The compensated error of the first ``samples`` samples with their U as a band; with
     no U stated (every ``expanded`` not finite: the phase estimated from the signals), the
-    curve alone."""
+    curve alone. Where those samples span more than one period or run back (a θ column of
+    few phases a period: 64 samples of 8 phases are 8 periods and more), each is drawn at
+    its phase within the period, in phase order, as a point on the line: in sample order
+    the line ran over thousands of degrees of "the first period" (or back and forth)."""
     unit = result.unit_symbol.strip()
     band = np.asarray(expanded, dtype=float)[:samples]
     with_u = bool(np.any(np.isfinite(band)))
     folded = bool(getattr(result, "folded_orders", ()))  # at the sampled phases only (F8)
+    theta = np.asarray(result.theta_rad[:samples], dtype=float)
+    error = np.asarray(result.compensated_error[:samples], dtype=float)
+    x, x_label, markers = np.degrees(theta), QT_TR_NOOP("phase θ (°)"), samples <= 256
+    if theta.size > 1 and (theta[-1] - theta[0] >= 2 * np.pi * (1 - 1e-9)
+                           or np.any(np.diff(theta) < 0)):
+        x = np.degrees(np.mod(theta, 2 * np.pi))
+        order = np.argsort(x, kind="stable")
+        x, error, band = x[order], error[order], band[order]
+        x_label, markers = FOLDED_PHASE, True
     return PlotFigure(QT_TR_NOOP("Compensated error in the first period, with U") if with_u
                       else QT_TR_NOOP("Compensated error in the first period (no U stated)"),
-                      QT_TR_NOOP("phase θ (°)"),
+                      x_label,
                       f"{ERROR} ({unit})", (
         PlotSeries((QT_TR_NOOP("compensated ± U, at the sampled phases only") if folded else
                     QT_TR_NOOP("compensated ± U")) if with_u else
                    (QT_TR_NOOP("compensated, at the sampled phases only") if folded else
                     QT_TR_NOOP("compensated")),
-                   np.degrees(result.theta_rad[:samples]),
-                   result.compensated_error[:samples], GREEN, samples <= 256,
+                   x, error, GREEN, markers,
                    band=band if with_u else None, role="corrected"),))

@@ -428,7 +428,8 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
             # each parameter to the decimal of its U, two significant digits (GUM 7.2.6)
             rows.append((named(f"{label}: A{h}", h),
                          *gum_pair(fit.amplitude[h], k * ua, " V")))
-            phase_u = phase_expanded(fit.amplitude[h], fit.u_amplitude.get(h, math.nan), up, k)
+            phase_u = phase_expanded(fit.amplitude[h], stated.amplitude_scatter[label][h], up,
+                                     k)
             if math.isfinite(phase_u):
                 rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], phase_u, " rad",
                                                          signed=True)))
@@ -473,7 +474,7 @@ def parameters_json(result, probability: float) -> dict[str, Any]:
             figure = expanded(u.get(name))
             if name.startswith("c") and figure is not None:  # (as the table: phase_expanded)
                 h = int(name[1:])
-                phase_u = phase_expanded(fit.amplitude[h], fit.u_amplitude.get(h, math.nan),
+                phase_u = phase_expanded(fit.amplitude[h], stated.amplitude_scatter[label][h],
                                          u[name], k)
                 figure = phase_u if math.isfinite(phase_u) else None
             params[f"expanded_uncertainty_{name}"] = figure

@@ -12,6 +12,11 @@ import numpy as np
 
 from models.fringe.model import ChannelFit, CorrectionTable
 from models.fringe.phase import EllipseFit
+from models.fringe.rounding_at_phases import (
+    RoundingAtPhases,
+    phase_groups,
+    rounding_at_phases,
+)
 
 __all__ = ["FringeResult"]
 
@@ -63,6 +68,21 @@ class FringeResult:
     @functools.cached_property
     def compensated_range(self) -> tuple[float, float]:
         return float(np.min(self.compensated_error)), float(np.max(self.compensated_error))
+
+    @functools.cached_property
+    def rounding(self) -> tuple[RoundingAtPhases, RoundingAtPhases]:
+        """(sin, cos): each channel's rounding (the ADC's LSB stated, else the step its
+        readings come in) and its part in the fitted parameters (rounding_at_phases)."""
+        per_period = self.samples_per_period if self.phase_source == "samples_per_period" else 0
+        stated = 1e-3 * float((self.inputs or {}).get("adc_lsb_mv", 0.0) or 0.0)
+        groups = phase_groups(self.theta_rad, per_period)
+
+        def of(u: np.ndarray, fit: ChannelFit) -> RoundingAtPhases:
+            dof = max(u.size - (1 + 2 * len(fit.orders)), 1)
+            return rounding_at_phases(self.theta_rad, u, fit.orders, per_period, stated,
+                                      fit.offset, fit.u_offset, fit.cost / dof, groups)
+
+        return of(self.u_sin, self.sin_fit), of(self.u_cos, self.cos_fit)
 
     @property
     def raw_peak_to_peak(self) -> float:

@@ -178,6 +178,13 @@ STATE_TEXT = {"inside": QT_TR_NOOP("inside"), "outer": QT_TR_NOOP("in the outer 
               "outside": QT_TR_NOOP("outside")}
 
 
+#: said after the caveat where orders fold and the table is written as Intel HEX, which has
+#: no comments to carry it (the CSV's and the C header's comments do)
+HEX_HAS_NO_CAVEAT = QT_TR_NOOP(
+    "Intel HEX has no comments, so the file itself does not say where the table holds: "
+    "keep this note with it")
+
+
 def write_table(args, result, table):
     """Write the interpolator table asked for (OSError when it cannot be) and say what was
     written."""
@@ -201,4 +208,9 @@ def write_table(args, result, table):
         rms=f"{r.rms * period:.4g}",
         ideal=f"{table.residual_unquantised.max_abs * period:.4g}",
         without=f"{table.residual_without.max_abs * period:.4g}", unit=unit)
-    return separated([written, caveat], "; ") if caveat else written
+    if not caveat:
+        return written
+    if Path(args.interpolator_table).suffix.lower() == ".hex":  # no comment syntax: this
+        # line is the only place the caveat is said (the CSV's and the C header's carry it)
+        return separated([written, caveat, message(HEX_HAS_NO_CAVEAT)], "; ")
+    return separated([written, caveat], "; ")

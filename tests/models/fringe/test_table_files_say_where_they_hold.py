@@ -63,3 +63,24 @@ def test_no_fold_no_caveat(tmp_path, capsys):
     assert CAVEAT not in said
     for name, path in files.items():
         assert CAVEAT not in path.read_text(encoding="utf-8"), name
+
+
+@pytest.mark.slow  # (the command run twice, ~0.5 s)
+@pytest.mark.parametrize("per_period, folds", [(8, True), (64, False)])
+def test_intel_hex_has_no_comments_so_the_commands_line_says_it_does_not_carry_the_caveat(
+        tmp_path, capsys, per_period, folds):
+    u_sin, u_cos = HEAD.sample(equal_steps(per_period * 16, per_period),
+                               np.random.default_rng(4))
+    csv = tmp_path / "head.csv"
+    csv.write_text("u_sin,u_cos\n" + "".join(f"{s:.6f},{c:.6f}\n" for s, c in zip(
+        u_sin, u_cos, strict=True)), encoding="utf-8")
+    lut = tmp_path / "lut.hex"
+    assert main(["analyze", "fringe", str(csv), "--lines-per-rev", "16384",
+                 "--samples-per-period", str(per_period), "--max-order", "3",
+                 "--language", "en", "--interpolator-table", str(lut)]) == 0
+    out = capsys.readouterr()
+    said = next(line for line in (out.out + out.err).splitlines()
+                if line.startswith("Interpolator table"))
+    assert lut.read_text(encoding="ascii").endswith(":00000001FF\n")  # written, not refused
+    assert (CAVEAT in said) is folds
+    assert ("Intel HEX has no comments" in said) is folds, said
