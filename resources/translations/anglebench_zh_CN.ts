@@ -1348,6 +1348,11 @@
         <translation>两路信号的谐波</translation>
     </message>
     <message>
+        <source>phase within the period (°): the samples of several periods folded into one</source>
+        <extracomment>the x axis of the first period&apos;s plot when its samples span more than one period</extracomment>
+        <translation>周期内相位（°）：多个周期的样本折叠到一个周期中</translation>
+    </message>
+    <message>
         <source>Compensated error in the first period, with U</source>
         <translation>第一个周期内补偿后误差及其 U</translation>
     </message>
@@ -5909,6 +5914,11 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>refuse the table when its predicted residual (largest magnitude) exceeds X, in the error&apos;s unit (arcsec, or nm for an interferometer)</source>
         <translation>预测残余误差（最大绝对值）超过 X 时拒绝该表，X 以误差的单位给出（角秒；干涉仪为 nm）</translation>
+    </message>
+    <message>
+        <source>Intel HEX has no comments, so the file itself does not say where the table holds: keep this note with it</source>
+        <extracomment>said after the caveat where orders fold and the table is written as Intel HEX, which has no comments to carry it (the CSV&apos;s and the C header&apos;s comments do)</extracomment>
+        <translation>Intel HEX 没有注释，文件本身无法说明该表在何处成立：请将此说明与文件一同保存</translation>
     </message>
     <message>
         <source>{flag} applies to {kinds}, not {kind}</source>
