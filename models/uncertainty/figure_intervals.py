@@ -491,7 +491,11 @@ RANGE_FIGURES = frozenset({"E", "E_up", "E_down"})
 #: widths): the interval without them at the whole tail moved out by k · pair, E's, M's and
 #: the decided half range's 0.88–0.95 of the union bound's width, A's 0.80–0.83, every figure
 #: still at its floor in 8 cells of 30 runs (scale, constant, per target, once a turn, the
-#: curve's own shape at U against and with it; per angle and per reading).
+#: curve's own shape at U against and with it; per angle and per reading). With
+#: ``pair_bias_level`` (the positioning workbench's) the readings' interval of E, E↑, E↓, M and
+#: Pa so moved is the one at :func:`bias_aware_tail`, not at the tail: the two bounds at the
+#: probability added covered about 1 − tail at the least favourable bias (#39's widths:
+#: tests/benchmarks/standard_width_study.py).
 TYPE_B_FIGURES = frozenset({"E", "E_up", "E_down", "M", "Pa", "A", "A_up", "A_down", "P"})
 
 #: the grid and the most EM steps of the true means' distribution (:func:`_ensemble`)
