@@ -392,7 +392,7 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
             # moved out by it (as the theodolite's circle error; #39's widths: it was a union
             # bound, z(1 − tail/2) · pair on the interval at half the tail)
             pair_envelope=True,
-            # the readings' interval of E, M (and their forms) at the level at which the
+            # the readings' interval of E, E↑ and E↓ at the level at which the
             # widened interval misses at the tail at the least favourable bias ±k · pair, not
             # the readings' bound at the probability and the bias's added (#39's widths)
             pair_bias_level=True,
@@ -680,7 +680,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "the reference is better than its certificate states the range holds less of them; "
         "and, as the reference's errors need not be independent from target to target (a "
         "once-a-turn error lowers the crests and raises the troughs), with that interval "
-        "(for E, E↑, E↓, M and Pa taken at the level at which the moved interval misses at "
+        "(for E, E↑ and E↓ taken at the level at which the moved interval misses at "
         "the tail when that bias is at its largest, of either sign: the two bounds at the "
         "probability added would cover more than asked for at every bias) "
         "moved out each way by k · 2 max u (k the two-sided normal factor of the probability, "
