@@ -291,7 +291,8 @@ def _per_target(result: PositioningResult, contribution: np.ndarray) -> np.ndarr
 
 def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget
                        ) -> tuple[np.ndarray, float]:
-    """The Type B inputs' combined standard uncertainty at each target, and ``pair_u``: the
+    """The Type B inputs' combined standard uncertainty at each target (of an input stated for
+    any angle, the part that can differ from target to target, u/√2), and ``pair_u``: the
     largest standard deviation they can give the difference of two targets' errors, whatever
     their correlation from target to target: 2 max u of an input stated for each reading
     (its errors at two targets may be opposite), max u of one stated for any angle between
@@ -306,8 +307,14 @@ def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget
                               else u))
               for c, u in zip(budget.components, budget.contributions(), strict=True)
               if c.evaluation == "B"]
-    combined = (np.sqrt(np.sum([u**2 for _, u in inputs], axis=0)) if inputs
-                else np.zeros(result.positions.size))
+    # the part of an input stated for any angle that can differ from target to target on its
+    # own is at most u/√2: two targets' errors differ by one more angle, u, so their parts
+    # independent of each other have half its variance each (the rest is common to every
+    # target, and no figure, a difference of targets, sees it). Drawn at the whole u at each
+    # target, the bootstrap's world gave two targets' errors √2 u apart, more than the
+    # statement allows, and E's and M's intervals the excess range of that (#39's widths)
+    combined = (np.sqrt(np.sum([(0.5 if c.per_angle else 1.0) * u**2 for c, u in inputs],
+                               axis=0)) if inputs else np.zeros(result.positions.size))
     pair = math.sqrt(sum(((1.0 if c.per_angle else 2.0) * float(np.max(u))) ** 2
                          for c, u in inputs if c.name not in ROUNDINGS))
     return combined, pair
@@ -385,6 +392,10 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
             # moved out by it (as the theodolite's circle error; #39's widths: it was a union
             # bound, z(1 − tail/2) · pair on the interval at half the tail)
             pair_envelope=True,
+            # the readings' interval of E, E↑ and E↓ at the level at which the
+            # widened interval misses at the tail at the least favourable bias ±k · pair, not
+            # the readings' bound at the probability and the bias's added (#39's widths)
+            pair_bias_level=True,
             # the bootstrap without the Type B inputs, drawn once for the window's intervals
             # and the certificate's (which unites them with its own)
             cache=result.__dict__.setdefault("_figure_bootstraps", {}))
@@ -629,7 +640,8 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "Beran 1987) from a model of the axis whose spread over the targets is estimated "
         "without the scatter's (constrained empirical Bayes, Louis 1984), {trials} trials "
         "seeded from the readings; each Type B input drawn once per target, the same in both "
-        "directions. For E, E↑, E↓, M and B (and Pa and U) it is united "
+        "directions (one stated for any angle at u/√2, the part of its errors that can differ "
+        "from target to target). For E, E↑, E↓, M and B (and Pa and U) it is united "
         "with the interval from the measured means taken as the truth, so that a target far off "
         "that the scatter hides is still covered (the curve's spread taken at both ends of "
         "what the readings allow, Berger & Boos 1994). For the ranges of the mean deviations "
@@ -668,6 +680,9 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "the reference is better than its certificate states the range holds less of them; "
         "and, as the reference's errors need not be independent from target to target (a "
         "once-a-turn error lowers the crests and raises the troughs), with that interval "
+        "(for E, E↑ and E↓ taken at the level at which the moved interval misses at "
+        "the tail when that bias is at its largest, of either sign: the two bounds at the "
+        "probability added would cover more than asked for at every bias) "
         "moved out each way by k · 2 max u (k the two-sided normal factor of the probability, "
         "2 at 95.45 %), the largest range errors within their U can give a largest value less "
         "a smallest one, a bias and not a scatter, whatever their correlation (u of those "
