@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import json
 import re
+import shutil
+from pathlib import Path
 
 import pytest
 from pypdf import PdfReader
@@ -16,7 +18,7 @@ from PySide6.QtWidgets import QMessageBox
 from app.certificate_presenter import PendingRevision
 from app.main import main
 from models.certificate.metadata import CertificateMetadata
-from models.register.location import register_url
+from models.register.location import register_url, url_for_path
 from models.register.store import IssueRequest, NotTheSameCalibration, Register
 
 
@@ -42,12 +44,30 @@ def _pdf_text(path) -> str:
     return re.sub(r"\s+", " ", "".join(p.extract_text() for p in PdfReader(path).pages))
 
 
+@pytest.fixture(scope="module")
+def _two_issued(tmp_path_factory) -> tuple[Path, str, str]:
+    """A and B issued once for the module (two certificates rendered, ~1 s of CPU each),
+    into a register and folder of their own: the folder, A's number, B's."""
+    folder = tmp_path_factory.mktemp("two_issued")
+    samples_dir = Path(__file__).resolve().parents[2] / "resources" / "samples"
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setenv("ANGLEBENCH_REGISTER", str(folder / "register.sqlite"))
+        a = _issue(samples_dir, folder, "a", item_serial="LRA-0815",
+                   calibration_date="2026-11-20")
+        b = _issue(samples_dir, folder, "b", item_serial="XY-99", calibration_date="2026-11-02",
+                   customer_name="Other Customer Ltd")
+    return folder, a, b
+
+
 @pytest.fixture
-def two(samples_dir, tmp_path, capsys):
-    """A (LRA-0815, calibrated 2026-11-20) and B (XY-99, 2026-11-02, another customer)."""
-    a = _issue(samples_dir, tmp_path, "a", item_serial="LRA-0815", calibration_date="2026-11-20")
-    b = _issue(samples_dir, tmp_path, "b", item_serial="XY-99", calibration_date="2026-11-02",
-               customer_name="Other Customer Ltd")
+def two(_two_issued, tmp_path, capsys):
+    """A (LRA-0815, calibrated 2026-11-20) and B (XY-99, 2026-11-02, another customer):
+    the module's issue copied into the test's register and folder (each test changes its
+    own copy)."""
+    folder, a, b = _two_issued
+    for path in folder.iterdir():
+        shutil.copy2(path, tmp_path / path.name)
+    assert register_url() == url_for_path(tmp_path / "register.sqlite")  # the test's own
     capsys.readouterr()
     return a, b
 

@@ -7,6 +7,8 @@ issues it and the register records the answer. The real main window, driven as a
 from __future__ import annotations
 
 import json
+import shutil
+from pathlib import Path
 
 import pytest
 from PySide6.QtWidgets import QMessageBox
@@ -15,7 +17,7 @@ from app.certificate_issue import issue_certificate
 from models.certificate.metadata import CertificateMetadata
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
-from models.register.location import register_url
+from models.register.location import register_url, url_for_path
 from models.register.store import Register
 from models.registry import KINDS
 
@@ -39,6 +41,28 @@ def _first(samples_dir, tmp_path) -> str:
             samples_dir, item_serial="LRA-0815", item_manufacturer=FIRST_MAKER),
             kind.checked_settings({}), rows, "polygon_sample.csv",
             str(tmp_path / "first.pdf")).number
+
+
+@pytest.fixture(scope="module")
+def _first_issued(tmp_path_factory) -> tuple[Path, str]:
+    """:func:`_first` once for the module (a certificate rendered), into a register and
+    folder of their own: the folder and the number."""
+    folder = tmp_path_factory.mktemp("first_issued")
+    samples_dir = Path(__file__).resolve().parents[2] / "resources" / "samples"
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setenv("ANGLEBENCH_REGISTER", str(folder / "register.sqlite"))
+        return folder, _first(samples_dir, folder)
+
+
+@pytest.fixture
+def first(_first_issued, tmp_path) -> str:
+    """The first certificate (LRA-0815 of :data:`FIRST_MAKER`) in the test's own register,
+    copied there before the window is made (each test changes its own copy): its number."""
+    folder, number = _first_issued
+    for path in folder.iterdir():
+        shutil.copy2(path, tmp_path / path.name)
+    assert register_url() == url_for_path(tmp_path / "register.sqlite")  # the test's own
+    return number
 
 
 def _answer(window, samples_dir, tmp_path, calls: list, answer, **details) -> None:
@@ -69,10 +93,9 @@ def polygon_window(window, qtbot):
     return window
 
 
-def test_another_makers_item_is_asked_before_the_file_dialog(polygon_window, samples_dir,
+def test_another_makers_item_is_asked_before_the_file_dialog(first, polygon_window, samples_dir,
                                                             tmp_path):
     window = polygon_window
-    first = _first(samples_dir, tmp_path)
     calls: list = []
     _answer(window, samples_dir, tmp_path, calls, QMessageBox.StandardButton.No,
             item_serial="LRA-0815", item_manufacturer="Zeta Instruments")
@@ -93,10 +116,9 @@ def test_another_makers_item_is_asked_before_the_file_dialog(polygon_window, sam
         assert register.audit() == []
 
 
-def test_a_lookalike_serial_is_asked_before_the_file_dialog(polygon_window, samples_dir,
+def test_a_lookalike_serial_is_asked_before_the_file_dialog(first, polygon_window, samples_dir,
                                                            tmp_path):
     window = polygon_window
-    first = _first(samples_dir, tmp_path)
     calls: list = []
     _answer(window, samples_dir, tmp_path, calls, QMessageBox.StandardButton.No,
             item_serial="1ra-0815", item_manufacturer=FIRST_MAKER)
@@ -133,12 +155,11 @@ def test_a_lookalike_serial_is_asked_before_the_file_dialog(polygon_window, samp
 
 
 def test_a_serial_said_to_be_none_beside_that_days_item_is_asked_before_the_file_dialog(
-        polygon_window, samples_dir, tmp_path):
+        first, polygon_window, samples_dir, tmp_path):
     """Stop 67: LRA-0815's calibration exported again with the serial "n/a" was issued as
     another item, unasked. Asked as a look-alike serial is: No issues nothing and asks no
     file; Yes issues it and the register records the answer."""
     window = polygon_window
-    first = _first(samples_dir, tmp_path)
     calls: list = []
     _answer(window, samples_dir, tmp_path, calls, QMessageBox.StandardButton.No,
             item_serial="n/a", item_manufacturer=FIRST_MAKER)

@@ -4,18 +4,22 @@ see conftest.py)."""
 
 from __future__ import annotations
 
+import contextlib
 import datetime as dt
+import io
 import json
 import shutil
 import subprocess
 import zipfile
+from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 import sqlalchemy as sa
 
 from app.main import main
 from models.certificate.metadata import CertificateMetadata
-from models.register.location import register_url
+from models.register.location import register_url, url_for_path
 from models.register.schema import CERTIFICATES
 from models.register.store import IssueRequest, Register, RegisterError
 
@@ -30,9 +34,46 @@ def issue(samples_dir, tmp_path, name, capsys, **changes):
     return code, capsys.readouterr().err
 
 
+@pytest.fixture(scope="module")
+def _sample_issued(tmp_path_factory) -> tuple[Path, int, str]:
+    """The polygon sample issued once for the module (``issue(..., "a",
+    certificate_number="")``, a certificate rendered) into a register and folder of its own:
+    the folder, the exit status and what it said."""
+    folder = tmp_path_factory.mktemp("sample_issued")
+    samples_dir = Path(__file__).resolve().parents[2] / "resources" / "samples"
+    said = io.StringIO()
+    with pytest.MonkeyPatch.context() as mp, contextlib.redirect_stderr(said):
+        mp.setenv("ANGLEBENCH_REGISTER", str(folder / "register.sqlite"))
+        code, _ = issue(samples_dir, folder, "a", _Said(said), certificate_number="")
+    return folder, code, said.getvalue()
+
+
+class _Said:
+    """For :func:`issue`, capsys's ``readouterr()``: what the module's issue said on stderr."""
+
+    def __init__(self, said: io.StringIO) -> None:
+        self.said = said
+
+    def readouterr(self) -> SimpleNamespace:
+        return SimpleNamespace(out="", err=self.said.getvalue())
+
+
+@pytest.fixture
+def issued_a(_sample_issued, tmp_path, capsys) -> tuple[int, str]:
+    """``issue(samples_dir, tmp_path, "a", capsys, certificate_number="")`` as the module
+    issued it: its register, a.json and a.pdf copied into the test's own (each test changes
+    its copy); the exit status and what it said."""
+    folder, code, err = _sample_issued
+    for path in folder.iterdir():
+        shutil.copy2(path, tmp_path / path.name)
+    assert register_url() == url_for_path(tmp_path / "register.sqlite")  # the test's own
+    capsys.readouterr()
+    return code, err
+
+
 @pytest.mark.slow
-def test_issue_list_show_verify_export(samples_dir, tmp_path, capsys):
-    code, err = issue(samples_dir, tmp_path, "a", capsys, certificate_number="")
+def test_issue_list_show_verify_export(samples_dir, tmp_path, capsys, issued_a):
+    code, err = issued_a
     year = dt.datetime.now(dt.timezone.utc).year  # the register's day of issue
     assert code == 0 and f"Certificate AB-{year}-0001 issued" in err
     code, err = issue(samples_dir, tmp_path, "b", capsys,  # the sample's own number
@@ -120,8 +161,8 @@ def test_issuing_without_an_approver_is_refused(samples_dir, tmp_path, capsys):
 
 @pytest.mark.slow
 def test_verify_names_the_replacement_and_show_refuses_a_changed_pdf(samples_dir, tmp_path,
-                                                                     capsys):
-    assert issue(samples_dir, tmp_path, "a", capsys, certificate_number="")[0] == 0
+                                                                     capsys, issued_a):
+    assert issued_a[0] == 0
     with Register(register_url()) as register:
         original = register.list()[0].number
         # a replacement is of the same item (rev62 F1): the original's serial number, and
@@ -441,11 +482,11 @@ def test_an_issued_dcc_is_recorded_signed_and_shown_as_written(samples_dir, tmp_
 
 @pytest.mark.slow
 def test_a_calibration_issued_again_is_refused_unless_said_separate(samples_dir, tmp_path,
-                                                                    capsys):
+                                                                    capsys, issued_a):
     """#61 assessor: one reading changed and the same polygon, serial and date of calibration
     issued again gave a second original, both current, neither naming the other. Refused,
     naming the first; --separate-calibration issues it, naming the first and why."""
-    code, err = issue(samples_dir, tmp_path, "a", capsys, certificate_number="")
+    code, err = issued_a
     year = dt.datetime.now(dt.timezone.utc).year
     first = f"AB-{year}-0001"
     assert code == 0 and f"Certificate {first} issued" in err
