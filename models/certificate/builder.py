@@ -85,10 +85,17 @@ def difference_column(header: str, values, less, expanded, less_expanded=None) -
     return Column(header, cells)
 
 
-def uncertainty_column(header: str, expanded) -> Column:
-    """Each point's U to two significant digits; "reference point, by definition" where it is
-    zero, "—" where it is not finite."""
-    return Column(header, lambda shown: [rounded_cells((), u, shown)[1] for u in expanded])
+def uncertainty_column(header: str, expanded, values=None) -> Column:
+    """Each point's U to two significant digits, rounded up (GUM 7.2.6); beside ``values``
+    (the figure the U is of: the corrected error) U as it is printed beside that figure,
+    the figure's ± U holding its computed interval
+    (:func:`models.uncertainty.rounding.stated_pair`): the U the statement of conformity
+    prints and decides every point with (issue 39). "reference point, by definition" where it
+    is zero, "—" where it is not finite."""
+    figures = [None] * len(expanded) if values is None else list(values)
+    pairs = list(zip(expanded, figures, strict=True))
+    return Column(header, lambda shown: [rounded_cells(() if v is None else (v,), u, shown)[1]
+                                         for u, v in pairs])
 
 
 @dataclass(frozen=True)

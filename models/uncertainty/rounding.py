@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 __all__ = ["interval_decimals", "interval_ends", "printed_range", "significant_decimals", "stated_interval",
-           "uncertainty_decimals", "without_interval_decimals"]
+           "stated_pair", "uncertainty_decimals", "without_interval_decimals"]
 
 
 def significant_decimals(expanded: float) -> int | None:
@@ -131,3 +131,18 @@ def stated_interval(value: float, lower: float, upper: float, decimals: int,
     return {"value": shown, "lower": round(minus, decimals) + 0.0,
             "upper": round(plus, decimals) + 0.0, "low": low,
             "high": round(shown + plus, decimals) + 0.0}
+
+
+def stated_pair(value: float, expanded: float) -> tuple[float, float, int]:
+    """A figure and its symmetric U as printed side by side ("+10.3″", "3.1″": a results
+    table's point and its U column, a deciding point's "|e| = …, U = …"): (the value to
+    the nearest, U, decimals), U the wider of :func:`stated_interval`'s two, so that value ± U
+    holds the computed interval and U is never below U rounded up (issue 39: every printed U
+    the same figure, and a decision re-done from the printed value and U gives the printed
+    verdict). The sign of ``value`` does not change U. A U that is zero or not a number is
+    returned as it is (a reference point, U withheld), the value then unrounded."""
+    if not (math.isfinite(expanded) and expanded > 0):
+        return value, expanded, uncertainty_decimals(expanded)
+    decimals = uncertainty_decimals(expanded)
+    shown = stated_interval(value, expanded, expanded, decimals)
+    return shown["value"], max(shown["lower"], shown["upper"]), decimals
