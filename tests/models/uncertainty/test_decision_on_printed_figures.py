@@ -245,3 +245,16 @@ def test_the_table_prints_the_u_the_statement_prints():
     c = decide_conformity(errors, _budget(expanded, "arcsec"), 5.0, "guarded", "points")
     assert "|e| = 2.60\", U = 0.41\"" in c.statement
     assert _table_cells(errors, expanded)[1] == (Decimal("+2.60"), Decimal("0.41"))
+
+
+def test_the_json_states_the_exact_figures_and_the_verdict_printed():
+    """decided_quantity: the value and the interval's ends unrounded (2.596″, 2.193″ …
+    2.999″), the verdict the one the certificate prints ("fail": 2.60″ + 0.41″ > 3″)."""
+    from models.certificate.uncertainty_json import decided_quantity_json
+
+    c = _half_range(2.596, 0.403, 0.403, 3.0, "guarded_binary", "arcsec")
+    said = decided_quantity_json(c, 3.0)
+    assert said is not None
+    assert (said["value"], said["interval_low"], said["interval_high"]) == pytest.approx(
+        (2.596, 2.596 - 0.403, 2.596 + 0.403), rel=1e-12)
+    assert said["verdict"] == c.verdict == _printed_verdict(c.statement) == "fail"
