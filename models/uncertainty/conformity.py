@@ -45,6 +45,7 @@ from models.uncertainty.printed_figure import (
     StatedLimit,
     printed,
     printed_interval_figures,
+    rounded_to,
     tolerance_figure,
 )
 from models.uncertainty.probability_text import percent_text
@@ -135,10 +136,11 @@ REFERENCE_POINT_TEXT = QT_TR_NOOP("reference point, by definition")
 
 
 def gum_rounded(value: float, expanded: float) -> tuple[str, str]:
-    """(value, U) as GUM 7.2.6 asks: U to at most two significant digits, the value to the
-    same decimal; U of zero gives the value to two decimals and U as "0"."""
+    """(value, U) as GUM 7.2.6 asks: U to at most two significant digits, rounded up as every
+    printed U is (issue 39), the value to the same decimal, to the nearest; U of zero gives
+    the value to two decimals and U as "0"."""
     decimals = uncertainty_decimals(expanded)
-    u = "0" if expanded == 0 else f"{expanded:.{decimals}f}"
+    u = "0" if expanded == 0 else f"{rounded_to(expanded, decimals, 'up'):.{decimals}f}"
     return f"{value:.{decimals}f}", u
 
 
@@ -884,10 +886,13 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     reasons = list(withheld)
     # U ≥ T judged on the exact half-widths and on the U₋, U₊ printed (rounded up): a U
     # printed as T is no U below it
-    widest = max((shown["upper"], shown["lower"],
-                  printed(max(upper, lower), q, decimals=places, rounding="up")),
-                 key=lambda figure: figure.shown)
-    if max(upper, lower) >= t or widest.shown >= t - 1e-9 * 10.0 ** -places:
+    # (the statement's U₋, U₊; where U₋ is held at 0, the lower half-width rounded up, which
+    # the zones print, is said where it alone reaches T)
+    slack = 1e-9 * 10.0 ** -places
+    widest = max((shown["upper"], shown["lower"]), key=lambda figure: figure.shown)
+    if widest.shown < t - slack:
+        widest = printed(max(upper, lower), q, decimals=places, rounding="up")
+    if max(upper, lower) >= t or widest.shown >= t - slack:
         reasons.append(message(QT_TR_NOOP("U = {u} is not smaller than T = {t}"),
                                u=widest, t=tolerance_figure(t, q)))
     if reasons:

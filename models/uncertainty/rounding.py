@@ -13,13 +13,16 @@ __all__ = ["interval_decimals", "interval_ends", "printed_range", "significant_d
 
 def significant_decimals(expanded: float) -> int | None:
     """Decimals that show U with at most two significant digits (GUM 7.2.6, JJF 1059.1),
-    after rounding (0.0996 is "0.10", not "0.100"); None if U is not a positive number.
-    Never negative: a U of 100 or more is printed to the unit."""
+    after rounding up, as every U is printed (0.0996 is "0.10", not "0.100"; 0.994 is "1.0",
+    not "1.00"); None if U is not a positive number. Never negative: a U of 100 or more is
+    printed to the unit."""
     if not math.isfinite(expanded) or expanded <= 0:
         return None
     decimals = 1 - int(math.floor(math.log10(expanded)))
-    if round(expanded, decimals) >= 10.0 ** (2 - decimals) * (1 - 1e-12):
-        decimals -= 1  # rounding carried into a third digit
+    units = expanded * 10.0 ** decimals
+    up = round(units) if abs(units - round(units)) < 1e-9 else math.ceil(units)
+    if up >= 100:
+        decimals -= 1  # rounding up carried into a third digit
     return max(0, decimals)
 
 
