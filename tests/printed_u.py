@@ -11,9 +11,10 @@ from decimal import ROUND_CEILING, ROUND_FLOOR, ROUND_HALF_EVEN, Decimal
 
 
 def two_significant(u: float) -> int:
-    """Decimals that show u with two significant digits (after rounding), never negative."""
+    """Decimals that show u with two significant digits after rounding it up (0.994 is
+    1.0), never negative."""
     d = 1 - math.floor(math.log10(u))
-    if round(u, d) >= 10.0 ** (2 - d) * (1 - 1e-12):
+    if _grid(u, d, ROUND_CEILING) >= Decimal(10) ** (2 - d):
         d -= 1
     return max(0, d)
 

@@ -115,8 +115,10 @@ def stated_interval(value: float, lower: float, upper: float, decimals: int,
     the computed end (:func:`interval_ends`: never inward, so the printed interval holds the
     computed one); each U the printed value to its printed end, and never less than the
     computed U rounded up (GUM 7.2.6 allows U rounded up), its end moved out to match where
-    that is further. ``clip_at_zero``: a half range, whose lower end is held at 0 (U₋ then
-    the value). Returns {"value", "lower", "upper", "low", "high"}."""
+    that is further; a symmetric interval (``lower`` = ``upper``) printed ±U, the wider of
+    the two, both ends at it, so that one U is printed and decided with (issue 39).
+    ``clip_at_zero``: a half range, whose lower end is held at 0 (U₋ then the value).
+    Returns {"value", "lower", "upper", "low", "high"}."""
     shown = round(value, decimals) + 0.0
     if not all(math.isfinite(x) for x in (value, lower, upper)):
         return {"value": shown, "lower": lower, "upper": upper, "low": value - lower,
@@ -130,6 +132,8 @@ def stated_interval(value: float, lower: float, upper: float, decimals: int,
                round(_on_grid(value + upper, decimals, math.ceil) - shown, decimals))
     if clip_at_zero and shown - minus < 0.0:  # held at 0: U₋ the printed value less it
         minus = shown
+    elif lower == upper:  # a symmetric interval stays so as printed: ±U, the wider (issue 39)
+        minus = plus = max(minus, plus)
     low = round(shown - minus, decimals) + 0.0
     return {"value": shown, "lower": round(minus, decimals) + 0.0,
             "upper": round(plus, decimals) + 0.0, "low": low,
@@ -139,8 +143,8 @@ def stated_interval(value: float, lower: float, upper: float, decimals: int,
 def stated_pair(value: float, expanded: float) -> tuple[float, float, int]:
     """A figure and its symmetric U as printed side by side ("+10.3″", "3.1″": a results
     table's point and its U column, a deciding point's "|e| = …, U = …"): (the value to
-    the nearest, U, decimals), U the wider of :func:`stated_interval`'s two, so that value ± U
-    holds the computed interval and U is never below U rounded up (issue 39: every printed U
+    the nearest, U, decimals), U :func:`stated_interval`'s (the wider of its two), so that
+    value ± U holds the computed interval and U is never below U rounded up (issue 39: every printed U
     the same figure, and a decision re-done from the printed value and U gives the printed
     verdict). The sign of ``value`` does not change U. A U that is zero or not a number is
     returned as it is (a reference point, U withheld), the value then unrounded."""
@@ -148,4 +152,4 @@ def stated_pair(value: float, expanded: float) -> tuple[float, float, int]:
         return value, expanded, uncertainty_decimals(expanded)
     decimals = uncertainty_decimals(expanded)
     shown = stated_interval(value, expanded, expanded, decimals)
-    return shown["value"], max(shown["lower"], shown["upper"]), decimals
+    return shown["value"], shown["upper"], decimals
