@@ -130,10 +130,10 @@ def stated_interval(value: float, lower: float, upper: float, decimals: int,
                     round(shown - _on_grid(value - lower, decimals, math.floor), decimals))
     plus = max(_on_grid(upper, decimals, math.ceil),
                round(_on_grid(value + upper, decimals, math.ceil) - shown, decimals))
+    if lower == upper and not (clip_at_zero and value - lower <= 0.0):
+        minus = plus = max(minus, plus)  # a symmetric interval stays so: ±U, the wider (issue 39)
     if clip_at_zero and shown - minus < 0.0:  # held at 0: U₋ the printed value less it
         minus = shown
-    elif lower == upper:  # a symmetric interval stays so as printed: ±U, the wider (issue 39)
-        minus = plus = max(minus, plus)
     low = round(shown - minus, decimals) + 0.0
     return {"value": shown, "lower": round(minus, decimals) + 0.0,
             "upper": round(plus, decimals) + 0.0, "low": low,
