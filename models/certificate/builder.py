@@ -32,7 +32,7 @@ from models.certificate.traceability import (
     standards_not_stated,
     traceability_withheld,
 )
-from models.messages import QT_TR_NOOP, listed, message, separated
+from models.messages import QT_TR_NOOP, Message, listed, message, separated
 from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
@@ -49,6 +49,9 @@ class Column:
 
     header: str
     cells: Callable[[int], Sequence[str]]
+    # a note the table adds under it, given the same decimal ("" for none): a difference
+    # column's where a printed difference is not that of the printed figures beside it
+    note: Callable[[int], str] | None = None
 
 
 def text_column(header: str, cells: Sequence[str]) -> Column:
@@ -75,20 +78,46 @@ def difference_column(header: str, values, less, expanded, less_expanded=None) -
     less_expanded = expanded if less_expanded is None else less_expanded
     rows = list(zip(values, less, expanded, less_expanded, strict=True))
 
-    def cells(shown: int) -> list[str]:
+    def printed(shown: int) -> list[tuple[str, str, str, int]]:
         out = []
         for v, w, u, uw in rows:
             a, b = rounded_cells((v,), u, shown)[0][0], rounded_cells((w,), uw, shown)[0][0]
             d = min(len(a.partition(".")[2]), len(b.partition(".")[2]))
-            out.append(format(round(float(v) - float(w), d) + 0.0, f"+.{d}f"))  # no "-0.0"
+            out.append((a, b, format(round(float(v) - float(w), d) + 0.0, f"+.{d}f"), d))
         return out
-    return Column(header, cells)
+
+    def cells(shown: int) -> list[str]:
+        return [difference for _, _, difference, _ in printed(shown)]
+
+    def note(shown: int) -> str:
+        # assessment 70 L3: said where a row's printed figures do not add up (the polygon's
+        # −0.27″ + 0.10″ beside a corrected −0.16″); printing the difference of the rounded
+        # figures instead would change the correction (+0.01″ for 0.00001″)
+        apart = any(round(float(a) - float(b), d) != round(float(c), d)
+                    for a, b, c, d in printed(shown))
+        return message(ROUNDED_APART) if apart else ""
+    return Column(header, cells, note)
 
 
-def uncertainty_column(header: str, expanded) -> Column:
-    """Each point's U to two significant digits; "reference point, by definition" where it is
-    zero, "—" where it is not finite."""
-    return Column(header, lambda shown: [rounded_cells((), u, shown)[1] for u in expanded])
+#: under a results table where a printed difference (a correction, B_i) is not the
+#: difference of the figures printed beside it (assessment 70 L3)
+ROUNDED_APART = QT_TR_NOOP("Each figure is rounded on its own from its unrounded value (GUM "
+                           "7.2.6), so on some rows a printed difference (a correction) differs "
+                           "by one in the last digit from the difference of the figures printed "
+                           "beside it.")
+
+
+def uncertainty_column(header: str, expanded, values=None) -> Column:
+    """Each point's U to two significant digits, rounded up (GUM 7.2.6); beside ``values``
+    (the figure the U is of: the corrected error) U as it is printed beside that figure,
+    the figure's ± U holding its computed interval
+    (:func:`models.uncertainty.rounding.stated_pair`): the U the statement of conformity
+    prints and decides every point with (issue 39). "reference point, by definition" where it
+    is zero, "—" where it is not finite."""
+    figures = [None] * len(expanded) if values is None else list(values)
+    pairs = list(zip(expanded, figures, strict=True))
+    return Column(header, lambda shown: [rounded_cells(() if v is None else (v,), u, shown)[1]
+                                         for u, v in pairs])
 
 
 @dataclass(frozen=True)
@@ -105,7 +134,14 @@ class PointTable:
         shown = table_decimals(expanded)
         cells = [list(column.cells(shown)) for column in self.columns]
         rows = list(zip(*cells, strict=True)) if cells else []
-        return Table(self.title, tuple(c.header for c in self.columns), rows, self.note)
+        notes = [column.note(shown) for column in self.columns if column.note is not None]
+        added = list(dict.fromkeys(n for n in notes if n))
+        # the table's own note a template of its own (a plain declared text is translated
+        # whole, not as a part of a joined text)
+        own = (self.note if isinstance(self.note, Message) or not self.note else
+               message(self.note))
+        note = separated([own, *added], " ") if added else self.note
+        return Table(self.title, tuple(c.header for c in self.columns), rows, note)
 
 
 @dataclass(frozen=True)

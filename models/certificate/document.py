@@ -33,9 +33,14 @@ from models.uncertainty.conformity import (
     significant_decimals,
     uncertainty_decimals,
 )
-from models.uncertainty.printed_figure import PrintedFigure, printed, printed_interval_figures
+from models.uncertainty.printed_figure import (
+    PrintedFigure,
+    printed,
+    printed_interval_figures,
+    rounded_to,
+)
 from models.uncertainty.probability_text import percent_text
-from models.uncertainty.rounding import printed_range
+from models.uncertainty.rounding import printed_range, stated_pair
 
 __all__ = ["CertificateDocument", "Exact", "decision_rows", "PlotFigure", "PlotSeries", "Table",
            "budget_table", "format_uncertain", "gum_pair", "range_cells", "rounded_cells",
@@ -377,11 +382,11 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
                      *padding,
                      message(QT_TR_NOOP("the inputs evaluated give {u} at most, but U is "
                                         "incomplete: {reason}"),
-                             u=printed(big_u, unit), reason=uncertainty_withheld)))
+                             u=printed(big_u, unit, rounding="up"), reason=uncertainty_withheld)))
         return rows
     rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
                          p=f"{100 * budget.probability:.2f}"),
-                 printed(big_u, unit) if digits is not None and big_u > 0 else
+                 printed(big_u, unit, rounding="up") if digits is not None and big_u > 0 else
                  f"{big_u:.{digits}f}{unit}", *padding,
                  message(QT_TR_NOOP("largest over the {points}; k = {k} there"),
                          points=message(points), k=f"{budget.coverage_factor:.2f}")))
@@ -389,11 +394,12 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
 
 
 def format_uncertain(value: float, expanded: float, unit: str, digits: int = 2) -> str:
-    """``value ± U`` with U rounded to two significant digits and the value to match."""
+    """``value ± U`` with U rounded up to two significant digits and the value to match."""
     decimals = significant_decimals(expanded)
     if decimals is None:
         return f"{value:.{digits}f}{unit}"
-    return joined([printed(value, unit, u=expanded), " ± ", printed(expanded, unit)])
+    return joined([printed(value, unit, u=expanded), " ± ",
+                   printed(expanded, unit, rounding="up")])
 
 
 def range_cells(low: float, high: float, expanded: float, unit: str = "\"",
@@ -424,14 +430,19 @@ def table_decimals(expanded, fallback: int = 2) -> int:
 def rounded_cells(values, expanded: float, reference_decimals: int,
                   signed: bool = True) -> tuple[list[str], str]:
     """A point's figures and its U as GUM 7.2.6 asks: U to two significant digits at most,
-    each figure to the same decimal; U = 0 (a reference point, zero by definition) printed
-    so, its figures to ``reference_decimals``."""
+    rounded up, each figure to the same decimal; beside one figure (``values`` of one) U as
+    printed beside it, its ± U holding the computed interval
+    (:func:`models.uncertainty.rounding.stated_pair`, the U its decision uses: issue 39);
+    U = 0 (a reference point, zero by definition) printed so, its figures to
+    ``reference_decimals``."""
     if expanded == 0 or not math.isfinite(expanded):
         d = reference_decimals
         u_text = message(REFERENCE_POINT_TEXT) if expanded == 0 else "—"
     else:
         d = uncertainty_decimals(expanded)
-        u_text = f"{expanded:.{d}f}"
+        shown_u = (stated_pair(float(values[0]), expanded)[1] if len(values) == 1 else
+                   rounded_to(expanded, d, "up"))
+        u_text = f"{shown_u:.{d}f}"
     spec = f"+.{d}f" if signed else f".{d}f"
     return [format(float(v), spec) for v in values], u_text
 
@@ -445,4 +456,4 @@ def gum_pair(value: float, expanded: float, unit: str, signed: bool = False,
     if not (math.isfinite(expanded) and expanded > 0):
         return f"{value:{spec}.{fallback}f}{unit}", "—"
     return (printed(value, unit, u=expanded, sign=spec),  # in any unit, rounded there
-            printed(expanded, unit))
+            printed(expanded, unit, rounding="up"))

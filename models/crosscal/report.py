@@ -479,9 +479,9 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
             text_column(QT_TR_NOOP("From the start (°)"), [f"{v:.4f}" for v in first]),
             text_column(QT_TR_NOOP("Encoder reading (°)"), [f"{v:.4f}" for v in reading]),
             figure_column(QT_TR_NOOP("Error (\")"), values, big_u),
-            uncertainty_column("U (\")", big_u),
+            uncertainty_column("U (\")", big_u, values),
             figure_column(QT_TR_NOOP("From step 0 (\")"), values - values[0], u0),
-            uncertainty_column(QT_TR_NOOP("U from step 0 (\")"), u0)),
+            uncertainty_column(QT_TR_NOOP("U from step 0 (\")"), u0, values - values[0])),
             QT_TR_NOOP("Error = indicated − true angle at each of the n steps, stated "
                        "about its mean over the n steps (the steps of a full turn close "
                        "at 360°), with its U; harmonics of order n and above are not "
@@ -518,9 +518,9 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
             text_column(QT_TR_NOOP("Face"), [f"{i + 1}" for i in range(n)]),
             text_column(QT_TR_NOOP("Nominal (°)"), [f"{i * 360.0 / n:.4f}" for i in range(n)]),
             figure_column(QT_TR_NOOP("Deviation (\")"), values, big_u),
-            uncertainty_column("U (\")", big_u),
+            uncertainty_column("U (\")", big_u, values),
             figure_column(QT_TR_NOOP("From face 1 (\")"), values - values[0], u1),
-            uncertainty_column(QT_TR_NOOP("U from face 1 (\")"), u1)),
+            uncertainty_column(QT_TR_NOOP("U from face 1 (\")"), u1, values - values[0])),
             QT_TR_NOOP("Deviation d_i = the face's angle minus its nominal, stated "
                        "about the mean over the n faces (Σ d_i = 0: the faces close at "
                        "360°), with its U. The last two columns state it from face 1, "

@@ -574,7 +574,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                       big_u[idx]),
         uncertainty_column(message(QT_TR_NOOP("U as left ({unit})") if as_left else
                                    QT_TR_NOOP("U as found ({unit})"), unit=u_unit),
-                           shown_u[idx])),
+                           shown_u[idx], comp[idx] if as_left else raw[idx])),
         note)
     pp_raw, pp_comp = float(np.ptp(raw)), float(np.ptp(comp))
     scale = (message(QT_TR_NOOP("L = {lines} (period {period})"), lines=result.lines_per_rev,

@@ -1169,7 +1169,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         difference_column(QT_TR_NOOP("Correction (\")"), result.mean_corrected_arcsec,
                           result.mean_error_arcsec, big_u),
         figure_column(QT_TR_NOOP("Corrected error (\")"), result.mean_corrected_arcsec, big_u),
-        uncertainty_column("U (\")", big_u)),
+        uncertainty_column("U (\")", big_u, result.mean_corrected_arcsec)),
         message(QT_TR_NOOP("Error = indicated − reference, from face {face} of set 1. "
                            "Corrected = raw + correction; the correction removes the "
                            "error the pyramidal tilt induces."),

@@ -539,7 +539,7 @@ def _result_columns(result: PositioningResult, u_by_dir: Mapping[str, np.ndarray
         arrow = "↑" if name == "up" else "↓"
         columns += [figure_column(f"x̄{arrow}", mean, u_by_dir[name]),
                     text_column(f"s{arrow}", [_deviation_text(v) for v in s]),
-                    uncertainty_column(f"U{arrow}", u_by_dir[name])]
+                    uncertainty_column(f"U{arrow}", u_by_dir[name], mean)]
     if result.bidirectional:
         # B_i = x̄↑ − x̄↓ of the means as printed (it adds up as printed) and M_i = (x̄↑ +
         # x̄↓)/2, each to the decimal of the coarser of the two means (GUM 7.2.6: no more

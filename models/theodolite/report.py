@@ -578,7 +578,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         difference_column(QT_TR_NOOP("Correction (\")"), result.corrected_error_arcsec,
                           result.raw_error_arcsec, big_u),
         figure_column(QT_TR_NOOP("Corrected error (\")"), result.corrected_error_arcsec, big_u),
-        uncertainty_column("U (\")", big_u)))
+        uncertainty_column("U (\")", big_u, result.corrected_error_arcsec)))
     r, c = result.raw_stats, result.corrected_stats
     # to the decimal of the results table's U (GUM 7.2.6), the peak-to-peak as printed
     raw_range, raw_ptp, _ = range_cells(r.min, r.max, budget.max_expanded)

@@ -45,6 +45,7 @@ from models.uncertainty.printed_figure import (
     StatedLimit,
     printed,
     printed_interval_figures,
+    rounded_to,
     tolerance_figure,
 )
 from models.uncertainty.probability_text import percent_text
@@ -52,6 +53,7 @@ from models.uncertainty.rounding import (
     interval_decimals,
     interval_ends,
     significant_decimals,
+    stated_pair,
     uncertainty_decimals,
 )
 
@@ -69,6 +71,7 @@ __all__ = [
     "held_at_zero_note",
     "printed_half_widths",
     "printed_interval",
+    "printed_verdict",
     "probability_conforming",
     "significant_decimals",
     "interval_decimals",
@@ -133,21 +136,23 @@ REFERENCE_POINT_TEXT = QT_TR_NOOP("reference point, by definition")
 
 
 def gum_rounded(value: float, expanded: float) -> tuple[str, str]:
-    """(value, U) as GUM 7.2.6 asks: U to at most two significant digits, the value to the
-    same decimal; U of zero gives the value to two decimals and U as "0"."""
+    """(value, U) as GUM 7.2.6 asks: U to at most two significant digits, rounded up as every
+    printed U is (issue 39), the value to the same decimal, to the nearest; U of zero gives
+    the value to two decimals and U as "0"."""
     decimals = uncertainty_decimals(expanded)
-    u = "0" if expanded == 0 else f"{expanded:.{decimals}f}"
+    u = "0" if expanded == 0 else f"{rounded_to(expanded, decimals, 'up'):.{decimals}f}"
     return f"{value:.{decimals}f}", u
 
 
 def expanded_text(expanded: float, unit: str = "\"", reference: bool | None = None) -> str:
-    """U as printed: two significant digits at most with its unit; at a reference point
+    """U as printed: two significant digits at most, rounded up (GUM 7.2.6; issue 39: every
+    printed U the same rounded-up figure), with its unit; at a reference point
     (``reference``, or U exactly zero when not told) "reference point, by definition"."""
     if reference or (reference is None and expanded == 0):
         return message(REFERENCE_POINT_TEXT)
     if not math.isfinite(expanded):
         return "—"
-    return printed(expanded, unit)  # in any unit it is read in, rounded there
+    return printed(expanded, unit, rounding="up")  # in any unit it is read in, rounded there
 
 
 @dataclass(frozen=True)
@@ -561,31 +566,62 @@ def probability_conforming(value: float, lower: float, upper: float, tolerance: 
     return min(1.0, max(0.0, inside))
 
 
-def _zones(t: float, w_accept: float, w_reject: float, rule: str, d: int,
-           q: str = "\"", asymmetric: bool = False) -> str:
-    """The decision's zones; ``asymmetric``: the guard bands are the interval's two
-    half-widths, named so (U₊ on acceptance, U₋ on rejection), not one w. Each figure to
-    the decimal of the larger guard band, in any unit it is read in."""
-    w = max(w_accept, w_reject)
-
-    def fig(value: float) -> str:
-        return printed(value, q, u=w) if w > 0 else printed(value, q, decimals=d)
-
-    if rule == "simple":
+def _zones(t: float, up: PrintedFigure | None, down: PrintedFigure | None, rule: str,
+           d: int, q: str = "\"") -> str:
+    """The decision's zones on the figures as printed (issue 39): ``up`` the printed U₊ that
+    guards acceptance, ``down`` the printed U₋ that guards rejection (the statement's own
+    figures, rounded up; None under simple acceptance), each limit T − U₊ and T + U₋ printed
+    to ``d`` decimals rounded down, so that a printed value (on that grid) lies at or below
+    the printed limit exactly when it lies at or below T − U₊ (T + U₋). Named U₊ and U₋
+    where they differ as printed, else one w; in any unit the text is read in."""
+    if rule == "simple" or up is None or down is None:
         return message(QT_TR_NOOP("pass ≤ {t} < fail"), t=tolerance_figure(t, q))
-    if asymmetric and rule == "guarded_binary":
-        return message(QT_TR_NOOP("pass ≤ {low} (T − U₊, U₊ = {up}) < fail"),
-                       low=fig(t - w_accept), up=fig(w_accept))
-    if asymmetric:
+    low = PrintedFigure(float(t) - up.shown, q, decimals=d, rounding="down")
+    high = PrintedFigure(float(t) + down.shown, q, decimals=d, rounding="down")
+    if str(up) != str(down) and rule == "guarded_binary":
+        return message(QT_TR_NOOP("pass ≤ {low} (T − U₊, U₊ = {up}) < fail"), low=low, up=up)
+    if str(up) != str(down):
         return message(QT_TR_NOOP("pass ≤ {low} (T − U₊, U₊ = {up}) < conditional pass ≤ {t} (T) "
                                   "< conditional fail ≤ {high} (T + U₋, U₋ = {down}) < fail"),
-                       low=fig(t - w_accept), t=tolerance_figure(t, q),
-                       high=fig(t + w_reject), up=fig(w_accept), down=fig(w_reject))
+                       low=low, t=tolerance_figure(t, q), high=high, up=up, down=down)
     if rule == "guarded_binary":
-        return message(QT_TR_NOOP("pass ≤ {low} (T − w) < fail"), low=fig(t - w_accept))
+        return message(QT_TR_NOOP("pass ≤ {low} (T − w) < fail"), low=low)
     return message(QT_TR_NOOP("pass ≤ {low} (T − w) < conditional pass ≤ {t} (T) < conditional "
                               "fail ≤ {high} (T + w) < fail"),
-                   low=fig(t - w_accept), t=tolerance_figure(t, q), high=fig(t + w_reject))
+                   low=low, t=tolerance_figure(t, q), high=high)
+
+
+def printed_verdict(value: float, minus: float, plus: float, t: float, rule: str, d: int,
+                    low: float | None = None) -> str:
+    """The decision taken on the figures as printed (issue 39, "conformity you can defend"):
+    the printed ``value`` (to the nearest digit of ``d`` decimals), its printed U₋ ``minus``
+    and U₊ ``plus`` (rounded up, so that value ± U is the printed interval, whose ends are
+    rounded outward from the computed ones: models.uncertainty.rounding.stated_interval) and
+    T. A reader who redoes the decision from the printed value, U and T gets this verdict.
+    The guard bands are never narrower than the printed U, and no narrower than the computed
+    interval's ends: a pass needs the printed upper end value + U₊ ≤ T (the computed end then
+    is too), a fail the printed lower end value − U₋ (``low``, where it is held at 0) > T.
+    Where the value alone is compared with T (simple acceptance; conditional pass against
+    conditional fail) it is the value as printed, within half a digit of U's last of the
+    computed one. Compared on the printed grid (to 1e-9 of a digit)."""
+    slack = 1e-9 * 10.0 ** -d
+
+    def within(figure: float) -> bool:
+        return figure <= t + slack
+
+    high = round(value + plus, d)
+    low = round(value - minus, d) if low is None else low
+    if rule == "simple":
+        return "pass" if within(value) else "fail"
+    if rule == "guarded_binary":
+        return "pass" if within(high) else "fail"
+    if within(high):
+        return "pass"
+    if within(value):
+        return "conditional pass"
+    if within(low):
+        return "conditional fail"
+    return "fail"
 
 
 def _verdict(x: float, t: float, w_accept: float, rule: str,
@@ -621,11 +657,12 @@ _SENTENCE = {
 }
 
 
-def _too_uncertain(w: float, t: float, q: str, d: int) -> str:
-    """The statement when U ≥ T: no result could be shown to conform (ILAC-G8)."""
+def _too_uncertain(u: PrintedFigure, t: float, q: str) -> str:
+    """The statement when U ≥ T: no result could be shown to conform (ILAC-G8); ``u`` as
+    printed (rounded up)."""
     return message(QT_TR_NOOP("No statement of conformity is possible: the expanded uncertainty "
                               "U = {u} is not smaller than the tolerance T = {t}, so no result "
-                              "could be shown to lie within it."), u=printed(w, q),
+                              "could be shown to lie within it."), u=u,
                    t=tolerance_figure(t, q))
 
 
@@ -729,11 +766,15 @@ def _withheld_text(withheld: list) -> str:
 def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, sentence, q,
                    common) -> Conformity:
     u = budget.expanded
-    verdicts = [_verdict(abs(x), t, w if rule != "simple" else 0.0, rule)
-                for x, w in zip(e, u, strict=True)]
+    # every point decided on its |e| and U as the results table prints them (issue 39: a
+    # reader who redoes a point's decision from the table gets the verdict printed)
+    pairs = [stated_pair(abs(float(x)), float(w)) for x, w in zip(e, u, strict=True)]
+    verdicts = [printed_verdict(xp, wp, wp, t, rule, dp) if math.isfinite(wp) and wp > 0 else
+                _verdict(xp, t, 0.0 if rule == "simple" else wp, rule)
+                for xp, wp, dp in pairs]
     worst = max(range(e.size), key=lambda i: (_ORDER.index(verdicts[i]), abs(e[i]) + u[i]))
     x, w = abs(float(e[worst])), float(u[worst])
-    d = uncertainty_decimals(w)
+    d = pairs[worst][2]
     verdict = verdicts[worst]
     point = (point_names[worst] if point_names is not None else
              message(QT_TR_NOOP("point {n}"), n=worst + 1))
@@ -752,16 +793,18 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
     # −6″/+18″, 0″ … 25″" for a point at −6″)
     values = {"value": float(e[worst]), "expanded": w, "expanded_lower": w,
               "conforming_probability": conforming, "point": point}
-    largest = int(np.argmax(u))
-    if float(u[largest]) >= t:
-        w_max = float(u[largest])
-        d = uncertainty_decimals(w_max)
+    # U ≥ T judged on the exact U and on the U printed (rounded up): a U printed as T is no U
+    # below it
+    shown_u = np.array([max(float(wi), p[1]) for wi, p in zip(u, pairs, strict=True)])
+    largest = int(np.argmax(shown_u))
+    if shown_u[largest] >= t - 1e-9 * 10.0 ** -pairs[largest][2]:
         name = (point_names[largest] if point_names is not None else
                 message(QT_TR_NOOP("point {n}"), n=largest + 1))
-        text = separated([_too_uncertain(w_max, t, q, d),
+        u_max = _point_figures(float(e[largest]), float(u[largest]), q)["u"]
+        text = separated([_too_uncertain(u_max, t, q),
                           message(QT_TR_NOOP("(at {point})"), point=name)], " ")
         reason = _withheld_text([*withheld, message(
-            QT_TR_NOOP("U = {u} is not smaller than T = {t}"), u=printed(w_max, q),
+            QT_TR_NOOP("U = {u} is not smaller than T = {t}"), u=u_max,
             t=tolerance_figure(t, q))])
         if withheld:
             text = message(QT_TR_NOOP("No statement of conformity: {reason}."), reason=reason)
@@ -772,13 +815,15 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
         return Conformity("not assessed", message(QT_TR_NOOP(
             "No statement of conformity: {reason}."), reason=reason), rule_text, quantity_text,
             reason=reason, **values, **common)
+    figures = _point_figures(x, w, q)
     text = message(QT_TR_NOOP("Every point's {what} was judged against ±{t} with its own U; "
                               "the deciding point is {point}: |e| = {e}, U = {u}. "
                               "{sentence}"),
-                   what=what, t=tolerance_figure(t, q), point=point, **_point_figures(x, w, q),
+                   what=what, t=tolerance_figure(t, q), point=point, **figures,
                    sentence=sentence[verdict])
+    band = figures["u"] if rule != "simple" and w > 0 else None
     zones = message(QT_TR_NOOP("per point, with w = U of that point: {zones}"),
-                    zones=_zones(t, w, w, rule, d, q))
+                    zones=_zones(t, band, band, rule, d, q))
     return Conformity(verdict, text, rule_text, quantity_text, zones=zones,
                       decision_risk=_risk(verdict, conforming), **values, **common)
 
@@ -825,23 +870,34 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
             "No statement of conformity: {reason}."), reason=reason), rule_text,
             monte_carlo=mc, reason=reason, **common)
     d = uncertainty_decimals(max(upper, lower))  # two significant digits at most on each side
-    verdict = _verdict(x, t, 0.0 if rule == "simple" else upper, rule,
-                       0.0 if rule == "simple" else lower)
     # U₋ and U₊ as printed: the value to the interval's ends after the lower end is held at
     # 0 (the note says so, and whether the CMC had raised that half-width first)
     # the value, its U₋, U₊ and the interval's ends as printed, value ± U the ends, in any
     # unit the text is read in (assessment 70 H3, M1)
     shown = printed_interval_figures(x, *printed_half_widths(x, lower, upper), q, clip=True)
+    # decided on the figures as printed (issue 39): the printed value, U₋, U₊ (rounded up,
+    # value ± U the printed ends, which hold the computed ones) and T
+    places = shown["value"].places
+    verdict = printed_verdict(shown["value"].shown, shown["lower"].shown, shown["upper"].shown,
+                              t, rule, places, low=shown["low"].shown)
     interval = separated([asymmetric_figures(shown), held_at_zero_note(
         x, lower, d, q, float(budget.floor), bool(raised and raised[0]))], "; ")
     conforming = probability_conforming(x, lower, upper, t, mc.probability)
     reasons = list(withheld)
-    if max(upper, lower) >= t:
+    # U ≥ T judged on the exact half-widths and on the U₋, U₊ printed (rounded up): a U
+    # printed as T is no U below it
+    # (the statement's U₋, U₊; where U₋ is held at 0, the lower half-width rounded up, which
+    # the zones print, is said where it alone reaches T)
+    slack = 1e-9 * 10.0 ** -places
+    widest = max((shown["upper"], shown["lower"]), key=lambda figure: figure.shown)
+    if widest.shown < t - slack:
+        widest = printed(max(upper, lower), q, decimals=places, rounding="up")
+    if max(upper, lower) >= t or widest.shown >= t - slack:
         reasons.append(message(QT_TR_NOOP("U = {u} is not smaller than T = {t}"),
-                               u=printed(max(upper, lower), q), t=tolerance_figure(t, q)))
+                               u=widest, t=tolerance_figure(t, q)))
     if reasons:
         verdict = "not assessed"
-        sentence[verdict] = (_too_uncertain(max(upper, lower), t, q, d)
+        sentence[verdict] = (_too_uncertain(widest, t, q)
                              if not withheld else
                              message(QT_TR_NOOP("No statement of conformity: {reason}."),
                                      reason=_withheld_text(reasons)))
@@ -924,15 +980,19 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
         # the results' U (the largest point's) is not smaller than T, yet a statement may be
         # made: say which U the rule uses, lest "U ≥ T, no statement" be read into it
         quantity_text = separated([quantity_text, message(
-            WHICH_U_HALF_RANGE, u=printed(budget.max_expanded, q), t=tolerance_figure(t, q))])
+            WHICH_U_HALF_RANGE, u=printed(budget.max_expanded, q, rounding="up"),
+            t=tolerance_figure(t, q))])
     common = {**common, "probability": float(mc.probability), "raised_to_cmc": raised}
     return Conformity(verdict, text, rule_text, quantity_text, x, upper,
                       "" if verdict == "not assessed" else
                       # the zones are thresholds on a result near T, where no end is held
-                      # at 0: the half-widths as evaluated (the CMC's where it raised them)
-                      _zones(t, 0.0 if rule == "simple" else upper,
-                             0.0 if rule == "simple" else lower, rule, d, q,
-                             asymmetric=f"{lower:.{d}f}" != f"{upper:.{d}f}"), mc, lower,
+                      # at 0: the statement's printed U₊ and U₋ (the CMC's where it raised
+                      # them); U₋ rounded up from the half-width where the statement's is held
+                      # at 0 (a value below U₋ is below T, so the rejection zone is not
+                      # reached)
+                      _zones(t, shown["upper"], shown["lower"] if x - lower >= 0.0 else
+                             printed(lower, q, decimals=places, rounding="up"), rule,
+                             places, q), mc, lower,
                       reason=_withheld_text(reasons) if reasons else "",
                       conforming_probability=conforming,
                       decision_risk=_risk(verdict, conforming), **common)

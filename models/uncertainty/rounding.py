@@ -8,18 +8,21 @@ from __future__ import annotations
 import math
 
 __all__ = ["interval_decimals", "interval_ends", "printed_range", "significant_decimals", "stated_interval",
-           "uncertainty_decimals", "without_interval_decimals"]
+           "stated_pair", "uncertainty_decimals", "without_interval_decimals"]
 
 
 def significant_decimals(expanded: float) -> int | None:
     """Decimals that show U with at most two significant digits (GUM 7.2.6, JJF 1059.1),
-    after rounding (0.0996 is "0.10", not "0.100"); None if U is not a positive number.
-    Never negative: a U of 100 or more is printed to the unit."""
+    after rounding up, as every U is printed (0.0996 is "0.10", not "0.100"; 0.994 is "1.0",
+    not "1.00"); None if U is not a positive number. Never negative: a U of 100 or more is
+    printed to the unit."""
     if not math.isfinite(expanded) or expanded <= 0:
         return None
     decimals = 1 - int(math.floor(math.log10(expanded)))
-    if round(expanded, decimals) >= 10.0 ** (2 - decimals) * (1 - 1e-12):
-        decimals -= 1  # rounding carried into a third digit
+    units = expanded * 10.0 ** decimals
+    up = round(units) if abs(units - round(units)) < 1e-9 else math.ceil(units)
+    if up >= 100:
+        decimals -= 1  # rounding up carried into a third digit
     return max(0, decimals)
 
 
@@ -112,8 +115,10 @@ def stated_interval(value: float, lower: float, upper: float, decimals: int,
     the computed end (:func:`interval_ends`: never inward, so the printed interval holds the
     computed one); each U the printed value to its printed end, and never less than the
     computed U rounded up (GUM 7.2.6 allows U rounded up), its end moved out to match where
-    that is further. ``clip_at_zero``: a half range, whose lower end is held at 0 (U₋ then
-    the value). Returns {"value", "lower", "upper", "low", "high"}."""
+    that is further; a symmetric interval (``lower`` = ``upper``) printed ±U, the wider of
+    the two, both ends at it, so that one U is printed and decided with (issue 39).
+    ``clip_at_zero``: a half range, whose lower end is held at 0 (U₋ then the value).
+    Returns {"value", "lower", "upper", "low", "high"}."""
     shown = round(value, decimals) + 0.0
     if not all(math.isfinite(x) for x in (value, lower, upper)):
         return {"value": shown, "lower": lower, "upper": upper, "low": value - lower,
@@ -125,9 +130,26 @@ def stated_interval(value: float, lower: float, upper: float, decimals: int,
                     round(shown - _on_grid(value - lower, decimals, math.floor), decimals))
     plus = max(_on_grid(upper, decimals, math.ceil),
                round(_on_grid(value + upper, decimals, math.ceil) - shown, decimals))
+    if lower == upper and not (clip_at_zero and value - lower <= 0.0):
+        minus = plus = max(minus, plus)  # a symmetric interval stays so: ±U, the wider (issue 39)
     if clip_at_zero and shown - minus < 0.0:  # held at 0: U₋ the printed value less it
         minus = shown
     low = round(shown - minus, decimals) + 0.0
     return {"value": shown, "lower": round(minus, decimals) + 0.0,
             "upper": round(plus, decimals) + 0.0, "low": low,
             "high": round(shown + plus, decimals) + 0.0}
+
+
+def stated_pair(value: float, expanded: float) -> tuple[float, float, int]:
+    """A figure and its symmetric U as printed side by side ("+10.3″", "3.1″": a results
+    table's point and its U column, a deciding point's "|e| = …, U = …"): (the value to
+    the nearest, U, decimals), U :func:`stated_interval`'s (the wider of its two), so that
+    value ± U holds the computed interval and U is never below U rounded up (issue 39: every printed U
+    the same figure, and a decision re-done from the printed value and U gives the printed
+    verdict). The sign of ``value`` does not change U. A U that is zero or not a number is
+    returned as it is (a reference point, U withheld), the value then unrounded."""
+    if not (math.isfinite(expanded) and expanded > 0):
+        return value, expanded, uncertainty_decimals(expanded)
+    decimals = uncertainty_decimals(expanded)
+    shown = stated_interval(value, expanded, expanded, decimals)
+    return shown["value"], shown["upper"], decimals

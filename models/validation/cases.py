@@ -166,7 +166,8 @@ def decision_machinery_cases() -> list[ValidationCase]:
                                     QT_TR_NOOP("not assessed") if not decided.stated else
                                     VERDICT_WORDS.get(decided.verdict, decided.verdict),
                                     not decided.stated and math.isfinite(decided.value)))
-    for u, printed in ((2.03, "2.0"), (0.0996, "0.10"), (3.54, "3.5"), (0.094, "0.094")):
+    # rounded up, as every printed U (issue 39)
+    for u, printed in ((2.03, "2.1"), (0.0996, "0.10"), (3.54, "3.6"), (0.094, "0.094")):
         got = gum_rounded(0.0, u)[1]
         cases.append(ValidationCase(w, message(QT_TR_NOOP("U = {u}\" printed to two significant "
                                                           "digits"), u=f"{u:g}"),

@@ -30,6 +30,7 @@ from models.dcc.schema import validate
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
+from tests.printed_u import u_beside
 
 pytestmark = pytest.mark.slow  # certificates, DCCs, XLSX and the JSON
 
@@ -154,11 +155,14 @@ def test_without_a_cmc_the_u_from_face1_is_what_the_readings_give(issued, tmp_pa
     assert not [key for key in plain if key.startswith("uncertainty_raised_to_cmc_")]
     assert plain["expanded_uncertainty_polygon_deviation_from_face1_arcsec"] == \
         plain["polygon_deviation_U_from_face1_arcsec"]
-    # the certificate's column as before: 2 significant digits of the readings' own U
+    # the certificate's column as before: 2 significant digits of the readings' own U, as
+    # printed beside its figure (rounded up; issue 39)
     text = _pdf_text(issued["out"] / "plain.pdf")
     rows = re.findall(r"^\s*(\d+)\s+\d+\.0000\s+[+-]\d\.\d+\s+0\.\d+\s+[+-]\d\.\d{3}\s+(0\.\d+)\s*$",
                       text, re.M)
-    assert [u for _, u in rows] == [f"{u:.3f}" for u in issued["u_face1"][1:]]
+    d1 = plain["polygon_deviation_from_face1_arcsec"]
+    assert [u for _, u in rows] == [u_beside(x, u) for x, u in
+                                    zip(d1[1:], issued["u_face1"][1:], strict=True)]
     assert "holds the U stated from face 1" not in text
 
 
@@ -166,13 +170,17 @@ def test_the_certificate_prints_u_from_face1_held_to_the_cmc(issued):
     text = _pdf_text(issued["out"] / "p.pdf")
     # the results table: face, nominal, deviation, U, from face 1, U from face 1; each figure
     # from face 1 to its U's decimal (0.10″: 2 decimals), face 1 the reference point
-    rows = re.findall(r"^\s*(\d+)\s+(\d+\.0000)\s+([+-]\d\.\d\d)\s+(0\.10)\s+([+-]\d\.\d+)\s+"
+    # (each U the CMC's 0.10″ as printed beside its figure: rounded up, the figure ± U
+    # holding the computed interval, so 0.10″ or 0.11″; issue 39)
+    rows = re.findall(r"^\s*(\d+)\s+(\d+\.0000)\s+([+-]\d\.\d\d)\s+(0\.1\d)\s+([+-]\d\.\d+)\s+"
                       r"(0\.\d+)\s*$", text, re.M)
     d1 = np.asarray(issued["plain"]["polygon_deviation_from_face1_arcsec"])
+    deviation = np.asarray(issued["plain"]["polygon_deviation_arcsec"])
     assert [r[0] for r in rows] == [str(i) for i in range(2, 13)]
-    assert [r[5] for r in rows] == ["0.10"] * 11
+    assert [r[5] for r in rows] == [u_beside(x, CMC_POLYGON) for x in d1[1:]]
+    assert [r[3] for r in rows] == [u_beside(x, CMC_POLYGON) for x in deviation[1:]]
     assert [r[4] for r in rows] == [f"{x:+.2f}" for x in d1[1:]]
-    assert re.search(r"^\s*1\s+0\.0000\s+[+-]\d\.\d\d\s+0\.10\s+\+0\.00\s*$", text, re.M)
+    assert re.search(r"^\s*1\s+0\.0000\s+[+-]\d\.\d\d\s+0\.1\d\s+\+0\.00\s*$", text, re.M)
     flat = " ".join(text.split())
     assert flat.count("reference point, by") == 1  # face 1's U (the layout wraps it)
     assert "U(x_j − x_i), is at most 0.10\"." in flat  # two significant digits (GUM 7.2.6)
@@ -194,7 +202,9 @@ def test_the_certificate_document_of_the_encoder_holds_u_from_step0(issued):
     np.testing.assert_array_equal(columns["expanded_uncertainty_from_step0_arcsec"], expected)
     table = document.results
     last = [row[-1] for row in table.rows]
-    assert last[1:] == ["0.070"] * 11 and "reference point" in str(last[0])
+    from_step0 = columns["error_from_step0_arcsec"]
+    assert last[1:] == [u_beside(x, CMC_ENCODER) for x in from_step0[1:]]
+    assert "reference point" in str(last[0])
     # and the PDF issued with the same settings prints them
     flat = " ".join(_pdf_text(issued["out"] / "e.pdf").split())
     assert "holds the U stated from step 0 and the U of the difference of any two too: from " \

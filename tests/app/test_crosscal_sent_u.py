@@ -26,6 +26,7 @@ import pytest
 from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.registry import KINDS
+from tests.printed_u import u_beside
 
 pytestmark = pytest.mark.slow  # the window, the CLI and a certificate
 
@@ -100,8 +101,11 @@ def test_the_sample_certifies_a_u_from_face1_with_the_autocollimators_u(certifie
     u, bare, k = certified["u"], certified["bare"], certified["k"]
     assert u[0] == 0.0 and bare[0] == 0.0
     assert 0.045 < u.max() < 0.055 and 0.02 < bare.max() < 0.035
-    # the certificate prints the JSON's figures (rounded to two significant digits)
-    np.testing.assert_allclose(certified["printed"], u, atol=0.0005)
+    # the certificate prints the JSON's figures (two significant digits, rounded up, as
+    # printed beside each figure: issue 39)
+    d1 = certified["d1"]
+    assert [f"{p:.3f}" for p in certified["printed"][1:]] == [
+        u_beside(x, w) for x, w in zip(d1[1:], u[1:], strict=True)]
     # independently: the comparator's share is u_c·|G_i − G_1| through the design (its U
     # 0.1″ stated as "U95", k = 2: models/uncertainty/budget.py BASIS_DIVISORS)
     result = KIND.analyze(*_parsed())

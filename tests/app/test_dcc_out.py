@@ -25,6 +25,7 @@ from lxml import etree
 from app.main import main
 from models.dcc import vocabulary as v
 from models.dcc.schema import validate
+from tests.printed_u import u_beside
 
 pytestmark = pytest.mark.slow  # each sample prints a certificate
 
@@ -233,10 +234,13 @@ def test_the_cross_calibrations_u_is_one_figure_in_json_certificate_and_dcc(issu
     rows = re.findall(r"^\s+(\d+)\s+(\d+\.\d{4})\s+([+\-]\d\.\d{3})\s+(\d\.\d{3})\s+"
                       r"([+\-]\d\.\d{3})\s*(\d\.\d{3})?", text, re.M)
     assert len(rows) == 12
-    printed = np.array([float(r[3]) for r in rows])
-    assert printed == pytest.approx(np.round(u, 3), abs=1e-9)
-    printed1 = np.array([float(r[5]) for r in rows[1:]])
-    assert printed1 == pytest.approx(np.round(u1[1:], 3), abs=1e-9)
+    # each U as printed beside its figure (two significant digits rounded up, the figure ± U
+    # holding the computed interval: issue 39)
+    deviation = data["polygon_deviation_arcsec"]
+    from_face1 = data["polygon_deviation_from_face1_arcsec"]
+    assert [r[3] for r in rows] == [u_beside(x, w) for x, w in zip(deviation, u, strict=True)]
+    assert [r[5] for r in rows[1:]] == [u_beside(x, w) for x, w in
+                                        zip(from_face1[1:], u1[1:], strict=True)]
 
 
 def _statement_types(xml: Path) -> set[str]:
@@ -436,11 +440,11 @@ def test_parameters_carry_their_printed_u_and_k_and_summary_figures_their_interv
     tree = etree.fromstring(issued["theodolite"][3].read_bytes())
     psi = next(q for q in tree.iterfind(".//dcc:quantity[@refType='anglebench_setupParameter']", NS)
                if q.findtext("dcc:name/dcc:content", namespaces=NS) == "Axis tilt ψ")
-    # printed: 5.8263° with U 6.3" (0.0018°: the value to U's last digit, GUM 7.2.6) at
-    # k = 2.07 (the parameters' own k, not the curve's)
+    # printed: 5.8263° with U 6.4" (U rounded up, issue 39; 0.0018°: the value to U's
+    # last digit, GUM 7.2.6) at k = 2.07 (the parameters' own k, not the curve's)
     assert float(psi.findtext("si:real/si:value", namespaces=NS)) == 5.8263
     assert psi.findtext("si:real/si:unit", namespaces=NS) == r"\degree"
-    assert float(psi.findtext(".//si:valueExpandedMU", namespaces=NS)) == pytest.approx(6.3 / 3600)
+    assert float(psi.findtext(".//si:valueExpandedMU", namespaces=NS)) == pytest.approx(6.4 / 3600)
     assert float(psi.findtext(".//si:coverageFactor", namespaces=NS)) == 2.07
     tree = etree.fromstring(issued["positioning"][3].read_bytes())
     a = next(lst for lst in tree.iterfind(".//dcc:list[@refType='anglebench_summaryFigure']", NS)

@@ -148,9 +148,12 @@ def test_the_decided_interval_is_printed_from_the_jsons_ends(issued, name):
         # the deciding point named in the note, its value signed ± U (0.8.17)
         d = _decimals(max(value - low, high - value))
         shown = _stated(value, low, high, d)
-        assert f"{shown['low']}{Q} … {shown['high']}{Q}" in pdf, (name, low, high)
-        assert "Every point's" in pdf and "the deciding point: target" in pdf, name
+        # a point's ±U is one figure, the wider of the two, and its ends the value ∓ it
+        # (issue 39: the U the table prints and the point is decided with)
         wider = max(Decimal(shown["minus"]), Decimal(shown["plus"]))
+        ends = (Decimal(shown["value"]) - wider, Decimal(shown["value"]) + wider)
+        assert f"{ends[0]}{Q} … {ends[1]}{Q}" in pdf, (name, low, high)
+        assert "Every point's" in pdf and "the deciding point: target" in pdf, name
         assert f"{shown['value']}{Q} ±{wider}{Q}" in pdf.replace("± ", "±"), name
         # the statement's |e| and U as the table prints them (0.8.19: "U = 3.0″" beside the
         # table's "± 3.1″" before)

@@ -10,7 +10,7 @@ from models.certificate.metadata import APPLIES_TO_NAMES, ReferenceStandard
 from models.messages import QT_TR_NOOP, joined, message, separated
 from models.quantity import UNITS, Quantity
 from models.uncertainty.budget import BASIS_DIVISORS
-from models.uncertainty.conformity import uncertainty_decimals
+from models.uncertainty.printed_figure import printed
 
 
 def draw_traceability(pdf: _CertificatePdf, document: CertificateDocument) -> None:
@@ -52,8 +52,7 @@ def _stated_uncertainty(s: ReferenceStandard):
     k = s.coverage_factor
     expanded = s.uncertainty * (k if s.basis == "u" else 1.0)
     return message("{u} ({basis})",
-                   u=f"{expanded:.{uncertainty_decimals(expanded)}f}"
-                     f"{UNITS[s.uncertainty_unit].written()}",
+                   u=printed(expanded, UNITS[s.uncertainty_unit].written(), rounding="up"),
                    basis=message(QT_TR_NOOP("{basis} per {per}"), per=per,
                                  basis=message(QT_TR_NOOP("expanded uncertainty U (k = {k})"),
                                                k=f"{k:.2f}")))

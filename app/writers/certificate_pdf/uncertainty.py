@@ -8,7 +8,7 @@ from app.writers.certificate_pdf.page import GREY
 from app.writers.certificate_pdf.wording import _colon, _translatable, label
 from models.certificate.document import CertificateDocument, budget_table
 from models.messages import QT_TR_NOOP, joined, message
-from models.uncertainty.conformity import uncertainty_decimals
+from models.uncertainty.printed_figure import printed
 
 
 def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> None:
@@ -22,7 +22,7 @@ def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> Non
             "holds only the inputs that could be evaluated; they alone give {u} at most (k = "
             "{k}, {p} %), a lower bound of U, not U."),
             reason=document.uncertainty_withheld,
-            u=f"{evaluated:.{uncertainty_decimals(evaluated)}f}{document.unit}",
+            u=printed(evaluated, document.unit, rounding="up"),
             p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
     else:
         pdf.paragraph(message(QT_TR_NOOP(
@@ -31,7 +31,7 @@ def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> Non
             "uncertainty multiplied by the coverage factor k of Student's t for that point's "
             "effective degrees of freedom (Welch–Satterthwaite) and a coverage probability of "
             "{p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM "
-            "(JCGM 100:2008)."), u=f"{big_u:.{uncertainty_decimals(big_u)}f}{document.unit}",
+            "(JCGM 100:2008)."), u=printed(big_u, document.unit, rounding="up"),
             p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
         if budget_.points and bool(budget_.below_floor.any()):
             pdf.paragraph(message(QT_TR_NOOP(

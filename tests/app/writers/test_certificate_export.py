@@ -5,6 +5,7 @@ from __future__ import annotations
 import functools
 import io
 import json
+import math
 import re
 from dataclasses import replace
 from pathlib import Path
@@ -69,7 +70,8 @@ def test_certificate_of_each_sample_carries_its_figures(key):
     assert f"Page {pages} of {pages}" in flat and "Page 1 of" in flat
     assert "AB-2026-0042" in flat and "长春光机所" in flat and "王工" in flat
     big_u = document.expanded_uncertainty
-    assert f"U = {big_u:.{uncertainty_decimals(big_u)}f}\"" in flat
+    d = uncertainty_decimals(big_u)  # two significant digits, rounded up (issue 39)
+    assert f"U = {math.ceil(big_u * 10**d - 1e-9) / 10**d:.{d}f}\"" in flat
     assert "Decision rule" in flat and "DRAFT" not in flat
     for row in document.parameters.rows[:3]:  # the identified parameters, as printed
         assert re.sub(r"\s+", " ", row[1]) in flat

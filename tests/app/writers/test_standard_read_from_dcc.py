@@ -4,6 +4,8 @@ significant digits (GUM 7.2.6), not the U/k the budget takes to six digits
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from app.writers.certificate_pdf.traceability import _standards_table
@@ -33,10 +35,12 @@ def test_a_standard_from_its_dcc_is_printed_as_u_with_its_k(k, basis):
     row = _standards_table(document).rows[0]
     d = two_digits(U)
     assert d == 3
-    # and what it is stated per (day review 69 F2): the polygon's, each face's reading
-    assert str(row[3]) == f"{U:.{d}f}\" (expanded uncertainty U (k = {k:.2f}) per reading)"
-    assert str(row[3]) in ("0.050\" (expanded uncertainty U (k = 2.02) per reading)",
-                           "0.050\" (expanded uncertainty U (k = 2.00) per reading)")
+    # and what it is stated per (day review 69 F2): the polygon's, each face's reading; U
+    # rounded up as every printed U, the figure its own certificate prints (issue 39)
+    up = math.ceil(U * 10**d) / 10**d
+    assert str(row[3]) == f"{up:.{d}f}\" (expanded uncertainty U (k = {k:.2f}) per reading)"
+    assert str(row[3]) in ("0.051\" (expanded uncertainty U (k = 2.02) per reading)",
+                           "0.051\" (expanded uncertainty U (k = 2.00) per reading)")
     # the budget still takes u = U/k exactly
     rows = {r["name"]: r for r in document.budget.table()}
     assert rows["Polygon P12"]["u"] == pytest.approx(U / k)

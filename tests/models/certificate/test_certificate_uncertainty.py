@@ -127,10 +127,11 @@ def test_theodolite_setup_parameters_take_k_from_their_own_dof():
     k = GTC.reporting.k_factor(nu, 100 * math.erf(math.sqrt(2)))
     assert document.parameters.header[2] == f"U (k = {k:.2f}, ν = {nu})"
     u_psi = result.identification.uncertainty_deg[0] * 3600.0
-    # U to two significant digits (GUM 7.2.6; three were printed before issue 39)
+    # U to two significant digits (GUM 7.2.6; three were printed before issue 39), rounded
+    # up as every printed U (issue 39, "conformity you can defend")
     printed = document.parameters.rows[0][2]
     decimals = significant_decimals(k * u_psi)
-    assert printed == f"{k * u_psi:.{decimals}f}\""
+    assert printed == f"{math.ceil(k * u_psi * 10**decimals - 1e-9) / 10**decimals:.{decimals}f}\""
 
 
 # 13. the deciding point named as the results table names it ----------------------------------
@@ -316,7 +317,13 @@ def test_fringe_prints_every_sample_and_its_extreme():
     # printed to the decimal of its U (GUM 7.2.6; issue 39: three decimals whatever U was)
     d = significant_decimals(float(document.budget.expanded[lowest]))
     assert rows[lowest][0] == f"{lowest + 1}" and rows[lowest][2] == f"{result.raw_error[lowest]:+.{d}f}"
-    assert rows[lowest][5] == f"{document.budget.expanded[lowest]:.{d}f}"
+    # U beside its figure rounded up, the figure ± U holding the computed interval (issue 39:
+    # the U a point is decided with), one digit above U rounded up at most
+    big, shown, step = float(document.budget.expanded[lowest]), float(rows[lowest][5]), 10.0**-d
+    value, low_digits = float(rows[lowest][2]), f"{shown:.{d}f}" == rows[lowest][5]
+    assert low_digits and big <= shown < big + 2 * step
+    assert value - shown <= result.raw_error[lowest] - big + 1e-12
+    assert value + shown >= result.raw_error[lowest] + big - 1e-12
 
 
 # 6. the positioning figures with their U ---------------------------------------------------
