@@ -234,6 +234,11 @@
         <translation>逐个拟合 {n} 个周期</translation>
     </message>
     <message>
+        <source>Each figure is rounded on its own from its unrounded value (GUM 7.2.6), so on some rows a printed difference (a correction) differs by one in the last digit from the difference of the figures printed beside it.</source>
+        <extracomment>under a results table where a printed difference (a correction, B_i) is not the difference of the figures printed beside it (assessment 70 L3)</extracomment>
+        <translation>每个数值均由其未修约值单独修约（GUM 7.2.6），故某些行中印出的差值（修正值）与旁边所印两数之差在末位上相差一个单位。</translation>
+    </message>
+    <message>
         <source>Statistics</source>
         <translation>统计结果</translation>
     </message>
