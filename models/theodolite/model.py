@@ -297,7 +297,7 @@ def tilt_not_identified(theta_deg, elevation_deg) -> str:
         return message(QT_TR_NOOP(
             "every elevation is {value}°: no variation, while a tilt of the axis moves it as the "
             "mirror turns. The axis tilt and its direction are not identified (ψ = 0 is not a "
-            "finding, nor R² = 1) and the set-up's error not removed; the tilt bound enters the "
+            "finding, nor is a perfect fit) and the set-up's error not removed; the tilt bound enters the "
             "uncertainty. Check that the elevations were read, not copied."),
             value=f"{values[0]:g}")
     if values.size < ELEVATION_FIT_UNKNOWNS:
