@@ -297,8 +297,8 @@ def tilt_not_identified(theta_deg, elevation_deg) -> str:
         return message(QT_TR_NOOP(
             "every elevation is {value}°: no variation, while a tilt of the axis moves it as the "
             "mirror turns. The axis tilt and its direction are not identified (ψ = 0 is not a "
-            "finding, nor is a perfect fit) and the set-up's error not removed; the tilt bound enters the "
-            "uncertainty. Check that the elevations were read, not copied."),
+            "finding, nor is a perfect fit) and the set-up's error not removed; the tilt bound "
+            "enters the uncertainty. Check that the elevations were read, not copied."),
             value=f"{values[0]:g}")
     if values.size < ELEVATION_FIT_UNKNOWNS:
         return message(QT_TR_NOOP(
@@ -804,7 +804,9 @@ def analyze_run(
             method=method))
     if not unidentified:
         check_fit(ident, accuracy_arcsec, row_numbers)
-    zeta = induced_error_arcsec(rotation, *ident.setup.as_array())
+    # a tilt not identified: nothing removed (not ψ = 0's ζ, zero but for rounding)
+    zeta = (np.zeros(rotation.shape) if unidentified
+            else induced_error_arcsec(rotation, *ident.setup.as_array()))
     # The seed's ζ' = A − θ is reference − indicated (a correction); the error of indication
     # is its negative, and the set-up's share of it is −ζ.
     raw_error = -raw_arcsec
