@@ -593,8 +593,9 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     k = coverage_factor(nu, budget.probability)
     u2 = k * ident.uncertainty_deg * 3600.0  # expanded, arcsec
     parameters = Table(
-        QT_TR_NOOP("Set-up parameters identified"), (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
-                                                     f"U (k = {k:.2f}, ν = {nu})"),
+        QT_TR_NOOP("Set-up parameters identified") if ident.tilt_identified else
+        QT_TR_NOOP("Set-up parameters: the tilt not identified"),
+        (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"), f"U (k = {k:.2f}, ν = {nu})"),
         [(QT_TR_NOOP("Axis tilt ψ"), _degrees_to_its_u(s.psi_deg, u2[0], 5), expanded_text(u2[0]))
          if ident.tilt_identified else
          (QT_TR_NOOP("Axis tilt ψ"), message(TILT_NOT_IDENTIFIED_CELL),
@@ -604,12 +605,15 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
          (QT_TR_NOOP("Tilt direction α"), message(NOT_IDENTIFIED if ident.tilt_identified
                                                   else TILT_NOT_IDENTIFIED_CELL), ""),
          (QT_TR_NOOP("Mirror normal β"), _degrees_to_its_u(s.beta_deg, u2[2], 5),
-          expanded_text(u2[2])),
+          expanded_text(u2[2])) if ident.tilt_identified else
+         (QT_TR_NOOP("Mirror normal β"), f"{s.beta_deg:.4f}°",
+          message(QT_TR_NOOP("−E at the reference reading"))),
          (QT_TR_NOOP("Identified from"), message(_IDENTIFIED_FROM.get(
              ident.method, QT_TR_NOOP("{method} readings")), method=ident.method), ""),
-         (QT_TR_NOOP("R² of the fit"), f"{ident.r_squared:.8f}", "") if ident.tilt_identified else
-         (QT_TR_NOOP("R² of the fit"), message(QT_TR_NOOP("no fit")), ""),
-         (QT_TR_NOOP("Residual RMS"), f"{ident.residual_rms_arcsec:.3f}\"", ""),
+         *(((QT_TR_NOOP("R² of the fit"), f"{ident.r_squared:.8f}", ""),
+            (QT_TR_NOOP("Residual RMS"), f"{ident.residual_rms_arcsec:.3f}\"", ""))
+           if ident.tilt_identified else
+           ((QT_TR_NOOP("R² of the fit"), message(QT_TR_NOOP("no fit")), ""),)),
          (QT_TR_NOOP("Reference point θ₀"), f"{result.reference_theta_deg:g}°", "")])
     correction = -result.model_error_arcsec
     results = PointTable(QT_TR_NOOP("Results per point (corrected = raw + correction)"), (

@@ -131,3 +131,19 @@ def test_the_stated_tilt_bound_in_u_covers_the_true_error(bound):
         worst = max(worst, float(np.max(miss)))
     assert worst > 1.0  # the set-up's share is there to cover (ψ tan β ≈ 1.8″ at ±20°)
     assert covered / points >= 0.95, (covered, points)
+
+
+def test_the_certificate_says_the_tilt_is_not_identified_and_prints_no_fit_figures():
+    from models.theodolite.report import theodolite_certificate
+
+    rng = np.random.default_rng(75)
+    theta, az, el, _ = readings(TILT, 200.0, rng)
+    result = analyze_run(theta, az, el, accuracy_arcsec=SIGMA, tilt_bound_arcsec=60.0)
+    doc = theodolite_certificate(result, CertificateMetadata())
+    rows = {str(r[0]): [str(c) for c in r[1:]] for r in doc.parameters.rows}
+    assert "not identified" in rows["Axis tilt ψ"][0] and "60" in rows["Axis tilt ψ"][1]
+    assert "not identified" in rows["Tilt direction α"][0]
+    assert rows["R² of the fit"][0] == "no fit" and "Residual RMS" not in rows
+    assert any("not identified" in str(w) for w in doc.warnings)
+    names = [str(c.name) for c in doc.budget.components]
+    assert "Axis tilt, not identified (bound)" in names
