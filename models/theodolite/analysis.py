@@ -16,7 +16,12 @@ from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite import KEY, MEASURAND_STANDARDS, TITLE
 from models.theodolite.acquisition import theodolite_guide
-from models.theodolite.model import MODEL_INPUT, TheodoliteResult, analyze_run
+from models.theodolite.model import (
+    DEFAULT_TILT_BOUND_ARCSEC,
+    MODEL_INPUT,
+    TheodoliteResult,
+    analyze_run,
+)
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.probability_text import percent_text
@@ -81,6 +86,12 @@ PARAMETERS = (
                    "states it (basis u, the same figure); residuals above 3× it raise a warning; "
                    "beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % "
                    "(R²), the result is refused; 0: no check"),
+    Parameter("tilt_bound_arcsec", "largest axis tilt ψ, when not identified", "float",
+              DEFAULT_TILT_BOUND_ARCSEC, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
+              help="When the elevations cannot identify the tilt (all equal, only 2 distinct "
+                   "values, or no degrees of freedom) the set-up's error is not removed: its "
+                   "effect for a tilt up to this, in the worst direction, enters the "
+                   "uncertainty (rectangular); not used when the tilt is fitted"),
     cmc_parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "\"", "the axis error"),
     # its budget counts the means' noise once (#39), unlike the other workbenches' help says
     dataclasses.replace(
@@ -140,7 +151,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
         reference_index=reference_index, method=str(s["method"]),
         psi_max_deg=float(s["psi_max_deg"]), beta_max_deg=float(s["beta_max_deg"]),
         accuracy_arcsec=float(s["accuracy_arcsec"]) or None, directions=directions,
-        row_numbers=parsed.row_index + 1,
+        row_numbers=parsed.row_index + 1, tilt_bound_arcsec=float(s["tilt_bound_arcsec"]),
     )
     runs = parsed["run"]
     result.runs = runs.astype(int) if np.all(np.isfinite(runs)) else None
@@ -205,12 +216,17 @@ def to_json(result: TheodoliteResult) -> dict[str, Any]:
         "raw_error_arcsec": result.raw_error_arcsec.tolist(),
         "model_error_arcsec": result.model_error_arcsec.tolist(),
         "corrected_error_arcsec": result.corrected_error_arcsec.tolist(),
-        "psi_deg": ident.setup.psi_deg,
+        # null where the elevations do not identify the tilt (tilt_not_identified says why)
+        "psi_deg": ident.setup.psi_deg if ident.tilt_identified else None,
         # null where ψ is not told from 0 (models.uncertainty.tilt_direction; a warning says so)
         "alpha_deg": ident.setup.alpha_deg if ident.alpha_determined else None,
         "beta_deg": ident.setup.beta_deg,
-        "r_squared": ident.r_squared,
-        "psi_u_deg": float(u[0]),
+        "r_squared": ident.r_squared if ident.tilt_identified else None,
+        "psi_u_deg": float(u[0]) if ident.tilt_identified else None,
+        "tilt_identified": ident.tilt_identified,
+        "tilt_not_identified": ident.tilt_not_identified or None,
+        # the tilt bound whose effect enters the uncertainty (null when the tilt is fitted)
+        "tilt_bound_arcsec": None if ident.tilt_identified else ident.tilt_bound_arcsec,
         "alpha_u_deg": float(u[1]) if ident.alpha_determined else None,
         "beta_u_deg": float(u[2]),
         "residual_rms_arcsec": ident.residual_rms_arcsec,
@@ -329,21 +345,29 @@ def summary(result: TheodoliteResult, printed: int | None = None) -> str:
     u = ident.uncertainty_deg * 3600.0
     s, c, r = ident.setup, result.corrected_stats, result.raw_stats
     out: list[str] = [
-        message(QT_TR_NOOP("Set-up identified from the elevation readings ({n} points, "
+        message(QT_TR_NOOP("Set-up not identified from the elevation readings ({n} points, "
+                           "reference θ = {theta}°): {why}") if not ident.tilt_identified else
+                QT_TR_NOOP("Set-up identified from the elevation readings ({n} points, "
                            "reference θ = {theta}°):") if ident.method == "elevation" else
                 QT_TR_NOOP("Set-up identified from the azimuth readings ({n} points, "
                            "reference θ = {theta}°):"),
-                n=r.n, theta=f"{result.reference_theta_deg:g}"),
-        message(QT_TR_NOOP("  axis tilt       ψ = {value}° ± {u}"),
-                value=_to_digit_of(s.psi_deg, u[0]), u=_standard_u(u[0])),
-        message(QT_TR_NOOP("  tilt direction  α = {value}° ± {u}"),
-                value=_to_digit_of(s.alpha_deg, u[1]), u=_standard_u(u[1]))
-        if ident.alpha_determined else
-        message(QT_TR_NOOP("  tilt direction  α not identified (ψ not told from 0)")),
-        message(QT_TR_NOOP("  mirror normal   β = {value}° ± {u}"),
-                value=_to_digit_of(s.beta_deg, u[2]), u=_standard_u(u[2])),
-        message(QT_TR_NOOP("  R² = {r2}, residual RMS = {rms}"), r2=f"{ident.r_squared:.8f}",
-                rms=f"{ident.residual_rms_arcsec:.3f}\""),
+                n=r.n, theta=f"{result.reference_theta_deg:g}", why=ident.tilt_not_identified),
+        *((message(QT_TR_NOOP("  axis tilt       ψ = {value}° ± {u}"),
+                   value=_to_digit_of(s.psi_deg, u[0]), u=_standard_u(u[0])),
+           message(QT_TR_NOOP("  tilt direction  α = {value}° ± {u}"),
+                   value=_to_digit_of(s.alpha_deg, u[1]), u=_standard_u(u[1]))
+           if ident.alpha_determined else
+           message(QT_TR_NOOP("  tilt direction  α not identified (ψ not told from 0)")),
+           message(QT_TR_NOOP("  mirror normal   β = {value}° ± {u}"),
+                   value=_to_digit_of(s.beta_deg, u[2]), u=_standard_u(u[2])),
+           message(QT_TR_NOOP("  R² = {r2}, residual RMS = {rms}"), r2=f"{ident.r_squared:.8f}",
+                   rms=f"{ident.residual_rms_arcsec:.3f}\""))
+          if ident.tilt_identified else
+          (message(QT_TR_NOOP("  axis tilt ψ and direction α not identified: nothing removed; "
+                              "a tilt up to {bound} (stated) enters the uncertainty"),
+                   bound=f"{ident.tilt_bound_arcsec:g}\""),
+           message(QT_TR_NOOP("  mirror normal   β = {value}° (from the reference reading)"),
+                   value=f"{s.beta_deg:.4f}"))),
         message(QT_TR_NOOP("Raw error        {low} … {high} (peak-to-peak {ptp})"),
                 **_printed(r, d)),
         message(QT_TR_NOOP("Corrected error  {low} … {high} (peak-to-peak {ptp}, RMS {rms})"),

@@ -34,6 +34,16 @@ from models.uncertainty.tilt_direction import NOT_DETERMINED, direction_determin
 
 #: the budget's name of the set-up model's error (the run's budget and the passes' means)
 MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")
+#: the budget's name of a tilt the elevations do not identify: not removed, its bound's effect
+TILT_BOUND_INPUT = QT_TR_NOOP("Axis tilt, not identified (bound)")
+#: both set-up inputs: what the JSON's model error carries, and not the raw error
+SETUP_INPUTS = (MODEL_INPUT, TILT_BOUND_INPUT)
+
+#: the largest axis tilt the budget assumes when the elevations do not identify it (the
+#: setting tilt_bound_arcsec's default, ″; the polygon workbench's figure)
+DEFAULT_TILT_BOUND_ARCSEC = 300.0
+#: the elevation fit's unknowns (ψ, α, β)
+ELEVATION_FIT_UNKNOWNS = 3
 
 __all__ = [
     "Identification",
@@ -47,6 +57,8 @@ __all__ = [
     "identify_from_azimuth",
     "identify_from_elevations",
     "induced_error_arcsec",
+    "tilt_bound_effect_arcsec",
+    "tilt_not_identified",
     "model_error_modes",
     "rotated_normal",
     "setups_from_coefficients",
@@ -209,6 +221,16 @@ class Identification:
     method: str
     candidates: list[SetupParameters] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
+    # why the readings do not identify the tilt ("" when they do): ψ = 0 is then no finding,
+    # nothing is removed, and a tilt up to ``tilt_bound_arcsec`` enters the uncertainty
+    tilt_not_identified: str = ""
+    tilt_bound_arcsec: float = 0.0
+    # a reading's σ when the readings show no scatter to evaluate it (the accuracy setting)
+    reading_noise_arcsec: float = 0.0
+
+    @property
+    def tilt_identified(self) -> bool:
+        return not self.tilt_not_identified
 
     @property
     def uncertainty_deg(self) -> np.ndarray:
@@ -216,9 +238,10 @@ class Identification:
 
     @property
     def alpha_determined(self) -> bool:
-        """Whether the tilt direction α is determined: ψ told from 0 by its u
-        (models.uncertainty.tilt_direction)."""
-        return direction_determined(self.setup.psi_deg, float(self.uncertainty_deg[0]))
+        """Whether the tilt direction α is determined: the tilt identified and ψ told from 0
+        by its u (models.uncertainty.tilt_direction)."""
+        return self.tilt_identified and direction_determined(
+            self.setup.psi_deg, float(self.uncertainty_deg[0]))
 
     @property
     def correlation(self) -> np.ndarray:
@@ -249,6 +272,84 @@ def _r_squared(observed: np.ndarray, residuals: np.ndarray) -> float:
 
 def _within(p: SetupParameters, psi_max_deg: float, beta_max_deg: float) -> bool:
     return p.psi_deg <= psi_max_deg + 1e-9 and abs(p.beta_deg) <= beta_max_deg + 1e-9
+
+
+def tilt_not_identified(theta_deg, elevation_deg) -> str:
+    """Why the elevations cannot identify the axis tilt, naming it ("" when they can).
+
+    A tilt ψ of the axis moves the elevation as the mirror turns (sin E = a + b cos θ +
+    c sin θ, b and c of order ψ): elevations that are all equal carry no tilt to fit, and a
+    fit through them shows no scatter, so they cannot say how noisy they are either (its
+    u would be 0); two distinct values are too few for the fit's three unknowns (ψ, α, β);
+    no more distinct θ than unknowns leaves no degrees of freedom.
+    """
+    theta = np.asarray(theta_deg, dtype=float)
+    elev = np.asarray(elevation_deg, dtype=float)
+    points = _distinct(np.round(theta, 6)).size
+    if points <= ELEVATION_FIT_UNKNOWNS:
+        return message(QT_TR_NOOP(
+            "{n} distinct θ give the elevation fit's 3 unknowns (ψ, α, β) no degrees of freedom: "
+            "it would pass through every reading whatever its noise. The axis tilt and its "
+            "direction are not identified and the set-up's error not removed; the tilt bound "
+            "enters the uncertainty."), n=points)
+    values = _distinct(np.round(elev, 9))
+    if values.size == 1:
+        return message(QT_TR_NOOP(
+            "every elevation is {value}°: no variation, while a tilt of the axis moves it as the "
+            "mirror turns. The axis tilt and its direction are not identified (ψ = 0 is not a "
+            "finding, nor is a perfect fit) and the set-up's error not removed; the tilt bound "
+            "enters the uncertainty. Check that the elevations were read, not copied."),
+            value=f"{values[0]:g}")
+    if values.size < ELEVATION_FIT_UNKNOWNS:
+        return message(QT_TR_NOOP(
+            "the elevations take only {n} distinct values ({values}°): too few for the fit's 3 "
+            "unknowns (ψ, α, β), a tilt within their resolution. The axis tilt and its direction "
+            "are not identified and the set-up's error not removed; the tilt bound enters the "
+            "uncertainty. Read the elevations to a finer digit to identify it."),
+            n=values.size, values=", ".join(f"{v:g}" for v in values))
+    return ""
+
+
+def tilt_bound_effect_arcsec(rotation_deg, beta_deg: float, bound_arcsec: float) -> np.ndarray:
+    """The largest |ζ(θ)| a tilt of ``bound_arcsec`` gives at each rotation from the reference
+    (where ζ = 0), over every tilt direction α (1° steps) and the tilt up to the bound (the
+    effect is first order in ψ tan β, second in ψ², so its largest is at the bound)."""
+    rotation = np.asarray(rotation_deg, dtype=float)
+    worst = np.zeros(rotation.shape)
+    if not bound_arcsec > 0:
+        return worst
+    for psi in (0.5 * bound_arcsec, bound_arcsec):
+        for alpha in np.arange(360.0):
+            worst = np.maximum(worst, np.abs(induced_error_arcsec(
+                rotation, psi / 3600.0, float(alpha), beta_deg)))
+    return worst
+
+
+def _unidentified(theta_rel_deg: np.ndarray, elevation_deg: np.ndarray, reference_index: int,
+                  reason: str, bound_arcsec: float, accuracy_arcsec: float | None
+                  ) -> Identification:
+    """The set-up when the elevations do not identify the tilt: ψ = 0 (nothing removed, not a
+    finding), β from the reference reading (E₀ = −β whatever the tilt), no fit statistics.
+    Readings without variation show no noise either: the accuracy setting is a reading's σ,
+    and without it the run is refused (ValueError) rather than its noise taken as 0."""
+    if not (accuracy_arcsec and accuracy_arcsec > 0):
+        raise ValueError(message(QT_TR_NOOP(
+            "{why} Nor do these elevations show the readings' noise: state the theodolite "
+            "accuracy (1σ) to evaluate the run"), why=reason))
+    beta = -float(elevation_deg[reference_index])
+    residuals = (np.asarray(elevation_deg, dtype=float) + beta) * 3600.0
+    return Identification(
+        setup=SetupParameters(0.0, 0.0, beta),
+        covariance_deg2=np.zeros((3, 3)),
+        residuals_arcsec=residuals,
+        r_squared=float("nan"),
+        residual_rms_arcsec=float(np.sqrt(np.mean(residuals ** 2))),
+        method="elevation",
+        warnings=[reason],
+        tilt_not_identified=reason,
+        tilt_bound_arcsec=float(bound_arcsec),
+        reading_noise_arcsec=float(accuracy_arcsec),
+    )
 
 
 def identify_from_elevations(
@@ -448,7 +549,13 @@ def model_error_modes(rotation_deg: np.ndarray, ident: Identification) -> np.nda
     from the parameters' errors is modes @ z, z ~ N(0, I₃) (first order: ζ's gradient in
     ψ, α, β times a square root of their covariance). Its rows' norms are ζ's standard
     uncertainty; the modes keep how it is correlated from θ to θ (one set of parameters for
-    the whole run)."""
+    the whole run). A tilt not identified: its bound's effect, rectangular (÷ √3), as one
+    mode, the same unknown tilt at every θ."""
+    if not ident.tilt_identified:
+        modes = np.zeros((np.size(rotation_deg), 3))
+        modes[:, 0] = tilt_bound_effect_arcsec(rotation_deg, ident.setup.beta_deg,
+                                               ident.tilt_bound_arcsec) / math.sqrt(3.0)
+        return modes
     p = ident.setup.as_array()
     steps = np.array([1e-6, 1e-5, 1e-6])
     grads = []
@@ -620,6 +727,7 @@ def analyze_run(
     accuracy_arcsec: float | None = None,
     directions=None,
     row_numbers=None,
+    tilt_bound_arcsec: float = DEFAULT_TILT_BOUND_ARCSEC,
 ) -> TheodoliteResult:
     """Analyse one theodolite run.
 
@@ -638,6 +746,10 @@ def analyze_run(
         Approach direction per row; with repeated θ gives the ISO 230-2 figures.
     row_numbers : array of int, optional
         The sheet row of each reading, for the messages of a refusal (default 1, 2, …).
+    tilt_bound_arcsec : float
+        The largest axis tilt (″) when the elevations do not identify it
+        (:func:`tilt_not_identified`): nothing is removed and its effect enters the
+        uncertainty.
 
     Raises
     ------
@@ -659,7 +771,13 @@ def analyze_run(
     az_rel = az - az[reference_index]
     raw = (az_rel - theta_rel + 180.0) % 360.0 - 180.0
     raw_arcsec = raw * 3600.0
-    if method == "elevation":
+    unidentified = tilt_not_identified(theta_rel, elev) if method == "elevation" else ""
+    if unidentified:
+        ident = _unidentified(theta_rel, elev, reference_index, unidentified, tilt_bound_arcsec,
+                              accuracy_arcsec)
+        rotation = az_rel  # ψ = 0: the azimuth is the rotation
+        elev_res = ident.residuals_arcsec
+    elif method == "elevation":
         # The elevations were read where the axis truly was, θ_true = θ + e, not at the
         # indicated θ; fitting them against θ lets the axis' own error leak into the
         # set-up. Iterate: identify, recover θ_true from the azimuths, identify again.
@@ -684,8 +802,11 @@ def analyze_run(
         raise ValueError(message(
             QT_TR_NOOP("unknown identification method '{method}'"),
             method=method))
-    check_fit(ident, accuracy_arcsec, row_numbers)
-    zeta = induced_error_arcsec(rotation, *ident.setup.as_array())
+    if not unidentified:
+        check_fit(ident, accuracy_arcsec, row_numbers)
+    # a tilt not identified: nothing removed (not ψ = 0's ζ, zero but for rounding)
+    zeta = (np.zeros(rotation.shape) if unidentified
+            else induced_error_arcsec(rotation, *ident.setup.as_array()))
     # The seed's ζ' = A − θ is reference − indicated (a correction); the error of indication
     # is its negative, and the set-up's share of it is −ζ.
     raw_error = -raw_arcsec
@@ -693,10 +814,11 @@ def analyze_run(
     corrected = raw_error - model
     check_corrected(corrected, theta, az, reference_index, row_numbers)
     warnings = list(ident.warnings)
-    if not ident.alpha_determined:
+    if ident.tilt_identified and not ident.alpha_determined:
         warnings.append(message(NOT_DETERMINED, tilt=f"ψ = {ident.setup.psi_deg * 3600.0:.2f}\"",
                                 u=f"{ident.uncertainty_deg[0] * 3600.0:.2f}\"", direction="α"))
-    if accuracy_arcsec and ident.residual_rms_arcsec > RESIDUAL_WARNED * accuracy_arcsec:
+    if (accuracy_arcsec and not unidentified
+            and ident.residual_rms_arcsec > RESIDUAL_WARNED * accuracy_arcsec):
         warnings.append(message(
             RESIDUAL_ABOVE_ACCURACY,
             rms=f"{ident.residual_rms_arcsec:.2f}\"", accuracy=f"{accuracy_arcsec:g}\""))

@@ -92,7 +92,7 @@ from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite import KEY, MEASURAND_STANDARDS, TITLE
 from models.theodolite.accuracy_check import certificate_warnings
 from models.theodolite.figures import MODEL_INPUT, per_angle_note, pooled_repeats
-from models.theodolite.model import TheodoliteResult
+from models.theodolite.model import SETUP_INPUTS, TILT_BOUND_INPUT, TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import (
     BudgetComponent,
@@ -282,6 +282,26 @@ def reading_error_components(result: TheodoliteResult,
     # the rest of one reading's stated error is the circle's, the same in every repeat
     circle = _circle_part(u_std, s_rep, readings)
     u_mean = math.hypot(circle, s_rep)
+    ident = result.identification
+    if not ident.tilt_identified and pooled is None:  # no fit, no scatter: never a noise of 0
+        value = max(u_std, ident.reading_noise_arcsec)
+        note = per_angle_note(message(QT_TR_NOOP(
+            "one error per reading, counted once: the elevations do not vary, so they show no "
+            "scatter; the larger of the stated standards' u = {u} per reading and the "
+            "theodolite accuracy {accuracy} (the setting), Type B, ν = ∞"),
+            u=f"{u_std:.3f}\"", accuracy=f"{ident.reading_noise_arcsec:g}\""), stated)
+        return [
+            BudgetComponent(READING_INPUT, "B", "normal", value, 1.0, single, math.inf,
+                            message(QT_TR_NOOP("{governs}; the point's own reading, one value "
+                                               "per point"), governs=note),
+                            dof_group="reading"),
+            BudgetComponent(REFERENCE_READING_INPUT, "B", "normal", value, 1.0, single,
+                            math.inf, QT_TR_NOOP(
+                                "the zeroing reading at θ₀, shared by every point (one value "
+                                "for the run): two readings enter each error, the point's and "
+                                "the zero's, each with the same u (the figure chosen once, "
+                                "above); one input for ν_eff"),
+                            common=True, dof_group="reading")]
     if u_mean > s and s_rep == 0.0:  # one reading a point (or n equal ones): the standard
         governs, evaluation, nu = "standard", "B", math.inf
         if len(stated) == 1:  # its own figure and distribution (per reading: u/√2 of
@@ -333,10 +353,21 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata,
     pair = math.sqrt(2.0) * single
     dof = max(n - 3, 1)
     components = reading_error_components(result, metadata)
-    components.append(BudgetComponent(
-        MODEL_INPUT, "A", "normal", result.model_uncertainty_arcsec,
-        1.0, 1.0, dof, QT_TR_NOOP("covariance of the identified parameters propagated through "
-                                  "ζ(θ)")))
+    ident = result.identification
+    if ident.tilt_identified:
+        components.append(BudgetComponent(
+            MODEL_INPUT, "A", "normal", result.model_uncertainty_arcsec,
+            1.0, 1.0, dof, QT_TR_NOOP("covariance of the identified parameters propagated "
+                                      "through ζ(θ)")))
+    elif ident.tilt_bound_arcsec > 0:
+        # the model's u is the bound's effect ÷ √3 (models.theodolite.model.model_error_modes)
+        components.append(BudgetComponent(
+            TILT_BOUND_INPUT, "B", "rectangular",
+            result.model_uncertainty_arcsec * math.sqrt(3.0), math.sqrt(3.0), 1.0, math.inf,
+            message(QT_TR_NOOP("a tilt up to {psi} (stated) in its worst direction, not "
+                               "identified by the elevations and not removed: its exact "
+                               "effect on ζ(θ) with β = {beta}"),
+                    psi=f"{ident.tilt_bound_arcsec:g}\"", beta=f"{ident.setup.beta_deg:.4f}°")))
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
                              floor=cmc_of(settings, "cmc_arcsec"))
@@ -360,7 +391,7 @@ def theodolite_json_budgets(result: TheodoliteResult, metadata: CertificateMetad
     full = theodolite_budget(result, metadata, settings)
 
     def part(keep, floor: float) -> UncertaintyBudget:
-        return UncertaintyBudget(tuple(c for c in full.components if keep(c.name == MODEL_INPUT)),
+        return UncertaintyBudget(tuple(c for c in full.components if keep(c.name in SETUP_INPUTS)),
                                  full.points, full.probability, full.unit, floor)
 
     # the laboratory's CMC is a floor on the axis error's U, as found (raw) or corrected,
@@ -546,6 +577,10 @@ def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
                     estimate=withheld)
 
 
+#: the parameters table's cell of ψ and α when the elevations do not identify the tilt
+TILT_NOT_IDENTIFIED_CELL = QT_TR_NOOP("not identified by the elevations")
+
+
 def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,
                            source_name: str = "", method_reference: str = "",
                            settings: Mapping[str, Any] | None = None) -> CertificateDocument:
@@ -558,18 +593,27 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     k = coverage_factor(nu, budget.probability)
     u2 = k * ident.uncertainty_deg * 3600.0  # expanded, arcsec
     parameters = Table(
-        QT_TR_NOOP("Set-up parameters identified"), (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
-                                                     f"U (k = {k:.2f}, ν = {nu})"),
-        [(QT_TR_NOOP("Axis tilt ψ"), _degrees_to_its_u(s.psi_deg, u2[0], 5), expanded_text(u2[0])),
+        QT_TR_NOOP("Set-up parameters identified") if ident.tilt_identified else
+        QT_TR_NOOP("Set-up parameters: the tilt not identified"),
+        (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"), f"U (k = {k:.2f}, ν = {nu})"),
+        [(QT_TR_NOOP("Axis tilt ψ"), _degrees_to_its_u(s.psi_deg, u2[0], 5), expanded_text(u2[0]))
+         if ident.tilt_identified else
+         (QT_TR_NOOP("Axis tilt ψ"), message(TILT_NOT_IDENTIFIED_CELL),
+          message(QT_TR_NOOP("bound {bound} (stated) in U"), bound=f"{ident.tilt_bound_arcsec:g}\"")),
          (QT_TR_NOOP("Tilt direction α"), _degrees_to_its_u(s.alpha_deg, u2[1], 4),
           expanded_text(u2[1])) if ident.alpha_determined else
-         (QT_TR_NOOP("Tilt direction α"), message(NOT_IDENTIFIED), ""),
+         (QT_TR_NOOP("Tilt direction α"), message(NOT_IDENTIFIED if ident.tilt_identified
+                                                  else TILT_NOT_IDENTIFIED_CELL), ""),
          (QT_TR_NOOP("Mirror normal β"), _degrees_to_its_u(s.beta_deg, u2[2], 5),
-          expanded_text(u2[2])),
+          expanded_text(u2[2])) if ident.tilt_identified else
+         (QT_TR_NOOP("Mirror normal β"), f"{s.beta_deg:.4f}°",
+          message(QT_TR_NOOP("−E at the reference reading"))),
          (QT_TR_NOOP("Identified from"), message(_IDENTIFIED_FROM.get(
              ident.method, QT_TR_NOOP("{method} readings")), method=ident.method), ""),
-         (QT_TR_NOOP("R² of the fit"), f"{ident.r_squared:.8f}", ""),
-         (QT_TR_NOOP("Residual RMS"), f"{ident.residual_rms_arcsec:.3f}\"", ""),
+         *(((QT_TR_NOOP("R² of the fit"), f"{ident.r_squared:.8f}", ""),
+            (QT_TR_NOOP("Residual RMS"), f"{ident.residual_rms_arcsec:.3f}\"", ""))
+           if ident.tilt_identified else
+           ((QT_TR_NOOP("R² of the fit"), message(QT_TR_NOOP("no fit")), ""),)),
          (QT_TR_NOOP("Reference point θ₀"), f"{result.reference_theta_deg:g}°", "")])
     correction = -result.model_error_arcsec
     results = PointTable(QT_TR_NOOP("Results per point (corrected = raw + correction)"), (
@@ -602,7 +646,9 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         budget_point=lambda worst: f"θ = {result.theta_deg[worst]:g}°",
         plots=(error_figure(result), corrected_with_uncertainty(result, big_u),
                residual_figure(result)),
-        warnings=certificate_warnings(result.warnings, ident.residual_rms_arcsec,
+        # no fit, no residual to judge (the reason the tilt is not identified is a warning)
+        warnings=certificate_warnings(result.warnings, ident.residual_rms_arcsec
+                                      if ident.tilt_identified else 0.0,
                                       stated_reading_uncertainty(metadata)[0], settings),
         statements=(message(QT_TR_NOOP("U is zero at the reference reading (row {row}, θ₀ = "
                                        "{theta}): the theodolite was zeroed there, so its error "
