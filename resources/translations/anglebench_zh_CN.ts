@@ -1014,6 +1014,10 @@
         <translation>每点 {readings} 次读数的平均值只有一个误差，只计一次：没有标准器给出每个读数的 u，故取离散度 {scatter} 与{repeats}中的较大者；{verdict}</translation>
     </message>
     <message>
+        <source>one error per reading, counted once: the elevations do not vary, so they show no scatter; the larger of the stated standards&apos; u = {u} per reading and the theodolite accuracy {accuracy} (the setting), Type B, ν = ∞</source>
+        <translation>每个读数一个误差，只计一次：俯仰角没有变化，因而显示不出离散；取所列标准器每个读数的 u = {u} 与经纬仪准确度 {accuracy}（设置值）中的较大者，B 类，ν = ∞</translation>
+    </message>
+    <message>
         <source>{governs}; the point&apos;s own reading, one value per point</source>
         <translation>{governs}；该点自身的读数，每点一个值</translation>
     </message>
@@ -1025,6 +1029,10 @@
         <source>Reading error (pointing)</source>
         <extracomment>the budget&apos;s names of the reading error at the point and at θ₀ (one input, two readings)</extracomment>
         <translation>读数误差（瞄准）</translation>
+    </message>
+    <message>
+        <source>a tilt up to {psi} (stated) in its worst direction, not identified by the elevations and not removed: its exact effect on ζ(θ) with β = {beta}</source>
+        <translation>不超过 {psi}（给定）、方向最不利的倾斜，俯仰角未能辨识，未扣除：其在 β = {beta} 时对 ζ(θ) 的精确影响</translation>
     </message>
     <message>
         <source>no coverage interval</source>
@@ -1076,8 +1084,21 @@
         <translation>半峰峰值按各测回在每个 θ 和方向上的均值判定（保留反向差），每个均值有自己的不确定度预算：测回合并的分散除以 √n、安装模型的误差，以及所给经纬仪 u 中分散未显示的部分（在每个测回中同一 θ 处相同）。读数不能排除这一部分时（所给 u 超出指向噪声置信下限的部分），其形状未知：区间还包含 ISO 230-2 的 E 区间的一半，后者可容纳该部分以内任意形状的度盘误差。</translation>
     </message>
     <message>
+        <source>not identified by the elevations</source>
+        <extracomment>the parameters table&apos;s cell of ψ and α when the elevations do not identify the tilt</extracomment>
+        <translation>俯仰角未能辨识</translation>
+    </message>
+    <message>
+        <source>Set-up parameters: the tilt not identified</source>
+        <translation>安装参数：倾斜未辨识</translation>
+    </message>
+    <message>
         <source>Axis tilt ψ</source>
         <translation>轴倾角 ψ</translation>
+    </message>
+    <message>
+        <source>bound {bound} (stated) in U</source>
+        <translation>上限 {bound}（给定）计入 U</translation>
     </message>
     <message>
         <source>Tilt direction α</source>
@@ -1086,6 +1107,10 @@
     <message>
         <source>Mirror normal β</source>
         <translation>反射镜法线 β</translation>
+    </message>
+    <message>
+        <source>−E at the reference reading</source>
+        <translation>参考读数处的 −E</translation>
     </message>
     <message>
         <source>Identified from</source>
@@ -1102,6 +1127,10 @@
     <message>
         <source>Residual RMS</source>
         <translation>残差均方根</translation>
+    </message>
+    <message>
+        <source>no fit</source>
+        <translation>未拟合</translation>
     </message>
     <message>
         <source>Reference point θ₀</source>
@@ -5625,6 +5654,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>包含区间（{p} %，仅由读数得出；证书还计入所列标准器的 u）：</translation>
     </message>
     <message>
+        <source>Set-up not identified from the elevation readings ({n} points, reference θ = {theta}°): {why}</source>
+        <translation>俯仰角读数未能辨识安装误差（{n} 个点，参考 θ = {theta}°）：{why}</translation>
+    </message>
+    <message>
         <source>Set-up identified from the elevation readings ({n} points, reference θ = {theta}°):</source>
         <translation>由俯仰角读数辨识的安装误差（{n} 个点，参考 θ = {theta}°）：</translation>
     </message>
@@ -5653,6 +5686,14 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>  R² = {r2}，残差均方根 = {rms}</translation>
     </message>
     <message>
+        <source>  axis tilt ψ and direction α not identified: nothing removed; a tilt up to {bound} (stated) enters the uncertainty</source>
+        <translation>  轴倾角 ψ 及方向 α 未辨识：不作扣除；不超过 {bound}（给定）的倾斜计入不确定度</translation>
+    </message>
+    <message>
+        <source>  mirror normal   β = {value}° (from the reference reading)</source>
+        <translation>  反射镜法线     β = {value}°（由参考读数得出）</translation>
+    </message>
+    <message>
         <source>Raw error        {low} … {high} (peak-to-peak {ptp})</source>
         <translation>原始误差         {low} … {high}（峰峰值 {ptp}）</translation>
     </message>
@@ -5668,6 +5709,28 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up contributed {share} to the raw peak-to-peak</source>
         <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）；安装误差对原始峰峰值的贡献为 {share}</translation>
+    </message>
+    <message>
+        <source>Axis tilt, not identified (bound)</source>
+        <extracomment>the budget&apos;s name of a tilt the elevations do not identify: not removed, its bound&apos;s effect</extracomment>
+        <translation>轴倾角，未辨识（上限）</translation>
+    </message>
+    <message>
+        <source>{n} distinct θ give the elevation fit&apos;s 3 unknowns (ψ, α, β) no degrees of freedom: it would pass through every reading whatever its noise. The axis tilt and its direction are not identified and the set-up&apos;s error not removed; the tilt bound enters the uncertainty.</source>
+        <extracomment>both set-up inputs: what the JSON&apos;s model error carries, and not the raw error the largest axis tilt the budget assumes when the elevations do not identify it (the setting tilt_bound_arcsec&apos;s default, ″; the polygon workbench&apos;s figure) the elevation fit&apos;s unknowns (ψ, α, β)</extracomment>
+        <translation>{n} 个不同的 θ 使俯仰角拟合的 3 个未知量（ψ、α、β）没有自由度：无论噪声如何，拟合都会穿过每个读数。轴倾角及其方向未辨识，安装误差未扣除；倾斜上限计入不确定度。</translation>
+    </message>
+    <message>
+        <source>every elevation is {value}°: no variation, while a tilt of the axis moves it as the mirror turns. The axis tilt and its direction are not identified (ψ = 0 is not a finding, nor is a perfect fit) and the set-up&apos;s error not removed; the tilt bound enters the uncertainty. Check that the elevations were read, not copied.</source>
+        <translation>所有俯仰角均为 {value}°，没有变化，而轴的倾斜会使俯仰角随反射镜转动而变化。轴倾角及其方向未辨识（ψ = 0 不是测量结果，完美拟合也不是），安装误差未扣除；倾斜上限计入不确定度。请核实俯仰角确为实测而非抄录。</translation>
+    </message>
+    <message>
+        <source>the elevations take only {n} distinct values ({values}°): too few for the fit&apos;s 3 unknowns (ψ, α, β), a tilt within their resolution. The axis tilt and its direction are not identified and the set-up&apos;s error not removed; the tilt bound enters the uncertainty. Read the elevations to a finer digit to identify it.</source>
+        <translation>俯仰角只有 {n} 个不同的值（{values}°）：对拟合的 3 个未知量（ψ、α、β）而言太少，倾斜在其分辨力以内。轴倾角及其方向未辨识，安装误差未扣除；倾斜上限计入不确定度。请将俯仰角读到更细的位数以辨识倾斜。</translation>
+    </message>
+    <message>
+        <source>{why} Nor do these elevations show the readings&apos; noise: state the theodolite accuracy (1σ) to evaluate the run</source>
+        <translation>{why}这些俯仰角也显示不出读数噪声：请给出经纬仪准确度（1σ）以评定该次测量</translation>
     </message>
     <message>
         <source>at least 4 readings are needed to identify ψ, α, β</source>
@@ -7925,6 +7988,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>经纬仪竖直度盘的读数；E 按方法论文（田留德等 2017）的定义，在水平面以下为正（OZ 向下）：若读数向上为正，则得到 α + 180° 和 −β，修正后误差不变</translation>
     </message>
     <message>
+        <source>When the elevations cannot identify the tilt (all equal, only 2 distinct values, or no degrees of freedom) the set-up&apos;s error is not removed: its effect for a tilt up to this, in the worst direction, enters the uncertainty (rectangular); not used when the tilt is fitted</source>
+        <translation>当俯仰角无法辨识倾斜（全部相等、只有 2 个不同值或没有自由度）时，安装误差不予扣除：不超过此值、方向最不利的倾斜的影响计入不确定度（矩形分布）；拟合出倾斜时不使用</translation>
+    </message>
+    <message>
         <source>When the vertical readings cannot identify the tilt (none given, all equal, or only 3 faces: no degrees of freedom) the pyramidal error is not removed: its exact effect for a tilt up to this, in the worst direction, enters the uncertainty (rectangular); not used when the tilt is fitted</source>
         <translation>当竖直读数无法辨识倾斜时（未给出、全部相等，或只有 3 个面：没有自由度），塔差误差不予扣除：不超过此值、处于最不利方向的倾斜的精确影响计入不确定度（矩形分布）；倾斜已拟合时不使用</translation>
     </message>
@@ -8015,6 +8082,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>largest autocollimator drift over a mounting, when not measured</source>
         <translation>安装位置内自准直仪的最大漂移（未测量时）</translation>
+    </message>
+    <message>
+        <source>largest axis tilt ψ, when not identified</source>
+        <translation>最大轴倾角 ψ（未辨识时）</translation>
     </message>
     <message>
         <source>largest tilt of the polygon on the shaft, when not identified</source>
