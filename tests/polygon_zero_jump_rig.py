@@ -13,6 +13,11 @@ limit; ``offsets`` says how the sets' offsets relate), and/or a steady drift ``r
 reading over the whole test. A set reads its faces
 forward, or reverse from face 1, then face 1 again (the closure).
 
+The encoder's error curve (``shape``): "harmonics" (4 harmonics falling as 1/k, rms
+``curve_rms``), or, of true half peak-to-peak ``half_range`` at the faces, "smooth" (1st and
+2nd harmonics), "rough" (ten harmonics falling as 1/k) or "spike" (one face's stop a narrow
+bump of 2·``half_range`` on a flat curve, the shaft's error 0 half a degree away).
+
 The truth: the encoder's error at faces 1…n against face 1, and half its peak-to-peak; the
 polygon certificate's calibration error is one draw a run (a measurement error, not truth).
 """
@@ -51,6 +56,8 @@ class ZeroJumpRig:
     offsets: str = "from_first"
     rate: float = 0.0  # the zero's steady drift per reading (″)
     curve_rms: float = 0.8  # the encoder's error curve (4 harmonics), rms (″)
+    shape: str = "harmonics"  # or "smooth", "rough", "spike" (of half range ``half_range``)
+    half_range: float = 1.0  # the true half peak-to-peak at the faces of those shapes (″)
     tilt_arcsec: float = 150.0
     pyramidal_sd: float = 3.0  # each face's own angle out of the plane (″)
     roll_arcmin: float = 1.0  # the autocollimator's roll, drawn within ± this
@@ -61,13 +68,7 @@ class ZeroJumpRig:
         """(CSV lines with the header, the true error at faces 1…n against face 1)."""
         n = self.faces
         step = 2.0 * math.pi / n
-        h = np.arange(1, 5)
-        a, b = rng.normal(size=4) / h, rng.normal(size=4) / h
-        scale = self.curve_rms / math.sqrt(0.5 * float(np.sum(a * a + b * b)))
-        a, b = a * scale, b * scale
-
-        def error(phi: float) -> float:  # the encoder's error at shaft angle phi (″)
-            return float(np.sum(a * np.cos(h * phi) + b * np.sin(h * phi)))
+        error = self._curve(rng, step)
 
         cert = np.round(np.concatenate(([0.0], rng.normal(0.0, 0.3, n - 1))), 2)
         true_dev = cert + np.r_[0.0, rng.normal(0.0, self.cert_u, n - 1)]
@@ -100,3 +101,31 @@ class ZeroJumpRig:
                 t += 1
         truth = np.array([error(f * step) for f in range(n)], dtype=float)
         return lines, truth - float(truth[0])
+
+    def _curve(self, rng: np.random.Generator, step: float):
+        """The encoder's error (″) as a function of the shaft angle (rad)."""
+        if self.shape == "spike":
+            at = float(rng.integers(self.faces)) * step
+            width = math.radians(0.1)  # far narrower than a face's pitch, far wider than a stop
+
+            def spike(phi: float) -> float:
+                off = math.remainder(phi - at, 2.0 * math.pi)
+                return 2.0 * self.half_range * math.exp(-0.5 * (off / width) ** 2)
+            return spike
+        if self.shape == "harmonics":
+            h = np.arange(1, 5)
+            a, b = rng.normal(size=4) / h, rng.normal(size=4) / h
+            scale = self.curve_rms / math.sqrt(0.5 * float(np.sum(a * a + b * b)))
+        else:
+            h = np.arange(1, 3) if self.shape == "smooth" else np.arange(1, 11)
+            amp = np.array([1.0, 0.5]) if self.shape == "smooth" else 1.0 / h
+            phase = rng.uniform(0.0, 2.0 * math.pi, h.size)
+            a, b = amp * np.sin(phase), amp * np.cos(phase)
+            at_faces = [float(np.sum(a * np.cos(h * f * step) + b * np.sin(h * f * step)))
+                        for f in range(self.faces)]
+            scale = self.half_range / (0.5 * (max(at_faces) - min(at_faces)))
+        a, b = a * scale, b * scale
+
+        def error(phi: float) -> float:  # the encoder's error at shaft angle phi (″)
+            return float(np.sum(a * np.cos(h * phi) + b * np.sin(h * phi)))
+        return error
