@@ -46,8 +46,16 @@ phase rounds alike in every period, and averaging the periods leaves it whole (a
 tests' with no noise: the parameters' U covering 39–54 % of 1000 records, the worst 33–39 %). What repeats at
 the phases beyond the scatter is added, and the rounding's own variance floors each u (the
 scatter showed 10⁻¹⁷ V for readings typed from a noise-free signal):
-:mod:`models.fringe.rounding_at_phases`. What an integral nonlinearity (a pattern over the
-voltage) leaves in the offsets and amplitudes is not in these U (not yet studied).
+:mod:`models.fringe.rounding_at_phases`.
+
+The ADC's integral nonlinearity stated (±b a channel): a transfer error of unknown shape, the
+same at the same voltage in every period, so neither the scatter nor averaging shows it (an
+audit, 71 finding 1: at ±3 mV the 3rd harmonic's A3 and c3 covered 1–2 of 40 runs, U/oracle
+0.02–0.06). Its bound on each parameter, b through the parameter's weights over the
+readings (the offset's b, a harmonic's ≈ 4b/π), enters rectangular (B/√3) on that
+channel's offset, amplitudes and phases, and, each channel's INL its own, on the amplitude
+ratio and the quadrature error from both channels' bounds as independent:
+:mod:`models.fringe.linearity_in_parameters`.
 
 With the phase estimated from the signals (no θ column, no N), the parameters are those of
 the estimated phase's frame, which the harmonics shift: any distortion of the phase that

@@ -90,7 +90,9 @@ def main(argv: list[str]) -> None:
                 result = run_cell(amplitude, inl * 1e-3, shape, runs)
                 rows = sorted((*score(p), key) for key, p in result.items())
                 below = [r[5] for r in rows if r[2] and r[1] < r[4]]
-                _, covered, n, ratio, floor, key = rows[0]
+                # the worst: the least share covered of the parameters given a U
+                _, covered, n, ratio, floor, key = min(
+                    (r for r in rows if r[2]), key=lambda r: (r[1] / r[2], r[0]))
                 ratios = [r[3] for r in rows if math.isfinite(r[3])]
                 sys.stdout.write(
                     f"| {amplitude:g} | {inl:g} | {shape} | {', '.join(below) or '—'} | "
