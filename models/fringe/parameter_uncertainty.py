@@ -102,7 +102,13 @@ _ACTS_ON = {"adc_offset_u_mv": (QT_TR_NOOP("ADC offset"), (QT_TR_NOOP("the offse
                                 QT_TR_NOOP("the amplitude ratio"))),
             # with N equal steps the sampling's timing (sample_phase_u_rad): on the phases
             "phase_reference_u": (QT_TR_NOOP("Phase reference"),
-                                  (QT_TR_NOOP("the harmonics' phases c"),))}
+                                  (QT_TR_NOOP("the harmonics' phases c"),)),
+            # the integral nonlinearity: on every parameter (linearity_in_parameters)
+            "adc_linearity_mv": (QT_TR_NOOP("ADC linearity"),
+                                 (QT_TR_NOOP("the offsets A₀"), QT_TR_NOOP("the amplitudes A"),
+                                  QT_TR_NOOP("the harmonics' phases c"),
+                                  QT_TR_NOOP("the amplitude ratio"),
+                                  QT_TR_NOOP("the quadrature error")))}
 
 
 @dataclass(frozen=True)
@@ -120,8 +126,8 @@ class ParameterUncertainty:
     #: effective degrees of freedom are then above the fit's)
     adc_stated: bool = False
     #: the settings' keys of the figures that act on a parameter and are not stated (not in
-    #: these U): "adc_offset_u_mv", "adc_gain_u_pct", and with N equal steps
-    #: "phase_reference_u" (the sampling's timing, on the phases c_k)
+    #: these U): "adc_offset_u_mv", "adc_gain_u_pct", with N equal steps
+    #: "phase_reference_u" (the sampling's timing, on the phases c_k), "adc_linearity_mv"
     not_stated: tuple[str, ...] = ()
     #: each channel's amplitudes' u from the fit's scatter and the readings' rounding alone
     #: (V, by order: the error along a harmonic's phasor, which :func:`phase_expanded` takes
