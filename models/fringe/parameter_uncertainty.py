@@ -46,8 +46,16 @@ phase rounds alike in every period, and averaging the periods leaves it whole (a
 tests' with no noise: the parameters' U covering 39–54 % of 1000 records, the worst 33–39 %). What repeats at
 the phases beyond the scatter is added, and the rounding's own variance floors each u (the
 scatter showed 10⁻¹⁷ V for readings typed from a noise-free signal):
-:mod:`models.fringe.rounding_at_phases`. What an integral nonlinearity (a pattern over the
-voltage) leaves in the offsets and amplitudes is not in these U (not yet studied).
+:mod:`models.fringe.rounding_at_phases`.
+
+The ADC's integral nonlinearity stated (±b a channel): a transfer error of unknown shape, the
+same at the same voltage in every period, so neither the scatter nor averaging shows it (an
+audit, 71 finding 1: at ±3 mV the 3rd harmonic's A3 and c3 covered 1–2 of 40 runs, U/oracle
+0.02–0.06). Its bound on each parameter, b through the parameter's weights over the
+readings (the offset's b, a harmonic's ≈ 4b/π), enters rectangular (B/√3) on that
+channel's offset, amplitudes and phases, and, each channel's INL its own, on the amplitude
+ratio and the quadrature error from both channels' bounds as independent:
+:mod:`models.fringe.linearity_in_parameters`.
 
 With the phase estimated from the signals (no θ column, no N), the parameters are those of
 the estimated phase's frame, which the harmonics shift: any distortion of the phase that
@@ -63,7 +71,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from models.fringe.rounding_at_phases import RoundingAtPhases, parameter_variances
+from models.fringe.linearity_in_parameters import linearity_bounds
+from models.fringe.rounding_at_phases import RoundingAtPhases, parameter_variances, phase_groups
 from models.fringe.sampling_phase_noise import phase_excess_variance, phase_noise_rad
 from models.messages import QT_TR_NOOP, Message, listed, message
 
@@ -93,7 +102,13 @@ _ACTS_ON = {"adc_offset_u_mv": (QT_TR_NOOP("ADC offset"), (QT_TR_NOOP("the offse
                                 QT_TR_NOOP("the amplitude ratio"))),
             # with N equal steps the sampling's timing (sample_phase_u_rad): on the phases
             "phase_reference_u": (QT_TR_NOOP("Phase reference"),
-                                  (QT_TR_NOOP("the harmonics' phases c"),))}
+                                  (QT_TR_NOOP("the harmonics' phases c"),)),
+            # the integral nonlinearity: on every parameter (linearity_in_parameters)
+            "adc_linearity_mv": (QT_TR_NOOP("ADC linearity"),
+                                 (QT_TR_NOOP("the offsets A₀"), QT_TR_NOOP("the amplitudes A"),
+                                  QT_TR_NOOP("the harmonics' phases c"),
+                                  QT_TR_NOOP("the amplitude ratio"),
+                                  QT_TR_NOOP("the quadrature error")))}
 
 
 @dataclass(frozen=True)
@@ -111,8 +126,8 @@ class ParameterUncertainty:
     #: effective degrees of freedom are then above the fit's)
     adc_stated: bool = False
     #: the settings' keys of the figures that act on a parameter and are not stated (not in
-    #: these U): "adc_offset_u_mv", "adc_gain_u_pct", and with N equal steps
-    #: "phase_reference_u" (the sampling's timing, on the phases c_k)
+    #: these U): "adc_offset_u_mv", "adc_gain_u_pct", with N equal steps
+    #: "phase_reference_u" (the sampling's timing, on the phases c_k), "adc_linearity_mv"
     not_stated: tuple[str, ...] = ()
     #: each channel's amplitudes' u from the fit's scatter and the readings' rounding alone
     #: (V, by order: the error along a harmonic's phasor, which :func:`phase_expanded` takes
@@ -128,7 +143,16 @@ def parameter_uncertainty(result) -> ParameterUncertainty:
     inputs = result.inputs or {}
     offset_v = float(inputs.get("adc_offset_u_mv", 0.0) or 0.0) * 1e-3
     gain = float(inputs.get("adc_gain_u_pct", 0.0) or 0.0) / 100.0
+    linearity_v = float(inputs.get("adc_linearity_mv", 0.0) or 0.0) * 1e-3
     fits = (result.sin_fit, result.cos_fit)
+    # the INL's bound on each parameter, rectangular (models.fringe.linearity_in_parameters)
+    groups = phase_groups(result.theta_rad, result.samples_per_period
+                          if result.phase_source == "samples_per_period" else 0) \
+        if linearity_v > 0.0 else None
+    inl = {label: ({key: (b / math.sqrt(3.0)) ** 2 for key, b in
+                    linearity_bounds(groups, fit, linearity_v).items()}
+                   if groups is not None else {})
+           for label, fit in zip(("sin", "cos"), fits, strict=True)}
     excess = phase_excess_variance(result.theta_rad, result.samples_per_period, fits,
                                    sample_phase_u_rad(result))
     channels: dict[str, dict[str, float]] = {}
@@ -137,23 +161,29 @@ def parameter_uncertainty(result) -> ParameterUncertainty:
                                            strict=True):
         both = _with_rounding(fit, rounding)
         scatter[label] = both
-        u = {"A0": math.sqrt(both["A0"] + offset_v ** 2 + (fit.offset * gain) ** 2)}
+        v_inl = inl[label]
+        u = {"A0": math.sqrt(both["A0"] + offset_v ** 2 + (fit.offset * gain) ** 2
+                             + v_inl.get("A0", 0.0))}
         for k in fit.orders:
-            u[f"A{k}"] = math.sqrt(both[f"A{k}"] + (fit.amplitude[k] * gain) ** 2)
-            u[f"c{k}"] = math.sqrt(both[f"c{k}"] + extra.get(k, 0.0))
+            u[f"A{k}"] = math.sqrt(both[f"A{k}"] + (fit.amplitude[k] * gain) ** 2
+                                   + v_inl.get(f"A{k}", 0.0))
+            u[f"c{k}"] = math.sqrt(both[f"c{k}"] + extra.get(k, 0.0) + v_inl.get(f"c{k}", 0.0))
         channels[label] = u
     s, c = result.sin_fit, result.cos_fit
     ratio = c.amplitude[1] / s.amplitude[1]
-    u_ratio = abs(ratio) * math.sqrt(scatter["sin"]["A1"] / s.amplitude[1] ** 2
-                                     + scatter["cos"]["A1"] / c.amplitude[1] ** 2
-                                     + gain ** 2)
-    quadrature = math.sqrt(scatter["sin"]["c1"] + scatter["cos"]["c1"])
+    # each channel's INL its own: their parts in the ratio and the quadrature independent
+    u_ratio = abs(ratio) * math.sqrt(
+        (scatter["sin"]["A1"] + inl["sin"].get("A1", 0.0)) / s.amplitude[1] ** 2
+        + (scatter["cos"]["A1"] + inl["cos"].get("A1", 0.0)) / c.amplitude[1] ** 2
+        + gain ** 2)
+    quadrature = math.sqrt(scatter["sin"]["c1"] + scatter["cos"]["c1"]
+                           + inl["sin"].get("c1", 0.0) + inl["cos"].get("c1", 0.0))
     return ParameterUncertainty(channels, u_ratio, quadrature, "",
                                 amplitude_scatter={
                                     label: {k: math.sqrt(both[f"A{k}"]) for k in fit.orders}
                                     for (label, both), fit in zip(scatter.items(), fits,
                                                                   strict=True)},
-                                adc_stated=bool(offset_v or gain),
+                                adc_stated=bool(offset_v or gain or linearity_v),
                                 not_stated=tuple(
                                     key for key in _ACTS_ON if not inputs.get(key) and (
                                         key != "phase_reference_u"

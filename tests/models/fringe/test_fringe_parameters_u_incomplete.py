@@ -4,7 +4,8 @@ offsets' U, 5.5 times less than with the ADC's figures stated, with no word of i
 
 The ADC offset acts on the offsets, the gain ratio on the offsets, the amplitudes and the
 amplitude ratio, the phase reference u (with N equal steps, the sampling's timing) on the
-harmonics' phases (models.fringe.parameter_uncertainty). The
+harmonics' phases, the ADC linearity (its integral nonlinearity) on every parameter (audit
+71, finding 1: in none of them before; models.fringe.parameter_uncertainty). The
 record comes from tests/fringe_adc_rig.py (first principles: the read head, an ADC offset
 and gain ratio drawn once a run, noise, rounding)."""
 
@@ -28,7 +29,8 @@ def _outputs(stated: dict) -> tuple[str, dict]:
     parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
                              "theta_deg": np.full(u_sin.size, np.nan)}, np.arange(u_sin.size))
     settings = {"lines_per_rev": 16384, "samples_per_period": 64,
-                "adc_lsb_mv": ADC.lsb_v * 1e3, "phase_reference_u": 0.02, **stated}
+                "adc_lsb_mv": ADC.lsb_v * 1e3, "phase_reference_u": 0.02,
+                "adc_linearity_mv": 0.5, **stated}
     result = FRINGE.analyze(parsed, {k: v for k, v in settings.items() if v is not None})
     metadata = CertificateMetadata.from_dict({})
     note = str(FRINGE.certificate(result, metadata).parameters.note)
@@ -43,6 +45,9 @@ def _outputs(stated: dict) -> tuple[str, dict]:
     ({"adc_offset_u_mv": 1.0}, ["ADC gain ratio"],
      ["the offsets A₀", "the amplitudes A", "the amplitude ratio"]),
     ({"adc_gain_u_pct": 0.2}, ["ADC offset"], ["the offsets A₀"]),
+    ({"adc_offset_u_mv": 1.0, "adc_gain_u_pct": 0.2, "adc_linearity_mv": None},
+     ["ADC linearity"], ["the offsets A₀", "the amplitudes A", "the harmonics' phases c",
+                         "the amplitude ratio", "the quadrature error"]),
 ])
 def test_the_u_without_an_adc_figure_is_said_incomplete(stated, named, parameters):
     note, data = _outputs(stated)
@@ -56,7 +61,7 @@ def test_the_u_without_an_adc_figure_is_said_incomplete(stated, named, parameter
         assert "ADC offset," not in note and "ADC offset not" not in note
     if stated == {"adc_gain_u_pct": 0.2}:
         assert "amplitude" not in note.split(" is incomplete")[0]
-    if stated.get("phase_reference_u", 0.02):
+    if stated.get("phase_reference_u", 0.02) and stated.get("adc_linearity_mv", 0.5):
         assert "phases" not in note.split(" is incomplete")[0]
 
 
