@@ -8610,6 +8610,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>谐波相位 c</translation>
     </message>
     <message>
+        <source>the quadrature error</source>
+        <translation>正交误差</translation>
+    </message>
+    <message>
         <source>{what}: u = {u}° of a period (stated)</source>
         <translation>{what}：u = 一个周期的 {u}°（给定值）</translation>
     </message>
