@@ -8,7 +8,7 @@ title and statements say so, naming what is missing.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from models.messages import QT_TR_NOOP, message, separated
 
@@ -66,6 +66,7 @@ def traceability_withheld(metadata: CertificateMetadata, roles: tuple[str, ...],
     calibration, whatever inputs are typed in the settings: no statement either (audit 71
     finding 2; the cross-calibration names no roles and keeps its verdicts). An expired
     standard is left to :func:`expired_withheld` (its own reason)."""
+    gaps: list[Any]
     if not metadata.standards:
         if not roles:
             return ""
