@@ -8,7 +8,7 @@ title and statements say so, naming what is missing.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from models.messages import QT_TR_NOOP, message, separated
 
@@ -59,11 +59,24 @@ def standards_not_stated(metadata: CertificateMetadata, stated_inputs: tuple[str
 def traceability_withheld(metadata: CertificateMetadata, roles: tuple[str, ...],
                           stated_inputs: tuple[str, ...] = ()) -> str:
     """Why no statement of conformity may be made while traceability is not established
-    ("" when it is, or no standard is listed yet: a draft): a decision rule rests on the
-    result's uncertainty (ISO/IEC 17025 7.1.3, 7.8.6.1; ILAC-G8:09/2019), and a result not
-    traceable to the reference has no U that relates it to the specification. An expired
+    ("" when it is): a decision rule rests on the result's uncertainty (ISO/IEC 17025 7.1.3,
+    7.8.6.1; ILAC-G8:09/2019), and a result not traceable to the reference has no U that
+    relates it to the specification. With no standard listed at all (a draft, whose title
+    :func:`traceability_gaps` leaves as it is) and ``roles`` named, U holds no standard's
+    calibration, whatever inputs are typed in the settings: no statement either (audit 71
+    finding 2; the cross-calibration names no roles and keeps its verdicts). An expired
     standard is left to :func:`expired_withheld` (its own reason)."""
-    gaps = _gaps(metadata, roles, stated_inputs, expired=False)
+    gaps: list[Any]
+    if not metadata.standards:
+        if not roles:
+            return ""
+        gaps = [message(QT_TR_NOOP(
+            "the standards that carry the measurand are {roles}, each to be listed with a "
+            "calibration certificate and a stated uncertainty; none is listed, so the "
+            "uncertainty holds no standard's calibration"),
+            roles=separated((message(r) for r in roles), "; "))]
+    else:
+        gaps = _gaps(metadata, roles, stated_inputs, expired=False)
     if not gaps:
         return ""
     return message(QT_TR_NOOP("metrological traceability of the results is not established: "

@@ -122,3 +122,68 @@ def test_a_polygon_with_its_polygon_not_listed_makes_no_statement():
     document = kind.certificate_document(result, CertificateMetadata.from_dict(details))
     assert document.conformity.verdict == "not assessed"
     assert "1 listed so (Photoelectric autocollimator)" in str(document.conformity.reason)
+
+
+# audit 71 finding 2: no standard listed at all ------------------------------------------
+#: the standards that carry each workbench's measurand, as the certificate names them (the
+#: cross-calibration names none: each item is the other's reference)
+ROLES = {"positioning": ("the reference measuring system",),
+         "theodolite": ("the autocollimating theodolite",),
+         "fringe": ("a phase or angle reference",
+                    "the ADC (its figures stated in the settings)"),
+         "polygon": ("the polygon (its face deviations)", "the autocollimator")}
+
+#: every input of U stated in the settings, as the audit typed them
+NO_STANDARD_SETTINGS = {**{k: v for k, (v, _) in CASES.items()},
+                        "fringe": {"samples_per_period": 64, **FRINGE_INPUTS}}
+
+
+def _no_standard(key: str, tolerance: float | None = None) -> CertificateMetadata:
+    details = _details(key, tolerance)
+    details["standards"] = []
+    return CertificateMetadata.from_dict(details)
+
+
+@pytest.mark.parametrize("key", sorted(ROLES))
+def test_no_statement_of_conformity_with_no_reference_standard_listed(key):
+    """The audit's positioning, theodolite and fringe (every input's u typed, none of the
+    standards listed) stated "pass" under a traceability statement "not established … no
+    reference standard with a calibration certificate"; the polygon did the same. No
+    statement is made: the reason names the standards that carry the measurand and that
+    none is listed; the figure and its interval are still given, the title a draft's as
+    before (no traceability gap: nothing listed yet)."""
+    kind, result = _sample(key, NO_STANDARD_SETTINGS[key])
+    tolerance = _details(key, None).get("tolerance")
+    # the control: every standard that carries the measurand listed with its U
+    listed = (_fringe_meta(ADC, PHASE_REFERENCE) if key == "fringe"
+              else CertificateMetadata.from_dict(_details(key, tolerance)))
+    control = kind.certificate_document(result, listed)
+    assert control.conformity.verdict != "not assessed", control.conformity.reason
+    meta = _no_standard(key, tolerance)
+    document = kind.certificate_document(result, meta)
+    assert document.conformity.verdict == "not assessed"
+    reason = str(document.conformity.reason)
+    assert "traceability of the results is not established" in reason
+    assert "none is listed, so the uncertainty holds no standard's calibration" in reason
+    for role in ROLES[key]:
+        assert role in reason
+    assert document.traceability_gaps == ()  # a draft's title, as before
+    extra = workbench_uncertainty_json(kind, result, meta, None)
+    decided = extra["decided_quantity"]
+    assert decided["verdict"] is None and decided["probability_conforming"] is None
+    assert decided["reason"] == reason
+    # the numbers are still stated: the figure and its interval (the readings' U alone)
+    assert decided["value"] is not None
+    assert decided["interval_low"] is not None and decided["interval_high"] is not None
+    assert decided["interval_low"] <= decided["value"] <= decided["interval_high"]
+    assert decided["interval_low"] == pytest.approx(document.conformity.interval_low)
+
+
+def test_the_cross_calibration_keeps_its_statement_with_no_standard_listed():
+    """Each item is the other's reference: no standard carries the measurand, so a
+    cross-calibration with none listed still states its conformity."""
+    kind, result = _sample("crosscal")
+    meta = _no_standard("crosscal", 1.0)
+    assert kind.certificate_document(result, meta).conformity.verdict != "not assessed"
+    assert workbench_uncertainty_json(kind, result, meta, None)[
+        "decided_quantity"]["verdict"] is not None

@@ -103,7 +103,14 @@ def test_one_set_withholds_u_unless_the_sigma_is_given():
     stated = {"reading_noise_arcsec": math.hypot(SIGMA_ENC, SIGMA_AC)}
     deviations, expanded, results = _runs(bench, (1,), 120, 14, stated)
     assert not POLYGON.inputs_not_stated(results[0], meta)
-    assert POLYGON.certificate_document(results[0], meta).conformity.verdict != "not assessed"
+    # a statement of conformity with the polygon and the autocollimator listed with their
+    # certificates and U (none is made with no standard listed: audit 71 finding 2)
+    listed = CertificateMetadata.from_dict({"standards": [
+        {"description": "Polygon", "serial": "P-1", "certificate_no": "CAL-1",
+         "uncertainty": 0.05},
+        {"description": "Autocollimator", "serial": "A-1", "certificate_no": "CAL-2",
+         "uncertainty": 0.05}]})
+    assert POLYGON.certificate_document(results[0], listed).conformity.verdict != "not assessed"
     covered = np.abs(deviations[:, 1:]) <= expanded[:, 1:]
     assert covered.mean() >= 0.93, covered.mean()
 

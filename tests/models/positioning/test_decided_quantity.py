@@ -42,11 +42,20 @@ def _result(rows, settings=None):
     return POSITIONING.analyze(ReadingsSheet(POSITIONING.columns, rows).parse(), settings)
 
 
-def _metadata(tolerance, rule="guarded"):
+def _metadata(tolerance, rule="guarded", standards=()):
     from models.certificate.metadata import CertificateMetadata
 
     return CertificateMetadata(tolerance=tolerance, tolerance_unit="arcsec",
-                               decision_rule=rule, decision_quantity="half_range")
+                               decision_rule=rule, decision_quantity="half_range",
+                               standards=tuple(standards))
+
+
+def _reference(u_arcsec):
+    """The reference measuring system listed with its certificate and U (no statement of
+    conformity is made with no standard listed: audit 71 finding 2)."""
+    from models.certificate.metadata import ReferenceStandard
+
+    return ReferenceStandard("Reference angle encoder", "RE-1", "CAL-1", u_arcsec)
 
 
 def _true_half_range(mu_up, mu_down):
@@ -90,7 +99,8 @@ def test_verdict_follows_the_interval(tolerance, verdict):
                             "temperature_u": 0.01})
     truth = _true_half_range(mu_up, mu_down)
     assert 3.0 < truth < 6.0
-    c = positioning_certificate(result, _metadata(tolerance)).conformity
+    c = positioning_certificate(result, _metadata(tolerance, standards=[_reference(0.01)])
+                                ).conformity
     assert c.verdict == verdict, c.statement
     assert c.interval_low <= truth <= c.interval_high
 

@@ -122,7 +122,9 @@ def test_a_schema_1_file_opens_with_each_tolerance_in_its_workbench_unit(tmp_pat
 
 
 def test_a_schema_1_file_gives_the_same_analysis_and_the_same_verdict():
-    from models.certificate.metadata import CertificateMetadata
+    from dataclasses import replace
+
+    from models.certificate.metadata import CertificateMetadata, ReferenceStandard
     from models.readings.sheet import ReadingsSheet
     from models.readings.tabular_import import map_columns, read_table
     from models.registry import KINDS
@@ -138,9 +140,13 @@ def test_a_schema_1_file_gives_the_same_analysis_and_the_same_verdict():
     np.testing.assert_array_equal(opened.corrected_error_arcsec, typed.corrected_error_arcsec)
     migrated = CertificateMetadata.from_dict(project.metadata["certificates"]["theodolite"])
     assert migrated.tolerance_quantity == Quantity(3.0, "arcsec")
-    new = kind.certificate_document(opened, migrated).conformity
-    as_before = kind.certificate_document(opened, CertificateMetadata.from_dict(
-        json.loads(FIXTURE.read_text("utf-8"))["metadata"]["certificates"]["theodolite"]))
+    # the fixture lists no standard: the theodolite listed with its certificate and U, so
+    # that a statement is made (none is with no standard listed, audit 71 finding 2)
+    theodolite = (ReferenceStandard("Autocollimating theodolite", "T-1", "CAL-1", 0.2),)
+    new = kind.certificate_document(opened, replace(migrated, standards=theodolite)).conformity
+    as_before = kind.certificate_document(opened, replace(CertificateMetadata.from_dict(
+        json.loads(FIXTURE.read_text("utf-8"))["metadata"]["certificates"]["theodolite"]),
+        standards=theodolite))
     assert (new.verdict, str(new.statement)) == (as_before.conformity.verdict,
                                                  str(as_before.conformity.statement))
     assert "±3\"" in new.statement

@@ -1,0 +1,67 @@
+"""The command line with a tolerance and no reference standard listed (audit 71 finding 2):
+positioning, theodolite and fringe, every input's u typed, stated "pass" in the JSON and "The
+item conforms" in the PDF while the same PDF said traceability is "not established … no
+reference standard with a calibration certificate". No statement is made: the JSON's verdict
+null with the reason, the PDF and the XLSX say so; the figure and its interval are given."""
+
+from __future__ import annotations
+
+import io
+import json
+from pathlib import Path
+
+import pytest
+from openpyxl import load_workbook
+
+from app.main import main
+from tests.pdf_text import pdf_text
+
+SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
+
+#: (sample, the settings every input's u is stated with, the tolerance, the standards that
+#: carry the measurand as the reason names them)
+CASES = {
+    "positioning": ("positioning_sample.csv",
+                    ["--misalignment-u", "0.2", "--reference-resolution", "0.1",
+                     "--temperature-u", "0.2"], 15.0, ["the reference measuring system"]),
+    "theodolite": ("theodolite_sample.csv", [], 3.0, ["the autocollimating theodolite"]),
+    "fringe": ("fringe_sample.csv",
+               ["--samples-per-period", "64", "--phase-reference-u", "0.01", "--adc-lsb-mv", "0.3",
+                "--adc-offset-u-mv", "0.5", "--adc-gain-u-pct", "0.02",
+                "--adc-linearity-mv", "0.6"], 3.0,
+               ["a phase or angle reference", "the ADC (its figures stated in the settings)"]),
+}
+
+
+@pytest.mark.parametrize("key", sorted(CASES))
+def test_no_verdict_on_the_command_line_with_no_standard_listed(key, tmp_path, capsys):
+    sample, settings, tolerance, roles = CASES[key]
+    meta = tmp_path / "meta.json"
+    # the audit's details: a tolerance, the simple rule, nothing else (a draft)
+    meta.write_text(json.dumps({"tolerance": tolerance, "tolerance_unit": "arcsec",
+                                "decision_rule": "simple", "decision_quantity": "half_range"}),
+                    encoding="utf-8")
+    pdf, xlsx = tmp_path / "c.pdf", tmp_path / "r.xlsx"
+    code = main(["analyze", key, str(SAMPLES / sample), "--json", *settings,
+                 "--metadata", str(meta), "--certificate", str(pdf), "--results", str(xlsx)])
+    captured = capsys.readouterr()
+    assert code == 0, captured.err
+    out = json.loads(captured.out)
+    decided = out["decided_quantity"]
+    assert out["uncertainty_inputs_not_stated"] == []  # every input's u typed
+    assert decided["verdict"] is None and decided["probability_conforming"] is None
+    reason = decided["reason"]
+    assert "none is listed, so the uncertainty holds no standard's calibration" in reason
+    for role in roles:
+        assert role in reason
+    assert decided["value"] is not None
+    assert decided["interval_low"] <= decided["value"] <= decided["interval_high"]
+    text = pdf_text(pdf.read_bytes())
+    assert "not established on this document" in text  # the draft's traceability, as before
+    assert "No statement of conformity" in text and "conforms to the specification" not in text
+    assert "none is listed, so the uncertainty holds no standard" in text
+    book = load_workbook(io.BytesIO(xlsx.read_bytes()), read_only=True)
+    cells = [str(c) for sheet in book for row in sheet.iter_rows(values_only=True)
+             for c in row if c is not None]
+    assert "No statement of conformity because" in cells
+    assert any("none is listed, so the uncertainty holds no standard" in c for c in cells)
