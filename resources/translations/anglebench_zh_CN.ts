@@ -10944,6 +10944,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>有标准器的校准在校准日期之前已过期，其所给出的不确定度不再成立：{names}</translation>
     </message>
     <message>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; none is listed, so the uncertainty holds no standard&apos;s calibration</source>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；一项也未列出，因此不确定度中不含任何计量标准的校准</translation>
+    </message>
+    <message>
         <source>metrological traceability of the results is not established: {gaps}</source>
         <translation>本结果的计量溯源性未建立：{gaps}</translation>
     </message>
