@@ -26,27 +26,9 @@ from models.certificate.metadata import CertificateMetadata
 from models.certificate.uncertainty_json import workbench_uncertainty_json
 from models.crosscal.analysis import summary, to_json, verdict
 from models.crosscal.report import crosscal_budget
-from models.readings.sheet import ReadingsSheet
-from models.registry import KINDS
-from tests.crosscal_simulator import Bench
+from tests.crosscal_drift_bench import KIND, N, analyze, bench
 
-KIND = KINDS["crosscal"]
-HARMONICS = {1: (0.8, 0.3), 2: (0.6, 1.1), 3: (0.4, 2.0), 4: (0.3, 0.7), 5: (0.2, 1.5)}
-N = 12
 MOUNTINGS = (0, 1, 5)  # the audit's design
-
-
-def bench(seed: int, **kw) -> Bench:
-    dev = np.random.default_rng(800 + seed).normal(0.0, 0.5, N)
-    return Bench(N, HARMONICS, dev, rng=np.random.default_rng(seed), **kw)
-
-
-def analyze(rows, **settings):
-    text = [[str(j), str(i), f"{a:.9f}", f"{x:.6f}", ""] for j, i, a, x in rows]
-    parsed = ReadingsSheet(KIND.columns, text).parse()
-    # no tilt (the bench seats the polygon square), no scale error: the drift alone
-    return KIND.analyze(parsed, {**KIND.default_settings, "ac_scale_pct": 0.0,
-                                 "tilt_bound_arcsec": 0.0, **settings})
 
 
 def details(**kw) -> CertificateMetadata:
