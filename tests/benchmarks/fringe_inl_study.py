@@ -37,7 +37,8 @@ from scipy import stats
 from models.fringe.analysis import FRINGE
 from models.fringe.report import parameters_json
 from models.readings.sheet import ParsedReadings
-from tests.fringe_inl_rig import SHAPES, InlHead, wrapped
+from tests.benchmarks.fringe_rounding_study import channel_scores
+from tests.fringe_inl_rig import SHAPES, InlHead
 
 P = 0.9545
 
@@ -54,15 +55,7 @@ def run_cell(amplitude: float, inl: float, shape: str, runs: int, seed: int = 71
         result = FRINGE.analyze(parsed, design.settings())
         data = parameters_json(result, P)
         truth = design.parameters(start)
-        for label in ("sin", "cos"):
-            params = data[f"{label}_params"]
-            for key, true in truth[label].items():
-                error = params[key] - true
-                if key.startswith("c"):
-                    error = wrapped(error)
-                big_u = params[f"expanded_uncertainty_{key}"]
-                out.setdefault(f"{label}_{key}", []).append(
-                    (error, math.nan if big_u is None else big_u))
+        channel_scores(data, truth, out)
         pair = truth["pair"]
         out.setdefault("ratio", []).append(
             (result.amplitude_ratio - pair["ratio"],

@@ -53,18 +53,22 @@ def run_cell(per_period: int, periods: int, ratio: float, runs: int, seed: int =
         parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
                                  "theta_deg": np.full(u_sin.size, np.nan)}, np.arange(u_sin.size))
         result = FRINGE.analyze(parsed, design.settings())
-        data = parameters_json(result, P)
-        truth = design.parameters(start)
-        for label in ("sin", "cos"):
-            params = data[f"{label}_params"]
-            for key, true in truth[label].items():
-                error = params[key] - true
-                if key.startswith("c"):
-                    error = wrapped(error)
-                big_u = params[f"expanded_uncertainty_{key}"]
-                out.setdefault(f"{label}_{key}", []).append(
-                    (error, math.nan if big_u is None else big_u))
+        channel_scores(parameters_json(result, P), design.parameters(start), out)
     return out
+
+
+def channel_scores(data: dict, truth: dict, out: dict[str, list[tuple[float, float]]]) -> None:
+    """Each channel parameter's (error, U) of one record (``data``: parameters_json) against
+    ``truth`` (the rig's parameters), appended to ``out`` under "sin_A1" and so on."""
+    for label in ("sin", "cos"):
+        params = data[f"{label}_params"]
+        for key, true in truth[label].items():
+            error = params[key] - true
+            if key.startswith("c"):
+                error = wrapped(error)
+            big_u = params[f"expanded_uncertainty_{key}"]
+            out.setdefault(f"{label}_{key}", []).append(
+                (error, math.nan if big_u is None else big_u))
 
 
 def main(argv: list[str]) -> None:
