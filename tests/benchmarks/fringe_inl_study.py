@@ -34,10 +34,8 @@ import sys
 import numpy as np
 from scipy import stats
 
-from models.fringe.analysis import FRINGE
 from models.fringe.report import parameters_json
-from models.readings.sheet import ParsedReadings
-from tests.benchmarks.fringe_rounding_study import channel_scores
+from tests.benchmarks.fringe_rounding_study import analysed_records, channel_scores
 from tests.fringe_inl_rig import SHAPES, InlHead
 
 P = 0.9545
@@ -46,13 +44,8 @@ P = 0.9545
 def run_cell(amplitude: float, inl: float, shape: str, runs: int, seed: int = 71
              ) -> dict[str, list[tuple[float, float]]]:
     design = InlHead(64, 10, amplitude, inl, shape)
-    rng = np.random.default_rng(seed)
     out: dict[str, list[tuple[float, float]]] = {}
-    for _ in range(runs):
-        start, u_sin, u_cos = design.readings(rng)
-        parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
-                                 "theta_deg": np.full(u_sin.size, np.nan)}, np.arange(u_sin.size))
-        result = FRINGE.analyze(parsed, design.settings())
+    for start, result in analysed_records(design, runs, seed):
         data = parameters_json(result, P)
         truth = design.parameters(start)
         channel_scores(data, truth, out)

@@ -46,15 +46,21 @@ CELLS = [(n, ratio) for n in (8, 16, 32, 64) for ratio in (0.0, 0.1, 0.25, 0.5, 
 def run_cell(per_period: int, periods: int, ratio: float, runs: int, seed: int = 71
              ) -> dict[str, list[tuple[float, float]]]:
     design = head(per_period, periods, ratio)
-    rng = np.random.default_rng(seed)
     out: dict[str, list[tuple[float, float]]] = {}
+    for start, result in analysed_records(design, runs, seed):
+        channel_scores(parameters_json(result, P), design.parameters(start), out)
+    return out
+
+
+def analysed_records(design, runs: int, seed: int):
+    """(φ₀, result) of ``runs`` records of a rig's ``design`` (its ``readings`` and
+    ``settings``), each analysed as a user's file would be, from one stream seeded ``seed``."""
+    rng = np.random.default_rng(seed)
     for _ in range(runs):
         start, u_sin, u_cos = design.readings(rng)
         parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
                                  "theta_deg": np.full(u_sin.size, np.nan)}, np.arange(u_sin.size))
-        result = FRINGE.analyze(parsed, design.settings())
-        channel_scores(parameters_json(result, P), design.parameters(start), out)
-    return out
+        yield start, FRINGE.analyze(parsed, design.settings())
 
 
 def channel_scores(data: dict, truth: dict, out: dict[str, list[tuple[float, float]]]) -> None:
