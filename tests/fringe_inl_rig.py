@@ -25,6 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from tests.fringe_rounding_rig import head_signals
+
 TWO_PI = 2.0 * math.pi
 SHAPES = ("bow", "s_curve", "sine", "step")
 
@@ -89,16 +91,8 @@ class InlHead:
                 {3: (0.008 * a_c, 2.6), 5: (0.003 * a_c, 1.1)})
 
     def clean(self, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        q = math.radians(self.quadrature_deg)
-        (o_s, o_c), (a_s, a_c) = self.offsets(), self.amplitudes()
-        u_sin = o_s + a_s * np.sin(phi)
-        u_cos = o_c + a_c * np.sin(phi + math.pi / 2 + q)
-        sin_h, cos_h = self.harmonics()
-        for k, (a, c) in sin_h.items():
-            u_sin = u_sin + a * np.sin(k * phi + c)
-        for k, (a, c) in cos_h.items():
-            u_cos = u_cos + a * np.sin(k * phi + c)
-        return u_sin, u_cos
+        return head_signals(phi, self.offsets(), self.amplitudes(), self.quadrature_deg,
+                            self.harmonics())
 
     def readings(self, rng: np.random.Generator) -> tuple[float, np.ndarray, np.ndarray]:
         """One record: (φ₀, sin readings, cos readings), V; each channel its own INL."""

@@ -41,6 +41,22 @@ def _harmonics(highest: int, amplitude_v: float, phases: tuple[float, float]
     return out
 
 
+def head_signals(phi: np.ndarray, offsets: tuple[float, float], amplitudes: tuple[float, float],
+                 quadrature_deg: float, harmonics) -> tuple[np.ndarray, np.ndarray]:
+    """A read head's sin and cos signals (V) at the true phases ``phi``: each channel its
+    offset, its fundamental (cos a quarter period ahead, less the quadrature error) and its
+    harmonics ``harmonics`` = (sin's, cos's) {order: (amplitude, phase)}."""
+    q = math.radians(quadrature_deg)
+    u_sin = offsets[0] + amplitudes[0] * np.sin(phi)
+    u_cos = offsets[1] + amplitudes[1] * np.sin(phi + math.pi / 2 + q)
+    sin_h, cos_h = harmonics
+    for k, (a, c) in sin_h.items():
+        u_sin = u_sin + a * np.sin(k * phi + c)
+    for k, (a, c) in cos_h.items():
+        u_cos = u_cos + a * np.sin(k * phi + c)
+    return u_sin, u_cos
+
+
 @dataclass(frozen=True)
 class RoundedHead:
     """One design (V, rad): N a period, whole periods, the noise σ and the ADC's step δ."""
@@ -64,15 +80,8 @@ class RoundedHead:
 
     def clean(self, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The head's own signals (V) at the true phases ``phi``."""
-        q = math.radians(self.quadrature_deg)
-        u_sin = self.offsets_v[0] + self.amplitudes_v[0] * np.sin(phi)
-        u_cos = self.offsets_v[1] + self.amplitudes_v[1] * np.sin(phi + math.pi / 2 + q)
-        sin_h, cos_h = self.harmonics()
-        for k, (a, c) in sin_h.items():
-            u_sin = u_sin + a * np.sin(k * phi + c)
-        for k, (a, c) in cos_h.items():
-            u_cos = u_cos + a * np.sin(k * phi + c)
-        return u_sin, u_cos
+        return head_signals(phi, self.offsets_v, self.amplitudes_v, self.quadrature_deg,
+                            self.harmonics())
 
     def readings(self, rng: np.random.Generator) -> tuple[float, np.ndarray, np.ndarray]:
         """One record: (φ₀, the rounded sin readings, the rounded cos readings), V."""
