@@ -243,6 +243,15 @@ def test_the_cross_calibrations_u_is_one_figure_in_json_certificate_and_dcc(issu
                                         zip(from_face1[1:], u1[1:], strict=True)]
 
 
+def _real_details(details: dict, out: Path) -> Path:
+    """``details`` as a lab's real ones (not the sample's example, the number left to the
+    register), written to ``out``/meta.json."""
+    del details["example"], details["certificate_number"]
+    path = out / "meta.json"
+    path.write_text(json.dumps(details), encoding="utf-8")
+    return path
+
+
 def _statement_types(xml: Path) -> set[str]:
     tree = etree.fromstring(xml.read_bytes())
     return {s.get("refType") for s in tree.iterfind(".//dcc:statements/dcc:statement", NS)}
@@ -269,9 +278,7 @@ def test_a_fringe_record_with_a_traceable_phase_reference_is_a_calibration(tmp_p
         {"description": "Data acquisition (16-bit ADC)", "serial": "DAQ-5",
          "certificate_no": "CAL-2026-33", "uncertainty": None}]
     # real details: a specimen declares itself a specimen, not a calibration (assessment 70 M6)
-    del details["example"], details["certificate_number"]
-    path = tmp_path / "meta.json"
-    path.write_text(json.dumps(details), encoding="utf-8")
+    path = _real_details(details, tmp_path)
     code, said, _, xml = _issue("fringe", tmp_path, capsys, samples_dir, details=path, extra=(
         "--phase-reference-u", "0.01", "--adc-lsb-mv", "0.3", "--adc-offset-u-mv", "0.1",
         "--adc-gain-u-pct", "0.01", "--adc-linearity-mv", "0.2"))
@@ -307,9 +314,7 @@ def test_an_issued_certificate_refused_for_its_dcc_is_not_recorded(tmp_path, cap
     from models.register.store import Register
 
     details = json.loads((samples_dir / "certificate_theodolite.json").read_text(encoding="utf-8"))
-    del details["example"], details["certificate_number"]
-    path = tmp_path / "meta.json"
-    path.write_text(json.dumps(details), encoding="utf-8")
+    path = _real_details(details, tmp_path)
     code, said, pdf, xml = _issue("theodolite", tmp_path, capsys, samples_dir, details=path)
     assert code == 0, said
     tree = etree.fromstring(xml.read_bytes())
@@ -594,9 +599,7 @@ def test_an_issued_certificates_dcc_still_declares_a_traceable_calibration(tmp_p
                                                                            samples_dir):
     """The control of the above: the same readings with real details (not example)."""
     details = json.loads((samples_dir / "certificate_theodolite.json").read_text(encoding="utf-8"))
-    del details["example"], details["certificate_number"]
-    path = tmp_path / "meta.json"
-    path.write_text(json.dumps(details), encoding="utf-8")
+    path = _real_details(details, tmp_path)
     code, said, _, xml = _issue("theodolite", tmp_path, capsys, samples_dir, details=path)
     assert code == 0, said
     types = _statement_types(xml)
