@@ -24,9 +24,10 @@ SYMBOL = {"arcsec": "\"", "urad": " µrad", "mdeg": " mdeg"}
 
 
 def _two_significant(u: float) -> int:
-    """Decimals that show u with two significant digits (after rounding), never negative."""
+    """Decimals that show u with two significant digits after rounding it UP, as every
+    printed U is (9.93 shows as 10, not 10.0), never negative."""
     d = 1 - math.floor(math.log10(u))
-    if float(Decimal(repr(u)).quantize(Decimal(1).scaleb(-d), ROUND_HALF_EVEN)) >= 10.0 ** (2 - d):
+    if float(Decimal(repr(u)).quantize(Decimal(1).scaleb(-d), ROUND_CEILING)) >= 10.0 ** (2 - d):
         d -= 1
     return max(0, d)
 
