@@ -21,7 +21,7 @@ from models.messages import QT_TR_NOOP, message, reason_of
 from models.quantity import UNITS, Quantity, UnitError, unit
 from models.uncertainty.budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILITY
 from models.uncertainty.conformity import DECISION_QUANTITIES, DECISION_RULES
-from models.uncertainty.rounding import StatedNumber
+from models.uncertainty.rounding import StatedNumber, stated_decimals
 
 __all__ = [
     "APPLIES_TO_NAMES",
@@ -543,6 +543,11 @@ class CertificateMetadata:
         out["standards"] = [{k: v for k, v in asdict(s).items()
                              if k != "coverage_factor" or v is not None}
                             for s in self.standards]
+        if isinstance(self.tolerance, StatedNumber) and self.tolerance.decimals > stated_decimals(
+                float(self.tolerance)):
+            # typed with trailing zeros ("1.50"): kept as typed, a text, which a number
+            # would drop in the file (its last place is the one ASTM E29 rounds to)
+            out["tolerance"] = f"{float(self.tolerance):.{self.tolerance.decimals}f}"
         return out
 
     def lab_defaults(self) -> dict[str, Any]:

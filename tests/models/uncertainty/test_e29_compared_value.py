@@ -219,3 +219,15 @@ def test_the_verdict_is_the_printed_figures_and_never_passes_beyond_e29(case):
     if c.verdict in ("pass", "conditional pass"):
         in_t = value / ARCSEC[t_unit]
         assert _e29(in_t, -t_number.as_tuple().exponent) <= t_number, (c.statement, case)
+
+
+def test_a_limits_trailing_zeros_survive_the_details_saved_and_read_back():
+    """The details saved (a project file, the lab's defaults) and read again keep ±1.50″."""
+    import json
+
+    meta = CertificateMetadata.from_dict({"tolerance": "1.50", "tolerance_unit": "arcsec"})
+    again = CertificateMetadata.from_dict(json.loads(json.dumps(meta.to_dict())))
+    c = _half_range(1.54, 1.2, 1.2, again.tolerance_quantity, "simple")
+    assert c.verdict == "fail" and "±1.50\" (fail)" in c.statement
+    plain = CertificateMetadata.from_dict({"tolerance": 1.5})
+    assert plain.to_dict()["tolerance"] == 1.5  # a number stays a number
