@@ -635,6 +635,7 @@ def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
     import json
 
     from models.certificate.metadata import CertificateMetadata, MetadataError
+    from models.uncertainty.rounding import StatedNumber
 
     if reference is not None:
         from app.reference_dcc import with_reference
@@ -644,7 +645,9 @@ def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
         return CertificateMetadata()
     try:
         with open(path, encoding="utf-8-sig") as handle:
-            data = json.load(handle)
+            # numbers with the decimals they were typed with: a tolerance of 1.50 is stated
+            # to 0.01, the place ASTM E29 rounds a value compared with it to
+            data = json.load(handle, parse_float=StatedNumber.from_text)
     except OSError as exc:
         raise MetadataError(message(QT_TR_NOOP("{path}: cannot read ({value})"), path=path,
                                     value=exc.strerror)) from None

@@ -37,6 +37,7 @@ from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
 from models.uncertainty.printed_figure import StatedLimit
+from models.uncertainty.rounding import StatedNumber
 
 __all__ = ["Column", "Decision", "PointTable", "Statistics", "build_certificate",
            "difference_column", "figure_column", "text_column", "uncertainty_column"]
@@ -238,7 +239,9 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
     stated = (metadata.tolerance_quantity if isinstance(tolerance, _FromDetails) and
               tol is not None else None)
     if stated is not None and tol is not None:
-        tol = StatedLimit(tol, (float(stated.value), stated.unit.key))
+        # the number as typed (its decimals: the place ASTM E29 rounds a value to)
+        tol = StatedLimit(tol, (stated.value if isinstance(stated.value, StatedNumber) else
+                                float(stated.value), stated.unit.key))
     conformity = decide_conformity(decision.errors, decision.budget or budget,
                                    stated if stated is not None else tol,
                                    metadata.decision_rule, metadata.decision_quantity,

@@ -21,6 +21,7 @@ from models.messages import QT_TR_NOOP, message, reason_of
 from models.quantity import UNITS, Quantity, UnitError, unit
 from models.uncertainty.budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILITY
 from models.uncertainty.conformity import DECISION_QUANTITIES, DECISION_RULES
+from models.uncertainty.rounding import StatedNumber, stated_decimals
 
 __all__ = [
     "APPLIES_TO_NAMES",
@@ -151,6 +152,22 @@ def _optional_number(value: Any, field_name: str) -> float | None:
         raise MetadataError(message(
             QT_TR_NOOP("certificate field '{field_name}' must be a finite number"),
             field_name=field_name))
+    return number
+
+
+def _stated_limit(raw: Any, number: float | None) -> float | None:
+    """A limit with the decimals it was typed with where they are known (a text "1.50", a
+    number read with its digits, :class:`~models.uncertainty.rounding.StatedNumber`): its
+    last significant place, which ASTM E29 §6.4 rounds a value compared with it to."""
+    if number is None:
+        return None
+    if isinstance(raw, StatedNumber):
+        return raw
+    if isinstance(raw, str):
+        try:
+            return StatedNumber.from_text(raw)
+        except ValueError:
+            return number
     return number
 
 
@@ -384,6 +401,8 @@ class CertificateMetadata:
                     raise MetadataError(message(
                         QT_TR_NOOP("certificate field 'standards' must be a list")))
                 values[f.name] = tuple(ReferenceStandard.from_dict(s, i) for i, s in enumerate(raw))
+            elif f.name == "tolerance":
+                values[f.name] = _stated_limit(raw, _optional_number(raw, f.name))
             elif f.name in cls._NUMBERS:
                 values[f.name] = _optional_number(raw, f.name)
             elif f.name in ("example", "checker_role"):
@@ -524,6 +543,11 @@ class CertificateMetadata:
         out["standards"] = [{k: v for k, v in asdict(s).items()
                              if k != "coverage_factor" or v is not None}
                             for s in self.standards]
+        if isinstance(self.tolerance, StatedNumber) and self.tolerance.decimals > stated_decimals(
+                float(self.tolerance)):
+            # typed with trailing zeros ("1.50"): kept as typed, a text, which a number
+            # would drop in the file (its last place is the one ASTM E29 rounds to)
+            out["tolerance"] = f"{float(self.tolerance):.{self.tolerance.decimals}f}"
         return out
 
     def lab_defaults(self) -> dict[str, Any]:

@@ -7,7 +7,9 @@ per point, or one number when every point has the same k), and at the top level 
 ``coverage_probability``. When a tolerance is set, ``decided_quantity`` states the figure
 the conformity decision is made on — ``value``, ``interval_low``, ``interval_high``,
 ``coverage_probability``, ``unit``, ``verdict`` (null when no statement of conformity may
-be made, with the ``reason``), ``rule`` — always with numbers where the readings give them
+be made, with the ``reason``), ``rule``, ``compared_with_tolerance`` (the value a simple or
+non-binary rule compares with T itself, rounded as ASTM E29 §6.4 does: its ``value``,
+``unit`` and ``decimals``) — always with numbers where the readings give them
 (a withheld interval: both ends and its ``coverage_probability`` null).
 ``uncertainty_inputs_not_stated`` lists the inputs the certificate names as not stated, so
 not in U (empty when U holds every input; no statement of conformity while one is).
@@ -127,6 +129,12 @@ def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> di
     }
     if not stated:
         out["reason"] = str(conformity.reason or conformity.statement)
+    compared = conformity.compared
+    if stated and compared is not None and conformity.rule_key in ("simple", "guarded"):
+        # the value the rule compares with T itself, rounded as ASTM E29 §6.4 does: to the
+        # finer of U's digit and T's last place as stated, in T's unit
+        out["compared_with_tolerance"] = {"value": compared.value, "unit": compared.unit_key,
+                                          "decimals": compared.decimals}
     raised = conformity.raised_to_cmc
     if raised is not None:  # (lower, upper) half-width held to the laboratory's CMC
         out["raised_to_cmc"] = {"low": bool(raised[0]), "high": bool(raised[1])}

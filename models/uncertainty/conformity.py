@@ -37,7 +37,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.messages import QT_TR_NOOP, joined, listed, message, separated
-from models.quantity import Quantity
+from models.quantity import Quantity, UnitError, unit
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.lab_scope import held_to_cmc
 from models.uncertainty.printed_figure import (
@@ -50,9 +50,12 @@ from models.uncertainty.printed_figure import (
 )
 from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import (
+    StatedNumber,
+    e29_rounded,
     interval_decimals,
     interval_ends,
     significant_decimals,
+    stated_decimals,
     stated_pair,
     uncertainty_decimals,
 )
@@ -60,9 +63,11 @@ from models.uncertainty.rounding import (
 __all__ = [
     "DECISION_QUANTITIES",
     "DECISION_RULES",
+    "ComparedValue",
     "Conformity",
     "HalfRangeEstimate",
     "asymmetric_text",
+    "compared_with_limit",
     "REFERENCE_POINT_TEXT",
     "decide_conformity",
     "expanded_text",
@@ -478,6 +483,10 @@ class Conformity:
     # where every point decides: the deciding point, named as the results table names it
     # (its error is ``value``, signed, with ±U of that point); "" for a half range
     point: str = ""
+    # the value compared with T itself (simple acceptance; a conditional pass against a
+    # conditional fail), rounded as ASTM E29 §6.4 does (:func:`compared_with_limit`); None
+    # when no statement is made
+    compared: ComparedValue | None = None
 
     @property
     def conforms(self) -> bool | None:
@@ -591,8 +600,77 @@ def _zones(t: float, up: PrintedFigure | None, down: PrintedFigure | None, rule:
                    low=low, t=tolerance_figure(t, q), high=high)
 
 
+@dataclass(frozen=True)
+class ComparedValue:
+    """The value a decision compares with T itself (simple acceptance; a conditional pass
+    against a conditional fail), as ASTM E29 §6.4 rounds an observed value against a
+    limit: to the last significant place of T as stated, in T's unit, or to U's digit where
+    that is finer (see :func:`compared_with_limit`)."""
+
+    value: float  # the value so rounded, in T's unit
+    limit: float  # T as stated, in its unit
+    decimals: int
+    symbol: str  # T's unit as written ('"', " µrad")
+    unit_key: str  # T's unit (models.quantity)
+    # printed beside the statement's value: it is not that figure (T stated finer than U's
+    # digit, or in another unit)
+    apart: bool
+
+    @property
+    def within(self) -> bool:
+        """value ≤ T on the grid of ``decimals`` (to 1e-9 of a digit)."""
+        return self.value <= self.limit + 1e-9 * 10.0 ** -self.decimals
+
+    @property
+    def text(self) -> str:
+        return f"{self.value:.{self.decimals}f}{self.symbol}"
+
+
+def compared_with_limit(exact: float, shown: float, places: int, t: float,
+                        unit_key: str) -> ComparedValue:
+    """The value ``exact`` (in the errors' unit ``unit_key``, printed ``shown`` to ``places``
+    decimals, U's digit) as it is compared with T (ASTM E29 §6.4, the rounding method):
+    rounded to the finer of U's digit and the last significant place of T as stated
+    (:func:`models.uncertainty.rounding.stated_decimals`: the digits typed, trailing zeros
+    kept where they were), in T's unit where T was stated in another, to the nearest with
+    a 5 rounding to even (:func:`models.uncertainty.rounding.e29_rounded`). Where T's place
+    is not finer than U's, in the same unit, it is the value as printed. Until 0.8.20 the
+    value was always compared at U's digit: 1.6275″ printed 1.6″ passed ±1.626″, which E29
+    (1.628″) fails."""
+    stated = getattr(t, "stated", None)
+    if stated is not None and stated[1] != unit_key:
+        number, key = stated
+        try:
+            factor = unit(unit_key).size / unit(key).size
+            symbol = unit(key).written()
+        except UnitError:  # not an angle's unit: compared in the errors' unit below
+            factor, symbol = math.nan, ""
+        if math.isfinite(factor) and factor > 0:
+            # U's digit in T's unit: the decade at or below it, a grid no coarser
+            step = 10.0 ** -places * factor
+            decimals = max(stated_decimals(number),
+                           max(0, math.ceil(-math.log10(step) - 1e-9)))
+            return ComparedValue(e29_rounded(exact * factor, decimals), float(number),
+                                 decimals, symbol, key, True)
+    number = stated[0] if stated is not None else t
+    decimals = stated_decimals(number)
+    try:
+        symbol = unit(unit_key).written()
+    except UnitError:  # a unit the texts print without its symbol
+        symbol = ""
+    if decimals <= places:
+        return ComparedValue(float(shown), float(t), places, symbol, unit_key, False)
+    return ComparedValue(e29_rounded(exact, decimals), float(t), decimals, symbol, unit_key,
+                         True)
+
+
+#: the value compared with T where it is not the statement's printed value (ASTM E29 §6.4)
+COMPARED_WITH_T = QT_TR_NOOP("Compared with T: {value}, the result rounded to the last place of "
+                             "T as stated (ASTM E29 §6.4, the rounding method).")
+
+
 def printed_verdict(value: float, minus: float, plus: float, t: float, rule: str, d: int,
-                    low: float | None = None) -> str:
+                    low: float | None = None, compared: ComparedValue | None = None) -> str:
     """The decision taken on the figures as printed (issue 39, "conformity you can defend"):
     the printed ``value`` (to the nearest digit of ``d`` decimals), its printed U₋ ``minus``
     and U₊ ``plus`` (rounded up, so that value ± U is the printed interval, whose ends are
@@ -602,26 +680,40 @@ def printed_verdict(value: float, minus: float, plus: float, t: float, rule: str
     interval's ends: a pass needs the printed upper end value + U₊ ≤ T (the computed end then
     is too), a fail the printed lower end value − U₋ (``low``, where it is held at 0) > T.
     Where the value alone is compared with T (simple acceptance; conditional pass against
-    conditional fail) it is the value as printed, within half a digit of U's last of the
-    computed one. Compared on the printed grid (to 1e-9 of a digit)."""
+    conditional fail) it is ``compared`` (:func:`compared_with_limit`: rounded to the finer of
+    U's digit and T's last place as stated, ASTM E29 §6.4), else the value as printed.
+    Compared on the printed grid (to 1e-9 of a digit)."""
     slack = 1e-9 * 10.0 ** -d
 
     def within(figure: float) -> bool:
         return figure <= t + slack
 
+    value_within = compared.within if compared is not None else within(value)
     high = round(value + plus, d)
     low = round(value - minus, d) if low is None else low
     if rule == "simple":
-        return "pass" if within(value) else "fail"
+        return "pass" if value_within else "fail"
     if rule == "guarded_binary":
         return "pass" if within(high) else "fail"
     if within(high):
         return "pass"
-    if within(value):
+    if value_within:
         return "conditional pass"
     if within(low):
         return "conditional fail"
     return "fail"
+
+
+def _with_compared(sentence: str, compared: ComparedValue, rule: str, verdict: str) -> str:
+    """The statement's verdict sentence, followed by the value compared with T where that
+    comparison decided (simple acceptance; a conditional pass or fail) and the figure is
+    not the printed value (:func:`compared_with_limit`), so that the verdict is re-done
+    from the figures printed."""
+    decided_on_value = rule == "simple" or (rule == "guarded" and verdict in (
+        "conditional pass", "conditional fail"))
+    if not (compared.apart and decided_on_value):
+        return sentence
+    return separated([sentence, message(COMPARED_WITH_T, value=compared.text)], " ")
 
 
 def _verdict(x: float, t: float, w_accept: float, rule: str,
@@ -725,8 +817,10 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     q = budget.unit.written()
     if isinstance(tolerance, Quantity):
         # judged in the errors' unit, quoted as stated (assessment 70 M4)
+        # (its number as typed: its decimals are the place ASTM E29 rounds a value to)
         tolerance = StatedLimit(float(f"{float(tolerance.in_unit(budget.unit)):.15g}"),
-                                (float(tolerance.value), tolerance.unit.key))
+                                (tolerance.value if isinstance(tolerance.value, StatedNumber)
+                                 else float(tolerance.value), tolerance.unit.key))
     what = message(what) if not hasattr(what, "template") else what
     rule_text = message(DECISION_RULES[rule])
     sentence = {v: message(template, t=tolerance_figure(tolerance or 0.0, q))
@@ -769,9 +863,13 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
     # every point decided on its |e| and U as the results table prints them (issue 39: a
     # reader who redoes a point's decision from the table gets the verdict printed)
     pairs = [stated_pair(abs(float(x)), float(w)) for x, w in zip(e, u, strict=True)]
-    verdicts = [printed_verdict(xp, wp, wp, t, rule, dp) if math.isfinite(wp) and wp > 0 else
+    # the value compared with T itself: to the finer of U's digit and T's (ASTM E29 §6.4)
+    compared = [compared_with_limit(abs(float(x)), xp, dp, t, budget.unit.key)
+                for x, (xp, _, dp) in zip(e, pairs, strict=True)]
+    verdicts = [printed_verdict(xp, wp, wp, t, rule, dp, compared=c)
+                if math.isfinite(wp) and wp > 0 else
                 _verdict(xp, t, 0.0 if rule == "simple" else wp, rule)
-                for xp, wp, dp in pairs]
+                for (xp, wp, dp), c in zip(pairs, compared, strict=True)]
     worst = max(range(e.size), key=lambda i: (_ORDER.index(verdicts[i]), abs(e[i]) + u[i]))
     x, w = abs(float(e[worst])), float(u[worst])
     d = pairs[worst][2]
@@ -820,12 +918,14 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
                               "the deciding point is {point}: |e| = {e}, U = {u}. "
                               "{sentence}"),
                    what=what, t=tolerance_figure(t, q), point=point, **figures,
-                   sentence=sentence[verdict])
+                   sentence=_with_compared(sentence[verdict], compared[worst], rule,
+                                           verdict))
     band = figures["u"] if rule != "simple" and w > 0 else None
     zones = message(QT_TR_NOOP("per point, with w = U of that point: {zones}"),
                     zones=_zones(t, band, band, rule, d, q))
     return Conformity(verdict, text, rule_text, quantity_text, zones=zones,
-                      decision_risk=_risk(verdict, conforming), **values, **common)
+                      decision_risk=_risk(verdict, conforming), compared=compared[worst],
+                      **values, **common)
 
 
 def _point_figures(x: float, w: float, q: str) -> dict[str, PrintedFigure]:
@@ -878,8 +978,9 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     # decided on the figures as printed (issue 39): the printed value, U₋, U₊ (rounded up,
     # value ± U the printed ends, which hold the computed ones) and T
     places = shown["value"].places
+    compared = compared_with_limit(x, shown["value"].shown, places, t, budget.unit.key)
     verdict = printed_verdict(shown["value"].shown, shown["lower"].shown, shown["upper"].shown,
-                              t, rule, places, low=shown["low"].shown)
+                              t, rule, places, low=shown["low"].shown, compared=compared)
     interval = separated([asymmetric_figures(shown), held_at_zero_note(
         x, lower, d, q, float(budget.floor), bool(raised and raised[0]))], "; ")
     conforming = probability_conforming(x, lower, upper, t, mc.probability)
@@ -904,7 +1005,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     measured = float(getattr(mc, "measured", x))
     low, high = shown["low"], shown["high"]
     figures = dict(what=what, value=shown["value"], low=low, high=high, u=interval,
-                   p=percent_text(mc.probability), sentence=sentence[verdict])
+                   p=percent_text(mc.probability),
+                   sentence=_with_compared(sentence[verdict], compared, rule, verdict))
     # the noise's median excess as the printed figures give it, so that "value, the measured
     # m less e" adds up as printed (0.45″ = 0.49″ − 0.04″, not "less 0.05″": the
     # excess 0.0460″ of 0.4918″ − 0.4457″); none, as measured (positioning's E/2)
@@ -995,7 +1097,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                              places, q), mc, lower,
                       reason=_withheld_text(reasons) if reasons else "",
                       conforming_probability=conforming,
-                      decision_risk=_risk(verdict, conforming), **common)
+                      decision_risk=_risk(verdict, conforming),
+                      compared=None if verdict == "not assessed" else compared, **common)
 
 
 def _held_to_cmc(mc: HalfRangeEstimate, cmc: float) -> tuple[HalfRangeEstimate,

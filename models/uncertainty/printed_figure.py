@@ -245,9 +245,15 @@ class StatedLimit(float):
 
 
 def _as_stated(number: float) -> str:
-    """A number as it was typed: its shortest digits, in positional notation."""
+    """A number as it was typed: its shortest digits, in positional notation, or to the
+    decimals it was typed with where it keeps them (a limit of "1.50" is ±1.50, its last
+    place the one ASTM E29 rounds a value compared with it to:
+    :class:`models.uncertainty.rounding.StatedNumber`)."""
     import numpy as np
 
+    decimals = getattr(number, "decimals", None)
+    if isinstance(decimals, int) and decimals >= 0:
+        return f"{float(number):.{decimals}f}"
     return np.format_float_positional(number, unique=True, trim="-")
 
 
@@ -287,4 +293,7 @@ def tolerance_figure(tolerance: float, symbol: str) -> str:
     key = _unit_key(symbol)
     if stated is not None and key:
         return StatedTolerance(stated, key)
+    if stated is not None and isinstance(getattr(stated[0], "decimals", None), int):
+        # typed with trailing zeros: printed so (±1.50″), the place E29 rounds to
+        return PrintedFigure(tolerance, symbol, decimals=stated[0].decimals)
     return PrintedFigure(tolerance, symbol, rounding="g", decimals=0)

@@ -7,8 +7,9 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["interval_decimals", "interval_ends", "printed_range", "significant_decimals", "stated_interval",
-           "stated_pair", "uncertainty_decimals", "without_interval_decimals"]
+__all__ = ["StatedNumber", "e29_rounded", "interval_decimals", "interval_ends", "printed_range",
+           "significant_decimals", "stated_decimals", "stated_interval", "stated_pair",
+           "uncertainty_decimals", "without_interval_decimals"]
 
 
 def significant_decimals(expanded: float) -> int | None:
@@ -153,3 +154,61 @@ def stated_pair(value: float, expanded: float) -> tuple[float, float, int]:
     decimals = uncertainty_decimals(expanded)
     shown = stated_interval(value, expanded, expanded, decimals)
     return shown["value"], shown["upper"], decimals
+
+
+def stated_decimals(number: float) -> int:
+    """The decimal of the last significant place of a limit as it was stated: its
+    ``decimals`` where it carries them (a number typed with trailing zeros, "1.50": 2, kept
+    by :class:`StatedNumber`), else its shortest digits (1.626: 3, 1.5: 1, 20: 0). Never
+    negative: a limit of 20 or 300 is taken to its units place."""
+    given = getattr(number, "decimals", None)
+    if isinstance(given, int) and given >= 0:
+        return given
+    if not math.isfinite(number):
+        return 0
+    import numpy as np
+
+    text = np.format_float_positional(abs(float(number)), unique=True, trim="-")
+    return len(text.partition(".")[2])
+
+
+class StatedNumber(float):
+    """A number that keeps the decimals it was typed with ("1.50" is 1.5 to 2 decimals):
+    a specification limit's last significant place, which ASTM E29 §6.4 rounds an observed
+    value to, and which a float drops with its trailing zeros."""
+
+    decimals: int
+
+    def __new__(cls, value: float, decimals: int) -> StatedNumber:
+        made = super().__new__(cls, value)
+        made.decimals = int(decimals)
+        return made
+
+    def __getnewargs__(self):  # copied, pickled
+        return float(self), self.decimals
+
+    @classmethod
+    def from_text(cls, text: str) -> StatedNumber:
+        """The number typed in ``text`` ("1.50", "1,50", "2e-3") with its decimals."""
+        from decimal import Decimal, InvalidOperation
+
+        cleaned = text.strip().replace(",", ".")
+        try:
+            exponent = Decimal(cleaned).as_tuple().exponent
+        except InvalidOperation:
+            raise ValueError(f"not a number: {text!r}") from None
+        decimals = max(0, -exponent) if isinstance(exponent, int) else 0
+        return cls(float(cleaned), decimals)
+
+
+def e29_rounded(value: float, decimals: int) -> float:
+    """``value`` rounded to ``decimals`` decimals as ASTM E29 §6.4 rounds an observed value
+    (its rounding method, §4.2–4.4: to the nearest, a 5 followed by nothing but zeros
+    rounding the last place kept to even), from the value's shortest digits (1.6275 is
+    1.628, 1.6265 is 1.626) and never "-0.0"."""
+    from decimal import ROUND_HALF_EVEN, Decimal
+
+    if not math.isfinite(value):
+        return value
+    exact = Decimal(repr(float(value)))
+    return float(exact.quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_EVEN)) + 0.0

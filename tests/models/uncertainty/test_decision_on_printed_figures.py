@@ -36,15 +36,19 @@ def _budget(expanded: np.ndarray, unit: str) -> UncertaintyBudget:
                                               math.inf),), expanded.size, P, unit)
 
 
-def _ilac(rule: str, x: Decimal, minus: Decimal, plus: Decimal, t: Decimal) -> str:
-    """ILAC-G8:09/2019 on a value x with its interval [x − U₋, x + U₊] against T."""
+def _ilac(rule: str, x: Decimal, minus: Decimal, plus: Decimal, t: Decimal,
+          compared: Decimal | None = None) -> str:
+    """ILAC-G8:09/2019 on a value x with its interval [x − U₋, x + U₊] against T; where the
+    value alone is compared with T, ``compared`` (the value the statement says it compares
+    with T, ASTM E29 §6.4) when it prints one."""
+    xc = x if compared is None else compared
     if rule == "simple":
-        return "pass" if x <= t else "fail"
+        return "pass" if xc <= t else "fail"
     if rule == "guarded_binary":
         return "pass" if x + plus <= t else "fail"
     if x + plus <= t:
         return "pass"
-    if x <= t:
+    if xc <= t:
         return "conditional pass"
     if x - minus <= t:
         return "conditional fail"
@@ -65,15 +69,33 @@ def _printed_verdict(statement: str) -> str:
     return "conditional fail"
 
 
-def _zone_verdict(zones: str, x: Decimal, rule: str) -> str:
-    """The zone the printed value x falls in, read from the printed zones."""
+def _zone_verdict(zones: str, x: Decimal, rule: str, compared: Decimal | None = None) -> str:
+    """The zone the printed value x falls in, read from the printed zones; against T itself
+    (simple acceptance's only limit, the non-binary rule's second) the value compared with
+    T where the statement prints one."""
     limits = [Decimal(v) for v in re.findall(r"≤ " + NUMBER, zones)]
     names = (["pass", "fail"] if rule != "guarded" else
              ["pass", "conditional pass", "conditional fail", "fail"])
-    for name, limit in zip(names, limits, strict=False):
-        if x <= limit:
+    at_t = 0 if rule == "simple" else 1 if rule == "guarded" else -1
+    for i, (name, limit) in enumerate(zip(names, limits, strict=False)):
+        if (compared if i == at_t and compared is not None else x) <= limit:
             return name
     return names[-1]
+
+
+def _compared(statement: str, unit: str) -> Decimal | None:
+    """The value the statement says it compares with T (ASTM E29 §6.4), if it prints one."""
+    found = re.search(r"Compared with T: " + NUMBER + _unit_text(unit), statement)
+    return Decimal(found.group(1)) if found else None
+
+
+def _e29(value: float, t: Decimal) -> Decimal:
+    """ASTM E29 §6.4: the observed value rounded to T's last place (§4: to the nearest, a
+    5 followed by zeros to the even digit), from the value's own digits."""
+    from decimal import ROUND_HALF_EVEN
+
+    return Decimal(repr(float(value))).quantize(Decimal(1).scaleb(t.as_tuple().exponent),
+                                                rounding=ROUND_HALF_EVEN)
 
 
 def _unit_text(unit: str) -> str:
@@ -120,9 +142,13 @@ def _check_half_range(value, lower, upper, t, rule, unit):
         return
     x, minus, plus = _half_range_figures(c.statement, unit)
     assert max(minus, plus) < t
-    redone = _ilac(rule, x, minus, plus, t)
+    compared = _compared(c.statement, unit)
+    redone = _ilac(rule, x, minus, plus, t, compared)
     assert _printed_verdict(c.statement) == c.verdict == redone, (c.statement, c.zones)
-    assert _zone_verdict(c.zones, x, rule) == c.verdict, (c.zones, x)
+    assert _zone_verdict(c.zones, x, rule, compared) == c.verdict, (c.zones, x)
+    # never a pass (nor a conditional pass) of a value that ASTM E29 rounds beyond T
+    if c.verdict in ("pass", "conditional pass"):
+        assert _e29(value, t) <= t, (value, c.statement)
     # the zones print the statement's U (the same rounded-up figure)
     for said in re.findall(r"U₊ = " + NUMBER, c.zones):
         assert Decimal(said) == plus, (c.zones, c.statement)
@@ -165,6 +191,9 @@ def _near_a_limit(draw):
 @example((2.596, 0.403, 0.403, Decimal("3"), "guarded_binary", "arcsec"))
 # and a result printed at T: 14.5454 µrad computed, 14.55 µrad printed against 14.55 µrad
 @example((14.5504, 0.7, 0.7, Decimal("14.55"), "simple", "urad"))
+# failed on 0.8.20 (audit 72 finding 5): 1.6275″ printed 1.6″ passed ±1.626″, which ASTM
+# E29 rounds it beyond (1.628″)
+@example((1.6275, 1.0, 0.5, Decimal("1.626"), "simple", "arcsec"))
 def test_the_half_range_verdict_is_the_one_its_printed_figures_give(case):
     _check_half_range(*case)
 
@@ -215,7 +244,12 @@ def _check_points(errors, expanded, t, rule, unit):
         return
     assert all(u < t for _, u in cells)
     # every point redone from the table's cells: the worst decides
-    redone = max((_ilac(rule, abs(v), u, u, t) for v, u in cells), key=_ORDER.index)
+    # (where T is stated to a finer place than a cell, the point's |e| compared with T
+    # itself is E29's rounding to that place, which the statement prints for the deciding
+    # point)
+    redone = max((_ilac(rule, abs(v), u, u, t, _e29(abs(e), t) if t.as_tuple().exponent
+                        < v.as_tuple().exponent else None)
+                  for (v, u), e in zip(cells, errors, strict=True)), key=_ORDER.index)
     assert _printed_verdict(c.statement) == c.verdict == redone, (c.statement, cells)
     # the deciding point's figures in the statement are its table cells
     q = _unit_text(unit)
@@ -223,8 +257,12 @@ def _check_points(errors, expanded, t, rule, unit):
     assert found, c.statement
     x, u = Decimal(found.group(1)), Decimal(found.group(2))
     assert (x, u) in [(abs(v), w) for v, w in cells]
-    assert _ilac(rule, x, u, u, t) == c.verdict
-    assert _zone_verdict(c.zones, x, rule) == c.verdict, (c.zones, x)
+    compared = _compared(c.statement, unit)
+    assert _ilac(rule, x, u, u, t, compared) == c.verdict
+    assert _zone_verdict(c.zones, x, rule, compared) == c.verdict, (c.zones, x)
+    # never a pass (nor a conditional pass) of a point that ASTM E29 rounds beyond T
+    if c.verdict in ("pass", "conditional pass"):
+        assert all(_e29(abs(v), t) <= t for v in errors), (errors, c.statement)
     if c.verdict == "pass" and rule != "simple":
         assert np.all(np.abs(errors) + expanded <= float(t) * (1 + 1e-12))
 
