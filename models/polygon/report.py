@@ -121,7 +121,11 @@ from models.polygon.model import (
 )
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.polygon.setup_statement import setup_statement
-from models.uncertainty.bounded_systematic_half_range import widened_by_systematic, without_inputs
+from models.uncertainty.bounded_systematic_half_range import (
+    TILT_BOUNDED,
+    widened_by_systematic,
+    without_inputs,
+)
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import (
     DECISION_QUANTITIES,
@@ -930,14 +934,6 @@ ROUNDING_BOUNDED = QT_TR_NOOP(
     "rounding within ±δ/2 at every face moves half the peak-to-peak by δ/2 at the most; the "
     "zero reading's, shared by every face, not at all), so it covers with at least the "
     "probability stated")
-
-
-#: how the polygon's decided half range is widened for a tilt not identified
-TILT_BOUNDED = QT_TR_NOOP(
-    "the tilt, not identified and not removed, is one unknown error for the whole run, not "
-    "noise: nothing is taken off the measured range for it; a tilt up to {bound} (stated) in "
-    "any direction changes the half range by at most {change}, so the interval is widened by "
-    "that at both ends and holds for any such tilt")
 
 
 def rounding_bounded_half_range(result: PolygonResult, metadata: CertificateMetadata,

@@ -14,9 +14,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite.model import TILT_BOUND_INPUT, TheodoliteResult, tilt_half_range_change
-from models.uncertainty.bounded_systematic_half_range import widened_by_systematic
+from models.uncertainty.bounded_systematic_half_range import TILT_BOUNDED, widened_by_systematic
 from models.uncertainty.conformity import DECISION_QUANTITIES, HalfRangeEstimate
 
 __all__ = ["TILT_WIDENED", "tilt_change_arcsec", "tilt_not_removed", "tilt_widened"]
@@ -53,10 +53,14 @@ def tilt_widened(result: TheodoliteResult, estimate: HalfRangeEstimate) -> HalfR
     its method said."""
     ident = result.identification
     change = tilt_change_arcsec(result)
-    method = message(TILT_WIDENED, quantity=message(DECISION_QUANTITIES["half_range"]),
-                     trials=estimate.trials, seed=str(estimate.seed),
-                     bound=f"{ident.tilt_bound_arcsec:g}\"", change=f"{change:.3g}\"",
-                     beta=f"{ident.setup.beta_deg:.4f}°")
+    bound, changed = f"{ident.tilt_bound_arcsec:g}\"", f"{change:.3g}\""
+    # after the method of an estimate that says its own (the means' united with E's, and
+    # the probability that gives), else the whole of it
+    method = (separated([estimate.method, message(TILT_BOUNDED, bound=bound, change=changed)],
+                        "; ") if estimate.method else
+              message(TILT_WIDENED, quantity=message(DECISION_QUANTITIES["half_range"]),
+                      trials=estimate.trials, seed=str(estimate.seed), bound=bound,
+                      change=changed, beta=f"{ident.setup.beta_deg:.4f}°"))
     return widened_by_systematic(estimate, change, method)
 
 

@@ -28,10 +28,20 @@ import dataclasses
 import math
 from collections.abc import Container
 
+from models.messages import QT_TR_NOOP
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import HalfRangeEstimate, half_range_monte_carlo
 
-__all__ = ["half_range_with_bounded_systematic", "widened_by_systematic", "without_inputs"]
+__all__ = ["TILT_BOUNDED", "half_range_with_bounded_systematic", "widened_by_systematic",
+           "without_inputs"]
+
+#: what the decision says of a tilt not identified that widens its interval, after how the
+#: rest was made (the polygon's, and a theodolite's decided on the means over passes)
+TILT_BOUNDED = QT_TR_NOOP(
+    "the tilt, not identified and not removed, is one unknown error for the whole run, not "
+    "noise: nothing is taken off the measured range for it; a tilt up to {bound} (stated) in "
+    "any direction changes the half range by at most {change}, so the interval is widened by "
+    "that at both ends and holds for any such tilt")
 
 
 def without_inputs(budget: UncertaintyBudget, names: Container[str]) -> UncertaintyBudget:

@@ -122,3 +122,34 @@ def test_the_tilts_largest_change_to_the_half_range_is_the_rigs(gamma):
     beta_margin = 2.0 * bound / 3600.0
     slack = math.tan(math.radians(abs(gamma) + beta_margin)) / math.tan(math.radians(abs(gamma)))
     assert change <= largest * slack * 1.01 + 0.05
+
+
+def test_decided_on_the_means_over_passes_the_tilt_is_not_taken_off_either():
+    """Three passes each way (the half range decided on the means at each θ and direction):
+    the tilt's bound is not drawn as the set-up model's noise and taken off the means' range;
+    the interval holds the truth."""
+    from models.theodolite.pass_means import decided_on_means
+
+    sigma, covered, runs = 0.1, 0, 6
+    for i in range(runs):
+        rng = np.random.default_rng(7400 + i)
+        th = np.round(theta_grid(11, rng), 2)
+        error = axis_error_curve(th, "smooth" if i % 2 else "rough", 1.5, rng)
+        passes = 3
+        theta = np.concatenate([th] * (2 * passes))
+        directions = np.concatenate([np.full(th.size, d) for _ in range(passes)
+                                     for d in (1.0, -1.0)])
+        theta, az, el, truth = run(theta, error, 60.0 * (i % 3) / 2.0, rng.uniform(0.0, 360.0),
+                                   (5.0, -3.0)[i % 2], sigma, rng)
+        result = analyze_run(theta, az, el, accuracy_arcsec=sigma, tilt_bound_arcsec=60.0,
+                             directions=directions)
+        result.directions = directions  # as the workbench's analysis keeps them
+        assert not result.identification.tilt_identified and decided_on_means(result)
+        conformity = theodolite_certificate(result, _meta(1.0, sigma)).conformity
+        mc = conformity.monte_carlo
+        assert mc is not None and "not noise" in str(conformity.quantity)
+        # the means' noise is 0.1″/√3: nothing near the tilt's effect is taken off the range
+        assert mc.value > mc.measured - 0.15, (i, mc)
+        true = 0.5 * float(np.ptp(truth))
+        covered += int(mc.value - mc.u_lower <= true <= mc.value + mc.u_upper)
+    assert covered == runs
