@@ -91,7 +91,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.withheld import UncertaintyWithheld
-from models.messages import QT_TR_NOOP, message, reason_of
+from models.messages import QT_TR_NOOP, message, reason_of, separated
 from models.polygon import KEY, MEASURAND_STANDARDS, TITLE
 from models.polygon.budget_inputs import (
     PYRAMIDAL_INPUT,
@@ -121,6 +121,11 @@ from models.polygon.model import (
 )
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.polygon.setup_statement import setup_statement
+from models.uncertainty.bounded_systematic_half_range import (
+    TILT_BOUNDED,
+    widened_by_systematic,
+    without_inputs,
+)
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import (
     DECISION_QUANTITIES,
@@ -587,6 +592,39 @@ def _unidentified_tilt_component(result: PolygonResult, n: int, zero: int,
                 psi=f"{bound:g}\"", roll=f"{roll:g}′"))]
 
 
+def unidentified_tilt_change(result: PolygonResult, bound: float) -> float:
+    """The largest change (″) a tilt up to ``bound`` not identified and not removed (as
+    :func:`_unidentified_tilt_component` takes it: its exact effect in the set-up's frame,
+    the roll's cross-talk ±ρ over the vertical span) can make to the half range of the
+    errors: the largest half peak-to-peak of that effect over every direction ω (5°, the
+    three largest refined to 0.25°), the roll's sign and the tilt up to the bound (eight
+    magnitudes). One tilt for the whole run, the same in every set, so the mean over the
+    sets carries it whole. 0 where every set's tilt is identified or no bound is stated."""
+    if bound <= 0 or all(s.tilt is not None for s in result.sets):
+        return 0.0
+    zero = _zero_index(result)
+    theta = result.sets[0].theta_deg
+    roll = 2.0 * result.u_ac_roll_arcmin if result.roll_corrected else result.ac_roll_arcmin
+    rho = math.radians(roll / 60.0)
+
+    def half_range(psi: float, omega: float) -> float:
+        own = pyramidal_correction_arcsec(theta, psi, omega, theta[zero], result.ac_alignment,
+                                          _roll_rad(result))
+        span = psi * (np.cos(np.radians(theta - omega))
+                      - np.cos(np.radians(theta[zero] - omega)))
+        # the roll of either sign: half the range is convex in it, largest at ±ρ
+        return 0.5 * max(float(np.ptp(own + rho * span)), float(np.ptp(own - rho * span)))
+
+    coarse = sorted(((half_range(float(psi), float(omega)), float(psi), float(omega))
+                     for psi in bound * np.arange(1, 9) / 8.0
+                     for omega in np.arange(0.0, 360.0, 5.0)), reverse=True)
+    best = coarse[0][0]
+    for _, psi, omega in coarse[:3]:
+        for fine in omega + np.arange(-20, 21) * 0.25:
+            best = max(best, half_range(psi, float(fine)))
+    return best
+
+
 def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[BudgetComponent]:
     """The autocollimator's roll about its line of sight: one input, ρ·|y_i − y_z|."""
     measured = result.roll_corrected
@@ -905,19 +943,37 @@ def rounding_bounded_half_range(result: PolygonResult, metadata: CertificateMeta
     (:func:`_rounding_inputs`): the Monte Carlo of the budget without it, its interval
     widened on each side by half the sum of the rounding steps (a hard bound: with every
     face's reading within ±δ/2 of its value, max − min moves by δ at the most). None where
-    the budget holds no rounding (the Monte Carlo of the whole budget decides)."""
+    the budget holds no rounding nor a tilt not identified (the Monte Carlo of the whole
+    budget decides). A tilt not identified (:func:`unidentified_tilt_change`) is left out of
+    the Monte Carlo and bounds the interval alike, widened at both ends by its largest change
+    to the half range."""
     inputs = [i for i in _rounding_inputs(result, metadata.item_resolution_in("arcsec")) if i[3]]
-    if not inputs:
+    # a tilt not identified: one unknown error for the run, not noise (audit 72 finding 1,
+    # the theodolite's): never drawn as noise and taken off the range, but bounded
+    tilt_bound = float((settings or {}).get("tilt_bound_arcsec",
+                                            DEFAULT_TILT_BOUND_ARCSEC) or 0.0)
+    change = unidentified_tilt_change(result, tilt_bound)
+    if not inputs and not change > 0.0:
         return None
     bound = 0.5 * sum(width for _, width, _, _ in inputs)
-    budget = polygon_budget(result, metadata, settings, rounding=False)
+    budget = without_inputs(polygon_budget(result, metadata, settings, rounding=False),
+                            {TILT_BOUND_INPUT})
     mc = half_range_monte_carlo(result.mean_corrected_arcsec, budget)
     if not (math.isfinite(mc.value) and math.isfinite(mc.u_upper) and math.isfinite(mc.u_lower)):
         return mc
-    return dataclasses.replace(
-        mc, u_upper=mc.u_upper + bound, u_lower=min(mc.u_lower + bound, mc.value),
-        method=message(ROUNDING_BOUNDED, quantity=message(DECISION_QUANTITIES["half_range"]),
-                       trials=mc.trials, seed=str(mc.seed), bound=f"{bound:.3g}\""))
+    if inputs:
+        mc = dataclasses.replace(
+            mc, u_upper=mc.u_upper + bound, u_lower=min(mc.u_lower + bound, mc.value),
+            method=message(ROUNDING_BOUNDED, quantity=message(DECISION_QUANTITIES["half_range"]),
+                           trials=mc.trials, seed=str(mc.seed), bound=f"{bound:.3g}\""))
+    if not change > 0.0:
+        return mc
+    said = message(TILT_BOUNDED, bound=f"{tilt_bound:g}\"", change=f"{change:.3g}\"")
+    method = separated([mc.method or message(
+        QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}, of every input but the tilt"),
+        quantity=message(DECISION_QUANTITIES["half_range"]), trials=mc.trials,
+        seed=str(mc.seed)), said], "; ")
+    return widened_by_systematic(mc, change, method)
 
 
 _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)

@@ -58,6 +58,7 @@ __all__ = [
     "identify_from_elevations",
     "induced_error_arcsec",
     "tilt_bound_effect_arcsec",
+    "tilt_half_range_change",
     "tilt_not_identified",
     "model_error_modes",
     "rotated_normal",
@@ -323,6 +324,53 @@ def tilt_bound_effect_arcsec(rotation_deg, beta_deg: float, bound_arcsec: float)
             worst = np.maximum(worst, np.abs(induced_error_arcsec(
                 rotation, psi / 3600.0, float(alpha), beta_deg)))
     return worst
+
+
+def tilt_half_range_change(rotation_deg, beta_deg: float, bound_arcsec: float) -> float:
+    """The largest change (″) a tilt up to ``bound_arcsec`` not identified and not removed
+    can make to the half range of the errors at these rotations from the reference: the
+    largest half peak-to-peak of its effect ζ(θ) over every tilt direction α and magnitude
+    up to the bound (half the range is half a seminorm: |h(f + ζ) − h(f)| ≤ h(ζ) for any
+    curve f, reached for some). α on a 1° grid at eight magnitudes, the best refined to
+    0.01°; ζ is smooth in α, so what the grid misses is of order (0.005°)² of it. β is
+    known from elevations that a tilt moves by up to 2ψ over a turn (copied, or read to a
+    coarse digit, they may be any of them): ζ, first order in ψ tan β, is taken at β and at
+    β ± twice the bound, the largest."""
+    rotation = np.asarray(rotation_deg, dtype=float)
+    if not bound_arcsec > 0 or rotation.size < 2:
+        return 0.0
+
+    th = rotation * D2R
+    c, s = np.cos(th)[None, :], np.sin(th)[None, :]
+    return max(_tilt_half_range_at(c, s, beta_deg + k * 2.0 * bound_arcsec / 3600.0,
+                                   bound_arcsec) for k in (-1, 0, 1))
+
+
+def _tilt_half_range_at(c: np.ndarray, s: np.ndarray, beta_deg: float,
+                        bound_arcsec: float) -> float:
+    """:func:`tilt_half_range_change` at one β (``c``, ``s``: cos and sin of the rotations,
+    a row)."""
+    n = np.array([math.cos(beta_deg * D2R), 0.0, -math.sin(beta_deg * D2R)])
+
+    def half_ranges(psi_arcsec: float, alpha_deg: np.ndarray) -> np.ndarray:
+        # rotated_normal and induced_error_arcsec for every α at once, (α, θ)
+        psi, alpha = psi_arcsec / 3600.0 * D2R, np.asarray(alpha_deg, dtype=float)[:, None] * D2R
+        p = [-math.sin(psi) * np.cos(alpha), -math.sin(psi) * np.sin(alpha),
+             math.cos(psi) + 0.0 * alpha]
+        dot = p[0] * n[0] + p[2] * n[2]
+        cross_x, cross_y = p[1] * n[2], p[2] * n[0] - p[0] * n[2]
+        x = n[0] * c + cross_x * s + p[0] * dot * (1.0 - c)
+        y = cross_y * s + p[1] * dot * (1.0 - c)
+        zeta = np.arctan2(y * c - x * s, x * c + y * s) * ARCSEC_PER_RAD
+        return 0.5 * np.ptp(zeta, axis=1)
+
+    best, best_psi, best_alpha = 0.0, bound_arcsec, 0.0
+    for psi in bound_arcsec * np.arange(1, 9) / 8.0:
+        h = half_ranges(float(psi), np.arange(360.0))
+        if float(h.max()) > best:
+            best, best_psi, best_alpha = float(h.max()), float(psi), float(np.argmax(h))
+    best = max(best, float(half_ranges(best_psi, best_alpha + np.arange(-100, 101) / 100.0).max()))
+    return best
 
 
 def _unidentified(theta_rel_deg: np.ndarray, elevation_deg: np.ndarray, reference_index: int,

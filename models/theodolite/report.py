@@ -560,11 +560,29 @@ def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
         pass_means_budget,
         withheld_half_range,
     )
+    from models.theodolite.unidentified_tilt_half_range import (
+        TILT_INPUTS,
+        tilt_not_removed,
+        tilt_widened,
+    )
+    from models.uncertainty.bounded_systematic_half_range import without_inputs
+    from models.uncertainty.conformity import half_range_monte_carlo
 
+    # a tilt not identified: one unknown error for the run, not noise (audit 72 finding 1):
+    # the half range decided on the other inputs, its interval widened by the tilt's largest
+    # change to it (models.theodolite.unidentified_tilt_half_range)
+    tilt = metadata.decision_quantity == "half_range" and tilt_not_removed(result)
     if metadata.decision_quantity == "half_range" and decided_on_means(result):
         means, names = pass_means(result)
         stated = stated_reading_uncertainty(metadata)[0]
         means_budget = pass_means_budget(result, metadata, stated, settings)
+        if tilt:  # the set-up model's modes are the tilt's bound alone
+            noise_budget = without_inputs(means_budget, {
+                c.name for c in means_budget.components if c.dof_group == "set-up model"})
+            return Decision(means, MEANS_DECIDED, names, budget=means_budget,
+                            estimate=tilt_widened(result, means_half_range(
+                                result, noise_budget, without_inputs(budget, TILT_INPUTS),
+                                stated, stated_pair_factor(metadata))))
         return Decision(means, MEANS_DECIDED, names, budget=means_budget,
                         estimate=means_half_range(result, means_budget, budget, stated,
                                                   stated_pair_factor(metadata)))
@@ -573,6 +591,9 @@ def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
     if withheld is not None and result.directions is not None:  # the means' curve, named
         means, names = pass_means(result)
         return Decision(means, MEANS_DECIDED, names, estimate=withheld)
+    if withheld is None and tilt:
+        withheld = tilt_widened(result, half_range_monte_carlo(
+            result.corrected_error_arcsec, without_inputs(budget, TILT_INPUTS)))
     return Decision(result.corrected_error_arcsec, point_names=_point_names(result.theta_deg),
                     estimate=withheld)
 
