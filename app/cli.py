@@ -36,6 +36,7 @@ from models.project.output_guard import (
     Protected,
     check_outputs,
     input_files,
+    refuse_other_kinds,
     register_files,
 )
 from models.readings.incomplete import without_waiting_rows
@@ -402,6 +403,8 @@ def run_analyze(argv: list[str]) -> int:
 
             for said in refuse_issued_outputs(register_url(), outputs):  # a results file kept
                 _say(f"anglebench analyze: {rendered(said, words)}")
+        # nor a file of another kind (a lab's details JSON named as --certificate)
+        refuse_other_kinds(outputs)
     except OutputRefused as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT

@@ -51,7 +51,12 @@ from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, langua
 from app.command_line import say as _say
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered
 from models.project.atomic_write import write_bytes_atomic
-from models.project.output_guard import OutputRefused, check_outputs, register_files
+from models.project.output_guard import (
+    OutputRefused,
+    check_outputs,
+    refuse_other_kinds,
+    register_files,
+)
 from models.register.location import register_url
 from models.register.wording import kind_words, revision_words, status_words
 from models.spreadsheet_cell import spreadsheet_safe
@@ -631,6 +636,7 @@ def run_register(argv: list[str]) -> int:
                         refuse_issued_files(register, [
                             (flag, path) for flag, path in outputs
                             if path and not _holds(path, register, record, flag)])
+                        refuse_other_kinds(outputs)  # nor a file of another kind
                     except OutputRefused as exc:
                         _say(f"anglebench register: {rendered(reason_of(exc), words)}")
                         return EXIT_BAD_INPUT

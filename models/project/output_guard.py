@@ -25,8 +25,9 @@ from pathlib import Path
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["OutputRefused", "Protected", "check_output", "check_outputs", "input_files",
-           "open_project", "refuse_database", "refuse_unwritable", "register_files",
-           "same_file", "sqlite_path_of_url"]
+           "open_project", "refuse_database", "refuse_other_kind", "refuse_other_kinds",
+           "refuse_unwritable",
+           "register_files", "same_file", "sqlite_path_of_url"]
 
 #: the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal),
 #: ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index)
@@ -163,6 +164,60 @@ def refuse_database(path: str | os.PathLike[str]) -> None:
         raise OutputRefused(message(QT_TR_NOOP(
             "{path} is a database (a certificate register?); nothing was written: choose "
             "another name"), path=os.fspath(path)))
+
+
+#: what an output of each flag writes, by the first bytes of such a file: a file that exists
+#: under that name and holds something else is not replaced (thbias2's run:
+#: ``--certificate certificate_positioning.json`` wrote a PDF over a lab's metadata JSON,
+#: no input of that run, without a word). Flags that write text (a CSV, a table) are not
+#: judged: any text may be an earlier one of them.
+_KIND_OF_FLAG: dict[str, tuple[str, tuple[bytes, ...]]] = {
+    "--certificate": (QT_TR_NOOP("a PDF"), (b"%PDF",)),
+    "--pdf": (QT_TR_NOOP("a PDF"), (b"%PDF",)),
+    "--dcc": (QT_TR_NOOP("an XML document"), (b"<", b"\xef\xbb\xbf<")),
+    "OUT.zip": (QT_TR_NOOP("a ZIP archive"), (b"PK\x03\x04", b"PK\x05\x06")),
+}
+#: an XLSX results file is a ZIP archive
+_XLSX_HEADS = (b"PK\x03\x04", b"PK\x05\x06")
+
+
+def _kind_expected(path: str | os.PathLike[str], flag: str) -> tuple[str, tuple[bytes, ...]] | None:
+    if flag == "--results" and os.fspath(path).lower().endswith(".xlsx"):
+        return QT_TR_NOOP("an XLSX workbook"), _XLSX_HEADS
+    return _KIND_OF_FLAG.get(flag)
+
+
+def refuse_other_kind(path: str | os.PathLike[str], flag: str) -> None:
+    """Raise OutputRefused when ``path`` exists, is not empty and holds something other than
+    what ``flag`` writes (a certificate named over a JSON, a spreadsheet or a readings file):
+    that file is someone's work, and an output of another kind would replace it with no
+    way back. An earlier output of the same kind is replaced as before (leading white space
+    before an XML document's ``<`` is allowed)."""
+    expected = _kind_expected(path, flag)
+    if expected is None or not _regular_or_absent(path):
+        return
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(64)
+    except OSError:  # absent (or unreadable: refuse_unwritable says why)
+        return
+    if not head:
+        return
+    kind, heads = expected
+    if any(head.lstrip().startswith(h) for h in heads):
+        return
+    raise OutputRefused(message(QT_TR_NOOP(
+        "{flag} {out} exists and is not {kind}: it would be replaced with no way back; "
+        "nothing was written: choose another name"), flag=flag, out=os.fspath(path),
+        kind=message(kind)))
+
+
+def refuse_other_kinds(outputs: Iterable[tuple[str, str | os.PathLike[str] | None]]) -> None:
+    """:func:`refuse_other_kind` for each named output; run after the register's own checks,
+    whose refusal says more ("is the PDF of certificate …")."""
+    for flag, out in outputs:
+        if out:
+            refuse_other_kind(out, flag)
 
 
 def check_output(path: str | os.PathLike[str] | None, protected: Sequence[Protected],

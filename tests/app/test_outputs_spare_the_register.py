@@ -71,6 +71,19 @@ def test_an_output_onto_the_input_through_a_hard_link_is_refused(tmp_path, sampl
     assert readings.read_bytes() == before
 
 
+def test_a_certificate_named_over_a_lab_file_of_another_kind_is_refused(tmp_path, samples_dir,
+                                                                       capsys):
+    """A certificate's details JSON named as --certificate (meant as --metadata): it was
+    replaced by a PDF without a word; now refused before anything is written or issued."""
+    details = tmp_path / "certificate_positioning.json"
+    details.write_bytes((samples_dir / "certificate_positioning.json").read_bytes())
+    before = details.read_bytes()
+    assert main(["analyze", "positioning", str(samples_dir / "positioning_sample.csv"),
+                 "--certificate", str(details)]) == 2
+    assert "exists and is not a PDF" in capsys.readouterr().err
+    assert details.read_bytes() == before
+
+
 def test_register_show_and_export_onto_the_register_are_refused(register, tmp_path, capsys):
     before = _digest(register)
     for target in _names_of(register, tmp_path):

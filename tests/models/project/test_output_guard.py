@@ -18,6 +18,7 @@ from models.project.output_guard import (
     input_files,
     open_project,
     refuse_database,
+    refuse_other_kinds,
     register_files,
     same_file,
     sqlite_path_of_url,
@@ -147,3 +148,35 @@ def test_a_name_as_long_as_the_folder_allows_is_written(tmp_path, length):
     write_bytes_atomic(tmp_path / name, b"%PDF twice")  # replacing it too
     assert (tmp_path / name).read_bytes() == b"%PDF twice"
     assert [p.name for p in tmp_path.iterdir()] == [name]  # no temp file left
+
+
+@pytest.mark.parametrize("flag, name, other", [
+    ("--certificate", "certificate_positioning.json", b'{"customer": "ACME"}'),
+    ("--certificate", "readings.csv", b"angle,reading\n0,1.2\n"),
+    ("--dcc", "c.xml", b"%PDF-1.7 a certificate, not a DCC"),
+    ("--results", "r.xlsx", b"angle,reading\n0,1.2\n"),
+    ("--pdf", "notes.txt", b"a lab's notes"),
+])
+def test_an_output_of_another_kind_than_the_file_it_names_is_refused(tmp_path, flag, name, other):
+    """thbias2's run: ``--certificate certificate_positioning.json`` (meant as --metadata)
+    wrote a PDF over the lab's JSON, no input of that run; now refused, the file intact."""
+    target = tmp_path / name
+    target.write_bytes(other)
+    with pytest.raises(OutputRefused, match="exists and is not"):
+        refuse_other_kinds([(flag, str(target))])
+    assert target.read_bytes() == other
+
+
+@pytest.mark.parametrize("flag, name, same", [
+    ("--certificate", "c.pdf", b"%PDF-1.7\n..."),
+    ("--dcc", "c.xml", b'\n  <?xml version="1.0"?><dcc/>'),
+    ("--dcc", "c.xml", b'\xef\xbb\xbf<?xml version="1.0"?><dcc/>'),
+    ("--results", "r.xlsx", b"PK\x03\x04..."),
+    ("--results", "r.csv", b"anything: a CSV is text"),
+    ("--table", "t.txt", b"anything"),
+    ("--certificate", "empty.pdf", b""),
+])
+def test_an_earlier_output_of_the_same_kind_is_replaced_as_before(tmp_path, flag, name, same):
+    target = tmp_path / name
+    target.write_bytes(same)
+    refuse_other_kinds([(flag, str(target))])
