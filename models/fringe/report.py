@@ -358,6 +358,11 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
                              result.unit, floor=cmc_of(settings, "cmc"))
 
 
+#: the share of the typed step below which the rounding's bound left repeated is none, the
+#: noise having dithered it (the bound is 0.2 % of the step at σ = δ/2, kept; 10⁻⁸ at σ = δ)
+DITHERED = 1e-3
+
+
 def _readings_rounding(result, ds: np.ndarray, dc: np.ndarray) -> list[BudgetComponent]:
     """No ADC LSB stated: the step the readings come in (the last digit typed,
     :attr:`RoundingAtPhases.step_v`) in the model's curve as a stated LSB of that step is
@@ -373,7 +378,7 @@ def _readings_rounding(result, ds: np.ndarray, dc: np.ndarray) -> list[BudgetCom
         if rounding.step_stated or not rounding.step_v > 0.0:
             continue
         half = repeated_bound(rounding.noise_v, rounding.step_v)
-        if not half > 0.0:
+        if not half > DITHERED * rounding.step_v:  # dithered through (σ ≳ δ/2)
             continue
         out.append(BudgetComponent(
             message(QT_TR_NOOP("Readings' rounding, {channel} channel"), channel=label), "B",

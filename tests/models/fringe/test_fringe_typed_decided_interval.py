@@ -71,3 +71,16 @@ def test_the_interval_covers_noise_free_typed_records(capsys, tmp_path):
     p = q["coverage_probability"]
     floor = int(np.argmax(stats.binom.cdf(np.arange(runs + 1), runs, p) > 0.05))
     assert covered >= floor, (covered, runs, floor)
+
+
+@pytest.mark.parametrize("noise_over_step", [0.0, 0.05, 0.2, 0.3, 1.0])
+def test_the_bound_left_repeated_is_the_largest_mean_rounding_of_noisy_readings(
+        noise_over_step):
+    from models.fringe.rounding_at_phases import repeated_bound
+
+    # the mean over the noise of round(x + n) − x − n at voltages x across one step δ = 1
+    rng = np.random.default_rng(5)
+    x = np.linspace(0.0, 1.0, 401)
+    noise = rng.normal(0.0, noise_over_step, (40000, 1))
+    largest = float(np.max(np.abs(np.mean(np.round(x + noise) - x - noise, axis=0))))
+    assert repeated_bound(noise_over_step, 1.0) == pytest.approx(largest, abs=0.006)
