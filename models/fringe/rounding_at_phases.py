@@ -59,8 +59,8 @@ from models.fringe.unmodelled_harmonics import quantisation_step
 from models.readings.resolution import readings_step
 
 __all__ = ["REPEATED_MARGIN", "PhaseGroups", "RoundingAtPhases", "mirrored_correlation",
-           "parameter_variances", "phase_groups", "readings_resolution", "repeated_variance",
-           "rounding_at_phases", "within_phase_variance"]
+           "parameter_variances", "phase_groups", "readings_resolution", "repeated_bound",
+           "repeated_variance", "rounding_at_phases", "within_phase_variance"]
 
 TWO_PI = 2.0 * math.pi
 
@@ -89,6 +89,23 @@ def repeated_variance(sigma: float, step: float) -> float:
         return step * step / 12.0
     damped = np.exp(-4.0 * math.pi ** 2 * (sigma / step) ** 2 * _TERMS ** 2)
     return float(step * step / (2.0 * math.pi ** 2) * np.sum(damped / _TERMS ** 2))
+
+
+def repeated_bound(sigma: float, step: float) -> float:
+    """The bound of the rounding's mean at a phase, max |b(x)| (V): δ/2 at σ = 0 (and where
+    σ is not known, NaN), as an ADC's LSB stated, falling as the noise ``sigma`` dithers the
+    step ``step`` (0.15 δ at σ = δ/5, 10⁻⁸ δ at σ = δ). The series is capped at δ/2, which
+    b, a sawtooth smoothed by the noise, never exceeds (its partial sums overshoot by
+    Gibbs' 9 % where σ is below about δ/100)."""
+    if not step > 0.0:
+        return 0.0
+    if not sigma > 0.0:  # undithered, or not known: the whole half step
+        return 0.5 * step
+    damped = (np.exp(-2.0 * math.pi ** 2 * (sigma / step) ** 2 * _TERMS ** 2)
+              * np.where(_TERMS % 2, -1.0, 1.0) / (math.pi * _TERMS))
+    where = np.linspace(0.0, 1.0, 2049)  # x/δ over one step
+    mean_at = np.sin(TWO_PI * np.outer(where, _TERMS)) @ damped
+    return float(min(step * np.max(np.abs(mean_at)), 0.5 * step))
 
 
 def _noise_from_scatter(w: float, step: float) -> float:
