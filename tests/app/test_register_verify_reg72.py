@@ -9,6 +9,7 @@ code they check."""
 
 from __future__ import annotations
 
+import errno
 import hashlib
 import json
 import os
@@ -159,3 +160,30 @@ def test_a_keyless_verify_of_a_signed_register_says_what_it_did_not_check(tmp_pa
     assert ("2 record(s) are signed with the laboratory's key: their signatures and the "
             "register's signed state are NOT checked without the key") in capsys.readouterr().out
 
+
+def test_a_full_disk_after_the_commit_names_every_file_not_written(samples_dir, tmp_path,
+                                                                  capsys, monkeypatch):
+    """reg72 disk_full.sh C: the PDF written, neither the DCC nor the results file: both
+    named, with what can be done about each."""
+    real = os.fsync
+
+    def fsync(fd):  # the disk full for the DCC's and the results file's bytes
+        if any(f"/.{n}." in os.readlink(f"/proc/self/fd/{fd}") for n in ("c.xml", "r.xlsx")):
+            raise OSError(errno.ENOSPC, "No space left on device")
+        return real(fd)
+
+    monkeypatch.setattr(os, "fsync", fsync)
+    meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    meta.update({"example": False, "certificate_number": ""})
+    (tmp_path / "m.json").write_text(json.dumps(meta), encoding="utf-8")
+    code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--metadata",
+                 str(tmp_path / "m.json"), "--certificate", str(tmp_path / "c.pdf"), "--dcc",
+                 str(tmp_path / "c.xml"), "--results", str(tmp_path / "r.xlsx")])
+    err = capsys.readouterr().err
+    assert code == 2 and (tmp_path / "c.pdf").exists()
+    with Register(register_url()) as register:
+        (number,) = [r.number for r in register.list()]
+    assert f"save its DCC with 'anglebench register show {number} --dcc OUT.xml'" in err
+    assert (f"nor its results file ({tmp_path / 'r.xlsx'}: No space left on device): the "
+            f"register records no results file for {number}, and no command writes it "
+            "afterwards") in err
