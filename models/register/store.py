@@ -1554,6 +1554,11 @@ class Register:
             if not self.is_sqlite:
                 conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
                              {"k": _CHAIN_LOCK})
+            record = self._get(conn, number)
+            if record.status == "withdrawn":  # reg72 #11: it said "cannot be amended"
+                raise RegisterError(message(QT_TR_NOOP(
+                    "{number} was withdrawn already ({reason}): a certificate is withdrawn "
+                    "once"), number=number, reason=record.withdrawn_reason or "—"))
             self._current(conn, number)
             chain = self._append_entry(conn, "withdrawal", number, {"reason": reason})
             conn.execute(certificates.update().where(certificates.c.number == number).values(

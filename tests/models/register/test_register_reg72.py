@@ -252,3 +252,15 @@ def test_a_signed_register_of_0_8_20_verifies_and_signs_its_state_from_its_next_
     with _keyed(url, key) as register:
         assert any("does not carry the laboratory key's signature" in str(p)
                    for p in register.problems)
+
+
+def test_a_certificate_withdrawn_twice_is_refused_in_the_words_of_withdrawal(tmp_path):
+    """reg72 #11: the second withdrawal said "it cannot be amended or replaced"."""
+    with Register(f"sqlite:///{tmp_path / 'r.sqlite'}", timezone="UTC") as register:
+        register.clock = lambda: ISSUED
+        number = register.issue(IssueRequest("polygon", META, PROJECT), render)[0].number
+        register.withdraw(number, "wrong item")
+        with pytest.raises(RegisterError) as refused:
+            register.withdraw(number, "again")
+        assert str(refused.value) == (f"{number} was withdrawn already (wrong item): a "
+                                      "certificate is withdrawn once")
