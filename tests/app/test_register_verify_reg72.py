@@ -187,3 +187,28 @@ def test_a_full_disk_after_the_commit_names_every_file_not_written(samples_dir, 
     assert (f"nor its results file ({tmp_path / 'r.xlsx'}: No space left on device): the "
             f"register records no results file for {number}, and no command writes it "
             "afterwards") in err
+
+
+def test_the_windows_verify_a_pdf_says_a_lost_record_and_a_rewritten_one(tmp_path):
+    """The register window's *Verify a PDF…* finds what ``register verify FILE`` finds."""
+    from unittest import mock
+
+    from app.register_presenter import RegisterPresenter
+
+    (_, first, _), (number, pdf, _) = _issue(2)
+    certificates = mock.Mock()
+    certificates.open_register = lambda: Register(register_url())
+    view = mock.Mock()
+    presenter = RegisterPresenter(view, certificates, lambda *a: True)
+    (tmp_path / "1.pdf").write_bytes(first)
+    (tmp_path / "2.pdf").write_bytes(pdf)
+    _sql("UPDATE certificates SET headline_json = '{}' WHERE seq = 1")  # rewritten: the chain
+    view.ask_pdf_to_verify.return_value = str(tmp_path / "1.pdf")  # breaks too, said anyway
+    presenter.verify_pdf()
+    title, text = view.tell.call_args.args
+    assert "is not the record it was issued from" in text
+    _truncate(number)
+    view.ask_pdf_to_verify.return_value = str(tmp_path / "2.pdf")
+    assert presenter.verify_pdf() is None
+    title, text = view.tell.call_args.args
+    assert title == "Register changed after issue" and "has LOST its record" in text
