@@ -634,7 +634,7 @@ class Register:
                 raise RegisterError(self._disk_full(exc.filename)) from None
             raise
         except self._sa.exc.SQLAlchemyError as exc:  # a unique number taken meanwhile too
-            if _is_disk_full(exc):
+            if _is_disk_full(exc) or (_is_io_error(exc) and self._no_room()):
                 raise RegisterError(self._disk_full()) from None
             reason = _reason(exc)
             if getattr(getattr(exc, "orig", None), "sqlstate", "") == "55P03":
@@ -654,6 +654,19 @@ class Register:
         return message(QT_TR_NOOP(
             "the disk is full at {path}: nothing was recorded; the register is unchanged "
             "(free some space and try again)"), path=where)
+
+    def _no_room(self) -> bool:
+        """The SQLite register's folder has (next to) no free space: SQLite says "disk I/O
+        error" (SQLITE_IOERR), not SQLITE_FULL, when its journal cannot grow on some file
+        systems (tmpfs; reg72 #7), which sent a technician to look for a failing drive."""
+        import shutil
+
+        if not self._sqlite_path:
+            return False
+        try:
+            return shutil.disk_usage(Path(self._sqlite_path).parent).free < _NO_ROOM_BYTES
+        except OSError:
+            return False
 
     def _lock_holders(self) -> str:
         """PostgreSQL: the sessions holding the register's locks (user, program, client,
@@ -2713,6 +2726,18 @@ def _is_disk_full(exc: Exception) -> bool:
         return True
     return getattr(orig, "sqlite_errorname", "") == "SQLITE_FULL" or (
         "database or disk is full" in str(orig or ""))
+
+
+#: free bytes under which a SQLite I/O error is taken for a full disk (a few pages and a
+#: journal's header)
+_NO_ROOM_BYTES = 1 << 20
+
+
+def _is_io_error(exc: Exception) -> bool:
+    """SQLite's SQLITE_IOERR (any of its kinds): "disk I/O error"."""
+    orig = getattr(exc, "orig", None)
+    return getattr(orig, "sqlite_errorname", "").startswith("SQLITE_IOERR") or (
+        "disk I/O error" in str(orig or ""))
 
 
 def _reason(exc: Exception) -> str:
