@@ -100,7 +100,7 @@ def test_sqlites_io_error_on_a_full_disk_is_said_as_a_full_disk(monkeypatch, fre
     def failing(self, conn, records, head):
         kept(self, conn, records, head)
         error = sqlite3.OperationalError("disk I/O error")
-        error.sqlite_errorname = "SQLITE_IOERR_WRITE"  # type: ignore[attr-defined]
+        error.sqlite_errorname = "SQLITE_IOERR_WRITE"
         raise sa.exc.OperationalError("UPDATE register_state …", {}, error)
 
     usage = namedtuple("usage", "total used free")

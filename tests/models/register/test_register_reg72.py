@@ -80,7 +80,7 @@ def key(tmp_path) -> str:
 
 def _keyed(url: str, key: str) -> Register:
     register = Register(url, timezone="UTC", key_file=key)
-    register.clock = lambda: ISSUED
+    register.clock = lambda: ISSUED  # type: ignore[method-assign]
     return register
 
 
