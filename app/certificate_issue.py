@@ -43,6 +43,9 @@ class IssuedNotWritten(OSError):
         self.what = what
         self.recorded = recorded
         self.kept = kept
+        #: the certificate's other files that were not written either, each its own
+        #: IssuedNotWritten (reg72 #5: only the first was named)
+        self.others: tuple[IssuedNotWritten, ...] = ()
 
 
 def _write_results(register: Register, record: CertificateRecord, path: str,
@@ -285,10 +288,11 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
 
     made: dict[str, Any] = {}
 
-    def render(final: CertificateMetadata, head: str = "") -> bytes:
+    def render(final: CertificateMetadata, head: str = "", content: str = "") -> bytes:
         document = dataclasses.replace(
             kind.certificate_document(result, final, origin, settings),
-            raw_data_sha256=digest, edited_readings=edited, register_head=head)
+            raw_data_sha256=digest, edited_readings=edited, register_head=head,
+            register_content=content)
         pdf = certificate_pdf_bytes(document)
         made["document"] = document  # the last one rendered is the one recorded
         if dcc is not None:  # the register may render again: the last one is recorded
@@ -319,16 +323,30 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                                  else "calibration",
                                  render_dcc=(lambda _final, _pdf: made["dcc"])
                                  if dcc is not None else None)
+    # every output is tried, and every one not written is named (reg72 #5)
+    failures: list[IssuedNotWritten] = []
     try:
         _write_new(register, path, pdf)
     except OSError as exc:
-        raise IssuedNotWritten(record, path, exc, "pdf") from exc
+        failures.append(_not_written(IssuedNotWritten(record, path, exc, "pdf"), exc))
     if dcc is not None and dcc_path:
         try:
             _write_new(register, dcc_path, made["dcc"])
         except OSError as exc:
-            raise IssuedNotWritten(record, dcc_path, exc, "dcc") from exc
+            failures.append(_not_written(IssuedNotWritten(record, dcc_path, exc, "dcc"), exc))
     if results is not None and results_path:
         # written, then recorded, then renamed into place: never recorded and not written
-        _write_results(register, record, results_path, results(made["document"], record))
+        try:
+            _write_results(register, record, results_path, results(made["document"], record))
+        except IssuedNotWritten as exc:
+            failures.append(exc)
+    if failures:
+        failures[0].others = tuple(failures[1:])
+        raise failures[0]
     return record
+
+
+def _not_written(failure: IssuedNotWritten, cause: OSError) -> IssuedNotWritten:
+    """``failure`` caused by ``cause`` (as ``raise … from cause`` sets it)."""
+    failure.__cause__ = cause
+    return failure

@@ -771,8 +771,11 @@ class CertificatePresenter:
                     if exc.record.document_kind == "test" else
                     tr("Certificate {number} is issued and recorded in the register, but "
                        "{reason}: save its PDF from File › Certificate register."))
-            self.view.tell(tr("Issued, but the file was not written"),
-                           said.format(number=exc.record.number, reason=exc))
+            said = said.format(number=exc.record.number, reason=exc)
+            if exc.others:  # every file not written is named (reg72 #5)
+                said += "\n\n" + tr("Not written either: {files}.").format(
+                    files="; ".join(str(other) for other in exc.others))
+            self.view.tell(tr("Issued, but the file was not written"), said)
             return False
         if revision is not None:
             self.pending = None

@@ -801,6 +801,8 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
         return None
     except IssuedNotWritten as exc:
         _say(rendered(_not_written(exc), words))
+        for other in exc.others:  # every file not written is named (reg72 #5)
+            _say(rendered(_not_written_either(other), words))
         return None
     except OutputRefused as exc:  # e.g. an issued file named as an output: nothing issued
         _say(f"anglebench analyze: {_why(exc, words)}")
@@ -867,6 +869,26 @@ def _not_written(exc) -> Message:
         "anglebench analyze: certificate {number} is issued and recorded, but {reason}: save "
         "it with 'anglebench register show {number} --pdf OUT.pdf'"),
         number=number, reason=str(exc))
+
+
+def _not_written_either(exc) -> Message:
+    """Another file of the certificate ``exc`` names that was not written, after the first
+    (:func:`_not_written`), and how to write it again — or that nothing can."""
+    number = exc.record.number
+    if exc.what == "dcc":
+        return message(QT_TR_NOOP(
+            "  nor its DCC ({reason}): save it with 'anglebench register show {number} --dcc "
+            "OUT.xml'"), number=number, reason=str(exc))
+    if exc.what == "results" and exc.recorded:
+        return message(QT_TR_NOOP(
+            "  its results file was recorded but not renamed into place ({reason}): the "
+            "recorded file is {kept}; rename it to {path}"),
+            reason=str(exc), kept=exc.kept, path=exc.path)
+    return message(QT_TR_NOOP(
+        "  nor its results file ({reason}): the register records no results file for "
+        "{number}, and no command writes it afterwards (its readings and results are in the "
+        "record: 'anglebench register show {number} --project OUT.json', analysed again "
+        "without issuing)"), number=number, reason=str(exc))
 
 
 def _issued_results(args: argparse.Namespace):

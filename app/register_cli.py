@@ -43,6 +43,7 @@ import csv
 import hashlib
 import io
 import os
+import re
 import sys
 import zipfile
 from pathlib import Path
@@ -351,7 +352,15 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
     """What :func:`_verify` finds, said through ``out``: 1 when something is not as issued
     (:data:`EXIT_REGISTER_CHANGED` when the register's records say they were changed in a
     line that does not begin "CHANGED AFTER ISSUE"), else 0."""
-    from models.register.printed_place import head_before_changed, in_this_chain, say_its_place
+    from models.register.chain import number_in_pdf
+    from models.register.printed_place import (
+        content_changed,
+        embedded_pdf,
+        head_before_changed,
+        in_this_chain,
+        record_lost,
+        say_its_place,
+    )
 
     problems = register.audit(pdfs=True)
     for problem in problems:
@@ -363,6 +372,20 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
         out(message(QT_TR_NOOP("  of them: {certificates} certificate(s) and {results} results "
                                "file(s) recorded at issue"), certificates=len(register.list()),
                     results=len(register.results_records())))
+    unchecked = register.signed_unchecked()
+    if unchecked:  # reg72 #3: a keyless verify said "intact" of a signed register
+        out(message(QT_TR_NOOP(
+            "  {n} record(s) are signed with the laboratory's key: their signatures and the "
+            "register's signed state are NOT checked without the key (set "
+            "ANGLEBENCH_REGISTER_KEY); a rewrite by someone with write access to the "
+            "database is not detectable without it: compare the head with your log"),
+            n=unchecked))
+    elif not register.signed:
+        out(message(QT_TR_NOOP(
+            "  unsigned register (no laboratory key): someone with write access to the "
+            "database can rewrite records and recompute the chain undetectably; the digest "
+            "each certificate issued since 0.8.21 carries finds its record rewritten, and a "
+            "head noted outside ('anglebench register head') finds the rest")))
     failed = bool(problems)
     if head:
         found = register.find_head(head)
@@ -379,10 +402,23 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
                 failed = True
     if not path:
         return 1 if failed else 0
-    if path.lower().endswith((".xlsx", ".csv")):  # a results file issued with a certificate
+    if _unfinished_write(path):
+        out(message(QT_TR_NOOP(
+            "{path}: the name of an unfinished write left by an interrupted issue or save "
+            "(a temporary file): what it holds is checked below; the file at the final name, "
+            "if any, is the one that was issued"), path=path))
+    kind = file_kind(data)
+    found_pdf = register.verify_all(data)
+    found_dcc = register.verify_dcc(data) if not found_pdf else []
+    digest = hashlib.sha256(data).hexdigest()
+    is_results = not found_pdf and not found_dcc and (
+        any(entry["sha256"] == digest for entry in register.results_records())
+        or kind in ("xlsx", "csv"))
+    if is_results:  # a results file issued with a certificate, whatever its name
         return _verify_results(register, path, data, out) or int(failed)
-    is_dcc = path.lower().endswith(".xml")  # a digital calibration certificate received
-    found = register.verify_dcc(data) if is_dcc else register.verify_all(data)
+    is_dcc = bool(found_dcc) or (not found_pdf and kind == "dcc")
+    found = found_dcc if is_dcc else found_pdf
+    pdf_inside = embedded_pdf(data) if is_dcc else data
     if len(found) > 1:
         out(message(QT_TR_NOOP(
             "{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued once, "
@@ -391,14 +427,25 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
         return EXIT_REGISTER_CHANGED  # the register's records, not the file, were changed
     record = found[0] if found else None
     if record is None:
+        if pdf_inside and record_lost(register, pdf_inside):
+            # issued by this register (the head it prints, its number), its record gone:
+            # the register LOST it — not a forgery (reg72 #1)
+            out(message(QT_TR_NOOP(
+                "CHANGED AFTER ISSUE: {path} was issued by this register ({number}), but the "
+                "register has LOST its record: see below"), path=path,
+                number=number_in_pdf(pdf_inside) or "?"))
+            say_its_place(register, path, pdf_inside, out)
+            return EXIT_REGISTER_CHANGED
         out(message(QT_TR_NOOP(
             "{path}: NOT in the register (no issued DCC has its SHA-256: altered, or from "
             "another register)") if is_dcc else QT_TR_NOOP(
             "{path}: NOT in the register (no issued PDF has its SHA-256: altered, a "
-            "draft, or from another register)"), path=path))
-        if not is_dcc and in_this_chain(register, data):
+            "draft, or from another register)") if kind == "pdf" else QT_TR_NOOP(
+            "{path}: NOT in the register (no issued PDF, DCC or results file has its "
+            "SHA-256, and it is none of them: altered, or from another register)"), path=path))
+        if pdf_inside and kind in ("pdf", "dcc") and in_this_chain(register, pdf_inside):
             # it prints a head of this chain, so its record followed that head: is it gone?
-            say_its_place(register, path, data, out)
+            say_its_place(register, path, pdf_inside, out)
         return 1
     out(message(_by_kind(record, QT_TR_NOOP(
         "{path}: certificate {number}, issued {issued_at}, {status}; identical to "
@@ -408,12 +455,43 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
         "{path}: document {number}, issued {issued_at}, {status}; identical to "
         "the record (SHA-256)")), path=path, number=record.number,
         issued_at=record.issued_at, status=status_words(record.status)))
+    if is_dcc:
+        out(message(QT_TR_NOOP("  it is the certificate's DCC (digital calibration "
+                               "certificate)")))
     _say_if_no_longer_valid(record, path, out)
+    rewritten = content_changed(register, path, pdf_inside, record) if pdf_inside else None
+    if rewritten is not None:
+        out(rewritten)
+        failed = True
     moved = None if is_dcc else head_before_changed(register, path, data, record)
     if moved is not None:
         out(moved)
         failed = True
     return 1 if failed else 0
+
+
+def file_kind(data: bytes) -> str:
+    """What a file is by its content, not its name (reg72 #6: the same bytes named .tmp,
+    .dcc or .xlsx were "NOT in the register"): "pdf", "dcc" (XML), "xlsx" (a ZIP), "csv"
+    (other text) or "" (none of them)."""
+    head = data[:4096].lstrip(b"\xef\xbb\xbf \t\r\n")
+    if b"%PDF" in data[:1024]:
+        return "pdf"
+    if head.startswith(b"PK\x03\x04"):
+        return "xlsx"
+    if head.startswith(b"<") and (b"digitalCalibrationCertificate" in data[:8192]
+                                  or head.startswith(b"<?xml")):
+        return "dcc"
+    try:
+        data[:4096].decode("utf-8")
+    except UnicodeDecodeError:
+        return ""
+    return "csv" if data.strip() else ""
+
+
+def _unfinished_write(path: str) -> bool:
+    """``path`` is named as the temporary file of an atomic write (``.NAME.XXXXXXXX.tmp``)."""
+    return bool(re.fullmatch(r"\..+\.[A-Za-z0-9_]{8}\.tmp", os.path.basename(path)))
 
 
 def _by_kind(record, certificate: str, report: str, unknown: str) -> str:
@@ -509,7 +587,7 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
             "but one were recorded after issue"), path=path, n=len(numbers),
             numbers=", ".join(numbers)))
         failed = True
-    stated = issue_stated(data) if path.lower().endswith(".xlsx") else None
+    stated = issue_stated(data) if file_kind(data) == "xlsx" else None
     for entry in found:
         record = register.get(entry["number"])
         if not entry["first"]:

@@ -234,7 +234,13 @@ class RegisterPresenter:
         after issue is named by that head and recorded as missing when the register can be
         written; another record in its place is said; a record found whose chain before it
         was rewritten is said."""
-        from models.register.printed_place import head_before_changed, in_this_chain, say_its_place
+        from models.register.printed_place import (
+            content_changed,
+            head_before_changed,
+            in_this_chain,
+            record_lost,
+            say_its_place,
+        )
 
         path = self.view.ask_pdf_to_verify()
         if not path:
@@ -246,9 +252,16 @@ class RegisterPresenter:
             with self._register() as register:
                 found = register.verify_all(data)
                 problems = register.audit(pdfs=True)  # the stored PDFs too, on demand
+                lost = False
                 if len(found) == 1:
                     moved = head_before_changed(register, path, data, found[0])
                     findings += [moved] if moved is not None else []
+                    # its record rewritten since (the content digest it carries: reg72 #2)
+                    rewritten = content_changed(register, path, data, found[0])
+                    findings += [rewritten] if rewritten is not None else []
+                elif not found and record_lost(register, data):
+                    lost = True  # issued here, its record gone: not a forgery (reg72 #1)
+                    say_its_place(register, path, data, findings.append)
                 elif not found and in_this_chain(register, data):
                     # it prints a head of this chain, so its record followed it: is it gone?
                     say_its_place(register, path, data, findings.append)
@@ -265,6 +278,10 @@ class RegisterPresenter:
                 "{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued "
                 "once, so all but one were copied into the register after issue.").format(
                 path=path, n=len(found), numbers=", ".join(r.number for r in found)))
+        elif record is None and lost:
+            self.view.tell(tr("Register changed after issue"), tr(
+                "{path} was issued by this register, but the register has LOST its record."
+                ).format(path=path) + said)
         elif record is None:
             self.view.tell(tr("Not in the register"), tr(
                 "{path}: no certificate issued from this register has this PDF (SHA-256): it "

@@ -123,6 +123,9 @@ class CertificateDocument:
     # value), printed short on every page's foot and in full on the last page: every copy
     # anchors the register's history up to it (models/register/chain.py); "" unissued
     register_head: str = ""
+    #: the digest of the register record's content (models/register/chain.content_digest),
+    #: carried in the PDF's keywords: a record rewritten after issue is found from the PDF
+    register_content: str = ""
     # a specimen (the bundled example details, or the window's training switch):
     # watermarked SPECIMEN, numbered SPECIMEN-…, never recorded in a register
     specimen: bool = False

@@ -72,7 +72,8 @@ def _remove_stale_temps(target: Path) -> None:
             temp.unlink()
 
 
-def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[bytes]) -> None:
+def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[bytes], *,
+                       through_link: bool = True) -> None:
     """Replace ``path`` with ``data`` (bytes, or pieces of it written one after another)
     so that readers see the old or the new file, never half.
 
@@ -84,10 +85,17 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[byte
     rename the temporary file is removed and the old file is left untouched. A target that is a
     SQLite database or one of its journals (a certificate register) is refused
     (OutputRefused, an OSError) before anything is written.
+
+    The temporary file is always a new file (mkstemp: created exclusively, O_EXCL, so a
+    link or file planted at its random name is never written through). ``through_link``: a
+    symbolic link at ``path`` is written through (a user's link to where they keep the file
+    stays a link); False: the link itself is replaced and its target left alone — for a
+    name of the program's own (the autosave's pending file), where a link can only have
+    been planted (reg72 #9: it replaced an issued PDF).
     """
     target = Path(path)
     refuse_database(target)  # a certificate register is never an output (output_guard.py)
-    if target.is_symlink():  # write through the link: the link stays a link
+    if through_link and target.is_symlink():  # write through the link: it stays a link
         target = target.resolve()
     _remove_stale_temps(target)
     fd, tmp_name = tempfile.mkstemp(prefix=_temp_prefix(target), suffix=".tmp", dir=target.parent)

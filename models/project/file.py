@@ -424,9 +424,11 @@ def check_project(project: Project, kinds: Mapping[str, Any], source: str = "pro
 
 
 def save_project(path: str | Path, project: Project,
-                 between_blocks: Callable[[], None] | None = None) -> str:
+                 between_blocks: Callable[[], None] | None = None, *,
+                 through_link: bool = True) -> str:
     """Write the project atomically (temp file + rename); the SHA-256 (hex) of the bytes
-    written.
+    written. ``through_link``: as :func:`write_bytes_atomic`'s (False: a symbolic link at
+    ``path`` is replaced, never written through).
 
     A lone UTF-16 surrogate (half a character, which UTF-8 cannot hold: pasted, or from a
     tool) is written as its JSON escape (``\\ud800``, "backslashreplace": outside a JSON
@@ -440,7 +442,8 @@ def save_project(path: str | Path, project: Project,
             digest.update(data)
             yield data
 
-    write_bytes_atomic(path, encoded(project_json_parts(project, between_blocks)))
+    write_bytes_atomic(path, encoded(project_json_parts(project, between_blocks)),
+                       through_link=through_link)
     return digest.hexdigest()
 
 

@@ -154,7 +154,9 @@ class RecoveryStore:
         project.metadata["project_path"] = str(project_path) if project_path else ""
         pending = self.path.with_name(f".{self.path.name}.pending.tmp")
         with self._write_lock:
-            save_project(pending, project, between_blocks)
+            # the pending name is the program's own: a link planted there is replaced, never
+            # written through (reg72 #9)
+            save_project(pending, project, between_blocks, through_link=False)
             with self._publish_lock:
                 if generation != self.generation:
                     with contextlib.suppress(OSError):

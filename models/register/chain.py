@@ -23,6 +23,14 @@ values, and their kind is not recorded.
 The ``register_state`` row holds the number of records and the head, so a deleted tail is
 found; the counters are cross-checked against the records allocated from them.
 
+Since AngleBench 0.8.21 every certificate issued has chain format 5 (the fields of format
+4): its PDF carries the digest of its record's content (:func:`content_digest`: the readings,
+results and details as recorded, not the files' hashes, which are made after it), so a
+record rewritten after its PDF was issued is found from the customer's copy, key or no key;
+and with the lab's key the state (record count, head and number counters) is signed with
+every record, so a deleted tail with the state set back is found
+(models/register/signing.state_text).
+
 Anyone with write access can recompute the whole chain: the chain's head (``anglebench
 register head``), noted outside the database, and the head printed on every certificate
 (the head *before* it) anchor it (``anglebench register verify --head``).
@@ -35,7 +43,8 @@ import json
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "CHAINED_V4", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK",
+__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "CHAINED_V4", "CONTENT", "CONTENT_MARK",
+           "ENTRY_CHAINED", "GENESIS", "HEAD_MARK", "content_digest", "content_in_pdf",
            "head_in_pdf", "link", "link_entry", "number_in_pdf"]
 
 #: a record's fields as issued, in the chain (status and superseded_by change later)
@@ -82,6 +91,32 @@ def link_entry(previous: str, entry: Mapping[str, Any]) -> str:
 #: how a certificate's PDF carries the head before it, in its document information
 #: (keywords), besides printing it
 HEAD_MARK = "anglebench-register-head-before:"
+
+
+#: a record's content as recorded, known before its PDF is rendered: what the digest its PDF
+#: carries covers (not the PDF's or DCC's SHA-256, made after it, nor the document's kind,
+#: told by the rendering; both are in the chain)
+CONTENT = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
+           "item_description", "item_manufacturer", "item_serial", "customer", "operator",
+           "workstation", "supersedes", "revision", "change_note", "project_json",
+           "software_json", "headline_json", "seq", "counter", "counter_value", "os_user",
+           "approver")
+#: how a certificate's PDF (so the DCC, which embeds it) carries its record's content digest
+CONTENT_MARK = "anglebench-record-content:"
+
+
+def content_digest(record: Mapping[str, Any]) -> str:
+    """The SHA-256 of a record's content (:data:`CONTENT`) as recorded."""
+    return _digest("content", {k: record.get(k) for k in CONTENT})
+
+
+def content_in_pdf(data: bytes) -> str:
+    """The record content digest a certificate's PDF carries (its keywords), or "" (issued
+    before AngleBench 0.8.21, a draft, a specimen)."""
+    import re
+
+    found = re.search(CONTENT_MARK.encode() + rb"([0-9a-f]{64})", data)
+    return found.group(1).decode() if found else ""
 
 
 def head_in_pdf(data: bytes) -> str:

@@ -8,13 +8,15 @@ the same checks (rev64 F8)."""
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable
 
 from models.messages import QT_TR_NOOP, Message, message, reason_of
-from models.register.chain import head_in_pdf
+from models.register.chain import content_digest, content_in_pdf, head_in_pdf
 from models.register.store import CertificateRecord, Register, RegisterError
 
-__all__ = ["ALTERED_OR_REPLACED", "head_before_changed", "in_this_chain", "say_its_place"]
+__all__ = ["ALTERED_OR_REPLACED", "content_changed", "embedded_pdf", "head_before_changed",
+           "in_this_chain", "record_lost", "say_its_place"]
 
 #: a PDF that prints a head of the chain whose next record is another: the PDF altered, or
 #: the record replaced — which, the register cannot tell (``register verify`` counts it as
@@ -70,6 +72,15 @@ def say_its_place(register: Register, path: str, data: bytes,
                 "  recorded in the register: nothing is issued, its number not again, until "
                 "the register is restored from a backup")))
         return False
+    if _number_reissued(check, data):
+        assert check.record is not None
+        out(message(QT_TR_NOOP(
+            "CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after "
+            "the head it prints, but record {seq} is now another certificate of the same "
+            "number (SHA-256 {other}…): its record was deleted after issue and the number "
+            "issued again"), path=path, number=name, seq=place,
+            other=check.record.pdf_sha256[:16]))
+        return False
     other = (check.record.number if check.record is not None else check.after
              or message(QT_TR_NOOP("not there")))
     out(message(ALTERED_OR_REPLACED, path=path, number=name, seq=place,
@@ -98,3 +109,64 @@ def head_before_changed(register: Register, path: str, data: bytes,
         "CHANGED AFTER ISSUE: {path} prints the chain head {printed} before it, but the "
         "register's chain before {number} is now {actual}"), path=path, printed=printed,
         number=record.number, actual=actual)
+
+
+def _number_reissued(check, data: bytes) -> bool:
+    """The record at the PDF's place is another certificate of the number the PDF names:
+    another record's content than the one the PDF carries the digest of (a PDF altered
+    after issue carries its own record's digest; a PDF that carries none, issued before
+    0.8.21, cannot be told from one altered: not said to be this)."""
+    carried = content_in_pdf(data)
+    return (check.record is not None and bool(check.number) and bool(carried)
+            and check.record.number == check.number
+            and check.record.pdf_sha256 != check.sha256 and not check.elsewhere
+            and content_digest(dataclasses.asdict(check.record)) != carried)
+
+
+def record_lost(register: Register, data: bytes) -> bool:
+    """A certificate's PDF the register holds no record of, though the head it prints and
+    the number it names say this register issued it there: its record deleted after issue
+    (the chain ending at that head, or recorded as missing), or another certificate of its
+    number in its place (the number issued again). Not a forgery: the register LOST it
+    (reg72 #1)."""
+    if not in_this_chain(register, data):
+        return False
+    check = register.printed_head(data)
+    return check is not None and check.place is not None and (
+        check.missing or check.recorded_missing or _number_reissued(check, data))
+
+
+def embedded_pdf(dcc: bytes) -> bytes:
+    """The PDF a DCC embeds (its dataBase64), or b"" when it embeds none that can be read."""
+    import base64
+    import binascii
+    import re
+
+    found = re.search(rb"dataBase64>\s*([A-Za-z0-9+/=\s]+?)\s*</", dcc)
+    if not found:
+        return b""
+    try:
+        return base64.b64decode(b"".join(found.group(1).split()), validate=True)
+    except (binascii.Error, ValueError):
+        return b""
+
+
+def content_changed(register: Register, path: str, data: bytes,
+                    record: CertificateRecord) -> Message | None:
+    """Of a PDF found in the register as ``record`` (or a DCC, by the PDF it embeds): the
+    digest of its record's content it carries (AngleBench 0.8.21 on) against the record's
+    content now. A record rewritten after issue — readings, results, details — with its
+    chain recomputed is found so from the customer's copy, key or no key (reg72 #2). None
+    when it carries no digest (issued before) or the same one."""
+    carried = content_in_pdf(data)
+    if not carried:
+        return None
+    actual = content_digest(dataclasses.asdict(record))
+    if actual == carried:
+        return None
+    return message(QT_TR_NOOP(
+        "CHANGED AFTER ISSUE: {path}: the register's record of {number} is not the record "
+        "it was issued from: the file carries the digest {carried}… of its record's content "
+        "(readings, results and details as recorded), the record now gives {actual}…: the "
+        "record was rewritten after issue"), path=path, number=record.number,
+        carried=carried[:16], actual=actual[:16])

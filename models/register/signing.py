@@ -1,8 +1,13 @@
 """Records signed with the laboratory's key, kept outside the database: each record's and
 entry's chain value is signed (HMAC-SHA256), so a record forged and appended after the
 last genuine one — with its chain and the state recomputed, which needs no secret — carries
-no valid signature. The key is a file named by ``ANGLEBENCH_REGISTER_KEY`` (at least 32
-bytes, e.g. ``head -c 32 /dev/urandom > lab.key``; kept off the database server)."""
+no valid signature. Since AngleBench 0.8.21 the register's state — its record count, its
+head and every number counter (:func:`state_text`) — is signed too, with every record, so
+the last records deleted and the state and counters set back, or a counter set back alone,
+are found (reg72 #1); an older signed state copied back with its records (a backup
+replayed) is not: only a head noted outside finds that. The key is a file named by
+``ANGLEBENCH_REGISTER_KEY`` (at least 32 bytes, e.g. ``head -c 32 /dev/urandom >
+lab.key``; kept off the database server)."""
 
 from __future__ import annotations
 
@@ -13,9 +18,11 @@ from pathlib import Path
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["KEY_ENV_VAR", "load_key", "sign", "signature_ok"]
+__all__ = ["KEY_ENV_VAR", "STATE_SIGNATURE", "load_key", "sign", "signature_ok", "state_text"]
 
 KEY_ENV_VAR = "ANGLEBENCH_REGISTER_KEY"
+#: the name of the register_state row that holds the state's signature
+STATE_SIGNATURE = "state_signature"
 
 
 class KeyError_(ValueError):
@@ -50,3 +57,14 @@ def signature_ok(key: bytes, chain: str, signature: str | None) -> bool:
     if not signature:
         return False
     return hmac.compare_digest(sign(key, chain), signature)
+
+
+def state_text(records: int | str, head: str, counters: dict[str, int]) -> str:
+    """What the state's signature covers: the record count, the head and every counter's
+    last value, in one canonical text."""
+    import json
+
+    return "anglebench-register-state\n" + json.dumps(
+        {"records": str(records), "head": head,
+         "counters": {name: int(value) for name, value in sorted(counters.items())}},
+        sort_keys=True, separators=(",", ":"))

@@ -40,7 +40,15 @@ from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
 from models.messages import QT_TR_NOOP, Message, listed, message, reason_of, separated
 from models.project.output_guard import TURN_FILE_SUFFIX
-from models.register.chain import CHAINED, CHAINED_V2, CHAINED_V3, CHAINED_V4, GENESIS, link
+from models.register.chain import (
+    CHAINED,
+    CHAINED_V2,
+    CHAINED_V3,
+    CHAINED_V4,
+    GENESIS,
+    content_digest,
+    link,
+)
 from models.register.wording import DOCUMENT_KINDS, kind_words
 
 if TYPE_CHECKING:
@@ -324,6 +332,33 @@ def _os_user() -> str:
         return ""
 
 
+#: the environment variable that sets how many days after the register's last record an
+#: issue may be dated (0: no limit)
+MAX_DAYS_ENV = "ANGLEBENCH_REGISTER_MAX_DAYS"
+#: its value when it is not set
+MAX_DAYS_DEFAULT = 90
+
+
+def max_days_after_last() -> int:
+    """How many days after the register's last record a certificate may be issued before
+    the clock is doubted (``ANGLEBENCH_REGISTER_MAX_DAYS``; default 90; 0: no limit).
+    RegisterError when the setting is not a whole number of days."""
+    import os
+
+    text = os.environ.get(MAX_DAYS_ENV, "").strip()
+    if not text:
+        return MAX_DAYS_DEFAULT
+    try:
+        days = int(text)
+    except ValueError:
+        days = -1
+    if days < 0:
+        raise RegisterError(message(QT_TR_NOOP(
+            "{setting}={value}: a whole number of days, 0 for no limit"),
+            setting=MAX_DAYS_ENV, value=text))
+    return days
+
+
 def lab_timezone(name: str = "") -> dt.tzinfo:
     """The lab's time zone: ``name`` (an IANA name such as Asia/Shanghai), else the
     ``ANGLEBENCH_TIMEZONE`` environment variable, else the system's."""
@@ -599,7 +634,7 @@ class Register:
                 raise RegisterError(self._disk_full(exc.filename)) from None
             raise
         except self._sa.exc.SQLAlchemyError as exc:  # a unique number taken meanwhile too
-            if _is_disk_full(exc):
+            if _is_disk_full(exc) or (_is_io_error(exc) and self._no_room()):
                 raise RegisterError(self._disk_full()) from None
             reason = _reason(exc)
             if getattr(getattr(exc, "orig", None), "sqlstate", "") == "55P03":
@@ -619,6 +654,19 @@ class Register:
         return message(QT_TR_NOOP(
             "the disk is full at {path}: nothing was recorded; the register is unchanged "
             "(free some space and try again)"), path=where)
+
+    def _no_room(self) -> bool:
+        """The SQLite register's folder has (next to) no free space: SQLite says "disk I/O
+        error" (SQLITE_IOERR), not SQLITE_FULL, when its journal cannot grow on some file
+        systems (tmpfs; reg72 #7), which sent a technician to look for a failing drive."""
+        import shutil
+
+        if not self._sqlite_path:
+            return False
+        try:
+            return shutil.disk_usage(Path(self._sqlite_path).parent).free < _NO_ROOM_BYTES
+        except OSError:
+            return False
 
     def _lock_holders(self) -> str:
         """PostgreSQL: the sessions holding the register's locks (user, program, client,
@@ -653,8 +701,10 @@ class Register:
 
     def _state(self, conn) -> tuple[int, str]:
         """The record count and head the register wrote with its last record; refuses
-        (RegisterError) when the records no longer end there."""
+        (RegisterError) when the records no longer end there, and when this process has no
+        key and the register holds signed records (every write reads it first)."""
         sa, schema = self._sa, self._schema
+        self._refuse_without_key(conn)
         state = dict(conn.execute(sa.select(schema.STATE.c.name, schema.STATE.c.value)).all())
         try:
             records, head = int(state["records"]), state["head"]
@@ -693,9 +743,42 @@ class Register:
         return sign(self._key, chain) if self._key else None
 
     def _set_state(self, conn, records: int, head: str) -> None:
+        """The state row after a record; with the lab's key its signature too, over the
+        count, the head and the counters as this transaction leaves them (reg72 #1)."""
+        from models.register.signing import STATE_SIGNATURE, sign, state_text
+
         state = self._schema.STATE
         conn.execute(state.update().where(state.c.name == "records").values(value=str(records)))
         conn.execute(state.update().where(state.c.name == "head").values(value=head))
+        if not self._key:
+            return
+        counters = self._schema.COUNTERS
+        signature = sign(self._key, state_text(records, head, dict(conn.execute(
+            self._sa.select(counters.c.name, counters.c.last_value)).all())))
+        if conn.execute(state.update().where(state.c.name == STATE_SIGNATURE).values(
+                value=signature)).rowcount == 0:
+            conn.execute(state.insert().values(name=STATE_SIGNATURE, value=signature))
+
+    def _signed_records(self, conn) -> int:
+        """How many records and entries carry a signature (the lab's key)."""
+        sa, schema = self._sa, self._schema
+        return sum(conn.execute(sa.select(sa.func.count()).select_from(table).where(
+            table.c.signature.is_not(None))).scalar_one()
+            for table in (schema.CERTIFICATES, schema.ENTRIES))
+
+    def _refuse_without_key(self, conn) -> None:
+        """A process without the lab's key writes nothing into a register that holds
+        signed records (reg72 #3: one unsigned record blocked every keyed workstation for
+        good, and a keyless verify called the chain intact)."""
+        from models.register.signing import KEY_ENV_VAR
+
+        if self._key or not self._signed_records(conn):
+            return
+        raise RegisterError(message(QT_TR_NOOP(
+            "this register holds records signed with the laboratory's key, and this "
+            "AngleBench has no key ({setting} is not set): nothing is recorded unsigned into "
+            "a signed register; set {setting} to the key file and try again"),
+            setting=KEY_ENV_VAR))
 
     # -- issuing --------------------------------------------------------------------------
     def _next_value(self, conn, scheme: str, date: dt.date) -> tuple[str, str, int | None, int]:
@@ -847,13 +930,29 @@ class Register:
               issue_date: dt.date, now: dt.datetime) -> _Plan:
         sa, certificates = self._sa, self._schema.CERTIFICATES
         records, head = self._state(conn)
-        last = conn.execute(sa.select(certificates.c.issued_at, certificates.c.number)
+        last = conn.execute(sa.select(certificates.c.issued_at, certificates.c.number,
+                                      certificates.c.workstation)
                             .order_by(certificates.c.id.desc()).limit(1)).first()
         if last is not None and _parse_time(last.issued_at) > now:
             raise RegisterError(message(QT_TR_NOOP(
                 "the computer's clock says {now}, before the register's last record ({number}, "
                 "issued {then}): the clock was set back; nothing is issued until it is right"),
                 now=now.isoformat(), number=last.number, then=last.issued_at))
+        limit = max_days_after_last()
+        if last is not None and limit and now - _parse_time(last.issued_at) > dt.timedelta(
+                days=limit):
+            # reg72 #3: one issue with a clock a year ahead was accepted, and then every
+            # honest issue was refused as "the clock was set back" until that date
+            days = (now - _parse_time(last.issued_at)).days
+            raise RegisterError(message(QT_TR_NOOP(
+                "the computer's clock says {now}, {days} days after the register's last record "
+                "({number}, issued {then} on {workstation}): more than {limit} days "
+                "({setting}); a clock set ahead would date this certificate wrongly and refuse "
+                "every issue on a right clock until then. Check the clock; if it is right, "
+                "issue with {setting}={needed} set for this issue"),
+                now=now.isoformat(), days=days, number=last.number, then=last.issued_at,
+                workstation=last.workstation or "?", limit=limit, setting=MAX_DAYS_ENV,
+                needed=days + 1))
         revision, original = "original", None
         counter = before = value = None
         if supersedes:
@@ -1044,13 +1143,6 @@ class Register:
                     change_note=separate if same else
                     separated([*corrected, change_note]) if corrected else change_note,
                     separate_from=", ".join(same))
-                pdf = _call_render(render, final, plan.head)
-                kind = document_kind() if callable(document_kind) else document_kind
-                if kind is not None and kind not in DOCUMENT_KINDS:
-                    raise ValueError(f"document_kind {kind!r}: one of {DOCUMENT_KINDS}")
-                dcc = render_dcc(final, pdf) if render_dcc is not None else None
-                if dcc is not None and not isinstance(dcc, bytes | bytearray):
-                    raise TypeError("render_dcc returns the DCC's bytes")
                 record = CertificateRecord(
                     number=plan.number,
                     issued_at=now.isoformat(),
@@ -1064,10 +1156,23 @@ class Register:
                     project_json=_with_metadata(request.project_json, request.workbench, final),
                     software_json=json.dumps(software_versions(), sort_keys=True),
                     headline_json=json.dumps(request.headline, sort_keys=True),
-                    pdf_sha256=hashlib.sha256(pdf).hexdigest(),
+                    pdf_sha256="",
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
                     os_user=user, approver=meta.approver,
-                    chain_format=4,
+                    chain_format=5)
+                # the record's content first, carried by the PDF (so by the DCC that embeds
+                # it); then the files' hashes (reg72 #2: the newest record rewritten with its
+                # chain recomputed is found from the customer's copy)
+                content = content_digest(dataclasses.asdict(record))
+                pdf = _call_render(render, final, plan.head, content)
+                kind = document_kind() if callable(document_kind) else document_kind
+                if kind is not None and kind not in DOCUMENT_KINDS:
+                    raise ValueError(f"document_kind {kind!r}: one of {DOCUMENT_KINDS}")
+                dcc = render_dcc(final, pdf) if render_dcc is not None else None
+                if dcc is not None and not isinstance(dcc, bytes | bytearray):
+                    raise TypeError("render_dcc returns the DCC's bytes")
+                record = dataclasses.replace(
+                    record, pdf_sha256=hashlib.sha256(pdf).hexdigest(),
                     dcc_sha256=None if dcc is None else hashlib.sha256(dcc).hexdigest(),
                     document_kind=kind)
                 chain = link(plan.head, dataclasses.asdict(record))
@@ -1462,6 +1567,11 @@ class Register:
             if not self.is_sqlite:
                 conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
                              {"k": _CHAIN_LOCK})
+            record = self._get(conn, number)
+            if record.status == "withdrawn":  # reg72 #11: it said "cannot be amended"
+                raise RegisterError(message(QT_TR_NOOP(
+                    "{number} was withdrawn already ({reason}): a certificate is withdrawn "
+                    "once"), number=number, reason=record.withdrawn_reason or "—"))
             self._current(conn, number)
             chain = self._append_entry(conn, "withdrawal", number, {"reason": reason})
             conn.execute(certificates.update().where(certificates.c.number == number).values(
@@ -1744,6 +1854,7 @@ class Register:
                             kind=kind_words(item.document_kind)))
         problems += self._signature_problems(links)
         count = len(links)
+        problems += self._state_signature_problems(rows, state, counters)
         if state.get("records") != str(count) or state.get("head") != previous:
             problems.append(message(QT_TR_NOOP(
                 "the register recorded {recorded} record(s) ending at chain head {head}, but "
@@ -1776,6 +1887,44 @@ class Register:
                         "record {number}: the stored DCC does not match the SHA-256 recorded "
                         "at issue"), number=row.number))
         return problems
+
+    def _state_signature_problems(self, rows, state: dict, counters: dict) -> list:
+        """With the lab's key: the state (count, head, counters) must carry the key's
+        signature once any certificate of chain format 5 (issued by AngleBench 0.8.21 or
+        later, which signs the state) is signed, or once a state signature was written. A
+        register all of whose signed records are older is read as it was (its state is
+        signed with its next record)."""
+        from models.register.signing import STATE_SIGNATURE, signature_ok, state_text
+
+        if not self._key:
+            return []
+        signature = state.get(STATE_SIGNATURE)
+        expected = signature is not None or any(
+            (row.chain_format or 1) >= 5 and row.signature for row in rows)
+        if not expected:
+            return []
+        text = state_text(state.get("records", "?"), state.get("head", ""), counters)
+        if signature_ok(self._key, text, signature):
+            return []
+        return [message(QT_TR_NOOP(
+            "the register's state (its record count {records}, head {head} and number "
+            "counters) does not carry the laboratory key's signature: the last record(s) "
+            "were deleted with the state set back, or a counter was set back, outside "
+            "AngleBench; restore the register from a backup"),
+            records=state.get("records", "?"), head=(state.get("head") or "?")[:16])]
+
+    @property
+    def signed(self) -> bool:
+        """This process signs with the lab's key."""
+        return self._key is not None
+
+    def signed_unchecked(self) -> int:
+        """Without the lab's key: how many records and entries carry a signature, which
+        this process cannot check (0 with the key)."""
+        if self._key:
+            return 0
+        with self._read() as conn:
+            return self._signed_records(conn)
 
     def _signature_problems(self, links: list) -> list:
         """With the lab's key: every signature must be the key's; from the first signed
@@ -2332,14 +2481,17 @@ def _parse_time(text: str) -> dt.datetime:
     return stamp if stamp.tzinfo else stamp.replace(tzinfo=dt.timezone.utc)
 
 
-def _call_render(render: Callable[..., bytes], final: CertificateMetadata, head: str) -> bytes:
+def _call_render(render: Callable[..., bytes], final: CertificateMetadata, head: str,
+                 content: str = "") -> bytes:
     import inspect
 
     try:
-        takes_head = "head" in inspect.signature(render).parameters
+        parameters = inspect.signature(render).parameters
     except (TypeError, ValueError):
-        takes_head = False
-    return render(final, head=head) if takes_head else render(final)
+        parameters = {}  # type: ignore[assignment]
+    given = {name: value for name, value in (("head", head), ("content", content))
+             if name in parameters}
+    return render(final, **given)
 
 
 def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
@@ -2574,6 +2726,18 @@ def _is_disk_full(exc: Exception) -> bool:
         return True
     return getattr(orig, "sqlite_errorname", "") == "SQLITE_FULL" or (
         "database or disk is full" in str(orig or ""))
+
+
+#: free bytes under which a SQLite I/O error is taken for a full disk (a few pages and a
+#: journal's header)
+_NO_ROOM_BYTES = 1 << 20
+
+
+def _is_io_error(exc: Exception) -> bool:
+    """SQLite's SQLITE_IOERR (any of its kinds): "disk I/O error"."""
+    orig = getattr(exc, "orig", None)
+    return getattr(orig, "sqlite_errorname", "").startswith("SQLITE_IOERR") or (
+        "disk I/O error" in str(orig or ""))
 
 
 def _reason(exc: Exception) -> str:

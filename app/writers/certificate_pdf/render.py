@@ -48,9 +48,12 @@ def _drawn(pdf, document: CertificateDocument) -> FPDF:
     created = _created(document)
     pdf.set_creation_date(created)
     if document.register_head:
-        from models.register.chain import HEAD_MARK
+        from models.register.chain import CONTENT_MARK, HEAD_MARK
 
-        pdf.set_keywords(f"{HEAD_MARK}{document.register_head}")
+        keywords = f"{HEAD_MARK}{document.register_head}"
+        if document.register_content:
+            keywords += f" {CONTENT_MARK}{document.register_content}"
+        pdf.set_keywords(keywords)
     pdf.add_page()
     draw_front(pdf, document, created)
     draw_traceability(pdf, document)

@@ -163,7 +163,10 @@ def test_an_amendment_references_the_original_which_stays_unchanged(register):
         register.issue(request(), render, supersedes="XX-1")
 
 
-def test_search_verify_history_and_due_date(register):
+def test_search_verify_history_and_due_date(register, monkeypatch):
+    # a year between calibrations with nothing issued in between: past the 90 days an issue
+    # may follow the last record by default (reg72 #3), said for these issues
+    monkeypatch.setenv("ANGLEBENCH_REGISTER_MAX_DAYS", "0")
     a, pdf_a = register.issue(request(headline={"p": 1.0}), render)
     other = CertificateMetadata(item_serial="ZZ-9", customer_name="Other Lab",
                                 calibration_date="2026-10-01", approver="Dr. Li")
@@ -416,9 +419,12 @@ def _old_register(url: str, version: int, records: int, chained: bool) -> list[s
     return numbers, previous
 
 
-def test_an_old_register_gets_its_chain_when_migrated(register_url):
+def test_an_old_register_gets_its_chain_when_migrated(register_url, monkeypatch):
     """A genuine version-2 register (no chain): migration 3 chains its records, 4 keeps
     that chain value for value and continues it."""
+    # a year between calibrations with nothing issued in between: past the 90 days an issue
+    # may follow the last record by default (reg72 #3), said for these issues
+    monkeypatch.setenv("ANGLEBENCH_REGISTER_MAX_DAYS", "0")
     numbers, head = _old_register(register_url, 2, 3, chained=False)
     with Register(register_url) as reg:
         assert reg.version == schema.LATEST and reg.problems == [] and reg.find_head(head) == (3, head)
@@ -838,10 +844,13 @@ def _tamper_free_insert(register, number: str) -> None:
                      .values(number=number))
 
 
-def test_history_and_due_date_of_a_serial_typed_another_way_are_the_items(register):
+def test_history_and_due_date_of_a_serial_typed_another_way_are_the_items(register, monkeypatch):
     """#63 regkeys: "AB-10 5" and "ab105" are one item at issue (same_serial), but history()
     and due_date() matched the serial exactly: each spelling saw its own certificates only,
     and the due date followed the older calibration."""
+    # a year between calibrations with nothing issued in between: past the 90 days an issue
+    # may follow the last record by default (reg72 #3), said for these issues
+    monkeypatch.setenv("ANGLEBENCH_REGISTER_MAX_DAYS", "0")
     first = CertificateMetadata(**{**META.to_dict(), "standards": (), "item_serial": "AB-10 5",
                                    "calibration_date": "2026-11-20"})
     a, _ = register.issue(request(first, {"p": 1.0}), render)

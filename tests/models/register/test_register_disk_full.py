@@ -78,3 +78,37 @@ def test_sqlites_disk_full_on_an_issue_is_said_in_words(capsys):
         sa.event.remove(register.engine, "connect", no_room)
         register.engine.dispose()
         assert _state(register) == before
+
+
+@pytest.mark.parametrize(("free", "said"), [
+    (0, "the disk is full at {path}: nothing was recorded; the register is unchanged"),
+    (10 << 30, "disk I/O error")])
+def test_sqlites_io_error_on_a_full_disk_is_said_as_a_full_disk(monkeypatch, free, said):
+    """reg72 #7: on a full tmpfs SQLite says "disk I/O error" (SQLITE_IOERR), not
+    SQLITE_FULL: with no room left in the register's folder it is the full disk's words;
+    with room, the I/O error is said as it is."""
+    import shutil
+    import sqlite3
+    from collections import namedtuple
+
+    with Register(register_url()) as register:
+        number = _issued(register)[0]
+        before = _state(register)
+    path = register_url().split("///", 1)[1]
+    kept = Register._set_state
+
+    def failing(self, conn, records, head):
+        kept(self, conn, records, head)
+        error = sqlite3.OperationalError("disk I/O error")
+        error.sqlite_errorname = "SQLITE_IOERR_WRITE"
+        raise sa.exc.OperationalError("UPDATE register_state …", {}, error)
+
+    usage = namedtuple("usage", "total used free")
+    monkeypatch.setattr(Register, "_set_state", failing)
+    monkeypatch.setattr(shutil, "disk_usage", lambda _path: usage(1 << 30, 1 << 30, free))
+    with Register(register_url()) as register:
+        with pytest.raises(RegisterError) as refused:
+            register.withdraw(number, "wrong item")
+        assert said.format(path=path) in str(refused.value)
+        monkeypatch.setattr(Register, "_set_state", kept)
+        assert _state(register) == before

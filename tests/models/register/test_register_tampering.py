@@ -337,7 +337,7 @@ def test_the_issuing_user_and_approver_are_chained(issued):
     with _open(url) as register:
         record = register.get(numbers[0])
         assert record.approver == "Dr. Li" and record.os_user is not None
-        assert record.chain_format == 4 and record.seq == 1  # every record since schema 6
+        assert record.chain_format == 5 and record.seq == 1  # every record since 0.8.21
     sql(url, "UPDATE certificates SET approver = 'Someone' WHERE number = :n", n=numbers[0])
     assert any(f"record {numbers[0]}: the hash chain is broken" in p for p in found(url))
 
@@ -438,14 +438,22 @@ def test_a_record_forged_after_the_last_genuine_one_is_found_with_the_labs_key(r
         register.set_interval("RX-1", 365)
         assert all(r.signature and len(r.signature) == 64 for r in genuine)
         assert register.audit(pdfs=True) == []
-    with _open(register_url) as intruder:  # AngleBench without the key: chain and state fine
+    with _open(register_url) as intruder, pytest.raises(  # without the key: refused (reg72)
+            RegisterError, match="ANGLEBENCH_REGISTER_KEY is not set"):
+        intruder.issue(IssueRequest("polygon", META, PROJECT), render)
+    with _open(register_url) as intruder, pytest.MonkeyPatch.context() as patch:
+        # an AngleBench that does not refuse (0.8.20, or one changed): chain and state fine
+        patch.setattr(Register, "_refuse_without_key", lambda self, conn: None)
         forged, _ = intruder.issue(IssueRequest("polygon", META, PROJECT), render)
         assert intruder.problems == [] and intruder.audit() == []
     with Register(register_url, timezone="UTC", key_file=str(key)) as register:
-        assert [str(p) for p in register.problems] == [
+        said = [str(p) for p in register.problems]
+        assert said[0] == (
             f"record {forged.number}: not signed with the laboratory's key (the last record "
             "and every one since the first signed are): added outside AngleBench, or issued "
-            "without the key"]
+            "without the key")
+        # and the state it left is not the key's (reg72 #1)
+        assert len(said) == 2 and "does not carry the laboratory key's signature" in said[1]
     sql(register_url, "UPDATE certificates SET signature = :s WHERE number = :n",
         s=genuine[1].signature, n=forged.number)  # a genuine signature copied
     with Register(register_url, timezone="UTC", key_file=str(key)) as register:
