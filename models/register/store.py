@@ -336,12 +336,16 @@ def _os_user() -> str:
 #: issue may be dated (0: no limit)
 MAX_DAYS_ENV = "ANGLEBENCH_REGISTER_MAX_DAYS"
 #: its value when it is not set
-MAX_DAYS_DEFAULT = 90
+#: 366: a clock a year ahead (the year typed wrong) is found unless the last record is a day
+#: old, while a lab that calibrates once a year issues without a setting (a 90-day default
+#: refused a year between calibrations with nothing in between, and the window has no
+#: environment to set: the technician would be stopped at a dialog)
+MAX_DAYS_DEFAULT = 366
 
 
 def max_days_after_last() -> int:
     """How many days after the register's last record a certificate may be issued before
-    the clock is doubted (``ANGLEBENCH_REGISTER_MAX_DAYS``; default 90; 0: no limit).
+    the clock is doubted (``ANGLEBENCH_REGISTER_MAX_DAYS``; default 366; 0: no limit).
     RegisterError when the setting is not a whole number of days."""
     import os
 

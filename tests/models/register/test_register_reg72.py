@@ -206,16 +206,24 @@ def test_an_issue_dated_far_after_the_last_record_is_refused_unless_set(register
         with pytest.raises(RegisterError, match=r"395 days after the register's last record"
                                                 r".*ANGLEBENCH_REGISTER_MAX_DAYS=396"):
             register.issue(IssueRequest("polygon", META, PROJECT), render)
-        register.clock = lambda: ISSUED + dt.timedelta(days=60)  # within the 90 days
+        register.clock = lambda: ISSUED + dt.timedelta(days=60)  # within the 366 days
         second = register.issue(IssueRequest("polygon", META, PROJECT), render)[0]
         assert second.issued_at.startswith("2027-01-23")
-        register.clock = lambda: ISSUED + dt.timedelta(days=400)
+        register.clock = lambda: ISSUED + dt.timedelta(days=460)  # 400 days after the last
         monkeypatch.setenv("ANGLEBENCH_REGISTER_MAX_DAYS", "400")  # said for this issue
         register.issue(IssueRequest("polygon", META, PROJECT), render)
         monkeypatch.setenv("ANGLEBENCH_REGISTER_MAX_DAYS", "soon")
         with pytest.raises(RegisterError, match="a whole number of days"):
             register.issue(IssueRequest("polygon", META, PROJECT), render)
-        assert len(register.list()) == 3
+        # by default a year between calibrations with nothing in between is issued (a lab
+        # that calibrates once a year), a year and two days is not
+        monkeypatch.delenv("ANGLEBENCH_REGISTER_MAX_DAYS")
+        register.clock = lambda: ISSUED + dt.timedelta(days=460 + 365)
+        register.issue(IssueRequest("polygon", META, PROJECT), render)
+        register.clock = lambda: ISSUED + dt.timedelta(days=460 + 365 + 367)
+        with pytest.raises(RegisterError, match=r"367 days after"):
+            register.issue(IssueRequest("polygon", META, PROJECT), render)
+        assert len(register.list()) == 4
 
 
 #: a register as AngleBench 0.8.20 left it, made by that version's own Register (PYTHONPATH
