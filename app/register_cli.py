@@ -52,6 +52,7 @@ from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, langua
 from app.command_line import say as _say
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered
 from models.project.atomic_write import write_bytes_atomic
+from models.project.file_kind import file_kind as kind_of_bytes
 from models.project.output_guard import (
     OutputRefused,
     check_outputs,
@@ -470,23 +471,16 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
     return 1 if failed else 0
 
 
+#: the register's names for what models.project.file_kind finds: a results file is an XLSX
+#: or a CSV, a DCC an XML document
+_REGISTER_KIND = {"pdf": "pdf", "zip": "xlsx", "xml": "dcc", "text": "csv"}
+
+
 def file_kind(data: bytes) -> str:
     """What a file is by its content, not its name (reg72 #6: the same bytes named .tmp,
     .dcc or .xlsx were "NOT in the register"): "pdf", "dcc" (XML), "xlsx" (a ZIP), "csv"
     (other text) or "" (none of them)."""
-    head = data[:4096].lstrip(b"\xef\xbb\xbf \t\r\n")
-    if b"%PDF" in data[:1024]:
-        return "pdf"
-    if head.startswith(b"PK\x03\x04"):
-        return "xlsx"
-    if head.startswith(b"<") and (b"digitalCalibrationCertificate" in data[:8192]
-                                  or head.startswith(b"<?xml")):
-        return "dcc"
-    try:
-        data[:4096].decode("utf-8")
-    except UnicodeDecodeError:
-        return ""
-    return "csv" if data.strip() else ""
+    return _REGISTER_KIND.get(kind_of_bytes(data), "")
 
 
 def _unfinished_write(path: str) -> bool:

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from models.messages import QT_TR_NOOP, message
+from models.project.file_kind import file_kind
 
 __all__ = ["OutputRefused", "Protected", "check_output", "check_outputs", "input_files",
            "open_project", "refuse_database", "refuse_other_kind", "refuse_other_kinds",
@@ -166,24 +167,22 @@ def refuse_database(path: str | os.PathLike[str]) -> None:
             "another name"), path=os.fspath(path)))
 
 
-#: what an output of each flag writes, by the first bytes of such a file: a file that exists
+#: what an output of each flag writes (models.project.file_kind's names): a file that exists
 #: under that name and holds something else is not replaced (thbias2's run:
 #: ``--certificate certificate_positioning.json`` wrote a PDF over a lab's metadata JSON,
 #: no input of that run, without a word). Flags that write text (a CSV, a table) are not
 #: judged: any text may be an earlier one of them.
-_KIND_OF_FLAG: dict[str, tuple[str, tuple[bytes, ...]]] = {
-    "--certificate": (QT_TR_NOOP("a PDF"), (b"%PDF",)),
-    "--pdf": (QT_TR_NOOP("a PDF"), (b"%PDF",)),
-    "--dcc": (QT_TR_NOOP("an XML document"), (b"<", b"\xef\xbb\xbf<")),
-    "OUT.zip": (QT_TR_NOOP("a ZIP archive"), (b"PK\x03\x04", b"PK\x05\x06")),
+_KIND_OF_FLAG: dict[str, tuple[str, str]] = {
+    "--certificate": (QT_TR_NOOP("a PDF"), "pdf"),
+    "--pdf": (QT_TR_NOOP("a PDF"), "pdf"),
+    "--dcc": (QT_TR_NOOP("an XML document"), "xml"),
+    "OUT.zip": (QT_TR_NOOP("a ZIP archive"), "zip"),
 }
-#: an XLSX results file is a ZIP archive
-_XLSX_HEADS = (b"PK\x03\x04", b"PK\x05\x06")
 
 
-def _kind_expected(path: str | os.PathLike[str], flag: str) -> tuple[str, tuple[bytes, ...]] | None:
+def _kind_expected(path: str | os.PathLike[str], flag: str) -> tuple[str, str] | None:
     if flag == "--results" and os.fspath(path).lower().endswith(".xlsx"):
-        return QT_TR_NOOP("an XLSX workbook"), _XLSX_HEADS
+        return QT_TR_NOOP("an XLSX workbook"), "zip"
     return _KIND_OF_FLAG.get(flag)
 
 
@@ -191,20 +190,19 @@ def refuse_other_kind(path: str | os.PathLike[str], flag: str) -> None:
     """Raise OutputRefused when ``path`` exists, is not empty and holds something other than
     what ``flag`` writes (a certificate named over a JSON, a spreadsheet or a readings file):
     that file is someone's work, and an output of another kind would replace it with no
-    way back. An earlier output of the same kind is replaced as before (leading white space
-    before an XML document's ``<`` is allowed)."""
+    way back. An earlier output of the same kind is replaced as before."""
     expected = _kind_expected(path, flag)
     if expected is None or not _regular_or_absent(path):
         return
     try:
         with open(path, "rb") as handle:
-            head = handle.read(64)
+            head = handle.read(4096)
     except OSError:  # absent (or unreadable: refuse_unwritable says why)
         return
-    if not head:
+    if not head.strip():
         return
-    kind, heads = expected
-    if any(head.lstrip().startswith(h) for h in heads):
+    kind, wanted = expected
+    if file_kind(head) == wanted:
         return
     raise OutputRefused(message(QT_TR_NOOP(
         "{flag} {out} exists and is not {kind}: it would be replaced with no way back; "
