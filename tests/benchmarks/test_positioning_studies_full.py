@@ -9,6 +9,7 @@ from __future__ import annotations
 import pytest
 
 from tests.models.positioning import test_figure_intervals as figure_intervals
+from tests.models.positioning import test_readings_as_measured as readings_as_measured
 from tests.models.positioning import test_reference_error_envelope as reference_envelope
 
 
@@ -33,3 +34,9 @@ def test_b_holds_one_target_standing_three_uncertainties_above_an_even_reversal(
 def test_e_interval_is_not_wider_than_needed_on_a_spike_in_scatter():
     """40 tests (seed 12): at most 4 missed, at most 1.7 times the width needed."""
     figure_intervals.check_e_not_wider_than_needed(figure_intervals.FULL_TESTS, 4)
+
+
+def test_a_reference_stated_for_any_angle_widens_e_by_its_u_once():
+    """30 tests (seed 12): at least 24 covered, the widths' ratio 0.5–0.75."""
+    readings_as_measured.check_reference_per_angle_widens_once(
+        readings_as_measured.FULL_ANGLE_TESTS, 24)
