@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 
 from tests.models.theodolite import test_theodolite_circle_per_angle as circle_per_angle
+from tests.models.theodolite import test_theodolite_figures as figures
 from tests.models.theodolite import test_theodolite_pass_means as pass_means
 
 
@@ -39,3 +40,10 @@ def test_a_smooth_circle_error_is_held_by_the_decided_interval(capsys, tmp_path)
     the value's spread (forward only: the suite runs its whole study)."""
     pass_means.check_smooth_circle_held(capsys, tmp_path, "both",
                                         pass_means.SMOOTH_RUNS["full"], 0.01)
+
+
+@pytest.mark.parametrize("world", ["pointing", "circle"])
+def test_the_iso_230_2_figures_intervals_cover_at_the_probability_printed(
+        capsys, tmp_path, world):
+    """30 runs (seeds 2034, 2032): every figure's coverage at the 1 % floor."""
+    figures.check_figures_cover(capsys, tmp_path, world, figures.FIGURES_RUNS["full"], 0.01)
