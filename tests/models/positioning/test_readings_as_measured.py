@@ -237,8 +237,10 @@ def check_reference_per_angle_widens_once(tests: int, least: int) -> None:
         "laser", uncertainty=2.0 * u, basis="U95", applies_to="angle"),))
     per_reading = CertificateMetadata(standards=(ReferenceStandard(
         "laser", uncertainty=2.0 * u, basis="U95"),))
+    first_angle, first_up, first_down = _true_means(12, 1.0, 0.1)
     assert [c.per_angle for c in positioning_budget(
-        _analysed(_typed_test(np.random.default_rng(0), *_true_means(12, 1.0, 0.1), 0.3, 0.01)),
+        _analysed(_typed_test(np.random.default_rng(0), first_angle, first_up, first_down,
+                              0.3, 0.01)),
         per_angle).components if c.evaluation == "B"] == [True]
     rng = np.random.default_rng(12)
     angle = np.arange(12) * 30.0
