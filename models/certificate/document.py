@@ -430,9 +430,9 @@ def table_decimals(expanded, fallback: int = 2) -> int:
 def rounded_cells(values, expanded: float, reference_decimals: int,
                   signed: bool = True) -> tuple[list[str], str]:
     """A point's figures and its U as GUM 7.2.6 asks: U to two significant digits at most,
-    rounded up, each figure to the same decimal; beside one figure (``values`` of one) U as
-    printed beside it, its ± U holding the computed interval
-    (:func:`models.uncertainty.rounding.stated_pair`, the U its decision uses: issue 39);
+    rounded up, each figure to the same decimal, the same U beside one figure or several
+    (:func:`models.uncertainty.rounding.stated_pair`, the U its decision uses: issue 39, and
+    every other document gives: assessment 72 H1);
     U = 0 (a reference point, zero by definition) printed so, its figures to
     ``reference_decimals``."""
     if expanded == 0 or not math.isfinite(expanded):

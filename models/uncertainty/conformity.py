@@ -595,12 +595,12 @@ def printed_verdict(value: float, minus: float, plus: float, t: float, rule: str
                     low: float | None = None) -> str:
     """The decision taken on the figures as printed (issue 39, "conformity you can defend"):
     the printed ``value`` (to the nearest digit of ``d`` decimals), its printed U₋ ``minus``
-    and U₊ ``plus`` (rounded up, so that value ± U is the printed interval, whose ends are
-    rounded outward from the computed ones: models.uncertainty.rounding.stated_interval) and
-    T. A reader who redoes the decision from the printed value, U and T gets this verdict.
-    The guard bands are never narrower than the printed U, and no narrower than the computed
-    interval's ends: a pass needs the printed upper end value + U₊ ≤ T (the computed end then
-    is too), a fail the printed lower end value − U₋ (``low``, where it is held at 0) > T.
+    and U₊ ``plus`` (each the computed U rounded up, value ± U the printed interval:
+    models.uncertainty.rounding.stated_interval) and T. A reader who redoes the decision
+    from the printed value, U and T gets this verdict.
+    The guard bands are never narrower than the printed U: a pass needs the printed upper end
+    value + U₊ ≤ T (the computed end then within half a digit of it), a fail the printed lower
+    end value − U₋ (``low``, where it is held at 0) > T.
     Where the value alone is compared with T (simple acceptance; conditional pass against
     conditional fail) it is the value as printed, within half a digit of U's last of the
     computed one. Compared on the printed grid (to 1e-9 of a digit)."""
@@ -830,9 +830,9 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
 
 def _point_figures(x: float, w: float, q: str) -> dict[str, PrintedFigure]:
     """The deciding point's |e| and U as the results table prints them ("10.3″ ± 3.1″"): the
-    value to the nearest, U the printed value to its interval's printed ends, never less than
-    U rounded up (models.uncertainty.rounding.stated_interval; until 0.8.18 U to the nearest,
-    "U = 3.0″" beside the table's "± 3.1″" for a U of 3.04″)."""
+    value to the nearest, U rounded up (models.uncertainty.rounding.stated_interval; until
+    0.8.18 U to the nearest, "U = 3.0″" beside the table's "± 3.1″" for a U of 3.04″; until
+    0.8.20 re-measured from the rounded value, 2.6″ beside the CMC's 2.5″: assessment 72 H1)."""
     shown = printed_interval_figures(x, w, w, q)
     wider = max(("lower", "upper"), key=lambda part: shown[part].shown)
     return {"e": shown["value"], "u": shown[wider]}
