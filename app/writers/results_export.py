@@ -459,11 +459,21 @@ def _cell(value: object) -> object:
     return neutralise(value)
 
 
+#: the *Certificate* sheet's texts of the decision, kept in the unit it was made in (the
+#: certificate's) whatever the sheet's unit: their value, U₋, U₊, T and zones are the figures
+#: the verdict was decided on as printed, and re-rounded in another unit they could give
+#: another verdict (assessment 72 H2: "4.6 µrad, U = −4.6/+2.4 µrad … conditional pass
+#: within 7.01 µrad", which those figures pass; zones 4.58 µrad beside 7.01 − 2.4)
+DECISION_TEXTS = frozenset({"Conformity", "Zones", "No statement of conformity because"})
+
+
 def _metadata_in_unit(rows: list[tuple[str, object]], unit: AngleUnit,
                       words: _Words) -> list[tuple[str, object]]:
     """The *Certificate* sheet's rows with their angle figures in ``unit``, said in the
     certificate's language (after the conversion: a message's figures are converted from
-    the numbers it keeps)."""
+    the numbers it keeps); the decision's texts (:data:`DECISION_TEXTS`) in the unit the
+    decision was made in, so that the sheet states one verdict, the certificate's, on
+    figures that give it."""
     out: list[tuple[str, object]] = []
     for key, value in rows:
         header, factor = words.label(key, unit)
@@ -472,7 +482,7 @@ def _metadata_in_unit(rows: list[tuple[str, object]], unit: AngleUnit,
             # of 3″ is 14.5444104332861 µrad, not …08 or 14.50000000000001: assessment 70 M4)
             value = float(f"{value * factor:.15g}") if factor != 1.0 else value
         elif isinstance(value, str):
-            value = words.text(text_in_unit(value, unit))
+            value = words.text(value if key in DECISION_TEXTS else text_in_unit(value, unit))
         out.append((header, value))
     return out
 
