@@ -477,7 +477,10 @@ def _metadata_in_unit(rows: list[tuple[str, object]], unit: AngleUnit,
     out: list[tuple[str, object]] = []
     for key, value in rows:
         header, factor = words.label(key, unit)
-        if isinstance(value, int | float) and not isinstance(value, bool):
+        stated = getattr(value, "stated", None)  # a tolerance as the customer stated it
+        if stated is not None and factor != 1.0 and stated[1] == unit.key:
+            value = float(stated[0])  # in its own unit: as stated, not its conversion back
+        elif isinstance(value, int | float) and not isinstance(value, bool):
             # a converted figure without the binary noise of the multiplication (a tolerance
             # of 3″ is 14.5444104332861 µrad, not …08 or 14.50000000000001: assessment 70 M4)
             value = float(f"{value * factor:.15g}") if factor != 1.0 else value

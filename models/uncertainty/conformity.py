@@ -43,6 +43,7 @@ from models.uncertainty.lab_scope import held_to_cmc
 from models.uncertainty.printed_figure import (
     PrintedFigure,
     StatedLimit,
+    converted_limit,
     printed,
     printed_interval_figures,
     rounded_to,
@@ -725,7 +726,9 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     q = budget.unit.written()
     if isinstance(tolerance, Quantity):
         # judged in the errors' unit, quoted as stated (assessment 70 M4)
-        tolerance = StatedLimit(float(f"{float(tolerance.in_unit(budget.unit)):.15g}"),
+        # (decided with its conversion as printed beside it: assessment 72 M2)
+        tolerance = StatedLimit(converted_limit(float(tolerance.value), tolerance.unit.key,
+                                                budget.unit.key),
                                 (float(tolerance.value), tolerance.unit.key))
     what = message(what) if not hasattr(what, "template") else what
     rule_text = message(DECISION_RULES[rule])
