@@ -988,14 +988,12 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     common = {**common, "probability": float(mc.probability), "raised_to_cmc": raised}
     return Conformity(verdict, text, rule_text, quantity_text, x, upper,
                       "" if verdict == "not assessed" else
-                      # the zones are thresholds on a result near T, where no end is held
-                      # at 0: the statement's printed U₊ and U₋ (the CMC's where it raised
-                      # them); U₋ rounded up from the half-width where the statement's is held
-                      # at 0 (a value below U₋ is below T, so the rejection zone is not
-                      # reached)
-                      _zones(t, shown["upper"], shown["lower"] if x - lower >= 0.0 else
-                             printed(lower, q, decimals=places, rounding="up"), rule,
-                             places, q), mc, lower,
+                      # the zones: the statement's printed U₊ and U₋ (the CMC's where it
+                      # raised them), U₋ the statement's where its lower end is held at 0 too
+                      # (a value below its half-width is below T, so the rejection zone is
+                      # not reached; until 0.8.20 the half-width rounded up there, "U₋ =
+                      # 2.0″" beside the statement's "U = −0.9″/+2.1″": assessment 72 M4)
+                      _zones(t, shown["upper"], shown["lower"], rule, places, q), mc, lower,
                       reason=_withheld_text(reasons) if reasons else "",
                       conforming_probability=conforming,
                       decision_risk=_risk(verdict, conforming), **common)
