@@ -440,6 +440,15 @@ class _Words:
             return chinese
         return f"{chinese}\n{value}"
 
+    def verdict(self, value):
+        """The *Verdict* row's word: in Chinese as the certificate's statement says it
+        (:data:`~app.writers.certificate_pdf.wording.VERDICT_CHINESE`), above the English on
+        a bilingual one; any other (not assessed) as :meth:`text` says it."""
+        chinese = self._wording.VERDICT_CHINESE.get(str(value))
+        if chinese is None or self.language not in ("zh", "zh+en"):
+            return self.text(value)
+        return chinese if self.language == "zh" else f"{chinese}\n{value}"
+
     def cell(self, value):
         """A text cell of a table: in Chinese on a Chinese certificate, else as printed (a
         bilingual certificate's tables keep the English below their two-language headings)."""
@@ -485,7 +494,8 @@ def _metadata_in_unit(rows: list[tuple[str, object]], unit: AngleUnit,
             # of 3″ is 14.5444104332861 µrad, not …08 or 14.50000000000001: assessment 70 M4)
             value = float(f"{value * factor:.15g}") if factor != 1.0 else value
         elif isinstance(value, str):
-            value = words.text(value if key in DECISION_TEXTS else text_in_unit(value, unit))
+            value = (words.verdict(value) if key == "Verdict" else
+                     words.text(value if key in DECISION_TEXTS else text_in_unit(value, unit)))
         out.append((header, value))
     return out
 
