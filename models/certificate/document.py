@@ -205,6 +205,15 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
     rows.append((message(QT_TR_NOOP("U of the inputs evaluated only (k = {k}): a lower bound, "
                                     "not U") if withheld else QT_TR_NOOP("Expanded U (k = {k})"),
                          k=f"{k:.2f}"), "", "", "", "", "", "", _fmt(k * uc), "", ""))
+    stated_u = float(budget.expanded[i]) if budget.points else math.nan
+    if not withheld and math.isfinite(stated_u) and stated_u > 0 and not bool(
+            budget.below_floor[i]):
+        # the U the certificate states there: the line above rounded up to two significant
+        # digits (GUM 7.2.6), so that the table ends on the figure printed (assessment 72
+        # L6: "Expanded U (k = 2.00) 1.436" beside "U = 1.5″")
+        d = uncertainty_decimals(stated_u)
+        rows.append((message(QT_TR_NOOP("U as stated, rounded up (GUM 7.2.6)")), "", "", "", "",
+                     "", "", f"{rounded_to(stated_u, d, 'up'):.{d}f}", "", ""))
     if not withheld and budget.points and bool(budget.below_floor[i]):
         # the U stated there is the laboratory's CMC (ILAC-P14 5.4): the table's last line is
         # the U the certificate states, not the smaller one the inputs give

@@ -1,0 +1,51 @@
+"""The results workbook without the binary noise of a computation (assessment 72 L6): no
+*Results* cell carries more decimals than the models carry (1e-9: the polygon sample's raw
+error −0.26500000008″ from readings typed to 0.005″ is −0.265), and the *Uncertainty
+budget* ends on the U the certificate states, rounded up to two significant digits
+(GUM 7.2.6), beside its unrounded "Expanded U" (0.8.20 ended on 1.436 beside U = 1.5″)."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import math
+from decimal import ROUND_CEILING, Decimal
+from pathlib import Path
+
+import openpyxl
+
+from app.main import main
+
+SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
+
+
+def _book(tmp_path: Path, workbench: str) -> openpyxl.Workbook:
+    book = tmp_path / f"{workbench}.xlsx"
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+        assert main(["analyze", workbench, str(SAMPLES / f"{workbench}_sample.csv"),
+                     "--results", str(book)]) == 0
+    return openpyxl.load_workbook(book)
+
+
+def test_no_results_cell_beyond_the_models_digits(tmp_path):
+    sheet = _book(tmp_path, "polygon")["Results"]
+    for row in sheet.iter_rows(min_row=2, values_only=True):
+        for cell in row:
+            if isinstance(cell, float) and math.isfinite(cell):
+                assert -Decimal(repr(cell)).as_tuple().exponent <= 9, row
+
+
+def test_the_budget_ends_on_the_u_stated(tmp_path):
+    book = _book(tmp_path, "theodolite")
+    budget = [row for row in book["Uncertainty budget"].iter_rows(values_only=True) if row]
+    names = [str(row[0]) for row in budget]
+    expanded = next(row for row in budget if str(row[0]).startswith("Expanded U"))
+    stated = next(row for row in budget if str(row[0]).startswith("U as stated"))
+    assert names.index(str(stated[0])) == names.index(str(expanded[0])) + 1
+    u = Decimal(repr(float(expanded[7])))
+    d = 1 - u.adjusted()  # two significant digits, rounded up
+    assert Decimal(str(stated[7])) == u.quantize(Decimal(1).scaleb(-d), ROUND_CEILING)
+    certificate = {row[0]: row[1] for row in book["Certificate"].iter_rows(values_only=True)}
+    largest = next(v for k, v in certificate.items() if str(k).startswith("Expanded uncertainty"))
+    assert Decimal(str(stated[7])) == Decimal(repr(largest)).quantize(
+        Decimal(1).scaleb(-d), ROUND_CEILING)
