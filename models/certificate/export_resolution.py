@@ -16,8 +16,7 @@ No printed figure is changed: rounded to the printed decimal (half up, half to e
 spreadsheet's ROUND or Python does), the sheet's figure is the certificate's. A figure
 that three more decimals would put exactly half-way between two printed steps (−0.5949996
 as −0.595, which reads as −0.60 where −0.59 is printed) is written with three more
-decimals again (−0.5949996), until it is not, or until :data:`MODEL_DECIMALS` (a figure
-half-way to the digits the model carries is written so: −0.265, not −0.26500000008)."""
+decimals again (−0.5949996), until it is not."""
 
 from __future__ import annotations
 
@@ -36,10 +35,6 @@ __all__ = ["EXTRA_DECIMALS", "OTHER_SIGNIFICANT", "UNCERTAINTY_PREFIX", "printed
 EXTRA_DECIMALS = 3
 #: significant digits of a column not in the errors' unit (as the CSV's ``%.10g`` was)
 OTHER_SIGNIFICANT = 10
-#: the decimals the models carry a figure to at most: beyond them a digit is the binary noise
-#: of a computation (a polygon's raw −0.26500000008″ from readings typed to 0.005″), which no
-#: sheet writes (assessment 72 L6)
-MODEL_DECIMALS = 9
 #: how an expanded uncertainty's column is named (``expanded_uncertainty_arcsec``, …)
 UNCERTAINTY_PREFIX = "expanded_uncertainty"
 
@@ -77,10 +72,8 @@ def _unambiguous(value: float, printed: tuple[int, int]) -> float:
     coarsest, finest = printed
     decimals = finest + EXTRA_DECIMALS
     while True:
-        if decimals >= MODEL_DECIMALS:  # a half-way figure to the model's digits is one
-            return round(value, max(MODEL_DECIMALS, finest + EXTRA_DECIMALS))
         rounded = round(value, decimals)
-        if rounded == value:
+        if decimals >= 15 or rounded == value:
             return rounded
         text = repr(rounded)
         if "e" not in text and not text.endswith("5"):
