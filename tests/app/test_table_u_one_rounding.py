@@ -3,7 +3,8 @@ prints beside a point is that point's U in the JSON rounded up to two significan
 (GUM 7.2.6) — the figure the XLSX, the DCC, the "largest U" sentence, the CMC remark and
 the budget give — not a U re-measured from the rounded value to the computed interval's end
 (0.8.20 printed 0.43″ at polygon positions 8 and 9 beside "U = 0.42″, the largest", 2.6″
-in 25 of 26 positioning cells beside "U = 2.5″, the CMC").
+in 25 of 26 positioning cells beside "U = 2.5″, the CMC"). The theodolite's table prints
+one U, the largest, rounded up, as before.
 
 A decision on a point uses that same printed U: the positioning sample with a CMC of 2.5″
 and T = ±12.85″ (guarded) prints |e| = 10.3″ and U = 2.5″ at target 60° ↓, the XLSX's
@@ -90,6 +91,22 @@ def test_crosscal_table_u_is_the_json_u_rounded_up(tmp_path):
         assert shown == _rounded_up(u[face - 1]), (face, shown, u[face - 1])
         if u1[face - 1] > 0:
             assert shown1 == _rounded_up(u1[face - 1]), (face, shown1, u1[face - 1])
+
+
+FRINGE = ["--phase-reference-u", "0.01", "--adc-lsb-mv", "0.3", "--adc-offset-u-mv", "0.5",
+          "--adc-gain-u-pct", "0.05", "--adc-linearity-mv", "0.5"]
+
+
+def test_fringe_table_u_is_the_json_u_rounded_up(tmp_path):
+    """The fringe sample with every input stated (0.8.20: 134 of its 512 rows printed a U
+    one digit above the JSON's rounded up, 0.029″ beside "U = 0.028″, the largest")."""
+    details = json.loads((SAMPLES / "certificate_fringe.json").read_text(encoding="utf-8"))
+    lines, data = _issue(tmp_path, "fringe", FRINGE, details)
+    u = data["expanded_uncertainty_raw_error_arcsec"]
+    row = re.compile(rf"^\s*(\d+)\s+\d+\.\d+\s+{NUMBER}\s+{NUMBER}\s+{NUMBER}\s+(\d+\.\d+)\s*$")
+    printed = {int(m[1]): m[2] for m in map(row.match, lines) if m}
+    assert len(printed) == len(u), len(printed)
+    assert printed == {i + 1: _rounded_up(x) for i, x in enumerate(u)}
 
 
 POSITIONING = ["--misalignment-u", "0.2", "--reference-resolution", "0.1",
