@@ -212,7 +212,9 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
         # digits (GUM 7.2.6), so that the table ends on the figure printed (assessment 72
         # L6: "Expanded U (k = 2.00) 1.436" beside "U = 1.5″")
         d = uncertainty_decimals(stated_u)
-        rows.append((message(QT_TR_NOOP("U as stated, rounded up (GUM 7.2.6)")), "", "", "", "",
+        # (named as the statistics name the U stated, rounded up there too)
+        rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
+                             p=f"{100 * budget.probability:.2f}"), "", "", "", "",
                      "", "", f"{rounded_to(stated_u, d, 'up'):.{d}f}", "", ""))
     if not withheld and budget.points and bool(budget.below_floor[i]):
         # the U stated there is the laboratory's CMC (ILAC-P14 5.4): the table's last line is
