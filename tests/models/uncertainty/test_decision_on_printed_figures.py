@@ -228,8 +228,11 @@ def _check_points(errors, expanded, t, rule, unit):
     assert (x, u) in [(abs(v), w) for v, w in cells]
     assert _ilac(rule, x, u, u, t) == c.verdict
     assert _zone_verdict(c.zones, x, rule) == c.verdict, (c.zones, x)
+    # the printed U is the computed U rounded up and |e| the nearest (assessment 72 H1), so a
+    # pass holds on the computed figures to within half a printed digit
     if c.verdict == "pass" and rule != "simple":
-        assert np.all(np.abs(errors) + expanded <= float(t) * (1 + 1e-12))
+        half = float(Decimal(1).scaleb(-len(str(x).partition(".")[2]))) / 2
+        assert np.all(np.abs(errors) + expanded <= float(t) + half * (1 + 1e-9))
 
 
 @settings(max_examples=300, deadline=None)
