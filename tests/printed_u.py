@@ -1,13 +1,13 @@
-"""A U as a certificate prints it beside its figure (issue 39), worked out here from its
-definition with decimals, for tests that read printed tables: U to two significant digits
-(GUM 7.2.6), the figure to the same decimal, rounded to the nearest; U the smallest figure
-on that grid that is at least U rounded up and with which the printed figure ± U reaches
-the computed interval [value − U, value + U] (each end rounded outward)."""
+"""A U as a certificate prints it beside its figure (issue 39, assessment 72 H1), worked out
+here from its definition with decimals, for tests that read printed tables: U rounded up to
+two significant digits (GUM 7.2.6), the figure to the same decimal, rounded to the nearest;
+the same U as the JSON's rounded up, whatever the figure beside it (until 0.8.20 one digit
+more where the rounded figure ± U fell short of the computed interval's end)."""
 
 from __future__ import annotations
 
 import math
-from decimal import ROUND_CEILING, ROUND_FLOOR, ROUND_HALF_EVEN, Decimal
+from decimal import ROUND_CEILING, ROUND_HALF_EVEN, Decimal
 
 
 def two_significant(u: float) -> int:
@@ -29,9 +29,7 @@ def _grid(x: float, d: int, how) -> Decimal:
 
 
 def u_beside(value: float, u: float) -> str:
-    """The U printed beside ``value`` (its text, to the figure's decimal)."""
+    """The U printed beside ``value`` (its text, to U's decimal): U rounded up, the same
+    beside any value."""
     d = two_significant(u)
-    shown = Decimal(value).quantize(Decimal(1).scaleb(-d), ROUND_HALF_EVEN)
-    plus = _grid(value + u, d, ROUND_CEILING) - shown
-    minus = shown - _grid(value - u, d, ROUND_FLOOR)
-    return f"{max(_grid(u, d, ROUND_CEILING), plus, minus):.{d}f}"
+    return f"{_grid(u, d, ROUND_CEILING):.{d}f}"

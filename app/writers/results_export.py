@@ -440,6 +440,15 @@ class _Words:
             return chinese
         return f"{chinese}\n{value}"
 
+    def verdict(self, value):
+        """The *Verdict* row's word: in Chinese as the certificate's statement says it
+        (:data:`~app.writers.certificate_pdf.wording.VERDICT_CHINESE`), above the English on
+        a bilingual one; any other (not assessed) as :meth:`text` says it."""
+        chinese = self._wording.VERDICT_CHINESE.get(str(value))
+        if chinese is None or self.language not in ("zh", "zh+en"):
+            return self.text(value)
+        return chinese if self.language == "zh" else f"{chinese}\n{value}"
+
     def cell(self, value):
         """A text cell of a table: in Chinese on a Chinese certificate, else as printed (a
         bilingual certificate's tables keep the English below their two-language headings)."""
@@ -459,20 +468,34 @@ def _cell(value: object) -> object:
     return neutralise(value)
 
 
+#: the *Certificate* sheet's texts of the decision, kept in the unit it was made in (the
+#: certificate's) whatever the sheet's unit: their value, U₋, U₊, T and zones are the figures
+#: the verdict was decided on as printed, and re-rounded in another unit they could give
+#: another verdict (assessment 72 H2: "4.6 µrad, U = −4.6/+2.4 µrad … conditional pass
+#: within 7.01 µrad", which those figures pass; zones 4.58 µrad beside 7.01 − 2.4)
+DECISION_TEXTS = frozenset({"Conformity", "Zones", "No statement of conformity because"})
+
+
 def _metadata_in_unit(rows: list[tuple[str, object]], unit: AngleUnit,
                       words: _Words) -> list[tuple[str, object]]:
     """The *Certificate* sheet's rows with their angle figures in ``unit``, said in the
     certificate's language (after the conversion: a message's figures are converted from
-    the numbers it keeps)."""
+    the numbers it keeps); the decision's texts (:data:`DECISION_TEXTS`) in the unit the
+    decision was made in, so that the sheet states one verdict, the certificate's, on
+    figures that give it."""
     out: list[tuple[str, object]] = []
     for key, value in rows:
         header, factor = words.label(key, unit)
-        if isinstance(value, int | float) and not isinstance(value, bool):
+        stated = getattr(value, "stated", None)  # a tolerance as the customer stated it
+        if stated is not None and factor != 1.0 and stated[1] == unit.key:
+            value = float(stated[0])  # in its own unit: as stated, not its conversion back
+        elif isinstance(value, int | float) and not isinstance(value, bool):
             # a converted figure without the binary noise of the multiplication (a tolerance
             # of 3″ is 14.5444104332861 µrad, not …08 or 14.50000000000001: assessment 70 M4)
             value = float(f"{value * factor:.15g}") if factor != 1.0 else value
         elif isinstance(value, str):
-            value = words.text(text_in_unit(value, unit))
+            value = (words.verdict(value) if key == "Verdict" else
+                     words.text(value if key in DECISION_TEXTS else text_in_unit(value, unit)))
         out.append((header, value))
     return out
 

@@ -36,7 +36,7 @@ from models.messages import QT_TR_NOOP, Message, listed, message, separated
 from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
-from models.uncertainty.printed_figure import StatedLimit
+from models.uncertainty.printed_figure import StatedLimit, converted_limit
 from models.uncertainty.rounding import StatedNumber
 
 __all__ = ["Column", "Decision", "PointTable", "Statistics", "build_certificate",
@@ -198,6 +198,16 @@ class _FromDetails:
 FROM_DETAILS = _FromDetails()
 
 
+def _the_details(metadata: CertificateMetadata, budget: UncertaintyBudget, tol: float) -> bool:
+    """Whether a workbench's own tolerance ``tol`` (in the budget's unit) is the one its
+    details state, to a millionth (a grade's ±2″ stated as 0.5555556 mdeg)."""
+    try:
+        given = metadata.tolerance_in(unit_of(budget.unit).key)
+    except Exception:  # noqa: BLE001 - a tolerance of another kind is not this one
+        return False
+    return given is not None and math.isclose(float(given), float(tol), rel_tol=1e-6)
+
+
 def build_certificate(*, kind_key: str, kind_title: str, method: str,
                       metadata: CertificateMetadata, source_name: str, method_reference: str,
                       budget: UncertaintyBudget, parameters: Table, results: PointTable,
@@ -235,13 +245,20 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
     untraced = "" if more.get("untraceable") or not_stated else traceability_withheld(
         metadata, tuple(measurand_standards), tuple(more.get("stated_inputs", ())))
     withheld = separated([decision.withheld, untraced, expired], "; ")
-    # the details' tolerance as the customer stated it, for the texts (assessment 70 M4)
-    stated = (metadata.tolerance_quantity if isinstance(tolerance, _FromDetails) and
-              tol is not None else None)
+    # the details' tolerance as the customer stated it, for the texts (assessment 70 M4),
+    # where the workbench gives its own that is the details' too (the fringe's, the
+    # cross-calibration's, a polygon grade's the details agree with: assessment 72 M1),
+    # decided with its conversion as printed (M2)
+    stated = (metadata.tolerance_quantity if tol is not None and (
+        isinstance(tolerance, _FromDetails) or _the_details(metadata, budget, tol)) else None)
     if stated is not None and tol is not None:
-        # the number as typed (its decimals: the place ASTM E29 rounds a value to)
-        tol = StatedLimit(tol, (stated.value if isinstance(stated.value, StatedNumber) else
-                                float(stated.value), stated.unit.key))
+        # decided with its conversion as printed (M2); the number as typed (its decimals:
+        # the place ASTM E29 rounds a value to)
+        key = unit_of(budget.unit).key
+        tol = StatedLimit(converted_limit(float(stated.value), stated.unit.key, key),
+                          (stated.value if isinstance(stated.value, StatedNumber) else
+                           float(stated.value), stated.unit.key))
+        stated = None if not isinstance(tolerance, _FromDetails) else stated
     conformity = decide_conformity(decision.errors, decision.budget or budget,
                                    stated if stated is not None else tol,
                                    metadata.decision_rule, metadata.decision_quantity,

@@ -208,6 +208,17 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
     rows.append((message(QT_TR_NOOP("U of the inputs evaluated only (k = {k}): a lower bound, "
                                     "not U") if withheld else QT_TR_NOOP("Expanded U (k = {k})"),
                          k=f"{k:.2f}"), "", "", "", "", "", "", _fmt(k * uc), "", ""))
+    stated_u = float(budget.expanded[i]) if budget.points else math.nan
+    if not withheld and math.isfinite(stated_u) and stated_u > 0 and not bool(
+            budget.below_floor[i]):
+        # the U the certificate states there: the line above rounded up to two significant
+        # digits (GUM 7.2.6), so that the table ends on the figure printed (assessment 72
+        # L6: "Expanded U (k = 2.00) 1.436" beside "U = 1.5″")
+        d = uncertainty_decimals(stated_u)
+        # (named as the statistics name the U stated, rounded up there too)
+        rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
+                             p=f"{100 * budget.probability:.2f}"), "", "", "", "",
+                     "", "", f"{rounded_to(stated_u, d, 'up'):.{d}f}", "", ""))
     if not withheld and budget.points and bool(budget.below_floor[i]):
         # the U stated there is the laboratory's CMC (ILAC-P14 5.4): the table's last line is
         # the U the certificate states, not the smaller one the inputs give
@@ -433,9 +444,9 @@ def table_decimals(expanded, fallback: int = 2) -> int:
 def rounded_cells(values, expanded: float, reference_decimals: int,
                   signed: bool = True) -> tuple[list[str], str]:
     """A point's figures and its U as GUM 7.2.6 asks: U to two significant digits at most,
-    rounded up, each figure to the same decimal; beside one figure (``values`` of one) U as
-    printed beside it, its ± U holding the computed interval
-    (:func:`models.uncertainty.rounding.stated_pair`, the U its decision uses: issue 39);
+    rounded up, each figure to the same decimal, the same U beside one figure or several
+    (:func:`models.uncertainty.rounding.stated_pair`, the U its decision uses: issue 39, and
+    every other document gives: assessment 72 H1);
     U = 0 (a reference point, zero by definition) printed so, its figures to
     ``reference_decimals``."""
     if expanded == 0 or not math.isfinite(expanded):

@@ -8,7 +8,7 @@ title and statements say so, naming what is missing.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from models.messages import QT_TR_NOOP, message, separated
 
@@ -61,22 +61,11 @@ def traceability_withheld(metadata: CertificateMetadata, roles: tuple[str, ...],
     """Why no statement of conformity may be made while traceability is not established
     ("" when it is): a decision rule rests on the result's uncertainty (ISO/IEC 17025 7.1.3,
     7.8.6.1; ILAC-G8:09/2019), and a result not traceable to the reference has no U that
-    relates it to the specification. With no standard listed at all (a draft, whose title
-    :func:`traceability_gaps` leaves as it is) and ``roles`` named, U holds no standard's
-    calibration, whatever inputs are typed in the settings: no statement either (audit 71
-    finding 2; the cross-calibration names no roles and keeps its verdicts). An expired
+    relates it to the specification. With no standard listed at all and ``roles`` named, U
+    holds no standard's calibration, whatever inputs are typed in the settings: no statement
+    either (audit 71 finding 2; the cross-calibration names no roles and keeps its verdicts). An expired
     standard is left to :func:`expired_withheld` (its own reason)."""
-    gaps: list[Any]
-    if not metadata.standards:
-        if not roles:
-            return ""
-        gaps = [message(QT_TR_NOOP(
-            "the standards that carry the measurand are {roles}, each to be listed with a "
-            "calibration certificate and a stated uncertainty; none is listed, so the "
-            "uncertainty holds no standard's calibration"),
-            roles=separated((message(r) for r in roles), "; "))]
-    else:
-        gaps = _gaps(metadata, roles, stated_inputs, expired=False)
+    gaps = _gaps(metadata, roles, stated_inputs, expired=False)
     if not gaps:
         return ""
     return message(QT_TR_NOOP("metrological traceability of the results is not established: "
@@ -85,12 +74,13 @@ def traceability_withheld(metadata: CertificateMetadata, roles: tuple[str, ...],
 
 def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
                       stated_inputs: tuple[str, ...] = ()) -> list[str]:
-    """Why the standards listed do not make the results traceable (empty: they do, or none is
-    listed yet — a draft, which says so). ``roles``: the standards that carry the measurand
-    (QT_TR_NOOP texts, e.g. the polygon and the autocollimator); each needs a standard listed
-    with a calibration certificate and a stated U — a U in the table, or, for one standard
-    listed with its certificate and no U, the inputs stated in the settings (the ADC's
-    figures). Every standard listed needs both, or the results are not traceable through it;
+    """Why the standards listed do not make the results traceable (empty: they do; none
+    listed where ``roles`` are named is a gap too: assessment 72 M3). ``roles``: the
+    standards that carry the measurand (QT_TR_NOOP texts, e.g. the polygon and the
+    autocollimator); each needs a standard listed with a calibration certificate and a
+    stated U — a U in the table, or, for one standard listed with its certificate and no U,
+    the inputs stated in the settings (the ADC's figures). Every standard listed needs
+    both, or the results are not traceable through it;
     and a standard whose calibration was due before the date of calibration (its due date
     stated) had expired: the results are not traceable through it either (the same rule as
     a missing certificate: the document is a test report naming it)."""
@@ -102,7 +92,15 @@ def _gaps(metadata: CertificateMetadata, roles: tuple[str, ...], stated_inputs: 
     """:func:`traceability_gaps`, an expired standard among them or not (``expired``)."""
     standards = metadata.standards
     if not standards:
-        return []
+        # none listed and ``roles`` named: U holds no standard's calibration, whatever inputs
+        # are typed in the settings (audit 71 finding 2), and the document is a test report,
+        # a draft or a specimen too (assessment 72 M3: titled a calibration certificate while
+        # it said traceability was not established); the cross-calibration names no roles
+        return [] if not roles else [message(QT_TR_NOOP(
+            "the standards that carry the measurand are {roles}, each to be listed with a "
+            "calibration certificate and a stated uncertainty; none is listed, so the "
+            "uncertainty holds no standard's calibration"),
+            roles=separated((message(r) for r in roles), "; "))]
     gaps: list[str] = []
     with_u = [s for s in standards if s.certificate_no and s.uncertainty is not None]
     by_settings = [s for s in standards if s.certificate_no and s.uncertainty is None

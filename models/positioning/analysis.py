@@ -28,6 +28,7 @@ from models.positioning.report import (
     axis_figure_values,
     figure_decimals,
     intervals_withheld,
+    one_direction_reasons,
     positioning_budget,
     positioning_certificate,
     readings_figure_intervals,
@@ -504,7 +505,8 @@ def figures_json(result: PositioningResult, budget=None) -> dict[str, Any]:
     intervals = (readings_figure_intervals(result) if budget is None else
                  stated_figure_intervals(result, budget))
     # R, R↑, R↓, Ps_max of two runs: the value, no interval, and why (audit 68 finding 3)
-    reasons = withheld_figure_reasons(result, budget)
+    # and a figure of both directions where one was measured (assessment 72 M6)
+    reasons = {**one_direction_reasons(result), **withheld_figure_reasons(result, budget)}
     cmc_set = budget is not None and float(budget.floor) > 0
     return {
         "iso230_2_figures": figure_objects(ISO_KEYS, result.iso.figures, intervals, cmc_set,

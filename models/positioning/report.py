@@ -85,7 +85,7 @@ __all__ = ["FIGURE_NAMES", "axis_figures", "figure_decimals", "figure_uncertaint
            "axis_figure_values", "without_interval",
            "intervals_determined", "intervals_withheld", "readings_figure_intervals",
            "readings_step_component",
-           "stated_figure_intervals", "withheld_figure_reasons",
+           "stated_figure_intervals", "withheld_figure_reasons", "one_direction_reasons",
            "positioning_budget", "positioning_certificate", "repeated_readings_components"]
 
 METHOD = QT_TR_NOOP(
@@ -468,6 +468,22 @@ def withheld_figure_reasons(result: PositioningResult, budget: UncertaintyBudget
         RUNS_UNDETERMINED_READINGS, result.symbol)[1]
 
 
+#: why a figure of both directions is not evaluated where one direction was measured (the
+#: JSON's ``interval_reason``, the statistics' cell: assessment 72 M6)
+NEEDS_BOTH_DIRECTIONS = QT_TR_NOOP("not evaluated: it needs both approach directions, and the "
+                                   "readings have one only")
+#: the figures of both directions (ISO 230-2's bidirectional ones, VDI/DGQ 3441's P and U)
+BOTH_DIRECTIONS_KEYS = ("A", "E", "M", "R", "B", "B_mean", "P", "U_max")
+
+
+def one_direction_reasons(result: PositioningResult) -> dict[str, Message]:
+    """Why each figure of both directions is null where one approach direction only was
+    measured ({} where both were)."""
+    if result.bidirectional:
+        return {}
+    return {key: message(NEEDS_BOTH_DIRECTIONS) for key in BOTH_DIRECTIONS_KEYS}
+
+
 def readings_figure_intervals(result: PositioningResult) -> dict[str, FigureInterval]:
     """:func:`figure_uncertainties` of the readings alone, without the repeatability
     figures' intervals that two runs leave undetermined (:func:`withheld_figure_reasons`)."""
@@ -525,8 +541,12 @@ def _figure_rows(result: PositioningResult,
         iso_rows.append((name, *_figure_cells(f.get(key), uncertainty.get(key), sym,
                                                   decimals.get(key)),
                          "GB/T 17421.2" if gb else "ISO 230-2"))
+    # a figure of both directions with one measured: said why, not only "not evaluated"
+    why = one_direction_reasons(result)
     vdi_rows = [(message("{key}: {name}", key=k, name=message(VDI_NAMES[k])),
-                 *_figure_cells(v, uncertainty.get(k), sym, decimals.get(k)), "VDI/DGQ 3441")
+                 *((message(why[k]), "—", "") if k in why and (v is None or not math.isfinite(v))
+                   else _figure_cells(v, uncertainty.get(k), sym, decimals.get(k))),
+                 "VDI/DGQ 3441")
                 for k, v in result.vdi.as_dict().items()]
     return vdi_rows + iso_rows if result.standard == "vdi3441" else iso_rows + vdi_rows
 

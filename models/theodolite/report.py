@@ -616,7 +616,10 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     parameters = Table(
         QT_TR_NOOP("Set-up parameters identified") if ident.tilt_identified else
         QT_TR_NOOP("Set-up parameters: the tilt not identified"),
-        (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"), f"U (k = {k:.2f}, ν = {nu})"),
+        # k and ν are the fit's: where no fit was made (the tilt not identified) the column
+        # holds the stated bound and β's origin, no k (assessment 72 L7)
+        (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
+         f"U (k = {k:.2f}, ν = {nu})" if ident.tilt_identified else "U"),
         [(QT_TR_NOOP("Axis tilt ψ"), _degrees_to_its_u(s.psi_deg, u2[0], 5), expanded_text(u2[0]))
          if ident.tilt_identified else
          (QT_TR_NOOP("Axis tilt ψ"), message(TILT_NOT_IDENTIFIED_CELL),

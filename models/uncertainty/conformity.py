@@ -43,6 +43,7 @@ from models.uncertainty.lab_scope import held_to_cmc
 from models.uncertainty.printed_figure import (
     PrintedFigure,
     StatedLimit,
+    converted_limit,
     printed,
     printed_interval_figures,
     rounded_to,
@@ -673,12 +674,12 @@ def printed_verdict(value: float, minus: float, plus: float, t: float, rule: str
                     low: float | None = None, compared: ComparedValue | None = None) -> str:
     """The decision taken on the figures as printed (issue 39, "conformity you can defend"):
     the printed ``value`` (to the nearest digit of ``d`` decimals), its printed U₋ ``minus``
-    and U₊ ``plus`` (rounded up, so that value ± U is the printed interval, whose ends are
-    rounded outward from the computed ones: models.uncertainty.rounding.stated_interval) and
-    T. A reader who redoes the decision from the printed value, U and T gets this verdict.
-    The guard bands are never narrower than the printed U, and no narrower than the computed
-    interval's ends: a pass needs the printed upper end value + U₊ ≤ T (the computed end then
-    is too), a fail the printed lower end value − U₋ (``low``, where it is held at 0) > T.
+    and U₊ ``plus`` (each the computed U rounded up, value ± U the printed interval:
+    models.uncertainty.rounding.stated_interval) and T. A reader who redoes the decision
+    from the printed value, U and T gets this verdict.
+    The guard bands are never narrower than the printed U: a pass needs the printed upper end
+    value + U₊ ≤ T (the computed end then within half a digit of it), a fail the printed lower
+    end value − U₋ (``low``, where it is held at 0) > T.
     Where the value alone is compared with T (simple acceptance; conditional pass against
     conditional fail) it is ``compared`` (:func:`compared_with_limit`: rounded to the finer of
     U's digit and T's last place as stated, ASTM E29 §6.4), else the value as printed.
@@ -817,8 +818,10 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     q = budget.unit.written()
     if isinstance(tolerance, Quantity):
         # judged in the errors' unit, quoted as stated (assessment 70 M4)
-        # (its number as typed: its decimals are the place ASTM E29 rounds a value to)
-        tolerance = StatedLimit(float(f"{float(tolerance.in_unit(budget.unit)):.15g}"),
+        # decided with its conversion as printed beside it (assessment 72 M2); its number
+        # as typed kept: its decimals are the place ASTM E29 rounds a value to
+        tolerance = StatedLimit(converted_limit(float(tolerance.value), tolerance.unit.key,
+                                                budget.unit.key),
                                 (tolerance.value if isinstance(tolerance.value, StatedNumber)
                                  else float(tolerance.value), tolerance.unit.key))
     what = message(what) if not hasattr(what, "template") else what
@@ -930,9 +933,9 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
 
 def _point_figures(x: float, w: float, q: str) -> dict[str, PrintedFigure]:
     """The deciding point's |e| and U as the results table prints them ("10.3″ ± 3.1″"): the
-    value to the nearest, U the printed value to its interval's printed ends, never less than
-    U rounded up (models.uncertainty.rounding.stated_interval; until 0.8.18 U to the nearest,
-    "U = 3.0″" beside the table's "± 3.1″" for a U of 3.04″)."""
+    value to the nearest, U rounded up (models.uncertainty.rounding.stated_interval; until
+    0.8.18 U to the nearest, "U = 3.0″" beside the table's "± 3.1″" for a U of 3.04″; until
+    0.8.20 re-measured from the rounded value, 2.6″ beside the CMC's 2.5″: assessment 72 H1)."""
     shown = printed_interval_figures(x, w, w, q)
     wider = max(("lower", "upper"), key=lambda part: shown[part].shown)
     return {"e": shown["value"], "u": shown[wider]}
@@ -1087,14 +1090,12 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     common = {**common, "probability": float(mc.probability), "raised_to_cmc": raised}
     return Conformity(verdict, text, rule_text, quantity_text, x, upper,
                       "" if verdict == "not assessed" else
-                      # the zones are thresholds on a result near T, where no end is held
-                      # at 0: the statement's printed U₊ and U₋ (the CMC's where it raised
-                      # them); U₋ rounded up from the half-width where the statement's is held
-                      # at 0 (a value below U₋ is below T, so the rejection zone is not
-                      # reached)
-                      _zones(t, shown["upper"], shown["lower"] if x - lower >= 0.0 else
-                             printed(lower, q, decimals=places, rounding="up"), rule,
-                             places, q), mc, lower,
+                      # the zones: the statement's printed U₊ and U₋ (the CMC's where it
+                      # raised them), U₋ the statement's where its lower end is held at 0 too
+                      # (a value below its half-width is below T, so the rejection zone is
+                      # not reached; until 0.8.20 the half-width rounded up there, "U₋ =
+                      # 2.0″" beside the statement's "U = −0.9″/+2.1″": assessment 72 M4)
+                      _zones(t, shown["upper"], shown["lower"], rule, places, q), mc, lower,
                       reason=_withheld_text(reasons) if reasons else "",
                       conforming_probability=conforming,
                       decision_risk=_risk(verdict, conforming),

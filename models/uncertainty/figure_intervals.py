@@ -208,8 +208,9 @@ def figure_objects(keys, values: Mapping[str, Any], intervals: Mapping[str, Figu
     intervals: :func:`held_to_cmc_figures`) also ``raised_to_cmc``: {low, high}, whether each
     half-width is the CMC because the readings gave less, as the decided quantity's (null
     where the figure has no interval). With ``reasons`` also ``interval_reason``: why this
-    figure alone has no interval (models.uncertainty.undetermined_repeatability), null
-    where it has one or where every figure's is withheld (the JSON's own ``*_reason``)."""
+    figure alone has no interval (models.uncertainty.undetermined_repeatability), or no
+    value (the reason given for it), null where it has one or where every figure's is
+    withheld (the JSON's own ``*_reason``)."""
     out: dict[str, dict[str, Any]] = {}
     for key in keys:
         value = values.get(key)
@@ -220,7 +221,8 @@ def figure_objects(keys, values: Mapping[str, Any], intervals: Mapping[str, Figu
                     "interval_high": None if interval is None else interval.high,
                     "coverage_probability": None if interval is None else interval.probability}
         if reasons is not None:
-            out[key]["interval_reason"] = reasons.get(key) if value is not None else None
+            # a figure withheld has its reason too (one direction measured: assessment 72 M6)
+            out[key]["interval_reason"] = reasons.get(key)
         if cmc_set:
             raised = None if interval is None else interval.raised_to_cmc or (False, False)
             out[key]["raised_to_cmc"] = (None if raised is None else

@@ -36,8 +36,9 @@ import math
 from models.quantity import UnitError, unit
 from models.uncertainty.rounding import stated_interval, uncertainty_decimals
 
-__all__ = ["PrintedFigure", "PrintedRange", "interval_range", "printed", "printed_interval_figures",
-           "rounded_to", "StatedLimit", "StatedTolerance", "tolerance_figure"]
+__all__ = ["CONVERTED_LIMIT_DIGITS", "PrintedFigure", "PrintedRange", "converted_limit",
+           "interval_range", "printed", "printed_interval_figures", "rounded_to", "StatedLimit",
+           "StatedTolerance", "tolerance_figure"]
 
 
 def rounded_to(value: float, decimals: int, rounding: str = "nearest") -> float:
@@ -257,11 +258,28 @@ def _as_stated(number: float) -> str:
     return np.format_float_positional(number, unique=True, trim="-")
 
 
+#: the significant digits a tolerance stated in another unit is converted to, printed beside
+#: it and decided with (assessment 72 M2: three digits printed 7.0297 µrad as 1.45″, against
+#: which the printed 0.95″ + 0.50″ passes, beside the conditional pass decided on 1.44998″)
+CONVERTED_LIMIT_DIGITS = 6
+
+
+def converted_limit(number: float, key: str, unit_key: str) -> float:
+    """A tolerance stated as ``number`` in the unit ``key`` in the unit ``unit_key`` as it is
+    printed beside it and decided with: to :data:`CONVERTED_LIMIT_DIGITS` significant
+    digits (0.0001 % of it at most), so that a reader who redoes the decision from the
+    printed figures and this T gets the printed verdict; exactly where the units agree."""
+    if not unit_key or unit_key == key:
+        return float(number)
+    return float(f"{float(number) * unit(key).size / unit(unit_key).size:.{CONVERTED_LIMIT_DIGITS}g}")
+
+
 class StatedTolerance(str):
     """A specification quoted as the customer stated it ("14.5 µrad"), followed, where it
-    is read in another unit, by its value there to three significant digits ("14.5 µrad
-    (2.99″)"): the decision uses the exact conversion, the text never restates the limit
-    with the spurious digits of a conversion ("±2.99084″")."""
+    is read in another unit, by its value there as the decision uses it
+    (:func:`converted_limit`: "14.5 µrad (2.99084″)"), so that the customer's specification
+    is never replaced by a conversion, and the decision can be redone from the figures
+    printed beside it."""
 
     stated: tuple[float, str]
     unit_key: str
@@ -270,9 +288,8 @@ class StatedTolerance(str):
         number, key = stated
         said = f"{_as_stated(number)}{unit(key).written()}"
         if unit_key and unit_key != key:
-            value = float(number) * unit(key).size / unit(unit_key).size
-            digits = max(0, 2 - math.floor(math.log10(abs(value)))) if value else 0
-            said += f" ({value:.{digits}f}{unit(unit_key).written()})"
+            value = converted_limit(number, key, unit_key)
+            said += f" ({_as_stated(value)}{unit(unit_key).written()})"
         made = super().__new__(cls, said)
         made.stated, made.unit_key = stated, unit_key
         return made

@@ -112,43 +112,35 @@ def stated_interval(value: float, lower: float, upper: float, decimals: int,
                     clip_at_zero: bool = False) -> dict[str, float]:
     """A value with its coverage interval [value − ``lower``, value + ``upper``] as printed
     to ``decimals`` (assessment 70 M1), so that the printed value ± the printed U₋, U₊ *is*
-    the printed interval: the value rounded to the nearest; each end rounded outward from
-    the computed end (:func:`interval_ends`: never inward, so the printed interval holds the
-    computed one); each U the printed value to its printed end, and never less than the
-    computed U rounded up (GUM 7.2.6 allows U rounded up), its end moved out to match where
-    that is further; a symmetric interval (``lower`` = ``upper``) printed ±U, the wider of
-    the two, both ends at it, so that one U is printed and decided with (issue 39).
-    ``clip_at_zero``: a half range, whose lower end is held at 0 (U₋ then the value).
+    the printed interval: the value rounded to the nearest; each U the computed U rounded up
+    (GUM 7.2.6), the same figure as the largest U, the CMC statement, the budget and the
+    machine-readable outputs give for it (assessment 72 H1: until 0.8.20 a U was re-measured
+    from the rounded value to the computed end, one digit above the U stated everywhere
+    else, and a CMC-held ±0.050″ printed −0.050″/+0.051″); the ends the printed value ∓ the
+    printed U. ``clip_at_zero``: a half range, whose lower end is held at 0 (U₋ then the
+    printed value where the interval reaches below 0).
     Returns {"value", "lower", "upper", "low", "high"}."""
     shown = round(value, decimals) + 0.0
     if not all(math.isfinite(x) for x in (value, lower, upper)):
         return {"value": shown, "lower": lower, "upper": upper, "low": value - lower,
                 "high": value + upper}
-    if clip_at_zero and value - lower <= 0.0:
-        minus = shown
-    else:
-        minus = max(_on_grid(lower, decimals, math.ceil),
-                    round(shown - _on_grid(value - lower, decimals, math.floor), decimals))
-    plus = max(_on_grid(upper, decimals, math.ceil),
-               round(_on_grid(value + upper, decimals, math.ceil) - shown, decimals))
-    if lower == upper and not (clip_at_zero and value - lower <= 0.0):
-        minus = plus = max(minus, plus)  # a symmetric interval stays so: ±U, the wider (issue 39)
-    if clip_at_zero and shown - minus < 0.0:  # held at 0: U₋ the printed value less it
-        minus = shown
-    low = round(shown - minus, decimals) + 0.0
+    minus = _on_grid(lower, decimals, math.ceil)
+    plus = _on_grid(upper, decimals, math.ceil)
+    if clip_at_zero and (value - lower <= 0.0 or shown - minus < 0.0):
+        minus = shown  # held at 0: U₋ the printed value less it
     return {"value": shown, "lower": round(minus, decimals) + 0.0,
-            "upper": round(plus, decimals) + 0.0, "low": low,
+            "upper": round(plus, decimals) + 0.0, "low": round(shown - minus, decimals) + 0.0,
             "high": round(shown + plus, decimals) + 0.0}
 
 
 def stated_pair(value: float, expanded: float) -> tuple[float, float, int]:
     """A figure and its symmetric U as printed side by side ("+10.3″", "3.1″": a results
     table's point and its U column, a deciding point's "|e| = …, U = …"): (the value to
-    the nearest, U, decimals), U :func:`stated_interval`'s (the wider of its two), so that
-    value ± U holds the computed interval and U is never below U rounded up (issue 39: every printed U
-    the same figure, and a decision re-done from the printed value and U gives the printed
-    verdict). The sign of ``value`` does not change U. A U that is zero or not a number is
-    returned as it is (a reference point, U withheld), the value then unrounded."""
+    the nearest, U rounded up, decimals): U two significant digits at most rounded up
+    (GUM 7.2.6), the value to the same decimal (:func:`stated_interval`), one U per point in
+    every document (assessment 72 H1), the one its decision is taken on (issue 39). The sign
+    of ``value`` does not change U. A U that is zero or not a number is returned as it is (a
+    reference point, U withheld), the value then unrounded."""
     if not (math.isfinite(expanded) and expanded > 0):
         return value, expanded, uncertainty_decimals(expanded)
     decimals = uncertainty_decimals(expanded)

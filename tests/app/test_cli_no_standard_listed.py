@@ -2,7 +2,10 @@
 positioning, theodolite and fringe, every input's u typed, stated "pass" in the JSON and "The
 item conforms" in the PDF while the same PDF said traceability is "not established … no
 reference standard with a calibration certificate". No statement is made: the JSON's verdict
-null with the reason, the PDF and the XLSX say so; the figure and its interval are given."""
+null with the reason, the PDF and the XLSX say so; the figure and its interval are given.
+The document is a test report, not a calibration certificate, the reason its traceability
+statement (assessment 72 M3: titled "Calibration certificate" while it said traceability was
+not established), a draft or a specimen alike."""
 
 from __future__ import annotations
 
@@ -57,7 +60,9 @@ def test_no_verdict_on_the_command_line_with_no_standard_listed(key, tmp_path, c
     assert decided["value"] is not None
     assert decided["interval_low"] <= decided["value"] <= decided["interval_high"]
     text = pdf_text(pdf.read_bytes())
-    assert "not established on this document" in text  # the draft's traceability, as before
+    assert "Test report" in text and "Calibration certificate" not in text
+    assert "This document is a test report, not a calibration certificate" in text
+    assert "Metrological traceability: not established for these results" in text
     assert "No statement of conformity" in text and "conforms to the specification" not in text
     assert "none is listed, so the uncertainty holds no standard" in text
     book = load_workbook(io.BytesIO(xlsx.read_bytes()), read_only=True)
@@ -65,3 +70,19 @@ def test_no_verdict_on_the_command_line_with_no_standard_listed(key, tmp_path, c
              for c in row if c is not None]
     assert "No statement of conformity because" in cells
     assert any("none is listed, so the uncertainty holds no standard" in c for c in cells)
+
+
+def test_a_specimen_with_no_standard_listed_is_a_test_report(tmp_path, capsys):
+    """The bundled example's details without their standards: a specimen titled "Test report"
+    (检测报告 in Chinese), its reason stated."""
+    details = json.loads((SAMPLES / "certificate_theodolite.json").read_text("utf-8"))
+    details["standards"] = []
+    for language, title, other in (("en", "Test report", "Calibration certificate"),
+                                   ("zh", "检测报告", "校准证书")):
+        meta, pdf = tmp_path / f"meta_{language}.json", tmp_path / f"t_{language}.pdf"
+        meta.write_text(json.dumps({**details, "language": language}), encoding="utf-8")
+        code = main(["analyze", "theodolite", str(SAMPLES / "theodolite_sample.csv"),
+                     "--metadata", str(meta), "--certificate", str(pdf)])
+        assert code == 0, capsys.readouterr().err
+        head = pdf_text(pdf.read_bytes())[:200]  # the title, before the first heading
+        assert title in head and other not in head, language

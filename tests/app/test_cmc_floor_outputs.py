@@ -91,26 +91,26 @@ def test_the_decided_interval_is_held_to_the_cmc_in_every_output(issued):
     assert decided["decision_risk"] == pytest.approx(risk, rel=1e-9)
     assert decided["verdict"] == "pass" and risk > 0.01  # 0.01 % before, with U₊ = 0.49″
     pdf = issued["pdf"]
-    # the figures to the decimal of U = 2.0″ (GUM 7.2.6): pass ≤ T − CMC, fail beyond T + CMC
-    # each end rounded outwards from the JSON's (0.8.14: the printed value ± the printed U),
-    # U₋ the value to the lower end after it is held at 0
-    low = math.floor(round(decided["interval_low"] * 10, 9)) / 10
-    high = math.ceil(round(decided["interval_high"] * 10, 9)) / 10
-    # U₋ and U₊ as printed: the printed value to each printed end (0.8.19, value ± U the printed
-    # interval), never below the CMC's 2.0″ on the side it holds
+    # the figures to the decimal of U = 2.0″ (GUM 7.2.6): pass ≤ T − CMC, fail beyond T + CMC;
+    # the value to the nearest, U₊ the CMC (assessment 72 H1: the computed U rounded up, the
+    # U the CMC remark and the machine-readable outputs give), U₋ the printed value where the
+    # lower end is held at 0; the ends the printed value ∓ the printed U
     shown = round(x, 1)
-    minus, plus = round(shown - low, 1), round(high - shown, 1)
-    assert plus >= CMC
+    plus = math.ceil(round(CMC * 10, 9)) / 10
+    minus = shown if x - CMC <= 0 else plus
+    low, high = round(shown - minus, 1), round(shown + plus, 1)
+    assert plus == CMC
     u = f"±{plus:.1f}\"" if minus == plus else f"−{minus:.1f}\"/+{plus:.1f}\""
     assert f"Coverage interval of the true half range {low:.1f}\" … {high:.1f}\" (U = {u}" in pdf
-    # the zones on the statement's printed U₊ (issue 39: the same rounded-up figure) and the
-    # lower half-width, the CMC's 2.0″, where U₋ is held at 0; limits rounded down
-    if plus == CMC:
+    # the zones on the statement's printed U₊ and U₋ (issue 39: the same rounded-up figures),
+    # U₋ the statement's where it is held at 0 (assessment 72 M4: until 0.8.20 the CMC's
+    # 2.0″ there, beside the statement's −0.9″); limits rounded down
+    if minus == plus:
         assert f'Zones: pass ≤ {T - CMC:.1f}" (T − w) < conditional pass ≤ 3" (T) < conditional ' \
                f'fail ≤ {T + CMC:.1f}" (T + w) < fail' in pdf
     else:
         assert f'Zones: pass ≤ {T - plus:.1f}" (T − U₊, U₊ = {plus:.1f}") < conditional pass ≤ ' \
-               f'3" (T) < conditional fail ≤ {T + CMC:.1f}" (T + U₋, U₋ = {CMC:.1f}") < fail' in pdf
+               f'3" (T) < conditional fail ≤ {T + minus:.1f}" (T + U₋, U₋ = {minus:.1f}") < fail' in pdf
     assert f"Probability of a false acceptance at this decision: {100 * risk:.2f} %" in pdf
     sheet = issued["xlsx"]["Certificate"]
     rows = {row[0]: row[1] for row in sheet.iter_rows(values_only=True) if row and row[0]}

@@ -9,12 +9,11 @@ passes each way, pointing 0.3″, a circle error of 0.2″ at each θ, a reversa
 in D°M′S″ to 0.1″; the theodolite stated at u = 0.5″ per reading, T = ±3″), without and
 with a CMC of 1.5″. The checks recompute from the JSON alone:
 
-* each printed end of the decided quantity's interval is the JSON's end rounded outwards
-  (down at the lower end, up at the upper: the printed interval holds the computed one) to
-  the decimal that shows the larger half-width with two significant digits (GUM 7.2.6),
-  and the printed U₋, U₊ are the printed value to those ends (0.8.14 printed the value less
-  U, 0.0″ for an end of 0.0675″ and 0.02″ for one of 0.0131″, and U₋ = 1.5″ beside a
-  value of 1.32″ and an end held at 0);
+* the decided quantity's value is printed to the nearest, each U₋, U₊ the JSON's half-width
+  rounded up to the decimal that shows the larger with two significant digits (GUM 7.2.6;
+  assessment 72 H1: the U every other document gives, not one re-measured from the rounded
+  value), and the printed ends are the printed value ∓ the printed U (0.8.14 printed 0.0″
+  for an end of 0.0675″ and U₋ = 1.5″ beside a value of 1.32″ and an end held at 0);
 * each ISO 230-2 figure's interval is printed with its ends so rounded;
 * where the theodolite's decided interval reaches E's interval halved (the union for a
   circle error the readings do not exclude), its probability is E's (92.5 %, the one E's
@@ -116,16 +115,15 @@ def _outward(low: float, high: float, d: int) -> tuple[str, str]:
 
 
 def _stated(value: float, low: float, high: float, d: int) -> dict[str, str]:
-    """The printed form of a value and its interval (0.8.19, assessment 70 M1), worked out
-    here: the value to the nearest; each end outward (:func:`_outward`); each U the printed
-    value to its printed end, and never less than the U rounded up, its end moved out to
-    match; a half range's lower end held at 0 (U₋ then the printed value)."""
+    """The printed form of a value and its interval (assessment 70 M1, 72 H1), worked out
+    here: the value to the nearest; each U the computed half-width rounded up (the U every
+    other document gives); the ends the printed value ∓ the printed U; a half range's lower
+    end held at 0 (U₋ then the printed value)."""
     step = Decimal(1).scaleb(-d)
     v = Decimal(f"{value:.{d}f}")
     up = lambda x: Decimal(repr(x)).quantize(step, ROUND_CEILING)  # noqa: E731
-    lo, hi = (Decimal(t) for t in _outward(low, high, d))
-    minus = max(up(value - low), v - lo) if low > 0.0 else v
-    plus = max(up(high - value), hi - v)
+    minus = up(value - low) if low > 0.0 else v
+    plus = up(high - value)
     lo_shown = max(v - minus, Decimal(0)).quantize(step)
     return {"value": str(v), "low": str(lo_shown), "high": str((v + plus).quantize(step)),
             "minus": str((v - lo_shown).quantize(step)), "plus": str(plus.quantize(step))}

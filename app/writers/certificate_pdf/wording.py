@@ -91,6 +91,10 @@ REPORT_CHINESE = {"Laboratory": "检测机构", "Item under test": "被检测对
 #: titles a table and stays as it is)
 #: (app/writers/results_export.py SHEET_TEST)
 SHEET_WORDS = {"Test (the test performed)": "Test"}
+#: a verdict in Chinese as the statement of conformity words it (合格, not the catalogue's
+#: 通过 of a check passed: assessment 72 L1)
+VERDICT_CHINESE = {"pass": "合格", "conditional pass": "有条件合格",
+                   "conditional fail": "有条件不合格", "fail": "不合格"}
 SHEET_CHINESE = {"Test (the test performed)": "校准项目"}
 REPORT_SHEET_CHINESE = {"Test (the test performed)": "检测项目"}
 

@@ -246,9 +246,16 @@ def test_a_bilingual_certificate_has_chinese_headings_beside_the_english(samples
     rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
     result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
 
+    import json
+
+    # the bundled standards listed: a draft with none is a test report (assessment 72 M3)
+    standards = json.loads((samples_dir / "certificate_polygon.json").read_text("utf-8"))[
+        "standards"]
+
     def text(language):
-        document = kind.certificate_document(result, CertificateMetadata(
-            language=language, certificate_number="AB-1", customer_name="长春光电"))
+        document = kind.certificate_document(result, CertificateMetadata.from_dict({
+            "language": language, "certificate_number": "AB-1", "customer_name": "长春光电",
+            "standards": standards}))
         pages = PdfReader(io.BytesIO(certificate_pdf_bytes(document))).pages
         return re.sub(r"\s+", " ", " ".join(p.extract_text() for p in pages))
 

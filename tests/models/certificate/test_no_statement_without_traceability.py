@@ -150,8 +150,9 @@ def test_no_statement_of_conformity_with_no_reference_standard_listed(key):
     standards listed) stated "pass" under a traceability statement "not established … no
     reference standard with a calibration certificate"; the polygon did the same. No
     statement is made: the reason names the standards that carry the measurand and that
-    none is listed; the figure and its interval are still given, the title a draft's as
-    before (no traceability gap: nothing listed yet)."""
+    none is listed; the figure and its interval are still given; the document is a test
+    report, the same reason its traceability gap (assessment 72 M3: until 0.8.20 titled a
+    calibration certificate beside "traceability not established")."""
     kind, result = _sample(key, NO_STANDARD_SETTINGS[key])
     tolerance = _details(key, None).get("tolerance")
     # the control: every standard that carries the measurand listed with its U
@@ -167,7 +168,9 @@ def test_no_statement_of_conformity_with_no_reference_standard_listed(key):
     assert "none is listed, so the uncertainty holds no standard's calibration" in reason
     for role in ROLES[key]:
         assert role in reason
-    assert document.traceability_gaps == ()  # a draft's title, as before
+    assert document.is_test_report and len(document.traceability_gaps) == 1
+    assert "none is listed, so the uncertainty holds no standard's calibration" in str(
+        document.traceability_gaps[0])
     extra = workbench_uncertainty_json(kind, result, meta, None)
     decided = extra["decided_quantity"]
     assert decided["verdict"] is None and decided["probability_conforming"] is None

@@ -33,9 +33,13 @@ def test_the_half_ranges_interval_and_guard_bands_are_held_to_the_cmc():
     assert x == free.value  # the value is not moved
     assert held.expanded == cmc and held.lower_half_width == cmc
     assert held.interval_high == x + cmc and held.interval_low == max(0.0, x - cmc)
-    # the guard band is the CMC: pass ≤ T − 2 = 1.0", conditional fail ≤ T + 2 = 5.0"
-    # (U to two significant digits, GUM 7.2.6)
-    assert 'pass ≤ 1.0" (T − w)' in held.zones and '≤ 5.0" (T + w)' in held.zones
+    # the guard band of acceptance is the CMC: pass ≤ T − 2 = 1.0" (U to two significant
+    # digits, GUM 7.2.6); that of rejection the statement's U₋, the value where the lower end
+    # is held at 0 (assessment 72 M4), else the CMC: conditional fail ≤ T + 2 = 5.0"
+    assert 'pass ≤ 1.0" (T − ' in held.zones
+    minus = f"{x:.1f}" if x < cmc else "2.0"
+    assert (f'≤ {T + float(minus):.1f}" (T + U₋, U₋ = {minus}")' in held.zones if x < cmc
+            else '≤ 5.0" (T + w)' in held.zones), held.zones
     # U₋ printed after the end is held at 0 (0.8.14: ±2.0″ beside 0.0″ … 2.7″), and why
     if x < cmc:
         assert f"U = −{x:.1f}\"/+2.0\"" in held.statement, held.statement
