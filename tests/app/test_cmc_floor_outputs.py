@@ -104,13 +104,13 @@ def test_the_decided_interval_is_held_to_the_cmc_in_every_output(issued):
     assert f"Coverage interval of the true half range {low:.1f}\" … {high:.1f}\" (U = {u}" in pdf
     # the zones on the statement's printed U₊ and U₋ (issue 39: the same rounded-up figures),
     # U₋ the statement's where it is held at 0 (assessment 72 M4: until 0.8.20 the CMC's
-    # 2.0″ there, beside the statement's −0.9″); limits rounded down
+    # 2.0″ there, beside the statement's −0.9″); limits rounded down; T as typed (3.0: e29)
     if minus == plus:
-        assert f'Zones: pass ≤ {T - CMC:.1f}" (T − w) < conditional pass ≤ 3" (T) < conditional ' \
+        assert f'Zones: pass ≤ {T - CMC:.1f}" (T − w) < conditional pass ≤ {T}" (T) < conditional ' \
                f'fail ≤ {T + CMC:.1f}" (T + w) < fail' in pdf
     else:
         assert f'Zones: pass ≤ {T - plus:.1f}" (T − U₊, U₊ = {plus:.1f}") < conditional pass ≤ ' \
-               f'3" (T) < conditional fail ≤ {T + minus:.1f}" (T + U₋, U₋ = {minus:.1f}") < fail' in pdf
+               f'{T}" (T) < conditional fail ≤ {T + minus:.1f}" (T + U₋, U₋ = {minus:.1f}") < fail' in pdf
     assert f"Probability of a false acceptance at this decision: {100 * risk:.2f} %" in pdf
     sheet = issued["xlsx"]["Certificate"]
     rows = {row[0]: row[1] for row in sheet.iter_rows(values_only=True) if row and row[0]}

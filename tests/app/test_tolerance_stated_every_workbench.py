@@ -91,7 +91,8 @@ def test_the_specification_is_quoted_as_stated_with_the_t_decided(tmp_path, work
                                                                    details, urad):
     text = _issue(tmp_path, workbench, extra, details)
     t = _six(urad)
-    stated = f"{urad:g} µrad ({t}\")"
+    # as typed in the details: a JSON 2.0 keeps its decimal (ASTM E29's place, merge of e29)
+    stated = f"{json.dumps(details['tolerance'])} µrad ({t}\")"
     assert f"tolerance ±{stated}" in text  # the front page
     assert f"specification ±{stated}" in text  # the statement
     assert f"±{t}\"" not in text  # never the conversion alone

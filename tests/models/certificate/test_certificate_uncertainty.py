@@ -38,6 +38,14 @@ PHASE_REFERENCE = ReferenceStandard("Reference angle encoder (phase of each samp
                                     "NIM-2026-0999")
 
 
+def _line(table, label: str) -> list[str]:
+    """The budget table's line whose first cell starts with ``label`` (the combined u, the
+    expanded U, and since assessment 72 L6 the U stated, rounded up, below them)."""
+    found = [[str(c) for c in row] for row in table.rows if str(row[0]).startswith(label)]
+    assert len(found) == 1, [str(row[0]) for row in table.rows]
+    return found[0]
+
+
 # 10. ν_eff truncated to the lower integer before t is taken (GUM G.6.4) -------------------
 def test_effective_dof_is_truncated_before_t():
     """ν_eff = 8·(1 + b²)² = 8.6 for u_A = 1 (ν = 8) and u_B = b: GUM G.6.4 takes ν = 8,
@@ -53,7 +61,8 @@ def test_effective_dof_is_truncated_before_t():
     assert budget.coverage_factor == pytest.approx(k_gtc) == pytest.approx(2.37, abs=0.005)
     assert GTC.reporting.k_factor(8.6, 100 * math.erf(math.sqrt(2))) < 2.35  # what it was
     table = budget_table(budget, "x")
-    assert table.rows[-2][-1] == "8" and "k = 2.37" in table.rows[-1][0]
+    combined, expanded = _line(table, "Combined standard"), _line(table, "Expanded U (k")
+    assert combined[-1] == "8" and "k = 2.37" in expanded[0]
     assert "8.60" in str(table.note) and "G.6.4" in str(table.note)
 
 
@@ -64,7 +73,7 @@ def test_a_large_dof_is_said_alike_in_the_budgets_line_and_its_note():
     budget = UncertaintyBudget((BudgetComponent("a", "A", "normal", 0.1, 1.0, 1.0, 1e8),
                                 BudgetComponent("b", "B", "normal", 0.5, 1.0, 1.0, math.inf)), 1)
     table = budget_table(budget, "x")
-    assert table.rows[-2][-1] == "≥ 10⁴"
+    assert _line(table, "Combined standard")[-1] == "≥ 10⁴"
     note = str(table.note)
     assert "ν ≥ 10⁴" in note and "×10" not in note, note
     assert "k = 2.00" in note
