@@ -1032,7 +1032,7 @@
     </message>
     <message>
         <source>a tilt up to {psi} (stated) in its worst direction, not identified by the elevations and not removed: its exact effect on ζ(θ) with β = {beta}</source>
-        <translation>不超过 {psi}（给定）、方向最不利的倾斜，俯仰角未能辨识，未扣除：其在 β = {beta} 时对 ζ(θ) 的精确影响</translation>
+        <translation>不超过 {psi}（给定）、方向最不利的倾斜，未能由俯仰角辨识，未扣除：其在 β = {beta} 时对 ζ(θ) 的精确影响</translation>
     </message>
     <message>
         <source>no coverage interval</source>
@@ -1086,7 +1086,7 @@
     <message>
         <source>not identified by the elevations</source>
         <extracomment>the parameters table&apos;s cell of ψ and α when the elevations do not identify the tilt</extracomment>
-        <translation>俯仰角未能辨识</translation>
+        <translation>未能由俯仰角辨识</translation>
     </message>
     <message>
         <source>Set-up parameters: the tilt not identified</source>
@@ -1906,6 +1906,10 @@
         <translation>证书 {number} 已签发并记录在登记册中，但 {reason}：请从 文件 › 证书登记册 保存其 PDF。</translation>
     </message>
     <message>
+        <source>Not written either: {files}.</source>
+        <translation>同样未写出：{files}。</translation>
+    </message>
+    <message>
         <source>{number} ({revision} of {supersedes})</source>
         <translation>{number}（{supersedes} 的{revision}）</translation>
     </message>
@@ -2669,6 +2673,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{path}：其 SHA-256 出现在 {n} 条记录中（{numbers}）：一份证书只签发一次，因此除一条外都是签发后被复制进登记册的。</translation>
     </message>
     <message>
+        <source>{path} was issued by this register, but the register has LOST its record.</source>
+        <translation>{path} 是本登记册签发的，但登记册已丢失其记录。</translation>
+    </message>
+    <message>
         <source>{path}: no certificate issued from this register has this PDF (SHA-256): it was altered, is a draft, or comes from another register.</source>
         <translation>{path}：本登记册签发的证书中没有此 PDF（SHA-256）：它已被改动、是草稿，或来自其他登记册。</translation>
     </message>
@@ -3347,8 +3355,16 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>  已记入登记册：在从备份恢复登记册之前不再签发任何内容，其编号也不会再次使用</translation>
     </message>
     <message>
+        <source>CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after the head it prints, but record {seq} is now another certificate of the same number (SHA-256 {other}…): its record was deleted after issue and the number issued again</source>
+        <translation>签发后被改动：{path}（{number}）是作为第 {seq} 条记录、紧随其所印链头签发的，但第 {seq} 条记录现在是同一编号的另一份证书（SHA-256 {other}…）：其记录在签发后被删除，该编号被再次签发</translation>
+    </message>
+    <message>
         <source>not there</source>
         <translation>不存在</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: {path}: the register&apos;s record of {number} is not the record it was issued from: the file carries the digest {carried}… of its record&apos;s content (readings, results and details as recorded), the record now gives {actual}…: the record was rewritten after issue</source>
+        <translation>签发后被改动：{path}：登记册中 {number} 的记录不是签发该文件时的记录：文件带有其记录内容（所记录的读数、结果和信息）的摘要 {carried}…，记录现在给出 {actual}…：记录在签发后被改写</translation>
     </message>
     <message>
         <source>CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, or the register&apos;s record of it was replaced</source>
@@ -3372,7 +3388,32 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>证书上印的链头（该证书之前的链头）：登记册必须仍保有截至该链头的历史，且紧随其后的是该证书自身的记录</translation>
     </message>
     <message>
+        <source>  {n} record(s) are signed with the laboratory&apos;s key: their signatures and the register&apos;s signed state are NOT checked without the key (set ANGLEBENCH_REGISTER_KEY); a rewrite by someone with write access to the database is not detectable without it: compare the head with your log</source>
+        <translation>  {n} 条记录以实验室密钥签名：没有密钥时，其签名和登记册已签名的状态均未检查（请设置 ANGLEBENCH_REGISTER_KEY）；没有密钥时，有数据库写权限的人所做的改写无法发现：请将链头与您的记录对照</translation>
+    </message>
+    <message>
+        <source>  unsigned register (no laboratory key): someone with write access to the database can rewrite records and recompute the chain undetectably; the digest each certificate issued since 0.8.21 carries finds its record rewritten, and a head noted outside (&apos;anglebench register head&apos;) finds the rest</source>
+        <translation>  未签名的登记册（没有实验室密钥）：有数据库写权限的人可以改写记录并重新计算哈希链而不被发现；0.8.21 起签发的每份证书所带的摘要能发现其记录被改写，记在外部的链头（&apos;anglebench register head&apos;）能发现其余的改动</translation>
+    </message>
+    <message>
+        <source>{path}: the name of an unfinished write left by an interrupted issue or save (a temporary file): what it holds is checked below; the file at the final name, if any, is the one that was issued</source>
+        <translation>{path}：这是被中断的签发或保存留下的未完成写入的名称（临时文件）：下面检查其内容；最终名称处的文件（如有）才是签发的文件</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: {path} was issued by this register ({number}), but the register has LOST its record: see below</source>
+        <translation>签发后被改动：{path} 是本登记册签发的（{number}），但登记册已丢失其记录：见下文</translation>
+    </message>
+    <message>
+        <source>{path}: NOT in the register (no issued PDF, DCC or results file has its SHA-256, and it is none of them: altered, or from another register)</source>
+        <translation>{path}：不在登记册中（没有已签发的 PDF、DCC 或结果文件具有其 SHA-256，它也不是其中任何一种：已被改动，或来自另一个登记册）</translation>
+    </message>
+    <message>
+        <source>  it is the certificate&apos;s DCC (digital calibration certificate)</source>
+        <translation>  它是该证书的 DCC（数字校准证书）</translation>
+    </message>
+    <message>
         <source>{indent}{path} is not the results file recorded under that name with certificate {number} (its SHA-256 is {sha256}: another file written under the name since)</source>
+        <extracomment>the register&apos;s names for what models.project.file_kind finds: a results file is an XLSX or a CSV, a DCC an XML document</extracomment>
         <translation>{indent}{path} 不是以该名称随证书 {number} 登记的结果文件（其 SHA-256 为 {sha256}：此后另有文件以该名称写入）</translation>
     </message>
     <message>
@@ -4845,7 +4886,13 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>读数录入得比其分散更粗：各平均值的舍入不是随机的，区间所依据的模型（围绕各目标位置真平均值的随机分散）不成立，因此各项指标均不给出包含区间</translation>
     </message>
     <message>
+        <source>not evaluated: it needs both approach directions, and the readings have one only</source>
+        <extracomment>why a figure of both directions is not evaluated where one direction was measured (the JSON&apos;s ``interval_reason``, the statistics&apos; cell: assessment 72 M6)</extracomment>
+        <translation>未评定：需要两个趋近方向的读数，而读数只有一个方向</translation>
+    </message>
+    <message>
         <source>forward {n}</source>
+        <extracomment>the figures of both directions (ISO 230-2&apos;s bidirectional ones, VDI/DGQ 3441&apos;s P and U)</extracomment>
         <translation>正向 {n}</translation>
     </message>
     <message>
@@ -6185,6 +6232,18 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{number} 的结果已写入 {path} 并记入登记册</translation>
     </message>
     <message>
+        <source>  nor its DCC ({reason}): save it with &apos;anglebench register show {number} --dcc OUT.xml&apos;</source>
+        <translation>  其 DCC 也未写出（{reason}）：请用 &apos;anglebench register show {number} --dcc OUT.xml&apos; 保存</translation>
+    </message>
+    <message>
+        <source>  its results file was recorded but not renamed into place ({reason}): the recorded file is {kept}; rename it to {path}</source>
+        <translation>  其结果文件已记录，但未改名到位（{reason}）：已记录的文件是 {kept}；请将其改名为 {path}</translation>
+    </message>
+    <message>
+        <source>  nor its results file ({reason}): the register records no results file for {number}, and no command writes it afterwards (its readings and results are in the record: &apos;anglebench register show {number} --project OUT.json&apos;, analysed again without issuing)</source>
+        <translation>  其结果文件也未写出（{reason}）：登记册没有为 {number} 记录结果文件，此后也没有任何命令能写出它（其读数和结果在记录中：&apos;anglebench register show {number} --project OUT.json&apos;，可不签发而重新分析）</translation>
+    </message>
+    <message>
         <source>Test report written to {path} (DRAFT: {fields} missing; nothing was recorded in the register)</source>
         <translation>检测报告已写入 {path}（草稿：缺少{fields}；未记入登记册）</translation>
     </message>
@@ -6307,6 +6366,11 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>pass ≤ {low} (T − w) &lt; conditional pass ≤ {t} (T) &lt; conditional fail ≤ {high} (T + w) &lt; fail</source>
         <translation>合格 ≤ {low} (T − w) &lt; 有条件合格 ≤ {t} (T) &lt; 有条件不合格 ≤ {high} (T + w) &lt; 不合格</translation>
+    </message>
+    <message>
+        <source>Compared with T: {value}, the result rounded to the last place of T as stated (ASTM E29 §6.4, the rounding method).</source>
+        <extracomment>the value compared with T where it is not the statement&apos;s printed value (ASTM E29 §6.4)</extracomment>
+        <translation>与 T 比较：{value}，即结果修约到 T 所述的最后一位（ASTM E29 §6.4，修约法）。</translation>
     </message>
     <message>
         <source>The item conforms to the specification ±{t} (pass).</source>
@@ -6837,8 +6901,12 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>编号方案 &apos;{scheme}&apos; 中没有 {{seq}}：登记册无法用它为证书编号</translation>
     </message>
     <message>
+        <source>{setting}={value}: a whole number of days, 0 for no limit</source>
+        <extracomment>how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it how long a connection to a PostgreSQL register waits for the server&apos;s answer (libpq&apos;s connect_timeout; a URL that sets its own keeps it) how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`) the environment variable that sets how many days after the register&apos;s last record an issue may be dated (0: no limit) its value when it is not set 366: a clock a year ahead (the year typed wrong) is found unless the last record is a day old, while a lab that calibrates once a year issues without a setting (a 90-day default refused a year between calibrations with nothing in between, and the window has no environment to set: the technician would be stopped at a dialog)</extracomment>
+        <translation>{setting}={value}：应为整数天数，0 表示不限</translation>
+    </message>
+    <message>
         <source>the lab&apos;s time zone &apos;{name}&apos; is not known (an IANA name such as Asia/Shanghai or Europe/Berlin)</source>
-        <extracomment>how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it how long a connection to a PostgreSQL register waits for the server&apos;s answer (libpq&apos;s connect_timeout; a URL that sets its own keeps it) how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`)</extracomment>
         <translation>实验室时区“{name}”无法识别（应为 IANA 名称，如 Asia/Shanghai 或 Europe/Berlin）</translation>
     </message>
     <message>
@@ -6907,6 +6975,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>其最后一条记录不是它最后记入的那条</translation>
     </message>
     <message>
+        <source>this register holds records signed with the laboratory&apos;s key, and this AngleBench has no key ({setting} is not set): nothing is recorded unsigned into a signed register; set {setting} to the key file and try again</source>
+        <translation>此登记册保存有以实验室密钥签名的记录，而此 AngleBench 没有密钥（未设置 {setting}）：不会向已签名的登记册写入未签名的记录；请将 {setting} 设为密钥文件后重试</translation>
+    </message>
+    <message>
         <source>no free number in scheme &apos;{scheme}&apos;</source>
         <translation>编号方案 &apos;{scheme}&apos; 中已无可用编号</translation>
     </message>
@@ -6943,6 +7015,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>计算机时钟为 {now}，早于登记册的最后一条记录（{number}，签发于 {then}）：时钟被回拨；在时钟正确之前不签发</translation>
     </message>
     <message>
+        <source>the computer&apos;s clock says {now}, {days} days after the register&apos;s last record ({number}, issued {then} on {workstation}): more than {limit} days ({setting}); a clock set ahead would date this certificate wrongly and refuse every issue on a right clock until then. Check the clock; if it is right, issue with {setting}={needed} set for this issue</source>
+        <translation>计算机时钟显示 {now}，比登记册最后一条记录（{number}，{then} 在 {workstation} 上签发）晚 {days} 天：超过 {limit} 天（{setting}）；调快的时钟会把这份证书的日期写错，并在那一天之前拒绝时钟正确的每一次签发。请检查时钟；如果时钟正确，请为这一次签发设置 {setting}={needed} 后签发</translation>
+    </message>
+    <message>
         <source>serial number</source>
         <translation>序列号</translation>
     </message>
@@ -6961,6 +7037,14 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>{numbers} already reports this calibration (serial {serial}, calibrated {date}): a corrected certificate is its amendment or replacement (Amend… or Replace… in File › Certificate register); a calibration of its own (e.g. as left after an adjustment) is issued as separate, saying why (on the command line: --separate-calibration REASON)</source>
         <translation>{numbers} 已报告这次校准（编号 {serial}，校准于 {date}）：更正的证书应为其修订版或替代版（文件 › 证书登记册 中的“修订…”或“替代…”）；一次独立的校准（例如调整之后的交付状态）作为独立校准签发，并说明理由（命令行：--separate-calibration REASON）</translation>
+    </message>
+    <message>
+        <source>{number} was withdrawn already ({reason}): a certificate is withdrawn once</source>
+        <translation>{number} 已经作废（{reason}）：一份证书只作废一次</translation>
+    </message>
+    <message>
+        <source>the register&apos;s state (its record count {records}, head {head} and number counters) does not carry the laboratory key&apos;s signature: the last record(s) were deleted with the state set back, or a counter was set back, outside AngleBench; restore the register from a backup</source>
+        <translation>登记册的状态（记录数 {records}、链头 {head} 和编号计数器）没有实验室密钥的签名：在 AngleBench 之外删除了最后几条记录并改回了状态，或改回了计数器；请从备份恢复登记册</translation>
     </message>
     <message>
         <source>{numbers} reports serial {serial}, calibrated {date}, of {makers}, not of {maker}: a maker&apos;s name spelt otherwise is the same maker, and this would be a second certificate of that calibration. Issue it only if it is another maker&apos;s item with the same serial (it is then recorded in the register that you said so; on the command line: --another-makers-item)</source>
@@ -7796,6 +7880,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>covariance of ψ, ω from the tilt fits propagated through the set-up&apos;s exact correction</source>
         <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
+    </message>
+    <message>
+        <source>{quantity}: {trials} trials, seed {seed}, of every input but the tilt</source>
+        <translation>{quantity}：对除倾角外的全部输入量作蒙特卡罗，{trials} 次试验，种子 {seed}</translation>
     </message>
     <message>
         <source>no direction was measured twice; in U the forward set&apos;s errors minus the reverse set&apos;s, about their mean reversal, stand for it (the encoder&apos;s and the autocollimator&apos;s reading noise together)</source>
@@ -8704,6 +8792,15 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>整个记录为同一图样，在所述数值以内</translation>
     </message>
     <message>
+        <source>Readings&apos; rounding, {channel} channel</source>
+        <extracomment>the share of the typed step below which the rounding&apos;s bound left repeated is none, the noise having dithered it (the bound is 0.2 % of the step at σ = δ/2, kept; 10⁻⁸ at σ = δ)</extracomment>
+        <translation>读数的舍入，{channel} 通道</translation>
+    </message>
+    <message>
+        <source>no ADC LSB stated: the step the readings come in, {step} mV, one pattern for the whole record within ±{half} mV (the part the noise does not dither)</source>
+        <translation>未给出 ADC LSB：读数所取的步长 {step} mV，整个记录为同一图样，在 ±{half} mV 以内（噪声未使其抖动的部分）</translation>
+    </message>
+    <message>
         <source>{name}, with order {orders} folded in (they alias at these phases)</source>
         <translation>{name}，含折入的 {orders} 次谐波（二者在这些相位上混叠）</translation>
     </message>
@@ -8924,6 +9021,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget.</source>
+        <extracomment>the digest of the register record&apos;s content (models/register/chain.content_digest), carried in the PDF&apos;s keywords: a record rewritten after issue is found from the PDF</extracomment>
         <translation>未给出、因而未计入 U 的输入量：{inputs}。U 仅包含分量一览表中的输入量。</translation>
     </message>
     <message>
@@ -10908,6 +11006,27 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>{path} 是一个数据库（证书登记册？）；未写入任何内容：请换一个文件名</translation>
     </message>
     <message>
+        <source>a PDF</source>
+        <extracomment>what an output of each flag writes (models.project.file_kind&apos;s names): a file that exists under that name and holds something else is not replaced (thbias2&apos;s run: ``--certificate certificate_positioning.json`` wrote a PDF over a lab&apos;s metadata JSON, no input of that run, without a word). Flags that write text (a CSV, a table) are not judged: any text may be an earlier one of them.</extracomment>
+        <translation>PDF 文件</translation>
+    </message>
+    <message>
+        <source>an XML document</source>
+        <translation>XML 文档</translation>
+    </message>
+    <message>
+        <source>a ZIP archive</source>
+        <translation>ZIP 压缩包</translation>
+    </message>
+    <message>
+        <source>an XLSX workbook</source>
+        <translation>XLSX 工作簿</translation>
+    </message>
+    <message>
+        <source>{flag} {out} exists and is not {kind}: it would be replaced with no way back; nothing was written: choose another name</source>
+        <translation>{flag} {out} 已存在且不是{kind}：写入将无法挽回地替换它；未写入任何内容：请另选文件名</translation>
+    </message>
+    <message>
         <source>{flag}{out} is a folder; nothing was written: name a file in it</source>
         <translation>{flag}{out} 是一个文件夹；未写入任何内容：请指定其中的一个文件</translation>
     </message>
@@ -11097,6 +11216,7 @@ what a name or description may hold that prints as no character of its own: a li
     </message>
     <message>
         <source>the laboratory&apos;s register key {path} cannot be read ({reason})</source>
+        <extracomment>the name of the register_state row that holds the state&apos;s signature</extracomment>
         <translation>无法读取实验室的登记册密钥 {path}（{reason}）</translation>
     </message>
     <message>
@@ -12257,6 +12377,16 @@ Replace it?</source>
         <source>The theodolite accuracy setting {setting} (1σ) differs from the stated standards&apos; u = {u} per reading: the uncertainty budget and the check of the fit&apos;s residuals use {u}, the setting is not used for these results.</source>
         <extracomment>the setting differs from the u the budget uses: which one the certificate rests on</extracomment>
         <translation>经纬仪准确度设置 {setting}（1σ）与所列标准器每个读数的 u = {u} 不同：不确定度分量一览表和拟合残差的检查均采用 {u}，这些结果未采用该设置。</translation>
+    </message>
+    <message>
+        <source>{quantity}: {trials} trials, seed {seed}, of the reading noise alone. The axis tilt, not identified by the elevations and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it. A tilt up to {bound} (stated) in any direction changes the half range by at most {change} (its exact effect ζ(θ) at these rotations with β = {beta}), so the interval is widened by that at both ends and holds for any such tilt</source>
+        <extracomment>how the decided half range is made where the tilt is not identified</extracomment>
+        <translation>{quantity}：{trials} 次试验，种子 {seed}，仅计读数噪声。仰角读数未能辨识、也未扣除的轴倾角，是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量。给定上限 {bound} 以内、任意方向的倾角，至多使半峰峰值改变 {change}（即其在这些转角处对 ζ(θ) 的精确影响，β = {beta}），因此区间两端各加宽该量，对任何这样的倾角均成立</translation>
+    </message>
+    <message>
+        <source>the tilt, not identified and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it; a tilt up to {bound} (stated) in any direction changes the half range by at most {change}, so the interval is widened by that at both ends and holds for any such tilt</source>
+        <extracomment>what the decision says of a tilt not identified that widens its interval, after how the rest was made (the polygon&apos;s, and a theodolite&apos;s decided on the means over passes)</extracomment>
+        <translation>未辨识、也未扣除的倾角是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量；给定上限 {bound} 以内、任意方向的倾角，至多使半峰峰值改变 {change}，因此区间两端各加宽该量，对任何这样的倾角均成立</translation>
     </message>
 </context>
 </TS>
