@@ -22,6 +22,7 @@ from pathlib import Path
 import pytest
 
 from app.main import main
+from tests.ilac_verdict import ilac_verdict
 
 ROOT = Path(__file__).resolve().parents[2]
 SAMPLES = ROOT / "resources" / "samples"
@@ -51,16 +52,6 @@ def _issue(tmp_path: Path, workbench: str, extra: list[str], details: dict) -> s
 def _six(urad: float) -> str:
     """The arcsecond value of ``urad`` to six significant digits, as a reader writes it."""
     return f"{urad / URAD_PER_ARCSEC:.6g}"  # %g drops the trailing zeros
-
-
-def _ilac(value: Decimal, minus: Decimal, plus: Decimal, t: Decimal, rule: str) -> str:
-    if rule == "guarded_binary":
-        return "pass" if value + plus <= t else "fail"
-    if value + plus <= t:
-        return "pass"
-    if value <= t:
-        return "conditional pass"
-    return "conditional fail" if value - minus <= t else "fail"
 
 
 VERDICTS = {"(pass)": "pass", "(fail)": "fail", "Conditional pass": "conditional pass",
@@ -117,4 +108,4 @@ def test_a_converted_t_near_the_limit_redecides_to_the_verdict_printed(tmp_path)
     assert found, text
     value, minus, plus = (Decimal(found[i]) for i in (1, 2, 3))
     statement = text[text.index("Statement of conformity"):]
-    assert _printed_verdict(statement) == _ilac(value, minus, plus, Decimal(t), "guarded")
+    assert _printed_verdict(statement) == ilac_verdict("guarded", value, minus, plus, Decimal(t))

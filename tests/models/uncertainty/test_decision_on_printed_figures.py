@@ -24,6 +24,7 @@ from hypothesis import strategies as st
 from models.certificate.builder import figure_column, uncertainty_column
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
+from tests.ilac_verdict import ilac_verdict
 
 P = 0.9544997361036416  # k = 2 for a normal distribution
 SYMBOL = {"arcsec": '"', "urad": " µrad", "mdeg": " mdeg", "um": " µm"}
@@ -34,25 +35,6 @@ def _budget(expanded: np.ndarray, unit: str) -> UncertaintyBudget:
     """Points whose U is ``expanded`` (u = U/2, normal, exactly known: k = 2)."""
     return UncertaintyBudget((BudgetComponent("noise", "B", "normal", expanded / 2.0, 1.0, 1.0,
                                               math.inf),), expanded.size, P, unit)
-
-
-def _ilac(rule: str, x: Decimal, minus: Decimal, plus: Decimal, t: Decimal,
-          compared: Decimal | None = None) -> str:
-    """ILAC-G8:09/2019 on a value x with its interval [x − U₋, x + U₊] against T; where the
-    value alone is compared with T, ``compared`` (the value the statement says it compares
-    with T, ASTM E29 §6.4) when it prints one."""
-    xc = x if compared is None else compared
-    if rule == "simple":
-        return "pass" if xc <= t else "fail"
-    if rule == "guarded_binary":
-        return "pass" if x + plus <= t else "fail"
-    if x + plus <= t:
-        return "pass"
-    if xc <= t:
-        return "conditional pass"
-    if x - minus <= t:
-        return "conditional fail"
-    return "fail"
 
 
 _ORDER = ("pass", "conditional pass", "conditional fail", "fail")
@@ -143,7 +125,7 @@ def _check_half_range(value, lower, upper, t, rule, unit):
     x, minus, plus = _half_range_figures(c.statement, unit)
     assert max(minus, plus) < t
     compared = _compared(c.statement, unit)
-    redone = _ilac(rule, x, minus, plus, t, compared)
+    redone = ilac_verdict(rule, x, minus, plus, t, compared)
     assert _printed_verdict(c.statement) == c.verdict == redone, (c.statement, c.zones)
     assert _zone_verdict(c.zones, x, rule, compared) == c.verdict, (c.zones, x)
     # never a pass (nor a conditional pass) of a value that ASTM E29 rounds beyond T
@@ -250,7 +232,7 @@ def _check_points(errors, expanded, t, rule, unit):
     # (where T is stated to a finer place than a cell, the point's |e| compared with T
     # itself is E29's rounding to that place, which the statement prints for the deciding
     # point)
-    redone = max((_ilac(rule, abs(v), u, u, t, _e29(abs(e), t) if t.as_tuple().exponent
+    redone = max((ilac_verdict(rule, abs(v), u, u, t, _e29(abs(e), t) if t.as_tuple().exponent
                         < v.as_tuple().exponent else None)
                   for (v, u), e in zip(cells, errors, strict=True)), key=_ORDER.index)
     assert _printed_verdict(c.statement) == c.verdict == redone, (c.statement, cells)
@@ -261,7 +243,7 @@ def _check_points(errors, expanded, t, rule, unit):
     x, u = Decimal(found.group(1)), Decimal(found.group(2))
     assert (x, u) in [(abs(v), w) for v, w in cells]
     compared = _compared(c.statement, unit)
-    assert _ilac(rule, x, u, u, t, compared) == c.verdict
+    assert ilac_verdict(rule, x, u, u, t, compared) == c.verdict
     assert _zone_verdict(c.zones, x, rule, compared) == c.verdict, (c.zones, x)
     # never a pass (nor a conditional pass) of a point that ASTM E29 rounds beyond T
     if c.verdict in ("pass", "conditional pass"):

@@ -24,6 +24,7 @@ from models.certificate.metadata import CertificateMetadata
 from models.quantity import Quantity
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
+from tests.ilac_verdict import ilac_verdict
 
 P = 0.9544997361036416  # k = 2 for a normal distribution
 NUMBER = r"([+-]?\d+(?:\.\d+)?)"
@@ -128,20 +129,6 @@ def test_the_command_line_reads_a_limits_trailing_zeros(tmp_path):
 
 # --- the property -------------------------------------------------------------------------
 
-def _ilac(rule, x, minus, plus, t, xc):
-    if rule == "simple":
-        return "pass" if xc <= t else "fail"
-    if rule == "guarded_binary":
-        return "pass" if x + plus <= t else "fail"
-    if x + plus <= t:
-        return "pass"
-    if xc <= t:
-        return "conditional pass"
-    if x - minus <= t:
-        return "conditional fail"
-    return "fail"
-
-
 def _printed_verdict(statement: str) -> str:
     for said, verdict in (("(pass)", "pass"), ("(fail)", "fail"),
                           ("Conditional pass:", "conditional pass"),
@@ -209,9 +196,9 @@ def test_the_verdict_is_the_printed_figures_and_never_passes_beyond_e29(case):
     if rule == "simple":
         redone = "pass" if xc <= t_number else "fail"
     elif t_unit == "arcsec":
-        redone = _ilac(rule, x, minus, plus, t_number, xc)
+        redone = ilac_verdict(rule, x, minus, plus, t_number, xc)
     else:
-        redone = _ilac(rule, x, minus, plus, t_in_errors, x)
+        redone = ilac_verdict(rule, x, minus, plus, t_in_errors, x)
         if value_decides:
             redone = "conditional pass" if xc <= t_number else "conditional fail"
     assert _printed_verdict(c.statement) == c.verdict == redone, (c.statement, case)
