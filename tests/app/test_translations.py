@@ -353,7 +353,8 @@ def test_the_command_lines_own_words_in_chinese(tmp_path, capsys, samples_dir):
                  "--certificate", str(out), "--language", "zh_CN"]) == 0
     said = capsys.readouterr().err.strip()
     # the missing fields listed with the Chinese enumeration comma (「、」), not ", "
-    assert said.startswith(f"证书已写入 {out}（草稿：缺少证书编号、校准机构")
+    # no reference standard listed: a test report, a draft too (assessment 72 M3)
+    assert said.startswith(f"检测报告已写入 {out}（草稿：缺少报告编号、校准机构")
     assert english_words(said.replace(str(out), "")) == set(), said
 
 
