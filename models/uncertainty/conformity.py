@@ -660,7 +660,13 @@ def compared_with_limit(exact: float, shown: float, places: int, t: float,
     except UnitError:  # a unit the texts print without its symbol
         symbol = ""
     if decimals <= places:
-        return ComparedValue(float(shown), float(t), places, symbol, unit_key, False)
+        # the value as printed, but where its shortest digits end in a 5 exactly on the
+        # printed place (3.55, stored as 3.5499…, prints 3.5), as E29 rounds it (3.6): the
+        # printed figure then is not the one compared, and the statement says so
+        rounded = e29_rounded(exact, places)
+        if abs(rounded - float(shown)) < 0.5 * 10.0 ** -places:
+            return ComparedValue(float(shown), float(t), places, symbol, unit_key, False)
+        return ComparedValue(rounded, float(t), places, symbol, unit_key, True)
     return ComparedValue(e29_rounded(exact, decimals), float(t), decimals, symbol, unit_key,
                          True)
 

@@ -218,3 +218,12 @@ def test_a_limits_trailing_zeros_survive_the_details_saved_and_read_back():
     assert c.verdict == "fail" and "±1.50\" (fail)" in c.statement
     plain = CertificateMetadata.from_dict({"tolerance": 1.5})
     assert plain.to_dict()["tolerance"] == 1.5  # a number stays a number
+
+
+def test_a_value_ending_in_a_five_on_the_printed_place_is_compared_as_e29_rounds_it():
+    """Fresh CI's hypothesis draw: 3.55″ (U −2.0″/+1.0″) printed 3.5″ (the float is 3.5499…)
+    passed ±3.5″ under simple acceptance; E29 rounds 3.55 to 3.6, beyond T."""
+    c = _half_range(3.55, 2.0, 1.0, 3.5, "simple")
+    assert "3.5\" as measured" in c.statement
+    assert c.verdict == "fail", c.statement
+    assert _compared(c.statement) == Decimal("3.6")
