@@ -43,7 +43,6 @@ import csv
 import hashlib
 import io
 import os
-import re
 import sys
 import zipfile
 from pathlib import Path
@@ -51,7 +50,7 @@ from pathlib import Path
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered
-from models.project.atomic_write import write_bytes_atomic
+from models.project.atomic_write import is_temporary_name, write_bytes_atomic
 from models.project.file_kind import file_kind as kind_of_bytes
 from models.project.output_guard import (
     OutputRefused,
@@ -403,7 +402,7 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
                 failed = True
     if not path:
         return 1 if failed else 0
-    if _unfinished_write(path):
+    if is_temporary_name(path):
         out(message(QT_TR_NOOP(
             "{path}: the name of an unfinished write left by an interrupted issue or save "
             "(a temporary file): what it holds is checked below; the file at the final name, "
@@ -481,11 +480,6 @@ def file_kind(data: bytes) -> str:
     .dcc or .xlsx were "NOT in the register"): "pdf", "dcc" (XML), "xlsx" (a ZIP), "csv"
     (other text) or "" (none of them)."""
     return _REGISTER_KIND.get(kind_of_bytes(data), "")
-
-
-def _unfinished_write(path: str) -> bool:
-    """``path`` is named as the temporary file of an atomic write (``.NAME.XXXXXXXX.tmp``)."""
-    return bool(re.fullmatch(r"\..+\.[A-Za-z0-9_]{8}\.tmp", os.path.basename(path)))
 
 
 def _by_kind(record, certificate: str, report: str, unknown: str) -> str:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import contextlib
 import glob
 import os
+import re
 import stat
 import tempfile
 import time
@@ -14,7 +15,8 @@ from pathlib import Path
 from models.project.durable_rename import fsync_directory, replace_durably
 from models.project.output_guard import refuse_database
 
-__all__ = ["fsync_directory", "stale_temporaries", "write_bytes_atomic", "write_text_atomic"]
+__all__ = ["fsync_directory", "is_temporary_name", "stale_temporaries", "write_bytes_atomic",
+           "write_text_atomic"]
 
 
 def _mode_for(target: Path) -> int:
@@ -48,6 +50,13 @@ def _temp_prefix(target: Path) -> str:
     while len(name.encode("utf-8", "surrogateescape")) > room:
         name = name[:-1]
     return f".{name}."
+
+
+def is_temporary_name(path: str | os.PathLike[str]) -> bool:
+    """``path`` is named as the temporary file of a write here (``.NAME.XXXXXXXX.tmp``,
+    :func:`_temp_prefix` and mkstemp's 8 characters): an unfinished write left by an
+    interrupted issue or save."""
+    return bool(re.fullmatch(r"\..+\.[A-Za-z0-9_]{8}\.tmp", os.path.basename(path)))
 
 
 def stale_temporaries(target: str | os.PathLike[str]) -> list[Path]:
