@@ -10,7 +10,6 @@ code they check."""
 from __future__ import annotations
 
 import errno
-import hashlib
 import json
 import os
 
@@ -21,24 +20,10 @@ from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url
 from models.register.store import IssueRequest, Register
+from tests.register_forgery import relinked, stand_in_pdf
 
 META = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01", item_serial="RX-1")
 PROJECT = json.dumps({"workbenches": {"polygon": {"rows": [["0", "0.41"], ["30", "-0.22"]]}}})
-CHAINED = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
-           "item_description", "item_manufacturer", "item_serial", "customer", "operator",
-           "workstation", "supersedes", "revision", "change_note", "project_json",
-           "software_json", "headline_json", "pdf_sha256", "seq", "counter", "counter_value",
-           "os_user", "approver", "dcc_sha256", "document_kind")
-
-
-def _pdf(meta: CertificateMetadata, head: str = "", content: str = "") -> bytes:
-    """A stand-in PDF with a certificate's document information: its title (the number)
-    and keywords (what the register gives it to carry)."""
-    return (f"%PDF-1.4\n/Title (Calibration certificate {meta.certificate_number}) /Keywords "
-            f"(anglebench-register-head-before:{head} anglebench-record-content:{content})"
-            ).encode()
-
-
 def _dcc(meta: CertificateMetadata, pdf: bytes) -> bytes:
     """A DCC that embeds the PDF, as a DCC does."""
     from tests import dcc_documents
@@ -52,7 +37,7 @@ def _issue(n: int, key: str = "", headline: float = 2.88) -> list[tuple[str, byt
     with Register(register_url(), key_file=key) as register:
         for _ in range(n):
             record, pdf = register.issue(IssueRequest("polygon", META, PROJECT,
-                                                      {"peak_to_peak": headline}), _pdf,
+                                                      {"peak_to_peak": headline}), stand_in_pdf,
                                          render_dcc=_dcc)
             made.append((record.number, pdf, register.dcc(record.number)))
     return made
@@ -125,9 +110,7 @@ def test_the_newest_record_rewritten_is_found_from_its_pdf_and_dcc(tmp_path, cap
                     s=row["seq"] - 1)["chain_sha256"]
     row["project_json"] = row["project_json"].replace("0.41", "0.14")
     row["headline_json"] = json.dumps({"peak_to_peak": 1.44})
-    fields = {k: row[k] for k in CHAINED} | {"chain_format": row["chain_format"]}
-    body = json.dumps(fields, sort_keys=True, ensure_ascii=False, separators=(",", ":"))
-    chain = hashlib.sha256(f"{previous}\n{body}".encode()).hexdigest()
+    chain = relinked(previous, row)
     _sql("UPDATE certificates SET project_json = :p, headline_json = :h, chain_sha256 = :c "
          "WHERE number = :n", "UPDATE register_state SET value = :c WHERE name = 'head'",
          p=row["project_json"], h=row["headline_json"], c=chain, n=number)

@@ -12,7 +12,6 @@ imported from the code they check."""
 from __future__ import annotations
 
 import datetime as dt
-import hashlib
 import json
 import os
 import re
@@ -22,6 +21,7 @@ import sqlalchemy as sa
 
 from models.certificate.metadata import CertificateMetadata
 from models.register.store import IssueRequest, Register, RegisterError
+from tests.register_forgery import relinked, stand_in_pdf
 
 META = CertificateMetadata(item_serial="RX-1", item_description="Rotary encoder",
                            customer_name="Acme Optics", calibration_date="2026-11-20",
@@ -29,28 +29,6 @@ META = CertificateMetadata(item_serial="RX-1", item_description="Rotary encoder"
 PROJECT = json.dumps({"format": "anglebench-project", "schema_version": 1,
                       "workbenches": {"polygon": {"rows": [["0", "0.41"], ["30", "-0.22"]]}}})
 ISSUED = dt.datetime(2026, 11, 24, 10, 0, tzinfo=dt.timezone.utc)
-#: the fields of a record of chain format 4 and later, as the chain's documentation lists them
-CHAINED = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
-           "item_description", "item_manufacturer", "item_serial", "customer", "operator",
-           "workstation", "supersedes", "revision", "change_note", "project_json",
-           "software_json", "headline_json", "pdf_sha256", "seq", "counter", "counter_value",
-           "os_user", "approver", "dcc_sha256", "document_kind")
-
-
-def render(meta: CertificateMetadata, head: str = "", content: str = "") -> bytes:
-    """A stand-in PDF that carries what a certificate's keywords carry."""
-    return (f"%PDF-1.4 /Title (Calibration certificate {meta.certificate_number}) /Keywords "
-            f"(anglebench-register-head-before:{head} anglebench-record-content:{content})"
-            ).encode()
-
-
-def _relink(previous: str, row: dict) -> str:
-    fields = {k: row[k] for k in CHAINED}
-    fields["chain_format"] = row["chain_format"]
-    body = json.dumps(fields, sort_keys=True, ensure_ascii=False, separators=(",", ":"))
-    return hashlib.sha256(f"{previous}\n{body}".encode()).hexdigest()
-
-
 def _engine(url: str) -> sa.Engine:
     return sa.create_engine(url.replace("postgresql://", "postgresql+psycopg://"))
 
@@ -99,7 +77,7 @@ def _truncate(url: str, number: str) -> None:
 def test_a_tail_deleted_with_state_and_counter_set_back_is_found_with_the_key(register_url,
                                                                              key):
     with _keyed(register_url, key) as register:
-        first, second = (register.issue(IssueRequest("polygon", META, PROJECT), render)[0]
+        first, second = (register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)[0]
                          for _ in range(2))
         assert register.audit(pdfs=True) == []
     _truncate(register_url, second.number)
@@ -109,15 +87,15 @@ def test_a_tail_deleted_with_state_and_counter_set_back_is_found_with_the_key(re
         assert "deleted with the state set back" in said
         # the number is not issued again: nothing is issued into the register
         with pytest.raises(RegisterError, match="nothing is recorded into a broken chain"):
-            register.issue(IssueRequest("polygon", META, PROJECT), render)
+            register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
     assert [r["number"] for r in _rows(register_url, "SELECT number FROM certificates")] == [
         first.number]
 
 
 def test_a_counter_set_back_alone_is_found_with_the_key(register_url, key):
     with _keyed(register_url, key) as register:
-        register.issue(IssueRequest("polygon", META, PROJECT), render)
-        register.issue(IssueRequest("polygon", META, PROJECT), render)
+        register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
+        register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
     _sql(register_url, "UPDATE counters SET last_value = 0")
     with _keyed(register_url, key) as register:
         assert any("does not carry the laboratory key's signature" in str(p)
@@ -132,7 +110,7 @@ def test_a_genuine_pdf_whose_record_was_deleted_is_lost_not_forged(register_url,
     pdfs = {}
     with _keyed(register_url, key) as register:
         for _ in range(2):
-            record, pdf = register.issue(IssueRequest("polygon", META, PROJECT), render)
+            record, pdf = register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
             pdfs[record.number] = pdf
     last = list(pdfs)[-1]
     _truncate(register_url, last)
@@ -144,13 +122,13 @@ def test_a_genuine_pdf_whose_record_was_deleted_is_lost_not_forged(register_url,
 
 def test_without_the_key_nothing_is_written_into_a_signed_register(register_url, key):
     with _keyed(register_url, key) as register:
-        signed = register.issue(IssueRequest("polygon", META, PROJECT), render)[0]
+        signed = register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)[0]
     before = _rows(register_url, "SELECT * FROM register_state ORDER BY name")
     keyless = Register(register_url, timezone="UTC")
     keyless.clock = lambda: ISSUED
     with keyless:
         assert keyless.signed_unchecked() == 1
-        for attempt in (lambda: keyless.issue(IssueRequest("polygon", META, PROJECT), render),
+        for attempt in (lambda: keyless.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf),
                         lambda: keyless.withdraw(signed.number, "wrong item"),
                         lambda: keyless.set_interval("RX-1", 365)):
             with pytest.raises(RegisterError, match="ANGLEBENCH_REGISTER_KEY is not set"):
@@ -158,7 +136,7 @@ def test_without_the_key_nothing_is_written_into_a_signed_register(register_url,
     assert _rows(register_url, "SELECT * FROM register_state ORDER BY name") == before
     with _keyed(register_url, key) as register:  # the keyed workstations go on issuing
         assert register.problems == []
-        register.issue(IssueRequest("polygon", META, PROJECT), render)
+        register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
 
 
 def test_the_newest_record_rewritten_with_its_chain_recomputed_is_found_from_its_pdf(
@@ -170,9 +148,9 @@ def test_the_newest_record_rewritten_with_its_chain_recomputed_is_found_from_its
 
     with Register(register_url, timezone="UTC") as register:
         register.clock = lambda: ISSUED
-        register.issue(IssueRequest("polygon", META, PROJECT, {"peak_to_peak": 2.88}), render)
+        register.issue(IssueRequest("polygon", META, PROJECT, {"peak_to_peak": 2.88}), stand_in_pdf)
         last, pdf = register.issue(IssueRequest("polygon", META, PROJECT,
-                                                {"peak_to_peak": 2.88}), render)
+                                                {"peak_to_peak": 2.88}), stand_in_pdf)
         assert content_changed(register, "last.pdf", pdf, register.get(last.number)) is None
     carried = re.search(rb"anglebench-record-content:([0-9a-f]{64})", pdf)
     assert carried is not None  # the PDF carries its record's digest
@@ -181,7 +159,7 @@ def test_the_newest_record_rewritten_with_its_chain_recomputed_is_found_from_its
                                    f"{row['seq'] - 1}")[0]["chain_sha256"]
     row["project_json"] = row["project_json"].replace("0.41", "0.14")
     row["headline_json"] = json.dumps({"peak_to_peak": 1.44})
-    chain = _relink(previous, row)
+    chain = relinked(previous, row)
     _sql(register_url, "UPDATE certificates SET project_json = :p, headline_json = :h, "
                        "chain_sha256 = :c WHERE number = :n",
          "UPDATE register_state SET value = :c WHERE name = 'head'",
@@ -201,28 +179,28 @@ def test_an_issue_dated_far_after_the_last_record_is_refused_unless_set(register
     monkeypatch.delenv("ANGLEBENCH_REGISTER_MAX_DAYS", raising=False)
     with Register(register_url, timezone="UTC") as register:
         register.clock = lambda: ISSUED
-        register.issue(IssueRequest("polygon", META, PROJECT), render)
+        register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
         register.clock = lambda: ISSUED + dt.timedelta(days=395)
         with pytest.raises(RegisterError, match=r"395 days after the register's last record"
                                                 r".*ANGLEBENCH_REGISTER_MAX_DAYS=396"):
-            register.issue(IssueRequest("polygon", META, PROJECT), render)
+            register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
         register.clock = lambda: ISSUED + dt.timedelta(days=60)  # within the 366 days
-        second = register.issue(IssueRequest("polygon", META, PROJECT), render)[0]
+        second = register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)[0]
         assert second.issued_at.startswith("2027-01-23")
         register.clock = lambda: ISSUED + dt.timedelta(days=460)  # 400 days after the last
         monkeypatch.setenv("ANGLEBENCH_REGISTER_MAX_DAYS", "400")  # said for this issue
-        register.issue(IssueRequest("polygon", META, PROJECT), render)
+        register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
         monkeypatch.setenv("ANGLEBENCH_REGISTER_MAX_DAYS", "soon")
         with pytest.raises(RegisterError, match="a whole number of days"):
-            register.issue(IssueRequest("polygon", META, PROJECT), render)
+            register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
         # by default a year between calibrations with nothing in between is issued (a lab
         # that calibrates once a year), a year and two days is not
         monkeypatch.delenv("ANGLEBENCH_REGISTER_MAX_DAYS")
         register.clock = lambda: ISSUED + dt.timedelta(days=460 + 365)
-        register.issue(IssueRequest("polygon", META, PROJECT), render)
+        register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
         register.clock = lambda: ISSUED + dt.timedelta(days=460 + 365 + 367)
         with pytest.raises(RegisterError, match=r"367 days after"):
-            register.issue(IssueRequest("polygon", META, PROJECT), render)
+            register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
         assert len(register.list()) == 4
 
 
@@ -247,7 +225,7 @@ def test_a_signed_register_of_0_8_20_verifies_and_signs_its_state_from_its_next_
         assert register.problems == [] and register.audit(pdfs=True) == []
         assert register.chain_head() == OLD_HEAD
         register.clock = lambda: ISSUED + dt.timedelta(days=3)
-        new = register.issue(IssueRequest("polygon", META, PROJECT), render)[0]
+        new = register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)[0]
         assert new.number == "AB-2026-0003" and new.chain_format == 5
         assert register.chain_before(new.number) == OLD_HEAD
         assert register.audit(pdfs=True) == []
@@ -266,7 +244,7 @@ def test_a_certificate_withdrawn_twice_is_refused_in_the_words_of_withdrawal(tmp
     """reg72 #11: the second withdrawal said "it cannot be amended or replaced"."""
     with Register(f"sqlite:///{tmp_path / 'r.sqlite'}", timezone="UTC") as register:
         register.clock = lambda: ISSUED
-        number = register.issue(IssueRequest("polygon", META, PROJECT), render)[0].number
+        number = register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)[0].number
         register.withdraw(number, "wrong item")
         with pytest.raises(RegisterError) as refused:
             register.withdraw(number, "again")
