@@ -2137,6 +2137,13 @@ class Register:
                 "register verify'"), problem=others[0]))
         path = self._mark_path()
         mark = read_mark(path, self._key) if path is not None and self._key else None
+        if not last_number.strip() and not mark:
+            # no signed mark tells how far the numbers went: the person must (a restore
+            # acknowledged without it issued the lost numbers again)
+            raise RegisterError(message(QT_TR_NOOP(
+                "give the last certificate number known issued (--last-number: from the lab's "
+                "log, the customers' copies): without the laboratory's key and its high-water "
+                "mark the register cannot tell how far its numbers went before the loss")))
         counters_t, entries = self._schema.COUNTERS, self._schema.ENTRIES
         sa = self._sa
         with self._write() as conn:

@@ -200,7 +200,10 @@ def test_a_number_found_issued_twice_is_recorded_and_stops_issuing_until_acknowl
             _issue(register)
         with pytest.raises(RegisterError, match="a named person"):
             register.acknowledge_loss("", "")
-        body = register.acknowledge_loss("I. Chen", "state copied back by someone")
+        with pytest.raises(RegisterError, match="give the last certificate number"):
+            register.acknowledge_loss("I. Chen", "state copied back by someone")
+        body = register.acknowledge_loss("I. Chen", "state copied back by someone",
+                                         "AB-2026-0002")
         assert register.problems == [] and body["by"] == "I. Chen"
         assert _issue(register)[0].number == "AB-2026-0003"
         loss = register.lost_acknowledged("AB-2026-0002")
