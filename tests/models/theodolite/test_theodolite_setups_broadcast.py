@@ -196,8 +196,8 @@ def random_tilt_case(rng):
 
 
 #: seeds of random_tilt_case: 56 and 138 draw cases where 0.8.21's copy, rounding P · n its
-#: own way, gave other last bits than its public ζ (9e-13″ and 1.1e-11″ less; 7 of seeds
-#: 0–599 do); 1, 2 and 3 draw any
+#: own way, gave other last bits than the search over its public ζ (9e-13″ and 1.1e-11″
+#: above it; 7 of seeds 0–599 do); 1, 2 and 3 draw any
 TILT_SEEDS = (56, 138, 1, 2, 3)
 
 
