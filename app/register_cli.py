@@ -699,9 +699,10 @@ def run_register(argv: list[str]) -> int:
                     from app.certificate_issue import refuse_issued_files
 
                     try:  # an issued file (another certificate's PDF…) is never replaced
-                        refuse_issued_files(register, [
-                            (flag, path) for flag, path in outputs
-                            if path and not _holds(path, register, record, flag)])
+                        for said in refuse_issued_files(register, [
+                                (flag, path) for flag, path in outputs
+                                if path and not _holds(path, register, record, flag)]):
+                            _say(f"anglebench register: {rendered(said, words)}")  # kept
                         refuse_other_kinds(outputs)  # nor a file of another kind
                     except OutputRefused as exc:
                         _say(f"anglebench register: {rendered(reason_of(exc), words)}")
@@ -756,7 +757,8 @@ def run_register(argv: list[str]) -> int:
             from app.certificate_issue import refuse_issued_files
 
             try:  # an issued PDF, DCC or results file is never replaced (rev63 F5)
-                refuse_issued_files(register, [("", args.out)])
+                for said in refuse_issued_files(register, [("", args.out)]):
+                    _say(f"anglebench register: {rendered(said, words)}")  # a file kept
             except OutputRefused as exc:
                 _say(f"anglebench register: {rendered(reason_of(exc), words)}")
                 return EXIT_BAD_INPUT
