@@ -665,6 +665,8 @@ def run_register(argv: list[str]) -> int:
             sys.stdout.write(rendered(message(QT_TR_NOOP("CHANGED AFTER ISSUE: {problem}"),
                                               problem=reason_of(exc)), words) + "\n")
             return EXIT_REGISTER_CHANGED
+        # a write that waits for another's lock says so at once, not after a silent minute
+        register.on_wait = lambda said: _say(f"anglebench register: {rendered(said, words)}")
         with register:
             if args.command != "verify":
                 for problem in register.problems:

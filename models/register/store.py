@@ -20,6 +20,7 @@ serialises the chain's growth and every statement has a lock timeout.
 from __future__ import annotations
 
 import builtins
+import contextlib
 import dataclasses
 import datetime as dt
 import errno
@@ -50,6 +51,8 @@ from models.register.chain import (
     link,
 )
 from models.register.wording import DOCUMENT_KINDS, kind_words
+from models.register.writer_note import holder as writer_holder
+from models.register.writer_note import remove_note, write_note
 
 if TYPE_CHECKING:
     from sqlalchemy.engine import Connection
@@ -307,6 +310,11 @@ LOCK_TIMEOUT_S = 20
 CONNECT_TIMEOUT_S = 30
 #: how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`)
 TURN_TIMEOUT_S = 120
+#: how long a write to a SQLite register waits for its write lock before giving up
+BUSY_TIMEOUT_S = 60
+#: how long a write waits for that lock in silence before it says it is waiting, and for
+#: whom (reg72 #8: a minute of silence, then "database is locked")
+WAIT_NOTICE_S = 1.5
 
 
 @dataclass(frozen=True)
@@ -416,6 +424,12 @@ class Register:
         self._intervals_per_serial = False
         self.timezone = lab_timezone(timezone)
         self._sqlite_path = ""
+        #: told, at once, when a write waits for the SQLite register's write lock held by
+        #: another process (what it waits for, and for how long at most): the command line
+        #: says it on stderr, the window in its status line. None: nobody is told
+        self.on_wait: Callable[[Message], None] | None = None
+        #: this process noted itself as the writer beside the database (writer_note.py)
+        self._noted = False
         try:
             if self.is_sqlite:
                 path = self.url.split("///", 1)[1] if "///" in self.url else ""
@@ -429,12 +443,16 @@ class Register:
                         file.parent.mkdir(parents=True, exist_ok=True)
                 if self.read_only:
                     self.engine = sa.create_engine(self._read_only_uri(file),
-                                                   connect_args={"timeout": 60})
+                                                   connect_args={"timeout": BUSY_TIMEOUT_S})
                     sa.event.listen(self.engine, "connect", _sqlite_connect_read_only)
+                    sa.event.listen(self.engine, "begin", _sqlite_begin)
                 else:
-                    self.engine = sa.create_engine(self.url, connect_args={"timeout": 60})
+                    self.engine = sa.create_engine(self.url,
+                                                   connect_args={"timeout": BUSY_TIMEOUT_S})
                     sa.event.listen(self.engine, "connect", _sqlite_connect)
-                sa.event.listen(self.engine, "begin", _sqlite_begin)
+                    sa.event.listen(self.engine, "begin", self._sqlite_begin)
+                    sa.event.listen(self.engine, "commit", self._write_ended)
+                    sa.event.listen(self.engine, "rollback", self._write_ended)
             else:
                 args: dict[str, Any] = {
                     "application_name": f"anglebench {_os_user()}@{socket.gethostname()} "
@@ -645,9 +663,72 @@ class Register:
                 reason = message(QT_TR_NOOP(
                     "waited {s} s for the register's lock, held by {holder}"),
                     s=LOCK_TIMEOUT_S, holder=self._lock_holders() or "?")
+            elif self._sqlite_path and _is_busy(getattr(exc, "orig", None)):
+                holder = writer_holder(self._sqlite_path)
+                reason = message(QT_TR_NOOP(
+                    "waited {s} s for the register's lock, held by {holder}"),
+                    s=BUSY_TIMEOUT_S, holder=holder.text()) if holder else message(
+                    QT_TR_NOOP("waited {s} s for the register's lock, held by another "
+                               "program, which left no note of who it is"), s=BUSY_TIMEOUT_S)
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=reason)) from None
+
+    def _sqlite_begin(self, conn) -> None:
+        """A write takes the lock at once (writers queue instead of failing); a read takes
+        none (a deferred transaction). A write that finds the lock held waits
+        :data:`WAIT_NOTICE_S` in silence, then tells :attr:`on_wait` that it is waiting,
+        for whom (the holder's note beside the database, writer_note.py) and for how long
+        at most, and waits the rest of :data:`BUSY_TIMEOUT_S` as before (reg72 #8: a minute
+        of silence, then "database is locked"). With the lock, it notes itself as the
+        writer until its transaction ends."""
+        import sqlite3
+
+        if conn.get_execution_options().get("anglebench_read") or not self._sqlite_path:
+            _sqlite_begin(conn)
+            return
+        raw = conn.connection.dbapi_connection
+        start = time.monotonic()
+        raw.execute(f"PRAGMA busy_timeout={int(WAIT_NOTICE_S * 1000)}")
+        try:
+            try:
+                raw.execute("BEGIN IMMEDIATE")
+            except sqlite3.OperationalError as exc:  # waited: said, then waited on
+                if _is_busy(exc):
+                    self._tell_waiting()
+                rest = max(BUSY_TIMEOUT_S - (time.monotonic() - start), 0.0)
+                raw.execute(f"PRAGMA busy_timeout={int(rest * 1000)}")
+                conn.exec_driver_sql("BEGIN IMMEDIATE")  # (its error said as before)
+        finally:
+            raw.execute(f"PRAGMA busy_timeout={BUSY_TIMEOUT_S * 1000}")
+        write_note(self._sqlite_path)
+        self._noted = True
+
+    def _write_ended(self, _conn) -> None:
+        """A transaction committed or rolled back: this process's writer note removed."""
+        if self._noted:
+            self._noted = False
+            remove_note(self._sqlite_path)
+
+    def _tell_waiting(self) -> None:
+        """:attr:`on_wait` told that a write waits for the lock: the register, who holds
+        the lock (since when), how long it will wait at most."""
+        if self.on_wait is None:
+            return
+        holder = writer_holder(self._sqlite_path)
+        if holder is not None:
+            said = message(QT_TR_NOOP(
+                "waiting for the register at {path}: its write lock is held by {holder} "
+                "since {since}; giving up after {s} s unless it is released"),
+                path=self._sqlite_path, holder=holder.text(), since=holder.since,
+                s=BUSY_TIMEOUT_S)
+        else:
+            said = message(QT_TR_NOOP(
+                "waiting for the register at {path}: its write lock is held by another "
+                "program, which left no note of who it is; giving up after {s} s unless it "
+                "is released"), path=self._sqlite_path, s=BUSY_TIMEOUT_S)
+        with contextlib.suppress(Exception):  # a view that cannot show it stops no issue
+            self.on_wait(said)
 
     def _disk_full(self, path: str | None = None) -> Message:
         """What a write that found the disk full says: where (the file the system named, or
@@ -2744,6 +2825,12 @@ def _is_io_error(exc: Exception) -> bool:
         "disk I/O error" in str(orig or ""))
 
 
+def _is_busy(error: object) -> bool:
+    """SQLite's SQLITE_BUSY ("database is locked"): another connection holds the lock."""
+    return getattr(error, "sqlite_errorname", "").startswith("SQLITE_BUSY") or (
+        "database is locked" in str(error or ""))
+
+
 def _reason(exc: Exception) -> str:
     text = str(getattr(exc, "orig", None) or exc).strip().splitlines()
     return text[0] if text else type(exc).__name__
@@ -2753,7 +2840,7 @@ def _sqlite_connect(dbapi_connection, _record) -> None:
     dbapi_connection.isolation_level = None  # the driver's own transactions off: ours below
     cursor = dbapi_connection.cursor()
     cursor.execute("PRAGMA journal_mode=WAL")
-    cursor.execute("PRAGMA busy_timeout=60000")
+    cursor.execute(f"PRAGMA busy_timeout={BUSY_TIMEOUT_S * 1000}")
     cursor.close()
 
 
