@@ -874,8 +874,11 @@ class Register:
         review F3: only the same text was skipped, and the commit then refused the number
         allocated, for every issue of the scheme). So is a number that a number in the
         register reads as an amendment of (:meth:`_check_amendment_form`: with
-        "AB-2026-0009-A1" typed, AB-2026-0009 is skipped)."""
+        "AB-2026-0009-A1" typed, AB-2026-0009 is skipped). And so is a number that prints
+        the fields of one issued with other separators or none (scheme_identity.py: reg72
+        #11, ``AB{year}{seq:04d}`` issued AB20260001 beside AB-2026-0001)."""
         from models.register.identifiers import amendment_form_keys, amendment_stems, identifier_keys
+        from models.register.scheme_identity import fields_issued, number_pattern
 
         sa, schema = self._sa, self._schema
         name = _counter_name(scheme, date)
@@ -897,7 +900,9 @@ class Register:
                     key in keys for key, keys in zip(identifier_keys(number), taken,
                                                      strict=False)) and not any(
                     key in found for key, found in zip(amendment_form_keys(number), stems,
-                                                       strict=True)):
+                                                       strict=True)) and fields_issued(
+                    number_pattern(scheme, value, date.year, date.month, date.day),
+                    issued) is None:
                 return name, number, before, value
             value += 1
         raise RegisterError(message(
