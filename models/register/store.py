@@ -473,6 +473,8 @@ class Register:
             journal = Path(f"{self._sqlite_path}-wal")
             if self.read_only and journal.exists() and journal.stat().st_size > 0:
                 raise RegisterError(self._unread_journal()) from None
+            if self._full(exc):  # reg72 #7: on opening, its WAL index could not be made
+                raise RegisterError(self._disk_full()) from None
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -632,6 +634,8 @@ class Register:
                                            postgresql_readonly=True)
                 yield conn
         except self._sa.exc.SQLAlchemyError as exc:
+            if self._full(exc):  # a new connection's WAL index could not be made (reg72 #7)
+                raise RegisterError(self._disk_full()) from None
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -656,7 +660,7 @@ class Register:
                 raise RegisterError(self._disk_full(exc.filename)) from None
             raise
         except self._sa.exc.SQLAlchemyError as exc:  # a unique number taken meanwhile too
-            if _is_disk_full(exc) or (_is_io_error(exc) and self._no_room()):
+            if self._full(exc):
                 raise RegisterError(self._disk_full()) from None
             reason = _reason(exc)
             if getattr(getattr(exc, "orig", None), "sqlstate", "") == "55P03":
@@ -739,6 +743,14 @@ class Register:
         return message(QT_TR_NOOP(
             "the disk is full at {path}: nothing was recorded; the register is unchanged "
             "(free some space and try again)"), path=where)
+
+    def _full(self, exc: Exception) -> bool:
+        """A database error that is a full disk: said so (SQLITE_FULL, PostgreSQL's
+        disk_full, ENOSPC), or SQLite's I/O error with no room left in the register's folder
+        (:meth:`_no_room`) — on a full tmpfs SQLite fails already on connecting, when its
+        "PRAGMA journal_mode=WAL" cannot map the WAL index (reg72 #7: the register was opened
+        before any write, and its "disk I/O error" was said as it was)."""
+        return _is_disk_full(exc) or (_is_io_error(exc) and self._no_room())
 
     def _no_room(self) -> bool:
         """The SQLite register's folder has (next to) no free space: SQLite says "disk I/O
