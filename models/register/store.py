@@ -940,7 +940,7 @@ class Register:
             "issue would go backwards against the numbers. The lab's time zone changed "
             "between the two issues (ANGLEBENCH_TIMEZONE, or the window's setting): issue "
             "in the zone the lab dates its certificates in, or in this zone from {resumes} "
-            "on; nothing was issued"),
+            "on"),
             date=issue_date.isoformat(), zone=str(zone), offset=f"{offset[:3]}:{offset[3:]}",
             number=last.number, then=last.issue_date, at=last.issued_at,
             resumes=from_then.isoformat())
@@ -972,15 +972,19 @@ class Register:
         return format_certificate_number(scheme, next_sequence, date)
 
     def _check_free(self, conn, number: str, typed: bool = True) -> None:
-        """Raise RegisterError if ``number``, or one that prints alike (same_identifier), was
-        issued. ``typed``: the number was typed (the message says to leave it empty); else
-        the register allocated it (the message names ``register continue``)."""
+        """Raise RegisterError if ``number``, or one that prints alike (same_identifier) or
+        has its letters and digits with other separators or none (scheme_identity; reg72
+        #11), was issued. ``typed``: the number was typed (the message says to leave it
+        empty); else the register allocated it (the message names ``register continue``)."""
         from models.register.identifiers import same_identifier
+        from models.register.scheme_identity import separators_aside
 
         c = self._schema.CERTIFICATES.c
+        joined = separators_aside(number)
         row = next((r for r in conn.execute(self._sa.select(
             c.number, c.issued_at, c.workbench, c.item_serial).order_by(c.id))
-            if r.number == number or same_identifier(r.number, number)), None)
+            if r.number == number or same_identifier(r.number, number)
+            or separators_aside(r.number) == joined), None)
         if row is None:
             return
         said = {"number": row.number if row.number == number else f"{number} ({row.number})",

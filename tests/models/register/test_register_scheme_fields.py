@@ -11,7 +11,7 @@ import datetime as dt
 import pytest
 
 from models.certificate.metadata import CertificateMetadata
-from models.register.store import IssueRequest, Register
+from models.register.store import IssueRequest, Register, RegisterError
 
 WHEN = dt.datetime(2026, 12, 6, 9, 0, tzinfo=dt.timezone.utc)
 
@@ -53,3 +53,17 @@ def test_other_letters_are_another_number(tmp_path):
         register.clock = lambda: WHEN
         _issue(register, "AB-{year}-{seq:04d}", "S-1")
         assert _issue(register, "CD{year}{seq:04d}", "S-2") == "CD20260001"
+
+
+@pytest.mark.parametrize("typed", ["AB20260002", "ab2026/0002", "AB 2026 0002"])
+def test_a_typed_number_of_an_issued_ones_letters_and_digits_is_refused(tmp_path, typed):
+    with Register(f"sqlite:///{tmp_path / 'r.sqlite'}", timezone="UTC") as register:
+        register.clock = lambda: WHEN
+        issued = [_issue(register, "AB-{year}-{seq:04d}", f"S-{n}") for n in (1, 2)]
+        meta = CertificateMetadata(approver="Dr. Li", calibration_date="2026-12-01",
+                                   item_serial="S-9", certificate_number=typed)
+        with pytest.raises(RegisterError) as refused:
+            register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                           lambda m, head="": b"%PDF")
+        assert f"({issued[1]}) was issued on 2026-12-06" in str(refused.value)
+        assert [r.number for r in register.list()] == issued[::-1]

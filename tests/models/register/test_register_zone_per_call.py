@@ -50,7 +50,7 @@ def test_an_issue_dated_before_the_last_certificate_in_another_zone_is_refused(t
         f"Etc/GMT+12 (UTC-12:00), before the register's last certificate, {first.number}, "
         f"dated 2026-12-07 (issued {first.issued_at};")
     assert "the dates of issue would go backwards against the numbers" in said
-    assert "in this zone from 2026-12-07T00:00:00-12:00 on; nothing was issued" in said
+    assert said.endswith("in this zone from 2026-12-07T00:00:00-12:00 on")
     with Register(url) as register:
         assert [r.number for r in register.list()] == [first.number]
     # in the lab's zone the number that was not used is the next; then in UTC−12 once the
