@@ -20,6 +20,7 @@ import os
 import socket
 from dataclasses import dataclass
 
+from models.messages import QT_TR_NOOP, Message, message
 from models.project.output_guard import WRITER_NOTE_SUFFIX
 
 __all__ = ["Holder", "holder", "note_path", "remove_note", "write_note"]
@@ -34,10 +35,10 @@ class Holder:
     user: str
     since: str  # ISO 8601, UTC, to the second
 
-    def text(self) -> str:
+    def text(self) -> Message:
         """``user@host, process 1234`` (the user left out when unknown)."""
         who = f"{self.user}@{self.host}" if self.user else self.host
-        return f"{who}, process {self.pid}"
+        return message(QT_TR_NOOP("{who}, process {pid}"), who=who, pid=self.pid)
 
 
 def note_path(database: str) -> str:
