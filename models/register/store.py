@@ -697,12 +697,12 @@ class Register:
         try:
             try:
                 raw.execute("BEGIN IMMEDIATE")
-            except sqlite3.OperationalError as exc:  # waited: said, then waited on
-                if _is_busy(exc):
+            except sqlite3.Error as exc:  # waited (said, then waited on), or failed: tried
+                if _is_busy(exc):  # again through SQLAlchemy, whose error is said as before
                     self._tell_waiting()
                 rest = max(BUSY_TIMEOUT_S - (time.monotonic() - start), 0.0)
                 raw.execute(f"PRAGMA busy_timeout={int(rest * 1000)}")
-                conn.exec_driver_sql("BEGIN IMMEDIATE")  # (its error said as before)
+                conn.exec_driver_sql("BEGIN IMMEDIATE")
         finally:
             raw.execute(f"PRAGMA busy_timeout={BUSY_TIMEOUT_S * 1000}")
         write_note(self._sqlite_path)
