@@ -148,3 +148,32 @@ def test_summary_u_of_the_set_up_converted_from_its_value(capsys, samples_dir):
         assert len(found.group(1).split(".")[1]) == max(4, _two_significant(u_deg))
         assert float(found.group(1)) == pytest.approx(data[f"{key}_deg"], abs=10.0 ** -max(
             4, _two_significant(u_deg)))
+
+
+@pytest.mark.parametrize(("kind", "key"), [("theodolite", "corrected_error_arcsec"),
+                                           ("polygon", "mean_corrected_error_arcsec")])
+def test_summary_range_converted_from_its_unrounded_ends(capsys, samples_dir, kind, key):
+    """Assessment 72 L5: the summary read in µrad or mdeg gave the corrected error's range
+    from its ends rounded in arcseconds ("−7.66 µrad", −1.58″ converted, where the end is
+    −7.644 µrad; the polygon's "−0.485 µrad" for −0.10″). Each end is the JSON's unrounded
+    one converted, then rounded at the arcsecond figure's resolution carried over (two
+    decimals of ″ are two of µrad, three of mdeg), the peak-to-peak the ends' difference as
+    printed."""
+    import json
+
+    sample = str(samples_dir / f"{kind}_sample.csv")
+    assert main(["analyze", kind, sample, "--json"]) == 0
+    errors = [x for x in json.loads(capsys.readouterr().out)[key] if x is not None]
+    for unit, decimals in (("urad", 2), ("mdeg", 3)):
+        assert main(["analyze", kind, sample, "--unit", unit]) == 0
+        out = capsys.readouterr().out
+        line = next(x for x in out.splitlines() if x.startswith("Corrected error"))
+        s = re.escape(SYMBOL[unit])
+        found = re.search(rf"([+-][\d.]+){s} … ([+-][\d.]+){s} \(peak-to-peak ([\d.]+){s}",
+                          line)
+        assert found, line
+        low, high, ptp = found.groups()
+        f = PER_ARCSEC[unit]
+        assert Decimal(low) == Decimal(_fixed(min(errors) * f, decimals)), line
+        assert Decimal(high) == Decimal(_fixed(max(errors) * f, decimals)), line
+        assert Decimal(ptp) == Decimal(high) - Decimal(low), line
