@@ -34,13 +34,14 @@ target unit by the same rule:
 from __future__ import annotations
 
 import math
+from typing import cast
 
 from models.quantity import UnitError, unit
 from models.uncertainty.rounding import stated_interval, uncertainty_decimals
 
 __all__ = ["CONVERTED_LIMIT_DIGITS", "PrintedFigure", "PrintedRange", "converted_limit",
            "interval_range", "printed", "printed_interval_figures", "printed_range_figures",
-           "rounded_to", "StatedLimit", "StatedTolerance", "tolerance_figure"]
+           "rounded_to", "StatedLimit", "StatedTolerance", "tolerance_figure", "ZoneLimit"]
 
 
 def rounded_to(value: float, decimals: int, rounding: str = "nearest") -> float:
@@ -170,6 +171,40 @@ class PrintedFigure(str):
                              less=None if self.less is None else self.less * factor,
                              stated_exactly=self.stated_exactly,
                              resolution_only=self.resolution_only)
+
+
+class ZoneLimit(PrintedFigure):
+    """A decision zone's limit, T less the printed U₊ (``side`` −1) or plus the printed U₋
+    (+1), ``band`` that printed U, rounded down to ``decimals`` (so that a printed value lies
+    at or below it exactly when it lies at or below T ∓ U). Read in another unit it is made
+    there from T converted and the U as printed there, to the decimal of that U: the zones
+    beside U = 2.4 µrad read 4.6 µrad, not 4.58 µrad (0.94″ converted with the decimal of
+    U = 0.50″: assessment 72 L4)."""
+
+    limit: float
+    band: PrintedFigure
+    side: int
+
+    def __new__(cls, limit: float, band: PrintedFigure, side: int, symbol: str,
+                decimals: int) -> ZoneLimit:
+        made = cast(ZoneLimit, PrintedFigure.__new__(cls, float(limit) + side * band.shown,
+                                                     symbol, decimals=decimals,
+                                                     rounding="down"))
+        made.limit, made.band, made.side = float(limit), band, side
+        return made
+
+    def __getnewargs_ex__(self):  # copied, pickled
+        return (self.limit, self.band, self.side, self.symbol, self.decimals), {}
+
+    def to(self, key: str) -> PrintedFigure:
+        band = self.band.to(key)
+        if band is self.band or self.decimals is None:
+            return self
+        factor = unit(self.band.unit_key).size / unit(band.unit_key).size
+        symbol = unit(key).written() if self.symbol.strip() else ""
+        # the zones' decimal beside U's as it was, in the unit read (U's own there)
+        decimals = max(0, self.decimals + band.places - self.band.places)
+        return ZoneLimit(self.limit * factor, band, self.side, symbol, decimals)
 
 
 class PrintedRange(str):
