@@ -144,14 +144,17 @@ def specimen_document(document):
     results as printed (a number the register refuses, so it cannot clash with an issued
     one); never recorded. The same readings, settings and details give the same number;
     other results another (until 0.8.18 the details alone: the polygon sample, its one set
-    and its run with a CMC were all SPECIMEN-4ECF9DB2)."""
+    and its run with a CMC were all SPECIMEN-4ECF9DB2). The language it is printed in is
+    not part of it: the same results in English, Chinese or both are one specimen (until
+    0.8.21 the details' ``language`` was hashed with them, so the theodolite sample in en
+    and zh were SPECIMEN-9D13E820 and SPECIMEN-9C7ACC74: assessment 72 L8)."""
     import hashlib
 
     printed = [str(document.conformity.statement), *map(str, document.settings)]
     for table in (document.parameters, document.results, document.statistics):
         printed += ["\x1f".join(map(str, row)) for row in table.rows]
-    stamp = hashlib.sha256(repr((document.metadata.to_dict(), printed)).encode()
-                           ).hexdigest()[:8].upper()
+    details = {k: v for k, v in document.metadata.to_dict().items() if k != "language"}
+    stamp = hashlib.sha256(repr((details, printed)).encode()).hexdigest()[:8].upper()
     number = f"SPECIMEN-{stamp}"
     return dataclasses.replace(
         document, specimen=True,
