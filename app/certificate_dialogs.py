@@ -219,7 +219,11 @@ class CertificateDialogs:
         self.window.tell(title, text)
 
     def show_status(self, text: str, milliseconds: int) -> None:
-        self.window.statusBar().showMessage(text, milliseconds)
+        bar = self.window.statusBar()
+        bar.showMessage(text, milliseconds)
+        # painted now: the register may be about to wait for another's lock on this thread
+        # (no event is handled meanwhile, so nothing else can run)
+        bar.repaint()
 
     def wait_cursor(self, on: bool) -> None:
         if on:

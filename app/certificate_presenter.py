@@ -484,10 +484,15 @@ class CertificatePresenter:
                 "changed.").format(number=revision.number), 15000)
 
     def open_register(self):
-        """The register (RegisterError when it cannot be opened)."""
-        from models.register.store import Register
+        """The register (RegisterError when it cannot be opened). A write that waits for
+        another process's write lock says so in the status line at once (reg72 #8: the
+        window stood a silent minute, then said "database is locked")."""
+        from models.register.store import BUSY_TIMEOUT_S, Register
 
-        return Register(self.register_url(), timezone=self.lab_timezone())
+        register = Register(self.register_url(), timezone=self.lab_timezone())
+        register.on_wait = lambda said: self.view.show_status(
+            translated(said), (BUSY_TIMEOUT_S + 10) * 1000)
+        return register
 
     def start_revision(self, revision: PendingRevision) -> None:
         """The next certificate of that workbench amends or replaces ``revision.number``."""

@@ -786,6 +786,8 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
 
     try:
         with Register(url) as register:
+            # a write that waits for another's lock says so at once (reg72 #8)
+            register.on_wait = lambda said: _say(f"anglebench analyze: {rendered(said, words)}")
             dcc = ((lambda document, pdf: _dcc_of(args, kind, result, document, pdf, words,
                                                   settings))
                    if args.dcc else None)

@@ -690,6 +690,8 @@ def run_register(argv: list[str]) -> int:
             sys.stdout.write(rendered(message(QT_TR_NOOP("CHANGED AFTER ISSUE: {problem}"),
                                               problem=reason_of(exc)), words) + "\n")
             return EXIT_REGISTER_CHANGED
+        # a write that waits for another's lock says so at once, not after a silent minute
+        register.on_wait = lambda said: _say(f"anglebench register: {rendered(said, words)}")
         with register:
             if args.command != "verify":
                 for problem in register.problems:
@@ -724,9 +726,10 @@ def run_register(argv: list[str]) -> int:
                     from app.certificate_issue import refuse_issued_files
 
                     try:  # an issued file (another certificate's PDF…) is never replaced
-                        refuse_issued_files(register, [
-                            (flag, path) for flag, path in outputs
-                            if path and not _holds(path, register, record, flag)])
+                        for said in refuse_issued_files(register, [
+                                (flag, path) for flag, path in outputs
+                                if path and not _holds(path, register, record, flag)]):
+                            _say(f"anglebench register: {rendered(said, words)}")  # kept
                         refuse_other_kinds(outputs)  # nor a file of another kind
                     except OutputRefused as exc:
                         _say(f"anglebench register: {rendered(reason_of(exc), words)}")
@@ -805,7 +808,8 @@ def run_register(argv: list[str]) -> int:
             from app.certificate_issue import refuse_issued_files
 
             try:  # an issued PDF, DCC or results file is never replaced (rev63 F5)
-                refuse_issued_files(register, [("", args.out)])
+                for said in refuse_issued_files(register, [("", args.out)]):
+                    _say(f"anglebench register: {rendered(said, words)}")  # a file kept
             except OutputRefused as exc:
                 _say(f"anglebench register: {rendered(reason_of(exc), words)}")
                 return EXIT_BAD_INPUT

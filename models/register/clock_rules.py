@@ -28,7 +28,8 @@ from models.messages import QT_TR_NOOP, message
 from models.register.store import RegisterError
 
 __all__ = ["CONFIRM_AFTER_DAYS", "DateToConfirm", "LastChained", "clock_checked",
-           "correction_refusal", "last_chained", "parse_confirmed_date"]
+           "correction_refusal", "last_certificate_since_correction", "last_chained",
+           "parse_confirmed_date"]
 
 #: an issue dated more than this many days after the register's last chained record asks
 #: the person to confirm today's date (a lab that issues weekly is not asked; a clock a
@@ -73,6 +74,18 @@ def last_chained(conn, sa, schema) -> LastChained | None:
         return LastChained(cert.seq, _parse_time(cert.issued_at), cert.number,
                            cert.workstation or "?", cert.os_user or "?")
     return None
+
+
+def last_certificate_since_correction(conn, sa, schema):
+    """The last certificate (its number, times, date of issue, workstation) chained after the
+    register's last clock correction, or None: the one an issue's date is compared with so
+    that dates of issue do not go backwards (reg72 #10), a record dated by a clock set ahead
+    and corrected since aside."""
+    c, e = schema.CERTIFICATES.c, schema.ENTRIES.c
+    corrected = conn.execute(sa.select(sa.func.max(e.seq)).where(
+        e.kind == "clock_correction")).scalar_one_or_none() or 0
+    return conn.execute(sa.select(c.issued_at, c.number, c.workstation, c.issue_date)
+                        .where(c.seq > corrected).order_by(c.seq.desc()).limit(1)).first()
 
 
 def parse_confirmed_date(text: str) -> dt.date | None:

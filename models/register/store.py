@@ -51,6 +51,8 @@ from models.register.chain import (
     link,
 )
 from models.register.wording import DOCUMENT_KINDS, kind_words
+from models.register.writer_note import holder as writer_holder
+from models.register.writer_note import remove_note, write_note
 
 if TYPE_CHECKING:
     from sqlalchemy.engine import Connection
@@ -328,6 +330,11 @@ LOCK_TIMEOUT_S = 20
 CONNECT_TIMEOUT_S = 30
 #: how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`)
 TURN_TIMEOUT_S = 120
+#: how long a write to a SQLite register waits for its write lock before giving up
+BUSY_TIMEOUT_S = 60
+#: how long a write waits for that lock in silence before it says it is waiting, and for
+#: whom (reg72 #8: a minute of silence, then "database is locked")
+WAIT_NOTICE_S = 1.5
 
 
 @dataclass(frozen=True)
@@ -413,6 +420,12 @@ class Register:
         self._intervals_per_serial = False
         self.timezone = lab_timezone(timezone)
         self._sqlite_path = ""
+        #: told, at once, when a write waits for the SQLite register's write lock held by
+        #: another process (what it waits for, and for how long at most): the command line
+        #: says it on stderr, the window in its status line. None: nobody is told
+        self.on_wait: Callable[[Message], None] | None = None
+        #: this process noted itself as the writer beside the database (writer_note.py)
+        self._noted = False
         try:
             if self.is_sqlite:
                 path = self.url.split("///", 1)[1] if "///" in self.url else ""
@@ -426,12 +439,16 @@ class Register:
                         file.parent.mkdir(parents=True, exist_ok=True)
                 if self.read_only:
                     self.engine = sa.create_engine(self._read_only_uri(file),
-                                                   connect_args={"timeout": 60})
+                                                   connect_args={"timeout": BUSY_TIMEOUT_S})
                     sa.event.listen(self.engine, "connect", _sqlite_connect_read_only)
+                    sa.event.listen(self.engine, "begin", _sqlite_begin)
                 else:
-                    self.engine = sa.create_engine(self.url, connect_args={"timeout": 60})
+                    self.engine = sa.create_engine(self.url,
+                                                   connect_args={"timeout": BUSY_TIMEOUT_S})
                     sa.event.listen(self.engine, "connect", _sqlite_connect)
-                sa.event.listen(self.engine, "begin", _sqlite_begin)
+                    sa.event.listen(self.engine, "begin", self._sqlite_begin)
+                    sa.event.listen(self.engine, "commit", self._write_ended)
+                    sa.event.listen(self.engine, "rollback", self._write_ended)
             else:
                 args: dict[str, Any] = {
                     "application_name": f"anglebench {_os_user()}@{socket.gethostname()} "
@@ -452,6 +469,8 @@ class Register:
             journal = Path(f"{self._sqlite_path}-wal")
             if self.read_only and journal.exists() and journal.stat().st_size > 0:
                 raise RegisterError(self._unread_journal()) from None
+            if self._full(exc):  # reg72 #7: on opening, its WAL index could not be made
+                raise RegisterError(self._disk_full()) from None
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -611,6 +630,8 @@ class Register:
                                            postgresql_readonly=True)
                 yield conn
         except self._sa.exc.SQLAlchemyError as exc:
+            if self._full(exc):  # a new connection's WAL index could not be made (reg72 #7)
+                raise RegisterError(self._disk_full()) from None
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -637,16 +658,79 @@ class Register:
                 raise RegisterError(self._disk_full(exc.filename)) from None
             raise
         except self._sa.exc.SQLAlchemyError as exc:  # a unique number taken meanwhile too
-            if _is_disk_full(exc) or (_is_io_error(exc) and self._no_room()):
+            if self._full(exc):
                 raise RegisterError(self._disk_full()) from None
             reason = _reason(exc)
             if getattr(getattr(exc, "orig", None), "sqlstate", "") == "55P03":
                 reason = message(QT_TR_NOOP(
                     "waited {s} s for the register's lock, held by {holder}"),
                     s=LOCK_TIMEOUT_S, holder=self._lock_holders() or "?")
+            elif self._sqlite_path and _is_busy(getattr(exc, "orig", None)):
+                holder = writer_holder(self._sqlite_path)
+                reason = message(QT_TR_NOOP(
+                    "waited {s} s for the register's lock, held by {holder}"),
+                    s=BUSY_TIMEOUT_S, holder=holder.text()) if holder else message(
+                    QT_TR_NOOP("waited {s} s for the register's lock, held by another "
+                               "program, which left no note of who it is"), s=BUSY_TIMEOUT_S)
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=reason)) from None
+
+    def _sqlite_begin(self, conn) -> None:
+        """A write takes the lock at once (writers queue instead of failing); a read takes
+        none (a deferred transaction). A write that finds the lock held waits
+        :data:`WAIT_NOTICE_S` in silence, then tells :attr:`on_wait` that it is waiting,
+        for whom (the holder's note beside the database, writer_note.py) and for how long
+        at most, and waits the rest of :data:`BUSY_TIMEOUT_S` as before (reg72 #8: a minute
+        of silence, then "database is locked"). With the lock, it notes itself as the
+        writer until its transaction ends."""
+        import sqlite3
+
+        if conn.get_execution_options().get("anglebench_read") or not self._sqlite_path:
+            _sqlite_begin(conn)
+            return
+        raw = conn.connection.dbapi_connection
+        start = time.monotonic()
+        raw.execute(f"PRAGMA busy_timeout={int(WAIT_NOTICE_S * 1000)}")
+        try:
+            try:
+                raw.execute("BEGIN IMMEDIATE")
+            except sqlite3.Error as exc:  # waited (said, then waited on), or failed: tried
+                if _is_busy(exc):  # again through SQLAlchemy, whose error is said as before
+                    self._tell_waiting()
+                rest = max(BUSY_TIMEOUT_S - (time.monotonic() - start), 0.0)
+                raw.execute(f"PRAGMA busy_timeout={int(rest * 1000)}")
+                conn.exec_driver_sql("BEGIN IMMEDIATE")
+        finally:
+            raw.execute(f"PRAGMA busy_timeout={BUSY_TIMEOUT_S * 1000}")
+        write_note(self._sqlite_path)
+        self._noted = True
+
+    def _write_ended(self, _conn) -> None:
+        """A transaction committed or rolled back: this process's writer note removed."""
+        if self._noted:
+            self._noted = False
+            remove_note(self._sqlite_path)
+
+    def _tell_waiting(self) -> None:
+        """:attr:`on_wait` told that a write waits for the lock: the register, who holds
+        the lock (since when), how long it will wait at most."""
+        if self.on_wait is None:
+            return
+        holder = writer_holder(self._sqlite_path)
+        if holder is not None:
+            said = message(QT_TR_NOOP(
+                "waiting for the register at {path}: its write lock is held by {holder} "
+                "since {since}; giving up after {s} s unless it is released"),
+                path=self._sqlite_path, holder=holder.text(), since=holder.since,
+                s=BUSY_TIMEOUT_S)
+        else:
+            said = message(QT_TR_NOOP(
+                "waiting for the register at {path}: its write lock is held by another "
+                "program, which left no note of who it is; giving up after {s} s unless it "
+                "is released"), path=self._sqlite_path, s=BUSY_TIMEOUT_S)
+        with contextlib.suppress(Exception):  # a view that cannot show it stops no issue
+            self.on_wait(said)
 
     def _disk_full(self, path: str | None = None) -> Message:
         """What a write that found the disk full says: where (the file the system named, or
@@ -657,6 +741,14 @@ class Register:
         return message(QT_TR_NOOP(
             "the disk is full at {path}: nothing was recorded; the register is unchanged "
             "(free some space and try again)"), path=where)
+
+    def _full(self, exc: Exception) -> bool:
+        """A database error that is a full disk: said so (SQLITE_FULL, PostgreSQL's
+        disk_full, ENOSPC), or SQLite's I/O error with no room left in the register's folder
+        (:meth:`_no_room`) — on a full tmpfs SQLite fails already on connecting, when its
+        "PRAGMA journal_mode=WAL" cannot map the WAL index (reg72 #7: the register was opened
+        before any write, and its "disk I/O error" was said as it was)."""
+        return _is_disk_full(exc) or (_is_io_error(exc) and self._no_room())
 
     def _no_room(self) -> bool:
         """The SQLite register's folder has (next to) no free space: SQLite says "disk I/O
@@ -831,8 +923,11 @@ class Register:
         review F3: only the same text was skipped, and the commit then refused the number
         allocated, for every issue of the scheme). So is a number that a number in the
         register reads as an amendment of (:meth:`_check_amendment_form`: with
-        "AB-2026-0009-A1" typed, AB-2026-0009 is skipped)."""
+        "AB-2026-0009-A1" typed, AB-2026-0009 is skipped). And so is a number that prints
+        the fields of one issued with other separators or none (scheme_identity.py: reg72
+        #11, ``AB{year}{seq:04d}`` issued AB20260001 beside AB-2026-0001)."""
         from models.register.identifiers import amendment_form_keys, amendment_stems, identifier_keys
+        from models.register.scheme_identity import fields_issued, number_pattern
 
         sa, schema = self._sa, self._schema
         name = _counter_name(scheme, date)
@@ -854,12 +949,38 @@ class Register:
                     key in keys for key, keys in zip(identifier_keys(number), taken,
                                                      strict=False)) and not any(
                     key in found for key, found in zip(amendment_form_keys(number), stems,
-                                                       strict=True)):
+                                                       strict=True)) and fields_issued(
+                    number_pattern(scheme, value, date.year, date.month, date.day),
+                    issued) is None:
                 return name, number, before, value
             value += 1
         raise RegisterError(message(
             QT_TR_NOOP("no free number in scheme '{scheme}'"),
             scheme=scheme))
+
+    def _date_backwards(self, last, issue_date: dt.date, now: dt.datetime) -> Message:
+        """Why a certificate dated ``issue_date`` is not issued after ``last``, dated later:
+        the lab's time zone of this call is another than that of the last issue
+        (``ANGLEBENCH_TIMEZONE`` per call, the window's setting changed), and the dates of
+        issue would go backwards against the numbers (reg72 #10: AB-2026-0001 dated
+        2026-12-07, AB-2026-0002 dated 2026-12-06). Refused rather than dated otherwise: the
+        date printed is the lab's local date of issue, and no other date is right for this
+        call; the refusal ends when the lab's date reaches the last one (a day at most)."""
+        zone = self.timezone
+        offset = now.astimezone(zone).strftime("%z")
+        from_then = dt.datetime.combine(dt.date.fromisoformat(last.issue_date), dt.time(),
+                                        zone)
+        return message(QT_TR_NOOP(
+            "this certificate would be dated {date} in the lab's time zone of this issue, "
+            "{zone} (UTC{offset}), before the register's last certificate, {number}, dated "
+            "{then} (issued {at}; the zone it was dated in is not recorded): the dates of "
+            "issue would go backwards against the numbers. The lab's time zone changed "
+            "between the two issues (ANGLEBENCH_TIMEZONE, or the window's setting): issue "
+            "in the zone the lab dates its certificates in, or in this zone from {resumes} "
+            "on"),
+            date=issue_date.isoformat(), zone=str(zone), offset=f"{offset[:3]}:{offset[3:]}",
+            number=last.number, then=last.issue_date, at=last.issued_at,
+            resumes=from_then.isoformat())
 
     def continue_numbering(self, scheme: str, date: dt.date, next_sequence: int) -> str:
         """A lab moving to the register from numbers issued by hand: the next number the
@@ -888,15 +1009,19 @@ class Register:
         return format_certificate_number(scheme, next_sequence, date)
 
     def _check_free(self, conn, number: str, typed: bool = True) -> None:
-        """Raise RegisterError if ``number``, or one that prints alike (same_identifier), was
-        issued. ``typed``: the number was typed (the message says to leave it empty); else
-        the register allocated it (the message names ``register continue``)."""
+        """Raise RegisterError if ``number``, or one that prints alike (same_identifier) or
+        has its letters and digits with other separators or none (scheme_identity; reg72
+        #11), was issued. ``typed``: the number was typed (the message says to leave it
+        empty); else the register allocated it (the message names ``register continue``)."""
         from models.register.identifiers import same_identifier
+        from models.register.scheme_identity import separators_aside
 
         c = self._schema.CERTIFICATES.c
+        joined = separators_aside(number)
         row = next((r for r in conn.execute(self._sa.select(
             c.number, c.issued_at, c.workbench, c.item_serial).order_by(c.id))
-            if r.number == number or same_identifier(r.number, number)), None)
+            if r.number == number or same_identifier(r.number, number)
+            or separators_aside(r.number) == joined), None)
         if row is None:
             return
         said = {"number": row.number if row.number == number else f"{number} ({row.number})",
@@ -974,10 +1099,19 @@ class Register:
         sa = self._sa
         records, head = self._state(conn)
         # the clock rules (reg73 #6, #8): against the last chained record of any kind
-        from models.register.clock_rules import clock_checked, last_chained
+        from models.register.clock_rules import (
+            clock_checked,
+            last_certificate_since_correction,
+            last_chained,
+        )
 
         confirmed = clock_checked(last_chained(conn, sa, self._schema), now, issue_date,
                                   confirmed_date)
+        # dates of issue never go backwards against the numbers (reg72 #10), since the last
+        # clock correction (the record dated by a clock set ahead stands before it)
+        last = last_certificate_since_correction(conn, sa, self._schema)
+        if last is not None and last.issue_date > issue_date.isoformat():
+            raise RegisterError(self._date_backwards(last, issue_date, now))
         revision, original = "original", None
         counter = before = value = None
         if supersedes:
@@ -2963,6 +3097,12 @@ def _is_io_error(exc: Exception) -> bool:
         "disk I/O error" in str(orig or ""))
 
 
+def _is_busy(error: object) -> bool:
+    """SQLite's SQLITE_BUSY ("database is locked"): another connection holds the lock."""
+    return getattr(error, "sqlite_errorname", "").startswith("SQLITE_BUSY") or (
+        "database is locked" in str(error or ""))
+
+
 def _reason(exc: Exception) -> str:
     text = str(getattr(exc, "orig", None) or exc).strip().splitlines()
     return text[0] if text else type(exc).__name__
@@ -2972,7 +3112,7 @@ def _sqlite_connect(dbapi_connection, _record) -> None:
     dbapi_connection.isolation_level = None  # the driver's own transactions off: ours below
     cursor = dbapi_connection.cursor()
     cursor.execute("PRAGMA journal_mode=WAL")
-    cursor.execute("PRAGMA busy_timeout=60000")
+    cursor.execute(f"PRAGMA busy_timeout={BUSY_TIMEOUT_S * 1000}")
     cursor.close()
 
 

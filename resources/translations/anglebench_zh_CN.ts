@@ -2717,6 +2717,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>适用于（每个读数、任意角度、相对第 1 面）</translation>
     </message>
     <message>
+        <source>Role (reference, autocollimator, adc)</source>
+        <translation>角色（reference、autocollimator、adc）</translation>
+    </message>
+    <message>
         <source>Due date (YYYY-MM-DD)</source>
         <translation>国家（ISO 3166-1，如 CN）</translation>
     </message>
@@ -2956,6 +2960,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>certificate field &apos;{name}.applies_to&apos; must be one of {join}, not &apos;{applies_to}&apos;</source>
         <translation>证书字段 &apos;{name}.applies_to&apos; 必须是 {join} 之一，而不是 &apos;{applies_to}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}.role&apos; must be one of {join} or empty, not &apos;{role}&apos;</source>
+        <translation>证书字段 &apos;{name}.role&apos; 必须是 {join} 之一或留空，而不是 &apos;{role}&apos;</translation>
     </message>
     <message>
         <source>certificate field &apos;{field_name}&apos; must be a number above 0</source>
@@ -4836,7 +4844,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>reading</source>
-        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides, U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned code points What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard). each as a certificate names it after &quot;per&quot; (&quot;standard uncertainty u per angle between two readings&quot;), in the standards table as in the budget (day review 69 F2: the table said &quot;0.5″ (standard uncertainty u)&quot; alike for both, and the budget took 0.354″ unexplained)
+        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides, U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned code points What a reference standard carries of the measurand (ReferenceStandard.role; &quot;&quot; not stated: told from its other fields where they tell it, models/certificate/traceability.py): the reference the errors are measured against (the theodolite, the polygon, the positioning&apos;s reference measuring system, the fringe&apos;s phase or angle reference), the polygon test&apos;s autocollimator, the fringe&apos;s ADC. A workbench names the roles its measurand needs. What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard). each as a certificate names it after &quot;per&quot; (&quot;standard uncertainty u per angle between two readings&quot;), in the standards table as in the budget (day review 69 F2: the table said &quot;0.5″ (standard uncertainty u)&quot; alike for both, and the budget took 0.354″ unexplained)
 ----------
 what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO), in the words of the certificate&apos;s budget (models.certificate.document.reference_standard_components)</extracomment>
         <translation>读数</translation>
@@ -5250,7 +5258,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>a phase or angle reference</source>
-        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list, each by its role (models.certificate.metadata.STANDARD_ROLES) and name</extracomment>
         <translation>相位或角度参考标准</translation>
     </message>
     <message>
@@ -5477,7 +5485,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the polygon (its face deviations)</source>
-        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list, each by its role (models.certificate.metadata.STANDARD_ROLES) and name</extracomment>
         <translation>多面棱体（其面偏差）</translation>
     </message>
     <message>
@@ -5677,7 +5685,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the reference measuring system</source>
-        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list, each by its role (models.certificate.metadata.STANDARD_ROLES) and name</extracomment>
         <translation>参考测量系统</translation>
     </message>
     <message>
@@ -5750,7 +5758,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the autocollimating theodolite</source>
-        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list, each by its role (models.certificate.metadata.STANDARD_ROLES) and name</extracomment>
         <translation>自准直经纬仪</translation>
     </message>
     <message>
@@ -6902,7 +6910,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>{setting}={value}: a whole number of days, 0 for no limit</source>
-        <extracomment>how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it how long a connection to a PostgreSQL register waits for the server&apos;s answer (libpq&apos;s connect_timeout; a URL that sets its own keeps it) how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`) the environment variable that sets how many days after the register&apos;s last record an issue may be dated (0: no limit) its value when it is not set 366: a clock a year ahead (the year typed wrong) is found unless the last record is a day old, while a lab that calibrates once a year issues without a setting (a 90-day default refused a year between calibrations with nothing in between, and the window has no environment to set: the technician would be stopped at a dialog)</extracomment>
+        <extracomment>how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it how long a connection to a PostgreSQL register waits for the server&apos;s answer (libpq&apos;s connect_timeout; a URL that sets its own keeps it) how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`) how long a write to a SQLite register waits for its write lock before giving up how long a write waits for that lock in silence before it says it is waiting, and for whom (reg72 #8: a minute of silence, then &quot;database is locked&quot;) the environment variable that sets how many days after the register&apos;s last record an issue may be dated (0: no limit) its value when it is not set 366: a clock a year ahead (the year typed wrong) is found unless the last record is a day old, while a lab that calibrates once a year issues without a setting (a 90-day default refused a year between calibrations with nothing in between, and the window has no environment to set: the technician would be stopped at a dialog)</extracomment>
         <translation>{setting}={value}：应为整数天数，0 表示不限</translation>
     </message>
     <message>
@@ -6911,7 +6919,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>register {display_url}: {reason}</source>
-        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
+        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) told, at once, when a write waits for the SQLite register&apos;s write lock held by another process (what it waits for, and for how long at most): the command line says it on stderr, the window in its status line. None: nobody is told this process noted itself as the writer beside the database (writer_note.py) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
         <translation>登记册 {display_url}：{reason}</translation>
     </message>
     <message>
@@ -6959,6 +6967,18 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>等待登记册的锁 {s} 秒，该锁由 {holder} 持有</translation>
     </message>
     <message>
+        <source>waited {s} s for the register&apos;s lock, held by another program, which left no note of who it is</source>
+        <translation>等待登记册的锁 {s} 秒，该锁由另一个程序持有，该程序未留下说明其身份的便条</translation>
+    </message>
+    <message>
+        <source>waiting for the register at {path}: its write lock is held by {holder} since {since}; giving up after {s} s unless it is released</source>
+        <translation>正在等待 {path} 处的登记册：其写锁自 {since} 起由 {holder} 持有；若锁未释放，{s} 秒后放弃</translation>
+    </message>
+    <message>
+        <source>waiting for the register at {path}: its write lock is held by another program, which left no note of who it is; giving up after {s} s unless it is released</source>
+        <translation>正在等待 {path} 处的登记册：其写锁由另一个程序持有，该程序未留下说明其身份的便条；若锁未释放，{s} 秒后放弃</translation>
+    </message>
+    <message>
         <source>the disk is full at {path}: nothing was recorded; the register is unchanged (free some space and try again)</source>
         <translation>{path} 处磁盘已满：未记录任何内容；登记册未改变（请腾出空间后重试）</translation>
     </message>
@@ -6981,6 +7001,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>no free number in scheme &apos;{scheme}&apos;</source>
         <translation>编号方案 &apos;{scheme}&apos; 中已无可用编号</translation>
+    </message>
+    <message>
+        <source>this certificate would be dated {date} in the lab&apos;s time zone of this issue, {zone} (UTC{offset}), before the register&apos;s last certificate, {number}, dated {then} (issued {at}; the zone it was dated in is not recorded): the dates of issue would go backwards against the numbers. The lab&apos;s time zone changed between the two issues (ANGLEBENCH_TIMEZONE, or the window&apos;s setting): issue in the zone the lab dates its certificates in, or in this zone from {resumes} on</source>
+        <translation>按本次签发的实验室时区 {zone}（UTC{offset}），此证书的签发日期将为 {date}，早于登记册最后一份证书 {number} 的签发日期 {then}（签发于 {at}；其签发时所用的时区没有记录）：签发日期将与编号顺序颠倒。两次签发之间实验室的时区变了（ANGLEBENCH_TIMEZONE，或窗口中的设置）：请按实验室为其证书定日期的时区签发，或在本时区从 {resumes} 起签发</translation>
     </message>
     <message>
         <source>the next sequence number must be 1 or more</source>
@@ -10986,7 +11010,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the certificate register ({path})</source>
-        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the register&apos;s own file beside a SQLite register ``X``: ``X.issuing``, the issuers&apos; turn after a lost race (a file lock, models.register.store); an output written over it (a rename: a new file) would split the issuers between two locks the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name</extracomment>
+        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the register&apos;s own file beside a SQLite register ``X``: ``X.issuing``, the issuers&apos; turn after a lost race (a file lock, models.register.store); an output written over it (a rename: a new file) would split the issuers between two locks the note beside a SQLite register naming the process that holds its write lock (models/register/writer_note.py) the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name</extracomment>
         <translation>证书登记册（{path}）</translation>
     </message>
     <message>
@@ -11056,6 +11080,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>{standard} (due {due})</source>
+        <extracomment>the role of a standard that stands behind inputs stated in the settings, by the first word of their budget names (the fringe&apos;s &quot;Phase reference&quot;, &quot;ADC offset&quot; …)</extracomment>
         <translation>{standard}（到期 {due}）</translation>
     </message>
     <message>
@@ -11075,12 +11100,16 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；目前一项也未如此列出</translation>
     </message>
     <message>
-        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}): the standard for the other one is not listed</source>
-        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}）：另一项的计量标准未列出</translation>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}): none is listed for {missing}</source>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}）：未列出{missing}</translation>
     </message>
     <message>
-        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}): the standards for the other {missing} are not listed</source>
-        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}）：其余 {missing} 项的计量标准未列出</translation>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}), no role stated for {unnamed}: the standard for {choices} is not listed, and the details do not say which (state each standard&apos;s role)</source>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}），未说明{unnamed}的角色：{choices}未列出，而证书信息未说明是哪一项（请说明每个计量标准的角色）</translation>
+    </message>
+    <message>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}), no role stated for {unnamed}: the standards for {count_missing} of {choices} are not listed, and the details do not say which (state each standard&apos;s role)</source>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}），未说明{unnamed}的角色：{choices}中有 {count_missing} 项未列出，而证书信息未说明是哪几项（请说明每个计量标准的角色）</translation>
     </message>
     <message>
         <source>{standard}: its calibration was due on {due}, before the date of calibration {date}: it had expired</source>
@@ -12387,6 +12416,10 @@ Replace it?</source>
         <source>the tilt, not identified and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it; a tilt up to {bound} (stated) in any direction changes the half range by at most {change}, so the interval is widened by that at both ends and holds for any such tilt</source>
         <extracomment>what the decision says of a tilt not identified that widens its interval, after how the rest was made (the polygon&apos;s, and a theodolite&apos;s decided on the means over passes)</extracomment>
         <translation>未辨识、也未扣除的倾角是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量；给定上限 {bound} 以内、任意方向的倾角，至多使半峰峰值改变 {change}，因此区间两端各加宽该量，对任何这样的倾角均成立</translation>
+    </message>
+    <message>
+        <source>{who}, process {pid}</source>
+        <translation>{who}，进程 {pid}</translation>
     </message>
 </context>
 </TS>
