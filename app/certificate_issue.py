@@ -8,6 +8,7 @@ Shared by the window's certificate presenter and ``anglebench analyze --certific
 from __future__ import annotations
 
 import dataclasses
+import datetime as dt
 import logging
 import os
 from collections.abc import Callable, Mapping, Sequence
@@ -255,7 +256,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                       dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = "",
                       signing: tuple[str, str] = ("", ""),
                       results: Callable[[Any, CertificateRecord], bytes] | None = None,
-                      results_path: str = "") -> CertificateRecord:
+                      results_path: str = "",
+                      confirmed_date: dt.date | None = None) -> CertificateRecord:
     """Issue and record the certificate, then write it to ``path``. Raises RegisterError,
     ValueError (the content, e.g. details that contradict the settings), OSError before
     the commit (nothing recorded), or IssuedNotWritten (recorded; the file not written: its
@@ -282,6 +284,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     certificate, of its calibration: its workbench, item (serial as printed) and date of calibration,
     else NotTheSameCalibration, before anything is issued; ``correction_confirmed``: a
     corrected serial number or date of calibration, confirmed, stated on it (rev62 F1).
+    ``confirmed_date``: today's date as the user confirmed it, for an issue far after the
+    register's last record (else DateToConfirm: models/register/clock_rules).
     ``results(document, record)``: the results file (CSV or XLSX) of the certificate issued,
     made after the commit from the document the recorded PDF was rendered from and the
     register's record (so with the number and date of issue the register gave, and the
@@ -334,6 +338,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                                  correction_confirmed=correction_confirmed,
                                  another_makers_item=another_makers_item,
                                  another_lookalike_item=another_lookalike_item,
+                                 confirmed_date=confirmed_date,
                                  # what the document recorded is: a test report or a
                                  # calibration certificate (in the chain, chain format 4)
                                  document_kind=lambda: "test" if made["document"].is_test_report

@@ -121,6 +121,10 @@ class CertificateView(Protocol):
         description with one (``question``: the register's facts, question and advice): is
         this another item? (recorded when issued; No: not issued)"""
 
+    def confirm_issue_date(self, date: str, reason: str) -> bool:
+        """The issue is dated far after the register's last record (``reason``): is today
+        ``date``? (recorded when issued; No: not issued)"""
+
     def confirm_correction(self, revision: PendingRevision, reason: str) -> bool:
         """An amendment or replacement with another serial number or date of calibration
         than ``revision.number``'s: a correction of it (stated on it)? No: not an amendment."""
@@ -694,6 +698,7 @@ class CertificatePresenter:
         """``confirmed``: another maker's item, another item than a look-alike serial's,
         as the user said before the file dialog (else asked when the issue raises it)."""
         from app.certificate_issue import IssuedNotWritten, issue_certificate
+        from models.register.clock_rules import DateToConfirm
         from models.register.store import (
             AnotherMakersItem,
             LookalikeSerial,
@@ -704,6 +709,7 @@ class CertificatePresenter:
 
         corrected = False
         another_maker, another_item = confirmed
+        date_confirmed = None  # today's date, confirmed when the register asks (reg73 #6)
         declined: LookalikeSerial | None = None  # the question answered No
         try:
             while True:
@@ -716,7 +722,7 @@ class CertificatePresenter:
                             separate_calibration=separate, correction_confirmed=corrected,
                             another_makers_item=another_maker,
                             another_lookalike_item=another_item,
-                            raw_capture=raw_capture,
+                            raw_capture=raw_capture, confirmed_date=date_confirmed,
                             dcc=self._dcc_maker(kind, result, path, settings),
                             dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
                     break
@@ -727,6 +733,13 @@ class CertificatePresenter:
                                                     exc.numbers, explained(exc)).split())
                     if not separate:
                         raise
+                except DateToConfirm as exc:
+                    # far after the register's last record: the date shown and asked, a
+                    # Yes recorded with the certificate
+                    if date_confirmed is not None or not self._asked(
+                            self.view.confirm_issue_date, exc.date.isoformat(), explained(exc)):
+                        raise
+                    date_confirmed = exc.date
                 except AnotherMakersItem as exc:
                     # a maker's name spelt otherwise is not another maker (rev65 F1): asked,
                     # and a Yes recorded in the register
