@@ -540,6 +540,17 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         warnings.extend(r.warnings)
     valid = all(r.closure_ok is not False for r in results)
     tilt = results[0].tilt
+    unidentified = [r.tilt_not_identified for r in results if r.tilt is None]
+    if unidentified and not s["tilt_bound_arcsec"] > 0:
+        # 0 would claim a polygon on the shaft with no tilt at all, which no set-up achieves
+        # and these vertical readings cannot show (audit 73 finding 1, the theodolite's)
+        raise SettingsError(message(QT_TR_NOOP(
+            "{why} A tilt bound of 0\" would claim that the polygon sits on the shaft with no "
+            "tilt at all, which no set-up achieves and these vertical readings cannot show: "
+            "state the largest tilt the set-up can have (the setting \"largest tilt of the "
+            "polygon on the shaft, when not identified\", --tilt-bound-arcsec), or read "
+            "vertical readings that identify the tilt"), why=unidentified[0]),
+            key="tilt_bound_arcsec")
     if tilt is None:
         verdict = message(QT_TR_NOOP("Tilt not identified: {why}"),
                           why=results[0].tilt_not_identified)
