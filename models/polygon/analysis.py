@@ -57,6 +57,7 @@ from models.polygon.setup_statement import setup_statement
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.uncertainty.bounded_systematic_half_range import tilt_bound_origin
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
@@ -595,6 +596,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
         rounding=rounding,
         reading_noise_stated_arcsec=float(s.get("reading_noise_arcsec", 0.0) or 0.0),
+        tilt_bound_arcsec=float(s["tilt_bound_arcsec"]),
     )
 
 
@@ -715,6 +717,13 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
                                     and first.tilt.omega_determined else None),
         # why the tilt was not identified (None when it was): ψ is then no finding
         "tilt_not_identified": first.tilt_not_identified or None,
+        # the tilt bound whose effect enters the uncertainty, and whether the lab stated it
+        # or it is the program's default (null where every set's tilt is fitted)
+        "tilt_bound_arcsec": (None if all(s.tilt is not None for s in result.sets)
+                              else result.tilt_bound_arcsec),
+        "tilt_bound_origin": (None if all(s.tilt is not None for s in result.sets)
+                              else tilt_bound_origin(result.tilt_bound_arcsec,
+                                                     DEFAULT_TILT_BOUND_ARCSEC)),
         "pyramidal_error_arcsec": np.concatenate(
             [r.pyramidal_error_arcsec for r in result.sets]).tolist(),
         "corrected_error_arcsec": np.concatenate(
