@@ -19,7 +19,12 @@ __all__ = ["Parameter", "SettingsError", "Shortcut", "check_parameters"]
 
 
 class SettingsError(ValueError):
-    """A workbench setting is out of range; the message names it."""
+    """A workbench setting is out of range; the message names it. ``key``: the setting the
+    readings refuse (its field the window marks), "" when the message names no one field."""
+
+    def __init__(self, text: str, key: str = "") -> None:
+        super().__init__(text)
+        self.key = key
 
 
 @dataclass(frozen=True)

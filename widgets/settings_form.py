@@ -26,6 +26,9 @@ WRAP_WIDTH = 600
 #: long caption set the label column and left every field ~110 px (#41: the polygon's faces
 #: field showed "rom the readings" at 1280×720 with the capture panel docked)
 LONG_CAPTION = 150
+#: a field whose value the readings refuse (a tilt bound of 0 where they do not identify the
+#: tilt): the certificate dialog's colour of a field to correct
+REFUSED_STYLE = "background: #ffd7d7;"
 
 
 class _UnfocusedWheel(QObject):
@@ -171,6 +174,19 @@ class SettingsForm(QWidget):
 
     def field(self, key: str) -> QWidget:
         return self._fields[key]
+
+    def mark(self, key: str) -> None:
+        """Mark the field of ``key`` as the one the readings refuse (its value as typed,
+        nothing else touched), every other field unmarked; "" unmarks them all."""
+        for name, widget in self._fields.items():
+            marked = name == key
+            if bool(widget.property("refused")) != marked:
+                widget.setProperty("refused", marked)
+                widget.setStyleSheet(REFUSED_STYLE if marked else "")
+
+    def marked(self) -> str:
+        """The key of the field marked (:meth:`mark`), "" when none is."""
+        return next((k for k, w in self._fields.items() if w.property("refused")), "")
 
     def values(self) -> dict[str, Any]:
         out: dict[str, Any] = {}

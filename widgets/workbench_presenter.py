@@ -99,7 +99,7 @@ class _AnalysisTask(QRunnable):
                     # analysis (#62 review F8: while capturing, the plan's pre-filled row was
                     # "3 cell(s) cannot be read")
                     parsed = _without_waiting_rows(parsed, sheet, reading_keys, planned)
-                result, error = _run_analysis(kind, parsed, settings)
+                result, error, refused = _run_analysis(kind, parsed, settings)
                 checkpoint()
                 display = _prepare_display(prepare, result)
                 checkpoint()
@@ -110,7 +110,7 @@ class _AnalysisTask(QRunnable):
             emit_if_alive(signals.cancelled, generation)
             return
         emit_if_alive(signals.finished, generation,
-                      (parsed, result, display, settings, sheet, shown), error)
+                      (parsed, result, display, settings, sheet, shown, refused), error)
 
 
 def _without_waiting_rows(parsed: ParsedReadings, sheet: ReadingsSheet,
@@ -312,17 +312,20 @@ def _sheet_state(sheet: ReadingsSheet, settings: dict[str, Any], deep: bool) -> 
 
 
 def _run_analysis(kind: Workbench, parsed: ParsedReadings,
-                  settings: dict[str, Any]) -> tuple[Any, str]:
+                  settings: dict[str, Any]) -> tuple[Any, str, str]:
+    """The result, or why there is none; and the key of the setting the readings refuse
+    (a tilt bound of 0 where they do not identify the tilt: its field is marked), "" when
+    no one setting is to blame."""
     try:
         # a run in progress: the complete units analysed, the last one's progress shown
-        return kind.analyze_as_far_as_it_goes(parsed, settings), ""
+        return kind.analyze_as_far_as_it_goes(parsed, settings), "", ""
     except AnalysisCancelled:
         raise
     except ValueError as exc:  # bad input: a message for the technician
-        return None, reason_of(exc)
+        return None, reason_of(exc), str(getattr(exc, "key", "") or "")
     except Exception as exc:  # noqa: BLE001 - a bug must not take the typed readings with it
         log.exception("analysis failed")
-        return None, f"internal error while analysing ({type(exc).__name__}: {exc})"
+        return None, f"internal error while analysing ({type(exc).__name__}: {exc})", ""
 
 
 class WorkbenchPresenter(QObject):
@@ -383,6 +386,7 @@ class WorkbenchPresenter(QObject):
         self.shown: ShownAsPrinted | None = None  # the texts of ``result`` as printed
         self.parsed: ParsedReadings | None = None
         self.problem = ""
+        self.refused_setting = ""  # the setting whose field the readings refuse (key)
         self.plan_problem = ""  # why the entry plan set cannot be made ("" when it can)
         # the certificate details this workbench's certificate would be made with (the
         # window sets it; None: none): the plots' tolerance and U bands come from them
@@ -491,7 +495,8 @@ class WorkbenchPresenter(QObject):
     def _redraw(self) -> None:
         """The result shown again (a new language or unit), not analysed again."""
         if self.parsed is not None:
-            self._finish(self.parsed, self.result, self.problem, self.display)
+            self._finish(self.parsed, self.result, self.problem, self.display,
+                         refused=self.refused_setting)
 
     def in_unit(self, *figures):
         """The declared plots with their angles in the chosen unit (``None``, a plot with
@@ -1028,10 +1033,11 @@ class WorkbenchPresenter(QObject):
             return
         parsed = self._without_waiting_rows(sheet.parse(), sheet, planned)
         settings = dict(self._settings)
-        result, error = _run_analysis(self.kind, parsed, settings)
+        result, error, refused = _run_analysis(self.kind, parsed, settings)
         self._shown_generation = self._generation
         self.result_settings, self.result_sheet = settings, sheet
-        self._finish(parsed, result, error, _prepare_display(self.prepare_display, result))
+        self._finish(parsed, result, error, _prepare_display(self.prepare_display, result),
+                     refused=refused)
 
     @property
     def analysis_pending(self) -> bool:
@@ -1062,10 +1068,10 @@ class WorkbenchPresenter(QObject):
         if generation == self._generation:  # a newer edit supersedes this result
             if not self._import_pending:  # a file being read keeps the window busy
                 self._set_busy(False)
-            parsed, result, display, settings, sheet, shown = payload
+            parsed, result, display, settings, sheet, shown, refused = payload
             self._shown_generation = generation
             self.result_settings, self.result_sheet = settings, sheet
-            self._finish(parsed, result, error, display, shown)
+            self._finish(parsed, result, error, display, shown, refused)
 
     def _next_text(self) -> str:
         """"next: target 120°, run 3 ↓" with a plan; "next: row 57" without."""
@@ -1096,11 +1102,15 @@ class WorkbenchPresenter(QObject):
         return row
 
     def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None,
-                shown: ShownAsPrinted | None = None) -> None:
+                shown: ShownAsPrinted | None = None, refused: str = "") -> None:
         self.parsed = parsed
         self.display = display
         self.result = result
         self.problem = error
+        # the setting the readings refuse, its field marked until the next analysis (the
+        # readings and the other settings stay as typed: the reason stands in the pane)
+        self.refused_setting = refused
+        self.view.mark_setting(refused)
         input_warnings = []
         if parsed.errors:
             rows = sorted({e.row + 1 for e in parsed.errors})

@@ -432,6 +432,10 @@ class WorkbenchView(QWidget):
     def settings_values(self) -> dict:
         return self.settings.values()
 
+    def mark_setting(self, key: str) -> None:
+        """Mark the setting the readings refuse ("": none; a key no field has: none)."""
+        self.settings.mark(key)
+
     #: the least height a plot panel keeps: below it the tab scrolls instead of squeezing
     #: the plots flat and overprinting their axis titles (high-DPI scale, small windows)
     PANEL_MIN_HEIGHT = 150

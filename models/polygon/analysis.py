@@ -57,6 +57,7 @@ from models.polygon.setup_statement import setup_statement
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.uncertainty.bounded_systematic_half_range import tilt_bound_origin
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
@@ -541,6 +542,17 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         warnings.extend(r.warnings)
     valid = all(r.closure_ok is not False for r in results)
     tilt = results[0].tilt
+    unidentified = [r.tilt_not_identified for r in results if r.tilt is None]
+    if unidentified and not s["tilt_bound_arcsec"] > 0:
+        # 0 would claim a polygon on the shaft with no tilt at all, which no set-up achieves
+        # and these vertical readings cannot show (audit 73 finding 1, the theodolite's)
+        raise SettingsError(message(QT_TR_NOOP(
+            "{why} A tilt bound of 0\" would claim that the polygon sits on the shaft with no "
+            "tilt at all, which no set-up achieves and these vertical readings cannot show: "
+            "state the largest tilt the set-up can have (the setting \"largest tilt of the "
+            "polygon on the shaft, when not identified\", --tilt-bound-arcsec), or read "
+            "vertical readings that identify the tilt"), why=unidentified[0]),
+            key="tilt_bound_arcsec")
     if tilt is None:
         verdict = message(QT_TR_NOOP("Tilt not identified: {why}"),
                           why=results[0].tilt_not_identified)
@@ -585,6 +597,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
         rounding=rounding,
         reading_noise_stated_arcsec=float(s.get("reading_noise_arcsec", 0.0) or 0.0),
+        tilt_bound_arcsec=float(s["tilt_bound_arcsec"]),
     )
 
 
@@ -705,6 +718,13 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
                                     and first.tilt.omega_determined else None),
         # why the tilt was not identified (None when it was): ψ is then no finding
         "tilt_not_identified": first.tilt_not_identified or None,
+        # the tilt bound whose effect enters the uncertainty, and whether the lab stated it
+        # or it is the program's default (null where every set's tilt is fitted)
+        "tilt_bound_arcsec": (None if all(s.tilt is not None for s in result.sets)
+                              else result.tilt_bound_arcsec),
+        "tilt_bound_origin": (None if all(s.tilt is not None for s in result.sets)
+                              else tilt_bound_origin(result.tilt_bound_arcsec,
+                                                     DEFAULT_TILT_BOUND_ARCSEC)),
         "pyramidal_error_arcsec": np.concatenate(
             [r.pyramidal_error_arcsec for r in result.sets]).tolist(),
         "corrected_error_arcsec": np.concatenate(

@@ -423,6 +423,9 @@ class PolygonResult:
     rounding: HorizontalRounding | None = None
     # the σ of a reading stated in the settings (″; 0: not stated)
     reading_noise_stated_arcsec: float = 0.0
+    # the largest tilt on the shaft the budget takes where the vertical readings do not
+    # identify it (the setting, ″; DEFAULT_TILT_BOUND_ARCSEC: none stated)
+    tilt_bound_arcsec: float = DEFAULT_TILT_BOUND_ARCSEC
 
     @property
     def mean_reversal_arcsec(self) -> float | None:

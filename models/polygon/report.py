@@ -122,7 +122,7 @@ from models.polygon.model import (
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.polygon.setup_statement import setup_statement
 from models.uncertainty.bounded_systematic_half_range import (
-    TILT_BOUNDED,
+    tilt_bounded,
     widened_by_systematic,
     without_inputs,
 )
@@ -588,7 +588,12 @@ def _unidentified_tilt_component(result: PolygonResult, n: int, zero: int,
         math.sqrt(3.0), 1.0, math.inf,
         message(QT_TR_NOOP("a tilt up to {psi} (stated) in its worst direction, not removed: "
                            "its exact effect in the set-up's frame plus the autocollimator's "
-                           "roll {roll} over the vertical span 2ψ"),
+                           "roll {roll} over the vertical span 2ψ")
+                if bound != DEFAULT_TILT_BOUND_ARCSEC else
+                QT_TR_NOOP("a tilt up to {psi} (the program's default: no bound was stated) in "
+                           "its worst direction, not removed: its exact effect in the set-up's "
+                           "frame plus the autocollimator's roll {roll} over the vertical span "
+                           "2ψ"),
                 psi=f"{bound:g}\"", roll=f"{roll:g}′"))]
 
 
@@ -968,7 +973,7 @@ def rounding_bounded_half_range(result: PolygonResult, metadata: CertificateMeta
                            trials=mc.trials, seed=str(mc.seed), bound=f"{bound:.3g}\""))
     if not change > 0.0:
         return mc
-    said = message(TILT_BOUNDED, bound=f"{tilt_bound:g}\"", change=f"{change:.3g}\"")
+    said = tilt_bounded(tilt_bound, change, DEFAULT_TILT_BOUND_ARCSEC)
     method = separated([mc.method or message(
         QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}, of every input but the tilt"),
         quantity=message(DECISION_QUANTITIES["half_range"]), trials=mc.trials,

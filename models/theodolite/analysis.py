@@ -22,6 +22,7 @@ from models.theodolite.model import (
     TheodoliteResult,
     analyze_run,
 )
+from models.uncertainty.bounded_systematic_half_range import tilt_bound_origin
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.printed_figure import PrintedFigure, printed_range_figures
@@ -228,6 +229,9 @@ def to_json(result: TheodoliteResult) -> dict[str, Any]:
         "tilt_not_identified": ident.tilt_not_identified or None,
         # the tilt bound whose effect enters the uncertainty (null when the tilt is fitted)
         "tilt_bound_arcsec": None if ident.tilt_identified else ident.tilt_bound_arcsec,
+        # "stated" by the lab, or "program default" (none stated: audit 73 finding 3)
+        "tilt_bound_origin": None if ident.tilt_identified else tilt_bound_origin(
+            ident.tilt_bound_arcsec, DEFAULT_TILT_BOUND_ARCSEC),
         "alpha_u_deg": float(u[1]) if ident.alpha_determined else None,
         "beta_u_deg": float(u[2]),
         "residual_rms_arcsec": ident.residual_rms_arcsec,
@@ -365,7 +369,11 @@ def summary(result: TheodoliteResult, printed: int | None = None) -> str:
                    rms=f"{ident.residual_rms_arcsec:.3f}\""))
           if ident.tilt_identified else
           (message(QT_TR_NOOP("  axis tilt ψ and direction α not identified: nothing removed; "
-                              "a tilt up to {bound} (stated) enters the uncertainty"),
+                              "a tilt up to {bound} (stated) enters the uncertainty")
+                   if ident.tilt_bound_arcsec != DEFAULT_TILT_BOUND_ARCSEC else
+                   QT_TR_NOOP("  axis tilt ψ and direction α not identified: nothing removed; "
+                              "a tilt up to {bound} (the program's default: no bound was "
+                              "stated) enters the uncertainty"),
                    bound=f"{ident.tilt_bound_arcsec:g}\""),
            message(QT_TR_NOOP("  mirror normal   β = {value}° (from the reference reading)"),
                    value=f"{s.beta_deg:.4f}"))),

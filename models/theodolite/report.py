@@ -92,7 +92,12 @@ from models.messages import QT_TR_NOOP, message, separated
 from models.theodolite import KEY, MEASURAND_STANDARDS, TITLE
 from models.theodolite.accuracy_check import certificate_warnings
 from models.theodolite.figures import MODEL_INPUT, per_angle_note, pooled_repeats
-from models.theodolite.model import SETUP_INPUTS, TILT_BOUND_INPUT, TheodoliteResult
+from models.theodolite.model import (
+    DEFAULT_TILT_BOUND_ARCSEC,
+    SETUP_INPUTS,
+    TILT_BOUND_INPUT,
+    TheodoliteResult,
+)
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import (
     BudgetComponent,
@@ -366,7 +371,12 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata,
             result.model_uncertainty_arcsec * math.sqrt(3.0), math.sqrt(3.0), 1.0, math.inf,
             message(QT_TR_NOOP("a tilt up to {psi} (stated) in its worst direction, not "
                                "identified by the elevations and not removed: its exact "
-                               "effect on ζ(θ) with β = {beta}"),
+                               "effect on ζ(θ) with β = {beta}")
+                    if ident.tilt_bound_arcsec != DEFAULT_TILT_BOUND_ARCSEC else
+                    QT_TR_NOOP("a tilt up to {psi} (the program's default: no bound was "
+                               "stated) in its worst direction, not identified by the "
+                               "elevations and not removed: its exact effect on ζ(θ) with "
+                               "β = {beta}"),
                     psi=f"{ident.tilt_bound_arcsec:g}\"", beta=f"{ident.setup.beta_deg:.4f}°")))
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
@@ -623,7 +633,10 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         [(QT_TR_NOOP("Axis tilt ψ"), _degrees_to_its_u(s.psi_deg, u2[0], 5), expanded_text(u2[0]))
          if ident.tilt_identified else
          (QT_TR_NOOP("Axis tilt ψ"), message(TILT_NOT_IDENTIFIED_CELL),
-          message(QT_TR_NOOP("bound {bound} (stated) in U"), bound=f"{ident.tilt_bound_arcsec:g}\"")),
+          message(QT_TR_NOOP("bound {bound} (stated) in U")
+                  if ident.tilt_bound_arcsec != DEFAULT_TILT_BOUND_ARCSEC else
+                  QT_TR_NOOP("bound {bound} (the program's default) in U"),
+                  bound=f"{ident.tilt_bound_arcsec:g}\"")),
          (QT_TR_NOOP("Tilt direction α"), _degrees_to_its_u(s.alpha_deg, u2[1], 4),
           expanded_text(u2[1])) if ident.alpha_determined else
          (QT_TR_NOOP("Tilt direction α"), message(NOT_IDENTIFIED if ident.tilt_identified

@@ -15,11 +15,16 @@ from __future__ import annotations
 import numpy as np
 
 from models.messages import QT_TR_NOOP, message, separated
-from models.theodolite.model import TILT_BOUND_INPUT, TheodoliteResult, tilt_half_range_change
-from models.uncertainty.bounded_systematic_half_range import TILT_BOUNDED, widened_by_systematic
+from models.theodolite.model import (
+    DEFAULT_TILT_BOUND_ARCSEC,
+    TILT_BOUND_INPUT,
+    TheodoliteResult,
+    tilt_half_range_change,
+)
+from models.uncertainty.bounded_systematic_half_range import tilt_bounded, widened_by_systematic
 from models.uncertainty.conformity import DECISION_QUANTITIES, HalfRangeEstimate
 
-__all__ = ["TILT_WIDENED", "tilt_change_arcsec", "tilt_not_removed", "tilt_widened"]
+__all__ = ["TILT_WIDENED", "TILT_WIDENED_DEFAULT", "tilt_change_arcsec", "tilt_not_removed", "tilt_widened"]
 
 #: how the decided half range is made where the tilt is not identified
 TILT_WIDENED = QT_TR_NOOP(
@@ -28,7 +33,18 @@ TILT_WIDENED = QT_TR_NOOP(
     "not noise: nothing is taken off the measured range for it. A tilt up to {bound} (stated) "
     "in any direction changes the half range by at most {change} (its exact effect ζ(θ) at "
     "these rotations with β = {beta}), so the interval is widened by that at both ends and "
-    "holds for any such tilt")
+    "holds for any such tilt; the elevations cannot check the bound (a larger tilt is not "
+    "covered)")
+#: the same where no bound was stated: the program's default, not the laboratory's figure
+#: (audit 73 finding 3: it was printed "(stated)")
+TILT_WIDENED_DEFAULT = QT_TR_NOOP(
+    "{quantity}: {trials} trials, seed {seed}, of the reading noise alone. The axis tilt, not "
+    "identified by the elevations and not removed, is one unknown error for the whole run, "
+    "not noise: nothing is taken off the measured range for it. A tilt up to {bound} (the "
+    "program's default: no bound was stated) in any direction changes the half range by at "
+    "most {change} (its exact effect ζ(θ) at these rotations with β = {beta}), so the "
+    "interval is widened by that at both ends and holds for any such tilt; the elevations "
+    "cannot check the bound (a larger tilt is not covered)")
 
 
 def tilt_not_removed(result: TheodoliteResult) -> bool:
@@ -54,11 +70,14 @@ def tilt_widened(result: TheodoliteResult, estimate: HalfRangeEstimate) -> HalfR
     ident = result.identification
     change = tilt_change_arcsec(result)
     bound, changed = f"{ident.tilt_bound_arcsec:g}\"", f"{change:.3g}\""
+    default = ident.tilt_bound_arcsec == DEFAULT_TILT_BOUND_ARCSEC  # none stated
     # after the method of an estimate that says its own (the means' united with E's, and
     # the probability that gives), else the whole of it
-    method = (separated([estimate.method, message(TILT_BOUNDED, bound=bound, change=changed)],
+    method = (separated([estimate.method, tilt_bounded(ident.tilt_bound_arcsec, change,
+                                                       DEFAULT_TILT_BOUND_ARCSEC)],
                         "; ") if estimate.method else
-              message(TILT_WIDENED, quantity=message(DECISION_QUANTITIES["half_range"]),
+              message(TILT_WIDENED_DEFAULT if default else TILT_WIDENED,
+                      quantity=message(DECISION_QUANTITIES["half_range"]),
                       trials=estimate.trials, seed=str(estimate.seed), bound=bound,
                       change=changed, beta=f"{ident.setup.beta_deg:.4f}°"))
     return widened_by_systematic(estimate, change, method)

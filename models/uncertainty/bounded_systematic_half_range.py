@@ -32,8 +32,8 @@ from models.messages import QT_TR_NOOP
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import HalfRangeEstimate, half_range_monte_carlo
 
-__all__ = ["TILT_BOUNDED", "half_range_with_bounded_systematic", "widened_by_systematic",
-           "without_inputs"]
+__all__ = ["TILT_BOUNDED", "TILT_BOUNDED_DEFAULT", "half_range_with_bounded_systematic",
+           "tilt_bound_origin", "tilt_bounded", "widened_by_systematic", "without_inputs"]
 
 #: what the decision says of a tilt not identified that widens its interval, after how the
 #: rest was made (the polygon's, and a theodolite's decided on the means over passes)
@@ -41,7 +41,32 @@ TILT_BOUNDED = QT_TR_NOOP(
     "the tilt, not identified and not removed, is one unknown error for the whole run, not "
     "noise: nothing is taken off the measured range for it; a tilt up to {bound} (stated) in "
     "any direction changes the half range by at most {change}, so the interval is widened by "
-    "that at both ends and holds for any such tilt")
+    "that at both ends and holds for any such tilt; the readings cannot check the bound (a "
+    "larger tilt is not covered)")
+#: the same where no bound was stated: the program's default, not the laboratory's figure
+#: (audit 73 finding 3: it was printed "(stated)")
+TILT_BOUNDED_DEFAULT = QT_TR_NOOP(
+    "the tilt, not identified and not removed, is one unknown error for the whole run, not "
+    "noise: nothing is taken off the measured range for it; a tilt up to {bound} (the "
+    "program's default: no bound was stated) in any direction changes the half range by at "
+    "most {change}, so the interval is widened by that at both ends and holds for any such "
+    "tilt; the readings cannot check the bound (a larger tilt is not covered)")
+
+
+def tilt_bound_origin(bound: float, default: float) -> str:
+    """Whose a tilt bound is: "program default" where it is the workbench's ``default`` (the
+    setting left as the program gives it), else "stated" (the laboratory's claim)."""
+    return "program default" if bound == default else "stated"
+
+
+def tilt_bounded(bound: float, change: float, default: float) -> str:
+    """What the decision says of a tilt up to ``bound`` (″) not identified, changing the half
+    range by ``change`` (″) at most: the bound stated, or the workbench's ``default`` where
+    it is that (the setting left as the program gives it)."""
+    from models.messages import message
+
+    return message(TILT_BOUNDED_DEFAULT if bound == default else TILT_BOUNDED,
+                   bound=f"{bound:g}\"", change=f"{change:.3g}\"")
 
 
 def without_inputs(budget: UncertaintyBudget, names: Container[str]) -> UncertaintyBudget:

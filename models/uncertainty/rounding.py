@@ -193,14 +193,33 @@ class StatedNumber(float):
         return cls(float(cleaned), decimals)
 
 
+#: a value within this share of a place's step from a tie on that place (…5 followed by
+#: nothing but zeros) is the tie: the decided values are computed in binary from readings
+#: typed to a few decimals, so an exact 5.075 (E/2 of means of readings typed to 0.001)
+#: comes out 5.074999999999999, a few ulps (here 1e-13 of the 0.01 step) off. The float
+#: error is some ulps of the figures summed (values of at most ~1e4, steps of at least
+#: 1e-6: under 1e-11 of the step). A value that is not a tie but is a mean's difference of
+#: readings typed to d decimals lies at least 10^-d / (2 n) from one (n readings in a
+#: mean): for d ≤ 6, n ≤ 100 and steps of at most 1, at least 5e-9 of the step. 1e-9 of
+#: the step lies between the two; a value fitted (not a decimal) falls within it of a tie
+#: with a chance of 2e-9, where either rounding is as good as the data.
+E29_TIE_SHARE = 1e-9
+
+
 def e29_rounded(value: float, decimals: int) -> float:
     """``value`` rounded to ``decimals`` decimals as ASTM E29 §6.4 rounds an observed value
     (its rounding method, §4.2–4.4: to the nearest, a 5 followed by nothing but zeros
     rounding the last place kept to even), from the value's shortest digits (1.6275 is
-    1.628, 1.6265 is 1.626) and never "-0.0"."""
-    from decimal import ROUND_HALF_EVEN, Decimal
+    1.628, 1.6265 is 1.626) and never "-0.0". A value within :data:`E29_TIE_SHARE` of the
+    step from a tie is that tie (5.074999999999999, an exact 5.075 computed in binary, is
+    5.08 at two decimals; until 0.8.21 it was 5.07)."""
+    from decimal import ROUND_FLOOR, ROUND_HALF_EVEN, Decimal
 
     if not math.isfinite(value):
         return value
     exact = Decimal(repr(float(value)))
-    return float(exact.quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_EVEN)) + 0.0
+    step = Decimal(1).scaleb(-decimals)
+    tie = exact.quantize(step, rounding=ROUND_FLOOR) + step / 2
+    if abs(exact - tie) <= step * Decimal(E29_TIE_SHARE):
+        exact = tie
+    return float(exact.quantize(step, rounding=ROUND_HALF_EVEN)) + 0.0
