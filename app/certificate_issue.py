@@ -288,11 +288,12 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
 
     made: dict[str, Any] = {}
 
-    def render(final: CertificateMetadata, head: str = "", content: str = "") -> bytes:
+    def render(final: CertificateMetadata, head: str = "", content: str = "",
+               proof: str = "") -> bytes:
         document = dataclasses.replace(
             kind.certificate_document(result, final, origin, settings),
             raw_data_sha256=digest, edited_readings=edited, register_head=head,
-            register_content=content)
+            register_content=content, register_proof=proof)
         pdf = certificate_pdf_bytes(document)
         made["document"] = document  # the last one rendered is the one recorded
         if dcc is not None:  # the register may render again: the last one is recorded

@@ -342,6 +342,8 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     status = _verify_findings(register, path, data, out, head, head_from, certificate)
     if changed or status == EXIT_REGISTER_CHANGED:
         return EXIT_REGISTER_CHANGED
+    if register.key_problem is not None:  # the key named is not the register's: a setting
+        return EXIT_BAD_INPUT
     if status:
         return EXIT_NOT_ISSUED
     return EXIT_NO_LONGER_VALID if invalid else EXIT_VERIFIED
@@ -355,6 +357,7 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
     from models.register.chain import number_in_pdf
     from models.register.printed_place import (
         content_changed,
+        digest_missing,
         embedded_pdf,
         head_before_changed,
         in_this_chain,
@@ -363,6 +366,8 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
     )
 
     problems = register.audit(pdfs=True)
+    if register.key_problem is not None:  # a wrong key: no signature checked (reg73 #7)
+        out(register.key_problem)
     for problem in problems:
         out(message(QT_TR_NOOP("CHANGED AFTER ISSUE: {problem}"), problem=problem))
     if not problems:
@@ -445,7 +450,7 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
             "SHA-256, and it is none of them: altered, or from another register)"), path=path))
         if pdf_inside and kind in ("pdf", "dcc") and in_this_chain(register, pdf_inside):
             # it prints a head of this chain, so its record followed that head: is it gone?
-            say_its_place(register, path, pdf_inside, out)
+            say_its_place(register, path, pdf_inside, out, embedded=is_dcc)
         return 1
     out(message(_by_kind(record, QT_TR_NOOP(
         "{path}: certificate {number}, issued {issued_at}, {status}; identical to "
@@ -463,6 +468,9 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
     if rewritten is not None:
         out(rewritten)
         failed = True
+    stripped = digest_missing(path, pdf_inside, record) if pdf_inside else None
+    if stripped is not None:  # reg73 #10: a PDF with its digest stripped verified clean
+        out(stripped)
     moved = None if is_dcc else head_before_changed(register, path, data, record)
     if moved is not None:
         out(moved)
