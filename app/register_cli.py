@@ -49,7 +49,15 @@ from pathlib import Path
 
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
-from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered
+from models.messages import (
+    QT_TR_NOOP,
+    Message,
+    declared_text,
+    joined,
+    message,
+    reason_of,
+    rendered,
+)
 from models.project.atomic_write import is_temporary_name, write_bytes_atomic
 from models.project.file_kind import file_kind as kind_of_bytes
 from models.project.output_guard import (
@@ -193,6 +201,21 @@ def _checker(record) -> str:
     return _detail(record, "checker")
 
 
+def _digest_form_line(record) -> Message:
+    """Which form of record digest the record's PDF carries (models/register/chain.py)."""
+    import dataclasses
+
+    from models.register.chain import content_form
+
+    form = content_form(dataclasses.asdict(record))
+    return message(QT_TR_NOOP(
+        "  record digest on its PDF: form 2 (readings, results and details, the document's "
+        "kind and its DCC)") if form >= 2 else QT_TR_NOOP(
+        "  record digest on its PDF: form 1 (readings, results and details; not the "
+        "document's kind nor its DCC)") if form == 1 else QT_TR_NOOP(
+        "  record digest on its PDF: none (issued before AngleBench 0.8.21)"))
+
+
 def _print_record(record, register, words) -> None:
     revision = ("" if record.revision == "original"
                 else joined((", ", revision_words(record.revision))))
@@ -222,6 +245,7 @@ def _print_record(record, register, words) -> None:
             QT_TR_NOOP("change_note")), value=record.change_note))
     lines.append(message(QT_TR_NOOP("  chain head before it (printed on it): {head}"),
                          head=register.chain_before(record.number)))
+    lines.append(_digest_form_line(record))
     for name, value in record.headline.items():  # a figure's name as the certificate has it
         lines.append(message(QT_TR_NOOP("  headline {name}: {value}"),
                              name=declared_text(name, words), value=f"{value:.6g}"))

@@ -159,3 +159,16 @@ def test_verify_read_by_a_closed_pipe_ends_without_a_traceback(tmp_path):
     _, err = process.communicate(timeout=120)
     assert b"unrecognized" not in err  # the command ran
     assert b"Traceback" not in err and b"BrokenPipeError" not in err
+
+
+def test_show_says_which_form_of_record_digest_a_record_uses(capsys):
+    """Old records (form 1) verify as they were; ``register show`` says which form each
+    record's PDF carries."""
+    ((number, _, _),) = _issue(1)
+    capsys.readouterr()
+    assert main(["register", "show", number]) == 0
+    assert "record digest on its PDF: form 2 (readings, results and details, the " \
+        "document's kind and its DCC)" in capsys.readouterr().out
+    _rewrite_newest(chain_format=5)
+    assert main(["register", "show", number]) == 0
+    assert "record digest on its PDF: form 1" in capsys.readouterr().out
