@@ -595,6 +595,9 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
             "{path}: NOT in the register (no results file written with an issued certificate "
             "has its SHA-256: altered, written without issuing one, or from another "
             "register)"), path=path))
+        named = _results_of_issued(register, path, data, records)
+        if named is not None:  # reg73 #1: the register's entry rewritten, or this copy
+            out(named)
         for said in elsewhere:
             out(said)
         return 1
@@ -642,6 +645,42 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
     for said in elsewhere:
         out(said)
     return 1 if failed else 0
+
+
+def _results_of_issued(register, path: str, data: bytes, records: list) -> Message | None:
+    """Of a results file the register holds no entry of: the certificate it says it is of
+    (an XLSX's *Certificate* sheet: its number and PDF SHA-256), when that is an issued
+    record's with a results file recorded — which is then another file (reg73 #1: the
+    newest results entry rewritten with its chain recomputed called the customer's genuine
+    workbook "NOT in the register" and nothing more). With the lab's key and its signatures
+    intact the register's entry is its own: the copy was altered; without, either."""
+    from app.writers.results_export import issue_stated
+
+    if file_kind(data) != "xlsx":
+        return None
+    try:
+        stated = issue_stated(data)
+    except (ValueError, OSError, KeyError):
+        return None
+    if not stated or not stated.get("pdf_sha256"):
+        return None
+    numbers = {number for number, kind in register.issued_file(stated["pdf_sha256"])
+               if kind == "pdf"}
+    recorded = [entry for entry in records if entry["number"] in numbers and entry["first"]]
+    if not recorded:
+        return None
+    entry = recorded[0]
+    intact = register.signed and not register.problems and register.key_problem is None
+    return message(QT_TR_NOOP(
+        "{path} says it is the results file of certificate {number} (its PDF SHA-256 "
+        "{pdf}…), whose results file the register recorded as another (SHA-256 {recorded}…, "
+        "{file}): this copy was altered after issue") if intact else QT_TR_NOOP(
+        "{path} says it is the results file of certificate {number} (its PDF SHA-256 "
+        "{pdf}…), whose results file the register recorded as another (SHA-256 {recorded}…, "
+        "{file}): this copy was altered after issue, or — in a register without the "
+        "laboratory's key — the register's record of it was rewritten; compare it with the "
+        "lab's copy"), path=path, number=entry["number"],
+        pdf=stated["pdf_sha256"][:16], recorded=entry["sha256"][:16], file=entry["file"])
 
 
 def _holds(path: str, register, record, flag: str) -> bool:

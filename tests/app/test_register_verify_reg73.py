@@ -172,3 +172,61 @@ def test_show_says_which_form_of_record_digest_a_record_uses(capsys):
     _rewrite_newest(chain_format=5)
     assert main(["register", "show", number]) == 0
     assert "record digest on its PDF: form 1" in capsys.readouterr().out
+
+
+def _workbook(number: str, pdf_sha256: str) -> bytes:
+    """A results workbook's *Certificate* sheet as the results file lays it out: the
+    certificate's number on its first row, its PDF's SHA-256 on the sixth, its DCC's on the
+    seventh."""
+    import io
+
+    from openpyxl import Workbook
+
+    book = Workbook()
+    sheet = book.active
+    sheet.title = "Certificate"
+    for row in (("Certificate number", number), ("Issued", "2026-12-01"), ("Lab", "Angle lab"),
+                ("Item", "Rotary encoder"), ("Serial", "RX-1"),
+                ("Certificate PDF SHA-256", pdf_sha256), ("Certificate DCC SHA-256", "")):
+        sheet.append(row)
+    out = io.BytesIO()
+    book.save(out)
+    return out.getvalue()
+
+
+def test_the_customers_results_file_names_its_certificate_when_its_entry_was_rewritten(
+        tmp_path, capsys):
+    """reg73 #1 launder_results.sh: the newest results entry pointed at another file, its
+    chain value recomputed, no key: the customer's genuine workbook was "NOT in the
+    register" and nothing more; it is now said to be that certificate's, whose recorded
+    results file is another."""
+    with Register(register_url()) as register:
+        record, pdf = register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)
+        workbook = _workbook(record.number, record.pdf_sha256)
+        register.record_results(record.number, workbook, "r.xlsx")
+    engine = sa.create_engine(register_url())
+    with engine.connect() as conn:
+        entry = dict(conn.execute(sa.text(
+            "SELECT * FROM entries ORDER BY seq DESC LIMIT 1")).one()._mapping)
+        previous = conn.execute(sa.text("SELECT chain_sha256 FROM certificates WHERE seq = :s"),
+                                {"s": entry["seq"] - 1}).scalar()
+    engine.dispose()
+    body = json.loads(entry["body_json"])
+    body["sha256"] = hashlib.sha256(b"another workbook").hexdigest()
+    entry["body_json"] = json.dumps(body, sort_keys=True)
+    fields = {k: entry[k] for k in ("seq", "kind", "subject", "body_json", "recorded_at",
+                                    "os_user", "workstation")}
+    text = json.dumps({"entry": fields}, sort_keys=True, ensure_ascii=False,
+                      separators=(",", ":"))
+    chain = hashlib.sha256(f"{previous}\n{text}".encode()).hexdigest()
+    _sql("UPDATE entries SET body_json = :b, chain_sha256 = :c WHERE id = :id",
+         "UPDATE register_state SET value = :c WHERE name = 'head'",
+         b=entry["body_json"], c=chain, id=entry["id"])
+    assert main(["register", "verify"]) == 0  # the register agrees with itself
+    (tmp_path / "r.xlsx").write_bytes(workbook)
+    capsys.readouterr()
+    assert main(["register", "verify", str(tmp_path / "r.xlsx")]) == 1
+    out = capsys.readouterr().out
+    assert (f"says it is the results file of certificate {record.number} (its PDF SHA-256 "
+            f"{record.pdf_sha256[:16]}…), whose results file the register recorded as another"
+            ) in out and "the register's record of it was rewritten" in out
