@@ -104,7 +104,7 @@ def _verify_file(url: str, data: bytes, key: str = "") -> list[str]:
         return [str(p) for p in register.audit(pdfs=True)] + ([str(said)] if said else [])
 
 
-@pytest.mark.parametrize("register_url", ["sqlite"], indirect=True)
+@pytest.mark.parametrize("register_url", ["sqlite", "postgresql"], indirect=True)
 def test_the_newest_records_dcc_rewritten_is_found_from_the_customers_pdf(register_url):
     """reg73 #1: the stored DCC replaced by one with another value (the genuine PDF still
     embedded), its SHA-256 set, the chain recomputed, no key: found."""
@@ -120,7 +120,7 @@ def test_the_newest_records_dcc_rewritten_is_found_from_the_customers_pdf(regist
            "from" in said and "form 2" in said
 
 
-@pytest.mark.parametrize("register_url", ["sqlite"], indirect=True)
+@pytest.mark.parametrize("register_url", ["sqlite", "postgresql"], indirect=True)
 def test_the_newest_records_kind_rewritten_is_found_from_the_customers_pdf(register_url):
     (record, pdf), = _issue(register_url, 1)
     _rewrite_newest(register_url, document_kind="test")
@@ -128,7 +128,7 @@ def test_the_newest_records_kind_rewritten_is_found_from_the_customers_pdf(regis
     assert "the record was rewritten after issue" in said
 
 
-@pytest.mark.parametrize("register_url", ["sqlite"], indirect=True)
+@pytest.mark.parametrize("register_url", ["sqlite", "postgresql"], indirect=True)
 def test_a_record_of_form_1_still_verifies_and_says_its_form(register_url):
     """A record of 0.8.21 (chain format 5): its PDF carries the digest of form 1, which
     covers neither the kind nor the DCC; it verifies as it is, and its kind rewritten is
@@ -175,7 +175,7 @@ def _place_said(url: str, data: bytes, key: str = "") -> tuple[str, bool]:
     return " ".join(said), lost
 
 
-@pytest.mark.parametrize("register_url", ["sqlite"], indirect=True)
+@pytest.mark.parametrize("register_url", ["sqlite", "postgresql"], indirect=True)
 @pytest.mark.parametrize("keyed", [True, False])
 def test_a_file_printing_the_head_records_nothing_and_stops_nothing(register_url, tmp_path,
                                                                      keyed):
@@ -195,7 +195,7 @@ def test_a_file_printing_the_head_records_nothing_and_stops_nothing(register_url
     assert len(_issue(register_url, 1, key)) == 1  # issuing goes on
 
 
-@pytest.mark.parametrize("register_url", ["sqlite"], indirect=True)
+@pytest.mark.parametrize("register_url", ["sqlite", "postgresql"], indirect=True)
 def test_a_genuine_pdf_with_its_record_deleted_is_lost_only_with_its_proof(register_url,
                                                                            tmp_path):
     """With the key, the certificate issued carries the proof: its record deleted with the
@@ -218,7 +218,7 @@ def test_a_genuine_pdf_with_its_record_deleted_is_lost_only_with_its_proof(regis
     assert lost
 
 
-@pytest.mark.parametrize("register_url", ["sqlite"], indirect=True)
+@pytest.mark.parametrize("register_url", ["sqlite", "postgresql"], indirect=True)
 @pytest.mark.parametrize("keyed", [True, False])
 def test_a_copy_edited_with_its_digest_is_altered_not_lost(register_url, tmp_path, keyed):
     """reg73 #4: the customer's copy of the newest certificate with its record digest
@@ -233,7 +233,7 @@ def test_a_copy_edited_with_its_digest_is_altered_not_lost(register_url, tmp_pat
         and "LOST" not in said and "recorded in the register" not in said
 
 
-@pytest.mark.parametrize("register_url", ["sqlite"], indirect=True)
+@pytest.mark.parametrize("register_url", ["sqlite", "postgresql"], indirect=True)
 def test_a_wrong_key_is_said_to_be_one_and_writes_nothing(register_url, tmp_path):
     """reg73 #7: the lab's key file with a newline added: not "forged", not "restore a
     backup"; nothing written; the right key then verifies clean."""
@@ -256,7 +256,7 @@ def test_a_wrong_key_is_said_to_be_one_and_writes_nothing(register_url, tmp_path
         assert register.key_problem is None and register.audit(pdfs=True) == []
 
 
-@pytest.mark.parametrize("register_url", ["sqlite"], indirect=True)
+@pytest.mark.parametrize("register_url", ["sqlite", "postgresql"], indirect=True)
 def test_a_wrong_key_of_a_register_with_no_fingerprint_yet(register_url, tmp_path):
     """A register signed before the fingerprint was kept (its row deleted here): no signed
     record is the key's — the key is wrong, nothing is called forged."""
