@@ -1014,7 +1014,9 @@ class Register:
               separate_calibration: str | None = None,
               document_kind: str | Callable[[], str] | None = None,
               correction_confirmed: bool = False, another_makers_item: bool = False,
-              another_lookalike_item: bool = False) -> tuple[CertificateRecord, bytes]:
+              another_lookalike_item: bool = False,
+              prepare: Callable[[CertificateMetadata], tuple[str | None, bytes | None]]
+              | None = None) -> tuple[CertificateRecord, bytes]:
         """Allocate the number (or check the one given), render the PDF with it and with
         the chain's head before it, record it. The PDF is rendered outside any lock with
         the number and head the register expects next; one short transaction then checks
@@ -1055,6 +1057,9 @@ class Register:
         6). An amendment or replacement records its own document's kind, which is the
         original's unless the corrected document is of the other kind. None: not recorded
         (the register's own tests).
+        ``prepare(final)``: the document's kind and its DCC made with an empty PDF, before
+        the PDF is rendered (a guess that saves a rendering: the digest the PDF carries covers
+        both, content form 2; when the rendering gives others, it is rendered again).
 
         An amendment or replacement is of the calibration it corrects: issued on the
         original's workbench, for its item (the serial compared as printed, never by its
@@ -1183,7 +1188,7 @@ class Register:
                 # which are told by the rendering: rendered again when they were not the
                 # ones the digest was taken with (a kind given as text and no DCC: once)
                 pdf, kind, dcc = self._render_with_content(
-                    render, render_dcc, document_kind, final, plan.head, record)
+                    render, render_dcc, document_kind, final, plan.head, record, prepare)
                 record = dataclasses.replace(
                     record, pdf_sha256=hashlib.sha256(pdf).hexdigest(),
                     dcc_sha256=None if dcc is None else hashlib.sha256(dcc).hexdigest(),
@@ -1246,7 +1251,10 @@ class Register:
                              render_dcc: Callable[[CertificateMetadata, bytes], bytes] | None,
                              document_kind: str | Callable[[], str] | None,
                              final: CertificateMetadata, head: str,
-                             record: CertificateRecord) -> tuple[bytes, str | None, bytes | None]:
+                             record: CertificateRecord,
+                             prepare: Callable[[CertificateMetadata],
+                                               tuple[str | None, bytes | None]] | None = None,
+                             ) -> tuple[bytes, str | None, bytes | None]:
         """The PDF rendered with the digest of its record's content in form 2 (chain format
         6), the document's kind and its DCC: the digest is taken with the kind and the DCC's
         body (:func:`models.register.chain.dcc_body_digest`) of the rendering before, until
@@ -1257,6 +1265,10 @@ class Register:
 
         kind = None if callable(document_kind) else document_kind
         body: str | None = None
+        if prepare is not None:  # the guess of the caller, checked by the rendering
+            guessed_kind, guessed_dcc = prepare(final)
+            kind = guessed_kind if callable(document_kind) else kind
+            body = None if guessed_dcc is None else dcc_body_digest(bytes(guessed_dcc))
         fields = dataclasses.asdict(record)
         for _rendering in range(3):
             guess = (kind, body)

@@ -230,3 +230,24 @@ def test_the_customers_results_file_names_its_certificate_when_its_entry_was_rew
     assert (f"says it is the results file of certificate {record.number} (its PDF SHA-256 "
             f"{record.pdf_sha256[:16]}…), whose results file the register recorded as another"
             ) in out and "the register's record of it was rewritten" in out
+
+
+def test_a_certificate_with_its_dcc_is_rendered_once_and_its_digest_covers_both(
+        samples_dir, tmp_path, capsys, monkeypatch):
+    """The record digest of content form 2 covers the document's kind and its DCC, known
+    before the PDF is rendered (issue_certificate's prepare): one rendering, the DCC's
+    "not validated" said once, and the register's own copy verifies clean."""
+    import app.certificate_issue as issuing
+
+    renders = []
+    real = issuing.certificate_pdf_bytes
+    monkeypatch.setattr(issuing, "certificate_pdf_bytes",
+                        lambda document: renders.append(1) or real(document))
+    meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    meta.update({"example": False, "certificate_number": ""})
+    (tmp_path / "m.json").write_text(json.dumps(meta), encoding="utf-8")
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--metadata",
+                 str(tmp_path / "m.json"), "--certificate", str(tmp_path / "c.pdf"), "--dcc",
+                 str(tmp_path / "c.xml")]) == 0
+    assert len(renders) == 1 and capsys.readouterr().err.count("was not validated") == 1
+    assert main(["register", "verify", str(tmp_path / "c.xml")]) == 0

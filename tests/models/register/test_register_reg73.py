@@ -266,3 +266,32 @@ def test_a_wrong_key_of_a_register_with_no_fingerprint_yet(register_url, tmp_pat
         said = " ".join(str(p) for p in [*register.problems,
                                          getattr(register, "key_problem", None)])
         assert "none of its signed records is this key's" in said and "forged" not in said
+
+
+@pytest.mark.parametrize("register_url", ["sqlite"], indirect=True)
+def test_a_wrong_guess_of_the_kind_is_rendered_again_and_a_changing_document_issues_nothing(
+        register_url):
+    """The digest the PDF carries covers the kind and the DCC the rendering gives: a guess
+    (prepare) that is not what the rendering gives is rendered again, with the right one; a
+    document whose DCC differs at each rendering is not issued."""
+    from models.register.printed_place import content_changed
+
+    renders = []
+
+    def render(meta, head="", content=""):
+        renders.append(content)
+        return stand_in_pdf(meta, head, content)
+
+    with _open(register_url) as register:
+        record, pdf = register.issue(IssueRequest("polygon", META, PROJECT), render,
+                                     document_kind=lambda: "calibration",
+                                     prepare=lambda final: ("test", None))
+        assert len(renders) == 2 and record.document_kind == "calibration"
+        assert register.audit(pdfs=True) == []
+        assert content_changed(register, "c.pdf", pdf, register.get(record.number)) is None
+        made = iter(range(10))
+        with pytest.raises(RegisterError, match="changed each time it was rendered"):
+            register.issue(IssueRequest("polygon", META, PROJECT), render,
+                           render_dcc=lambda final, pdf: _dcc(final, pdf).replace(
+                               b"Braunschweig", f"Town {next(made)}".encode()))
+        assert [r.number for r in register.list()] == [record.number]
