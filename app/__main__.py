@@ -1,3 +1,4 @@
-from app.main import main
+from app.main import entry
 
-raise SystemExit(main())
+# as the console script: a closed pipe (python -m app register verify | head) ends quietly
+raise SystemExit(entry())

@@ -306,17 +306,28 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
 
     made: dict[str, Any] = {}
 
-    def render(final: CertificateMetadata, head: str = "", content: str = "") -> bytes:
+    def render(final: CertificateMetadata, head: str = "", content: str = "",
+               proof: str = "") -> bytes:
         document = dataclasses.replace(
             kind.certificate_document(result, final, origin, settings),
             raw_data_sha256=digest, edited_readings=edited, register_head=head,
-            register_content=content)
+            register_content=content, register_proof=proof)
         pdf = certificate_pdf_bytes(document)
         made["document"] = document  # the last one rendered is the one recorded
         if dcc is not None:  # the register may render again: the last one is recorded
             # signed when the lab's key and certificate are configured (models/dcc/signature)
             made["dcc"] = sign_if_configured(dcc(document, pdf), *signing)
         return pdf
+
+    def prepare(final: CertificateMetadata) -> tuple[str, bytes | None]:
+        """The document's kind and its DCC with an empty PDF, before the PDF is rendered:
+        what the record digest the PDF carries covers (content form 2), so that it is
+        rendered once (the register renders again if the rendering gives others)."""
+        document = dataclasses.replace(
+            kind.certificate_document(result, final, origin, settings),
+            raw_data_sha256=digest, edited_readings=edited)
+        return ("test" if document.is_test_report else "calibration",
+                None if dcc is None else dcc(document, b""))
 
     # before a number is used: an output onto the register (or a database), one that
     # cannot be written (read-only media, a name too long, a FIFO or a device) and one that
@@ -344,7 +355,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                                  document_kind=lambda: "test" if made["document"].is_test_report
                                  else "calibration",
                                  render_dcc=(lambda _final, _pdf: made["dcc"])
-                                 if dcc is not None else None)
+                                 if dcc is not None else None, prepare=prepare)
     # every output is tried, and every one not written is named (reg72 #5)
     failures: list[IssuedNotWritten] = []
     try:

@@ -49,7 +49,15 @@ from pathlib import Path
 
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
-from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered
+from models.messages import (
+    QT_TR_NOOP,
+    Message,
+    declared_text,
+    joined,
+    message,
+    reason_of,
+    rendered,
+)
 from models.project.atomic_write import is_temporary_name, write_bytes_atomic
 from models.project.file_kind import file_kind as kind_of_bytes
 from models.project.output_guard import (
@@ -215,6 +223,21 @@ def _checker(record) -> str:
     return _detail(record, "checker")
 
 
+def _digest_form_line(record) -> Message:
+    """Which form of record digest the record's PDF carries (models/register/chain.py)."""
+    import dataclasses
+
+    from models.register.chain import content_form
+
+    form = content_form(dataclasses.asdict(record))
+    return message(QT_TR_NOOP(
+        "  record digest on its PDF: form 2 (readings, results and details, the document's "
+        "kind and its DCC)") if form >= 2 else QT_TR_NOOP(
+        "  record digest on its PDF: form 1 (readings, results and details; not the "
+        "document's kind nor its DCC)") if form == 1 else QT_TR_NOOP(
+        "  record digest on its PDF: none (issued before AngleBench 0.8.21)"))
+
+
 def _print_record(record, register, words) -> None:
     revision = ("" if record.revision == "original"
                 else joined((", ", revision_words(record.revision))))
@@ -244,6 +267,7 @@ def _print_record(record, register, words) -> None:
             QT_TR_NOOP("change_note")), value=record.change_note))
     lines.append(message(QT_TR_NOOP("  chain head before it (printed on it): {head}"),
                          head=register.chain_before(record.number)))
+    lines.append(_digest_form_line(record))
     for name, value in record.headline.items():  # a figure's name as the certificate has it
         lines.append(message(QT_TR_NOOP("  headline {name}: {value}"),
                              name=declared_text(name, words), value=f"{value:.6g}"))
@@ -364,6 +388,8 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     status = _verify_findings(register, path, data, out, head, head_from, certificate)
     if changed or status == EXIT_REGISTER_CHANGED:
         return EXIT_REGISTER_CHANGED
+    if register.key_problem is not None:  # the key named is not the register's: a setting
+        return EXIT_BAD_INPUT
     if status:
         return EXIT_NOT_ISSUED
     return EXIT_NO_LONGER_VALID if invalid else EXIT_VERIFIED
@@ -377,6 +403,7 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
     from models.register.chain import number_in_pdf
     from models.register.printed_place import (
         content_changed,
+        digest_missing,
         embedded_pdf,
         head_before_changed,
         in_this_chain,
@@ -386,6 +413,8 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
     )
 
     problems = register.audit(pdfs=True)
+    if register.key_problem is not None:  # a wrong key: no signature checked (reg73 #7)
+        out(register.key_problem)
     for problem in problems:
         out(message(QT_TR_NOOP("CHANGED AFTER ISSUE: {problem}"), problem=problem))
     if not problems:
@@ -470,7 +499,7 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
             "SHA-256, and it is none of them: altered, or from another register)"), path=path))
         if pdf_inside and kind in ("pdf", "dcc") and in_this_chain(register, pdf_inside):
             # it prints a head of this chain, so its record followed that head: is it gone?
-            say_its_place(register, path, pdf_inside, out)
+            say_its_place(register, path, pdf_inside, out, embedded=is_dcc)
         return 1
     out(message(_by_kind(record, QT_TR_NOOP(
         "{path}: certificate {number}, issued {issued_at}, {status}; identical to "
@@ -488,6 +517,9 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
     if rewritten is not None:
         out(rewritten)
         failed = True
+    stripped = digest_missing(path, pdf_inside, record) if pdf_inside else None
+    if stripped is not None:  # reg73 #10: a PDF with its digest stripped verified clean
+        out(stripped)
     moved = None if is_dcc else head_before_changed(register, path, data, record)
     if moved is not None:
         out(moved)
@@ -588,6 +620,9 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
             "{path}: NOT in the register (no results file written with an issued certificate "
             "has its SHA-256: altered, written without issuing one, or from another "
             "register)"), path=path))
+        named = _results_of_issued(register, path, data, records)
+        if named is not None:  # reg73 #1: the register's entry rewritten, or this copy
+            out(named)
         for said in elsewhere:
             out(said)
         return 1
@@ -635,6 +670,42 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
     for said in elsewhere:
         out(said)
     return 1 if failed else 0
+
+
+def _results_of_issued(register, path: str, data: bytes, records: list) -> Message | None:
+    """Of a results file the register holds no entry of: the certificate it says it is of
+    (an XLSX's *Certificate* sheet: its number and PDF SHA-256), when that is an issued
+    record's with a results file recorded — which is then another file (reg73 #1: the
+    newest results entry rewritten with its chain recomputed called the customer's genuine
+    workbook "NOT in the register" and nothing more). With the lab's key and its signatures
+    intact the register's entry is its own: the copy was altered; without, either."""
+    from app.writers.results_export import issue_stated
+
+    if file_kind(data) != "xlsx":
+        return None
+    try:
+        stated = issue_stated(data)
+    except (ValueError, OSError, KeyError):
+        return None
+    if not stated or not stated.get("pdf_sha256"):
+        return None
+    numbers = {number for number, kind in register.issued_file(stated["pdf_sha256"])
+               if kind == "pdf"}
+    recorded = [entry for entry in records if entry["number"] in numbers and entry["first"]]
+    if not recorded:
+        return None
+    entry = recorded[0]
+    intact = register.signed and not register.problems and register.key_problem is None
+    return message(QT_TR_NOOP(
+        "{path} says it is the results file of certificate {number} (its PDF SHA-256 "
+        "{pdf}…), whose results file the register recorded as another (SHA-256 {recorded}…, "
+        "{file}): this copy was altered after issue") if intact else QT_TR_NOOP(
+        "{path} says it is the results file of certificate {number} (its PDF SHA-256 "
+        "{pdf}…), whose results file the register recorded as another (SHA-256 {recorded}…, "
+        "{file}): this copy was altered after issue, or — in a register without the "
+        "laboratory's key — the register's record of it was rewritten; compare it with the "
+        "lab's copy"), path=path, number=entry["number"],
+        pdf=stated["pdf_sha256"][:16], recorded=entry["sha256"][:16], file=entry["file"])
 
 
 def _holds(path: str, register, record, flag: str) -> bool:

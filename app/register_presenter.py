@@ -236,6 +236,7 @@ class RegisterPresenter:
         was rewritten is said."""
         from models.register.printed_place import (
             content_changed,
+            digest_missing,
             head_before_changed,
             in_this_chain,
             lost_and_acknowledged,
@@ -253,6 +254,9 @@ class RegisterPresenter:
             with self._register() as register:
                 found = register.verify_all(data)
                 problems = register.audit(pdfs=True)  # the stored PDFs too, on demand
+                if register.key_problem is not None:  # a setting, not a forgery (reg73 #7)
+                    self.view.tell(tr("Not the register's key"),
+                                   translated(register.key_problem))
                 lost = False
                 if len(found) == 1:
                     moved = head_before_changed(register, path, data, found[0])
@@ -260,6 +264,8 @@ class RegisterPresenter:
                     # its record rewritten since (the content digest it carries: reg72 #2)
                     rewritten = content_changed(register, path, data, found[0])
                     findings += [rewritten] if rewritten is not None else []
+                    stripped = digest_missing(path, data, found[0])
+                    findings += [stripped] if stripped is not None else []
                 elif not found and lost_and_acknowledged(register, path, data,
                                                          findings.append):
                     lost = True  # issued before a loss recorded since (reg73 #5)

@@ -25,9 +25,11 @@ def relinked(previous: str, row: dict) -> str:
     return hashlib.sha256(f"{previous}\n{body}".encode()).hexdigest()
 
 
-def stand_in_pdf(meta, head: str = "", content: str = "") -> bytes:
+def stand_in_pdf(meta, head: str = "", content: str = "", proof: str = "") -> bytes:
     """A stand-in certificate PDF: its title (the number) and the keywords the register
-    gives it to carry (the head before it, its record's content digest)."""
+    gives it to carry (the head before it, its record's content digest and, with the lab's
+    key, its proof of issue)."""
+    carried = f" anglebench-register-proof:{proof}" if proof else ""
     return (f"%PDF-1.4 /Title (Calibration certificate {meta.certificate_number}) /Keywords "
-            f"(anglebench-register-head-before:{head} anglebench-record-content:{content})"
-            ).encode()
+            f"(anglebench-register-head-before:{head} anglebench-record-content:{content}"
+            f"{carried})").encode()

@@ -127,6 +127,9 @@ class CertificateDocument:
     #: the digest of the register record's content (models/register/chain.content_digest),
     #: carried in the PDF's keywords: a record rewritten after issue is found from the PDF
     register_content: str = ""
+    #: the register's proof that it issued this certificate (models/register/signing.proof),
+    #: carried in the PDF's keywords; "" without the lab's key
+    register_proof: str = ""
     # a specimen (the bundled example details, or the window's training switch):
     # watermarked SPECIMEN, numbered SPECIMEN-…, never recorded in a register
     specimen: bool = False

@@ -31,6 +31,17 @@ and with the lab's key the state (record count, head and number counters) is sig
 every record, so a deleted tail with the state set back is found
 (models/register/signing.state_text).
 
+Since AngleBench 0.8.22 every certificate issued has chain format 6 (the fields of format
+4): the digest its PDF carries is of content form 2 (:func:`content_form`), which also covers
+every field that identifies a file issued with it or what it is: the document kind and the
+DCC (its SHA-256 is made after the PDF it embeds, so the digest covers the DCC as issued with
+the embedded PDF and any XML signature left out, :func:`dcc_body_digest`) — so the newest
+record's DCC or kind rewritten with its chain recomputed is found from the customer's PDF,
+key or no key (reg73 #1). A record of chain format 5 carries content form 1 and is checked
+against it. The results file is made after the PDF and names its SHA-256: no digest the PDF
+carries can cover it; its chained entry is found rewritten by the customer's results file
+(which names its certificate's PDF) and, with the key, by its signature.
+
 Anyone with write access can recompute the whole chain: the chain's head (``anglebench
 register head``), noted outside the database, and the head printed on every certificate
 (the head *before* it) anchor it (``anglebench register verify --head``).
@@ -44,8 +55,9 @@ from collections.abc import Mapping
 from typing import Any
 
 __all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "CHAINED_V4", "CONTENT", "CONTENT_MARK",
-           "ENTRY_CHAINED", "GENESIS", "HEAD_MARK", "content_digest", "content_in_pdf",
-           "head_in_pdf", "link", "link_entry", "number_in_pdf"]
+           "CONTENT_V2", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK", "PROOF_MARK", "content_digest",
+           "content_digest_v2", "content_form", "content_in_pdf", "dcc_body_digest", "head_in_pdf", "link",
+           "link_entry", "number_in_pdf", "proof_in_pdf"]
 
 #: a record's fields as issued, in the chain (status and superseded_by change later)
 CHAINED = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
@@ -94,8 +106,7 @@ HEAD_MARK = "anglebench-register-head-before:"
 
 
 #: a record's content as recorded, known before its PDF is rendered: what the digest its PDF
-#: carries covers (not the PDF's or DCC's SHA-256, made after it, nor the document's kind,
-#: told by the rendering; both are in the chain)
+#: carries covers in content form 1 (chain format 5; form 2 adds :data:`CONTENT_V2`)
 CONTENT = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
            "item_description", "item_manufacturer", "item_serial", "customer", "operator",
            "workstation", "supersedes", "revision", "change_note", "project_json",
@@ -103,11 +114,62 @@ CONTENT = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
            "approver")
 #: how a certificate's PDF (so the DCC, which embeds it) carries its record's content digest
 CONTENT_MARK = "anglebench-record-content:"
+#: how a certificate's PDF carries the proof that the register issued it, made with the
+#: lab's key (models/register/signing.proof; AngleBench 0.8.22 on, keyed registers)
+PROOF_MARK = "anglebench-register-proof:"
 
 
-def content_digest(record: Mapping[str, Any]) -> str:
-    """The SHA-256 of a record's content (:data:`CONTENT`) as recorded."""
-    return _digest("content", {k: record.get(k) for k in CONTENT})
+#: what content form 2 (chain format 6, AngleBench 0.8.22 on) adds to form 1: what the
+#: document is and the DCC issued with it (its :func:`dcc_body_digest`, None for none)
+CONTENT_V2 = ("document_kind", "dcc_body")
+
+
+def content_form(record: Mapping[str, Any]) -> int:
+    """Which form of content digest a record's PDF carries: 2 for chain format 6 (AngleBench
+    0.8.22 on: the document kind and the DCC covered), 1 for chain format 5 (0.8.21: the
+    readings, results and details only), 0 for older records (their PDFs carry none)."""
+    chain_format = record.get("chain_format") or 1
+    return 2 if chain_format >= 6 else 1 if chain_format == 5 else 0
+
+
+def content_digest(record: Mapping[str, Any], dcc: bytes | None = None,
+                   form: int | None = None) -> str:
+    """The SHA-256 of a record's content as recorded, in the record's form
+    (:func:`content_form`; ``form`` to choose): form 1 of :data:`CONTENT`, form 2 also of
+    :data:`CONTENT_V2`, with ``dcc`` the record's stored DCC (None: issued without one)."""
+    form = form if form is not None else max(content_form(record), 1)
+    if form < 2:
+        return _digest("content", {k: record.get(k) for k in CONTENT})
+    return content_digest_v2(record, None if dcc is None else dcc_body_digest(dcc))
+
+
+def content_digest_v2(record: Mapping[str, Any], dcc_body: str | None) -> str:
+    """The content digest in form 2 of ``record`` (its document kind among its fields) and
+    its DCC's :func:`dcc_body_digest` (None: no DCC)."""
+    fields = {k: record.get(k) for k in CONTENT}
+    fields.update(document_kind=record.get("document_kind"), dcc_body=dcc_body)
+    return _digest("content-2", fields)
+
+
+def dcc_body_digest(dcc: bytes) -> str:
+    """The SHA-256 of a DCC as issued, but for the PDF it embeds (its ``dataBase64`` texts
+    emptied) and any XML signature (``ds:Signature`` left out; it covers the PDF): what is
+    known of the DCC before its PDF is rendered, in canonical XML (C14N), so that its
+    measurement results, names and numbers are covered. A DCC that cannot be read as XML is
+    covered byte for byte."""
+    from lxml import etree
+
+    try:
+        root = etree.fromstring(bytes(dcc), etree.XMLParser(
+            resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False))
+    except (etree.XMLSyntaxError, ValueError):
+        return hashlib.sha256(b"unreadable\n" + bytes(dcc)).hexdigest()
+    for signature in root.findall("{http://www.w3.org/2000/09/xmldsig#}Signature"):
+        root.remove(signature)
+    for element in root.iter():
+        if isinstance(element.tag, str) and etree.QName(element).localname == "dataBase64":
+            element.text = ""
+    return hashlib.sha256(etree.tostring(root, method="c14n")).hexdigest()
 
 
 def content_in_pdf(data: bytes) -> str:
@@ -116,6 +178,15 @@ def content_in_pdf(data: bytes) -> str:
     import re
 
     found = re.search(CONTENT_MARK.encode() + rb"([0-9a-f]{64})", data)
+    return found.group(1).decode() if found else ""
+
+
+def proof_in_pdf(data: bytes) -> str:
+    """The register's proof a certificate's PDF carries (its keywords), or "" (issued
+    without the lab's key, or before AngleBench 0.8.22)."""
+    import re
+
+    found = re.search(PROOF_MARK.encode() + rb"([0-9a-f]{64})", data)
     return found.group(1).decode() if found else ""
 
 

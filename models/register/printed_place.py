@@ -12,11 +12,13 @@ import dataclasses
 from collections.abc import Callable
 
 from models.messages import QT_TR_NOOP, Message, message, reason_of
-from models.register.chain import content_digest, content_in_pdf, head_in_pdf
+from models.register.chain import content_form, content_in_pdf, head_in_pdf
+from models.register.signing import KEY_ENV_VAR
 from models.register.store import CertificateRecord, Register, RegisterError
 
-__all__ = ["ALTERED_OR_REPLACED", "content_changed", "embedded_pdf", "head_before_changed",
-           "in_this_chain", "lost_and_acknowledged", "record_lost", "say_its_place"]
+__all__ = ["ALTERED_COPY", "ALTERED_OR_REPLACED", "CANNOT_TELL", "content_changed",
+           "digest_missing", "embedded_pdf", "head_before_changed", "in_this_chain",
+           "lost_and_acknowledged", "record_lost", "say_its_place"]
 
 #: a PDF that prints a head of the chain whose next record is another: the PDF altered, or
 #: the record replaced — which, the register cannot tell (``register verify`` counts it as
@@ -27,8 +29,27 @@ ALTERED_OR_REPLACED = QT_TR_NOOP(
     "or the register's record of it was replaced")
 
 
+#: a copy whose number's record is at its place with another content digest, the copy
+#: carrying no proof of the lab's key that it was issued so (reg73 #4): the copy differs from
+#: the record — a file not issued as it is (exit 1), not a certificate the register lost
+ALTERED_COPY = QT_TR_NOOP(
+    "ALTERED: {path} ({number}) is not the certificate the register issued as record {seq}: "
+    "record {seq} is {number}, whose content digest is {actual}…, and this copy carries "
+    "{carried}…: the copy was altered after issue{unless}")
+
+#: a PDF printing the head where the chain ends, no record holding it, and no proof of the
+#: lab's key that this register issued it: recorded as nothing (reg73 #3)
+CANNOT_TELL = QT_TR_NOOP(
+    "{path} ({number}) prints the head before record {seq}, where the register's chain ends, "
+    "and no record has its SHA-256: the register cannot tell whether this was issued here — "
+    "a certificate whose record was deleted after issue, or a file made to print the "
+    "register's head, which anyone can read — because {why}; nothing is recorded. If it is "
+    "the laboratory's own certificate (compare it with the lab's copy and its log of heads), "
+    "its record was deleted: restore the register from a backup")
+
+
 def say_its_place(register: Register, path: str, data: bytes,
-                  out: Callable[[Message], None]) -> bool:
+                  out: Callable[[Message], None], embedded: bool = False) -> bool:
     """A certificate's PDF whose printed head (the chain before it) is in the register's
     chain: its own record, its number and SHA-256, must be the next one (rev64 F8: a tail
     deleted with its state row set back left "the history up to it is still there" said of
@@ -36,7 +57,13 @@ def say_its_place(register: Register, path: str, data: bytes,
     chain ending at that head, no record with its SHA-256 — is recorded in the register
     (Register.record_missing), which then issues nothing until a person records the loss
     (Register.acknowledge_loss; restoring a backup, older than the certificate, did not end
-    it: reg73 #5). False when it is not in its place (or prints no head of this chain)."""
+    it: reg73 #5) — only when the PDF carries the proof made with the lab's key that this
+    register issued it (Register.issued_here; reg73 #3: a text file printing the public head
+    stopped all issuing); else nothing is recorded and the register says it cannot tell. A
+    copy whose number's record is at its place with another content digest is ALTERED unless
+    its proof says the register issued it so (then the number was issued again, recorded
+    likewise; reg73 #2, #4). ``embedded``: ``data`` is the PDF a DCC presented embeds (the
+    lines say so). False when it is not in its place (or prints no head of this chain)."""
     check = register.printed_head(data)
     if check is None or check.place is None:
         return False
@@ -45,14 +72,32 @@ def say_its_place(register: Register, path: str, data: bytes,
     if check.there:
         assert check.record is not None
         out(message(QT_TR_NOOP(
+            "{path}: the PDF embedded in it is {number}'s, record {seq}, right after that "
+            "head, identical to the record's PDF (SHA-256); the file itself is not the one "
+            "recorded (see above)") if embedded else QT_TR_NOOP(
             "{path}: {number} is record {seq}, right after that head, identical to the record "
             "(SHA-256)"), path=path, number=check.record.number, seq=place))
         return True
+    proven = register.issued_here(data)
     if check.recorded_missing:
         out(message(QT_TR_NOOP(
             "CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after "
             "the head it prints; its record was found deleted and that is recorded (see "
             "above)"), path=path, number=name, seq=place))
+        return False
+    if check.missing and proven == "refuted":
+        out(message(QT_TR_NOOP(
+            "{path} ({number}) prints the head before record {seq}, where the register's chain "
+            "ends, but the proof it carries that this register issued it is not the "
+            "laboratory key's: it was not issued by this register (made to look so, or "
+            "another register's); nothing is recorded"), path=path, number=name, seq=place))
+        return False
+    if check.missing and proven != "proven":
+        out(message(CANNOT_TELL, path=path, number=name, seq=place, why=message(QT_TR_NOOP(
+            "it carries no proof made with the laboratory's key (issued before AngleBench "
+            "0.8.22 or without the key)")) if register.signed else message(QT_TR_NOOP(
+                "the register has no laboratory key ({setting}), so its certificates carry no "
+                "proof of issue"), setting=KEY_ENV_VAR)))
         return False
     if check.missing:
         out(message(QT_TR_NOOP(
@@ -74,7 +119,20 @@ def say_its_place(register: Register, path: str, data: bytes,
                 "the loss is recorded with 'anglebench register acknowledge-loss --by NAME "
                 "--reason TEXT --last-number NUMBER'")))
         return False
-    if _number_reissued(check, data):
+    if _number_reissued(register, check, data) and proven != "proven":
+        assert check.record is not None
+        out(message(ALTERED_COPY, path=path, number=name, seq=place,
+                    actual=register.record_content_digest(check.record)[:16],
+                    carried=content_in_pdf(data)[:16], unless="" if proven == "refuted" else
+                    message(QT_TR_NOOP(
+                        " — or its record was deleted and the number issued again, which the "
+                        "register cannot rule out for a copy that carries no proof made with "
+                        "the laboratory's key")) if register.signed else message(QT_TR_NOOP(
+                            " — or, in this register without the laboratory's key, its record "
+                            "was deleted and the number issued again: compare the head with "
+                            "the lab's log"))))
+        return False
+    if _number_reissued(register, check, data):
         assert check.record is not None
         out(message(QT_TR_NOOP(
             "CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after "
@@ -153,7 +211,7 @@ def head_before_changed(register: Register, path: str, data: bytes,
         number=record.number, actual=actual)
 
 
-def _number_reissued(check, data: bytes) -> bool:
+def _number_reissued(register: Register, check, data: bytes) -> bool:
     """The record at the PDF's place is another certificate of the number the PDF names:
     another record's content than the one the PDF carries the digest of (a PDF altered
     after issue carries its own record's digest; a PDF that carries none, issued before
@@ -162,7 +220,7 @@ def _number_reissued(check, data: bytes) -> bool:
     return (check.record is not None and bool(check.number) and bool(carried)
             and check.record.number == check.number
             and check.record.pdf_sha256 != check.sha256 and not check.elsewhere
-            and content_digest(dataclasses.asdict(check.record)) != carried)
+            and register.record_content_digest(check.record) != carried)
 
 
 def record_lost(register: Register, data: bytes) -> bool:
@@ -170,12 +228,17 @@ def record_lost(register: Register, data: bytes) -> bool:
     the number it names say this register issued it there: its record deleted after issue
     (the chain ending at that head, or recorded as missing), or another certificate of its
     number in its place (the number issued again). Not a forgery: the register LOST it
-    (reg72 #1)."""
+    (reg72 #1) — said only of a PDF that proves this register issued it (reg73 #3, #4:
+    a file printing the public head, or a copy altered with its digest, is not)."""
     if not in_this_chain(register, data):
         return False
     check = register.printed_head(data)
-    return check is not None and check.place is not None and (
-        check.missing or check.recorded_missing or _number_reissued(check, data))
+    if check is None or check.place is None:
+        return False
+    if check.recorded_missing:
+        return True
+    return (check.missing or _number_reissued(register, check, data)) \
+        and register.issued_here(data) == "proven"
 
 
 def embedded_pdf(dcc: bytes) -> bytes:
@@ -203,12 +266,34 @@ def content_changed(register: Register, path: str, data: bytes,
     carried = content_in_pdf(data)
     if not carried:
         return None
-    actual = content_digest(dataclasses.asdict(record))
+    actual = register.record_content_digest(record)
     if actual == carried:
         return None
     return message(QT_TR_NOOP(
         "CHANGED AFTER ISSUE: {path}: the register's record of {number} is not the record "
         "it was issued from: the file carries the digest {carried}… of its record's content "
-        "(readings, results and details as recorded), the record now gives {actual}…: the "
-        "record was rewritten after issue"), path=path, number=record.number,
-        carried=carried[:16], actual=actual[:16])
+        "({covered}), the record now gives {actual}…: the record was rewritten after issue"),
+        path=path, number=record.number, carried=carried[:16], actual=actual[:16],
+        covered=_covered(record))
+
+
+def _covered(record: CertificateRecord) -> str:
+    """What the digest a record's PDF carries covers, by its form, as a message."""
+    if content_form(dataclasses.asdict(record)) >= 2:
+        return message(QT_TR_NOOP(
+            "form 2: readings, results and details as recorded, the document's kind and its "
+            "DCC"))
+    return message(QT_TR_NOOP("form 1: readings, results and details as recorded"))
+
+
+def digest_missing(path: str, data: bytes, record: CertificateRecord) -> Message | None:
+    """Of a PDF found in the register as ``record`` (or a DCC, by the PDF it embeds): a
+    record whose PDF carried a digest of its content when issued (chain format 5 on), the
+    file carrying none (reg73 #10: a stored PDF with its digest stripped verified clean)."""
+    if content_form(dataclasses.asdict(record)) < 1 or content_in_pdf(data) \
+            or not head_in_pdf(data):
+        return None
+    return message(QT_TR_NOOP(
+        "{path}: it carries no digest of its record's content, which {number}'s PDF carried "
+        "when it was issued (AngleBench 0.8.21 on): a copy made before 0.8.21, or altered"),
+        path=path, number=record.number)

@@ -18,11 +18,15 @@ from pathlib import Path
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["KEY_ENV_VAR", "STATE_SIGNATURE", "load_key", "sign", "signature_ok", "state_text"]
+__all__ = ["FINGERPRINT", "KEY_ENV_VAR", "STATE_SIGNATURE", "fingerprint", "key_slip",
+           "load_key", "proof", "proof_ok", "sign", "signature_ok", "state_text"]
 
 KEY_ENV_VAR = "ANGLEBENCH_REGISTER_KEY"
 #: the name of the register_state row that holds the state's signature
 STATE_SIGNATURE = "state_signature"
+#: the name of the register_state row that holds the fingerprint of the key the register is
+#: signed with (:func:`fingerprint`; written with its first signed record since 0.8.22)
+FINGERPRINT = "key_fingerprint"
 
 
 class KeyError_(ValueError):
@@ -68,3 +72,39 @@ def state_text(records: int | str, head: str, counters: dict[str, int]) -> str:
         {"records": str(records), "head": head,
          "counters": {name: int(value) for name, value in sorted(counters.items())}},
         sort_keys=True, separators=(",", ":"))
+
+
+def fingerprint(key: bytes) -> str:
+    """The key's fingerprint: an HMAC of a fixed label, which tells one key from another
+    without revealing it (reg73 #7: a wrong key read every record as forged)."""
+    return sign(key, "anglebench-register-key-fingerprint")
+
+
+def key_slip(key: bytes, expected: str) -> bool:
+    """The key with a line end added or removed at its end (a key file opened and saved in
+    a text editor, or pasted) has the fingerprint ``expected``. Key files are read byte
+    for byte and never stripped: a key is random bytes, and about one in forty ends in a
+    byte that reads as white space (a newline, a space), which stripping would lose — every
+    register signed with such a key would then read as forged."""
+    variants = [key + b"\n", key + b"\r\n"]
+    for end in (b"\r\n", b"\n", b"\r", b" "):
+        if key.endswith(end):
+            variants.append(key[:-len(end)])
+    return any(len(v) >= 32 and hmac.compare_digest(fingerprint(v), expected)
+               for v in variants)
+
+
+def _proof_text(number: str, head: str, content: str) -> str:
+    return f"anglebench-register-proof\n{number}\n{head}\n{content}"
+
+
+def proof(key: bytes, number: str, head: str, content: str) -> str:
+    """What a certificate's PDF carries (its keywords, since 0.8.22, when the register has
+    the lab's key) to prove it was issued by this register: an HMAC over its number, the
+    head printed on it and its record's content digest, which only the key's holder can
+    make (reg73 #3: a file printing the public head recorded a "missing" certificate)."""
+    return sign(key, _proof_text(number, head, content))
+
+
+def proof_ok(key: bytes, number: str, head: str, content: str, carried: str) -> bool:
+    return bool(carried) and signature_ok(key, _proof_text(number, head, content), carried)

@@ -25,6 +25,7 @@ import dataclasses
 import datetime as dt
 import errno
 import hashlib
+import hmac
 import importlib.metadata
 import json
 import platform
@@ -47,7 +48,6 @@ from models.register.chain import (
     CHAINED_V3,
     CHAINED_V4,
     GENESIS,
-    content_digest,
     link,
 )
 from models.register.wording import DOCUMENT_KINDS, kind_words
@@ -412,6 +412,8 @@ class Register:
         #: the numbers :meth:`issue` issued through this object whose results file is not
         #: recorded yet: the only ones :meth:`record_results` records for (stop 63)
         self._results_due: set[str] = set()
+        #: the key given is not the one the register was signed with (:meth:`_key_problem`)
+        self.key_problem: Message | None = None
         self.url = _normalise_url(url)
         self.is_sqlite = self.url.startswith("sqlite")
         self.read_only = False
@@ -645,6 +647,8 @@ class Register:
             raise RegisterError(message(QT_TR_NOOP(
                 "register {display_url} is read-only: it can be listed and verified, not "
                 "written"), display_url=self.display_url))
+        if self.key_problem is not None:  # a wrong key writes nothing (reg73 #7)
+            raise RegisterError(self.key_problem)
         self._mark_due = None
         try:
             with self.engine.begin() as conn:
@@ -847,6 +851,12 @@ class Register:
         conn.execute(state.update().where(state.c.name == "head").values(value=head))
         if not self._key:
             return
+        from models.register.signing import FINGERPRINT, fingerprint
+
+        if conn.execute(self._sa.select(state.c.value).where(
+                state.c.name == FINGERPRINT)).first() is None:
+            # the key this register is signed with, told from another (reg73 #7)
+            conn.execute(state.insert().values(name=FINGERPRINT, value=fingerprint(self._key)))
         counters, entries = self._schema.COUNTERS, self._schema.ENTRIES
         values = dict(conn.execute(self._sa.select(counters.c.name, counters.c.last_value)).all())
         signature = sign(self._key, state_text(records, head, values))
@@ -1161,7 +1171,9 @@ class Register:
               document_kind: str | Callable[[], str] | None = None,
               correction_confirmed: bool = False, another_makers_item: bool = False,
               another_lookalike_item: bool = False,
-              confirmed_date: dt.date | None = None) -> tuple[CertificateRecord, bytes]:
+              confirmed_date: dt.date | None = None,
+              prepare: Callable[[CertificateMetadata], tuple[str | None, bytes | None]]
+              | None = None) -> tuple[CertificateRecord, bytes]:
         """Allocate the number (or check the one given), render the PDF with it and with
         the chain's head before it, record it. The PDF is rendered outside any lock with
         the number and head the register expects next; one short transaction then checks
@@ -1202,6 +1214,9 @@ class Register:
         6). An amendment or replacement records its own document's kind, which is the
         original's unless the corrected document is of the other kind. None: not recorded
         (the register's own tests).
+        ``prepare(final)``: the document's kind and its DCC made with an empty PDF, before
+        the PDF is rendered (a guess that saves a rendering: the digest the PDF carries covers
+        both, content form 2; when the rendering gives others, it is rendered again).
 
         An amendment or replacement is of the calibration it corrects: issued on the
         original's workbench, for its item (the serial compared as printed, never by its
@@ -1244,6 +1259,8 @@ class Register:
         meta = dataclasses.replace(meta, certificate_number=number, item_serial=serial)
         # the stored PDFs and DCCs too, which opening does not re-hash: what verify reports,
         # issuing refuses (rev64 F12: a PDF replaced in the database did not stop issuing)
+        if self.key_problem is not None:  # a wrong key issues nothing (reg73 #7)
+            raise RegisterError(self.key_problem)
         problems = self.problems or self._stored_file_problems()
         if problems:
             raise RegisterError(message(QT_TR_NOOP(
@@ -1327,18 +1344,15 @@ class Register:
                     pdf_sha256="",
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
                     os_user=user, approver=meta.approver,
-                    chain_format=5)
+                    chain_format=6)
                 # the record's content first, carried by the PDF (so by the DCC that embeds
                 # it); then the files' hashes (reg72 #2: the newest record rewritten with its
-                # chain recomputed is found from the customer's copy)
-                content = content_digest(dataclasses.asdict(record))
-                pdf = _call_render(render, final, plan.head, content)
-                kind = document_kind() if callable(document_kind) else document_kind
-                if kind is not None and kind not in DOCUMENT_KINDS:
-                    raise ValueError(f"document_kind {kind!r}: one of {DOCUMENT_KINDS}")
-                dcc = render_dcc(final, pdf) if render_dcc is not None else None
-                if dcc is not None and not isinstance(dcc, bytes | bytearray):
-                    raise TypeError("render_dcc returns the DCC's bytes")
+                # chain recomputed is found from the customer's copy). Content form 2 also
+                # covers the document's kind and its DCC but for the PDF inside (reg73 #1),
+                # which are told by the rendering: rendered again when they were not the
+                # ones the digest was taken with (a kind given as text and no DCC: once)
+                pdf, kind, dcc = self._render_with_content(
+                    render, render_dcc, document_kind, final, plan.head, record, prepare)
                 record = dataclasses.replace(
                     record, pdf_sha256=hashlib.sha256(pdf).hexdigest(),
                     dcc_sha256=None if dcc is None else hashlib.sha256(dcc).hexdigest(),
@@ -1399,6 +1413,49 @@ class Register:
         raise RegisterError(message(QT_TR_NOOP(
             "the register was busy: {n} other certificates were issued while this one was "
             "being made; try again"), n=ISSUE_ATTEMPTS))
+
+    def _render_with_content(self, render: Callable[..., bytes],
+                             render_dcc: Callable[[CertificateMetadata, bytes], bytes] | None,
+                             document_kind: str | Callable[[], str] | None,
+                             final: CertificateMetadata, head: str,
+                             record: CertificateRecord,
+                             prepare: Callable[[CertificateMetadata],
+                                               tuple[str | None, bytes | None]] | None = None,
+                             ) -> tuple[bytes, str | None, bytes | None]:
+        """The PDF rendered with the digest of its record's content in form 2 (chain format
+        6), the document's kind and its DCC: the digest is taken with the kind and the DCC's
+        body (:func:`models.register.chain.dcc_body_digest`) of the rendering before, until
+        a rendering gives the ones its digest was taken with (the second, unless the
+        document changes as it is rendered: then nothing is issued)."""
+        from models.register.chain import content_digest_v2, dcc_body_digest
+        from models.register.signing import proof
+
+        kind = None if callable(document_kind) else document_kind
+        body: str | None = None
+        if prepare is not None:  # the guess of the caller, checked by the rendering
+            guessed_kind, guessed_dcc = prepare(final)
+            kind = guessed_kind if callable(document_kind) else kind
+            body = None if guessed_dcc is None else dcc_body_digest(bytes(guessed_dcc))
+        fields = dataclasses.asdict(record)
+        for _rendering in range(3):
+            guess = (kind, body)
+            content = content_digest_v2({**fields, "document_kind": kind}, body)
+            # with the lab's key, the proof that this register issued it (reg73 #3)
+            made = proof(self._key, record.number, head, content if _takes(
+                render, "content") else "") if self._key else ""
+            pdf = _call_render(render, final, head, content, made)
+            kind = document_kind() if callable(document_kind) else document_kind
+            if kind is not None and kind not in DOCUMENT_KINDS:
+                raise ValueError(f"document_kind {kind!r}: one of {DOCUMENT_KINDS}")
+            dcc = render_dcc(final, pdf) if render_dcc is not None else None
+            if dcc is not None and not isinstance(dcc, bytes | bytearray):
+                raise TypeError("render_dcc returns the DCC's bytes")
+            body = None if dcc is None else dcc_body_digest(bytes(dcc))
+            if (kind, body) == guess:
+                return pdf, kind, None if dcc is None else bytes(dcc)
+        raise RegisterError(message(QT_TR_NOOP(
+            "the document changed each time it was rendered (its kind or its DCC), so the "
+            "digest its PDF carries cannot be its record's: nothing was issued")))
 
     @contextmanager
     def _issuing_turn(self) -> Iterator[Any]:
@@ -2015,6 +2072,10 @@ class Register:
                         problems.append(message(QT_TR_NOOP(
                             "record {number}: the stored PDF does not match the SHA-256 "
                             "recorded at issue"), number=item.number))
+                    elif (item.chain_format or 1) >= 5:  # its PDF carries its content digest
+                        dcc = conn.execute(sa.select(certificates.c.dcc).where(
+                            certificates.c.id == item.id)).scalar_one() if item.has_dcc else None
+                        problems += _content_problems(fields, bytes(data), dcc)
                 if not is_entry:
                     problems += _dcc_problems(conn, certificates, item, pdfs)
                     if item.document_kind is not None and (item.chain_format or 1) < 4:
@@ -2023,9 +2084,11 @@ class Register:
                             "it was issued before the register recorded what a document is, and "
                             "its chain does not cover it"), number=item.number,
                             kind=kind_words(item.document_kind)))
-        problems += self._signature_problems(links)
+        self.key_problem = self._key_problem(state, links)
+        if self.key_problem is None:  # a wrong key calls nothing forged (reg73 #7)
+            problems += self._signature_problems(links)
+            problems += self._state_signature_problems(rows, state, counters)
         count = len(links)
-        problems += self._state_signature_problems(rows, state, counters)
         if state.get("records") != str(count) or state.get("head") != previous:
             problems.append(message(QT_TR_NOOP(
                 "the register recorded {recorded} record(s) ending at chain head {head}, but "
@@ -2084,6 +2147,46 @@ class Register:
             "were deleted with the state set back, or a counter was set back, outside "
             "AngleBench; restore the register from a backup"),
             records=state.get("records", "?"), head=(state.get("head") or "?")[:16])]
+
+    def _key_problem(self, state: dict, links: list) -> Message | None:
+        """With a key: the key is not the one the register was signed with — its
+        fingerprint is not the one the register holds (written with its first signed record
+        since 0.8.22), or, in a register signed before, not one of its signed records'
+        signatures is this key's. Then no signature is called forged and nothing is written
+        (reg73 #7: a key file with a newline added read as every record forged, with the
+        advice to restore a backup)."""
+        from models.register.signing import (
+            FINGERPRINT,
+            KEY_ENV_VAR,
+            fingerprint,
+            key_slip,
+            signature_ok,
+        )
+
+        if not self._key:
+            return None
+        stored = state.get(FINGERPRINT)
+        mine = fingerprint(self._key)
+        if stored is not None:
+            if hmac.compare_digest(stored, mine):
+                return None
+        else:
+            signed = [item for _seq, _is_entry, item in links if item.signature is not None]
+            if not signed or any(signature_ok(self._key, item.chain_sha256 or "",
+                                              item.signature) for item in signed):
+                return None
+        slip = stored is not None and key_slip(self._key, stored)
+        return message(QT_TR_NOOP(
+            "the key named by {setting} is not the key this register was signed with (its "
+            "fingerprint {mine}…; the register's: {theirs}){slip}: no signature is checked "
+            "against it, no record is called changed for it, and nothing is written with it; "
+            "name the laboratory's key file and try again"), setting=KEY_ENV_VAR,
+            mine=mine[:16], theirs=f"{stored[:16]}…" if stored else message(QT_TR_NOOP(
+                "not recorded, and none of its signed records is this key's")),
+            slip=message(QT_TR_NOOP(
+                " — it is the register's key with a line end added or removed at its end (the "
+                "file was edited or pasted as text): restore the key file as it was"))
+            if slip else "")
 
     @property
     def signed(self) -> bool:
@@ -2197,6 +2300,35 @@ class Register:
                 certificates.c.seq.is_(None), certificates.c.seq != place))).scalars())
         return dataclasses.replace(check, record=record, after=after,
                                    recorded_missing=recorded, elsewhere=elsewhere)
+
+    def record_content_digest(self, record: CertificateRecord) -> str:
+        """The digest of ``record``'s content as it is now, in the form its PDF carries
+        (models/register/chain.content_form; form 2 with its stored DCC)."""
+        from models.register.chain import content_digest, content_form
+
+        dcc = None
+        if content_form(dataclasses.asdict(record)) >= 2 and record.dcc_sha256 is not None:
+            certificates = self._schema.CERTIFICATES
+            with self._read() as conn:
+                stored = conn.execute(self._sa.select(certificates.c.dcc).where(
+                    certificates.c.number == record.number)).scalar()
+            dcc = None if stored is None else bytes(stored)
+        return content_digest(dataclasses.asdict(record), dcc)
+
+    def issued_here(self, pdf: bytes) -> str:
+        """Whether a certificate's PDF proves that this register issued it: "proven" (it
+        carries the proof made with the lab's key over its number, printed head and record
+        digest: models/register/signing.proof), "refuted" (it carries a proof that is not
+        this key's), "unknown" (no key, or it carries no proof: issued before 0.8.22 or
+        without the key)."""
+        from models.register.chain import content_in_pdf, head_in_pdf, number_in_pdf, proof_in_pdf
+        from models.register.signing import proof_ok
+
+        carried = proof_in_pdf(pdf)
+        if not self._key or not carried or self.key_problem is not None:
+            return "unknown"
+        return "proven" if proof_ok(self._key, number_in_pdf(pdf), head_in_pdf(pdf),
+                                    content_in_pdf(pdf), carried) else "refuted"
 
     def record_missing(self, check: PrintedHead) -> str:
         """Record, as a chained entry, that the certificate ``check`` was presented (its PDF
@@ -2835,15 +2967,26 @@ def _parse_time(text: str) -> dt.datetime:
     return stamp if stamp.tzinfo else stamp.replace(tzinfo=dt.timezone.utc)
 
 
+def _takes(render: Callable[..., bytes], name: str) -> bool:
+    """``render`` takes the keyword ``name`` (so the PDF carries what it is given)."""
+    import inspect
+
+    try:
+        return name in inspect.signature(render).parameters
+    except (TypeError, ValueError):
+        return False
+
+
 def _call_render(render: Callable[..., bytes], final: CertificateMetadata, head: str,
-                 content: str = "") -> bytes:
+                 content: str = "", proof: str = "") -> bytes:
     import inspect
 
     try:
         parameters = inspect.signature(render).parameters
     except (TypeError, ValueError):
         parameters = {}  # type: ignore[assignment]
-    given = {name: value for name, value in (("head", head), ("content", content))
+    given = {name: value for name, value in (("head", head), ("content", content),
+                                             ("proof", proof))
              if name in parameters}
     return render(final, **given)
 
@@ -2936,6 +3079,27 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
                 recorded=f"\"{withdrawn[row.number]}\"" if row.number in withdrawn
                 else message(QT_TR_NOOP("it was never withdrawn"))))
     return problems
+
+
+def _content_problems(fields: dict, pdf: bytes, dcc: bytes | None) -> list:
+    """A record of chain format 5 or later against the digest of its content its stored PDF
+    carries (in the record's form: models/register/chain.content_form): a record rewritten
+    after issue with its chain recomputed — in form 2 its DCC or document kind too (reg73
+    #1). A stored PDF that carries no digest is not judged here (the register's own tests
+    render without one); ``register verify FILE`` remarks on it (printed_place.digest_missing)."""
+    from models.register.chain import content_digest, content_form, content_in_pdf
+
+    carried = content_in_pdf(pdf)
+    if not carried:
+        return []
+    actual = content_digest(fields, None if dcc is None else bytes(dcc))
+    if actual == carried:
+        return []
+    return [message(QT_TR_NOOP(
+        "record {number}: it is not the record its stored PDF was issued from: the PDF "
+        "carries the digest {carried}… of its record's content (form {form}), the record now "
+        "gives {actual}…: the record was rewritten after issue"), number=fields["number"],
+        carried=carried[:16], form=content_form(fields), actual=actual[:16])]
 
 
 def _dcc_problems(conn, certificates, row, content: bool) -> list:

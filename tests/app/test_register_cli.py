@@ -257,18 +257,23 @@ def test_head_verify_head_show_and_withdraw(tmp_path, capsys):
     assert "was withdrawn" in capsys.readouterr().err
 
 
-def _titled(number_of_records: int) -> list[str]:
+def _titled(number_of_records: int, key: str = "") -> list[str]:
     """Certificates whose stand-in PDF carries its head in its keywords and its number in
-    its title, as a certificate's document information does."""
+    its title, as a certificate's document information does (with ``key``, the register's
+    proof of issue too)."""
     from models.register.chain import HEAD_MARK
 
     meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
                                item_serial="RX-1")
-    with Register(register_url()) as register:
+
+    def render(m, head: str = "", proof: str = "") -> bytes:
+        carried = f" anglebench-register-proof:{proof}" if proof else ""
+        return (f"%PDF /Title (Calibration certificate {m.certificate_number}) /Keywords "
+                f"({HEAD_MARK}{head}{carried})").encode()
+
+    with Register(register_url(), key_file=key) as register:
         return [register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
-                               lambda m, head="": f"%PDF /Title (Calibration certificate "
-                               f"{m.certificate_number}) /Keywords ({HEAD_MARK}{head})"
-                               .encode())[0].number for _ in range(number_of_records)]
+                               render)[0].number for _ in range(number_of_records)]
 
 
 def _truncate_consistently(number: str) -> None:
@@ -283,15 +288,32 @@ def _truncate_consistently(number: str) -> None:
 
 
 def test_a_certificate_whose_record_was_deleted_is_named_by_its_head_and_stops_issuing(
-        tmp_path, capsys):
+        tmp_path, capsys, monkeypatch):
     """rev64 F8: verify --head-from CERT.pdf said "the history up to it is still there" of a
-    certificate whose own record was deleted, and its number was issued again."""
-    numbers = _titled(3)
+    certificate whose own record was deleted, and its number was issued again. Recorded
+    (issuing stopped) only for a certificate that carries the proof of the lab's key
+    (reg73 #3): with the key."""
+    import os
+
+    key = tmp_path / "lab.key"
+    key.write_bytes(os.urandom(32))
+    monkeypatch.setenv("ANGLEBENCH_REGISTER_KEY", str(key))
+    numbers = _titled(2, str(key))
+    engine = sa.create_engine(register_url())
+    with engine.connect() as conn:  # a signed state to replay (reg73 #2: any backup)
+        state = [tuple(r) for r in conn.execute(sa.text("SELECT name, value FROM "
+                                                        "register_state"))]
+        counters = [tuple(r) for r in conn.execute(sa.text("SELECT name, last_value FROM "
+                                                           "counters"))]
+    engine.dispose()
+    numbers += _titled(1, str(key))
     for n, number in enumerate(numbers, 1):
         assert main(["register", "show", number, "--pdf", str(tmp_path / f"{n}.pdf")]) == 0
     assert main(["register", "verify", "--head-from", str(tmp_path / "3.pdf")]) == 0
     capsys.readouterr()
-    _truncate_consistently(numbers[2])
+    _sql(f"DELETE FROM certificates WHERE number = '{numbers[2]}'",
+         *(f"UPDATE register_state SET value = '{v}' WHERE name = '{n}'" for n, v in state),
+         *(f"UPDATE counters SET last_value = {v} WHERE name = '{n}'" for n, v in counters))
     assert main(["register", "verify"]) == 0  # the register agrees with itself
     capsys.readouterr()
     assert main(["register", "verify", "--head-from", str(tmp_path / "3.pdf")]) == 3

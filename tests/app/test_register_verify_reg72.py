@@ -71,14 +71,21 @@ def _truncate(number: str) -> None:
          n=number, r=str(before["seq"]), h=before["chain_sha256"])
 
 
-def test_a_genuine_pdf_whose_record_was_deleted_is_lost_not_a_forgery(tmp_path, capsys):
-    (_, first, _), (number, pdf, dcc) = _issue(2)
+def test_a_genuine_pdf_whose_record_was_deleted_is_lost_not_a_forgery(tmp_path, capsys,
+                                                                     monkeypatch):
+    """With the lab's key: the PDF carries the proof that this register issued it (reg73
+    #3: without one, the register cannot tell it from a file made to print its head)."""
+    key = tmp_path / "lab.key"
+    key.write_bytes(os.urandom(32))
+    monkeypatch.setenv("ANGLEBENCH_REGISTER_KEY", str(key))
+    (_, first, _), (number, pdf, dcc) = _issue(2, key=str(key))
     (tmp_path / "2.pdf").write_bytes(pdf)
     (tmp_path / "2.xml").write_bytes(dcc)
     _truncate(number)
     capsys.readouterr()
     (tmp_path / "1.pdf").write_bytes(first + b"%\n")  # a PDF altered: not a lost record
-    assert main(["register", "verify", str(tmp_path / "1.pdf")]) == 1
+    # exit 3: the state set back is found with the key (reg72 #1), whatever the file
+    assert main(["register", "verify", str(tmp_path / "1.pdf")]) == 3
     out = capsys.readouterr().out
     assert "NOT in the register" in out and "LOST" not in out
     for name in ("2.pdf", "2.xml"):  # the DCC by the PDF it embeds
@@ -89,18 +96,21 @@ def test_a_genuine_pdf_whose_record_was_deleted_is_lost_not_a_forgery(tmp_path, 
         assert "NOT in the register" not in out
 
 
-def test_a_number_issued_again_after_its_record_was_deleted_is_lost_not_a_forgery(
+def test_a_number_issued_again_after_its_record_was_deleted_is_said_as_either(
         tmp_path, capsys):
+    """No key: the PDF in hand is not what the register holds for its number at its place.
+    Without a proof of the lab's key the register cannot tell the copy altered from its
+    record deleted and the number issued again (reg73 #4): ALTERED, with the other cause."""
     (_, _, _), (number, pdf, _) = _issue(2)
     (tmp_path / "2.pdf").write_bytes(pdf)
     _truncate(number)
     again = _issue(1, headline=1.0)[0][0]
     assert again == number  # no key: nothing in the database stops it
     capsys.readouterr()
-    assert main(["register", "verify", str(tmp_path / "2.pdf")]) == 3
+    assert main(["register", "verify", str(tmp_path / "2.pdf")]) == 1
     out = capsys.readouterr().out
-    assert "the register has LOST its record" in out
-    assert "record 2 is now another certificate of the same number" in out
+    assert "LOST" not in out and f"ALTERED: {tmp_path / '2.pdf'} ({number})" in out
+    assert "its record was deleted and the number issued again" in out
 
 
 def test_the_newest_record_rewritten_is_found_from_its_pdf_and_dcc(tmp_path, capsys):
@@ -114,8 +124,11 @@ def test_the_newest_record_rewritten_is_found_from_its_pdf_and_dcc(tmp_path, cap
     _sql("UPDATE certificates SET project_json = :p, headline_json = :h, chain_sha256 = :c "
          "WHERE number = :n", "UPDATE register_state SET value = :c WHERE name = 'head'",
          p=row["project_json"], h=row["headline_json"], c=chain, n=number)
-    assert main(["register", "verify"]) == 0  # the register agrees with itself
-    capsys.readouterr()
+    # the register agrees with itself, but its own copy of the PDF carries the digest of
+    # the record as issued (reg73 #1: found without the customer's copy)
+    assert main(["register", "verify"]) == 3
+    assert (f"record {number}: it is not the record its stored PDF was issued from"
+            in capsys.readouterr().out)
     for name, data in (("last.pdf", pdf), ("last.xml", dcc)):
         (tmp_path / name).write_bytes(data)
         assert main(["register", "verify", str(tmp_path / name)]) == 3
@@ -178,9 +191,11 @@ def test_the_windows_verify_a_pdf_says_a_lost_record_and_a_rewritten_one(tmp_pat
 
     from app.register_presenter import RegisterPresenter
 
-    (_, first, _), (number, pdf, _) = _issue(2)
+    key = tmp_path / "lab.key"
+    key.write_bytes(os.urandom(32))
+    (_, first, _), (number, pdf, _) = _issue(2, key=str(key))
     certificates = mock.Mock()
-    certificates.open_register = lambda: Register(register_url())
+    certificates.open_register = lambda: Register(register_url(), key_file=str(key))
     view = mock.Mock()
     presenter = RegisterPresenter(view, certificates, lambda *a: True)
     (tmp_path / "1.pdf").write_bytes(first)

@@ -48,11 +48,13 @@ def _drawn(pdf, document: CertificateDocument) -> FPDF:
     created = _created(document)
     pdf.set_creation_date(created)
     if document.register_head:
-        from models.register.chain import CONTENT_MARK, HEAD_MARK
+        from models.register.chain import CONTENT_MARK, HEAD_MARK, PROOF_MARK
 
         keywords = f"{HEAD_MARK}{document.register_head}"
         if document.register_content:
             keywords += f" {CONTENT_MARK}{document.register_content}"
+        if document.register_proof:
+            keywords += f" {PROOF_MARK}{document.register_proof}"
         pdf.set_keywords(keywords)
     pdf.add_page()
     draw_front(pdf, document, created)

@@ -86,7 +86,7 @@ def test_each_record_chains_what_its_document_is(register_url):
         kinds = {r.number: r.document_kind for r in register.list()}
         assert kinds == {report.number: "test", certificate.number: "calibration",
                          amended.number: "test", replaced.number: "test"}
-        assert {r.chain_format for r in register.list()} == {5}  # 4 and later chain the kind
+        assert {r.chain_format for r in register.list()} == {6}  # 4 and later chain the kind
         assert register.get(certificate.number).chain_sha256 == _chain_v4(before, certificate)
         assert register.audit(pdfs=True) == []
         with pytest.raises(ValueError, match="document_kind 'certificate'"):
@@ -117,7 +117,7 @@ def test_a_register_of_0_8_11_opens_verifies_and_migrates_unchanged(tmp_path, ca
         assert old["AB-2026-0002"].status == "withdrawn"
         new = register.issue(IssueRequest("positioning", META, PROJECT), render,
                              document_kind="test")[0]
-        assert new.chain_format == 5 and register.chain_before(new.number) == SCHEMA_5_HEAD
+        assert new.chain_format == 6 and register.chain_before(new.number) == SCHEMA_5_HEAD
         assert register.audit(pdfs=True) == []
     assert main(["register", "--register", url, "verify"]) == 0
     capsys.readouterr()
