@@ -370,6 +370,10 @@
         <translation>测回间的自准直仪零位偏移</translation>
     </message>
     <message>
+        <source>a tilt up to {psi} (the program&apos;s default: no bound was stated) in its worst direction, not removed: its exact effect in the set-up&apos;s frame plus the autocollimator&apos;s roll {roll} over the vertical span 2ψ</source>
+        <translation>最不利方向上不超过 {psi}（程序默认值：未给定上限）的倾斜，未扣除：按安置方式坐标系计算的精确影响，加上自准直仪滚转 {roll} 乘以竖直跨度 2ψ</translation>
+    </message>
+    <message>
         <source>spread linearly and removed, half the drift left</source>
         <translation>线性分配并扣除，余下一半漂移</translation>
     </message>
@@ -1035,6 +1039,10 @@
         <translation>不超过 {psi}（给定）、方向最不利的倾斜，未能由俯仰角辨识，未扣除：其在 β = {beta} 时对 ζ(θ) 的精确影响</translation>
     </message>
     <message>
+        <source>a tilt up to {psi} (the program&apos;s default: no bound was stated) in its worst direction, not identified by the elevations and not removed: its exact effect on ζ(θ) with β = {beta}</source>
+        <translation>不超过 {psi}（程序默认值：未给定上限）、方向最不利的倾斜，未能由俯仰角辨识，未扣除：其在 β = {beta} 时对 ζ(θ) 的精确影响</translation>
+    </message>
+    <message>
         <source>no coverage interval</source>
         <translation>无包含区间</translation>
     </message>
@@ -1099,6 +1107,10 @@
     <message>
         <source>bound {bound} (stated) in U</source>
         <translation>上限 {bound}（给定）计入 U</translation>
+    </message>
+    <message>
+        <source>bound {bound} (the program&apos;s default) in U</source>
+        <translation>上限 {bound}（程序默认值）计入 U</translation>
     </message>
     <message>
         <source>Tilt direction α</source>
@@ -2673,6 +2685,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>无法打印</translation>
     </message>
     <message>
+        <source>Not the register&apos;s key</source>
+        <translation>不是登记册的密钥</translation>
+    </message>
+    <message>
         <source>Cannot verify</source>
         <translation>无法验证</translation>
     </message>
@@ -3283,6 +3299,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>您所知道的今天的日期：它必须与计算机的日期相同</translation>
     </message>
     <message>
+        <source>  record digest on its PDF: form 2 (readings, results and details, the document&apos;s kind and its DCC)</source>
+        <translation>  其 PDF 上的记录摘要：形式 2（读数、结果和详细信息、文件类型及其 DCC）</translation>
+    </message>
+    <message>
+        <source>  record digest on its PDF: form 1 (readings, results and details; not the document&apos;s kind nor its DCC)</source>
+        <translation>  其 PDF 上的记录摘要：形式 1（读数、结果和详细信息；不含文件类型和 DCC）</translation>
+    </message>
+    <message>
+        <source>  record digest on its PDF: none (issued before AngleBench 0.8.21)</source>
+        <translation>  其 PDF 上的记录摘要：无（AngleBench 0.8.21 之前签发）</translation>
+    </message>
+    <message>
         <source>{number}  ({status}{revision})</source>
         <translation>{number}（{status}{revision}）</translation>
     </message>
@@ -3391,6 +3419,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>SHA-256 {sha}…</translation>
     </message>
     <message>
+        <source>{path}: the PDF embedded in it is {number}&apos;s, record {seq}, right after that head, identical to the record&apos;s PDF (SHA-256); the file itself is not the one recorded (see above)</source>
+        <translation>{path}：其中嵌入的 PDF 是 {number} 的，即第 {seq} 条记录，紧随该链头之后，与记录中的 PDF 完全相同（SHA-256）；但该文件本身不是所记录的那份（见上文）</translation>
+    </message>
+    <message>
         <source>{path}: {number} is record {seq}, right after that head, identical to the record (SHA-256)</source>
         <translation>{path}：{number} 是第 {seq} 条记录，紧随该链头之后，与记录一致（SHA-256）</translation>
     </message>
@@ -3399,12 +3431,32 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>签发后被改动：{path}（{number}）作为第 {seq} 条记录签发，紧随其所印的链头之后；已发现其记录被删除，并已记入登记册（见上文）</translation>
     </message>
     <message>
+        <source>{path} ({number}) prints the head before record {seq}, where the register&apos;s chain ends, but the proof it carries that this register issued it is not the laboratory key&apos;s: it was not issued by this register (made to look so, or another register&apos;s); nothing is recorded</source>
+        <translation>{path}（{number}）印有第 {seq} 条记录之前的链头，登记册的链正结束于此，但它所带的、表明由本登记册签发的证明不是实验室密钥生成的：它不是本登记册签发的（被伪造成如此，或属于另一个登记册）；未记录任何内容</translation>
+    </message>
+    <message>
+        <source>it carries no proof made with the laboratory&apos;s key (issued before AngleBench 0.8.22 or without the key)</source>
+        <translation>它不带以实验室密钥生成的证明（在 AngleBench 0.8.22 之前签发，或签发时没有密钥）</translation>
+    </message>
+    <message>
+        <source>the register has no laboratory key ({setting}), so its certificates carry no proof of issue</source>
+        <translation>登记册没有实验室密钥（{setting}），因此其证书不带签发证明</translation>
+    </message>
+    <message>
         <source>CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after the head it prints, but the register&apos;s chain ends at that head and no record has its SHA-256: its record was deleted after issue</source>
         <translation>签发后被改动：{path}（{number}）作为第 {seq} 条记录签发，紧随其所印的链头之后，但登记册的哈希链止于该链头，且没有记录具有其 SHA-256：其记录在签发后被删除</translation>
     </message>
     <message>
         <source>  it could not be recorded in the register ({reason}): issuing is not stopped by it</source>
         <translation>  无法将此记入登记册（{reason}）：签发不会因此停止</translation>
+    </message>
+    <message>
+        <source> — or its record was deleted and the number issued again, which the register cannot rule out for a copy that carries no proof made with the laboratory&apos;s key</source>
+        <translation> ——或者其记录被删除、该编号被再次签发；对于不带实验室密钥所生成证明的副本，登记册无法排除这种情况</translation>
+    </message>
+    <message>
+        <source> — or, in this register without the laboratory&apos;s key, its record was deleted and the number issued again: compare the head with the lab&apos;s log</source>
+        <translation> ——或者，在这个没有实验室密钥的登记册中，其记录被删除、该编号被再次签发：请将链头与实验室的记录比对</translation>
     </message>
     <message>
         <source>CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after the head it prints, but record {seq} is now another certificate of the same number (SHA-256 {other}…): its record was deleted after issue and the number issued again</source>
@@ -3423,13 +3475,35 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>已丢失，已确认（LOST, ACKNOWLEDGED）：{path} 写的是 {number}，这是登记册在 {date} 由 {by} 记录的一次丢失（{reason}）之前签发的编号：其记录已丢失，因此登记册无法判断此副本是否与签发时相同；请向实验室索取其自己的副本</translation>
     </message>
     <message>
-        <source>CHANGED AFTER ISSUE: {path}: the register&apos;s record of {number} is not the record it was issued from: the file carries the digest {carried}… of its record&apos;s content (readings, results and details as recorded), the record now gives {actual}…: the record was rewritten after issue</source>
-        <translation>签发后被改动：{path}：登记册中 {number} 的记录不是签发该文件时的记录：文件带有其记录内容（所记录的读数、结果和信息）的摘要 {carried}…，记录现在给出 {actual}…：记录在签发后被改写</translation>
+        <source>CHANGED AFTER ISSUE: {path}: the register&apos;s record of {number} is not the record it was issued from: the file carries the digest {carried}… of its record&apos;s content ({covered}), the record now gives {actual}…: the record was rewritten after issue</source>
+        <translation>签发后被改动：{path}：登记册中 {number} 的记录不是其签发时所依据的记录：文件带有其记录内容的摘要 {carried}…（{covered}），而记录现在给出 {actual}…：该记录在签发后被改写</translation>
+    </message>
+    <message>
+        <source>form 2: readings, results and details as recorded, the document&apos;s kind and its DCC</source>
+        <translation>形式 2：所记录的读数、结果和详细信息、文件类型及其 DCC</translation>
+    </message>
+    <message>
+        <source>form 1: readings, results and details as recorded</source>
+        <translation>形式 1：所记录的读数、结果和详细信息</translation>
+    </message>
+    <message>
+        <source>{path}: it carries no digest of its record&apos;s content, which {number}&apos;s PDF carried when it was issued (AngleBench 0.8.21 on): a copy made before 0.8.21, or altered</source>
+        <translation>{path}：它不带其记录内容的摘要，而 {number} 的 PDF 签发时带有该摘要（AngleBench 0.8.21 起）：这是 0.8.21 之前制作的副本，或已被改动</translation>
     </message>
     <message>
         <source>CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, or the register&apos;s record of it was replaced</source>
         <extracomment>a PDF that prints a head of the chain whose next record is another: the PDF altered, or the record replaced — which, the register cannot tell (``register verify`` counts it as a file it did not issue, exit 1, unless the register&apos;s own checks find a change)</extracomment>
         <translation>签发后被改动：{path}（{number}）印有第 {seq} 条记录之前的链头，但第 {seq} 条记录是 {other}，不是此 PDF{elsewhere}：PDF 在签发后被改动，或登记册中它的记录被替换</translation>
+    </message>
+    <message>
+        <source>ALTERED: {path} ({number}) is not the certificate the register issued as record {seq}: record {seq} is {number}, whose content digest is {actual}…, and this copy carries {carried}…: the copy was altered after issue{unless}</source>
+        <extracomment>a copy whose number&apos;s record is at its place with another content digest, the copy carrying no proof of the lab&apos;s key that it was issued so (reg73 #4): the copy differs from the record — a file not issued as it is (exit 1), not a certificate the register lost</extracomment>
+        <translation>已改动：{path}（{number}）不是登记册作为第 {seq} 条记录签发的证书：第 {seq} 条记录是 {number}，其内容摘要为 {actual}…，而此副本带有 {carried}…：该副本在签发后被改动{unless}</translation>
+    </message>
+    <message>
+        <source>{path} ({number}) prints the head before record {seq}, where the register&apos;s chain ends, and no record has its SHA-256: the register cannot tell whether this was issued here — a certificate whose record was deleted after issue, or a file made to print the register&apos;s head, which anyone can read — because {why}; nothing is recorded. If it is the laboratory&apos;s own certificate (compare it with the lab&apos;s copy and its log of heads), its record was deleted: restore the register from a backup</source>
+        <extracomment>a PDF printing the head where the chain ends, no record holding it, and no proof of the lab&apos;s key that this register issued it: recorded as nothing (reg73 #3)</extracomment>
+        <translation>{path}（{number}）印有第 {seq} 条记录之前的链头，登记册的链正结束于此，且没有记录具有其 SHA-256：登记册无法判断它是否由此签发——可能是签发后其记录被删除的证书，也可能是伪造的、印有登记册链头（任何人都能读到）的文件——因为{why}；未记录任何内容。如果它是实验室自己的证书（请与实验室的副本及其链头记录比对），则其记录已被删除：请从备份恢复登记册</translation>
     </message>
     <message>
         <source>  recorded in the register: nothing is issued, its number not again, until the loss is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT --last-number NUMBER&apos;</source>
@@ -3511,6 +3585,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{path}: the results file of document {number}, recorded {recorded_at}, {status}; identical to the record (SHA-256)</source>
         <translation>{path}：文件 {number} 的结果文件，记录于 {recorded_at}，{status}；与记录一致（SHA-256）</translation>
+    </message>
+    <message>
+        <source>{path} says it is the results file of certificate {number} (its PDF SHA-256 {pdf}…), whose results file the register recorded as another (SHA-256 {recorded}…, {file}): this copy was altered after issue</source>
+        <translation>{path} 自称是证书 {number} 的结果文件（其 PDF 的 SHA-256 为 {pdf}…），而登记册为该证书记录的结果文件是另一份（SHA-256 {recorded}…，{file}）：此副本在签发后被改动</translation>
+    </message>
+    <message>
+        <source>{path} says it is the results file of certificate {number} (its PDF SHA-256 {pdf}…), whose results file the register recorded as another (SHA-256 {recorded}…, {file}): this copy was altered after issue, or — in a register without the laboratory&apos;s key — the register&apos;s record of it was rewritten; compare it with the lab&apos;s copy</source>
+        <translation>{path} 自称是证书 {number} 的结果文件（其 PDF 的 SHA-256 为 {pdf}…），而登记册为该证书记录的结果文件是另一份（SHA-256 {recorded}…，{file}）：此副本在签发后被改动，或者——在没有实验室密钥的登记册中——登记册对它的记录被改写；请与实验室的副本比对</translation>
     </message>
     <message>
         <source>authorised signatories: {names}; approver and operator {rule}</source>
@@ -5440,6 +5522,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值为 {seed}</translation>
     </message>
     <message>
+        <source>{why} A tilt bound of 0&quot; would claim that the polygon sits on the shaft with no tilt at all, which no set-up achieves and these vertical readings cannot show: state the largest tilt the set-up can have (the setting &quot;largest tilt of the polygon on the shaft, when not identified&quot;, --tilt-bound-arcsec), or read vertical readings that identify the tilt</source>
+        <translation>{why} 倾斜上限为 0&quot; 即声称多面棱体在轴上完全没有倾斜，这是任何安置都做不到、这些竖直读数也无法显示的：请给定该安置可能的最大倾斜（设置项“多面棱体在轴上的最大倾斜（未辨识时）”，命令行 --tilt-bound-arcsec），或读取能辨识倾斜的竖直读数</translation>
+    </message>
+    <message>
         <source>vertical along the polygon&apos;s axis, worst case over the tilt direction</source>
         <translation>竖直方向沿棱体轴线，倾斜方向的最不利情况</translation>
     </message>
@@ -5809,6 +5895,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>  轴倾角 ψ 及方向 α 未辨识：不作扣除；不超过 {bound}（给定）的倾斜计入不确定度</translation>
     </message>
     <message>
+        <source>  axis tilt ψ and direction α not identified: nothing removed; a tilt up to {bound} (the program&apos;s default: no bound was stated) enters the uncertainty</source>
+        <translation>  轴倾角 ψ 及方向 α 未辨识：不作扣除；不超过 {bound}（程序默认值：未给定上限）的倾斜计入不确定度</translation>
+    </message>
+    <message>
         <source>  mirror normal   β = {value}° (from the reference reading)</source>
         <translation>  反射镜法线     β = {value}°（由参考读数得出）</translation>
     </message>
@@ -5850,6 +5940,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>{why} Nor do these elevations show the readings&apos; noise: state the theodolite accuracy (1σ) to evaluate the run</source>
         <translation>{why}这些俯仰角也显示不出读数噪声：请给出经纬仪准确度（1σ）以评定该次测量</translation>
+    </message>
+    <message>
+        <source>{why} A tilt bound of 0&quot; would claim that the axis has no tilt at all, which no set-up achieves and these elevations cannot show: state the largest axis tilt ψ the set-up can have (the setting &quot;largest axis tilt ψ, when not identified&quot;, --tilt-bound-arcsec), or read elevations that identify the tilt</source>
+        <translation>{why} 倾斜上限为 0&quot; 即声称轴完全没有倾斜，这是任何安置都做不到、这些俯仰角也无法显示的：请给定该安置可能的最大轴倾角 ψ（设置项“最大轴倾角 ψ（未辨识时）”，命令行 --tilt-bound-arcsec），或读取能辨识倾角的俯仰角</translation>
     </message>
     <message>
         <source>at least 4 readings are needed to identify ψ, α, β</source>
@@ -6983,7 +7077,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>register {display_url}: {reason}</source>
-        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the key&apos;s file, beside which the register&apos;s high-water mark is kept (reg73 #2) the state a write transaction leaves, noted in the mark once it is committed the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) told, at once, when a write waits for the SQLite register&apos;s write lock held by another process (what it waits for, and for how long at most): the command line says it on stderr, the window in its status line. None: nobody is told this process noted itself as the writer beside the database (writer_note.py) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
+        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the key&apos;s file, beside which the register&apos;s high-water mark is kept (reg73 #2) the state a write transaction leaves, noted in the mark once it is committed the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) the key given is not the one the register was signed with (:meth:`_key_problem`) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) told, at once, when a write waits for the SQLite register&apos;s write lock held by another process (what it waits for, and for how long at most): the command line says it on stderr, the window in its status line. None: nobody is told this process noted itself as the writer beside the database (writer_note.py) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
         <translation>登记册 {display_url}：{reason}</translation>
     </message>
     <message>
@@ -7119,12 +7213,28 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{numbers} 已报告这次校准（编号 {serial}，校准于 {date}）：更正的证书应为其修订版或替代版（文件 › 证书登记册 中的“修订…”或“替代…”）；一次独立的校准（例如调整之后的交付状态）作为独立校准签发，并说明理由（命令行：--separate-calibration REASON）</translation>
     </message>
     <message>
+        <source>the document changed each time it was rendered (its kind or its DCC), so the digest its PDF carries cannot be its record&apos;s: nothing was issued</source>
+        <translation>文件每次生成时都有变化（其类型或其 DCC），因此其 PDF 所带的摘要不可能是其记录的摘要：未签发任何内容</translation>
+    </message>
+    <message>
         <source>{number} was withdrawn already ({reason}): a certificate is withdrawn once</source>
         <translation>{number} 已经作废（{reason}）：一份证书只作废一次</translation>
     </message>
     <message>
         <source>the register&apos;s state (its record count {records}, head {head} and number counters) does not carry the laboratory key&apos;s signature: the last record(s) were deleted with the state set back, or a counter was set back, outside AngleBench; restore the register from a backup</source>
         <translation>登记册的状态（记录数 {records}、链头 {head} 和编号计数器）没有实验室密钥的签名：在 AngleBench 之外删除了最后几条记录并改回了状态，或改回了计数器；请从备份恢复登记册</translation>
+    </message>
+    <message>
+        <source>the key named by {setting} is not the key this register was signed with (its fingerprint {mine}…; the register&apos;s: {theirs}){slip}: no signature is checked against it, no record is called changed for it, and nothing is written with it; name the laboratory&apos;s key file and try again</source>
+        <translation>{setting} 指定的密钥不是此登记册签名所用的密钥（其指纹 {mine}…；登记册的：{theirs}）{slip}：不以它检查任何签名，不因它把任何记录称为已改动，也不用它写入任何内容；请指定实验室的密钥文件后重试</translation>
+    </message>
+    <message>
+        <source>not recorded, and none of its signed records is this key&apos;s</source>
+        <translation>未记录，且其已签名的记录无一属于此密钥</translation>
+    </message>
+    <message>
+        <source> — it is the register&apos;s key with a line end added or removed at its end (the file was edited or pasted as text): restore the key file as it was</source>
+        <translation> ——它是登记册的密钥，只是末尾加上或去掉了一个行尾（该文件被当作文本编辑或粘贴过）：请将密钥文件恢复原样</translation>
     </message>
     <message>
         <source>{numbers} reports serial {serial}, calibrated {date}, of {makers}, not of {maker}: a maker&apos;s name spelt otherwise is the same maker, and this would be a second certificate of that calibration. Issue it only if it is another maker&apos;s item with the same serial (it is then recorded in the register that you said so; on the command line: --another-makers-item)</source>
@@ -8659,6 +8769,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>记录 {number}：所存的 DCC 与签发时记录的 SHA-256 不符</translation>
     </message>
     <message>
+        <source>record {number}: it is not the record its stored PDF was issued from: the PDF carries the digest {carried}… of its record&apos;s content (form {form}), the record now gives {actual}…: the record was rewritten after issue</source>
+        <translation>记录 {number}：它不是其保存的 PDF 签发时所依据的记录：该 PDF 带有其记录内容的摘要 {carried}…（形式 {form}），而记录现在给出 {actual}…：该记录在签发后被改写</translation>
+    </message>
+    <message>
         <source>record {number}: its DCC cannot be read: {reason}</source>
         <translation>记录 {number}：其 DCC 无法读取：{reason}</translation>
     </message>
@@ -9152,7 +9266,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget.</source>
-        <extracomment>the digest of the register record&apos;s content (models/register/chain.content_digest), carried in the PDF&apos;s keywords: a record rewritten after issue is found from the PDF</extracomment>
+        <extracomment>the digest of the register record&apos;s content (models/register/chain.content_digest), carried in the PDF&apos;s keywords: a record rewritten after issue is found from the PDF the register&apos;s proof that it issued this certificate (models/register/signing.proof), carried in the PDF&apos;s keywords; &quot;&quot; without the lab&apos;s key</extracomment>
         <translation>未给出、因而未计入 U 的输入量：{inputs}。U 仅包含分量一览表中的输入量。</translation>
     </message>
     <message>
@@ -11352,7 +11466,7 @@ what a name or description may hold that prints as no character of its own: a li
     </message>
     <message>
         <source>the laboratory&apos;s register key {path} cannot be read ({reason})</source>
-        <extracomment>the name of the register_state row that holds the state&apos;s signature</extracomment>
+        <extracomment>the name of the register_state row that holds the state&apos;s signature the name of the register_state row that holds the fingerprint of the key the register is signed with (:func:`fingerprint`; written with its first signed record since 0.8.22)</extracomment>
         <translation>无法读取实验室的登记册密钥 {path}（{reason}）</translation>
     </message>
     <message>
@@ -12515,16 +12629,6 @@ Replace it?</source>
         <translation>经纬仪准确度设置 {setting}（1σ）与所列标准器每个读数的 u = {u} 不同：不确定度分量一览表和拟合残差的检查均采用 {u}，这些结果未采用该设置。</translation>
     </message>
     <message>
-        <source>{quantity}: {trials} trials, seed {seed}, of the reading noise alone. The axis tilt, not identified by the elevations and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it. A tilt up to {bound} (stated) in any direction changes the half range by at most {change} (its exact effect ζ(θ) at these rotations with β = {beta}), so the interval is widened by that at both ends and holds for any such tilt</source>
-        <extracomment>how the decided half range is made where the tilt is not identified</extracomment>
-        <translation>{quantity}：{trials} 次试验，种子 {seed}，仅计读数噪声。仰角读数未能辨识、也未扣除的轴倾角，是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量。给定上限 {bound} 以内、任意方向的倾角，至多使半峰峰值改变 {change}（即其在这些转角处对 ζ(θ) 的精确影响，β = {beta}），因此区间两端各加宽该量，对任何这样的倾角均成立</translation>
-    </message>
-    <message>
-        <source>the tilt, not identified and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it; a tilt up to {bound} (stated) in any direction changes the half range by at most {change}, so the interval is widened by that at both ends and holds for any such tilt</source>
-        <extracomment>what the decision says of a tilt not identified that widens its interval, after how the rest was made (the polygon&apos;s, and a theodolite&apos;s decided on the means over passes)</extracomment>
-        <translation>未辨识、也未扣除的倾角是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量；给定上限 {bound} 以内、任意方向的倾角，至多使半峰峰值改变 {change}，因此区间两端各加宽该量，对任何这样的倾角均成立</translation>
-    </message>
-    <message>
         <source>{who}, process {pid}</source>
         <translation>{who}，进程 {pid}</translation>
     </message>
@@ -12542,6 +12646,26 @@ Replace it?</source>
         <source>the register&apos;s high-water mark {path} cannot be read or does not carry the laboratory key&apos;s signature: changed outside AngleBench, or written with another key; nothing is issued until it is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; (which writes it anew)</source>
         <extracomment>a mark that is not the key&apos;s</extracomment>
         <translation>登记册的高水位标记 {path} 无法读取，或不带有实验室密钥的签名：在 AngleBench 之外被改动，或以另一个密钥写入；在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos;（它会重新写入标记）记录之前，不再签发任何内容</translation>
+    </message>
+    <message>
+        <source>{quantity}: {trials} trials, seed {seed}, of the reading noise alone. The axis tilt, not identified by the elevations and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it. A tilt up to {bound} (stated) in any direction changes the half range by at most {change} (its exact effect ζ(θ) at these rotations with β = {beta}), so the interval is widened by that at both ends and holds for any such tilt; the elevations cannot check the bound (a larger tilt is not covered)</source>
+        <extracomment>how the decided half range is made where the tilt is not identified</extracomment>
+        <translation>{quantity}：{trials} 次试验，种子 {seed}，仅计读数噪声。仰角读数未能辨识、也未扣除的轴倾角，是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量。给定上限 {bound} 以内、任意方向的倾角，至多使半峰峰值改变 {change}（即其在这些转角处对 ζ(θ) 的精确影响，β = {beta}），因此区间两端各加宽该量，对任何这样的倾角均成立；俯仰角无法核查该上限（更大的倾角不在其内）</translation>
+    </message>
+    <message>
+        <source>{quantity}: {trials} trials, seed {seed}, of the reading noise alone. The axis tilt, not identified by the elevations and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it. A tilt up to {bound} (the program&apos;s default: no bound was stated) in any direction changes the half range by at most {change} (its exact effect ζ(θ) at these rotations with β = {beta}), so the interval is widened by that at both ends and holds for any such tilt; the elevations cannot check the bound (a larger tilt is not covered)</source>
+        <extracomment>the same where no bound was stated: the program&apos;s default, not the laboratory&apos;s figure (audit 73 finding 3: it was printed &quot;(stated)&quot;)</extracomment>
+        <translation>{quantity}：{trials} 次试验，种子 {seed}，仅计读数噪声。仰角读数未能辨识、也未扣除的轴倾角，是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量。上限 {bound}（程序默认值：未给定上限）以内、任意方向的倾角，至多使半峰峰值改变 {change}（即其在这些转角处对 ζ(θ) 的精确影响，β = {beta}），因此区间两端各加宽该量，对任何这样的倾角均成立；俯仰角无法核查该上限（更大的倾角不在其内）</translation>
+    </message>
+    <message>
+        <source>the tilt, not identified and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it; a tilt up to {bound} (stated) in any direction changes the half range by at most {change}, so the interval is widened by that at both ends and holds for any such tilt; the readings cannot check the bound (a larger tilt is not covered)</source>
+        <extracomment>what the decision says of a tilt not identified that widens its interval, after how the rest was made (the polygon&apos;s, and a theodolite&apos;s decided on the means over passes)</extracomment>
+        <translation>未辨识、也未扣除的倾角是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量；给定上限 {bound} 以内、任意方向的倾角，至多使半峰峰值改变 {change}，因此区间两端各加宽该量，对任何这样的倾角均成立；读数无法核查该上限（更大的倾角不在其内）</translation>
+    </message>
+    <message>
+        <source>the tilt, not identified and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it; a tilt up to {bound} (the program&apos;s default: no bound was stated) in any direction changes the half range by at most {change}, so the interval is widened by that at both ends and holds for any such tilt; the readings cannot check the bound (a larger tilt is not covered)</source>
+        <extracomment>the same where no bound was stated: the program&apos;s default, not the laboratory&apos;s figure (audit 73 finding 3: it was printed &quot;(stated)&quot;)</extracomment>
+        <translation>未辨识、也未扣除的倾角是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量；上限 {bound}（程序默认值：未给定上限）以内、任意方向的倾角，至多使半峰峰值改变 {change}，因此区间两端各加宽该量，对任何这样的倾角均成立；读数无法核查该上限（更大的倾角不在其内）</translation>
     </message>
 </context>
 </TS>
