@@ -263,13 +263,28 @@ def issued_samples(tmp_path_factory):
     return once_a_run(tmp_path_factory, "issued-samples", issue_every_sample)
 
 
+@pytest.fixture(scope="session")
+def validation_software_cases(tmp_path_factory):
+    """``app.validation_report.software_cases()`` (a Chinese certificate printed and read
+    back, a register, two files imported: ~2 s of CPU), computed once a run for all the
+    workers (:func:`once_a_run`); the cases hold no path or time of their own."""
+    from app.validation_report import software_cases
+
+    return once_a_run(tmp_path_factory, "validation-software-cases",
+                      lambda _folder: software_cases())
+
+
 @pytest.fixture
-def validation_once(monkeypatch, validation_cases):
-    """``anglebench validate`` takes its reference cases from ``validation_cases``: the
-    English and the Chinese report of the suite share one run."""
+def validation_once(monkeypatch, validation_cases, validation_software_cases):
+    """``anglebench validate`` takes its reference cases from ``validation_cases`` and its
+    software cases from ``validation_software_cases``: the English and the Chinese report
+    of the suite, and the writes of it tests/app/test_results_never_lost.py checks, share
+    one run of each."""
     import app.validation_report as validation_report
 
     monkeypatch.setattr(validation_report, "run_validation", validation_cases)
+    monkeypatch.setattr(validation_report, "software_cases",
+                        lambda: list(validation_software_cases))
 
 
 # -- the fast loop (#44) ----------------------------------------------------------------------

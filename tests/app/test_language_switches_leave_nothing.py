@@ -1,7 +1,10 @@
 """Switching the window's language back and forth leaves nothing behind (day review 67:
 after ~40 switches between English and Chinese each took ~3 s): no widget, object,
-plot item or connection more after eight switches than after the first two (six are
-enough: the leak found left two translators behind at every switch to Chinese)."""
+plot item or connection more after four switches than after the first two: one more
+switch to Chinese and back is enough, what leaks leaks at every switch (the leak found left
+two translators behind at every switch to Chinese; three rounds were checked until #44 cut
+the suite's time: one fails on that leak as well, shown with widgets/i18n.py's
+``Language._translators_of`` making new translators at every choice in a scratch copy)."""
 
 from __future__ import annotations
 
@@ -71,9 +74,8 @@ def test_language_switches_leave_nothing_behind(window, qtbot):
     for choice in ("zh_CN", "en"):  # what is made once, at the first switch, is made
         window.set_language(choice)
     before = _settled(qtbot)
-    for _ in range(3):
-        window.set_language("zh_CN")
-        window.set_language("en")
+    window.set_language("zh_CN")
+    window.set_language("en")
     after = _settled(qtbot)
     grown = {name: (before[name], after[name]) for name in after
              if after[name] > before[name]}

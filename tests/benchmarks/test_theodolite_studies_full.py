@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 
 from tests.models.theodolite import test_theodolite_circle_per_angle as circle_per_angle
+from tests.models.theodolite import test_theodolite_circle_within_its_u as circle_within_u
 from tests.models.theodolite import test_theodolite_figures as figures
 from tests.models.theodolite import test_theodolite_pass_means as pass_means
 
@@ -47,3 +48,11 @@ def test_the_iso_230_2_figures_intervals_cover_at_the_probability_printed(
         capsys, tmp_path, world):
     """30 runs (seeds 2034, 2032): every figure's coverage at the 1 % floor."""
     figures.check_figures_cover(capsys, tmp_path, world, figures.FIGURES_RUNS["full"], 0.01)
+
+
+def test_a_circle_error_at_its_u_hidden_under_the_pointing_noise_is_covered_against_the_curve(
+        capsys, tmp_path):
+    """20 runs (seed 3949): E's, M's, A's and the decided half range's coverage at the 1 %
+    floor, the circle error at ±2u_c against the curve (with it: the suite runs its 20)."""
+    circle_within_u.check_circle_at_its_u_hidden_covered(
+        capsys, tmp_path, "against_2u", circle_within_u.HIDDEN_FULL_RUNS, 0.01)

@@ -188,9 +188,12 @@ def _expected_frames(sent, t0=0.0):
 
 
 def test_the_workers_memory_stays_bounded_over_a_long_stream(window, scripted):
-    """200,000 lines (~33 min at 100 Hz) in the timer's batches, an autosave now and then:
-    the worker holds at most a block's worth and a drain's catch-up interval, and the
-    session stores every line."""
+    """100,000 lines (~17 min at 100 Hz, five blocks' worth, 4.5 times what the worker may
+    hold) in the timer's batches, an autosave now and then: the worker holds at most a
+    block's worth and a drain's catch-up interval, and the session stores every line.
+    (200,000 until #44 cut the suite's time: a worker that keeps every line, its drop
+    in app/capture/worker.py made none in a scratch copy, fails it at this length too,
+    holding all 100,000.)"""
     panel = window.capture_panel
     _start(_show(window, "polygon"))
     panel.connect_to("autocollimator", "/dev/ttyUSB0")
@@ -198,18 +201,19 @@ def test_the_workers_memory_stays_bounded_over_a_long_stream(window, scripted):
     link = panel.links[0]
     stream = Stream(link.worker)
     most = 0
-    for batch in range(800):
+    lines = 100_000
+    for batch in range(lines // 250):
         stream.send(250)
         panel._drain_link(link, stream.worker)
         most = max(most, len(stream.worker.raw))
         if batch % 97 == 0:
             panel.raw_capture()  # an autosave converts what is behind
-    assert stream.worker.raw_end == 200_000 and most <= HELD_AT_MOST
-    assert stream.worker.raw_first > 200_000 - HELD_AT_MOST
+    assert stream.worker.raw_end == lines and most <= HELD_AT_MOST
+    assert stream.worker.raw_first > lines - HELD_AT_MOST
     _take(panel)
     (session,) = panel.raw_sessions("polygon")
     assert list(session["frames"]) == _expected_frames(stream.sent)
-    assert session["takes"] == [[0, 199_999, 199_999]]
+    assert session["takes"] == [[0, lines - 1, lines - 1]]
 
 
 def test_a_session_that_has_not_converted_loses_no_line(window, scripted):

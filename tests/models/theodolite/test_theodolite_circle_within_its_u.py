@@ -98,17 +98,39 @@ def test_stated_at_its_pointing_noise_the_figures_intervals_are_narrower(capsys,
     assert float(np.median(ratios["decided"])) <= 3.4, ratios["decided"]
 
 
+#: the runs of the hidden circle error study in the suite: against the curve its smoke
+#: version (the full 20 in tests/benchmarks/test_theodolite_studies_full.py, ``make bench``),
+#: with it its whole size (no break of the product shown to fail a smaller one)
+HIDDEN_RUNS = {"against_2u": 10, "with_2u": 20}
+HIDDEN_FULL_RUNS = 20
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("shape", ["against_2u", "with_2u"])
 def test_a_circle_error_at_its_u_hidden_under_the_pointing_noise_is_covered(
         capsys, tmp_path, shape):
+    """:func:`check_circle_at_its_u_hidden_covered` in the suite. Against the curve, its smoke
+    version: 10 runs (seed 3949), each interval's floor the binomial test's at 0.1 % (6 of
+    10 at the 92.5 % printed for E and M); it still fails with no widening for the circle
+    error (models.theodolite.figures.circle_part_not_excluded returning 0 in a scratch
+    copy: M 3 of 10; 6 of 20 in the full form, E 11). With the curve, its whole 20 runs at
+    the 1 % floor: neither that break nor the lower ends left unwidened fails it even at 20
+    (E 17, M 18 of 20, floor 15), so no smaller size was shown to guard what it does."""
+    runs = HIDDEN_RUNS[shape]
+    check_circle_at_its_u_hidden_covered(capsys, tmp_path, shape, runs,
+                                         0.001 if runs < HIDDEN_FULL_RUNS else 0.01)
+
+
+def check_circle_at_its_u_hidden_covered(capsys, tmp_path, shape: str, runs: int,
+                                         false_alarm: float) -> None:
     """The cell of #39's gap, with the narrower widening: pointing noise 1.5″, a circle
     error of u_c = 0.4″ at ±2u_c at the curve's extremes, against it (the measured range
     4u_c low: the upper ends) or with it (4u_c high: the lower ends), the theodolite stated
-    at √(σ² + u_c²); 20 runs of 5 passes over 11 θ. E's, M's, A's and the decided half
-    range's intervals cover at least as often as the binomial test (1 %) allows at the
-    probability printed (the study of #39, 60 runs: 60 of 60 in each)."""
-    sigma, u_c, runs = 1.5, 0.4, 20
+    at √(σ² + u_c²); ``runs`` runs of 5 passes over 11 θ. E's, M's, A's and the decided half
+    range's intervals cover at least as often as the binomial test (``false_alarm``: 1 % in
+    the long form) allows at the probability printed (the study of #39, 60 runs: 60 of 60
+    in each)."""
+    sigma, u_c = 1.5, 0.4
     rng = np.random.default_rng(3939 + len(shape))
     theta = np.linspace(-20.0, 20.0, 11)
     hits = {"E": 0, "M": 0, "A": 0, "decided": 0}
@@ -124,4 +146,4 @@ def test_a_circle_error_at_its_u_hidden_under_the_pointing_noise_is_covered(
             hits[key] += f["interval_low"] - 1e-9 <= truth[key] <= f["interval_high"] + 1e-9
             probability[key] = min(probability[key], f["coverage_probability"])
     for key in hits:
-        assert hits[key] >= binom.ppf(0.01, runs, probability[key]), (key, hits)
+        assert hits[key] >= binom.ppf(false_alarm, runs, probability[key]), (key, hits)
