@@ -597,7 +597,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
         rounding=rounding,
         reading_noise_stated_arcsec=float(s.get("reading_noise_arcsec", 0.0) or 0.0),
-        tilt_bound_arcsec=float(s["tilt_bound_arcsec"]),
+        tilt_bound_analysed_arcsec=float(s["tilt_bound_arcsec"]),
     )
 
 
@@ -721,9 +721,9 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
         # the tilt bound whose effect enters the uncertainty, and whether the lab stated it
         # or it is the program's default (null where every set's tilt is fitted)
         "tilt_bound_arcsec": (None if all(s.tilt is not None for s in result.sets)
-                              else result.tilt_bound_arcsec),
+                              else result.tilt_bound_analysed_arcsec),
         "tilt_bound_origin": (None if all(s.tilt is not None for s in result.sets)
-                              else tilt_bound_origin(result.tilt_bound_arcsec,
+                              else tilt_bound_origin(result.tilt_bound_analysed_arcsec,
                                                      DEFAULT_TILT_BOUND_ARCSEC)),
         "pyramidal_error_arcsec": np.concatenate(
             [r.pyramidal_error_arcsec for r in result.sets]).tolist(),

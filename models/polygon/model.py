@@ -423,9 +423,10 @@ class PolygonResult:
     rounding: HorizontalRounding | None = None
     # the σ of a reading stated in the settings (″; 0: not stated)
     reading_noise_stated_arcsec: float = 0.0
-    # the largest tilt on the shaft the budget takes where the vertical readings do not
-    # identify it (the setting, ″; DEFAULT_TILT_BOUND_ARCSEC: none stated)
-    tilt_bound_arcsec: float = DEFAULT_TILT_BOUND_ARCSEC
+    # the tilt bound these readings were analysed with (the setting, ″), for the analysis'
+    # JSON only; a certificate's budget takes the bound from the settings it is issued with
+    # (tests/models/certificate/test_settings_reach_the_certificate.py)
+    tilt_bound_analysed_arcsec: float = DEFAULT_TILT_BOUND_ARCSEC
 
     @property
     def mean_reversal_arcsec(self) -> float | None:

@@ -178,32 +178,34 @@ def _replay(url: str, state: list[dict], counters: list[dict], number: str) -> N
         _sql(url, "INSERT INTO counters (name, last_value) VALUES (:name, :last_value)", **row)
 
 
-def test_a_number_found_issued_twice_is_recorded_and_stops_issuing_until_acknowledged(url):
+def test_a_number_found_issued_twice_is_recorded_and_stops_issuing_until_acknowledged(
+        url, key, tmp_path):
     """reg73 #2: verify said "number issued again" of the first holder's PDF, recorded
-    nothing, and issuing went on."""
-    with _open(url, ISSUED) as register:
+    nothing, and issuing went on. The replay here is by someone who can write every file
+    (the high-water mark beside the key deleted too, which nothing local can tell): the
+    first holder's PDF, carrying the key's proof of issue (reg73 #3), is what finds it."""
+    with _open(url, ISSUED, key) as register:
         _issue(register)
     state, counters = _copy_state(url)
-    with _open(url, ISSUED + dt.timedelta(minutes=1)) as register:
+    with _open(url, ISSUED + dt.timedelta(minutes=1), key) as register:
         first, first_pdf = _issue(register)
     _replay(url, state, counters, first.number)
-    with _open(url, ISSUED + dt.timedelta(minutes=2)) as register:
-        assert register.problems == []  # without a key nothing tells the replay
+    shutil.rmtree(tmp_path / "keys" / "lab.key.high-water")
+    with _open(url, ISSUED + dt.timedelta(minutes=2), key) as register:
+        assert register.problems == []  # the mark gone too: nothing local tells the replay
         again = _issue(register)[0]
         assert again.number == first.number == "AB-2026-0002"
         said: list = []
         say_its_place(register, "R-2.pdf", first_pdf, said.append)
         assert "issued again" in str(said[0]) and "recorded in the register" in str(said[-1])
-    with _open(url, ISSUED + dt.timedelta(minutes=3)) as register:
+    with _open(url, ISSUED + dt.timedelta(minutes=3), key) as register:
         assert any("issued twice" in str(p) for p in register.problems)
         with pytest.raises(RegisterError, match="issued twice"):
             _issue(register)
         with pytest.raises(RegisterError, match="a named person"):
             register.acknowledge_loss("", "")
-        with pytest.raises(RegisterError, match="give the last certificate number"):
-            register.acknowledge_loss("I. Chen", "state copied back by someone")
-        body = register.acknowledge_loss("I. Chen", "state copied back by someone",
-                                         "AB-2026-0002")
+        # the issue after the replay wrote a mark again, which tells how far numbers went
+        body = register.acknowledge_loss("I. Chen", "state copied back by someone")
         assert register.problems == [] and body["by"] == "I. Chen"
         assert _issue(register)[0].number == "AB-2026-0003"
         loss = register.lost_acknowledged("AB-2026-0002")
@@ -262,24 +264,25 @@ def test_a_lagging_writer_never_lowers_the_high_water_mark(url, key, tmp_path):
 
 
 # -- a backup restored (reg73 #5) -----------------------------------------------------------
-def test_after_a_restore_the_loss_is_acknowledged_and_no_number_is_issued_twice(url, tmp_path):
+def test_after_a_restore_the_loss_is_acknowledged_and_no_number_is_issued_twice(url, key,
+                                                                               tmp_path):
     """reg73 #5: after a backup was restored the numbers were issued again, the first lost
     certificate verified locked the register for good."""
     path = url.split("///")[1]
     backup = tmp_path / "backup.sqlite"
-    with _open(url, ISSUED) as register:
+    with _open(url, ISSUED, key) as register:
         _issue(register)
     shutil.copy(path, backup)
     pdfs = {}
-    with _open(url, ISSUED + dt.timedelta(hours=1)) as register:
+    with _open(url, ISSUED + dt.timedelta(hours=1), key) as register:
         for _ in range(2):
             record, pdf = _issue(register)
             pdfs[record.number] = pdf
     shutil.copy(backup, path)  # the disk died; last night's backup restored
-    with _open(url, ISSUED + dt.timedelta(hours=2)) as register:
+    with _open(url, ISSUED + dt.timedelta(hours=2), key) as register:
         said: list = []
         say_its_place(register, "M-2.pdf", pdfs["AB-2026-0002"], said.append)
-    with _open(url, ISSUED + dt.timedelta(hours=2)) as register:
+    with _open(url, ISSUED + dt.timedelta(hours=2), key) as register:
         assert register.problems  # the lost certificate recorded: issuing stops
         with pytest.raises(RegisterError):
             _issue(register)
@@ -294,3 +297,27 @@ def test_after_a_restore_the_loss_is_acknowledged_and_no_number_is_issued_twice(
         for number in ("AB-2026-0002", "AB-2026-0003"):
             assert register.lost_acknowledged(number)["last_issued"] == "AB-2026-0003"
         assert register.lost_acknowledged("AB-2026-0004") is None
+
+
+def test_without_the_key_a_loss_is_acknowledged_only_with_the_last_number(url, tmp_path):
+    """reg73 #5 without the key: no high-water mark tells how far the numbers went, so the
+    person must give the last number issued, and numbering moves past it; and a lost
+    certificate's copy, carrying no proof of issue, records nothing that stops issuing
+    (reg73 #3: the head it prints is public)."""
+    path = url.split("///")[1]
+    backup = tmp_path / "backup.sqlite"
+    with _open(url, ISSUED) as register:
+        _issue(register)
+    shutil.copy(path, backup)
+    with _open(url, ISSUED + dt.timedelta(hours=1)) as register:
+        lost_pdf = _issue(register)[1]
+    shutil.copy(backup, path)
+    with _open(url, ISSUED + dt.timedelta(hours=2)) as register:
+        said: list = []
+        say_its_place(register, "M-2.pdf", lost_pdf, said.append)
+        assert "cannot tell whether this was issued here" in str(said[0])
+        assert register.problems == []
+        with pytest.raises(RegisterError, match="give the last certificate number"):
+            register.acknowledge_loss("I. Chen", "disk died")
+        register.acknowledge_loss("I. Chen", "disk died", "AB-2026-0002")
+        assert _issue(register)[0].number == "AB-2026-0003"
