@@ -616,6 +616,17 @@ class ComparedValue:
     # printed beside the statement's value: it is not that figure (T stated finer than U's
     # digit, or in another unit)
     apart: bool
+    # T's last significant place as stated, in T's unit (its decimals): where ``decimals``
+    # is finer, U's digit was kept beyond it, and the statement says so (assessment 73 M1:
+    # 0.545″ against ±0.54″ failed with no word of the place it was compared to)
+    limit_decimals: int = -1
+
+    @property
+    def said(self) -> bool:
+        """Whether the statement prints the figure compared and how it was rounded: it is
+        not the printed value, or it keeps a digit finer than T's last place as stated (E29
+        alone would round it to T's place)."""
+        return self.apart or self.decimals > self.limit_decimals
 
     @property
     def within(self) -> bool:
@@ -652,7 +663,7 @@ def compared_with_limit(exact: float, shown: float, places: int, t: float,
             decimals = max(stated_decimals(number),
                            max(0, math.ceil(-math.log10(step) - 1e-9)))
             return ComparedValue(e29_rounded(exact * factor, decimals), float(number),
-                                 decimals, symbol, key, True)
+                                 decimals, symbol, key, True, stated_decimals(number))
     number = stated[0] if stated is not None else t
     decimals = stated_decimals(number)
     try:
@@ -665,15 +676,21 @@ def compared_with_limit(exact: float, shown: float, places: int, t: float,
         # printed figure then is not the one compared, and the statement says so
         rounded = e29_rounded(exact, places)
         if abs(rounded - float(shown)) < 0.5 * 10.0 ** -places:
-            return ComparedValue(float(shown), float(t), places, symbol, unit_key, False)
-        return ComparedValue(rounded, float(t), places, symbol, unit_key, True)
+            return ComparedValue(float(shown), float(t), places, symbol, unit_key, False,
+                                 decimals)
+        return ComparedValue(rounded, float(t), places, symbol, unit_key, True, decimals)
     return ComparedValue(e29_rounded(exact, decimals), float(t), decimals, symbol, unit_key,
-                         True)
+                         True, decimals)
 
 
-#: the value compared with T where it is not the statement's printed value (ASTM E29 §6.4)
-COMPARED_WITH_T = QT_TR_NOOP("Compared with T: {value}, the result rounded to the last place of "
-                             "T as stated (ASTM E29 §6.4, the rounding method).")
+#: the value compared with T where it is not the statement's printed value, or keeps a digit
+#: finer than T's last place (:attr:`ComparedValue.said`): the rule as it is done, the finer
+#: of the two places (until 0.8.21 "rounded to the last place of T as stated (ASTM E29
+#: §6.4)", which a value printed 2.3571 µrad beside ±2.357 µrad contradicted: assessment
+#: 73 M1)
+COMPARED_WITH_T = QT_TR_NOOP("Compared with T: {value}, the result rounded to the finer of T's "
+                             "last place as stated and U's last digit (ASTM E29 §6.4 rounds to "
+                             "T's last place; the finer digit of U is kept).")
 
 
 def printed_verdict(value: float, minus: float, plus: float, t: float, rule: str, d: int,
@@ -714,11 +731,12 @@ def printed_verdict(value: float, minus: float, plus: float, t: float, rule: str
 def _with_compared(sentence: str, compared: ComparedValue, rule: str, verdict: str) -> str:
     """The statement's verdict sentence, followed by the value compared with T where that
     comparison decided (simple acceptance; a conditional pass or fail) and the figure is
-    not the printed value (:func:`compared_with_limit`), so that the verdict is re-done
-    from the figures printed."""
+    not the printed value or keeps a digit finer than T's last place
+    (:func:`compared_with_limit`, :attr:`ComparedValue.said`), so that the verdict is
+    re-done from the figures printed and the rounding said as it is done."""
     decided_on_value = rule == "simple" or (rule == "guarded" and verdict in (
         "conditional pass", "conditional fail"))
-    if not (compared.apart and decided_on_value):
+    if not (compared.said and decided_on_value):
         return sentence
     return separated([sentence, message(COMPARED_WITH_T, value=compared.text)], " ")
 
