@@ -37,6 +37,7 @@ from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_i
 from models.messages import QT_TR_NOOP, Message, joined, message, separated
 from models.project.atomic_write import write_bytes_atomic
 from models.quantity import UNITS
+from models.uncertainty.conformity import RISK_BOUND_NOTE
 from models.register.wording import revision_words
 
 if TYPE_CHECKING:
@@ -282,18 +283,36 @@ def _revision(issued: CertificateRecord) -> Message:
     return revision
 
 
-def probability_cell(probability: float) -> float | str | None:
+def probability_cell(probability: float, bound: str = "") -> float | str | None:
     """A probability of conformity or of a wrong decision as the sheet gives it, in percent,
     by the certificate's rule (assessment 70 L1: "100" and "0" beside the PDF's "< 0.01 %"):
     to two decimals, a number; within 0.01 % of 0 or of 100 the bound as text, "< 0.01" or
-    "> 99.99", as no such probability is certain (the JSON keeps it unrounded)."""
+    "> 99.99", as no such probability is certain (the JSON keeps it unrounded). ``bound``:
+    the figure is a bound, not the probability ("≤" at most, "≥" at least: every point
+    deciding, Boole's inequality), given as text with its sign, "≤ 79.91", "≥ 0.00"
+    (assessment 73 M6: "< 0.01" of a lower bound of 0 read as a certain non-conformity)."""
     if probability is None or not math.isfinite(probability):
         return None
+    if bound:
+        figure = 100.0 * probability
+        # the bound as printed never claims more than it bounds: at most rounded up, at
+        # least rounded down
+        shown = (math.ceil(figure * 100.0 - 1e-9) if bound == "≤"
+                 else math.floor(figure * 100.0 + 1e-9)) / 100.0
+        return f"{bound} {min(max(shown, 0.0), 100.0):.2f}"
     if probability < 1e-4:
         return "< 0.01"
     if probability > 1.0 - 1e-4:
         return "> 99.99"
     return round(100.0 * probability, 2)
+
+
+def _conforming_bound(conformity) -> str:
+    """How the probability of conformity bounds it where it is a bound: at least it after a
+    pass (1 − the sum over the points), at most it after a fail (the deciding point's)."""
+    if not conformity.risk_is_bound:
+        return ""
+    return "≥" if conformity.verdict in ("pass", "conditional pass") else "≤"
 
 
 def _metadata_rows(document: CertificateDocument,
@@ -352,11 +371,17 @@ def _metadata_rows(document: CertificateDocument,
         # made (the error not traceable, U incomplete, U ≥ T) a probability would rest on
         # that U (audit 69 finding 3: "100" beside "not assessed")
         ("Probability of conformity (%)",
-         probability_cell(document.conformity.conforming_probability)
+         probability_cell(document.conformity.conforming_probability,
+                          _conforming_bound(document.conformity))
          if document.conformity.stated else None),
         ("Probability of a wrong decision (%)",
-         probability_cell(document.conformity.decision_risk)
+         probability_cell(document.conformity.decision_risk,
+                          "≤" if document.conformity.risk_is_bound else "")
          if document.conformity.stated else None),
+        # where the two are bounds, said so beside them (assessment 73 M6)
+        ("Probabilities stated as",
+         message(RISK_BOUND_NOTE) if document.conformity.stated
+         and document.conformity.risk_is_bound else None),
         ("Verdict", document.conformity.verdict),
         ("No statement of conformity because", document.conformity.reason),
         ("Conformity", document.conformity.statement),

@@ -63,6 +63,7 @@ from models.uncertainty.rounding import (
 
 __all__ = [
     "DECISION_QUANTITIES",
+    "RISK_BOUND_NOTE",
     "DECISION_RULES",
     "ComparedValue",
     "Conformity",
@@ -488,6 +489,17 @@ class Conformity:
     # conditional fail), rounded as ASTM E29 §6.4 does (:func:`compared_with_limit`); None
     # when no statement is made
     compared: ComparedValue | None = None
+    # the probabilities are bounds, not the probabilities themselves (every point deciding,
+    # two points or more: Boole's inequality): ``decision_risk`` is then at most the figure,
+    # ``conforming_probability`` at least it after a pass, at most it after a fail
+    # (assessment 73 M6: "100.00 %" and "< 0.01 %" printed of a bound beside a pass)
+    risk_is_bound: bool = False
+
+    @property
+    def risk_not_bounded(self) -> bool:
+        """The bound on the probability of a wrong decision reaches 100 % (to 0.01 %): the
+        method then bounds nothing."""
+        return self.risk_is_bound and self.decision_risk > 1.0 - 1e-4
 
     @property
     def conforms(self) -> bool | None:
@@ -788,9 +800,41 @@ def _incomplete_reason(inputs) -> str:
                    inputs=listed(message(name) for name in inputs))
 
 
-def _risk_sentence(verdict: str, risk: float) -> str:
+#: how the probabilities are stated where they are bounds (every point deciding: Boole's
+#: inequality over the points), on the certificate's sheet beside them
+RISK_BOUND_NOTE = QT_TR_NOOP(
+    "bounds, not the probabilities themselves (Boole's inequality over the points): the "
+    "probability of a wrong decision is at most the figure given, the probability of "
+    "conformity at least it after a pass and at most it after a fail; a bound of 100 % on "
+    "the probability of a wrong decision leaves it not bounded by this method")
+
+
+def _risk_sentence(verdict: str, risk: float, bound: bool = False) -> str:
+    """The probability of a wrong decision at the decision stated; where it is a bound
+    (``bound``: the sum over the points after a pass, the deciding point's after a fail)
+    said to be one: "at most", or not bounded where the bound reaches 100 %."""
     figure = "< 0.01" if risk < 1e-4 else f"{100 * risk:.2f}"
-    if verdict in ("pass", "conditional pass"):
+    accepted = verdict in ("pass", "conditional pass")
+    if bound and risk > 1.0 - 1e-4:
+        return message(QT_TR_NOOP(
+            "Probability of a false acceptance at this decision: not bounded by this method "
+            "(the sum over the points of each one's probability of lying outside ±T, its "
+            "bound by Boole's inequality, reaches 100 %; specific risk, JCGM 106).")
+            if accepted else QT_TR_NOOP(
+            "Probability of a false rejection at this decision: not bounded by this method "
+            "(the deciding point's probability of lying within ±T, its bound, reaches 100 %; "
+            "specific risk, JCGM 106)."))
+    if bound:
+        # a bound printed never below itself: rounded up to the 0.01 % printed
+        at_most = f"{max(math.ceil(risk * 1e4 - 1e-9), 1) / 100:.2f}"
+        return message(QT_TR_NOOP(
+            "Probability of a false acceptance at this decision: at most {p} % (a bound: the "
+            "sum over the points of each one's probability of lying outside ±T, Boole's "
+            "inequality; specific risk, JCGM 106).") if accepted else QT_TR_NOOP(
+            "Probability of a false rejection at this decision: at most {p} % (a bound: the "
+            "deciding point's probability of lying within ±T; specific risk, JCGM 106)."),
+            p=at_most)
+    if accepted:
         return message(QT_TR_NOOP("Probability of a false acceptance at this decision: {p} % "
                                   "(specific risk, JCGM 106)."), p=figure)
     return message(QT_TR_NOOP("Probability of a false rejection at this decision: {p} % "
@@ -804,7 +848,8 @@ def _with_risk(conformity: Conformity) -> Conformity:
     import dataclasses
 
     return dataclasses.replace(conformity, statement=separated(
-        [conformity.statement, _risk_sentence(conformity.verdict, conformity.decision_risk)],
+        [conformity.statement, _risk_sentence(conformity.verdict, conformity.decision_risk,
+                                              conformity.risk_is_bound)],
         " "), quantity=separated([conformity.quantity, message(
             RISK_METHOD_FIGURE if conformity.monte_carlo is not None else RISK_METHOD)]))
 
@@ -952,7 +997,7 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
                     zones=_zones(t, band, band, rule, d, q))
     return Conformity(verdict, text, rule_text, quantity_text, zones=zones,
                       decision_risk=_risk(verdict, conforming), compared=compared[worst],
-                      **values, **common)
+                      risk_is_bound=e.size > 1, **values, **common)
 
 
 def _point_figures(x: float, w: float, q: str) -> dict[str, PrintedFigure]:
