@@ -722,6 +722,13 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
         return crosscal_certificate(result, metadata, source_name, self.method_reference,
                                     settings)
 
+    def inputs_not_stated(self, result, metadata):
+        # the comparator's calibration, where no comparator is listed with a stated U: an
+        # input of every reading whether or not a standard is listed (assessment 73 M2)
+        from models.crosscal.export import comparator_not_stated
+
+        return comparator_not_stated(metadata)
+
     def dcc_point_uncertainties(self, result, metadata=None, settings=None):
         """The encoder's error from step 0: its U (the certificate's "U from step 0", the
         comparators in) with the solution's k, as the polygon's from face 1 in

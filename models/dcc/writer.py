@@ -719,6 +719,28 @@ def _decided(b: _Builder, results, p: float) -> None:
         q = etree.SubElement(data, D + "quantity", refType="anglebench_decidedQuantity")
         b.text(q, "name", QT_TR_NOOP("Decided quantity"))
         b.real(q, c.value, unit)
+    _tolerance_stated(b, data)
+
+
+def _tolerance_stated(b: _Builder, data) -> None:
+    """The tolerance ±T as the customer stated it, beside the decided quantity: its number
+    in its own unit, the number as typed (trailing zeros kept: the place ASTM E29 rounds a
+    value compared with it to) its si:label, so that a machine reader redoes the decision
+    from the DCC's figures (assessment 73 M4: T only inside the statement's text). None
+    where the tolerance decided is not one the details state (a polygon's grade)."""
+    from models.quantity import UNITS
+    from models.uncertainty.rounding import stated_decimals
+
+    stated = getattr(b.document.tolerance, "stated", None)
+    if stated is None or stated[1] not in UNITS:
+        return
+    number, key = stated
+    q = etree.SubElement(data, D + "quantity", refType=b.ref(
+        "anglebench_toleranceStated", "the tolerance ±T as the customer stated it, in its "
+        "unit; its si:label is the number as typed, to the places typed"))
+    b.text(q, "name", QT_TR_NOOP("Tolerance as stated"))
+    b.real(q, float(number), _SYMBOLS.get(UNITS[key].symbol, r"\one"),
+           label=f"{float(number):.{stated_decimals(number)}f}")
 
 
 def _budget(b: _Builder, results, unit: str) -> None:
