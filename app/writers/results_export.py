@@ -37,8 +37,8 @@ from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_i
 from models.messages import QT_TR_NOOP, Message, joined, message, separated
 from models.project.atomic_write import write_bytes_atomic
 from models.quantity import UNITS
-from models.uncertainty.conformity import RISK_BOUND_NOTE
 from models.register.wording import revision_words
+from models.uncertainty.conformity import RISK_BOUND_NOTE
 
 if TYPE_CHECKING:
     from models.register.store import CertificateRecord

@@ -41,5 +41,6 @@ def test_the_converted_tolerance_keeps_six_significant_digits(number, key):
                           "guarded", "points")
     converted = _six_with_zeros(number * ARCSEC_PER[key])
     assert len(converted.replace(".", "").lstrip("0")) == 6
-    shown = re.findall(re.escape(np.format_float_positional(number, trim="-") + SYMBOL[key]) + r" \(([0-9.]+)\"\)", c.statement)
+    typed = np.format_float_positional(number, trim="-") + SYMBOL[key]
+    shown = re.findall(re.escape(typed) + r" \(([0-9.]+)\"\)", c.statement)
     assert shown and set(shown) == {converted}, c.statement
