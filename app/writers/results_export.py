@@ -570,7 +570,7 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
             ws.append([_cell(words.cell(v)) for v in row])
         if table.note:
             ws.append([neutralise(words.cell(text_in_unit(table.note, unit)))])
-    ws = book.create_sheet("Certificate")
+    ws = book.create_sheet(details_sheet_name(document))
     wrapped = Alignment(wrap_text=True, vertical="top")  # a bilingual text: Chinese above
     for key, value in _metadata_in_unit(_metadata_rows(document, issued), unit, words):
         value = _cell(value)
@@ -581,6 +581,18 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
     out = io.BytesIO()
     book.save(out)
     return out.getvalue()
+
+
+#: the sheet of the document's details and statements, by what the document is: a
+#: calibration certificate's, a test report's (assessment 73 L4: a test report's was named
+#: *Certificate*); the same name in every language, as the other sheets keep theirs
+DETAILS_SHEETS = {False: "Certificate", True: "Report"}
+
+
+def details_sheet_name(document: CertificateDocument) -> str:
+    """The name of the sheet of ``document``'s details: *Certificate*, or *Report* for a
+    test report."""
+    return DETAILS_SHEETS[bool(document.is_test_report)]
 
 
 def write_results_xlsx(path: str | Path, document: CertificateDocument,
@@ -616,9 +628,11 @@ def issue_stated(data: bytes) -> dict[str, str] | None:
     except (zipfile.BadZipFile, OSError, ValueError, KeyError):
         return None
     try:
-        if "Certificate" not in book.sheetnames:
+        sheet = next((name for name in DETAILS_SHEETS.values() if name in book.sheetnames),
+                     None)
+        if sheet is None:
             return None
-        rows = [tuple(r) + (None, None) for r in book["Certificate"].iter_rows(
+        rows = [tuple(r) + (None, None) for r in book[sheet].iter_rows(
             max_row=max(_ISSUE_ROWS.values()) + 1, max_col=2, values_only=True)]
     finally:
         book.close()

@@ -958,10 +958,23 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
     software = software or software_identity()
     meta = document.metadata
     if document.is_draft:  # a DRAFT is no certificate: its DCC would read as one
-        raise DccError(message(QT_TR_NOOP(
-            "no DCC written: the certificate is a DRAFT ({missing} missing); a digital "
-            "certificate is made only of a complete one"), missing=", ".join(
-                _say(m, "en") for m in meta.missing_fields())))
+        # said of the document it is (a test report's "report number"; a specimen is no
+        # draft: its details are incomplete) (assessment 73 L2: "the certificate is a DRAFT"
+        # of a specimen test report)
+        report = document.is_test_report
+        missing = ", ".join(_say(m, "en") for m in meta.missing_fields(report))
+        raise DccError(message(
+            (QT_TR_NOOP("no DCC written: the specimen test report's details are incomplete "
+                        "({missing} missing); a digital document is made only of complete "
+                        "details") if report else
+             QT_TR_NOOP("no DCC written: the specimen certificate's details are incomplete "
+                        "({missing} missing); a digital certificate is made only of complete "
+                        "details")) if document.specimen else
+            QT_TR_NOOP("no DCC written: the test report is a DRAFT ({missing} missing); a "
+                       "digital document is made only of a complete one") if report else
+            QT_TR_NOOP("no DCC written: the certificate is a DRAFT ({missing} missing); a "
+                       "digital certificate is made only of a complete one"),
+            missing=missing))
     b = _Builder(document, bilingual=True)
     root = etree.Element(D + "digitalCalibrationCertificate", nsmap=v.NSMAP,
                          schemaVersion=v.SCHEMA_VERSION)
