@@ -149,6 +149,14 @@ class CertificateDialogs:
             "correct {numbers}, amend or replace it from File › Certificate register).")
             .format(reason=reason, numbers=", ".join(numbers)))
 
+    def confirm_issue_date(self, date: str, reason: str) -> bool:
+        """The issue is dated far after the register's last record (reg73 #6): is today
+        ``date``? (the answer Yes is recorded in the register; No: nothing is issued)"""
+        return self._yes(tr("Is today {date}?").format(date=date), tr(
+            "{reason}.\n\nIs today {date}? Yes: issue it dated {date}; the register records "
+            "that you confirmed the date. No: nothing is issued; correct the computer's "
+            "clock.").format(reason=reason, date=date))
+
     def confirm_lookalike_serial(self, question) -> bool:
         """The serial is new to the register but looks like the serial of
         ``question.numbers`` (a :class:`models.register.store.LookalikeSerial`), or the item
@@ -211,7 +219,11 @@ class CertificateDialogs:
         self.window.tell(title, text)
 
     def show_status(self, text: str, milliseconds: int) -> None:
-        self.window.statusBar().showMessage(text, milliseconds)
+        bar = self.window.statusBar()
+        bar.showMessage(text, milliseconds)
+        # painted now: the register may be about to wait for another's lock on this thread
+        # (no event is handled meanwhile, so nothing else can run)
+        bar.repaint()
 
     def wait_cursor(self, on: bool) -> None:
         if on:

@@ -8,12 +8,20 @@ Shared by the window's certificate presenter and ``anglebench analyze --certific
 from __future__ import annotations
 
 import dataclasses
+import datetime as dt
+import logging
 import os
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from app.capture.instruments import INSTRUMENTS, frame_values, reading_columns
-from app.issued_outputs import keep_in_sight, place_new, refuse_issued_files, written_beside
+from app.issued_outputs import (
+    clear_stale_beside,
+    keep_in_sight,
+    place_new,
+    refuse_issued_files,
+    written_beside,
+)
 from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
@@ -24,6 +32,8 @@ from models.project.file import READINGS_SOURCE, Project, WorkbenchState, projec
 from models.project.output_guard import check_output, register_files
 from models.readings.angles import parse_angle_deg
 from models.register.store import CertificateRecord, IssueRequest, Register
+
+log = logging.getLogger(__name__)
 
 __all__ = ["IssuedNotWritten", "draft_reasons", "issue_certificate",
            "readings_edited_after_capture", "refuse_issued_files", "specimen_document"]
@@ -68,6 +78,7 @@ def _write_results(register: Register, record: CertificateRecord, path: str,
         refuse_database(target)
         if target.is_symlink():
             target = target.resolve()
+        clear_stale_beside(register, target)  # a killed save's leftovers (reg72 #11)
         fd, temp = tempfile.mkstemp(prefix=_temp_prefix(target), suffix=".tmp",
                                     dir=target.parent)
     except OSError as exc:
@@ -112,6 +123,7 @@ def _write_new(register: Register, path: str, data: bytes) -> None:
     same PDF replaced the first's). Nothing left on failure; the register holds the file."""
     import contextlib
 
+    clear_stale_beside(register, path)  # killed saves' leftovers (reg72 #11)
     target, temp = written_beside(path, data)
     try:  # placed for good: the durable renames fsync the folder
         place_new(register, temp, target)
@@ -133,14 +145,17 @@ def specimen_document(document):
     results as printed (a number the register refuses, so it cannot clash with an issued
     one); never recorded. The same readings, settings and details give the same number;
     other results another (until 0.8.18 the details alone: the polygon sample, its one set
-    and its run with a CMC were all SPECIMEN-4ECF9DB2)."""
+    and its run with a CMC were all SPECIMEN-4ECF9DB2). The language it is printed in is
+    not part of it: the same results in English, Chinese or both are one specimen (until
+    0.8.21 the details' ``language`` was hashed with them, so the theodolite sample in en
+    and zh were SPECIMEN-9D13E820 and SPECIMEN-9C7ACC74: assessment 72 L8)."""
     import hashlib
 
     printed = [str(document.conformity.statement), *map(str, document.settings)]
     for table in (document.parameters, document.results, document.statistics):
         printed += ["\x1f".join(map(str, row)) for row in table.rows]
-    stamp = hashlib.sha256(repr((document.metadata.to_dict(), printed)).encode()
-                           ).hexdigest()[:8].upper()
+    details = {k: v for k, v in document.metadata.to_dict().items() if k != "language"}
+    stamp = hashlib.sha256(repr((details, printed)).encode()).hexdigest()[:8].upper()
     number = f"SPECIMEN-{stamp}"
     return dataclasses.replace(
         document, specimen=True,
@@ -241,7 +256,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                       dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = "",
                       signing: tuple[str, str] = ("", ""),
                       results: Callable[[Any, CertificateRecord], bytes] | None = None,
-                      results_path: str = "") -> CertificateRecord:
+                      results_path: str = "",
+                      confirmed_date: dt.date | None = None) -> CertificateRecord:
     """Issue and record the certificate, then write it to ``path``. Raises RegisterError,
     ValueError (the content, e.g. details that contradict the settings), OSError before
     the commit (nothing recorded), or IssuedNotWritten (recorded; the file not written: its
@@ -268,6 +284,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     certificate, of its calibration: its workbench, item (serial as printed) and date of calibration,
     else NotTheSameCalibration, before anything is issued; ``correction_confirmed``: a
     corrected serial number or date of calibration, confirmed, stated on it (rev62 F1).
+    ``confirmed_date``: today's date as the user confirmed it, for an issue far after the
+    register's last record (else DateToConfirm: models/register/clock_rules).
     ``results(document, record)``: the results file (CSV or XLSX) of the certificate issued,
     made after the commit from the document the recorded PDF was rendered from and the
     register's record (so with the number and date of issue the register gave, and the
@@ -308,7 +326,10 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     for flag, out in outputs:
         if out:
             check_output(out, register_files(register.url), flag)
-    refuse_issued_files(register, outputs)
+    for said in refuse_issued_files(register, outputs):
+        # the command line and the window checked and said this before (cli.py,
+        # certificate_presenter.py): a leftover that turned ten minutes old since, logged
+        log.warning("%s", said)
     # the register stores the DCC made with the PDF of the same attempt (same number, the
     # PDF inside it) and chains its SHA-256
     record, pdf = register.issue(request, render, supersedes=supersedes,
@@ -317,6 +338,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                                  correction_confirmed=correction_confirmed,
                                  another_makers_item=another_makers_item,
                                  another_lookalike_item=another_lookalike_item,
+                                 confirmed_date=confirmed_date,
                                  # what the document recorded is: a test report or a
                                  # calibration certificate (in the chain, chain format 4)
                                  document_kind=lambda: "test" if made["document"].is_test_report

@@ -121,6 +121,10 @@ class CertificateView(Protocol):
         description with one (``question``: the register's facts, question and advice): is
         this another item? (recorded when issued; No: not issued)"""
 
+    def confirm_issue_date(self, date: str, reason: str) -> bool:
+        """The issue is dated far after the register's last record (``reason``): is today
+        ``date``? (recorded when issued; No: not issued)"""
+
     def confirm_correction(self, revision: PendingRevision, reason: str) -> bool:
         """An amendment or replacement with another serial number or date of calibration
         than ``revision.number``'s: a correction of it (stated on it)? No: not an amendment."""
@@ -480,10 +484,15 @@ class CertificatePresenter:
                 "changed.").format(number=revision.number), 15000)
 
     def open_register(self):
-        """The register (RegisterError when it cannot be opened)."""
-        from models.register.store import Register
+        """The register (RegisterError when it cannot be opened). A write that waits for
+        another process's write lock says so in the status line at once (reg72 #8: the
+        window stood a silent minute, then said "database is locked")."""
+        from models.register.store import BUSY_TIMEOUT_S, Register
 
-        return Register(self.register_url(), timezone=self.lab_timezone())
+        register = Register(self.register_url(), timezone=self.lab_timezone())
+        register.on_wait = lambda said: self.view.show_status(
+            translated(said), (BUSY_TIMEOUT_S + 10) * 1000)
+        return register
 
     def start_revision(self, revision: PendingRevision) -> None:
         """The next certificate of that workbench amends or replaces ``revision.number``."""
@@ -689,6 +698,7 @@ class CertificatePresenter:
         """``confirmed``: another maker's item, another item than a look-alike serial's,
         as the user said before the file dialog (else asked when the issue raises it)."""
         from app.certificate_issue import IssuedNotWritten, issue_certificate
+        from models.register.clock_rules import DateToConfirm
         from models.register.store import (
             AnotherMakersItem,
             LookalikeSerial,
@@ -699,6 +709,7 @@ class CertificatePresenter:
 
         corrected = False
         another_maker, another_item = confirmed
+        date_confirmed = None  # today's date, confirmed when the register asks (reg73 #6)
         declined: LookalikeSerial | None = None  # the question answered No
         try:
             while True:
@@ -711,7 +722,7 @@ class CertificatePresenter:
                             separate_calibration=separate, correction_confirmed=corrected,
                             another_makers_item=another_maker,
                             another_lookalike_item=another_item,
-                            raw_capture=raw_capture,
+                            raw_capture=raw_capture, confirmed_date=date_confirmed,
                             dcc=self._dcc_maker(kind, result, path, settings),
                             dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
                     break
@@ -722,6 +733,13 @@ class CertificatePresenter:
                                                     exc.numbers, explained(exc)).split())
                     if not separate:
                         raise
+                except DateToConfirm as exc:
+                    # far after the register's last record: the date shown and asked, a
+                    # Yes recorded with the certificate
+                    if date_confirmed is not None or not self._asked(
+                            self.view.confirm_issue_date, exc.date.isoformat(), explained(exc)):
+                        raise
+                    date_confirmed = exc.date
                 except AnotherMakersItem as exc:
                     # a maker's name spelt otherwise is not another maker (rev65 F1): asked,
                     # and a Yes recorded in the register

@@ -129,6 +129,11 @@ def _parser(words, kinds: tuple[str, ...] | None = None,
         "still valid of that date of calibration reports an item of its description and "
         "maker with one (or the other way round), and this is indeed another item (else it "
         "is refused, naming that certificate); recorded in the register that you said so")))
+    p.add_argument("--confirm-date", metavar="YYYY-MM-DD", default="", help=words(QT_TR_NOOP(
+        "with --certificate: today's date, as you know it, for an issue more than 30 days "
+        "after the register's last record (else it is refused, naming the date the computer's "
+        "clock gives: a clock set ahead would date the certificate wrongly); recorded in the "
+        "register that you confirmed it")))
     p.add_argument("--results", metavar="OUT.csv|OUT.xlsx",
                    help=words(QT_TR_NOOP("also write the results per point (with U) as CSV or "
                                          "XLSX")))
@@ -776,10 +781,13 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
                 raw_capture: list | None = None):
     """``report``: the document is a test report, and is called one (ISO/IEC 17025 7.8.2.1 a))."""
     from app.certificate_issue import IssuedNotWritten, issue_certificate
+    from models.register.clock_rules import parse_confirmed_date
     from models.register.store import Register, RegisterError
 
     try:
         with Register(url) as register:
+            # a write that waits for another's lock says so at once (reg72 #8)
+            register.on_wait = lambda said: _say(f"anglebench analyze: {rendered(said, words)}")
             dcc = ((lambda document, pdf: _dcc_of(args, kind, result, document, pdf, words,
                                                   settings))
                    if args.dcc else None)
@@ -792,6 +800,8 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
                                                                    False),
                                        another_lookalike_item=getattr(
                                            args, "another_lookalike_item", False),
+                                       confirmed_date=parse_confirmed_date(
+                                           getattr(args, "confirm_date", "")),
                                        results=_issued_results(args) if args.results else None,
                                        results_path=args.results or "",
                                        raw_capture=raw_capture)

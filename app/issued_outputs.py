@@ -27,7 +27,7 @@ from models.project.durable_rename import fsync_directory, rename_new_durably, r
 from models.project.output_guard import OutputRefused, sqlite_path_of_url
 from models.register.wording import issued_file_words
 
-__all__ = ["kept_name", "keep_in_sight", "keep_recorded_temporaries", "place_new",
+__all__ = ["clear_stale_beside", "kept_name", "keep_in_sight", "keep_recorded_temporaries", "place_new",
            "refuse_issued_files", "refuse_issued_outputs", "write_sparing_issued", "written_beside",
            "written_names"]
 
@@ -156,8 +156,30 @@ def keep_recorded_temporaries(register, outputs: Iterable[tuple[str, str | None]
                 "{temp} is the results file recorded with certificate {number}, left under "
                 "a temporary name by an issue stopped before it was named: kept as {kept}"),
                 temp=os.fspath(temp), number=number, kept=kept))
-            log.warning("%s", said[-1])
+            # the caller says it (a warning here reached stderr too, through logging's
+            # last resort: the notice was printed twice, reg72 #11)
+            log.info("%s", said[-1])
     return said
+
+
+def clear_stale_beside(register, target: str | os.PathLike[str]) -> None:
+    """A killed save's leftovers beside ``target`` (``.NAME.*.tmp`` older than ten minutes:
+    models/project/atomic_write.stale_temporaries) cleared before a file of an issue is
+    written there, as every atomic write clears them (reg72 #11: the certificate's PDF, DCC
+    and results file, written through :func:`written_beside` and :func:`place_new`, left
+    them, though the docs promise the next save clears them). A recorded results file
+    among them is kept first (:func:`keep_recorded_temporaries`; the check before the issue
+    said what it kept: one that turned ten minutes old since is kept and logged); when one
+    cannot be kept, or the register cannot be read, nothing is cleared."""
+    try:
+        for said in keep_recorded_temporaries(register, [("", os.fspath(target))]):
+            log.warning("%s", said)
+    except (OutputRefused, ValueError):  # (a RegisterError is a ValueError)
+        return  # a recorded file that cannot be kept, or the register unread: none cleared
+    for name in written_names(target):
+        for temp in stale_temporaries(name):
+            with contextlib.suppress(OSError):
+                os.unlink(temp)
 
 
 def _named(digest: str, out: str, number: str) -> bool:
@@ -290,6 +312,7 @@ def write_sparing_issued(url: str, path: str | os.PathLike[str], data: bytes) ->
             return
         with register:
             try:
+                clear_stale_beside(register, target)
                 place_new(register, temp, target)
             except RegisterError as exc:  # not known to be no issued file: not replaced
                 raise OutputRefused(reason_of(exc)) from exc

@@ -166,8 +166,30 @@ def _parser(words) -> argparse.ArgumentParser:
         "the approver must differ from the operator")))
     signatories.add_argument("--clear", action="store_true", help=words(QT_TR_NOOP(
         "no list: any named approver is accepted")))
+    lost = sub.add_parser("acknowledge-loss", help=words(QT_TR_NOOP(
+        "record that records were lost (an older copy restored): who, why, the last number "
+        "known issued; the counters move past it and issuing resumes")))
+    lost.add_argument("--by", required=True, help=words(QT_TR_NOOP(
+        "who acknowledges the loss (a name)")))
+    lost.add_argument("--reason", required=True, help=words(QT_TR_NOOP(
+        "why: what was lost and restored")))
+    lost.add_argument("--last-number", default="", metavar="NUMBER", help=words(QT_TR_NOOP(
+        "the last certificate number known issued (from the lab's log, the customers' "
+        "copies): no number up to it is issued again")))
+    lost.add_argument("--scheme", default="", help=words(QT_TR_NOOP(
+        "the number scheme of --last-number when the register restored has no counter of it "
+        "(e.g. AB-{year}-{seq:04d})")))
+    clock = sub.add_parser("clock-correction", help=words(QT_TR_NOOP(
+        "record that the register's last record was dated by a clock set ahead: with this "
+        "clock right, issuing resumes")))
+    clock.add_argument("--by", required=True, help=words(QT_TR_NOOP(
+        "who records the correction (a name)")))
+    clock.add_argument("--reason", required=True, help=words(QT_TR_NOOP(
+        "why: which clock was wrong")))
+    clock.add_argument("--confirm-date", required=True, metavar="YYYY-MM-DD", help=words(
+        QT_TR_NOOP("today's date, as you know it: it must be the computer's")))
     for command in (listing, show, verify, export, counter, interval, head, withdraw,
-                    signatories):
+                    signatories, lost, clock):
         add_language_option(command, words, subcommand=True)
     return p
 
@@ -358,6 +380,7 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
         embedded_pdf,
         head_before_changed,
         in_this_chain,
+        lost_and_acknowledged,
         record_lost,
         say_its_place,
     )
@@ -427,6 +450,8 @@ def _verify_findings(register, path: str, data: bytes, out, head: str, head_from
         return EXIT_REGISTER_CHANGED  # the register's records, not the file, were changed
     record = found[0] if found else None
     if record is None:
+        if pdf_inside and lost_and_acknowledged(register, path, pdf_inside, out):
+            return EXIT_REGISTER_CHANGED  # its record lost: not to be taken as verified
         if pdf_inside and record_lost(register, pdf_inside):
             # issued by this register (the head it prints, its number), its record gone:
             # the register LOST it — not a forgery (reg72 #1)
@@ -665,6 +690,8 @@ def run_register(argv: list[str]) -> int:
             sys.stdout.write(rendered(message(QT_TR_NOOP("CHANGED AFTER ISSUE: {problem}"),
                                               problem=reason_of(exc)), words) + "\n")
             return EXIT_REGISTER_CHANGED
+        # a write that waits for another's lock says so at once, not after a silent minute
+        register.on_wait = lambda said: _say(f"anglebench register: {rendered(said, words)}")
         with register:
             if args.command != "verify":
                 for problem in register.problems:
@@ -699,9 +726,10 @@ def run_register(argv: list[str]) -> int:
                     from app.certificate_issue import refuse_issued_files
 
                     try:  # an issued file (another certificate's PDF…) is never replaced
-                        refuse_issued_files(register, [
-                            (flag, path) for flag, path in outputs
-                            if path and not _holds(path, register, record, flag)])
+                        for said in refuse_issued_files(register, [
+                                (flag, path) for flag, path in outputs
+                                if path and not _holds(path, register, record, flag)]):
+                            _say(f"anglebench register: {rendered(said, words)}")  # kept
                         refuse_other_kinds(outputs)  # nor a file of another kind
                     except OutputRefused as exc:
                         _say(f"anglebench register: {rendered(reason_of(exc), words)}")
@@ -737,6 +765,30 @@ def run_register(argv: list[str]) -> int:
                     number=args.number, reason=args.reason, head=register.chain_head()),
                     words) + "\n")
                 return 0
+            if args.command == "acknowledge-loss":
+                body = register.acknowledge_loss(args.by, args.reason, args.last_number,
+                                                 args.scheme)
+                sys.stdout.write(rendered(message(QT_TR_NOOP(
+                    "loss recorded by {by} ({reason}); counters moved: {moved}; issuing "
+                    "resumes; chain head now {head}"), by=body["by"], reason=body["reason"],
+                    moved=", ".join(f"{name} {before} → {after}" for name, (before, after)
+                                    in body["counters"].items()) or message(QT_TR_NOOP(
+                                        "none")), head=register.chain_head()), words) + "\n")
+                for problem in register.problems:
+                    _say(rendered(message(QT_TR_NOOP("anglebench register: WARNING: {problem}"),
+                                          problem=problem), words))
+                return 0
+            if args.command == "clock-correction":
+                from models.register.clock_rules import parse_confirmed_date
+
+                body = register.correct_clock(args.by, args.reason,
+                                              parse_confirmed_date(args.confirm_date))
+                sys.stdout.write(rendered(message(QT_TR_NOOP(
+                    "clock correction recorded by {by} ({reason}): {ahead}, dated {at}, was "
+                    "dated by a clock set ahead; issuing resumes on this clock ({date})"),
+                    by=body["by"], reason=body["reason"], ahead=body["ahead"],
+                    at=body["ahead_at"], date=body["confirmed_date"]), words) + "\n")
+                return 0
             if args.command == "continue":
                 import datetime as dt
 
@@ -756,7 +808,8 @@ def run_register(argv: list[str]) -> int:
             from app.certificate_issue import refuse_issued_files
 
             try:  # an issued PDF, DCC or results file is never replaced (rev63 F5)
-                refuse_issued_files(register, [("", args.out)])
+                for said in refuse_issued_files(register, [("", args.out)]):
+                    _say(f"anglebench register: {rendered(said, words)}")  # a file kept
             except OutputRefused as exc:
                 _say(f"anglebench register: {rendered(reason_of(exc), words)}")
                 return EXIT_BAD_INPUT

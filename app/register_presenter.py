@@ -238,6 +238,7 @@ class RegisterPresenter:
             content_changed,
             head_before_changed,
             in_this_chain,
+            lost_and_acknowledged,
             record_lost,
             say_its_place,
         )
@@ -259,6 +260,9 @@ class RegisterPresenter:
                     # its record rewritten since (the content digest it carries: reg72 #2)
                     rewritten = content_changed(register, path, data, found[0])
                     findings += [rewritten] if rewritten is not None else []
+                elif not found and lost_and_acknowledged(register, path, data,
+                                                         findings.append):
+                    lost = True  # issued before a loss recorded since (reg73 #5)
                 elif not found and record_lost(register, data):
                     lost = True  # issued here, its record gone: not a forgery (reg72 #1)
                     say_its_place(register, path, data, findings.append)

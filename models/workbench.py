@@ -283,10 +283,11 @@ class IssuesCertificates(ABC, Generic[ResultT]):
     traceability_basis: ClassVar[str | None] = None
     #: its settings always give a tolerance (the polygon's grade): a decision is always made
     tolerance_in_settings: ClassVar[bool] = False
-    #: the standards that carry the measurand (QT_TR_NOOP texts): a calibration certificate
-    #: states traceability only when each is listed with a certificate and a stated U;
-    #: otherwise the document is a test report and says why
-    measurand_standards: ClassVar[tuple[str, ...]] = ()
+    #: the standards that carry the measurand, each (its role, models.certificate.metadata.
+    #: STANDARD_ROLES; its name, a QT_TR_NOOP text): a calibration certificate states
+    #: traceability only when each is listed with a certificate and a stated U; otherwise the
+    #: document is a test report and says why, naming the ones not listed
+    measurand_standards: ClassVar[tuple[tuple[str, str], ...]] = ()
     #: a standard listed with its certificate and no U stands behind inputs stated in its
     #: settings (the fringe's ADC figures), which it names as not stated itself; otherwise a
     #: standard listed with no stated U is an input not stated (the JSON's

@@ -87,11 +87,13 @@ _CHOICES = {
 # a figure typed with its unit, chosen beside it: field -> the key of its unit
 _UNIT_OF = {"tolerance": "tolerance_unit", "item_resolution": "item_resolution_unit"}
 _STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty", "basis",
-                     "applies_to", "uncertainty_unit", "due_date")
+                     "applies_to", "uncertainty_unit", "role", "due_date")
 _STANDARD_HEADERS = (QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
                      QT_TR_NOOP("Uncertainty"), QT_TR_NOOP("Stated as (U95, MPE, u)"),
                      QT_TR_NOOP("Per (reading, angle, from face 1)"),
                      QT_TR_NOOP("Unit of the uncertainty (\", µrad, nm, µm …)"),
+                     # which standard of the measurand it is (assessment 72 L2)
+                     QT_TR_NOOP("Role (reference, autocollimator, adc)"),
                      QT_TR_NOOP("Due date (YYYY-MM-DD)"))
 _ERROR_STYLE = "background: #ffd7d7;"
 
@@ -539,7 +541,7 @@ class CertificateDialog(QDialog):
                            if self.standards.item(row, col) else "")
                      for col, key in enumerate(_STANDARD_COLUMNS)}
             if any(v.strip() for k, v in entry.items()
-                   if k not in ("basis", "applies_to", "uncertainty_unit")):
+                   if k not in ("basis", "applies_to", "uncertainty_unit", "role")):
                 standards.append(entry)
         data["standards"] = standards
         return data

@@ -34,7 +34,7 @@ from models.certificate.document import CertificateDocument, Table, budget_table
 from models.certificate.export_resolution import rounded_point_columns
 from models.certificate.interval_note import interval_cells
 from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_in_unit, text_in_unit
-from models.messages import QT_TR_NOOP, Message, joined, message, separated
+from models.messages import QT_TR_NOOP, Message, joined, listed, message, separated
 from models.project.atomic_write import write_bytes_atomic
 from models.quantity import UNITS
 from models.register.wording import revision_words
@@ -43,8 +43,8 @@ from models.uncertainty.conformity import RISK_BOUND_NOTE
 if TYPE_CHECKING:
     from models.register.store import CertificateRecord
 
-__all__ = ["NOT_ISSUED", "XLSX_MAX_ROWS", "issued_status", "neutralise", "not_issued",
-           "probability_cell", "results_bytes",
+__all__ = ["NOT_ISSUED", "XLSX_MAX_ROWS", "PrintedNumber", "issued_status", "neutralise",
+           "not_issued", "number_format", "probability_cell", "results_bytes",
            "split_figures", "write_results_csv", "write_results_xlsx"]
 
 XLSX_MAX_ROWS = 1_048_576
@@ -102,12 +102,33 @@ def split_figures(text: str) -> tuple[tuple[float, ...], str, str] | None:
         found = _FIGURE.fullmatch(part)
         if found is None:
             return None
-        values.append(float(found.group(1).replace("−", "-")))
+        values.append(PrintedNumber(found.group(1)))
         if found.group(2):
             units.add(found.group(2))
     if len(units) > 1 or not all(math.isfinite(v) for v in values):
         return None
     return tuple(values), units.pop() if units else "", join
+
+
+class PrintedNumber(float):
+    """A figure of a printed table as the number it is, with the ``decimals`` it was printed
+    to (None: in exponent notation), so that its cell shows them: a U of "7.0 µrad" is the
+    number 7.0 shown 7.0, not 7 (assessment 72 L6)."""
+
+    decimals: int | None
+
+    def __new__(cls, text: str) -> PrintedNumber:
+        made = super().__new__(cls, float(text.replace("−", "-")))
+        digits = text.lstrip("+-−")
+        made.decimals = (None if "e" in digits.lower() else
+                         len(digits.split(".")[1]) if "." in digits else 0)
+        return made
+
+
+def number_format(decimals: int | None) -> str:
+    """The spreadsheet's number format that shows ``decimals`` decimals ("0.0"), "General"
+    where they are not known."""
+    return "General" if decimals is None else "0" if decimals == 0 else "0." + "0" * decimals
 
 
 class _Column(NamedTuple):
@@ -126,7 +147,11 @@ class _Column(NamedTuple):
         name = say(self.name)
         if self.unit_column:
             return say(message("{column}: unit", column=name))
-        held = " | ".join(say(word) for word in self.held)
+        # a column that holds one figure of several kinds of cell says each, as a header
+        # reads: "Value (to, second or U−)" (assessment 72 L6: "Value (to | second | U−)")
+        words = [say(word) for word in self.held]
+        held = say(message(QT_TR_NOOP("{items} or {item}"), items=listed(words[:-1]),
+                           item=words[-1])) if len(words) > 1 else "".join(words)
         title = f"{name} ({held})" if held else name
         return f"{title} ({self.unit})" if self.unit else title
 
@@ -493,6 +518,19 @@ def _cell(value: object) -> object:
     return neutralise(value)
 
 
+def _shown(ws, figure: PrintedNumber):
+    """A printed table's figure as a number cell that shows the decimals it was printed to
+    (a float, its format "0.0" for "7.0 µrad": the number 7 in a General cell showed 7)."""
+    from openpyxl.cell import WriteOnlyCell
+
+    value = _cell(float(figure))
+    if value is None or not figure.decimals:
+        return value
+    cell = WriteOnlyCell(ws, value)
+    cell.number_format = number_format(figure.decimals)
+    return cell
+
+
 #: the *Certificate* sheet's texts of the decision, kept in the unit it was made in (the
 #: certificate's) whatever the sheet's unit: their value, U₋, U₊, T and zones are the figures
 #: the verdict was decided on as printed, and re-rounded in another unit they could give
@@ -567,7 +605,8 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
                                        heading=words.column)
         ws.append([neutralise(h) for h in header])
         for row in rows:
-            ws.append([_cell(words.cell(v)) for v in row])
+            ws.append([_shown(ws, v) if isinstance(v, PrintedNumber) else _cell(words.cell(v))
+                       for v in row])
         if table.note:
             ws.append([neutralise(words.cell(text_in_unit(table.note, unit)))])
     ws = book.create_sheet(details_sheet_name(document))

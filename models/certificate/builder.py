@@ -216,7 +216,7 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
                       plots: Sequence[PlotFigure | None], warnings: Sequence[str],
                       statements: Sequence[str], point_columns: Sequence[tuple[str, Any]],
                       tolerance: float | None | _FromDetails = FROM_DETAILS,
-                      unit: str = "\"", measurand_standards: Sequence[str] = (),
+                      unit: str = "\"", measurand_standards: Sequence[tuple[str, str]] = (),
                       standards_in_settings: bool = False, **more: Any) -> CertificateDocument:
     """The certificate of a workbench's result: the results table from its columns, the
     conformity decided on ``decision`` against ``tolerance`` (the details' by default) with

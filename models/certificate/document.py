@@ -16,7 +16,8 @@ import numpy as np
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
 from models.messages import QT_TR_NOOP, joined, listed, message, separated
 from models.plots import PlotFigure, PlotSeries
-from models.quantity import Quantity
+from models.quantity import Quantity, UnitError
+from models.quantity import unit as unit_named
 from models.sign_convention import SIGN_CONVENTION_TEXT
 from models.uncertainty.budget import (
     BASIS_DIVISORS,
@@ -189,6 +190,14 @@ def _dof_text(nu: float) -> str:
     return f"{nu:.0f}" if nu < 1e4 else "≥ 10⁴"
 
 
+def _unit_key_of(symbol: str) -> str:
+    """The unit key of a figure's symbol ('"', " µrad"), "" where it names none."""
+    try:
+        return unit_named(symbol.strip()).key if symbol.strip() else ""
+    except UnitError:
+        return ""
+
+
 def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
                  withheld: bool = False) -> Table:
     """The budget at its worst point as a printable table, with the combined line
@@ -217,11 +226,13 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
         # the U the certificate states there: the line above rounded up to two significant
         # digits (GUM 7.2.6), so that the table ends on the figure printed (assessment 72
         # L6: "Expanded U (k = 2.00) 1.436" beside "U = 1.5″")
-        d = uncertainty_decimals(stated_u)
-        # (named as the statistics name the U stated, rounded up there too)
+        # (named as the statistics name the U stated, rounded up there too), a figure that
+        # rounds itself again where the table is read in another unit (7.0 µrad for 1.436″,
+        # not 1.5″ converted to 7.27 µrad)
         rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
                              p=f"{100 * budget.probability:.2f}"), "", "", "", "",
-                     "", "", f"{rounded_to(stated_u, d, 'up'):.{d}f}", "", ""))
+                     "", "", PrintedFigure(stated_u, "", rounding="up",
+                                           unit_key=_unit_key_of(unit)), "", ""))
     if not withheld and budget.points and bool(budget.below_floor[i]):
         # the U stated there is the laboratory's CMC (ILAC-P14 5.4): the table's last line is
         # the U the certificate states, not the smaller one the inputs give

@@ -31,6 +31,7 @@ __all__ = [
     "LANGUAGES",
     "LAB_DEFAULT_FIELDS",
     "NUMBER_FIELDS",
+    "STANDARD_ROLES",
     "CertificateMetadata",
     "MetadataError",
     "PLACES",
@@ -70,6 +71,13 @@ LANGUAGES = {"en": "English", "zh": "中文", "zh+en": "中文 + English (headin
 #: code points
 _REFUSED_CATEGORIES = frozenset({"Cc", "Cf", "Zl", "Zp", "Cs", "Co", "Cn"})
 
+
+#: What a reference standard carries of the measurand (ReferenceStandard.role; "" not stated:
+#: told from its other fields where they tell it, models/certificate/traceability.py): the
+#: reference the errors are measured against (the theodolite, the polygon, the positioning's
+#: reference measuring system, the fringe's phase or angle reference), the polygon test's
+#: autocollimator, the fringe's ADC. A workbench names the roles its measurand needs.
+STANDARD_ROLES = ("reference", "autocollimator", "adc")
 
 #: What a reference standard's uncertainty figure applies to (see ReferenceStandard).
 APPLIES_TO = ("reading", "angle", "from face 1")
@@ -196,7 +204,9 @@ class ReferenceStandard:
     start: the difference of two readings' errors is then within it too; the positioning
     figures' intervals and the theodolite's circle-error widening use it), or each face's
     deviation ``from face 1`` (a polygon certificate that states its deviations from face 1,
-    whose face 1 is then exact).
+    whose face 1 is then exact). ``role`` says which of the standards that carry the
+    measurand it is (one of STANDARD_ROLES; "" not stated), so that a document missing one
+    can name which (assessment 72 L2).
     """
 
     description: str = ""
@@ -211,6 +221,7 @@ class ReferenceStandard:
     # "u": U/k, exact; "U95": U with k = 2): the standards table prints U with this k, as
     # read, to two significant digits (GUM 7.2.6), not the figure's every digit
     coverage_factor: float | None = None
+    role: str = ""  # one of STANDARD_ROLES, "" where not stated
 
     def uncertainty_in(self, unit: str, name: str = "standards") -> float | None:
         """The stated uncertainty as a number in ``unit`` (the errors'); MetadataError when
@@ -265,6 +276,12 @@ class ReferenceStandard:
                 QT_TR_NOOP("certificate field '{name}.applies_to' must be one of {join}, not "
                            "'{applies_to}'"),
                 name=name, join=', '.join(APPLIES_TO), applies_to=applies_to))
+        role = clean_text(data.get("role"), f"{name}.role")
+        if role and role not in STANDARD_ROLES:
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field '{name}.role' must be one of {join} or empty, "
+                           "not '{role}'"),
+                name=name, join=', '.join(STANDARD_ROLES), role=role))
         k = _optional_number(data.get("coverage_factor"), f"{name}.coverage_factor")
         if k is not None and k <= 0:
             raise MetadataError(message(
@@ -273,7 +290,8 @@ class ReferenceStandard:
         return cls(clean_text(data.get("description"), f"{name}.description"),
                    clean_text(data.get("serial"), f"{name}.serial"),
                    clean_text(data.get("certificate_no"), f"{name}.certificate_no"), u, basis,
-                   applies_to, unit_key, _date(data.get("due_date"), f"{name}.due_date"), k)
+                   applies_to, unit_key, _date(data.get("due_date"), f"{name}.due_date"), k,
+                   role)
 
 
 #: what a stored standard that does not read is said as (where: the lab defaults' standards
@@ -539,9 +557,10 @@ class CertificateMetadata:
 
     def to_dict(self) -> dict[str, Any]:
         out = asdict(self)
-        # a standard's k only where one was read (the files of standards typed stay as were)
+        # a standard's k only where one was read, its role where stated (the files of
+        # standards typed stay as were)
         out["standards"] = [{k: v for k, v in asdict(s).items()
-                             if k != "coverage_factor" or v is not None}
+                             if not (k == "coverage_factor" and v is None or k == "role" and not v)}
                             for s in self.standards]
         if isinstance(self.tolerance, StatedNumber) and self.tolerance.decimals > stated_decimals(
                 float(self.tolerance)):

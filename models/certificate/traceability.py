@@ -10,10 +10,14 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from models.messages import QT_TR_NOOP, message, separated
+from models.messages import QT_TR_NOOP, listed, message, separated
 
 if TYPE_CHECKING:  # the details' module is loaded by whoever hands them (not a plain analyze)
     from models.certificate.metadata import CertificateMetadata
+
+#: the role of a standard that stands behind inputs stated in the settings, by the first word
+#: of their budget names (the fringe's "Phase reference", "ADC offset" …)
+_FAMILY_ROLES = {"Phase": "reference", "ADC": "adc"}
 
 __all__ = ["expired_standards", "expired_withheld", "standards_not_stated", "test_report_statement",
            "traceability_gaps", "traceability_withheld"]
@@ -56,7 +60,7 @@ def standards_not_stated(metadata: CertificateMetadata, stated_inputs: tuple[str
             if s.uncertainty is None and not (stated_inputs and s.certificate_no)]
 
 
-def traceability_withheld(metadata: CertificateMetadata, roles: tuple[str, ...],
+def traceability_withheld(metadata: CertificateMetadata, roles: tuple[tuple[str, str], ...],
                           stated_inputs: tuple[str, ...] = ()) -> str:
     """Why no statement of conformity may be made while traceability is not established
     ("" when it is): a decision rule rests on the result's uncertainty (ISO/IEC 17025 7.1.3,
@@ -72,23 +76,45 @@ def traceability_withheld(metadata: CertificateMetadata, roles: tuple[str, ...],
                               "{gaps}"), gaps=separated(gaps, "; "))
 
 
-def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
+def traceability_gaps(metadata: CertificateMetadata, roles: tuple[tuple[str, str], ...],
                       stated_inputs: tuple[str, ...] = ()) -> list[str]:
     """Why the standards listed do not make the results traceable (empty: they do; none
     listed where ``roles`` are named is a gap too: assessment 72 M3). ``roles``: the
-    standards that carry the measurand (QT_TR_NOOP texts, e.g. the polygon and the
-    autocollimator); each needs a standard listed with a calibration certificate and a
-    stated U — a U in the table, or, for one standard listed with its certificate and no U,
-    the inputs stated in the settings (the ADC's figures). Every standard listed needs
-    both, or the results are not traceable through it;
+    standards that carry the measurand, each (its role, its name: a QT_TR_NOOP text, e.g.
+    ("reference", the polygon) and ("autocollimator", the autocollimator)); each needs a
+    standard listed with a calibration certificate and a stated U — a U in the table, or,
+    for one standard listed with its certificate and no U, the inputs stated in the settings
+    (the ADC's figures); a role not filled is named where the standards' roles are stated
+    or told (:func:`_told_role`). Every standard listed needs both, or the results are not
+    traceable through it;
     and a standard whose calibration was due before the date of calibration (its due date
     stated) had expired: the results are not traceable through it either (the same rule as
     a missing certificate: the document is a test report naming it)."""
     return _gaps(metadata, roles, stated_inputs, expired=True)
 
 
-def _gaps(metadata: CertificateMetadata, roles: tuple[str, ...], stated_inputs: tuple[str, ...],
-          expired: bool) -> list[str]:
+def _told_role(standard, roles: dict[str, str], families: set[str]) -> str:
+    """The role a standard listed without one carries, where its other fields tell it (""
+    where they do not): the only one the measurand has; the polygon's for one whose figure
+    applies to each face's deviation from face 1 (a polygon's certificate); for one listed
+    with its certificate and no U behind inputs stated in the settings, the role of those
+    inputs where they are one standard's (the ADC's figures alone, or the phase reference's)."""
+    if len(roles) == 1:
+        return next(iter(roles))
+    if standard.applies_to == "from face 1" and "reference" in roles:
+        return "reference"
+    if standard.uncertainty is None and len(families) == 1:
+        return _FAMILY_ROLES.get(next(iter(families)), "")
+    return ""
+
+
+def _names(standards) -> object:
+    """The standards' descriptions as a list ("standard" for one without)."""
+    return listed(s.description or message(QT_TR_NOOP("standard")) for s in standards)
+
+
+def _gaps(metadata: CertificateMetadata, roles: tuple[tuple[str, str], ...],
+          stated_inputs: tuple[str, ...], expired: bool) -> list[str]:
     """:func:`traceability_gaps`, an expired standard among them or not (``expired``)."""
     standards = metadata.standards
     if not standards:
@@ -100,7 +126,7 @@ def _gaps(metadata: CertificateMetadata, roles: tuple[str, ...], stated_inputs: 
             "the standards that carry the measurand are {roles}, each to be listed with a "
             "calibration certificate and a stated uncertainty; none is listed, so the "
             "uncertainty holds no standard's calibration"),
-            roles=separated((message(r) for r in roles), "; "))]
+            roles=separated((message(name) for _, name in roles), "; "))]
     gaps: list[str] = []
     with_u = [s for s in standards if s.certificate_no and s.uncertainty is not None]
     by_settings = [s for s in standards if s.certificate_no and s.uncertainty is None
@@ -108,27 +134,53 @@ def _gaps(metadata: CertificateMetadata, roles: tuple[str, ...], stated_inputs: 
     # the inputs stated in the settings, by the standard they come from ("Phase reference",
     # "ADC offset", "ADC gain ratio" …: two standards), one listed standard each at most
     families = {str(name).split()[0] for name in stated_inputs if str(name).strip()}
-    listed = with_u + by_settings[:len(families)]
-    carried = len(listed)
-    if carried < len(roles):
+    counted = with_u + by_settings[:len(families)]
+    names = dict(roles)
+    # each counted standard by the role it carries: stated, or told by its other fields;
+    # one whose role is not told fills a role no standard of a known role fills (as every
+    # standard did until 0.8.21: files without roles are judged as they were)
+    known: dict[str, object] = {}
+    unknown = []
+    for std in counted:
+        role = std.role or _told_role(std, names, families)
+        if role in names:
+            known.setdefault(role, std)
+        elif not role:
+            unknown.append(std)
+        # a role this measurand does not use (an autocollimator listed for a fringe): it
+        # carries none of its standards
+    free = [role for role in names if role not in known]
+    missing = len(free) - min(len(unknown), len(free))
+    if missing:
         # a list of none is not printed as "0 listed so" (day review 69 F6); some: the ones
-        # listed named, and how many are not (which role a listed standard carries the
-        # details do not say: a DAQ with a U in arcsec enters the budget as an angle
-        # reference), so "1 listed so" no longer leaves the reader to guess (assessment 70 H2)
-        missing = len(roles) - carried
-        gaps.append(message(QT_TR_NOOP(
+        # listed named, and the ones not listed named by their role where the roles of those
+        # listed are told (assessment 72 L2: "the standard for the other one is not listed");
+        # where they are not, which one is missing is said to be unknown, and how to tell it
+        listed_ones = [*known.values(), *unknown]
+        template = (QT_TR_NOOP(
             "the standards that carry the measurand are {roles}, each to be listed with a "
             "calibration certificate and a stated uncertainty; none of them is listed so")
-            if not carried else QT_TR_NOOP(
+            if not listed_ones else QT_TR_NOOP(
             "the standards that carry the measurand are {roles}, each to be listed with a "
             "calibration certificate and a stated uncertainty; {count} listed so ({listed}): "
-            "the standard for the other one is not listed") if missing == 1 else QT_TR_NOOP(
+            "none is listed for {missing}") if not unknown else QT_TR_NOOP(
             "the standards that carry the measurand are {roles}, each to be listed with a "
-            "calibration certificate and a stated uncertainty; {count} listed so ({listed}): "
-            "the standards for the other {missing} are not listed"),
-            roles=separated((message(r) for r in roles), "; "), count=carried,
-            listed=separated((s.description or message(QT_TR_NOOP("standard"))
-                              for s in listed), ", "), missing=missing))
+            "calibration certificate and a stated uncertainty; {count} listed so ({listed}), "
+            "no role stated for {unnamed}: the standard for {choices} is not listed, and the "
+            "details do not say which (state each standard's role)") if missing == 1 else
+            QT_TR_NOOP(
+            "the standards that carry the measurand are {roles}, each to be listed with a "
+            "calibration certificate and a stated uncertainty; {count} listed so ({listed}), "
+            "no role stated for {unnamed}: the standards for {count_missing} of {choices} are "
+            "not listed, and the details do not say which (state each standard's role)"))
+        role_names = [message(names[r]) for r in free]
+        gaps.append(message(
+            template, roles=separated((message(name) for _, name in roles), "; "),
+            count=len(listed_ones), listed=_names(listed_ones), unnamed=_names(unknown),
+            missing=listed(role_names), count_missing=missing,
+            choices=(message(QT_TR_NOOP("{items} or {item}"), items=listed(role_names[:-1]),
+                             item=role_names[-1]) if missing == 1 and len(role_names) > 1
+                     else listed(role_names))))
     expired_ones = expired_standards(metadata) if expired else []
     for std in standards:
         name = std.description or message(QT_TR_NOOP("standard"))

@@ -32,7 +32,8 @@ from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_parameter
-from models.uncertainty.rounding import printed_range, significant_decimals
+from models.uncertainty.printed_figure import printed_range_figures
+from models.uncertainty.rounding import significant_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -561,9 +562,10 @@ def _printed(values: np.ndarray, readings_u: float, printed: Mapping[str, float]
     the ends as printed (models/crosscal/report.py)."""
     expanded = (printed or {}).get(item)
     decimals = 3 if expanded is None else significant_decimals(expanded)
-    low, high, ptp = printed_range(float(np.min(values)), float(np.max(values)),
-                                   3 if decimals is None else decimals)
-    return {"span": f"{low}\" … {high}\"", "ptp": f"{ptp}\"",
+    # each figure rounded from its unrounded value in the unit it is read in (assessment 72 L5)
+    ends = printed_range_figures(float(np.min(values)), float(np.max(values)),
+                                 3 if decimals is None else decimals)
+    return {"span": joined([ends["low"], " … ", ends["high"]]), "ptp": ends["ptp"],
             "u": expanded_text(readings_u if expanded is None else expanded)}
 
 

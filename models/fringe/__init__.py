@@ -11,6 +11,7 @@ TITLE = QT_TR_NOOP("Fringe signal analysis")
 
 #: the standards that carry the measurand (a calibration certificate states traceability
 #: only when each is listed with a certificate and a stated U; the statement of conformity
-#: is withheld while one is not): the workbench's and its certificate's one list
-MEASURAND_STANDARDS = (QT_TR_NOOP("a phase or angle reference"),
-                       QT_TR_NOOP("the ADC (its figures stated in the settings)"))
+#: is withheld while one is not): the workbench's and its certificate's one list, each by
+#: its role (models.certificate.metadata.STANDARD_ROLES) and name
+MEASURAND_STANDARDS = (("reference", QT_TR_NOOP("a phase or angle reference")),
+                       ("adc", QT_TR_NOOP("the ADC (its figures stated in the settings)")))

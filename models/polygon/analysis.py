@@ -60,6 +60,7 @@ from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
+from models.uncertainty.printed_figure import printed_range_figures
 from models.uncertainty.rounding import printed_range, uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
@@ -768,7 +769,8 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
     range (:meth:`Polygon.printed_rounding`; None: two), its peak-to-peak as printed."""
     s, tol = result.stats, GRADE_ACCURACY_ARCSEC[result.grade]
     decimals = 2 if printed is None else printed
-    low, high, ptp = printed_range(s.min, s.max, decimals)
+    # each figure rounded from its unrounded value in the unit it is read in (assessment 72 L5)
+    corrected = printed_range_figures(s.min, s.max, decimals)
     doubt = certificate_doubt(result)
     out = ([doubt] if doubt else []) + [joined((
         message(QT_TR_NOOP("{faces}-face polygon, {sets} set(s), grade {grade} ({accuracy})"),
@@ -808,7 +810,7 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
         QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): half the peak-to-peak "
                    "exceeds the grade's ±{accuracy}, U left out — not a statement of "
                    "conformity (a certificate decides with U, by the rule in its details)"),
-        low=f"{low}\"", high=f"{high}\"", ptp=f"{ptp}\"", accuracy=f"{tol:g}\""))
+        **corrected, accuracy=f"{tol:g}\""))
     h = result.harmonics
     if (harmonics_why := harmonics_reason(result)) is not None:
         out.append(no_interval(message(
@@ -816,10 +818,10 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
             first=f"{h.amplitude[1]:.3f}\"", second=f"{h.amplitude[2]:.3f}\""), harmonics_why))
     if len(result.sets) > 1:
         jjf = [message(QT_TR_NOOP("JJF 1115: division error {value}"),
-                       value=printed_range(  # the corrected error's, as printed
+                       value=printed_range_figures(  # the corrected error's, as printed
                            float(np.min(result.mean_corrected_arcsec)),
                            float(np.max(result.mean_corrected_arcsec)),
-                           decimals)[2] + "\"")]
+                           decimals)["ptp"])]
         moved = zero_moved(result)  # the sets' scatter and reversal hold the zero's moves
         if moved:
             jjf.append(message(QT_TR_NOOP(", repeatability and reversal not evaluated: "

@@ -37,6 +37,9 @@ SQLITE_COMPANIONS = ("-journal", "-wal", "-shm")
 #: after a lost race (a file lock, models.register.store); an output written over it
 #: (a rename: a new file) would split the issuers between two locks
 TURN_FILE_SUFFIX = ".issuing"
+#: the note beside a SQLite register naming the process that holds its write lock
+#: (models/register/writer_note.py)
+WRITER_NOTE_SUFFIX = ".writer"
 
 #: the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte
 #: orders of its magic number); the -shm file has no magic and is found by its name
@@ -98,8 +101,8 @@ def sqlite_path_of_url(url: str) -> Path | None:
 
 
 def register_files(url: str) -> list[Protected]:
-    """The register's database, its journal, WAL and shared-memory files and its issuers'
-    turn file."""
+    """The register's database, its journal, WAL and shared-memory files, its issuers'
+    turn file and its writer's note."""
     database = sqlite_path_of_url(url)
     if database is None:
         return []
@@ -108,7 +111,7 @@ def register_files(url: str) -> list[Protected]:
         Protected(Path(f"{database}{suffix}"),
                   message(QT_TR_NOOP("the certificate register's {kind} file ({path})"),
                           kind=suffix[1:], path=f"{database}{suffix}"))
-        for suffix in (*SQLITE_COMPANIONS, TURN_FILE_SUFFIX)]
+        for suffix in (*SQLITE_COMPANIONS, TURN_FILE_SUFFIX, WRITER_NOTE_SUFFIX)]
 
 
 def input_files(paths: Iterable[str | os.PathLike[str] | None]) -> list[Protected]:

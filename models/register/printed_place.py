@@ -16,7 +16,7 @@ from models.register.chain import content_digest, content_in_pdf, head_in_pdf
 from models.register.store import CertificateRecord, Register, RegisterError
 
 __all__ = ["ALTERED_OR_REPLACED", "content_changed", "embedded_pdf", "head_before_changed",
-           "in_this_chain", "record_lost", "say_its_place"]
+           "in_this_chain", "lost_and_acknowledged", "record_lost", "say_its_place"]
 
 #: a PDF that prints a head of the chain whose next record is another: the PDF altered, or
 #: the record replaced — which, the register cannot tell (``register verify`` counts it as
@@ -34,8 +34,9 @@ def say_its_place(register: Register, path: str, data: bytes,
     deleted with its state row set back left "the history up to it is still there" said of
     a certificate the register no longer held, and its number free). Its record gone — the
     chain ending at that head, no record with its SHA-256 — is recorded in the register
-    (Register.record_missing), which then issues nothing until it is restored from a
-    backup. False when it is not in its place (or prints no head of this chain)."""
+    (Register.record_missing), which then issues nothing until a person records the loss
+    (Register.acknowledge_loss; restoring a backup, older than the certificate, did not end
+    it: reg73 #5). False when it is not in its place (or prints no head of this chain)."""
     check = register.printed_head(data)
     if check is None or check.place is None:
         return False
@@ -70,7 +71,8 @@ def say_its_place(register: Register, path: str, data: bytes,
         else:
             out(message(QT_TR_NOOP(
                 "  recorded in the register: nothing is issued, its number not again, until "
-                "the register is restored from a backup")))
+                "the loss is recorded with 'anglebench register acknowledge-loss --by NAME "
+                "--reason TEXT --last-number NUMBER'")))
         return False
     if _number_reissued(check, data):
         assert check.record is not None
@@ -80,6 +82,7 @@ def say_its_place(register: Register, path: str, data: bytes,
             "number (SHA-256 {other}…): its record was deleted after issue and the number "
             "issued again"), path=path, number=name, seq=place,
             other=check.record.pdf_sha256[:16]))
+        _record_reissue(register, check, out)
         return False
     other = (check.record.number if check.record is not None else check.after
              or message(QT_TR_NOOP("not there")))
@@ -87,6 +90,45 @@ def say_its_place(register: Register, path: str, data: bytes,
         other=other, elsewhere=message(QT_TR_NOOP(" (its SHA-256 is record {numbers}'s)"),
                                        numbers=check.elsewhere) if check.elsewhere else ""))
     return False
+
+
+def _record_reissue(register: Register, check, out: Callable[[Message], None]) -> None:
+    """A number found issued twice is recorded in the register, which then issues nothing
+    until a person acknowledges the loss (reg73 #2: it was said and forgotten)."""
+    if register.problems:
+        return  # issuing is refused already
+    try:
+        recorded = register.record_reissued(check)
+    except RegisterError as exc:
+        out(message(QT_TR_NOOP(
+            "  it could not be recorded in the register ({reason}): issuing is not "
+            "stopped by it"), reason=reason_of(exc)))
+        return
+    if recorded:
+        out(message(QT_TR_NOOP(
+            "  recorded in the register: nothing is issued until the loss is recorded with "
+            "'anglebench register acknowledge-loss --by NAME --reason TEXT'")))
+
+
+def lost_and_acknowledged(register: Register, path: str, data: bytes,
+                          out: Callable[[Message], None]) -> bool:
+    """A certificate the register holds no record of, whose number an acknowledged loss
+    covers (Register.lost_acknowledged: issued before a restore, its record lost): said as
+    lost and acknowledged, not as a file from elsewhere (reg73 #5). False when no
+    acknowledged loss covers its number."""
+    from models.register.chain import number_in_pdf
+
+    number = number_in_pdf(data)
+    loss = register.lost_acknowledged(number)
+    if loss is None:
+        return False
+    out(message(QT_TR_NOOP(
+        "LOST, ACKNOWLEDGED: {path} names {number}, a number the register issued before a "
+        "loss recorded on {date} by {by} ({reason}): its record was lost, so the register "
+        "cannot tell whether this copy is as issued; ask the laboratory for its own copy"),
+        path=path, number=number, date=str(loss.get("recorded_at", "?"))[:10],
+        by=loss.get("by", "?"), reason=loss.get("reason", "?")))
+    return True
 
 
 def in_this_chain(register: Register, data: bytes) -> bool:

@@ -20,6 +20,7 @@ serialises the chain's growth and every statement has a lock timeout.
 from __future__ import annotations
 
 import builtins
+import contextlib
 import dataclasses
 import datetime as dt
 import errno
@@ -50,6 +51,8 @@ from models.register.chain import (
     link,
 )
 from models.register.wording import DOCUMENT_KINDS, kind_words
+from models.register.writer_note import holder as writer_holder
+from models.register.writer_note import remove_note, write_note
 
 if TYPE_CHECKING:
     from sqlalchemy.engine import Connection
@@ -293,6 +296,26 @@ def _counter_name(scheme: str, date: dt.date) -> str:
     return format_certificate_number(_SEQ.sub("#", scheme), 0, date)
 
 
+#: the chained entry that records a loss acknowledged by a person (reg73 #2, #5): the
+#: findings before it of certificates lost ("missing") or numbers issued twice
+#: ("number_reissued") no longer stop issuing, and the counters it moved are reached
+LOSS_ACKNOWLEDGED = "loss_acknowledged"
+#: what an audit finds of a certificate shown to verify whose record was gone
+MISSING_FOUND = QT_TR_NOOP(
+    "certificate {number}: its PDF (SHA-256 {sha}…), shown to 'register verify' on {date}, "
+    "was issued as record {place} of the chain (it prints the head before it), but the "
+    "register no longer held its record: deleted after issue, or lost with a restore; nothing "
+    "is issued until the loss is recorded with 'anglebench register acknowledge-loss --by "
+    "NAME --reason TEXT'")
+#: what an audit finds of a number found issued twice
+REISSUED_FOUND = QT_TR_NOOP(
+    "certificate {number}: its PDF (SHA-256 {sha}…), shown to 'register verify' on {date}, "
+    "was issued as record {place} of the chain, but that record is now another certificate "
+    "of the same number: the number was issued twice (the register restored from an older "
+    "copy, or an older state copied back); nothing is issued until the loss is recorded with "
+    "'anglebench register acknowledge-loss --by NAME --reason TEXT'")
+
+
 class RegisterTampered(RegisterError):
     """The register's own records show a change made behind AngleBench's back that makes
     it unsafe to open (a schema version set back): refused, and reported by verify."""
@@ -307,6 +330,11 @@ LOCK_TIMEOUT_S = 20
 CONNECT_TIMEOUT_S = 30
 #: how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`)
 TURN_TIMEOUT_S = 120
+#: how long a write to a SQLite register waits for its write lock before giving up
+BUSY_TIMEOUT_S = 60
+#: how long a write waits for that lock in silence before it says it is waiting, and for
+#: whom (reg72 #8: a minute of silence, then "database is locked")
+WAIT_NOTICE_S = 1.5
 
 
 @dataclass(frozen=True)
@@ -321,6 +349,8 @@ class _Plan:
     counter_value: int | None
     original: CertificateRecord | None
     revision: str
+    #: today's date confirmed for an issue far after the last record (clock_rules), recorded
+    date_confirmed: dict | None = None
 
 
 def _os_user() -> str:
@@ -330,37 +360,6 @@ def _os_user() -> str:
         return getpass.getuser()
     except (KeyError, OSError):
         return ""
-
-
-#: the environment variable that sets how many days after the register's last record an
-#: issue may be dated (0: no limit)
-MAX_DAYS_ENV = "ANGLEBENCH_REGISTER_MAX_DAYS"
-#: its value when it is not set
-#: 366: a clock a year ahead (the year typed wrong) is found unless the last record is a day
-#: old, while a lab that calibrates once a year issues without a setting (a 90-day default
-#: refused a year between calibrations with nothing in between, and the window has no
-#: environment to set: the technician would be stopped at a dialog)
-MAX_DAYS_DEFAULT = 366
-
-
-def max_days_after_last() -> int:
-    """How many days after the register's last record a certificate may be issued before
-    the clock is doubted (``ANGLEBENCH_REGISTER_MAX_DAYS``; default 366; 0: no limit).
-    RegisterError when the setting is not a whole number of days."""
-    import os
-
-    text = os.environ.get(MAX_DAYS_ENV, "").strip()
-    if not text:
-        return MAX_DAYS_DEFAULT
-    try:
-        days = int(text)
-    except ValueError:
-        days = -1
-    if days < 0:
-        raise RegisterError(message(QT_TR_NOOP(
-            "{setting}={value}: a whole number of days, 0 for no limit"),
-            setting=MAX_DAYS_ENV, value=text))
-    return days
 
 
 def lab_timezone(name: str = "") -> dt.tzinfo:
@@ -395,7 +394,7 @@ class Register:
         import sqlalchemy as sa
 
         from models.register import schema
-        from models.register.signing import KeyError_, load_key
+        from models.register.signing import KEY_ENV_VAR, KeyError_, load_key
 
         try:
             #: the laboratory's key (ANGLEBENCH_REGISTER_KEY): new records are signed with
@@ -403,6 +402,11 @@ class Register:
             self._key = load_key(key_file)
         except KeyError_ as exc:
             raise RegisterError(reason_of(exc)) from None
+        #: the key's file, beside which the register's high-water mark is kept (reg73 #2)
+        self._key_path = (key_file.strip() or os.environ.get(KEY_ENV_VAR, "").strip()
+                          if self._key else "")
+        #: the state a write transaction leaves, noted in the mark once it is committed
+        self._mark_due: dict | None = None
 
         self._sa, self._schema = sa, schema
         #: the numbers :meth:`issue` issued through this object whose results file is not
@@ -416,6 +420,12 @@ class Register:
         self._intervals_per_serial = False
         self.timezone = lab_timezone(timezone)
         self._sqlite_path = ""
+        #: told, at once, when a write waits for the SQLite register's write lock held by
+        #: another process (what it waits for, and for how long at most): the command line
+        #: says it on stderr, the window in its status line. None: nobody is told
+        self.on_wait: Callable[[Message], None] | None = None
+        #: this process noted itself as the writer beside the database (writer_note.py)
+        self._noted = False
         try:
             if self.is_sqlite:
                 path = self.url.split("///", 1)[1] if "///" in self.url else ""
@@ -429,12 +439,16 @@ class Register:
                         file.parent.mkdir(parents=True, exist_ok=True)
                 if self.read_only:
                     self.engine = sa.create_engine(self._read_only_uri(file),
-                                                   connect_args={"timeout": 60})
+                                                   connect_args={"timeout": BUSY_TIMEOUT_S})
                     sa.event.listen(self.engine, "connect", _sqlite_connect_read_only)
+                    sa.event.listen(self.engine, "begin", _sqlite_begin)
                 else:
-                    self.engine = sa.create_engine(self.url, connect_args={"timeout": 60})
+                    self.engine = sa.create_engine(self.url,
+                                                   connect_args={"timeout": BUSY_TIMEOUT_S})
                     sa.event.listen(self.engine, "connect", _sqlite_connect)
-                sa.event.listen(self.engine, "begin", _sqlite_begin)
+                    sa.event.listen(self.engine, "begin", self._sqlite_begin)
+                    sa.event.listen(self.engine, "commit", self._write_ended)
+                    sa.event.listen(self.engine, "rollback", self._write_ended)
             else:
                 args: dict[str, Any] = {
                     "application_name": f"anglebench {_os_user()}@{socket.gethostname()} "
@@ -455,6 +469,8 @@ class Register:
             journal = Path(f"{self._sqlite_path}-wal")
             if self.read_only and journal.exists() and journal.stat().st_size > 0:
                 raise RegisterError(self._unread_journal()) from None
+            if self._full(exc):  # reg72 #7: on opening, its WAL index could not be made
+                raise RegisterError(self._disk_full()) from None
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -614,6 +630,8 @@ class Register:
                                            postgresql_readonly=True)
                 yield conn
         except self._sa.exc.SQLAlchemyError as exc:
+            if self._full(exc):  # a new connection's WAL index could not be made (reg72 #7)
+                raise RegisterError(self._disk_full()) from None
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -627,27 +645,92 @@ class Register:
             raise RegisterError(message(QT_TR_NOOP(
                 "register {display_url} is read-only: it can be listed and verified, not "
                 "written"), display_url=self.display_url))
+        self._mark_due = None
         try:
             with self.engine.begin() as conn:
                 if not self.is_sqlite:
                     conn.execute(self._sa.text(
                         f"SET LOCAL lock_timeout = '{LOCK_TIMEOUT_S}s'"))
                 yield conn
+            self._raise_high_water()  # committed: the mark outside follows
         except OSError as exc:
             if exc.errno in _DISK_FULL:  # rolled back: said in words, not "[Errno 28] …"
                 raise RegisterError(self._disk_full(exc.filename)) from None
             raise
         except self._sa.exc.SQLAlchemyError as exc:  # a unique number taken meanwhile too
-            if _is_disk_full(exc) or (_is_io_error(exc) and self._no_room()):
+            if self._full(exc):
                 raise RegisterError(self._disk_full()) from None
             reason = _reason(exc)
             if getattr(getattr(exc, "orig", None), "sqlstate", "") == "55P03":
                 reason = message(QT_TR_NOOP(
                     "waited {s} s for the register's lock, held by {holder}"),
                     s=LOCK_TIMEOUT_S, holder=self._lock_holders() or "?")
+            elif self._sqlite_path and _is_busy(getattr(exc, "orig", None)):
+                holder = writer_holder(self._sqlite_path)
+                reason = message(QT_TR_NOOP(
+                    "waited {s} s for the register's lock, held by {holder}"),
+                    s=BUSY_TIMEOUT_S, holder=holder.text()) if holder else message(
+                    QT_TR_NOOP("waited {s} s for the register's lock, held by another "
+                               "program, which left no note of who it is"), s=BUSY_TIMEOUT_S)
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=reason)) from None
+
+    def _sqlite_begin(self, conn) -> None:
+        """A write takes the lock at once (writers queue instead of failing); a read takes
+        none (a deferred transaction). A write that finds the lock held waits
+        :data:`WAIT_NOTICE_S` in silence, then tells :attr:`on_wait` that it is waiting,
+        for whom (the holder's note beside the database, writer_note.py) and for how long
+        at most, and waits the rest of :data:`BUSY_TIMEOUT_S` as before (reg72 #8: a minute
+        of silence, then "database is locked"). With the lock, it notes itself as the
+        writer until its transaction ends."""
+        import sqlite3
+
+        if conn.get_execution_options().get("anglebench_read") or not self._sqlite_path:
+            _sqlite_begin(conn)
+            return
+        raw = conn.connection.dbapi_connection
+        start = time.monotonic()
+        raw.execute(f"PRAGMA busy_timeout={int(WAIT_NOTICE_S * 1000)}")
+        try:
+            try:
+                raw.execute("BEGIN IMMEDIATE")
+            except sqlite3.Error as exc:  # waited (said, then waited on), or failed: tried
+                if _is_busy(exc):  # again through SQLAlchemy, whose error is said as before
+                    self._tell_waiting()
+                rest = max(BUSY_TIMEOUT_S - (time.monotonic() - start), 0.0)
+                raw.execute(f"PRAGMA busy_timeout={int(rest * 1000)}")
+                conn.exec_driver_sql("BEGIN IMMEDIATE")
+        finally:
+            raw.execute(f"PRAGMA busy_timeout={BUSY_TIMEOUT_S * 1000}")
+        write_note(self._sqlite_path)
+        self._noted = True
+
+    def _write_ended(self, _conn) -> None:
+        """A transaction committed or rolled back: this process's writer note removed."""
+        if self._noted:
+            self._noted = False
+            remove_note(self._sqlite_path)
+
+    def _tell_waiting(self) -> None:
+        """:attr:`on_wait` told that a write waits for the lock: the register, who holds
+        the lock (since when), how long it will wait at most."""
+        if self.on_wait is None:
+            return
+        holder = writer_holder(self._sqlite_path)
+        if holder is not None:
+            said = message(QT_TR_NOOP(
+                "waiting for the register at {path}: its write lock is held by {holder} "
+                "since {since}; giving up after {s} s unless it is released"),
+                path=self._sqlite_path, holder=holder.text(), since=holder.since,
+                s=BUSY_TIMEOUT_S)
+        else:
+            said = message(QT_TR_NOOP(
+                "waiting for the register at {path}: its write lock is held by another "
+                "program, which left no note of who it is; giving up after {s} s unless it "
+                "is released"), path=self._sqlite_path, s=BUSY_TIMEOUT_S)
+        with contextlib.suppress(Exception):  # a view that cannot show it stops no issue
+            self.on_wait(said)
 
     def _disk_full(self, path: str | None = None) -> Message:
         """What a write that found the disk full says: where (the file the system named, or
@@ -658,6 +741,14 @@ class Register:
         return message(QT_TR_NOOP(
             "the disk is full at {path}: nothing was recorded; the register is unchanged "
             "(free some space and try again)"), path=where)
+
+    def _full(self, exc: Exception) -> bool:
+        """A database error that is a full disk: said so (SQLITE_FULL, PostgreSQL's
+        disk_full, ENOSPC), or SQLite's I/O error with no room left in the register's folder
+        (:meth:`_no_room`) — on a full tmpfs SQLite fails already on connecting, when its
+        "PRAGMA journal_mode=WAL" cannot map the WAL index (reg72 #7: the register was opened
+        before any write, and its "disk I/O error" was said as it was)."""
+        return _is_disk_full(exc) or (_is_io_error(exc) and self._no_room())
 
     def _no_room(self) -> bool:
         """The SQLite register's folder has (next to) no free space: SQLite says "disk I/O
@@ -756,12 +847,51 @@ class Register:
         conn.execute(state.update().where(state.c.name == "head").values(value=head))
         if not self._key:
             return
-        counters = self._schema.COUNTERS
-        signature = sign(self._key, state_text(records, head, dict(conn.execute(
-            self._sa.select(counters.c.name, counters.c.last_value)).all())))
+        counters, entries = self._schema.COUNTERS, self._schema.ENTRIES
+        values = dict(conn.execute(self._sa.select(counters.c.name, counters.c.last_value)).all())
+        signature = sign(self._key, state_text(records, head, values))
+        self._mark_due = {"records": records, "head": head, "counters": values,
+                          "acknowledged": conn.execute(self._sa.select(self._sa.func.count())
+                                                       .select_from(entries).where(
+                              entries.c.kind == LOSS_ACKNOWLEDGED)).scalar_one()}
         if conn.execute(state.update().where(state.c.name == STATE_SIGNATURE).values(
                 value=signature)).rowcount == 0:
             conn.execute(state.insert().values(name=STATE_SIGNATURE, value=signature))
+
+    # -- the high-water mark outside the database (reg73 #2) ---------------------------------
+    def _location(self) -> str:
+        """The register's location, naming its high-water mark."""
+        if self._sqlite_path:
+            return "sqlite:///" + str(Path(self._sqlite_path).expanduser().resolve())
+        return self.display_url
+
+    def _mark_path(self) -> Path | None:
+        from models.register.high_water import mark_path
+
+        return mark_path(self._key_path, self._location()) if self._key_path else None
+
+    def _raise_high_water(self) -> None:
+        """After a commit: the state it left noted in the mark beside the key (never
+        lowered). A mark that cannot be written is not kept: the register is written all the
+        same (the docs say what the mark cannot find)."""
+        from models.register.high_water import raise_mark
+
+        due, self._mark_due = self._mark_due, None
+        path = self._mark_path()
+        if due is None or path is None or self._key is None:
+            return
+        with contextlib.suppress(OSError):
+            raise_mark(path, self._key, self._location(), **due)
+
+    def _high_water_problems(self, links: list, counters: dict, notes) -> list:
+        """With the key: what the register lacks against its high-water mark."""
+        from models.register.high_water import mark_problems
+
+        path = self._mark_path()
+        if path is None or self._key is None:
+            return []
+        return mark_problems(path, self._key, {seq: item.chain_sha256 for seq, _e, item in links},
+                             counters, sum(1 for n in notes if n.kind == LOSS_ACKNOWLEDGED))
 
     def _signed_records(self, conn) -> int:
         """How many records and entries carry a signature (the lab's key)."""
@@ -793,8 +923,11 @@ class Register:
         review F3: only the same text was skipped, and the commit then refused the number
         allocated, for every issue of the scheme). So is a number that a number in the
         register reads as an amendment of (:meth:`_check_amendment_form`: with
-        "AB-2026-0009-A1" typed, AB-2026-0009 is skipped)."""
+        "AB-2026-0009-A1" typed, AB-2026-0009 is skipped). And so is a number that prints
+        the fields of one issued with other separators or none (scheme_identity.py: reg72
+        #11, ``AB{year}{seq:04d}`` issued AB20260001 beside AB-2026-0001)."""
         from models.register.identifiers import amendment_form_keys, amendment_stems, identifier_keys
+        from models.register.scheme_identity import fields_issued, number_pattern
 
         sa, schema = self._sa, self._schema
         name = _counter_name(scheme, date)
@@ -816,12 +949,38 @@ class Register:
                     key in keys for key, keys in zip(identifier_keys(number), taken,
                                                      strict=False)) and not any(
                     key in found for key, found in zip(amendment_form_keys(number), stems,
-                                                       strict=True)):
+                                                       strict=True)) and fields_issued(
+                    number_pattern(scheme, value, date.year, date.month, date.day),
+                    issued) is None:
                 return name, number, before, value
             value += 1
         raise RegisterError(message(
             QT_TR_NOOP("no free number in scheme '{scheme}'"),
             scheme=scheme))
+
+    def _date_backwards(self, last, issue_date: dt.date, now: dt.datetime) -> Message:
+        """Why a certificate dated ``issue_date`` is not issued after ``last``, dated later:
+        the lab's time zone of this call is another than that of the last issue
+        (``ANGLEBENCH_TIMEZONE`` per call, the window's setting changed), and the dates of
+        issue would go backwards against the numbers (reg72 #10: AB-2026-0001 dated
+        2026-12-07, AB-2026-0002 dated 2026-12-06). Refused rather than dated otherwise: the
+        date printed is the lab's local date of issue, and no other date is right for this
+        call; the refusal ends when the lab's date reaches the last one (a day at most)."""
+        zone = self.timezone
+        offset = now.astimezone(zone).strftime("%z")
+        from_then = dt.datetime.combine(dt.date.fromisoformat(last.issue_date), dt.time(),
+                                        zone)
+        return message(QT_TR_NOOP(
+            "this certificate would be dated {date} in the lab's time zone of this issue, "
+            "{zone} (UTC{offset}), before the register's last certificate, {number}, dated "
+            "{then} (issued {at}; the zone it was dated in is not recorded): the dates of "
+            "issue would go backwards against the numbers. The lab's time zone changed "
+            "between the two issues (ANGLEBENCH_TIMEZONE, or the window's setting): issue "
+            "in the zone the lab dates its certificates in, or in this zone from {resumes} "
+            "on"),
+            date=issue_date.isoformat(), zone=str(zone), offset=f"{offset[:3]}:{offset[3:]}",
+            number=last.number, then=last.issue_date, at=last.issued_at,
+            resumes=from_then.isoformat())
 
     def continue_numbering(self, scheme: str, date: dt.date, next_sequence: int) -> str:
         """A lab moving to the register from numbers issued by hand: the next number the
@@ -850,15 +1009,19 @@ class Register:
         return format_certificate_number(scheme, next_sequence, date)
 
     def _check_free(self, conn, number: str, typed: bool = True) -> None:
-        """Raise RegisterError if ``number``, or one that prints alike (same_identifier), was
-        issued. ``typed``: the number was typed (the message says to leave it empty); else
-        the register allocated it (the message names ``register continue``)."""
+        """Raise RegisterError if ``number``, or one that prints alike (same_identifier) or
+        has its letters and digits with other separators or none (scheme_identity; reg72
+        #11), was issued. ``typed``: the number was typed (the message says to leave it
+        empty); else the register allocated it (the message names ``register continue``)."""
         from models.register.identifiers import same_identifier
+        from models.register.scheme_identity import separators_aside
 
         c = self._schema.CERTIFICATES.c
+        joined = separators_aside(number)
         row = next((r for r in conn.execute(self._sa.select(
             c.number, c.issued_at, c.workbench, c.item_serial).order_by(c.id))
-            if r.number == number or same_identifier(r.number, number)), None)
+            if r.number == number or same_identifier(r.number, number)
+            or separators_aside(r.number) == joined), None)
         if row is None:
             return
         said = {"number": row.number if row.number == number else f"{number} ({row.number})",
@@ -931,32 +1094,24 @@ class Register:
                 number=number, other=row.number, issued_at=row.issued_at[:10]))
 
     def _plan(self, conn, meta: CertificateMetadata, supersedes: str, replacement: bool,
-              issue_date: dt.date, now: dt.datetime) -> _Plan:
-        sa, certificates = self._sa, self._schema.CERTIFICATES
+              issue_date: dt.date, now: dt.datetime,
+              confirmed_date: dt.date | None = None) -> _Plan:
+        sa = self._sa
         records, head = self._state(conn)
-        last = conn.execute(sa.select(certificates.c.issued_at, certificates.c.number,
-                                      certificates.c.workstation)
-                            .order_by(certificates.c.id.desc()).limit(1)).first()
-        if last is not None and _parse_time(last.issued_at) > now:
-            raise RegisterError(message(QT_TR_NOOP(
-                "the computer's clock says {now}, before the register's last record ({number}, "
-                "issued {then}): the clock was set back; nothing is issued until it is right"),
-                now=now.isoformat(), number=last.number, then=last.issued_at))
-        limit = max_days_after_last()
-        if last is not None and limit and now - _parse_time(last.issued_at) > dt.timedelta(
-                days=limit):
-            # reg72 #3: one issue with a clock a year ahead was accepted, and then every
-            # honest issue was refused as "the clock was set back" until that date
-            days = (now - _parse_time(last.issued_at)).days
-            raise RegisterError(message(QT_TR_NOOP(
-                "the computer's clock says {now}, {days} days after the register's last record "
-                "({number}, issued {then} on {workstation}): more than {limit} days "
-                "({setting}); a clock set ahead would date this certificate wrongly and refuse "
-                "every issue on a right clock until then. Check the clock; if it is right, "
-                "issue with {setting}={needed} set for this issue"),
-                now=now.isoformat(), days=days, number=last.number, then=last.issued_at,
-                workstation=last.workstation or "?", limit=limit, setting=MAX_DAYS_ENV,
-                needed=days + 1))
+        # the clock rules (reg73 #6, #8): against the last chained record of any kind
+        from models.register.clock_rules import (
+            clock_checked,
+            last_certificate_since_correction,
+            last_chained,
+        )
+
+        confirmed = clock_checked(last_chained(conn, sa, self._schema), now, issue_date,
+                                  confirmed_date)
+        # dates of issue never go backwards against the numbers (reg72 #10), since the last
+        # clock correction (the record dated by a clock set ahead stands before it)
+        last = last_certificate_since_correction(conn, sa, self._schema)
+        if last is not None and last.issue_date > issue_date.isoformat():
+            raise RegisterError(self._date_backwards(last, issue_date, now))
         revision, original = "original", None
         counter = before = value = None
         if supersedes:
@@ -985,7 +1140,8 @@ class Register:
             counter, number, before, value = self._next_value(conn, meta.number_scheme,
                                                               issue_date)
             self._check_amendment_form(conn, number, meta.number_scheme)
-        return _Plan(number, records + 1, head, counter, before, value, original, revision)
+        return _Plan(number, records + 1, head, counter, before, value, original, revision,
+                     confirmed)
 
     def _unchanged(self, conn, plan: _Plan) -> bool:
         """Whether the register is still as ``plan`` read it (in the write transaction)."""
@@ -1004,7 +1160,8 @@ class Register:
               separate_calibration: str | None = None,
               document_kind: str | Callable[[], str] | None = None,
               correction_confirmed: bool = False, another_makers_item: bool = False,
-              another_lookalike_item: bool = False) -> tuple[CertificateRecord, bytes]:
+              another_lookalike_item: bool = False,
+              confirmed_date: dt.date | None = None) -> tuple[CertificateRecord, bytes]:
         """Allocate the number (or check the one given), render the PDF with it and with
         the chain's head before it, record it. The PDF is rendered outside any lock with
         the number and head the register expects next; one short transaction then checks
@@ -1058,7 +1215,13 @@ class Register:
         "customer corrected from …"; #64 review F5); a changed description of an item with a
         serial is stated unasked ("item description changed from …"); never
         onto the item and date of another current certificate. The workbench is never
-        corrected: a calibration on another workbench is an original."""
+        corrected: a calibration on another workbench is an original.
+
+        The clock (models/register/clock_rules): an issue timed before the register's last
+        chained record is refused; one dated more than CONFIRM_AFTER_DAYS days after it raises
+        :class:`~models.register.clock_rules.DateToConfirm` unless ``confirmed_date`` is the
+        date of issue (today's date confirmed by the person: a chained ``date_confirmed``
+        entry committed with the certificate)."""
         from models.register.identifiers import IdentifierError, normalise_identifier, refuse_unprinted
 
         meta = request.metadata
@@ -1098,7 +1261,8 @@ class Register:
                 issue_date = now.astimezone(self.timezone).date()  # the lab's local date
                 _check_issuable(meta, issue_date)
                 with self._read() as conn:
-                    plan = self._plan(conn, meta, supersedes, replacement, issue_date, now)
+                    plan = self._plan(conn, meta, supersedes, replacement, issue_date, now,
+                                      confirmed_date)
                     same = () if supersedes or separate_calibration is None else \
                         self._same_calibration(conn, request.workbench, meta)
                     # an amendment's corrected maker is confirmed and stated on it
@@ -1225,6 +1389,9 @@ class Register:
                                 "calibration_date": meta.calibration_date,
                                 "others": [{"number": n, "serial": k, "manufacturer": m}
                                            for n, k, m in (*lookalikes, *left_out)]})
+                        if plan.date_confirmed is not None:  # said by the user: recorded
+                            self._append_entry(conn, "date_confirmed", plan.number,
+                                               plan.date_confirmed)
                         # its results file may now be recorded, by this issuer only
                         self._results_due.add(plan.number)
                         return record, pdf
@@ -1865,6 +2032,7 @@ class Register:
                 "holds {count} ending at {actual}: records were deleted (the tail truncated) "
                 "or added after issue"), recorded=state.get("records", "?"),
                 head=(state.get("head") or "?")[:16], count=count, actual=previous[:16]))
+        problems += self._high_water_problems(links, counters, notes)
         problems += _cross_checks(rows, notes, counters, intervals)
         return problems
 
@@ -2034,7 +2202,8 @@ class Register:
         """Record, as a chained entry, that the certificate ``check`` was presented (its PDF
         printing the head before it) while the register no longer held its record
         (:attr:`PrintedHead.missing`): from then on the audit reports it, so nothing is issued
-        — its number not again — until the register is restored from a backup (rev64 F8: a
+        — its number not again — until a person records the loss (:meth:`acknowledge_loss`;
+        reg73 #5: a restore could not end it) (rev64 F8: a
         tail deleted with its state row set back agreed with itself). Checked again under the
         write lock; returns the entry's chain value, or "" when it is not missing."""
         with self._write() as conn:
@@ -2046,6 +2215,174 @@ class Register:
             return self._append_entry(conn, "missing", check.number or check.sha256[:16], {
                 "pdf_sha256": check.sha256, "place": check.place + 1,
                 "head_before": check.head, "number": check.number})
+
+    def record_reissued(self, check: PrintedHead) -> str:
+        """Record, as a chained entry ("number_reissued"), that the certificate ``check`` was
+        presented while the record at its place is another certificate of its number: the
+        number was issued twice (reg73 #2: said and forgotten, and issuing went on). From
+        then on the audit reports it and nothing is issued until a person acknowledges the
+        loss (:meth:`acknowledge_loss`). Checked again under the write lock; recorded once
+        per PDF; returns the entry's chain value, or "" when nothing was recorded."""
+        with self._write() as conn:
+            if not self.is_sqlite:
+                conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
+                             {"k": _CHAIN_LOCK})
+            if check.place is None:
+                return ""
+            now = self._at_place(conn, check)
+            if now.record is None or now.record.number != check.number or now.there:
+                return ""
+            entries = self._schema.ENTRIES
+            for body_json in conn.execute(self._sa.select(entries.c.body_json).where(
+                    entries.c.kind == "number_reissued")).scalars():
+                if json.loads(body_json or "{}").get("pdf_sha256") == check.sha256:
+                    return ""
+            return self._append_entry(conn, "number_reissued", check.number, {
+                "pdf_sha256": check.sha256, "place": check.place + 1,
+                "head_before": check.head, "number": check.number,
+                "other_pdf_sha256": now.record.pdf_sha256})
+
+    def acknowledge_loss(self, by: str, reason: str, last_number: str = "",
+                         scheme: str = "") -> dict:
+        """A person records a loss (reg73 #2, #5): the register restored from an older copy
+        (or an older state copied back), its records since lost. A chained entry
+        (``loss_acknowledged``: who, why, the last number known issued) after which the
+        findings it answers — certificates found missing, numbers found issued twice, the
+        register behind its high-water mark — no longer stop issuing. Every counter moves
+        past the numbers known issued (``last_number``; those of the findings; the mark's
+        counters), so no number is issued again; a later verify of a lost certificate says
+        it was lost and acknowledged (:meth:`lost_acknowledged`). Any other finding (a
+        broken chain, a record rewritten) still refuses. ``scheme``: the number scheme of
+        ``last_number`` when the register has no counter of it (the copy restored predates
+        its first number). Returns the entry's body."""
+        from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED, read_mark
+
+        by, reason = " ".join((by or "").split()), " ".join((reason or "").split())
+        if not by or not reason:
+            raise RegisterError(message(QT_TR_NOOP(
+                "a loss is acknowledged by a named person with the reason (--by, --reason)")))
+        answered = (MISSING_FOUND, REISSUED_FOUND, BEHIND, COUNTER_BEHIND, NOT_SIGNED)
+        found = self.audit(pdfs=True)
+        others = [p for p in found if getattr(p, "template", "") not in answered]
+        if others:
+            raise RegisterError(message(QT_TR_NOOP(
+                "the register's records were changed after issue ({problem}): a loss is "
+                "acknowledged in a register whose own records are intact; see 'anglebench "
+                "register verify'"), problem=others[0]))
+        path = self._mark_path()
+        mark = read_mark(path, self._key) if path is not None and self._key else None
+        if not last_number.strip() and not mark:
+            # no signed mark tells how far the numbers went: the person must (a restore
+            # acknowledged without it issued the lost numbers again)
+            raise RegisterError(message(QT_TR_NOOP(
+                "give the last certificate number known issued (--last-number: from the lab's "
+                "log, the customers' copies): without the laboratory's key and its high-water "
+                "mark the register cannot tell how far its numbers went before the loss")))
+        counters_t, entries = self._schema.COUNTERS, self._schema.ENTRIES
+        sa = self._sa
+        with self._write() as conn:
+            if not self.is_sqlite:
+                conn.execute(sa.text("SELECT pg_advisory_xact_lock(:k)"), {"k": _CHAIN_LOCK})
+            counters = dict(conn.execute(sa.select(counters_t.c.name,
+                                                   counters_t.c.last_value)).all())
+            named = [json.loads(b or "{}").get("number") or "" for b in conn.execute(
+                sa.select(entries.c.body_json).where(entries.c.kind.in_(
+                    ("missing", "number_reissued")))).scalars()]
+            wanted: dict[str, int] = {}
+            for name, value in dict((mark or {}).get("counters") or {}).items():
+                wanted[name] = max(wanted.get(name, 0), int(value))
+            for number in [*named, last_number.strip()]:
+                if not number:
+                    continue
+                found_counter = _counter_of(number, [*counters, *wanted])
+                if found_counter is None and scheme and number == last_number.strip():
+                    found_counter = _counter_of(number, [_counter_name(
+                        scheme, self.clock().astimezone(self.timezone).date())])
+                if found_counter is None:
+                    if number == last_number.strip():
+                        raise RegisterError(message(QT_TR_NOOP(
+                            "{number} is a number of none of the register's counters ({names}): "
+                            "give the last number known issued as the register numbered it, "
+                            "with its number scheme (--scheme) when the register has no "
+                            "counter of it yet"), number=number,
+                            names=", ".join(sorted(counters)) or "—"))
+                    continue
+                name, value = found_counter
+                wanted[name] = max(wanted.get(name, 0), value)
+            moved = {name: [counters.get(name, 0), value] for name, value in sorted(
+                wanted.items()) if value > counters.get(name, 0)}
+            for name, (_before, after) in moved.items():
+                if name in counters:
+                    conn.execute(counters_t.update().where(counters_t.c.name == name).values(
+                        last_value=after))
+                else:
+                    conn.execute(counters_t.insert().values(name=name, last_value=after))
+            self.problems = []  # answered by this entry (the others refused above)
+            records, head = self._state(conn)
+            body = {"by": by, "reason": reason, "last_issued": last_number.strip(),
+                    "counters": moved, "records_held": records, "head_held": head,
+                    "answered": [str(p) for p in found]}
+            self._append_entry(conn, LOSS_ACKNOWLEDGED, last_number.strip() or "—", body)
+        self.problems = self.audit()
+        return body
+
+    def lost_acknowledged(self, number: str) -> dict | None:
+        """The acknowledged loss (:meth:`acknowledge_loss`) that covers certificate
+        ``number``: a number between a counter's value before and after it moved, or one a
+        finding it answered named; its body with the date it was recorded; None when none
+        does."""
+        if not number:
+            return None
+        entries = self._schema.ENTRIES
+        with self._read() as conn:
+            rows = conn.execute(self._sa.select(entries.c.seq, entries.c.kind,
+                                                entries.c.body_json, entries.c.recorded_at)
+                                .where(entries.c.kind.in_((LOSS_ACKNOWLEDGED, "missing",
+                                                           "number_reissued")))
+                                .order_by(entries.c.seq)).all()
+        named: set[str] = set()
+        for row in rows:
+            body = json.loads(row.body_json or "{}")
+            if row.kind != LOSS_ACKNOWLEDGED:
+                named.add(body.get("number") or "")
+                continue
+            counters = dict(body.get("counters") or {})
+            found = _counter_of(number, list(counters))
+            if number in named or number == body.get("last_issued") or (
+                    found is not None and counters[found[0]][0] < found[1]
+                    <= counters[found[0]][1]):
+                return {**body, "recorded_at": row.recorded_at}
+            named.clear()
+        return None
+
+    def correct_clock(self, by: str, reason: str, confirmed_date: dt.date | None) -> dict:
+        """A person records that the register's last record was dated by a clock set ahead
+        (reg73 #6): a chained ``clock_correction`` entry timed by this (right) clock, with
+        today's date confirmed; issues on a right clock are then compared with it. The
+        record dated ahead stays as issued. Returns the entry's body."""
+        from models.register.clock_rules import correction_refusal, last_chained
+
+        by, reason = " ".join((by or "").split()), " ".join((reason or "").split())
+        if not by or not reason:
+            raise RegisterError(message(QT_TR_NOOP(
+                "a clock correction is recorded by a named person with the reason (--by, "
+                "--reason)")))
+        with self._write() as conn:
+            if not self.is_sqlite:
+                conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
+                             {"k": _CHAIN_LOCK})
+            now = self.clock().astimezone(dt.timezone.utc).replace(microsecond=0)
+            today = now.astimezone(self.timezone).date()
+            last = last_chained(conn, self._sa, self._schema)
+            refused = correction_refusal(last, now, today, confirmed_date)
+            if refused is not None:
+                raise RegisterError(refused)
+            assert last is not None
+            body = {"by": by, "reason": reason, "ahead": str(last.what),
+                    "ahead_at": last.at.isoformat(), "ahead_workstation": last.workstation,
+                    "ahead_os_user": last.os_user, "confirmed_date": today.isoformat()}
+            self._append_entry(conn, "clock_correction", str(last.what), body)
+        return body
 
     def list(self, search: str = "", limit: int = 10_000) -> list[CertificateRecord]:
         """Newest first; ``search`` matches the number, the serial or the customer (any case)."""
@@ -2228,6 +2565,19 @@ class Register:
         if not days or not dates:
             return None
         return dt.date.fromisoformat(max(dates)) + dt.timedelta(days=days)
+
+
+def _counter_of(number: str, names) -> tuple[str, int] | None:
+    """The counter (by name: the scheme with its date fields filled in, "#" for the
+    sequence) whose numbers ``number`` is one of, and its value there; None when none."""
+    for name in names:
+        if name.count("#") != 1:
+            continue
+        before, after = name.split("#")
+        found = re.fullmatch(re.escape(before) + r"(\d+)" + re.escape(after), number)
+        if found:
+            return name, int(found.group(1))
+    return None
 
 
 def _interval_body(days: int | None, manufacturer: str) -> dict:
@@ -2506,6 +2856,9 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
         body = json.loads(note.body_json or "{}")
         if note.kind == "numbering" and isinstance(body.get("last_value"), int):
             reached[note.subject] = max(reached.get(note.subject, 0), body["last_value"])
+        if note.kind == LOSS_ACKNOWLEDGED:  # moved past the numbers lost (reg73 #5)
+            for name, (_before, after) in dict(body.get("counters") or {}).items():
+                reached[name] = max(reached.get(name, 0), int(after))
     for row in rows:
         if row.counter and row.counter_value:
             reached[row.counter] = max(reached.get(row.counter, 0), row.counter_value)
@@ -2542,14 +2895,14 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
     for note in notes:  # one results file per certificate, recorded at its issue (rev62 F7)
         if note.kind == "results":
             results[note.subject] = results.get(note.subject, 0) + 1
-    for note in notes:  # a certificate shown to verify whose record was gone (rev64 F8)
-        if note.kind == "missing":
+    # a certificate shown to verify whose record was gone (rev64 F8), or whose number was
+    # issued again (reg73 #2): stops issuing until a loss acknowledged after it
+    acknowledged = max((n.seq for n in notes if n.kind == LOSS_ACKNOWLEDGED), default=0)
+    for note in notes:
+        if note.kind in ("missing", "number_reissued") and note.seq > acknowledged:
             body = json.loads(note.body_json or "{}")
-            problems.append(message(QT_TR_NOOP(
-                "certificate {number}: its PDF (SHA-256 {sha}…), shown to 'register verify' on "
-                "{date}, was issued as record {place} of the chain (it prints the head before "
-                "it), but the register no longer held its record: deleted after issue; nothing "
-                "is issued until the register is restored from a backup"),
+            problems.append(message(
+                MISSING_FOUND if note.kind == "missing" else REISSUED_FOUND,
                 number=body.get("number") or "—", sha=str(body.get("pdf_sha256", ""))[:16],
                 date=note.recorded_at[:10], place=body.get("place", "?")))
     for number, count in sorted(results.items()):
@@ -2744,6 +3097,12 @@ def _is_io_error(exc: Exception) -> bool:
         "disk I/O error" in str(orig or ""))
 
 
+def _is_busy(error: object) -> bool:
+    """SQLite's SQLITE_BUSY ("database is locked"): another connection holds the lock."""
+    return getattr(error, "sqlite_errorname", "").startswith("SQLITE_BUSY") or (
+        "database is locked" in str(error or ""))
+
+
 def _reason(exc: Exception) -> str:
     text = str(getattr(exc, "orig", None) or exc).strip().splitlines()
     return text[0] if text else type(exc).__name__
@@ -2753,7 +3112,7 @@ def _sqlite_connect(dbapi_connection, _record) -> None:
     dbapi_connection.isolation_level = None  # the driver's own transactions off: ours below
     cursor = dbapi_connection.cursor()
     cursor.execute("PRAGMA journal_mode=WAL")
-    cursor.execute("PRAGMA busy_timeout=60000")
+    cursor.execute(f"PRAGMA busy_timeout={BUSY_TIMEOUT_S * 1000}")
     cursor.close()
 
 

@@ -24,8 +24,9 @@ from models.theodolite.model import (
 )
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
+from models.uncertainty.printed_figure import PrintedFigure, printed_range_figures
 from models.uncertainty.probability_text import percent_text
-from models.uncertainty.rounding import printed_range, uncertainty_decimals
+from models.uncertainty.rounding import uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -298,10 +299,10 @@ def _intervals_line(result: TheodoliteResult, printed: Mapping[str, int] | None 
     return joined(parts)
 
 
-def _printed(stats, decimals: int) -> dict[str, str]:
-    """{low, high, ptp} of an error curve's statistics as its certificate prints them."""
-    low, high, ptp = printed_range(stats.min, stats.max, decimals)
-    return {"low": f"{low}\"", "high": f"{high}\"", "ptp": f"{ptp}\""}
+def _printed(stats, decimals: int) -> dict[str, PrintedFigure]:
+    """{low, high, ptp} of an error curve's statistics as its certificate prints them, each
+    rounded from its unrounded value in whichever unit it is read in (assessment 72 L5)."""
+    return printed_range_figures(stats.min, stats.max, decimals)
 
 
 class PrintedDecimals(int):
@@ -371,7 +372,8 @@ def summary(result: TheodoliteResult, printed: int | None = None) -> str:
         message(QT_TR_NOOP("Raw error        {low} … {high} (peak-to-peak {ptp})"),
                 **_printed(r, d)),
         message(QT_TR_NOOP("Corrected error  {low} … {high} (peak-to-peak {ptp}, RMS {rms})"),
-                **_printed(c, d), rms=f"{c.rms:.{d}f}\""),
+                **_printed(c, d), rms=PrintedFigure(c.rms, "\"", decimals=d,
+                                                    resolution_only=True)),
     ]
     if result.iso230 is not None:
         # each figure to the decimal of its interval, as the certificate prints it (day

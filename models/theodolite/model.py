@@ -92,16 +92,64 @@ class SetupParameters:
         return np.array([self.psi_deg, self.alpha_deg, self.beta_deg])
 
 
-def rotated_normal(theta_deg, psi_deg: float, alpha_deg: float, beta_deg: float) -> np.ndarray:
-    """Mirror normal after rotating the axis by θ: array of shape (3, len(θ)) = (x', y', z')."""
+def _cos_sin_deg(angle_deg) -> tuple:
+    """cos and sin of angles in degrees by ``math.cos`` and ``math.sin`` (the C library's): a
+    float each for a scalar, as a single set-up has always had them, else arrays of the
+    angles' shape, each element the same as its scalar's (numpy's own are not promised to
+    agree with them in the last bit)."""
+    if np.ndim(angle_deg) == 0:
+        rad = angle_deg * D2R
+        return math.cos(rad), math.sin(rad)
+    rad = np.asarray(angle_deg, dtype=float) * D2R
+    flat = rad.ravel().tolist()
+    return (np.fromiter(map(math.cos, flat), float, len(flat)).reshape(rad.shape),
+            np.fromiter(map(math.sin, flat), float, len(flat)).reshape(rad.shape))
+
+
+def _vectors(components: tuple, shape: tuple[int, ...]) -> np.ndarray:
+    """Three components (floats or arrays broadcasting to ``shape``) as vectors, shape + (3,),
+    each vector's three in a row."""
+    vectors = np.empty(shape + (3,))
+    for k, component in enumerate(components):
+        vectors[..., k] = component
+    return vectors
+
+
+def rotated_normal(theta_deg, psi_deg: float | np.ndarray, alpha_deg: float | np.ndarray,
+                   beta_deg: float | np.ndarray) -> np.ndarray:
+    """Mirror normal after rotating the axis by θ, (x', y', z') on the first axis.
+
+    θ is a row of N angles. ψ, α and β broadcast against one another to a shape S, ``()``
+    when all three are scalars: the result is (3,) + S + (N,), θ on the last axis, so scalars
+    give (3, N) and an α of shape (m,) gives (3, m, N). Each set-up's curve is bit for bit
+    the one its own scalar (ψ, α, β) gives.
+    """
     th = np.asarray(theta_deg, dtype=float) * D2R
-    psi, alpha, beta = psi_deg * D2R, alpha_deg * D2R, beta_deg * D2R
-    p = np.array([-math.sin(psi) * math.cos(alpha), -math.sin(psi) * math.sin(alpha), math.cos(psi)])
-    n = np.array([math.cos(beta), 0.0, -math.sin(beta)])
-    cross = np.cross(p, n)
-    dot = float(p @ n)
+    (cos_psi, sin_psi), (cos_alpha, sin_alpha), (cos_beta, sin_beta) = (
+        _cos_sin_deg(psi_deg), _cos_sin_deg(alpha_deg), _cos_sin_deg(beta_deg))
+    p = (-sin_psi * cos_alpha, -sin_psi * sin_alpha, cos_psi)
+    n = (cos_beta, 0.0, -sin_beta)
+    # P × n, the products and differences numpy's cross takes
+    cross = (p[1] * n[2] - p[2] * n[1], p[2] * n[0] - p[0] * n[2], p[0] * n[1] - p[1] * n[0])
+    shape = np.broadcast(*p, *n).shape
+    p_vectors, n_vectors = _vectors(p, shape), _vectors(n, shape)
+    # P · n of each set-up as a 1×3 by 3×1 product: one BLAS dot each, the call a single
+    # set-up's ``P @ n`` always made (the sum written out differs from the BLAS dot in the
+    # last bit for about a quarter of random set-ups: 0.8.21's copy in
+    # tilt_half_range_change wrote it out and so differed from this in a few results)
+    dot = np.matmul(p_vectors[..., None, :], n_vectors[..., :, None])[..., 0, 0]
+    # the components first and θ last, (3,) + S + (1,), in that order in memory (numpy's
+    # loops then run along θ)
+    first = (len(shape),) + tuple(range(len(shape)))
+    n_rows, cross_rows, along_rows = (
+        np.ascontiguousarray(v.transpose(first))[..., None]
+        for v in (n_vectors, _vectors(cross, shape), p_vectors * dot[..., None]))
     c, s = np.cos(th), np.sin(th)
-    return n[:, None] * c + cross[:, None] * s + (p * dot)[:, None] * (1.0 - c)
+    # n cos θ + (P × n) sin θ + P (P · n)(1 − cos θ), summed in that order in place
+    normal = n_rows * c
+    normal += cross_rows * s
+    normal += along_rows * (1.0 - c)
+    return normal
 
 
 def forward_readings(theta_deg, psi_deg: float, alpha_deg: float, beta_deg: float):
@@ -117,8 +165,10 @@ def forward_readings(theta_deg, psi_deg: float, alpha_deg: float, beta_deg: floa
     return azimuth, elevation
 
 
-def induced_error_arcsec(theta_deg, psi_deg: float, alpha_deg: float, beta_deg: float):
-    """Set-up induced error ζ(θ) = A(θ) − θ in arcsec (eq 7)."""
+def induced_error_arcsec(theta_deg, psi_deg: float | np.ndarray, alpha_deg: float | np.ndarray,
+                         beta_deg: float | np.ndarray) -> np.ndarray:
+    """Set-up induced error ζ(θ) = A(θ) − θ in arcsec (eq 7): S + (N,), ψ, α and β broadcast
+    to S and θ (N angles) on the last axis as in :func:`rotated_normal`; scalars give (N,)."""
     theta = np.asarray(theta_deg, dtype=float)
     x, y, _ = rotated_normal(theta, psi_deg, alpha_deg, beta_deg)
     th = theta * D2R
@@ -340,29 +390,17 @@ def tilt_half_range_change(rotation_deg, beta_deg: float, bound_arcsec: float) -
     if not bound_arcsec > 0 or rotation.size < 2:
         return 0.0
 
-    th = rotation * D2R
-    c, s = np.cos(th)[None, :], np.sin(th)[None, :]
-    return max(_tilt_half_range_at(c, s, beta_deg + k * 2.0 * bound_arcsec / 3600.0,
+    return max(_tilt_half_range_at(rotation, beta_deg + k * 2.0 * bound_arcsec / 3600.0,
                                    bound_arcsec) for k in (-1, 0, 1))
 
 
-def _tilt_half_range_at(c: np.ndarray, s: np.ndarray, beta_deg: float,
-                        bound_arcsec: float) -> float:
-    """:func:`tilt_half_range_change` at one β (``c``, ``s``: cos and sin of the rotations,
-    a row)."""
-    n = np.array([math.cos(beta_deg * D2R), 0.0, -math.sin(beta_deg * D2R)])
+def _tilt_half_range_at(rotation_deg: np.ndarray, beta_deg: float, bound_arcsec: float) -> float:
+    """:func:`tilt_half_range_change` at one β."""
 
     def half_ranges(psi_arcsec: float, alpha_deg: np.ndarray) -> np.ndarray:
-        # rotated_normal and induced_error_arcsec for every α at once, (α, θ)
-        psi, alpha = psi_arcsec / 3600.0 * D2R, np.asarray(alpha_deg, dtype=float)[:, None] * D2R
-        p = [-math.sin(psi) * np.cos(alpha), -math.sin(psi) * np.sin(alpha),
-             math.cos(psi) + 0.0 * alpha]
-        dot = p[0] * n[0] + p[2] * n[2]
-        cross_x, cross_y = p[1] * n[2], p[2] * n[0] - p[0] * n[2]
-        x = n[0] * c + cross_x * s + p[0] * dot * (1.0 - c)
-        y = cross_y * s + p[1] * dot * (1.0 - c)
-        zeta = np.arctan2(y * c - x * s, x * c + y * s) * ARCSEC_PER_RAD
-        return 0.5 * np.ptp(zeta, axis=1)
+        # every α at once: ζ is (α, θ)
+        zeta = induced_error_arcsec(rotation_deg, psi_arcsec / 3600.0, alpha_deg, beta_deg)
+        return 0.5 * np.ptp(zeta, axis=-1)
 
     best, best_psi, best_alpha = 0.0, bound_arcsec, 0.0
     for psi in bound_arcsec * np.arange(1, 9) / 8.0:

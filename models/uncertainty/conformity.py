@@ -43,6 +43,7 @@ from models.uncertainty.lab_scope import held_to_cmc
 from models.uncertainty.printed_figure import (
     PrintedFigure,
     StatedLimit,
+    ZoneLimit,
     converted_limit,
     printed,
     printed_interval_figures,
@@ -598,8 +599,9 @@ def _zones(t: float, up: PrintedFigure | None, down: PrintedFigure | None, rule:
     where they differ as printed, else one w; in any unit the text is read in."""
     if rule == "simple" or up is None or down is None:
         return message(QT_TR_NOOP("pass ≤ {t} < fail"), t=tolerance_figure(t, q))
-    low = PrintedFigure(float(t) - up.shown, q, decimals=d, rounding="down")
-    high = PrintedFigure(float(t) + down.shown, q, decimals=d, rounding="down")
+    # each rounded again where the zones are read in another unit (assessment 72 L4)
+    low = ZoneLimit(float(t), up, -1, q, d)
+    high = ZoneLimit(float(t), down, +1, q, d)
     if str(up) != str(down) and rule == "guarded_binary":
         return message(QT_TR_NOOP("pass ≤ {low} (T − U₊, U₊ = {up}) < fail"), low=low, up=up)
     if str(up) != str(down):

@@ -22,6 +22,8 @@ target unit by the same rule:
 * ``less``: a figure printed as the difference of two printed figures (``value`` as
   printed less ``less`` as printed), so that a sum in the text adds up as printed;
 * ``sign``: "+" to sign the figure always, as a range's ends are;
+* ``resolution_only``: a fixed decimal carried into another unit at its resolution alone,
+  no significant digits added (a range's ends and its peak-to-peak keep one decimal);
 * ``interval``: (value, U₋, U₊) of a value stated with its coverage interval, and ``part``
   which of its printed figures this is ("value", "lower", "upper", "low", "high"), printed
   by :func:`models.uncertainty.rounding.stated_interval` (the value ± its U the interval's
@@ -32,14 +34,15 @@ target unit by the same rule:
 from __future__ import annotations
 
 import math
+from typing import cast
 
 from models.quantity import UnitError, unit
 from models.uncertainty.rounding import stated_interval, uncertainty_decimals
 
 __all__ = ["CONVERTED_LIMIT_DIGITS", "PrintedFigure", "PrintedRange", "converted_limit",
-           "converted_text",
-           "interval_range", "printed", "printed_interval_figures", "rounded_to", "StatedLimit",
-           "StatedTolerance", "tolerance_figure"]
+           "converted_text", "interval_range", "printed", "printed_interval_figures",
+           "printed_range_figures", "rounded_to", "StatedLimit", "StatedTolerance",
+           "tolerance_figure", "ZoneLimit"]
 
 
 def rounded_to(value: float, decimals: int, rounding: str = "nearest") -> float:
@@ -81,13 +84,15 @@ class PrintedFigure(str):
     clip: bool
     less: float | None
     stated_exactly: bool
+    resolution_only: bool
     shown: float  # the number as printed (on its grid; nan where "—" is printed)
 
     def __new__(cls, value: float, symbol: str, *, u: float | None = None,
                 decimals: int | None = None, rounding: str = "nearest", sign: str = "",
                 unit_key: str = "", interval: tuple[float, float, float] | None = None,
                 part: str = "value", clip: bool = False,
-                less: float | None = None, stated_exactly: bool = False) -> PrintedFigure:
+                less: float | None = None, stated_exactly: bool = False,
+                resolution_only: bool = False) -> PrintedFigure:
         value = float(value)
         if interval is not None:
             interval = tuple(float(x) for x in interval)  # type: ignore[assignment]
@@ -107,6 +112,7 @@ class PrintedFigure(str):
         figure.unit_key = unit_key or _unit_key(symbol)
         figure.interval, figure.part, figure.clip = interval, part, clip
         figure.less, figure.stated_exactly = less, stated_exactly
+        figure.resolution_only = resolution_only
         figure.shown = float(shown)
         return figure
 
@@ -125,7 +131,8 @@ class PrintedFigure(str):
                                             "unit_key": self.unit_key,
                                             "interval": self.interval, "part": self.part,
                                             "clip": self.clip, "less": self.less,
-                                            "stated_exactly": self.stated_exactly})
+                                            "stated_exactly": self.stated_exactly,
+                                            "resolution_only": self.resolution_only})
 
     @property
     def exact(self) -> float | None:
@@ -153,7 +160,8 @@ class PrintedFigure(str):
         factor = source.size / target.size
         value = self.value * factor
         decimals = (None if self.decimals is None else
-                    _carried_decimals(self.decimals, value, factor))
+                    _carried_decimals(self.decimals, 0.0 if self.resolution_only else value,
+                                      factor))
         symbol = (target.written() if self.symbol.strip() else "")
         interval = (None if self.interval is None else
                     tuple(x * factor for x in self.interval))
@@ -162,7 +170,42 @@ class PrintedFigure(str):
                              unit_key=target.key, interval=interval,  # type: ignore[arg-type]
                              part=self.part, clip=self.clip,
                              less=None if self.less is None else self.less * factor,
-                             stated_exactly=self.stated_exactly)
+                             stated_exactly=self.stated_exactly,
+                             resolution_only=self.resolution_only)
+
+
+class ZoneLimit(PrintedFigure):
+    """A decision zone's limit, T less the printed U₊ (``side`` −1) or plus the printed U₋
+    (+1), ``band`` that printed U, rounded down to ``decimals`` (so that a printed value lies
+    at or below it exactly when it lies at or below T ∓ U). Read in another unit it is made
+    there from T converted and the U as printed there, to the decimal of that U: the zones
+    beside U = 2.4 µrad read 4.6 µrad, not 4.58 µrad (0.94″ converted with the decimal of
+    U = 0.50″: assessment 72 L4)."""
+
+    limit: float
+    band: PrintedFigure
+    side: int
+
+    def __new__(cls, limit: float, band: PrintedFigure, side: int, symbol: str,
+                decimals: int) -> ZoneLimit:
+        made = cast(ZoneLimit, PrintedFigure.__new__(cls, float(limit) + side * band.shown,
+                                                     symbol, decimals=decimals,
+                                                     rounding="down"))
+        made.limit, made.band, made.side = float(limit), band, side
+        return made
+
+    def __getnewargs_ex__(self):  # copied, pickled
+        return (self.limit, self.band, self.side, self.symbol, self.decimals), {}
+
+    def to(self, key: str) -> PrintedFigure:
+        band = self.band.to(key)
+        if band is self.band or self.decimals is None:
+            return self
+        factor = unit(self.band.unit_key).size / unit(band.unit_key).size
+        symbol = unit(key).written() if self.symbol.strip() else ""
+        # the zones' decimal beside U's as it was, in the unit read (U's own there)
+        decimals = max(0, self.decimals + band.places - self.band.places)
+        return ZoneLimit(self.limit * factor, band, self.side, symbol, decimals)
 
 
 class PrintedRange(str):
@@ -214,6 +257,22 @@ def printed(value: float, symbol: str, *, u: float | None = None, decimals: int 
     """:class:`PrintedFigure` (the name the formatting helpers use)."""
     return PrintedFigure(value, symbol, u=u, decimals=decimals, rounding=rounding, sign=sign,
                          unit_key=unit_key, stated_exactly=stated_exactly)
+
+
+def printed_range_figures(low: float, high: float, decimals: int,
+                          symbol: str = "\"") -> dict[str, PrintedFigure]:
+    """A curve's range as a summary prints it, {"low", "high", "ptp"}: its ends signed, to
+    ``decimals``, and the peak-to-peak the difference of the ends as printed (as
+    :func:`models.uncertainty.rounding.printed_range`), each a figure that converts itself
+    from its unrounded value: read in µrad it is rounded there, not converted from the
+    digits printed in arcseconds (assessment 72 L5: "−7.66 µrad" for −7.644 µrad, −1.58″
+    converted)."""
+    # one decimal for the three, carried into another unit at its resolution
+    return {"low": PrintedFigure(low, symbol, decimals=decimals, sign="+", resolution_only=True),
+            "high": PrintedFigure(high, symbol, decimals=decimals, sign="+",
+                                  resolution_only=True),
+            "ptp": PrintedFigure(high, symbol, decimals=decimals, less=low,
+                                 resolution_only=True)}
 
 
 def printed_interval_figures(value: float, lower: float, upper: float, symbol: str,

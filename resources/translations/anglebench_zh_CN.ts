@@ -2417,6 +2417,18 @@ Is this item another manufacturer&apos;s than that of {numbers}? Yes: issue it; 
 该被校件是否属于与 {numbers} 不同的另一制造商？是：签发，登记册会记录这是您的说明。否：不签发任何证书（要更正 {numbers}，请在 文件 › 证书登记册 中修订或替代它）。</translation>
     </message>
     <message>
+        <source>Is today {date}?</source>
+        <translation>今天是 {date} 吗？</translation>
+    </message>
+    <message>
+        <source>{reason}.
+
+Is today {date}? Yes: issue it dated {date}; the register records that you confirmed the date. No: nothing is issued; correct the computer&apos;s clock.</source>
+        <translation>{reason}。
+
+今天是 {date} 吗？是：签发，日期为 {date}；登记册会记录您确认了该日期。否：不签发任何内容；请更正计算机的时钟。</translation>
+    </message>
+    <message>
         <source>Is {serial} a different item from each of them?</source>
         <translation>{serial} 是不同于以上每一件的另一件被校准对象吗？</translation>
     </message>
@@ -2717,6 +2729,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>适用于（每个读数、任意角度、相对第 1 面）</translation>
     </message>
     <message>
+        <source>Role (reference, autocollimator, adc)</source>
+        <translation>角色（reference、autocollimator、adc）</translation>
+    </message>
+    <message>
         <source>Due date (YYYY-MM-DD)</source>
         <translation>国家（ISO 3166-1，如 CN）</translation>
     </message>
@@ -2956,6 +2972,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>certificate field &apos;{name}.applies_to&apos; must be one of {join}, not &apos;{applies_to}&apos;</source>
         <translation>证书字段 &apos;{name}.applies_to&apos; 必须是 {join} 之一，而不是 &apos;{applies_to}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}.role&apos; must be one of {join} or empty, not &apos;{role}&apos;</source>
+        <translation>证书字段 &apos;{name}.role&apos; 必须是 {join} 之一或留空，而不是 &apos;{role}&apos;</translation>
     </message>
     <message>
         <source>certificate field &apos;{field_name}&apos; must be a number above 0</source>
@@ -3227,6 +3247,42 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>无名单：接受任何署名的批准人</translation>
     </message>
     <message>
+        <source>record that records were lost (an older copy restored): who, why, the last number known issued; the counters move past it and issuing resumes</source>
+        <translation>记录有记录丢失（恢复了较早的副本）：谁、为何、已知签发过的最后一个编号；计数器移过该编号，恢复签发</translation>
+    </message>
+    <message>
+        <source>who acknowledges the loss (a name)</source>
+        <translation>确认此次丢失的人（姓名）</translation>
+    </message>
+    <message>
+        <source>why: what was lost and restored</source>
+        <translation>理由：丢失了什么、恢复了什么</translation>
+    </message>
+    <message>
+        <source>the last certificate number known issued (from the lab&apos;s log, the customers&apos; copies): no number up to it is issued again</source>
+        <translation>已知签发过的最后一个证书编号（来自实验室的日志、客户手中的副本）：直到它为止的编号都不会再次签发</translation>
+    </message>
+    <message>
+        <source>the number scheme of --last-number when the register restored has no counter of it (e.g. AB-{year}-{seq:04d})</source>
+        <translation>恢复后的登记册中还没有 --last-number 的计数器时，其编号方案（例如 AB-{year}-{seq:04d}）</translation>
+    </message>
+    <message>
+        <source>record that the register&apos;s last record was dated by a clock set ahead: with this clock right, issuing resumes</source>
+        <translation>记录登记册的最后一条记录是以调快的时钟写上日期的：在此时钟正确时恢复签发</translation>
+    </message>
+    <message>
+        <source>who records the correction (a name)</source>
+        <translation>记录此更正的人（姓名）</translation>
+    </message>
+    <message>
+        <source>why: which clock was wrong</source>
+        <translation>理由：哪台时钟出错了</translation>
+    </message>
+    <message>
+        <source>today&apos;s date, as you know it: it must be the computer&apos;s</source>
+        <translation>您所知道的今天的日期：它必须与计算机的日期相同</translation>
+    </message>
+    <message>
         <source>{number}  ({status}{revision})</source>
         <translation>{number}（{status}{revision}）</translation>
     </message>
@@ -3351,16 +3407,20 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>  无法将此记入登记册（{reason}）：签发不会因此停止</translation>
     </message>
     <message>
-        <source>  recorded in the register: nothing is issued, its number not again, until the register is restored from a backup</source>
-        <translation>  已记入登记册：在从备份恢复登记册之前不再签发任何内容，其编号也不会再次使用</translation>
-    </message>
-    <message>
         <source>CHANGED AFTER ISSUE: {path} ({number}) was issued as record {seq}, right after the head it prints, but record {seq} is now another certificate of the same number (SHA-256 {other}…): its record was deleted after issue and the number issued again</source>
         <translation>签发后被改动：{path}（{number}）是作为第 {seq} 条记录、紧随其所印链头签发的，但第 {seq} 条记录现在是同一编号的另一份证书（SHA-256 {other}…）：其记录在签发后被删除，该编号被再次签发</translation>
     </message>
     <message>
         <source>not there</source>
         <translation>不存在</translation>
+    </message>
+    <message>
+        <source>  recorded in the register: nothing is issued until the loss is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos;</source>
+        <translation>  已记入登记册：在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; 记录此次丢失之前，不再签发任何内容</translation>
+    </message>
+    <message>
+        <source>LOST, ACKNOWLEDGED: {path} names {number}, a number the register issued before a loss recorded on {date} by {by} ({reason}): its record was lost, so the register cannot tell whether this copy is as issued; ask the laboratory for its own copy</source>
+        <translation>已丢失，已确认（LOST, ACKNOWLEDGED）：{path} 写的是 {number}，这是登记册在 {date} 由 {by} 记录的一次丢失（{reason}）之前签发的编号：其记录已丢失，因此登记册无法判断此副本是否与签发时相同；请向实验室索取其自己的副本</translation>
     </message>
     <message>
         <source>CHANGED AFTER ISSUE: {path}: the register&apos;s record of {number} is not the record it was issued from: the file carries the digest {carried}… of its record&apos;s content (readings, results and details as recorded), the record now gives {actual}…: the record was rewritten after issue</source>
@@ -3370,6 +3430,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <source>CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, or the register&apos;s record of it was replaced</source>
         <extracomment>a PDF that prints a head of the chain whose next record is another: the PDF altered, or the record replaced — which, the register cannot tell (``register verify`` counts it as a file it did not issue, exit 1, unless the register&apos;s own checks find a change)</extracomment>
         <translation>签发后被改动：{path}（{number}）印有第 {seq} 条记录之前的链头，但第 {seq} 条记录是 {other}，不是此 PDF{elsewhere}：PDF 在签发后被改动，或登记册中它的记录被替换</translation>
+    </message>
+    <message>
+        <source>  recorded in the register: nothing is issued, its number not again, until the loss is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT --last-number NUMBER&apos;</source>
+        <translation>  已记入登记册：在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT --last-number NUMBER&apos; 记录此次丢失之前，不再签发任何内容，其编号也不会再次使用</translation>
     </message>
     <message>
         <source> (its SHA-256 is record {numbers}&apos;s)</source>
@@ -3467,6 +3531,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{number} withdrawn ({reason}); chain head now {head}</source>
         <translation>{number} 已作废（{reason}）；当前链头 {head}</translation>
+    </message>
+    <message>
+        <source>loss recorded by {by} ({reason}); counters moved: {moved}; issuing resumes; chain head now {head}</source>
+        <translation>丢失已由 {by} 记录（{reason}）；移动的计数器：{moved}；恢复签发；链头现为 {head}</translation>
+    </message>
+    <message>
+        <source>clock correction recorded by {by} ({reason}): {ahead}, dated {at}, was dated by a clock set ahead; issuing resumes on this clock ({date})</source>
+        <translation>时钟更正已由 {by} 记录（{reason}）：{ahead}（日期 {at}）是以调快的时钟写上日期的；在此时钟上恢复签发（{date}）</translation>
     </message>
     <message>
         <source>--date {date}: not YYYY-MM-DD</source>
@@ -4836,7 +4908,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>reading</source>
-        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides, U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned code points What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard). each as a certificate names it after &quot;per&quot; (&quot;standard uncertainty u per angle between two readings&quot;), in the standards table as in the budget (day review 69 F2: the table said &quot;0.5″ (standard uncertainty u)&quot; alike for both, and the budget took 0.354″ unexplained)
+        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides, U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned code points What a reference standard carries of the measurand (ReferenceStandard.role; &quot;&quot; not stated: told from its other fields where they tell it, models/certificate/traceability.py): the reference the errors are measured against (the theodolite, the polygon, the positioning&apos;s reference measuring system, the fringe&apos;s phase or angle reference), the polygon test&apos;s autocollimator, the fringe&apos;s ADC. A workbench names the roles its measurand needs. What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard). each as a certificate names it after &quot;per&quot; (&quot;standard uncertainty u per angle between two readings&quot;), in the standards table as in the budget (day review 69 F2: the table said &quot;0.5″ (standard uncertainty u)&quot; alike for both, and the budget took 0.354″ unexplained)
 ----------
 what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO), in the words of the certificate&apos;s budget (models.certificate.document.reference_standard_components)</extracomment>
         <translation>读数</translation>
@@ -5250,7 +5322,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>a phase or angle reference</source>
-        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list, each by its role (models.certificate.metadata.STANDARD_ROLES) and name</extracomment>
         <translation>相位或角度参考标准</translation>
     </message>
     <message>
@@ -5477,7 +5549,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the polygon (its face deviations)</source>
-        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list, each by its role (models.certificate.metadata.STANDARD_ROLES) and name</extracomment>
         <translation>多面棱体（其面偏差）</translation>
     </message>
     <message>
@@ -5677,7 +5749,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the reference measuring system</source>
-        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list, each by its role (models.certificate.metadata.STANDARD_ROLES) and name</extracomment>
         <translation>参考测量系统</translation>
     </message>
     <message>
@@ -5750,7 +5822,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the autocollimating theodolite</source>
-        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list</extracomment>
+        <extracomment>the standards that carry the measurand (a calibration certificate states traceability only when each is listed with a certificate and a stated U; the statement of conformity is withheld while one is not): the workbench&apos;s and its certificate&apos;s one list, each by its role (models.certificate.metadata.STANDARD_ROLES) and name</extracomment>
         <translation>自准直经纬仪</translation>
     </message>
     <message>
@@ -5956,6 +6028,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>with --certificate: a certificate still valid reports the same serial number and date of calibration under another manufacturer&apos;s name, and this is indeed another maker&apos;s item (else it is refused: a maker&apos;s name spelt otherwise is the same maker); recorded in the register that you said so</source>
         <translation>与 --certificate 一起使用：一份仍然有效的证书以另一制造商的名称报告了相同的序列号和校准日期，而这确实是另一制造商的被校件（否则予以拒绝：写法不同的制造商名称仍是同一制造商）；登记册会记录这是您的说明</translation>
+    </message>
+    <message>
+        <source>with --certificate: today&apos;s date, as you know it, for an issue more than 30 days after the register&apos;s last record (else it is refused, naming the date the computer&apos;s clock gives: a clock set ahead would date the certificate wrongly); recorded in the register that you confirmed it</source>
+        <translation>与 --certificate 一起用：签发时间晚于登记册最后一条记录 30 天以上时，您所知道的今天的日期（否则被拒绝，并指出计算机时钟给出的日期：调快的时钟会把证书的日期写错）；您的确认会记入登记册</translation>
     </message>
     <message>
         <source>also write the results per point (with U) as CSV or XLSX</source>
@@ -6901,17 +6977,13 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>编号方案 &apos;{scheme}&apos; 中没有 {{seq}}：登记册无法用它为证书编号</translation>
     </message>
     <message>
-        <source>{setting}={value}: a whole number of days, 0 for no limit</source>
-        <extracomment>how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it how long a connection to a PostgreSQL register waits for the server&apos;s answer (libpq&apos;s connect_timeout; a URL that sets its own keeps it) how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`) the environment variable that sets how many days after the register&apos;s last record an issue may be dated (0: no limit) its value when it is not set 366: a clock a year ahead (the year typed wrong) is found unless the last record is a day old, while a lab that calibrates once a year issues without a setting (a 90-day default refused a year between calibrations with nothing in between, and the window has no environment to set: the technician would be stopped at a dialog)</extracomment>
-        <translation>{setting}={value}：应为整数天数，0 表示不限</translation>
-    </message>
-    <message>
         <source>the lab&apos;s time zone &apos;{name}&apos; is not known (an IANA name such as Asia/Shanghai or Europe/Berlin)</source>
+        <extracomment>how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it how long a connection to a PostgreSQL register waits for the server&apos;s answer (libpq&apos;s connect_timeout; a URL that sets its own keeps it) how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`) how long a write to a SQLite register waits for its write lock before giving up how long a write waits for that lock in silence before it says it is waiting, and for whom (reg72 #8: a minute of silence, then &quot;database is locked&quot;) today&apos;s date confirmed for an issue far after the last record (clock_rules), recorded</extracomment>
         <translation>实验室时区“{name}”无法识别（应为 IANA 名称，如 Asia/Shanghai 或 Europe/Berlin）</translation>
     </message>
     <message>
         <source>register {display_url}: {reason}</source>
-        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
+        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the key&apos;s file, beside which the register&apos;s high-water mark is kept (reg73 #2) the state a write transaction leaves, noted in the mark once it is committed the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) told, at once, when a write waits for the SQLite register&apos;s write lock held by another process (what it waits for, and for how long at most): the command line says it on stderr, the window in its status line. None: nobody is told this process noted itself as the writer beside the database (writer_note.py) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
         <translation>登记册 {display_url}：{reason}</translation>
     </message>
     <message>
@@ -6959,6 +7031,18 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>等待登记册的锁 {s} 秒，该锁由 {holder} 持有</translation>
     </message>
     <message>
+        <source>waited {s} s for the register&apos;s lock, held by another program, which left no note of who it is</source>
+        <translation>等待登记册的锁 {s} 秒，该锁由另一个程序持有，该程序未留下说明其身份的便条</translation>
+    </message>
+    <message>
+        <source>waiting for the register at {path}: its write lock is held by {holder} since {since}; giving up after {s} s unless it is released</source>
+        <translation>正在等待 {path} 处的登记册：其写锁自 {since} 起由 {holder} 持有；若锁未释放，{s} 秒后放弃</translation>
+    </message>
+    <message>
+        <source>waiting for the register at {path}: its write lock is held by another program, which left no note of who it is; giving up after {s} s unless it is released</source>
+        <translation>正在等待 {path} 处的登记册：其写锁由另一个程序持有，该程序未留下说明其身份的便条；若锁未释放，{s} 秒后放弃</translation>
+    </message>
+    <message>
         <source>the disk is full at {path}: nothing was recorded; the register is unchanged (free some space and try again)</source>
         <translation>{path} 处磁盘已满：未记录任何内容；登记册未改变（请腾出空间后重试）</translation>
     </message>
@@ -6981,6 +7065,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>no free number in scheme &apos;{scheme}&apos;</source>
         <translation>编号方案 &apos;{scheme}&apos; 中已无可用编号</translation>
+    </message>
+    <message>
+        <source>this certificate would be dated {date} in the lab&apos;s time zone of this issue, {zone} (UTC{offset}), before the register&apos;s last certificate, {number}, dated {then} (issued {at}; the zone it was dated in is not recorded): the dates of issue would go backwards against the numbers. The lab&apos;s time zone changed between the two issues (ANGLEBENCH_TIMEZONE, or the window&apos;s setting): issue in the zone the lab dates its certificates in, or in this zone from {resumes} on</source>
+        <translation>按本次签发的实验室时区 {zone}（UTC{offset}），此证书的签发日期将为 {date}，早于登记册最后一份证书 {number} 的签发日期 {then}（签发于 {at}；其签发时所用的时区没有记录）：签发日期将与编号顺序颠倒。两次签发之间实验室的时区变了（ANGLEBENCH_TIMEZONE，或窗口中的设置）：请按实验室为其证书定日期的时区签发，或在本时区从 {resumes} 起签发</translation>
     </message>
     <message>
         <source>the next sequence number must be 1 or more</source>
@@ -7009,14 +7097,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>certificate number {number}: {other}, issued on {issued_at}, reads as an amendment&apos;s number of it (a number, then -A and a count, whatever the separators, case, marks or look-alike letters): a customer would take them for a certificate and its amendment; type another number, or leave it empty and the register allocates the next</source>
         <translation>证书编号 {number}：{issued_at} 签发的 {other} 读起来像它的修订版编号（一个编号加 -A 和序号，不论分隔符、大小写、附加符号或形似字母）：客户会把两者当作一份证书及其修订版；请输入另一个编号，或留空由登记册分配下一个</translation>
-    </message>
-    <message>
-        <source>the computer&apos;s clock says {now}, before the register&apos;s last record ({number}, issued {then}): the clock was set back; nothing is issued until it is right</source>
-        <translation>计算机时钟为 {now}，早于登记册的最后一条记录（{number}，签发于 {then}）：时钟被回拨；在时钟正确之前不签发</translation>
-    </message>
-    <message>
-        <source>the computer&apos;s clock says {now}, {days} days after the register&apos;s last record ({number}, issued {then} on {workstation}): more than {limit} days ({setting}); a clock set ahead would date this certificate wrongly and refuse every issue on a right clock until then. Check the clock; if it is right, issue with {setting}={needed} set for this issue</source>
-        <translation>计算机时钟显示 {now}，比登记册最后一条记录（{number}，{then} 在 {workstation} 上签发）晚 {days} 天：超过 {limit} 天（{setting}）；调快的时钟会把这份证书的日期写错，并在那一天之前拒绝时钟正确的每一次签发。请检查时钟；如果时钟正确，请为这一次签发设置 {setting}={needed} 后签发</translation>
     </message>
     <message>
         <source>serial number</source>
@@ -7053,6 +7133,16 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>the register was busy: {n} other certificates were issued while this one was being made; try again</source>
         <translation>登记册繁忙：生成本证书期间另有 {n} 份证书签发；请重试</translation>
+    </message>
+    <message>
+        <source>certificate {number}: its PDF (SHA-256 {sha}…), shown to &apos;register verify&apos; on {date}, was issued as record {place} of the chain (it prints the head before it), but the register no longer held its record: deleted after issue, or lost with a restore; nothing is issued until the loss is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos;</source>
+        <extracomment>the chained entry that records a loss acknowledged by a person (reg73 #2, #5): the findings before it of certificates lost (&quot;missing&quot;) or numbers issued twice (&quot;number_reissued&quot;) no longer stop issuing, and the counters it moved are reached what an audit finds of a certificate shown to verify whose record was gone</extracomment>
+        <translation>证书 {number}：其 PDF（SHA-256 {sha}…）于 {date} 提交给 &apos;register verify&apos;，它是作为链中第 {place} 条记录签发的（它印有其之前的链头），但登记册已不再保存其记录：签发后被删除，或随恢复而丢失；在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; 记录此次丢失之前，不再签发任何内容</translation>
+    </message>
+    <message>
+        <source>certificate {number}: its PDF (SHA-256 {sha}…), shown to &apos;register verify&apos; on {date}, was issued as record {place} of the chain, but that record is now another certificate of the same number: the number was issued twice (the register restored from an older copy, or an older state copied back); nothing is issued until the loss is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos;</source>
+        <extracomment>what an audit finds of a number found issued twice</extracomment>
+        <translation>证书 {number}：其 PDF（SHA-256 {sha}…）于 {date} 提交给 &apos;register verify&apos;，它是作为链中第 {place} 条记录签发的，但该记录现在是同一编号的另一份证书：该编号被签发了两次（登记册从较早的副本恢复，或较早的状态被复制回来）；在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; 记录此次丢失之前，不再签发任何内容</translation>
     </message>
     <message>
         <source>{number} was issued on the {original} workbench: its amendment or replacement corrects that calibration and is issued on that workbench, not on {workbench} (ISO/IEC 17025 7.8.8); a calibration on another workbench is an original</source>
@@ -7144,7 +7234,32 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>entry {kind} {subject}</source>
+        <extracomment>an issue dated more than this many days after the register&apos;s last chained record asks the person to confirm today&apos;s date (a lab that issues weekly is not asked; a clock a month or a year ahead is seen before it dates a certificate)</extracomment>
         <translation>条目 {kind} {subject}</translation>
+    </message>
+    <message>
+        <source>--confirm-date {date}: not a date YYYY-MM-DD</source>
+        <translation>--confirm-date {date}：不是 YYYY-MM-DD 格式的日期</translation>
+    </message>
+    <message>
+        <source>the computer&apos;s clock says {now}, before the register&apos;s last record ({what}, {then}, on {workstation} by {user}): either this clock was set back — correct it — or that record was dated by a clock set ahead; then, with this clock right, record it with &apos;anglebench register clock-correction --by NAME --reason TEXT --confirm-date {today}&apos;. Nothing is issued until then</source>
+        <translation>计算机的时钟为 {now}，早于登记册的最后一条记录（{what}，{then}，在 {workstation} 上由 {user}）：要么此时钟被调回了——请更正它——要么那条记录是以调快的时钟写上日期的；这时请在此时钟正确的情况下用 &apos;anglebench register clock-correction --by NAME --reason TEXT --confirm-date {today}&apos; 记录此事。在此之前不签发任何内容</translation>
+    </message>
+    <message>
+        <source>this certificate would be dated {date}, {days} days after the register&apos;s last record ({what}, {then}): a clock set ahead would date it wrongly, and refuse every issue on a right clock until then. If today is {date}, confirm it (on the command line: --confirm-date {date}); else correct the computer&apos;s clock</source>
+        <translation>此证书的签发日期将为 {date}，在登记册最后一条记录（{what}，{then}）之后 {days} 天：调快的时钟会把日期写错，并在那之前拒绝时钟正确的每一次签发。如果今天是 {date}，请确认（命令行：--confirm-date {date}）；否则请更正计算机的时钟</translation>
+    </message>
+    <message>
+        <source>today was confirmed as {confirmed}, but the computer&apos;s clock gives {date}: nothing is issued until the clock is right</source>
+        <translation>今天被确认为 {confirmed}，但计算机的时钟给出的是 {date}：在时钟正确之前不签发任何内容</translation>
+    </message>
+    <message>
+        <source>nothing to correct: the register&apos;s last record ({what}) is not dated after the computer&apos;s clock ({now}); a clock correction records that a record was dated by a clock set ahead</source>
+        <translation>无需更正：登记册的最后一条记录（{what}）的日期不晚于计算机的时钟（{now}）；时钟更正记录的是某条记录以调快的时钟写上了日期</translation>
+    </message>
+    <message>
+        <source>a clock correction is recorded with today&apos;s date confirmed (--confirm-date {date}: the computer&apos;s date now); correct the clock first if it is not today</source>
+        <translation>时钟更正须确认今天的日期后记录（--confirm-date {date}：计算机现在的日期）；若今天不是这一天，请先更正时钟</translation>
     </message>
     <message>
         <source>record {number}: it is at place {seq} of the chain, where {expected} was expected (records deleted or inserted before it)</source>
@@ -8400,6 +8515,26 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>记录 {number}：所存的 PDF 与签发时记录的 SHA-256 不符</translation>
     </message>
     <message>
+        <source>a loss is acknowledged by a named person with the reason (--by, --reason)</source>
+        <translation>丢失须由具名的人连同理由确认（--by、--reason）</translation>
+    </message>
+    <message>
+        <source>the register&apos;s records were changed after issue ({problem}): a loss is acknowledged in a register whose own records are intact; see &apos;anglebench register verify&apos;</source>
+        <translation>登记册的记录在签发后被改动（{problem}）：只有登记册自身记录完好时才能确认丢失；请参见 &apos;anglebench register verify&apos;</translation>
+    </message>
+    <message>
+        <source>give the last certificate number known issued (--last-number: from the lab&apos;s log, the customers&apos; copies): without the laboratory&apos;s key and its high-water mark the register cannot tell how far its numbers went before the loss</source>
+        <translation>请给出已知签发过的最后一个证书编号（--last-number：来自实验室的日志、客户手中的副本）：没有实验室密钥及其高水位标记，登记册无法判断丢失之前其编号到了哪里</translation>
+    </message>
+    <message>
+        <source>{number} is a number of none of the register&apos;s counters ({names}): give the last number known issued as the register numbered it, with its number scheme (--scheme) when the register has no counter of it yet</source>
+        <translation>{number} 不属于登记册的任何计数器（{names}）：请按登记册的编号方式给出已知签发过的最后一个编号；登记册还没有其计数器时，加上其编号方案（--scheme）</translation>
+    </message>
+    <message>
+        <source>a clock correction is recorded by a named person with the reason (--by, --reason)</source>
+        <translation>时钟更正须由具名的人连同理由记录（--by、--reason）</translation>
+    </message>
+    <message>
         <source>{serial} of {maker} ({numbers})</source>
         <translation>{maker} 的 {serial}（{numbers}）</translation>
     </message>
@@ -8478,10 +8613,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>instrument {serial}: calibration interval {days} day(s), but the register&apos;s records set {recorded}: changed after it was recorded</source>
         <translation>仪器 {serial}：校准间隔 {days} 天，但登记册的记录设定为 {recorded}：记录后被改动</translation>
-    </message>
-    <message>
-        <source>certificate {number}: its PDF (SHA-256 {sha}…), shown to &apos;register verify&apos; on {date}, was issued as record {place} of the chain (it prints the head before it), but the register no longer held its record: deleted after issue; nothing is issued until the register is restored from a backup</source>
-        <translation>证书 {number}：其 PDF（SHA-256 {sha}…）于 {date} 提交给 &apos;register verify&apos; 核验，它作为哈希链的第 {place} 条记录签发（印有其之前的链头），但登记册已不再保有其记录：签发后被删除；在从备份恢复登记册之前不再签发任何内容</translation>
     </message>
     <message>
         <source>certificate {number}: {count} results files recorded, where a certificate has one (recorded at its issue): all but the first were added after issue</source>
@@ -10986,7 +11117,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the certificate register ({path})</source>
-        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the register&apos;s own file beside a SQLite register ``X``: ``X.issuing``, the issuers&apos; turn after a lost race (a file lock, models.register.store); an output written over it (a rename: a new file) would split the issuers between two locks the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name</extracomment>
+        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the register&apos;s own file beside a SQLite register ``X``: ``X.issuing``, the issuers&apos; turn after a lost race (a file lock, models.register.store); an output written over it (a rename: a new file) would split the issuers between two locks the note beside a SQLite register naming the process that holds its write lock (models/register/writer_note.py) the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name</extracomment>
         <translation>证书登记册（{path}）</translation>
     </message>
     <message>
@@ -11056,6 +11187,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>{standard} (due {due})</source>
+        <extracomment>the role of a standard that stands behind inputs stated in the settings, by the first word of their budget names (the fringe&apos;s &quot;Phase reference&quot;, &quot;ADC offset&quot; …)</extracomment>
         <translation>{standard}（到期 {due}）</translation>
     </message>
     <message>
@@ -11075,12 +11207,16 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；目前一项也未如此列出</translation>
     </message>
     <message>
-        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}): the standard for the other one is not listed</source>
-        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}）：另一项的计量标准未列出</translation>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}): none is listed for {missing}</source>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}）：未列出{missing}</translation>
     </message>
     <message>
-        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}): the standards for the other {missing} are not listed</source>
-        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}）：其余 {missing} 项的计量标准未列出</translation>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}), no role stated for {unnamed}: the standard for {choices} is not listed, and the details do not say which (state each standard&apos;s role)</source>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}），未说明{unnamed}的角色：{choices}未列出，而证书信息未说明是哪一项（请说明每个计量标准的角色）</translation>
+    </message>
+    <message>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}), no role stated for {unnamed}: the standards for {count_missing} of {choices} are not listed, and the details do not say which (state each standard&apos;s role)</source>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}），未说明{unnamed}的角色：{choices}中有 {count_missing} 项未列出，而证书信息未说明是哪几项（请说明每个计量标准的角色）</translation>
     </message>
     <message>
         <source>{standard}: its calibration was due on {due}, before the date of calibration {date}: it had expired</source>
@@ -12387,6 +12523,25 @@ Replace it?</source>
         <source>the tilt, not identified and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it; a tilt up to {bound} (stated) in any direction changes the half range by at most {change}, so the interval is widened by that at both ends and holds for any such tilt</source>
         <extracomment>what the decision says of a tilt not identified that widens its interval, after how the rest was made (the polygon&apos;s, and a theodolite&apos;s decided on the means over passes)</extracomment>
         <translation>未辨识、也未扣除的倾角是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量；给定上限 {bound} 以内、任意方向的倾角，至多使半峰峰值改变 {change}，因此区间两端各加宽该量，对任何这样的倾角均成立</translation>
+    </message>
+    <message>
+        <source>{who}, process {pid}</source>
+        <translation>{who}，进程 {pid}</translation>
+    </message>
+    <message>
+        <source>the register holds {count} record(s), but it held {records} ending at head {head} when AngleBench last wrote it on {when} (its high-water mark {path}, signed with the key): records were removed since — an older copy restored or replayed; a number issued since could be issued again: nothing is issued until the loss is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos;</source>
+        <extracomment>what an opening finds when the register holds less than the mark</extracomment>
+        <translation>登记册现有 {count} 条记录，但 AngleBench 于 {when} 最后一次写入它时，它有 {records} 条，结束于链头 {head}（其高水位标记 {path}，以密钥签名）：此后有记录被移除——较早的副本被恢复或重放；此后签发的编号可能会再次签发：在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; 记录此次丢失之前，不再签发任何内容</translation>
+    </message>
+    <message>
+        <source>counter {name}: it stands at {value}, but it stood at {marked} when AngleBench last wrote the register on {when} (its high-water mark {path}): an older copy restored or replayed; nothing is issued until the loss is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos;</source>
+        <extracomment>a counter below the mark&apos;s</extracomment>
+        <translation>计数器 {name}：它现在为 {value}，但 AngleBench 于 {when} 最后一次写入登记册时它为 {marked}（其高水位标记 {path}）：较早的副本被恢复或重放；在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; 记录此次丢失之前，不再签发任何内容</translation>
+    </message>
+    <message>
+        <source>the register&apos;s high-water mark {path} cannot be read or does not carry the laboratory key&apos;s signature: changed outside AngleBench, or written with another key; nothing is issued until it is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; (which writes it anew)</source>
+        <extracomment>a mark that is not the key&apos;s</extracomment>
+        <translation>登记册的高水位标记 {path} 无法读取，或不带有实验室密钥的签名：在 AngleBench 之外被改动，或以另一个密钥写入；在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos;（它会重新写入标记）记录之前，不再签发任何内容</translation>
     </message>
 </context>
 </TS>

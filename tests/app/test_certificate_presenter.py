@@ -356,3 +356,39 @@ def test_signal_presets_saved_with_the_lab_defaults_and_kept(parts):
     assert problems == [] and preset_by_key("ours", presets) == ours
     assert presenter.lab_defaults()["lab_name"] == "Lab"
     assert len(presets) == len(BUILTIN_PRESETS) + 1
+
+
+def test_an_issue_far_after_the_last_record_shows_the_date_and_asks(parts, samples_dir,
+                                                                    tmp_path, monkeypatch):
+    """reg73 #6: a yearly lab's issue was refused and the window had no way to give the
+    allowance; now the window shows the date the clock gives and asks, and a Yes is
+    recorded with the certificate."""
+    from models.register.store import Register
+
+    presenter, view, _, _ = parts
+    presenter.set_lab_timezone("UTC")
+    first = dt.datetime(2026, 11, 24, 10, 0, tzinfo=dt.timezone.utc)
+    monkeypatch.setattr(Register, "clock", staticmethod(lambda: first))
+    kind, result = _theodolite(samples_dir)
+    view.edit_certificate_details.return_value = COMPLETE
+    view.choose_save_path.return_value = str(tmp_path / "a.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", [])
+    view.confirm_issue_date.assert_not_called()
+    monkeypatch.setattr(Register, "clock", staticmethod(
+        lambda: first + dt.timedelta(days=367)))
+    # a year later: the item's next calibration
+    view.edit_certificate_details.return_value = dataclasses.replace(
+        COMPLETE, calibration_date="2027-11-20", issue_date="")
+    view.confirm_issue_date.return_value = False  # not today: nothing issued
+    view.choose_save_path.return_value = str(tmp_path / "b.pdf")
+    assert not presenter.export_certificate(kind, result, {}, "run.csv", [])
+    assert view.confirm_issue_date.call_args, view.tell.call_args
+    date, reason = view.confirm_issue_date.call_args.args
+    assert date == "2027-11-26" and "367 days after" in reason
+    assert not (tmp_path / "b.pdf").exists()
+    view.confirm_issue_date.return_value = True
+    view.choose_save_path.return_value = str(tmp_path / "c.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", [])
+    with presenter.open_register() as register:
+        newest = register.list()[0]
+        assert newest.issue_date == "2027-11-26" and register.problems == []

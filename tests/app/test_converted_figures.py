@@ -148,3 +148,71 @@ def test_summary_u_of_the_set_up_converted_from_its_value(capsys, samples_dir):
         assert len(found.group(1).split(".")[1]) == max(4, _two_significant(u_deg))
         assert float(found.group(1)) == pytest.approx(data[f"{key}_deg"], abs=10.0 ** -max(
             4, _two_significant(u_deg)))
+
+
+@pytest.mark.parametrize(("kind", "key"), [("theodolite", "corrected_error_arcsec"),
+                                           ("polygon", "mean_corrected_error_arcsec")])
+def test_summary_range_converted_from_its_unrounded_ends(capsys, samples_dir, kind, key):
+    """Assessment 72 L5: the summary read in µrad or mdeg gave the corrected error's range
+    from its ends rounded in arcseconds ("−7.66 µrad", −1.58″ converted, where the end is
+    −7.644 µrad; the polygon's "−0.485 µrad" for −0.10″). Each end is the JSON's unrounded
+    one converted, then rounded at the arcsecond figure's resolution carried over (two
+    decimals of ″ are two of µrad, three of mdeg), the peak-to-peak the ends' difference as
+    printed."""
+    import json
+
+    sample = str(samples_dir / f"{kind}_sample.csv")
+    assert main(["analyze", kind, sample, "--json"]) == 0
+    errors = [x for x in json.loads(capsys.readouterr().out)[key] if x is not None]
+    for unit, decimals in (("urad", 2), ("mdeg", 3)):
+        assert main(["analyze", kind, sample, "--unit", unit]) == 0
+        out = capsys.readouterr().out
+        line = next(x for x in out.splitlines() if x.startswith("Corrected error"))
+        s = re.escape(SYMBOL[unit])
+        found = re.search(rf"([+-][\d.]+){s} … ([+-][\d.]+){s} \(peak-to-peak ([\d.]+){s}",
+                          line)
+        assert found, line
+        low, high, ptp = found.groups()
+        f = PER_ARCSEC[unit]
+        assert Decimal(low) == Decimal(_fixed(min(errors) * f, decimals)), line
+        assert Decimal(high) == Decimal(_fixed(max(errors) * f, decimals)), line
+        assert Decimal(ptp) == Decimal(high) - Decimal(low), line
+
+
+@pytest.mark.parametrize("key", ["urad", "mdeg"])
+def test_zones_read_in_another_unit_at_the_decimal_of_their_u(samples_dir, key):
+    """Assessment 72 L4: the zones read in µrad carried the decimal of U in arcseconds
+    ("pass ≤ 4.58 µrad (T − U₊, U₊ = 2.4 µrad)", 0.94″ converted; "12.12 µrad" beside
+    2.4 µrad). In any unit each limit is T converted less (plus) the U printed beside it,
+    rounded down to that U's decimal, as every other figure is printed to U's. The
+    theodolite sample decided against ±1.445″ under the guarded rule."""
+    import json
+
+    from models.certificate.metadata import CertificateMetadata
+    from models.display_units import ANGLE_UNITS, in_unit
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+
+    kind = KINDS["theodolite"]
+    sample = samples_dir / "theodolite_sample.csv"
+    parsed = ReadingsSheet(kind.columns, map_columns(read_table(str(sample)), kind.columns)).parse()
+    settings = kind.settings_with_defaults({})
+    details = json.loads((samples_dir / "certificate_theodolite.json").read_text("utf-8"))
+    details |= {"tolerance": 1.445, "tolerance_unit": "arcsec", "decision_rule": "guarded"}
+    document = kind.certificate_document(kind.analyze(parsed, settings),
+                                         CertificateMetadata.from_dict(details), sample.name,
+                                         settings)
+    text = str(in_unit(document.conformity.zones, ANGLE_UNITS[key]))
+    s = re.escape(SYMBOL[key])
+    number = r"(\d+(?:\.\d+)?)"
+    found = re.fullmatch(
+        rf"pass ≤ {number}{s} \(T − U₊, U₊ = {number}{s}\) < conditional pass ≤ .+ \(T\) < "
+        rf"conditional fail ≤ {number}{s} \(T \+ U₋, U₋ = {number}{s}\) < fail", text)
+    assert found, text
+    low, up, high, down = (Decimal(x) for x in found.groups())
+    t = Decimal(repr(1.445 * PER_ARCSEC[key]))
+    for limit, u, side in ((low, up, -1), (high, down, +1)):
+        d = -u.as_tuple().exponent
+        assert -limit.as_tuple().exponent == d, text
+        assert limit == (t + side * u).quantize(Decimal(1).scaleb(-d), "ROUND_FLOOR"), text

@@ -572,3 +572,49 @@ def test_show_and_verify_say_when_the_results_file_named_is_not_the_recorded_one
     said = capsys.readouterr().out
     assert f"{xlsx}: NOT in the register" in said
     assert f"the results file recorded with certificate {entry['number']} is {temp}" in said
+
+
+def test_an_issue_clears_a_killed_saves_stale_leftovers_and_keeps_fresh_ones(samples_dir,
+                                                                             tmp_path):
+    """reg72 #11: a half-written ``.r.xlsx.XXXXXXXX.tmp`` eleven minutes old (not recorded)
+    stayed beside the results file an issue wrote, though the docs say the next save clears
+    such leftovers after ten minutes: the issue's outputs (PDF, DCC, results file) are
+    written beside their names and placed, not by the atomic write that clears them. A
+    leftover of five minutes (a save that may still be going) is left alone."""
+    pdf, xlsx = tmp_path / "c.pdf", tmp_path / "r.xlsx"
+    stale = {name: tmp_path / f".{name}.ZzZz9999.tmp" for name in ("c.pdf", "r.xlsx")}
+    fresh = tmp_path / ".r.xlsx.Fresh123.tmp"
+    for leftover in (*stale.values(), fresh):
+        leftover.write_bytes(b"PK\x03\x04 half written")
+    for leftover in stale.values():
+        os.utime(leftover, (leftover.stat().st_mtime - 660,) * 2)
+    os.utime(fresh, (fresh.stat().st_mtime - 300,) * 2)
+    assert _issue(samples_dir, tmp_path, "--certificate", str(pdf), "--results",
+                  str(xlsx)) == 0
+    assert pdf.is_file() and xlsx.is_file()
+    assert [p for p in stale.values() if p.exists()] == []
+    assert fresh.read_bytes() == b"PK\x03\x04 half written"
+
+
+@pytest.mark.slow
+def test_a_recorded_leftover_kept_by_an_issue_is_said_once(samples_dir, tmp_path, capsys,
+                                                           monkeypatch):
+    """reg72 #11: the notice that a recorded results file was kept from under its temporary
+    name was printed twice (the command's line, and the same text again through logging's
+    last resort on stderr)."""
+    import logging
+
+    xlsx = tmp_path / "r.xlsx"
+    entry, temp = _killed_before_named(samples_dir, tmp_path, xlsx)
+    # as the command runs: no logging configured (pytest's own handler taken off), so that a
+    # warning goes to stderr by logging's last resort
+    monkeypatch.setattr(logging.root, "handlers", [])
+    capsys.readouterr()
+    assert _issue(samples_dir, tmp_path, "--certificate", str(tmp_path / "c2.pdf"),
+                  "--results", str(xlsx),
+                  details=_details(samples_dir, tmp_path, "d2.json", item_serial="X-2")) == 0
+    out, err = capsys.readouterr()
+    notice = (f"{temp} is the results file recorded with certificate {entry['number']}, left "
+              "under a temporary name by an issue stopped before it was named: kept as")
+    assert (out + err).count(notice) == 1
+    assert not temp.exists() and (tmp_path / f"r.{entry['number']}.xlsx").is_file()

@@ -48,3 +48,26 @@ def test_the_same_run_gives_the_same_number_and_other_results_another(samples_di
     nine = tmp_path / "nine_points.csv"
     nine.write_text("\n".join(sample.read_text("utf-8").splitlines()[:10]) + "\n", "utf-8")
     assert _specimen_number(samples_dir, nine) != number
+
+
+
+def test_the_same_results_in_any_language_give_the_same_number(samples_dir):
+    """Assessment 72 L8: the theodolite sample issued in en and in zh were SPECIMEN-9D13E820
+    and SPECIMEN-9C7ACC74; a specimen numbers the results, not the language they are read
+    in. One analysis, its certificate in each language (the details otherwise the same)."""
+    kind = KINDS["theodolite"]
+    sample = samples_dir / "theodolite_sample.csv"
+    parsed = ReadingsSheet(kind.columns, map_columns(read_table(str(sample)), kind.columns)).parse()
+    settings = kind.settings_with_defaults({})
+    result = kind.analyze(parsed, settings)
+    details = json.loads((samples_dir / "certificate_theodolite.json").read_text("utf-8"))
+
+    def number(**changed) -> str:
+        document = kind.certificate_document(
+            result, CertificateMetadata.from_dict(details | changed), sample.name, settings)
+        return specimen_document(document).metadata.certificate_number
+
+    numbers = {language: number(language=language) for language in ("en", "zh", "zh+en")}
+    assert len(set(numbers.values())) == 1, numbers
+    # the details still count: another customer, another number
+    assert number(language="en", customer_name="Another customer") != numbers["en"]

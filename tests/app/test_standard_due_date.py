@@ -31,7 +31,7 @@ def _details(due: str) -> CertificateMetadata:
 @pytest.mark.parametrize("due, expired", [("2027-05-01", False), ("2026-11-20", False),
                                           ("2026-11-19", True), ("", False)])
 def test_a_standard_due_before_the_calibration_date_is_a_gap_naming_it(due, expired):
-    gaps = [str(g) for g in traceability_gaps(_details(due), ("the theodolite",))]
+    gaps = [str(g) for g in traceability_gaps(_details(due), (("reference", "the theodolite"),))]
     if expired:
         assert len(gaps) == 1 and THEODOLITE in gaps[0] and "2026-11-19" in gaps[0]
         assert "expired" in gaps[0]

@@ -435,3 +435,27 @@ def test_a_standard_is_read_from_its_dcc(qtbot, tmp_path):
     again = CertificateDialog(dialog.metadata())
     qtbot.addWidget(again)
     assert again.metadata() == dialog.metadata()
+
+
+def test_a_standards_role_is_typed_in_its_column_and_comes_back(qtbot):
+    """Assessment 72 L2: a standard's role (which of the standards that carry the measurand
+    it is) is typed in the table's Role column, read into the details and shown again; a
+    row with a role alone is no standard."""
+    from PySide6.QtWidgets import QTableWidgetItem
+
+    dialog = CertificateDialog(CertificateMetadata())
+    qtbot.addWidget(dialog)
+    dialog.add_standard({"description": "Data acquisition (16-bit ADC)",
+                         "certificate_no": "CAL-2026-33", "uncertainty": 0.02})
+    table = dialog.standards
+    role = next(c for c in range(table.columnCount())
+                if table.horizontalHeaderItem(c).text().replace("\n", " ").startswith("Role"))
+    table.setItem(0, role, QTableWidgetItem("adc"))
+    dialog.add_standard({})
+    table.setItem(1, role, QTableWidgetItem("reference"))
+    meta = dialog.metadata()
+    assert [s.role for s in meta.standards] == ["adc"]
+    again = CertificateDialog(meta)
+    qtbot.addWidget(again)
+    assert again.standards.item(0, role).text() == "adc"
+    assert again.metadata() == meta

@@ -303,7 +303,7 @@ def test_xlsx_parameters_and_statistics_hold_numbers_with_units_in_headers():
     assert rms[1] == pytest.approx(result.identification.residual_rms_arcsec, abs=5e-4)
     stats = _sheet_rows(book, "Statistics")
     # ranges (from … to) and the decided quantity with its asymmetric U (value, U−, U+)
-    assert stats[0][:5] == ["Quantity", "Value", "Value (to | U−)", "Value (U+)", "Value: unit"]
+    assert stats[0][:5] == ["Quantity", "Value", "Value (to or U−)", "Value (U+)", "Value: unit"]
     decided = _decided_row(stats)
     # the lower half-width reaches the value itself where noise could explain the whole range
     # (the sample: 41 points, 0.5" noise); the value is the measured half range; the top is

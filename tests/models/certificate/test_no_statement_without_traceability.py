@@ -103,9 +103,12 @@ def test_a_fringe_record_with_no_phase_reference_listed_makes_no_statement():
     assert document.conformity.verdict == "not assessed"
     reason = str(document.conformity.reason)
     assert "traceability of the results is not established" in reason
-    # "1 listed so" names the standard listed and what is not
-    assert ("1 listed so (Data acquisition (16-bit ADC)): the standard for the other one is "
-            "not listed") in reason
+    # "1 listed so" names the standard listed and what is not: with no role stated, that
+    # the details do not say which of the two it is (assessment 72 L2: "the standard for the
+    # other one"; tests/models/certificate/test_traceability_roles.py names it by its role)
+    assert ("1 listed so (Data acquisition (16-bit ADC)), no role stated for Data "
+            "acquisition (16-bit ADC): the standard for a phase or angle reference or the ADC "
+            "(its figures stated in the settings) is not listed") in reason
     assert any("1 listed so (Data acquisition (16-bit ADC))" in str(g)
                for g in document.traceability_gaps)
     decided = workbench_uncertainty_json(kind, result, meta, None)["decided_quantity"]

@@ -55,8 +55,9 @@ def test_the_register_url_names_its_files():
     assert sqlite_path_of_url("postgresql://u@h/db") is None
     assert sqlite_path_of_url("sqlite:///:memory:") is None
     names = [str(p.path) for p in register_files("sqlite:////data/r.sqlite")]
+    # and the note naming the process that holds its write lock (reg72 #8)
     assert names == ["/data/r.sqlite", "/data/r.sqlite-journal", "/data/r.sqlite-wal",
-                     "/data/r.sqlite-shm", "/data/r.sqlite.issuing"]
+                     "/data/r.sqlite-shm", "/data/r.sqlite.issuing", "/data/r.sqlite.writer"]
 
 
 @pytest.mark.parametrize("suffix", ["", "-wal", "-shm", "-journal"])

@@ -61,7 +61,9 @@ def test_numbers_follow_the_scheme_and_are_never_issued_twice(register):
     assert typed.number == "AB-2026-0003" and third.number == "AB-2026-0004"
     next_year = CertificateMetadata(approver="Dr. Li")
     register.clock = on(dt.datetime(2027, 1, 2, 8, tzinfo=dt.timezone.utc))
-    assert register.issue(request(next_year), render)[0].number == "AB-2027-0001"
+    # over 30 days after the last record: today's date confirmed (reg73 #6)
+    assert register.issue(request(next_year), render, confirmed_date=dt.date(2027, 1, 2)
+                          )[0].number == "AB-2027-0001"
 
 
 def test_the_record_holds_the_project_versions_and_headline(register):
@@ -164,9 +166,6 @@ def test_an_amendment_references_the_original_which_stays_unchanged(register):
 
 
 def test_search_verify_history_and_due_date(register, monkeypatch):
-    # a year between calibrations with nothing issued in between: past the 90 days an issue
-    # may follow the last record by default (reg72 #3), said for these issues
-    monkeypatch.setenv("ANGLEBENCH_REGISTER_MAX_DAYS", "0")
     a, pdf_a = register.issue(request(headline={"p": 1.0}), render)
     other = CertificateMetadata(item_serial="ZZ-9", customer_name="Other Lab",
                                 calibration_date="2026-10-01", approver="Dr. Li")
@@ -174,7 +173,9 @@ def test_search_verify_history_and_due_date(register, monkeypatch):
     later = CertificateMetadata(**{**META.to_dict(), "standards": (),
                                    "calibration_date": "2027-05-01", "issue_date": ""})
     register.clock = on(dt.datetime(2027, 5, 2, 9, tzinfo=dt.timezone.utc))
-    b, _ = register.issue(request(later, {"p": 1.4}), render)
+    # months after the last record: today's date confirmed (reg73 #6)
+    b, _ = register.issue(request(later, {"p": 1.4}), render,
+                          confirmed_date=dt.date(2027, 5, 2))
     assert [r.number for r in register.list("acme")] == [b.number, a.number]
     assert [r.number for r in register.list("zz-9")] == ["AB-2026-0002"]
     assert register.verify(pdf_a).number == a.number
@@ -419,18 +420,17 @@ def _old_register(url: str, version: int, records: int, chained: bool) -> list[s
     return numbers, previous
 
 
-def test_an_old_register_gets_its_chain_when_migrated(register_url, monkeypatch):
+def test_an_old_register_gets_its_chain_when_migrated(register_url):
     """A genuine version-2 register (no chain): migration 3 chains its records, 4 keeps
     that chain value for value and continues it."""
-    # a year between calibrations with nothing issued in between: past the 90 days an issue
-    # may follow the last record by default (reg72 #3), said for these issues
-    monkeypatch.setenv("ANGLEBENCH_REGISTER_MAX_DAYS", "0")
     numbers, head = _old_register(register_url, 2, 3, chained=False)
     with Register(register_url) as reg:
         assert reg.version == schema.LATEST and reg.problems == [] and reg.find_head(head) == (3, head)
         assert [r.number for r in reg.list()] == numbers[::-1]
         assert reg.get(numbers[-1]).chain_sha256 == head
-        reg.clock = on(ISSUED)
+        # after the migration's baseline entry, recorded on the real clock (reg73 #8: an issue
+        # is compared with the last chained record of any kind)
+        reg.clock = on(dt.datetime.now(dt.timezone.utc) + dt.timedelta(minutes=1))
         before = reg.chain_head()  # after the migration's baseline (the counter as it stood)
         record, _ = reg.issue(request(), render)
         assert reg.chain_before(record.number) == before and reg.audit(pdfs=True) == []
@@ -848,9 +848,6 @@ def test_history_and_due_date_of_a_serial_typed_another_way_are_the_items(regist
     """#63 regkeys: "AB-10 5" and "ab105" are one item at issue (same_serial), but history()
     and due_date() matched the serial exactly: each spelling saw its own certificates only,
     and the due date followed the older calibration."""
-    # a year between calibrations with nothing issued in between: past the 90 days an issue
-    # may follow the last record by default (reg72 #3), said for these issues
-    monkeypatch.setenv("ANGLEBENCH_REGISTER_MAX_DAYS", "0")
     first = CertificateMetadata(**{**META.to_dict(), "standards": (), "item_serial": "AB-10 5",
                                    "calibration_date": "2026-11-20"})
     a, _ = register.issue(request(first, {"p": 1.0}), render)
@@ -859,7 +856,8 @@ def test_history_and_due_date_of_a_serial_typed_another_way_are_the_items(regist
     register.clock = on(dt.datetime(2027, 5, 2, 9, tzinfo=dt.timezone.utc))
     later = dataclasses.replace(first, item_serial="ab105", calibration_date="2027-05-01",
                                 issue_date="")
-    b, _ = register.issue(request(later, {"p": 1.4}), render, separate_calibration="")
+    b, _ = register.issue(request(later, {"p": 1.4}), render, separate_calibration="",
+                          confirmed_date=dt.date(2027, 5, 2))
     for serial in ("AB-10 5", "ab105", "AB105"):
         assert [r.number for r in register.history(serial)] == [a.number, b.number], serial
     register.set_interval("AB-10 5", 365)

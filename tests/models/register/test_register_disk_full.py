@@ -112,3 +112,43 @@ def test_sqlites_io_error_on_a_full_disk_is_said_as_a_full_disk(monkeypatch, fre
         assert said.format(path=path) in str(refused.value)
         monkeypatch.setattr(Register, "_set_state", kept)
         assert _state(register) == before
+
+
+@pytest.mark.parametrize(("free", "said"), [
+    (0, "the disk is full at {path}: nothing was recorded; the register is unchanged"),
+    (10 << 30, "disk I/O error")])
+def test_sqlites_io_error_on_connecting_to_a_full_disk_is_said_as_a_full_disk(
+        monkeypatch, capsys, free, said):
+    """reg72 #7 as it happens: on a full tmpfs SQLite fails already when a connection is
+    made, its "PRAGMA journal_mode=WAL" unable to map the WAL index (SQLITE_IOERR_SHMSIZE),
+    before any write: the register's opening said "disk I/O error". With no room left in
+    the register's folder it is the full disk's words; with room, the I/O error as it is."""
+    import shutil
+    import sqlite3
+    from collections import namedtuple
+
+    import models.register.store as store
+
+    url = register_url()
+    with Register(url) as register:
+        number = _issued(register)[0]
+    path = url.split("///", 1)[1]
+
+    def no_wal_index(dbapi_connection, _record) -> None:
+        error = sqlite3.OperationalError("disk I/O error")
+        error.sqlite_errorname = "SQLITE_IOERR_SHMSIZE"
+        raise error
+
+    usage = namedtuple("usage", "total used free")
+    monkeypatch.setattr(store, "_sqlite_connect", no_wal_index)
+    monkeypatch.setattr(shutil, "disk_usage", lambda _path: usage(1 << 30, 1 << 30, free))
+    with pytest.raises(RegisterError) as refused:
+        Register(url)
+    assert said.format(path=path) in str(refused.value)
+    capsys.readouterr()
+    assert main(["register", "--register", path, "withdraw", number, "--reason",
+                 "wrong item"]) == 2
+    assert said.format(path=path) in capsys.readouterr().err
+    monkeypatch.undo()
+    with Register(url) as register:
+        assert [(r.number, r.status) for r in register.list()] == [(number, "issued")]
