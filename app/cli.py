@@ -977,7 +977,11 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
             _say(rendered(message(QT_TR_NOOP("Results written to {path}"), path=args.results),
                           words))
     except DccError as exc:
-        _say(rendered(message(QT_TR_NOOP("anglebench analyze: {reason}; neither the certificate "
+        # said of the document it is (assessment 73 L2)
+        _say(rendered(message(QT_TR_NOOP("anglebench analyze: {reason}; neither the test report "
+                                         "nor its DCC was written")
+                              if document.is_test_report else
+                              QT_TR_NOOP("anglebench analyze: {reason}; neither the certificate "
                                          "nor its DCC was written"), reason=reason_of(exc)),
                       words))
         return EXIT_BAD_INPUT

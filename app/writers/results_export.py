@@ -38,6 +38,7 @@ from models.messages import QT_TR_NOOP, Message, joined, listed, message, separa
 from models.project.atomic_write import write_bytes_atomic
 from models.quantity import UNITS
 from models.register.wording import revision_words
+from models.uncertainty.conformity import RISK_BOUND_NOTE
 
 if TYPE_CHECKING:
     from models.register.store import CertificateRecord
@@ -307,18 +308,36 @@ def _revision(issued: CertificateRecord) -> Message:
     return revision
 
 
-def probability_cell(probability: float) -> float | str | None:
+def probability_cell(probability: float, bound: str = "") -> float | str | None:
     """A probability of conformity or of a wrong decision as the sheet gives it, in percent,
     by the certificate's rule (assessment 70 L1: "100" and "0" beside the PDF's "< 0.01 %"):
     to two decimals, a number; within 0.01 % of 0 or of 100 the bound as text, "< 0.01" or
-    "> 99.99", as no such probability is certain (the JSON keeps it unrounded)."""
+    "> 99.99", as no such probability is certain (the JSON keeps it unrounded). ``bound``:
+    the figure is a bound, not the probability ("≤" at most, "≥" at least: every point
+    deciding, Boole's inequality), given as text with its sign, "≤ 79.91", "≥ 0.00"
+    (assessment 73 M6: "< 0.01" of a lower bound of 0 read as a certain non-conformity)."""
     if probability is None or not math.isfinite(probability):
         return None
+    if bound:
+        figure = 100.0 * probability
+        # the bound as printed never claims more than it bounds: at most rounded up, at
+        # least rounded down
+        shown = (math.ceil(figure * 100.0 - 1e-9) if bound == "≤"
+                 else math.floor(figure * 100.0 + 1e-9)) / 100.0
+        return f"{bound} {min(max(shown, 0.0), 100.0):.2f}"
     if probability < 1e-4:
         return "< 0.01"
     if probability > 1.0 - 1e-4:
         return "> 99.99"
     return round(100.0 * probability, 2)
+
+
+def _conforming_bound(conformity) -> str:
+    """How the probability of conformity bounds it where it is a bound: at least it after a
+    pass (1 − the sum over the points), at most it after a fail (the deciding point's)."""
+    if not conformity.risk_is_bound:
+        return ""
+    return "≥" if conformity.verdict in ("pass", "conditional pass") else "≤"
 
 
 def _metadata_rows(document: CertificateDocument,
@@ -377,11 +396,17 @@ def _metadata_rows(document: CertificateDocument,
         # made (the error not traceable, U incomplete, U ≥ T) a probability would rest on
         # that U (audit 69 finding 3: "100" beside "not assessed")
         ("Probability of conformity (%)",
-         probability_cell(document.conformity.conforming_probability)
+         probability_cell(document.conformity.conforming_probability,
+                          _conforming_bound(document.conformity))
          if document.conformity.stated else None),
         ("Probability of a wrong decision (%)",
-         probability_cell(document.conformity.decision_risk)
+         probability_cell(document.conformity.decision_risk,
+                          "≤" if document.conformity.risk_is_bound else "")
          if document.conformity.stated else None),
+        # where the two are bounds, said so beside them (assessment 73 M6)
+        ("Probabilities stated as",
+         message(RISK_BOUND_NOTE) if document.conformity.stated
+         and document.conformity.risk_is_bound else None),
         ("Verdict", document.conformity.verdict),
         ("No statement of conformity because", document.conformity.reason),
         ("Conformity", document.conformity.statement),
@@ -584,7 +609,7 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
                        for v in row])
         if table.note:
             ws.append([neutralise(words.cell(text_in_unit(table.note, unit)))])
-    ws = book.create_sheet("Certificate")
+    ws = book.create_sheet(details_sheet_name(document))
     wrapped = Alignment(wrap_text=True, vertical="top")  # a bilingual text: Chinese above
     for key, value in _metadata_in_unit(_metadata_rows(document, issued), unit, words):
         value = _cell(value)
@@ -595,6 +620,18 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
     out = io.BytesIO()
     book.save(out)
     return out.getvalue()
+
+
+#: the sheet of the document's details and statements, by what the document is: a
+#: calibration certificate's, a test report's (assessment 73 L4: a test report's was named
+#: *Certificate*); the same name in every language, as the other sheets keep theirs
+DETAILS_SHEETS = {False: "Certificate", True: "Report"}
+
+
+def details_sheet_name(document: CertificateDocument) -> str:
+    """The name of the sheet of ``document``'s details: *Certificate*, or *Report* for a
+    test report."""
+    return DETAILS_SHEETS[bool(document.is_test_report)]
 
 
 def write_results_xlsx(path: str | Path, document: CertificateDocument,
@@ -630,9 +667,11 @@ def issue_stated(data: bytes) -> dict[str, str] | None:
     except (zipfile.BadZipFile, OSError, ValueError, KeyError):
         return None
     try:
-        if "Certificate" not in book.sheetnames:
+        sheet = next((name for name in DETAILS_SHEETS.values() if name in book.sheetnames),
+                     None)
+        if sheet is None:
             return None
-        rows = [tuple(r) + (None, None) for r in book["Certificate"].iter_rows(
+        rows = [tuple(r) + (None, None) for r in book[sheet].iter_rows(
             max_row=max(_ISSUE_ROWS.values()) + 1, max_col=2, values_only=True)]
     finally:
         book.close()

@@ -149,10 +149,13 @@ class CertificateDocument:
     @property
     def is_test_report(self) -> bool:
         """A test report: asked for, or a calibration certificate that cannot state
-        traceability (its standards listed, but not every one that carries the measurand
-        with a certificate and a stated U; or an input with no stated uncertainty)."""
+        traceability (not every standard that carries the measurand listed with a
+        certificate and a stated U; or an input with no stated uncertainty, whether or not
+        a standard is listed: a cross-calibration with no comparator listed, assessment 73
+        M2, was titled a calibration certificate while its U lacked the comparator's
+        calibration)."""
         return (self.metadata.document_type == "test" or bool(self.traceability_gaps)
-                or bool(self.untraceable and self.metadata.standards))
+                or bool(self.untraceable))
 
     @property
     def not_in_u_statement(self) -> str:

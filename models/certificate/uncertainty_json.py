@@ -23,6 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -95,6 +96,24 @@ def _floor(budget: UncertaintyBudget | PointUncertainty | None) -> float:
     return float(getattr(budget, "floor", 0.0) or 0.0) if budget is not None else 0.0
 
 
+def tolerance_stated_json(tolerance: Any) -> dict[str, Any] | None:
+    """The tolerance as the customer stated it (assessment 73 M4: the JSON gave only its
+    conversion to the errors' unit, from which a simple or conditional verdict cannot be
+    redone): ``value`` the number (a JSON number), ``decimals`` the places it was typed to
+    (trailing zeros kept: "4.600" is 3; the last place ASTM E29 rounds a value compared
+    with it to), ``text`` the number as typed ("4.600") and ``unit`` its unit's key; None
+    where the tolerance decided is not one the details state (a polygon's grade)."""
+    stated = getattr(tolerance, "stated", None)
+    if stated is None:
+        return None
+    from models.uncertainty.rounding import stated_decimals
+
+    number, key = stated
+    decimals = stated_decimals(number)
+    return {"value": _number(float(number)), "decimals": decimals,
+            "text": f"{float(number):.{decimals}f}", "unit": str(key)}
+
+
 def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> dict[str, Any] | None:
     """The decided quantity as the JSON states it; None without a tolerance."""
     if tolerance is None:
@@ -126,7 +145,15 @@ def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> di
         "probability_conforming": _number(conformity.conforming_probability) if stated else None,
         # false acceptance after a pass, false rejection after a fail (JCGM 106 specific risk)
         "decision_risk": _number(conformity.decision_risk) if stated else None,
+        # whether the two are bounds (every point deciding, two points or more: Boole's
+        # inequality): decision_risk then at most the figure, probability_conforming at
+        # least it after a pass and at most it after a fail (assessment 73 M6: a bound of
+        # 1.0 read as a certain false acceptance); the figures keep their keys and meaning
+        "decision_risk_is_bound": bool(conformity.risk_is_bound) if stated else None,
     }
+    said = tolerance_stated_json(tolerance)
+    if said is not None:
+        out["tolerance_stated"] = said
     if not stated:
         out["reason"] = str(conformity.reason or conformity.statement)
     compared = conformity.compared
@@ -238,6 +265,11 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
                 "coverage_probability": None, "unit": unit,
                 "tolerance": _number(tolerance), "verdict": None,
                 "rule": metadata.decision_rule, "reason": why}
+            given = getattr(metadata, "tolerance_quantity", None)
+            said = None if given is None else tolerance_stated_json(
+                SimpleNamespace(stated=(given.value, given.unit.key)))
+            if said is not None:
+                out["decided_quantity"]["tolerance_stated"] = said
     else:  # the figure is always stated, even where the decision could not compute it
         decided = out.get("decided_quantity")
         if decided is not None and decided["value"] is None:

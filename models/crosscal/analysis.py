@@ -470,6 +470,25 @@ def _list(values) -> list[float] | None:
     return None if values is None else [float(v) for v in values]
 
 
+#: why a mounting's closure is null in the JSON (``closure_arcsec_reason``)
+CLOSURE_NOT_READ = QT_TR_NOOP("null for mounting(s) {mountings}: no closure reading of the first "
+                              "face after the full turn was taken there")
+#: why a mounting's drift is null in the JSON (``drift_arcsec_reason``)
+DRIFT_NOT_MEASURED = QT_TR_NOOP("null for mounting(s) {mountings}: the drift is not measured "
+                                "there (no closure reading of its own, and the design does not "
+                                "determine it through the other mountings' closure readings)")
+
+
+def _null_mountings_reason(mountings, values, template: str) -> Message | None:
+    """``template`` naming the mountings whose value in ``values`` is not a finite number;
+    None where every one is."""
+    if values is None:
+        return None
+    missing = [str(j) for j, v in zip(mountings, np.asarray(values, dtype=float), strict=False)
+               if not math.isfinite(float(v))]
+    return message(template, mountings=", ".join(missing)) if missing else None
+
+
 def to_json(result: CrossCalResult) -> dict[str, Any]:
     s = result.solution
     u_e, u_d = result.expanded_u_arcsec if s.separable else (None, None)
@@ -502,6 +521,12 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
         "polygon_deviation_sign_convention": POLYGON_SIGN_CONVENTION,
         "warnings": result.warnings,
     }
+    # the mountings whose closure or drift is null, and why (assessment 73 M3: null with no
+    # reason where no closure reading was taken); null where every value is given
+    out["closure_arcsec_reason"] = _null_mountings_reason(
+        s.mountings, result.closure_arcsec, CLOSURE_NOT_READ)
+    out["drift_arcsec_reason"] = _null_mountings_reason(s.mountings, s.drift_arcsec,
+                                                        DRIFT_NOT_MEASURED)
     if result.encoder_u_withheld is not None:  # the encoder's U null, and why
         out["encoder_error_U_withheld"] = result.encoder_u_withheld
     if result.polygon_u_withheld is not None:  # the face deviations' U null, and why
@@ -723,6 +748,13 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
         _check_analysed_with(result, settings)
         return crosscal_certificate(result, metadata, source_name, self.method_reference,
                                     settings)
+
+    def inputs_not_stated(self, result, metadata):
+        # the comparator's calibration, where no comparator is listed with a stated U: an
+        # input of every reading whether or not a standard is listed (assessment 73 M2)
+        from models.crosscal.export import comparator_not_stated
+
+        return comparator_not_stated(metadata)
 
     def dcc_point_uncertainties(self, result, metadata=None, settings=None):
         """The encoder's error from step 0: its U (the certificate's "U from step 0", the

@@ -20,13 +20,36 @@ if TYPE_CHECKING:
 
     from models.crosscal.analysis import CrossCalResult
 
-__all__ = ["WITHOUT_COMPARATORS", "comparators_stated", "polygon_deviation_rows",
+__all__ = ["COMPARATOR_NOT_STATED", "WITHOUT_COMPARATORS", "comparator_not_stated",
+           "comparators_stated", "polygon_deviation_rows",
            "polygon_deviations", "polygon_reference_csv", "write_polygon_reference"]
 
 #: said of a U from face 1 sent or written without the comparators' calibration U (the
 #: sent reference's name, the window's message; the file's header in English)
 WITHOUT_COMPARATORS = QT_TR_NOOP("without the comparators' calibration U: not stated in the "
                                  "cross-calibration's certificate details")
+
+
+#: the input a cross-calibration's U lacks where no comparator is listed with a stated U
+#: (the certificate's inputs not stated, the JSON's uncertainty_inputs_not_stated): every
+#: reading is made with the autocollimator, and its indication error is known only within
+#: its certificate's U (models.crosscal.report: its budget row "Comparator calibration"),
+#: whether or not a standard is listed (assessment 73 M2: with none listed the row, 69.5 %
+#: of U, was dropped without a word and a pass stated on half the U)
+COMPARATOR_NOT_STATED = QT_TR_NOOP("Comparator calibration (the autocollimator's: no comparator "
+                                   "listed with a stated uncertainty)")
+
+
+def comparator_not_stated(metadata: Any) -> list[str]:
+    """[:data:`COMPARATOR_NOT_STATED`] where the certificate details ``metadata`` list no
+    comparator with a stated U and no standard listed without one (which the certificate
+    names as not stated itself, by its description: models.certificate.traceability
+    .standards_not_stated); else []."""
+    if metadata is None or comparators_stated(metadata):
+        return []
+    if any(std.uncertainty is None for std in metadata.standards):
+        return []
+    return [COMPARATOR_NOT_STATED]
 
 
 def comparators_stated(metadata: Any) -> bool:

@@ -30,6 +30,7 @@ from models.certificate.builder import (
 from models.certificate.document import CertificateDocument, Table, range_cells
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.crosscal import KEY, POLYGON_SIGN_CONVENTION_TEXT, TITLE
+from models.crosscal.export import comparator_not_stated
 from models.crosscal.figures import encoder_figures
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
 from models.messages import QT_TR_NOOP, message, separated
@@ -541,11 +542,15 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         plots = [polygon_figure(result, u=big_u)]  # the table's U
     sign = {} if item == "encoder" else {"sign_convention": POLYGON_SIGN_CONVENTION_TEXT}
     statements = (
+        # the autocollimator gives no reference value, but its calibration is an input of
+        # U (its budget row, or named as not stated): "a comparator only" read as though it
+        # were none (assessment 73 M2)
         message(QT_TR_NOOP("No calibrated reference value enters these results: the polygon and "
                            "the encoder are calibrated against each other by the closure of the "
-                           "circle. The autocollimator is a comparator only; its readings span "
-                           "{low} … {high}, over which its scale error is an input of the "
-                           "uncertainty."),
+                           "circle. The autocollimator serves as the comparator: its calibration "
+                           "(the uncertainty its certificate states) is an input of the "
+                           "uncertainty, as is its scale error over its readings' span {low} … "
+                           "{high}."),
                 low=f"{np.min(result.readings.ac_x_arcsec):+.1f}\"",
                 high=f"{np.max(result.readings.ac_x_arcsec):+.1f}\""),
         _correlation_statement(result, item, metadata),
@@ -570,7 +575,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         parameters=parameters, results=results,
         statistics=Statistics(first_rows, QT_TR_NOOP("steps") if item == "encoder"
                               else QT_TR_NOOP("faces"), more_rows),
-        decision=Decision(values, what, names),
+        decision=Decision(values, what, names, not_stated=tuple(comparator_not_stated(metadata))),
         budget_point=lambda worst: _budget_point(point, worst if item == "encoder" else worst + 1,
                                                  big_u, item),
         tolerance=metadata.tolerance_in("arcsec"),

@@ -719,6 +719,28 @@ def _decided(b: _Builder, results, p: float) -> None:
         q = etree.SubElement(data, D + "quantity", refType="anglebench_decidedQuantity")
         b.text(q, "name", QT_TR_NOOP("Decided quantity"))
         b.real(q, c.value, unit)
+    _tolerance_stated(b, data)
+
+
+def _tolerance_stated(b: _Builder, data) -> None:
+    """The tolerance ±T as the customer stated it, beside the decided quantity: its number
+    in its own unit, the number as typed (trailing zeros kept: the place ASTM E29 rounds a
+    value compared with it to) its si:label, so that a machine reader redoes the decision
+    from the DCC's figures (assessment 73 M4: T only inside the statement's text). None
+    where the tolerance decided is not one the details state (a polygon's grade)."""
+    from models.quantity import UNITS
+    from models.uncertainty.rounding import stated_decimals
+
+    stated = getattr(b.document.tolerance, "stated", None)
+    if stated is None or stated[1] not in UNITS:
+        return
+    number, key = stated
+    q = etree.SubElement(data, D + "quantity", refType=b.ref(
+        "anglebench_toleranceStated", "the tolerance ±T as the customer stated it, in its "
+        "unit; its si:label is the number as typed, to the places typed"))
+    b.text(q, "name", QT_TR_NOOP("Tolerance as stated"))
+    b.real(q, float(number), _SYMBOLS.get(UNITS[key].symbol, r"\one"),
+           label=f"{float(number):.{stated_decimals(number)}f}")
 
 
 def _budget(b: _Builder, results, unit: str) -> None:
@@ -936,10 +958,23 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
     software = software or software_identity()
     meta = document.metadata
     if document.is_draft:  # a DRAFT is no certificate: its DCC would read as one
-        raise DccError(message(QT_TR_NOOP(
-            "no DCC written: the certificate is a DRAFT ({missing} missing); a digital "
-            "certificate is made only of a complete one"), missing=", ".join(
-                _say(m, "en") for m in meta.missing_fields())))
+        # said of the document it is (a test report's "report number"; a specimen is no
+        # draft: its details are incomplete) (assessment 73 L2: "the certificate is a DRAFT"
+        # of a specimen test report)
+        report = document.is_test_report
+        missing = ", ".join(_say(m, "en") for m in meta.missing_fields(report))
+        raise DccError(message(
+            (QT_TR_NOOP("no DCC written: the specimen test report's details are incomplete "
+                        "({missing} missing); a digital document is made only of complete "
+                        "details") if report else
+             QT_TR_NOOP("no DCC written: the specimen certificate's details are incomplete "
+                        "({missing} missing); a digital certificate is made only of complete "
+                        "details")) if document.specimen else
+            QT_TR_NOOP("no DCC written: the test report is a DRAFT ({missing} missing); a "
+                       "digital document is made only of a complete one") if report else
+            QT_TR_NOOP("no DCC written: the certificate is a DRAFT ({missing} missing); a "
+                       "digital certificate is made only of a complete one"),
+            missing=missing))
     b = _Builder(document, bilingual=True)
     root = etree.Element(D + "digitalCalibrationCertificate", nsmap=v.NSMAP,
                          schemaVersion=v.SCHEMA_VERSION)

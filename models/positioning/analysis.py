@@ -25,6 +25,7 @@ from models.positioning.model import (
     infer_directions,
 )
 from models.positioning.report import (
+    NEEDS_BOTH_DIRECTIONS,
     axis_figure_values,
     figure_decimals,
     intervals_withheld,
@@ -530,6 +531,11 @@ def to_json(result: PositioningResult) -> dict[str, Any]:
     per_target["B_i"] = _array(iso.reversal)
     per_target["M_i"] = _array(iso.bidirectional_mean)
     per_target["R_i"] = _array(iso.bidirectional_repeatability)
+    # why they are null where one direction was measured (assessment 73 M3), the figures'
+    # interval_reason convention: a reason beside each, null where they are given
+    both = None if result.bidirectional else message(NEEDS_BOTH_DIRECTIONS)
+    for key in ("B_i", "M_i", "R_i"):
+        per_target[f"{key}_reason"] = both
     return {
         "target_unit": result.target_unit,
         "deviation_unit": result.deviation_unit,

@@ -86,6 +86,7 @@ __all__ = ["FIGURE_NAMES", "axis_figures", "figure_decimals", "figure_uncertaint
            "intervals_determined", "intervals_withheld", "readings_figure_intervals",
            "readings_step_component",
            "stated_figure_intervals", "withheld_figure_reasons", "one_direction_reasons",
+           "DIRECTION_NOT_MEASURED", "NEEDS_BOTH_DIRECTIONS",
            "positioning_budget", "positioning_certificate", "repeated_readings_components"]
 
 METHOD = QT_TR_NOOP(
@@ -476,12 +477,26 @@ NEEDS_BOTH_DIRECTIONS = QT_TR_NOOP("not evaluated: it needs both approach direct
 BOTH_DIRECTIONS_KEYS = ("A", "E", "M", "R", "B", "B_mean", "P", "U_max")
 
 
+#: why a figure of one direction is null where that direction was not measured (the JSON's
+#: ``interval_reason``: assessment 73 M3, A↓, E↓ and R↓ null with no reason)
+DIRECTION_NOT_MEASURED = {
+    "up": QT_TR_NOOP("not evaluated: the readings have no approach in the ↑ direction"),
+    "down": QT_TR_NOOP("not evaluated: the readings have no approach in the ↓ direction")}
+#: the figures of one direction (ISO 230-2), by the suffix of their keys
+ONE_DIRECTION_KEYS = ("A", "E", "R")
+
+
 def one_direction_reasons(result: PositioningResult) -> dict[str, Message]:
-    """Why each figure of both directions is null where one approach direction only was
-    measured ({} where both were)."""
+    """Why each figure of both directions, and each figure of the direction not measured,
+    is null where one approach direction only was measured ({} where both were)."""
     if result.bidirectional:
         return {}
-    return {key: message(NEEDS_BOTH_DIRECTIONS) for key in BOTH_DIRECTIONS_KEYS}
+    present = {name for name, _, _ in result.directions_present()}
+    out = {key: message(NEEDS_BOTH_DIRECTIONS) for key in BOTH_DIRECTIONS_KEYS}
+    for direction, template in DIRECTION_NOT_MEASURED.items():
+        if direction not in present:
+            out.update({f"{key}_{direction}": message(template) for key in ONE_DIRECTION_KEYS})
+    return out
 
 
 def readings_figure_intervals(result: PositioningResult) -> dict[str, FigureInterval]:

@@ -64,6 +64,7 @@ from models.uncertainty.rounding import (
 
 __all__ = [
     "DECISION_QUANTITIES",
+    "RISK_BOUND_NOTE",
     "DECISION_RULES",
     "ComparedValue",
     "Conformity",
@@ -489,6 +490,17 @@ class Conformity:
     # conditional fail), rounded as ASTM E29 §6.4 does (:func:`compared_with_limit`); None
     # when no statement is made
     compared: ComparedValue | None = None
+    # the probabilities are bounds, not the probabilities themselves (every point deciding,
+    # two points or more: Boole's inequality): ``decision_risk`` is then at most the figure,
+    # ``conforming_probability`` at least it after a pass, at most it after a fail
+    # (assessment 73 M6: "100.00 %" and "< 0.01 %" printed of a bound beside a pass)
+    risk_is_bound: bool = False
+
+    @property
+    def risk_not_bounded(self) -> bool:
+        """The bound on the probability of a wrong decision reaches 100 % (to 0.01 %): the
+        method then bounds nothing."""
+        return self.risk_is_bound and self.decision_risk > 1.0 - 1e-4
 
     @property
     def conforms(self) -> bool | None:
@@ -618,6 +630,17 @@ class ComparedValue:
     # printed beside the statement's value: it is not that figure (T stated finer than U's
     # digit, or in another unit)
     apart: bool
+    # T's last significant place as stated, in T's unit (its decimals): where ``decimals``
+    # is finer, U's digit was kept beyond it, and the statement says so (assessment 73 M1:
+    # 0.545″ against ±0.54″ failed with no word of the place it was compared to)
+    limit_decimals: int = -1
+
+    @property
+    def said(self) -> bool:
+        """Whether the statement prints the figure compared and how it was rounded: it is
+        not the printed value, or it keeps a digit finer than T's last place as stated (E29
+        alone would round it to T's place)."""
+        return self.apart or self.decimals > self.limit_decimals
 
     @property
     def within(self) -> bool:
@@ -654,7 +677,7 @@ def compared_with_limit(exact: float, shown: float, places: int, t: float,
             decimals = max(stated_decimals(number),
                            max(0, math.ceil(-math.log10(step) - 1e-9)))
             return ComparedValue(e29_rounded(exact * factor, decimals), float(number),
-                                 decimals, symbol, key, True)
+                                 decimals, symbol, key, True, stated_decimals(number))
     number = stated[0] if stated is not None else t
     decimals = stated_decimals(number)
     try:
@@ -667,15 +690,21 @@ def compared_with_limit(exact: float, shown: float, places: int, t: float,
         # printed figure then is not the one compared, and the statement says so
         rounded = e29_rounded(exact, places)
         if abs(rounded - float(shown)) < 0.5 * 10.0 ** -places:
-            return ComparedValue(float(shown), float(t), places, symbol, unit_key, False)
-        return ComparedValue(rounded, float(t), places, symbol, unit_key, True)
+            return ComparedValue(float(shown), float(t), places, symbol, unit_key, False,
+                                 decimals)
+        return ComparedValue(rounded, float(t), places, symbol, unit_key, True, decimals)
     return ComparedValue(e29_rounded(exact, decimals), float(t), decimals, symbol, unit_key,
-                         True)
+                         True, decimals)
 
 
-#: the value compared with T where it is not the statement's printed value (ASTM E29 §6.4)
-COMPARED_WITH_T = QT_TR_NOOP("Compared with T: {value}, the result rounded to the last place of "
-                             "T as stated (ASTM E29 §6.4, the rounding method).")
+#: the value compared with T where it is not the statement's printed value, or keeps a digit
+#: finer than T's last place (:attr:`ComparedValue.said`): the rule as it is done, the finer
+#: of the two places (until 0.8.21 "rounded to the last place of T as stated (ASTM E29
+#: §6.4)", which a value printed 2.3571 µrad beside ±2.357 µrad contradicted: assessment
+#: 73 M1)
+COMPARED_WITH_T = QT_TR_NOOP("Compared with T: {value}, the result rounded to the finer of T's "
+                             "last place as stated and U's last digit (ASTM E29 §6.4 rounds to "
+                             "T's last place; the finer digit of U is kept).")
 
 
 def printed_verdict(value: float, minus: float, plus: float, t: float, rule: str, d: int,
@@ -716,11 +745,12 @@ def printed_verdict(value: float, minus: float, plus: float, t: float, rule: str
 def _with_compared(sentence: str, compared: ComparedValue, rule: str, verdict: str) -> str:
     """The statement's verdict sentence, followed by the value compared with T where that
     comparison decided (simple acceptance; a conditional pass or fail) and the figure is
-    not the printed value (:func:`compared_with_limit`), so that the verdict is re-done
-    from the figures printed."""
+    not the printed value or keeps a digit finer than T's last place
+    (:func:`compared_with_limit`, :attr:`ComparedValue.said`), so that the verdict is
+    re-done from the figures printed and the rounding said as it is done."""
     decided_on_value = rule == "simple" or (rule == "guarded" and verdict in (
         "conditional pass", "conditional fail"))
-    if not (compared.apart and decided_on_value):
+    if not (compared.said and decided_on_value):
         return sentence
     return separated([sentence, message(COMPARED_WITH_T, value=compared.text)], " ")
 
@@ -772,9 +802,41 @@ def _incomplete_reason(inputs) -> str:
                    inputs=listed(message(name) for name in inputs))
 
 
-def _risk_sentence(verdict: str, risk: float) -> str:
+#: how the probabilities are stated where they are bounds (every point deciding: Boole's
+#: inequality over the points), on the certificate's sheet beside them
+RISK_BOUND_NOTE = QT_TR_NOOP(
+    "bounds, not the probabilities themselves (Boole's inequality over the points): the "
+    "probability of a wrong decision is at most the figure given, the probability of "
+    "conformity at least it after a pass and at most it after a fail; a bound of 100 % on "
+    "the probability of a wrong decision leaves it not bounded by this method")
+
+
+def _risk_sentence(verdict: str, risk: float, bound: bool = False) -> str:
+    """The probability of a wrong decision at the decision stated; where it is a bound
+    (``bound``: the sum over the points after a pass, the deciding point's after a fail)
+    said to be one: "at most", or not bounded where the bound reaches 100 %."""
     figure = "< 0.01" if risk < 1e-4 else f"{100 * risk:.2f}"
-    if verdict in ("pass", "conditional pass"):
+    accepted = verdict in ("pass", "conditional pass")
+    if bound and risk > 1.0 - 1e-4:
+        return message(QT_TR_NOOP(
+            "Probability of a false acceptance at this decision: not bounded by this method "
+            "(the sum over the points of each one's probability of lying outside ±T, its "
+            "bound by Boole's inequality, reaches 100 %; specific risk, JCGM 106).")
+            if accepted else QT_TR_NOOP(
+            "Probability of a false rejection at this decision: not bounded by this method "
+            "(the deciding point's probability of lying within ±T, its bound, reaches 100 %; "
+            "specific risk, JCGM 106)."))
+    if bound:
+        # a bound printed never below itself: rounded up to the 0.01 % printed
+        at_most = f"{max(math.ceil(risk * 1e4 - 1e-9), 1) / 100:.2f}"
+        return message(QT_TR_NOOP(
+            "Probability of a false acceptance at this decision: at most {p} % (a bound: the "
+            "sum over the points of each one's probability of lying outside ±T, Boole's "
+            "inequality; specific risk, JCGM 106).") if accepted else QT_TR_NOOP(
+            "Probability of a false rejection at this decision: at most {p} % (a bound: the "
+            "deciding point's probability of lying within ±T; specific risk, JCGM 106)."),
+            p=at_most)
+    if accepted:
         return message(QT_TR_NOOP("Probability of a false acceptance at this decision: {p} % "
                                   "(specific risk, JCGM 106)."), p=figure)
     return message(QT_TR_NOOP("Probability of a false rejection at this decision: {p} % "
@@ -788,7 +850,8 @@ def _with_risk(conformity: Conformity) -> Conformity:
     import dataclasses
 
     return dataclasses.replace(conformity, statement=separated(
-        [conformity.statement, _risk_sentence(conformity.verdict, conformity.decision_risk)],
+        [conformity.statement, _risk_sentence(conformity.verdict, conformity.decision_risk,
+                                              conformity.risk_is_bound)],
         " "), quantity=separated([conformity.quantity, message(
             RISK_METHOD_FIGURE if conformity.monte_carlo is not None else RISK_METHOD)]))
 
@@ -936,7 +999,7 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
                     zones=_zones(t, band, band, rule, d, q))
     return Conformity(verdict, text, rule_text, quantity_text, zones=zones,
                       decision_risk=_risk(verdict, conforming), compared=compared[worst],
-                      **values, **common)
+                      risk_is_bound=e.size > 1, **values, **common)
 
 
 def _point_figures(x: float, w: float, q: str) -> dict[str, PrintedFigure]:

@@ -40,8 +40,9 @@ from models.quantity import UnitError, unit
 from models.uncertainty.rounding import stated_interval, uncertainty_decimals
 
 __all__ = ["CONVERTED_LIMIT_DIGITS", "PrintedFigure", "PrintedRange", "converted_limit",
-           "interval_range", "printed", "printed_interval_figures", "printed_range_figures",
-           "rounded_to", "StatedLimit", "StatedTolerance", "tolerance_figure", "ZoneLimit"]
+           "converted_text", "interval_range", "printed", "printed_interval_figures",
+           "printed_range_figures", "rounded_to", "StatedLimit", "StatedTolerance",
+           "tolerance_figure", "ZoneLimit"]
 
 
 def rounded_to(value: float, decimals: int, rounding: str = "nearest") -> float:
@@ -333,6 +334,19 @@ def converted_limit(number: float, key: str, unit_key: str) -> float:
     return float(f"{float(number) * unit(key).size / unit(unit_key).size:.{CONVERTED_LIMIT_DIGITS}g}")
 
 
+def converted_text(value: float) -> str:
+    """A tolerance converted to another unit (:func:`converted_limit`) as printed beside the
+    one stated: its :data:`CONVERTED_LIMIT_DIGITS` significant digits, trailing zeros kept,
+    so that a reader sees it is the converted figure to six digits (1.45000″ for 7.02979 µrad,
+    1.4499983″; until 0.8.21 "1.45″", which read as exact or as a three-digit figure:
+    assessment 73 L1)."""
+    value = float(value)
+    if value == 0.0 or not math.isfinite(value):
+        return _as_stated(value)
+    decimals = max(0, CONVERTED_LIMIT_DIGITS - 1 - math.floor(math.log10(abs(value))))
+    return f"{value:.{decimals}f}"
+
+
 class StatedTolerance(str):
     """A specification quoted as the customer stated it ("14.5 µrad"), followed, where it
     is read in another unit, by its value there as the decision uses it
@@ -348,7 +362,7 @@ class StatedTolerance(str):
         said = f"{_as_stated(number)}{unit(key).written()}"
         if unit_key and unit_key != key:
             value = converted_limit(number, key, unit_key)
-            said += f" ({_as_stated(value)}{unit(unit_key).written()})"
+            said += f" ({converted_text(value)}{unit(unit_key).written()})"
         made = super().__new__(cls, said)
         made.stated, made.unit_key = stated, unit_key
         return made

@@ -171,8 +171,9 @@ def test_unit_option_converts_the_summary_and_the_results(capsys, samples_dir, t
     for r in range(2, 6):  # each to its sheet's resolution: 0.00005" (U 0.x"), 0.000005 mdeg
         assert m["Results"].cell(r, column).value == pytest.approx(
             a["Results"].cell(r, column).value / 3.6, abs=0.00005 / 3.6 + 0.000005)
-    meta_a = {row[0].value: row[1].value for row in a["Certificate"].iter_rows()}
-    meta_m = {row[0].value: row[1].value for row in m["Certificate"].iter_rows()}
+    # the details' sheet: *Report*, these details listing no standard (assessment 73 L4)
+    meta_a = {row[0].value: row[1].value for row in a["Report"].iter_rows()}
+    meta_m = {row[0].value: row[1].value for row in m["Report"].iter_rows()}
     assert meta_m["Expanded uncertainty U, largest (mdeg)"] == pytest.approx(
         meta_a["Expanded uncertainty U, largest (\")"] / 3.6)
     code, out, _ = run_cli(capsys, "theodolite", sample, "--unit", "mdeg", "--json")

@@ -86,3 +86,59 @@ def test_a_specimen_with_no_standard_listed_is_a_test_report(tmp_path, capsys):
         assert code == 0, capsys.readouterr().err
         head = pdf_text(pdf.read_bytes())[:200]  # the title, before the first heading
         assert title in head and other not in head, language
+
+
+def test_the_refusals_and_the_draft_banner_name_a_test_report_as_one(tmp_path, capsys):
+    """Assessment 73 L2: ``--dcc`` with a specimen and no standard listed refused with "the
+    certificate is a DRAFT" beside a PDF issued as "SPECIMEN … Test report"; a draft test
+    report's banner read "Missing: certificate number" beside its "Report number". Each now
+    names the document it is: a specimen test report's incomplete details, a draft test
+    report, and its "report number"."""
+    details = json.loads((SAMPLES / "certificate_theodolite.json").read_text("utf-8"))
+    details["standards"] = []
+    meta = tmp_path / "specimen.json"
+    meta.write_text(json.dumps({**details, "language": "en"}), encoding="utf-8")
+    code = main(["analyze", "theodolite", str(SAMPLES / "theodolite_sample.csv"),
+                 "--metadata", str(meta), "--certificate", str(tmp_path / "s.pdf"),
+                 "--dcc", str(tmp_path / "s.xml")])
+    said = " ".join(capsys.readouterr())
+    assert code != 0 and not (tmp_path / "s.xml").exists()
+    assert "the certificate is a DRAFT" not in said and "neither the certificate" not in said
+    assert "specimen test report" in said and "neither the test report nor its DCC" in said
+    draft = {k: v for k, v in details.items() if k not in ("example", "certificate_number")}
+    meta = tmp_path / "draft.json"
+    meta.write_text(json.dumps({**draft, "language": "en"}), encoding="utf-8")
+    pdf = tmp_path / "d.pdf"
+    code = main(["analyze", "theodolite", str(SAMPLES / "theodolite_sample.csv"),
+                 "--metadata", str(meta), "--certificate", str(pdf), "--dcc",
+                 str(tmp_path / "d.xml")])
+    said = " ".join(capsys.readouterr())
+    assert code != 0 and "the test report is a DRAFT (report number" in said, said
+    code = main(["analyze", "theodolite", str(SAMPLES / "theodolite_sample.csv"),
+                 "--metadata", str(meta), "--certificate", str(pdf)])
+    assert code == 0, capsys.readouterr().err
+    text = pdf_text(pdf.read_bytes())
+    assert "DRAFT — not valid as a test report. Missing: report number" in text
+    assert "certificate number" not in text
+
+
+@pytest.mark.parametrize("language", ["en", "zh", "zh+en"])
+def test_a_test_reports_workbook_names_its_details_sheet_report(tmp_path, capsys, language):
+    """Assessment 73 L4: a test report's XLSX kept its details on a sheet named
+    *Certificate*; it is named *Report* (the sheets keep their names in every language),
+    and a calibration certificate's keeps *Certificate*. ``register verify`` reads either."""
+    from app.writers.results_export import issue_stated
+
+    details = json.loads((SAMPLES / "certificate_theodolite.json").read_text("utf-8"))
+    for standards, sheet, other in (([], "Report", "Certificate"),
+                                    (details["standards"], "Certificate", "Report")):
+        meta, book = tmp_path / "meta.json", tmp_path / f"r_{sheet}.xlsx"
+        meta.write_text(json.dumps({**details, "standards": standards, "language": language}),
+                        encoding="utf-8")
+        code = main(["analyze", "theodolite", str(SAMPLES / "theodolite_sample.csv"),
+                     "--metadata", str(meta), "--results", str(book)])
+        assert code == 0, capsys.readouterr().err
+        names = load_workbook(book, read_only=True).sheetnames
+        assert sheet in names and other not in names, names
+        assert issue_stated(book.read_bytes()) == {"number": "", "pdf_sha256": "",
+                                                   "dcc_sha256": ""}

@@ -607,3 +607,25 @@ def test_an_issued_certificates_dcc_still_declares_a_traceable_calibration(tmp_p
     text = xml.read_text(encoding="utf-8")
     assert "<dcc:traceable>true</dcc:traceable>" in text
     assert "<dcc:conformity>pass</dcc:conformity>" in text
+
+
+@needs_schema
+def test_the_dcc_states_the_tolerance_as_the_customer_typed_it(tmp_path, capsys, samples_dir):
+    """Assessment 73 M4: the DCC gave T only inside the statement's text. Beside the decided
+    quantity it now states it as stated: its number in its unit, the number as typed (the
+    trailing zeros kept) its si:label; the document stays valid."""
+    details = json.loads((samples_dir / "certificate_theodolite.json").read_text("utf-8"))
+    details.update(tolerance="14.500", tolerance_unit="urad", decision_rule="simple")
+    path = tmp_path / "meta.json"
+    path.write_text(json.dumps(details), encoding="utf-8")
+    code, said, _, xml = _issue("theodolite", tmp_path, capsys, samples_dir, details=path)
+    assert code == 0, said
+    assert validate(xml.read_bytes(), SCHEMA) == []
+    tree = etree.parse(str(xml))
+    found = tree.findall(".//dcc:result[@refType='anglebench_decidedQuantity']//dcc:quantity"
+                         "[@refType='anglebench_toleranceStated']", NS)
+    assert len(found) == 1
+    real = found[0].find("si:real", NS)
+    assert real.findtext("si:label", namespaces=NS) == "14.500"
+    assert float(real.findtext("si:value", namespaces=NS)) == 14.5
+    assert real.findtext("si:unit", namespaces=NS) == r"\micro\radian"

@@ -56,3 +56,26 @@ def test_one_direction_says_why_p_and_u_are_not_evaluated(tmp_path):
     assert len(rows) == 2, rows
     for row in rows:
         assert any("both approach directions" in str(cell) for cell in row), row
+
+
+def test_every_null_figure_of_one_direction_says_why(tmp_path):
+    """Assessment 73 M3: A↓, E↓ and R↓ (the direction not measured) and the per-target B_i,
+    M_i and R_i (both directions) were null with no reason; every null figure now has one
+    beside it (``interval_reason``; per target ``B_i_reason`` …), and every figure given
+    has none."""
+    record = tmp_path / "up.csv"
+    _record(record)
+    said = io.StringIO()
+    with contextlib.redirect_stdout(said), contextlib.redirect_stderr(io.StringIO()):
+        assert main(["analyze", "positioning", str(record), *SETTINGS, "--json"]) == 0
+    data = json.loads(said.getvalue())
+    for group in ("iso230_2_figures", "vdi3441_figures"):
+        for key, figure in data[group].items():
+            if figure["value"] is None:
+                assert figure["interval_reason"], (group, key, figure)
+    for key in ("A_down", "E_down", "R_down"):
+        assert "↓" in data["iso230_2_figures"][key]["interval_reason"], key
+    per_target = data["per_target"]
+    for key in ("B_i", "M_i", "R_i"):
+        assert per_target[key] is None or all(v is None for v in per_target[key])
+        assert "both approach directions" in (per_target[f"{key}_reason"] or ""), key

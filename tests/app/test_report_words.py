@@ -426,7 +426,9 @@ def _certificate_sheet(document) -> dict[str, object]:
 
     from app.writers.results_export import results_xlsx_bytes
 
-    sheet = load_workbook(io.BytesIO(results_xlsx_bytes(document)))["Certificate"]
+    book = load_workbook(io.BytesIO(results_xlsx_bytes(document)))
+    # the details' sheet: *Report* on a test report's file (assessment 73 L4)
+    sheet = book["Report" if document.is_test_report else "Certificate"]
     return {row[0]: row[1] for row in sheet.iter_rows(values_only=True)}
 
 

@@ -95,7 +95,7 @@ def test_a_polygon_tolerance_that_is_the_grade_in_mdeg(capsys, samples_dir, tmp_
     if accepted:
         assert code == 0, err
         # the one source, the grade, quoted as the customer stated it (assessment 72 M1)
-        assert f"grade 3; tolerance ±{mdeg} mdeg (1\")" in _pdf_text(pdf)
+        assert f"grade 3; tolerance ±{mdeg} mdeg (1.00000\")" in _pdf_text(pdf)
     else:
         assert code == 2
         said = re.search(r"tolerance of ±([\d.]+)\" but the workbench is set to grade 3 "

@@ -50,8 +50,10 @@ def _issue(tmp_path: Path, workbench: str, extra: list[str], details: dict) -> s
 
 
 def _six(urad: float) -> str:
-    """The arcsecond value of ``urad`` to six significant digits, as a reader writes it."""
-    return f"{urad / URAD_PER_ARCSEC:.6g}"  # %g drops the trailing zeros
+    """The arcsecond value of ``urad`` to six significant digits, as a reader writes it, its
+    trailing zeros kept (assessment 73 L1: "0.41253″" read as a five-digit figure)."""
+    value = Decimal(repr(urad / URAD_PER_ARCSEC))
+    return str(value.quantize(Decimal(1).scaleb(value.adjusted() - 5)))
 
 
 VERDICTS = {"(pass)": "pass", "(fail)": "fail", "Conditional pass": "conditional pass",
@@ -93,7 +95,7 @@ def test_the_specification_is_quoted_as_stated_with_the_t_decided(tmp_path, work
 def test_the_polygon_grade_is_quoted_as_the_customer_stated_it(tmp_path):
     text = _issue(tmp_path, "polygon", ["--grade", "4"],
                   {"tolerance": 0.5555556, "tolerance_unit": "mdeg", "item_grade": "grade 4"})
-    assert "tolerance ±0.5555556 mdeg (2\")" in text and "tolerance ±2\"" not in text
+    assert "tolerance ±0.5555556 mdeg (2.00000\")" in text and "tolerance ±2\"" not in text
 
 
 def test_a_converted_t_near_the_limit_redecides_to_the_verdict_printed(tmp_path):

@@ -27,8 +27,14 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
             "SPECIMEN — made from example details for training or demonstration; not a "
             "certificate, not recorded in any register.")), 9, (170, 30, 30))
     elif document.is_draft:
-        pdf.paragraph(message(QT_TR_NOOP("DRAFT — not valid as a certificate. Missing: "
-                                         "{fields}."), fields=_listed(meta.missing_fields())),
+        # a test report's banner names its own number, "report number", as the page beside
+        # it does (assessment 73 L2: "Missing: certificate number" beside "Report number")
+        report = document.is_test_report
+        pdf.paragraph(message(QT_TR_NOOP("DRAFT — not valid as a test report. Missing: "
+                                         "{fields}.") if report else
+                              QT_TR_NOOP("DRAFT — not valid as a certificate. Missing: "
+                                         "{fields}."),
+                              fields=_listed(meta.missing_fields(report))),
                       9, (170, 30, 30))
     if meta.supersedes:
         pdf.paragraph(revision_statement(meta), 9.5, (20, 60, 140))

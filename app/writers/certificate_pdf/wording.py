@@ -49,6 +49,7 @@ CHINESE = {
     "Decided value: interval low": "判定值：区间下端", "Decided value: interval high": "判定值：区间上端",
     "Decided value: coverage probability": "判定值：包含概率",
     "Probability of conformity": "符合概率", "Probability of a wrong decision": "误判概率",
+    "Probabilities stated as": "概率的给出方式",
     "Verdict": "结论", "No statement of conformity because": "未作符合性声明的原因",
     "Conformity": "符合性", "Decision rule": "判定规则", "Zones": "判定区间",
     "Inputs not stated, so not in U": "未给出、因而未计入 U 的输入量", "Notes": "备注",

@@ -41,7 +41,7 @@ VARIANTS = {
     "replacement": {"revision": "replacement", "supersedes": "AB-2026-0001"},
 }
 #: what may stay in Latin letters: symbols, units and the names of standards and tools
-SYMBOLS = {"sin", "cos", "rad", "zero", "ISO", "IEC", "GUM", "JCGM", "ILAC", "VIM", "CSV",
+SYMBOLS = {"sin", "cos", "rad", "zero", "ISO", "IEC", "GUM", "JCGM", "ILAC", "VIM", "CSV", "ASTM",
            "XLSX", "VDI", "DGQ", "Welch", "Satterthwaite", "AngleBench", "anglebench",
            "validate", "CNAS", "atan", "dev", "asin", "ADC", "LSB", "git",
            "sha", "SHA", "CMC", "Beran", "Louis", "Shen", "Efron", "Tibshirani", "Berger", "Boos",

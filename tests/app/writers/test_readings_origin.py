@@ -55,7 +55,7 @@ def _pdf_text(path) -> str:
 def _certificate_sheet(path) -> dict:
     book = load_workbook(path, read_only=True)
     try:
-        return {r[0]: (r[1] if len(r) > 1 else None) for r in book["Certificate"].iter_rows(values_only=True)
+        return {r[0]: (r[1] if len(r) > 1 else None) for r in _details_sheet(book).iter_rows(values_only=True)
                 if r}
     finally:
         book.close()
@@ -273,3 +273,9 @@ def test_sheet_source_wording():
                         5) == ("sent from the Polygon encoder test workbench (its readings: "
                                "job.anglebench.json), then edited in AngleBench; rows 1 (1 of "
                                "5) pasted into AngleBench")
+
+
+def _details_sheet(book):
+    """The sheet of the document's details: *Report* on a test report's file (assessment 73
+    L4), else *Certificate*."""
+    return book["Report" if "Report" in book.sheetnames else "Certificate"]

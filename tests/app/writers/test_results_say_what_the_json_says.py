@@ -167,7 +167,7 @@ def issued(tmp_path_factory):
 
 
 def _certificate_sheet(book) -> dict:
-    return {r[0]: r[1] for r in book["Certificate"].iter_rows(values_only=True)}
+    return {r[0]: r[1] for r in _details_sheet(book).iter_rows(values_only=True)}
 
 
 def _sheet(book, name: str) -> tuple[list, list[list]]:
@@ -350,3 +350,9 @@ def test_an_interferometers_budget_is_headed_and_stated_in_nanometres(tmp_path):
     header, rows = sheets["arcsec"]
     assert header[3] == "Value (nm)" and header[5] == "u (nm)" and header[7] == "c·u (nm)"
     assert sheets["urad"] == (header, rows)
+
+
+def _details_sheet(book):
+    """The sheet of the document's details: *Report* on a test report's file (assessment 73
+    L4), else *Certificate*."""
+    return book["Report" if "Report" in book.sheetnames else "Certificate"]

@@ -185,11 +185,17 @@ def test_no_statement_of_conformity_with_no_reference_standard_listed(key):
     assert decided["interval_low"] == pytest.approx(document.conformity.interval_low)
 
 
-def test_the_cross_calibration_keeps_its_statement_with_no_standard_listed():
-    """Each item is the other's reference: no standard carries the measurand, so a
-    cross-calibration with none listed still states its conformity."""
+def test_the_cross_calibration_with_no_standard_listed_lacks_its_comparators_calibration():
+    """Each item is the other's reference: no standard carries the measurand, so no
+    traceability gap is named for one. But every reading is made with the autocollimator,
+    whose calibration is an input of U (assessment 73 M2: 0.8.21 dropped that row and still
+    stated a pass): with none listed U is incomplete, no statement of conformity is made, and
+    the reason names the comparator's calibration, not a standard carrying the measurand."""
     kind, result = _sample("crosscal")
     meta = _no_standard("crosscal", 1.0)
-    assert kind.certificate_document(result, meta).conformity.verdict != "not assessed"
-    assert workbench_uncertainty_json(kind, result, meta, None)[
-        "decided_quantity"]["verdict"] is not None
+    document = kind.certificate_document(result, meta)
+    assert document.conformity.verdict == "not assessed" and document.is_test_report
+    assert "Comparator calibration" in str(document.conformity.reason)
+    assert "carry the measurand" not in str(document.conformity.reason)
+    decided = workbench_uncertainty_json(kind, result, meta, None)["decided_quantity"]
+    assert decided["verdict"] is None and "Comparator calibration" in decided["reason"]

@@ -123,3 +123,46 @@ def test_the_u_arrays_of_before_39_are_the_certificates_with_the_details():
         np.testing.assert_allclose(data[old], data[new], rtol=1e-12)
     assert np.max(data["polygon_deviation_U_arcsec"]) > 1.1 * np.max(KIND.to_json(result)[
         "polygon_deviation_U_arcsec"])
+
+
+def test_with_no_comparator_listed_u_is_incomplete_and_no_conformity_is_stated():
+    """Assessment 73 M2: the comparator's calibration is an input of every reading whether or
+    not a standard is listed. With ``"standards": []`` 0.8.21 dropped its budget row (the
+    larger part of U here), stated a pass on the smaller U and titled the document a
+    calibration certificate. Now the input is named as not stated (JSON and certificate), no
+    statement of conformity is made (verdict null, with the reason), and the document is a
+    test report. The simulated bench's comparator spreads the results as the row says (the
+    test above), so the row left out is a real part of U: here it exceeds the rest."""
+    from models.certificate.uncertainty_json import workbench_uncertainty_json
+
+    result = _analyze(_rows(8))
+    stated = {"tolerance": 10.0, "tolerance_unit": "arcsec", "decision_rule": "simple"}
+    with_ac = CertificateMetadata.from_dict({**_details().to_dict(), **stated})
+    without = CertificateMetadata.from_dict({**_details(None).to_dict(), **stated})
+    row = next(c for c in crosscal_budget(result, with_ac).components
+               if "Comparator" in str(c.name))
+    assert np.max(np.asarray(row.value) / row.divisor) > np.max(result.solution
+                                                               .polygon_deviation_u_arcsec)
+    listed = KIND.certificate_document(result, with_ac)
+    assert listed.conformity.verdict == "pass" and not listed.is_test_report
+    document = KIND.certificate_document(result, without)
+    assert document.conformity.verdict == "not assessed"
+    assert "Comparator calibration" in str(document.conformity.reason)
+    assert document.is_test_report and any("Comparator calibration" in str(n)
+                                           for n in document.not_in_u)
+    data = workbench_uncertainty_json(KIND, result, without)
+    assert data["decided_quantity"]["verdict"] is None
+    assert "Comparator calibration" in data["decided_quantity"]["reason"]
+    assert any("Comparator calibration" in n for n in data["uncertainty_inputs_not_stated"])
+    assert workbench_uncertainty_json(KIND, result, with_ac)["uncertainty_inputs_not_stated"] == []
+
+
+def test_the_comparator_is_never_said_to_be_outside_the_uncertainty():
+    """Assessment 73 M2: "The autocollimator is a comparator only" beside a budget whose
+    largest row is its calibration read as a contradiction; the statement says its
+    calibration is an input of the uncertainty, with a comparator listed or not."""
+    result = _analyze(_rows(8))
+    for details in (_details(), _details(None)):
+        said = " ".join(str(s) for s in KIND.certificate_document(result, details).statements)
+        assert "comparator only" not in said
+        assert "its calibration (the uncertainty its certificate states) is an input" in said

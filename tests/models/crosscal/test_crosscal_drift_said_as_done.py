@@ -102,3 +102,26 @@ def test_the_encoders_u_withheld_is_said_in_uncertainty_withheld():
     closed = bench(5, noise_arcsec=0.05, drift_arcsec=0.3).rows(MOUNTINGS)
     assert "uncertainty_withheld" not in workbench_uncertainty_json(
         KIND, analyze(closed, certificate_of="encoder"), details(), None)
+
+
+def test_the_json_says_why_a_mountings_closure_and_drift_are_null():
+    """Assessment 73 M3: with no closure reading, the JSON's ``closure_arcsec`` and
+    ``drift_arcsec`` were null at every mounting with no reason; each now has its reason
+    beside it naming the mountings, and none where every value is given."""
+    rows = bench(4, noise_arcsec=0.05, drift_arcsec=0.3, drift_common=True).rows(
+        MOUNTINGS, closure=False)
+    data = KIND.to_json(analyze(rows))
+    assert all(_null(v) for v in data["closure_arcsec"])  # (NaN: null once written)
+    assert all(_null(v) for v in data["drift_arcsec"])
+    for key in ("closure_arcsec_reason", "drift_arcsec_reason"):
+        said = str(data[key] or "")
+        assert all(str(j) in said for j in MOUNTINGS) and "closure reading" in said, key
+    full = KIND.to_json(analyze(bench(6, noise_arcsec=0.005, drift_arcsec=0.3).rows(MOUNTINGS)))
+    assert not any(_null(v) for v in full["closure_arcsec"])
+    assert full["closure_arcsec_reason"] is None
+    assert (full["drift_arcsec_reason"] is None) == (not any(_null(v)
+                                                             for v in full["drift_arcsec"]))
+
+
+def _null(value) -> bool:
+    return value is None or value != value

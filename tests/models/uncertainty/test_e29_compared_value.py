@@ -77,11 +77,43 @@ def test_the_reverse_passes_at_the_limits_place():
     assert c.verdict == "pass" and _compared(c.statement) == Decimal("1.76952")
 
 
+#: how the statement says the figure compared was rounded: to the finer of the two places,
+#: E29's (T's) and U's (assessment 73 M1: it said "to the last place of T as stated" alone)
+FINER_RULE = "the result rounded to the finer of T's last place as stated and U's last digit"
+
+
 def test_a_coarse_limit_compares_the_value_as_printed():
-    """T stated to a coarser place than U's digit: the printed value is compared, nothing
-    more is printed (E29 would round coarser still; U's digit is the finer)."""
+    """T stated to a coarser place than U's digit: the printed value is compared (U's digit
+    is the finer), and the statement says so, as E29 alone would round to T's place: 2.96″
+    against ±3″ (until 0.8.21 nothing was said of the place)."""
     c = _half_range(2.96, 0.2, 0.2, 3.0, "simple")
-    assert c.verdict == "pass" and _compared(c.statement) is None and "2.96\"" in c.statement
+    assert c.verdict == "pass" and "2.96\"" in c.statement
+    assert _compared(c.statement) == Decimal("2.96") and FINER_RULE in c.statement
+
+
+def test_a_value_kept_finer_than_t_says_so_where_e29_at_t_would_pass():
+    """Assessment 73 M1's cross-calibration case: 0.5448″ (U 0.026″/0.030″, printed 0.545″)
+    against ±0.54″ under simple acceptance. E29 at T's place alone would give 0.54″, a pass;
+    the stricter rule keeps U's digit, 0.545″ > 0.54″, a fail, and the statement prints the
+    figure compared and the rule it was rounded by (0.8.21 printed no sentence)."""
+    c = _half_range(0.5448, 0.026, 0.030, 0.54, "simple")
+    assert c.verdict == "fail"
+    figure = _compared(c.statement)
+    assert figure is not None and figure > Decimal("0.54") and FINER_RULE in c.statement
+    assert _e29(0.5448, 2) <= Decimal("0.54")  # the case is the one where the rules differ
+
+
+def test_a_figure_finer_than_t_never_claims_t_s_place_alone():
+    """Assessment 73 M1's fringe case: 2.3571 µrad against ±2.357 µrad (U's digit 0.0001):
+    the figure compared keeps four decimals, so the statement may not say it was rounded to
+    T's place as stated: it names the finer of the two."""
+    value = 2.35712 * ARCSEC["urad"]
+    c = _half_range(value, 0.0003, 0.0003, Quantity(2.357, "urad"), "simple")
+    figure = _compared(c.statement, " µrad")
+    assert figure is not None and -figure.as_tuple().exponent > 3  # T: 3 decimals
+    assert FINER_RULE in c.statement and "rounded to the last place of T as stated" not in (
+        c.statement)
+    assert c.verdict == ("pass" if figure <= Decimal("2.357") else "fail")
 
 
 def test_the_non_binary_rule_compares_so_between_its_conditional_verdicts():

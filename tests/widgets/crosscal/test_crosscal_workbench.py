@@ -362,17 +362,24 @@ def test_only_crosscal_states_its_own_traceability_basis(samples_dir):
 
     details = json.loads((samples_dir / "certificate_crosscal.json").read_text("utf-8"))
     details.pop("example", None)
-    meta = CertificateMetadata.from_dict({**details, "standards": []})
+    # the autocollimator listed with its U (the comparator's calibration an input of U: with
+    # none listed U is incomplete and traceability not established, assessment 73 M2)
+    meta = CertificateMetadata.from_dict(details)
     result = KIND.analyze(parse(_sample_rows(samples_dir)), KIND.default_settings)
     document = KIND.certificate_document(result, meta, "x.csv", KIND.default_settings)
     assert document.traceability_basis == KIND.traceability_basis
     text = _traceability(document)
     assert text.startswith("Metrological traceability: the results are traceable to the SI")
     assert "closure principle" in text and "not established" not in text
+    bare = KIND.certificate_document(result, CertificateMetadata.from_dict(
+        {**details, "standards": []}), "x.csv", KIND.default_settings)
+    said = _traceability(bare)
+    assert "not established" in said and "Comparator calibration" in said
     # the other workbenches keep the shared wording: through the standards listed
     others = [k for k in KINDS.values() if isinstance(k, IssuesCertificates) and k is not KIND]
     assert len(others) >= 4 and all(k.traceability_basis is None for k in others)
-    plain = dataclasses.replace(document, traceability_basis="")
+    # (no standard listed, nothing else withheld: the shared wording)
+    plain = dataclasses.replace(bare, traceability_basis="", untraceable=())
     assert "not established on this document" in _traceability(plain)
 
 
