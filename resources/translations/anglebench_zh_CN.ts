@@ -2857,6 +2857,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>多面棱体各面偏差（相对第 1 面）</translation>
     </message>
     <message>
+        <source>Tolerance as stated</source>
+        <translation>所述允差</translation>
+    </message>
+    <message>
         <source>U of the inputs evaluated only (incomplete: a lower bound, not U)</source>
         <translation>仅已评定输入量的 U（不完整：为下限，不是 U）</translation>
     </message>
@@ -2887,6 +2891,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Reference polygon face deviations (from face 1, as its certificate states them)</source>
         <translation>参考多面棱体各面偏差（相对第 1 面，按其校准证书给出）</translation>
+    </message>
+    <message>
+        <source>no DCC written: the specimen test report&apos;s details are incomplete ({missing} missing); a digital document is made only of complete details</source>
+        <translation>未写出数字文件：该样本检测报告的信息不完整（缺少 {missing}）；只有信息完整时才能生成数字文件</translation>
+    </message>
+    <message>
+        <source>no DCC written: the specimen certificate&apos;s details are incomplete ({missing} missing); a digital certificate is made only of complete details</source>
+        <translation>未写出数字证书：该样本证书的信息不完整（缺少 {missing}）；只有信息完整时才能生成数字证书</translation>
+    </message>
+    <message>
+        <source>no DCC written: the test report is a DRAFT ({missing} missing); a digital document is made only of a complete one</source>
+        <translation>未写出数字文件：该检测报告为草稿（缺少 {missing}）；只有完整的报告才能生成数字文件</translation>
     </message>
     <message>
         <source>no DCC written: the certificate is a DRAFT ({missing} missing); a digital certificate is made only of a complete one</source>
@@ -3926,6 +3942,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>SPECIMEN — made from example details for training or demonstration; not a certificate, not recorded in any register.</source>
         <translation>样本——由示例信息生成，用于培训或演示；不是证书，未记入任何登记册。</translation>
+    </message>
+    <message>
+        <source>DRAFT — not valid as a test report. Missing: {fields}.</source>
+        <translation>草稿——不能作为检测报告使用。缺少：{fields}。</translation>
     </message>
     <message>
         <source>DRAFT — not valid as a certificate. Missing: {fields}.</source>
@@ -5045,8 +5065,17 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>未评定：需要两个趋近方向的读数，而读数只有一个方向</translation>
     </message>
     <message>
+        <source>not evaluated: the readings have no approach in the ↑ direction</source>
+        <extracomment>the figures of both directions (ISO 230-2&apos;s bidirectional ones, VDI/DGQ 3441&apos;s P and U) why a figure of one direction is null where that direction was not measured (the JSON&apos;s ``interval_reason``: assessment 73 M3, A↓, E↓ and R↓ null with no reason)</extracomment>
+        <translation>未评定：读数中没有 ↑ 方向的趋近</translation>
+    </message>
+    <message>
+        <source>not evaluated: the readings have no approach in the ↓ direction</source>
+        <translation>未评定：读数中没有 ↓ 方向的趋近</translation>
+    </message>
+    <message>
         <source>forward {n}</source>
-        <extracomment>the figures of both directions (ISO 230-2&apos;s bidirectional ones, VDI/DGQ 3441&apos;s P and U)</extracomment>
+        <extracomment>the figures of one direction (ISO 230-2), by the suffix of their keys</extracomment>
         <translation>正向 {n}</translation>
     </message>
     <message>
@@ -6422,6 +6451,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>证书已写入 {path}（草稿：缺少{fields}；未记入登记册）</translation>
     </message>
     <message>
+        <source>anglebench analyze: {reason}; neither the test report nor its DCC was written</source>
+        <translation>anglebench analyze：{reason}；检测报告及其数字文件均未写出</translation>
+    </message>
+    <message>
         <source>anglebench analyze: {reason}; neither the certificate nor its DCC was written</source>
         <translation>anglebench analyze：{reason}；证书及其数字证书均未写出</translation>
     </message>
@@ -6538,11 +6571,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>合格 ≤ {low} (T − w) &lt; 有条件合格 ≤ {t} (T) &lt; 有条件不合格 ≤ {high} (T + w) &lt; 不合格</translation>
     </message>
     <message>
-        <source>Compared with T: {value}, the result rounded to the last place of T as stated (ASTM E29 §6.4, the rounding method).</source>
-        <extracomment>the value compared with T where it is not the statement&apos;s printed value (ASTM E29 §6.4)</extracomment>
-        <translation>与 T 比较：{value}，即结果修约到 T 所述的最后一位（ASTM E29 §6.4，修约法）。</translation>
-    </message>
-    <message>
         <source>The item conforms to the specification ±{t} (pass).</source>
         <translation>被校对象符合技术要求 ±{t}（合格）。</translation>
     </message>
@@ -6624,6 +6652,32 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>No statement of conformity: no specification (tolerance) was given.</source>
         <translation>不作符合性声明：未给出技术要求（允差）。</translation>
+    </message>
+    <message>
+        <source>Compared with T: {value}, the result rounded to the finer of T&apos;s last place as stated and U&apos;s last digit (ASTM E29 §6.4 rounds to T&apos;s last place; the finer digit of U is kept).</source>
+        <extracomment>the value compared with T where it is not the statement&apos;s printed value, or keeps a digit finer than T&apos;s last place (:attr:`ComparedValue.said`): the rule as it is done, the finer of the two places (until 0.8.21 &quot;rounded to the last place of T as stated (ASTM E29 §6.4)&quot;, which a value printed 2.3571 µrad beside ±2.357 µrad contradicted: assessment 73 M1)</extracomment>
+        <translation>与 T 比较：{value}，即结果修约到 T 所述的最后一位与 U 的最后一位中较细的一位（ASTM E29 §6.4 修约到 T 的最后一位；U 较细的一位予以保留）。</translation>
+    </message>
+    <message>
+        <source>bounds, not the probabilities themselves (Boole&apos;s inequality over the points): the probability of a wrong decision is at most the figure given, the probability of conformity at least it after a pass and at most it after a fail; a bound of 100 % on the probability of a wrong decision leaves it not bounded by this method</source>
+        <extracomment>how the probabilities are stated where they are bounds (every point deciding: Boole&apos;s inequality over the points), on the certificate&apos;s sheet beside them</extracomment>
+        <translation>界限，而非概率本身（对各点用布尔不等式）：误判概率至多为所给数值，符合概率在合格时至少为所给数值、在不合格时至多为所给数值；误判概率的界限达到 100 % 时，本方法对其未加限定</translation>
+    </message>
+    <message>
+        <source>Probability of a false acceptance at this decision: not bounded by this method (the sum over the points of each one&apos;s probability of lying outside ±T, its bound by Boole&apos;s inequality, reaches 100 %; specific risk, JCGM 106).</source>
+        <translation>本判定的误合格概率：本方法对其未加限定（各点落在 ±T 之外概率之和，即其由布尔不等式所得的上限，达到 100 %；特定风险，JCGM 106）。</translation>
+    </message>
+    <message>
+        <source>Probability of a false rejection at this decision: not bounded by this method (the deciding point&apos;s probability of lying within ±T, its bound, reaches 100 %; specific risk, JCGM 106).</source>
+        <translation>本判定的误不合格概率：本方法对其未加限定（判定点落在 ±T 之内的概率，即其上限，达到 100 %；特定风险，JCGM 106）。</translation>
+    </message>
+    <message>
+        <source>Probability of a false acceptance at this decision: at most {p} % (a bound: the sum over the points of each one&apos;s probability of lying outside ±T, Boole&apos;s inequality; specific risk, JCGM 106).</source>
+        <translation>本判定的误合格概率：至多 {p} %（为上限：各点落在 ±T 之外概率之和，布尔不等式；特定风险，JCGM 106）。</translation>
+    </message>
+    <message>
+        <source>Probability of a false rejection at this decision: at most {p} % (a bound: the deciding point&apos;s probability of lying within ±T; specific risk, JCGM 106).</source>
+        <translation>本判定的误不合格概率：至多 {p} %（为上限：判定点落在 ±T 之内的概率；特定风险，JCGM 106）。</translation>
     </message>
     <message>
         <source>U = {u} is not smaller than T = {t}</source>
@@ -10608,6 +10662,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>偏差</translation>
     </message>
     <message>
+        <source>No calibrated reference value enters these results: the polygon and the encoder are calibrated against each other by the closure of the circle. The autocollimator serves as the comparator: its calibration (the uncertainty its certificate states) is an input of the uncertainty, as is its scale error over its readings&apos; span {low} … {high}.</source>
+        <translation>本结果未使用任何已校准的参考值：多面棱体与编码器依圆周封闭原理相互校准。自准直仪用作比较器：其校准（其证书给出的不确定度）是不确定度的输入量，其在读数范围 {low} … {high} 内的示值比例误差亦然。</translation>
+    </message>
+    <message>
         <source>The encoder&apos;s error was solved in the same run, but the encoder is not calibrated: its U is withheld (mounting(s) {mountings} have no closure reading and no drift bound is stated); the largest correlation between its results and these is {r}.</source>
         <translation>编码器误差在同一次测量中一并求得，但编码器未获校准：其 U 不予给出（安装位置 {mountings} 没有闭合读数，且未给出漂移限值）；其结果与本结果之间的最大相关系数为 {r}。</translation>
     </message>
@@ -10725,6 +10783,16 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>设置 {setting} 现为 {now}，但该结果是按 {then} 分析的：请重新分析后再出具证书</translation>
     </message>
     <message>
+        <source>null for mounting(s) {mountings}: no closure reading of the first face after the full turn was taken there</source>
+        <extracomment>why a mounting&apos;s closure is null in the JSON (``closure_arcsec_reason``)</extracomment>
+        <translation>安装位置 {mountings} 为 null：该处在转满一周后未读取第一面的闭合读数</translation>
+    </message>
+    <message>
+        <source>null for mounting(s) {mountings}: the drift is not measured there (no closure reading of its own, and the design does not determine it through the other mountings&apos; closure readings)</source>
+        <extracomment>why a mounting&apos;s drift is null in the JSON (``drift_arcsec_reason``)</extracomment>
+        <translation>安装位置 {mountings} 为 null：该处的漂移未测量（无自身的闭合读数，且测量设计无法由其他安装位置的闭合读数确定它）</translation>
+    </message>
+    <message>
         <source>{faces}-face polygon on the encoder, {count} mountings ({mountings}); σ of a reading {sigma} (ν = {nu}), k = {k}</source>
         <translation>{faces} 面棱体装于编码器上，{count} 个安装位置（{mountings}）；单次读数 σ = {sigma}（ν = {nu}），k = {k}</translation>
     </message>
@@ -10796,6 +10864,11 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <source>without the comparators&apos; calibration U: not stated in the cross-calibration&apos;s certificate details</source>
         <extracomment>said of a U from face 1 sent or written without the comparators&apos; calibration U (the sent reference&apos;s name, the window&apos;s message; the file&apos;s header in English)</extracomment>
         <translation>不含比较器的校准 U：互校准的证书信息中未给出</translation>
+    </message>
+    <message>
+        <source>Comparator calibration (the autocollimator&apos;s: no comparator listed with a stated uncertainty)</source>
+        <extracomment>the input a cross-calibration&apos;s U lacks where no comparator is listed with a stated U (the certificate&apos;s inputs not stated, the JSON&apos;s uncertainty_inputs_not_stated): every reading is made with the autocollimator, and its indication error is known only within its certificate&apos;s U (models.crosscal.report: its budget row &quot;Comparator calibration&quot;), whether or not a standard is listed (assessment 73 M2: with none listed the row, 69.5 % of U, was dropped without a word and a pass stated on half the U)</extracomment>
+        <translation>比较器校准（自准直仪的校准：未列出给定不确定度的比较器）</translation>
     </message>
     <message>
         <source>the face deviations are not determined by this design: nothing to send</source>
@@ -11032,10 +11105,6 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>start {start}; step k at start + k·{step}</source>
         <translation>起点 {start}；第 k 步位于起点 + k·{step}</translation>
-    </message>
-    <message>
-        <source>No calibrated reference value enters these results: the polygon and the encoder are calibrated against each other by the closure of the circle. The autocollimator is a comparator only; its readings span {low} … {high}, over which its scale error is an input of the uncertainty.</source>
-        <translation>本结果未使用任何已校准的参考值：多面棱体与编码器依圆周封闭原理相互校准。自准直仪仅作比较器；其读数范围为 {low} … {high}，其在此范围内的示值比例误差作为不确定度的输入量。</translation>
     </message>
     <message>
         <source>Within these results the values are correlated: about the mean r = {r_mean} on average between two of them (−1/(n − 1) = {r_full} for a full rosette); stated from {first} r = {r_first}. The U of the difference of any two, U(x_j − x_i), is at most {u_pair}.</source>
