@@ -18,6 +18,7 @@ from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url
 from models.register.store import IssueRequest, Register
+from tests.app.test_register_verify_reg72 import _sql
 from tests.register_forgery import relinked, stand_in_pdf
 
 META = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01", item_serial="RX-1")
@@ -38,14 +39,6 @@ def _issue(n: int, key: str = "") -> list[tuple[str, bytes, bytes]]:
                                          render_dcc=_dcc, document_kind="calibration")
             made.append((record.number, pdf, register.dcc(record.number)))
     return made
-
-
-def _sql(*statements: str, **params) -> None:
-    engine = sa.create_engine(register_url())
-    with engine.begin() as conn:
-        for statement in statements:
-            conn.execute(sa.text(statement), params)
-    engine.dispose()
 
 
 def _newest() -> tuple[dict, str]:

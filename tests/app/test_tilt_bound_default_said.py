@@ -9,26 +9,17 @@ simulation, nothing from models/)."""
 
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 from pathlib import Path
 
 import pytest
 from lxml import etree
 
-from app.main import main
+from tests.app.test_table_u_one_rounding import _main
 from tests.app.test_tilt_bound_zero_refused import SIGMA, _polygon_rows, _theodolite_rows
 
 ROOT = Path(__file__).resolve().parents[2]
 SAMPLES = ROOT / "resources" / "samples"
-
-
-def _main(args: list[str]) -> str:
-    said, told = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(said), contextlib.redirect_stderr(told):
-        assert main(args) == 0, said.getvalue() + told.getvalue()
-    return said.getvalue()
 
 
 def _theodolite_file(tmp_path: Path) -> Path:

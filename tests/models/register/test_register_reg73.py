@@ -13,7 +13,6 @@ the fields as sorted, compact JSON): nothing is imported from the code they chec
 
 from __future__ import annotations
 
-import datetime as dt
 import hashlib
 import json
 import os
@@ -24,14 +23,9 @@ import sqlalchemy as sa
 
 from models.certificate.metadata import CertificateMetadata
 from models.register.store import IssueRequest, Register, RegisterError
+from tests.models.register.test_register_reg72 import ISSUED, META, PROJECT
 from tests.register_forgery import relinked, stand_in_pdf
 
-META = CertificateMetadata(item_serial="RX-1", item_description="Rotary encoder",
-                           customer_name="Acme Optics", calibration_date="2026-11-20",
-                           number_scheme="AB-{year}-{seq:04d}", approver="Dr. Li")
-PROJECT = json.dumps({"format": "anglebench-project", "schema_version": 1,
-                      "workbenches": {"polygon": {"rows": [["0", "0.41"], ["30", "-0.22"]]}}})
-ISSUED = dt.datetime(2026, 11, 24, 10, 0, tzinfo=dt.timezone.utc)
 #: the fields of content form 1, as the chain's documentation lists them
 CONTENT_1 = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
              "item_description", "item_manufacturer", "item_serial", "customer", "operator",
