@@ -25,7 +25,7 @@ import datetime as dt
 from dataclasses import dataclass
 
 from models.messages import QT_TR_NOOP, message
-from models.register.store import RegisterError
+from models.register.register_error import RegisterError
 
 __all__ = ["CONFIRM_AFTER_DAYS", "DateToConfirm", "LastChained", "clock_checked",
            "correction_refusal", "last_certificate_since_correction", "last_chained",
@@ -59,8 +59,6 @@ class DateToConfirm(RegisterError):
 
 def last_chained(conn, sa, schema) -> LastChained | None:
     """The record or entry at the highest place of the chain, None in an empty register."""
-    from models.register.store import _parse_time
-
     c, e = schema.CERTIFICATES.c, schema.ENTRIES.c
     cert = conn.execute(sa.select(c.seq, c.issued_at, c.number, c.workstation, c.os_user)
                         .where(c.seq.is_not(None)).order_by(c.seq.desc()).limit(1)).first()
@@ -153,3 +151,12 @@ def correction_refusal(last: LastChained | None, now: dt.datetime, today: dt.dat
             "{date}: the computer's date now); correct the clock first if it is not today"),
             date=today.isoformat())
     return None
+
+
+def _parse_time(text: str) -> dt.datetime:
+    """A recorded ISO time, UTC where it names no zone (the earliest time where unreadable)."""
+    try:
+        stamp = dt.datetime.fromisoformat(text)
+    except ValueError:
+        return dt.datetime.min.replace(tzinfo=dt.timezone.utc)
+    return stamp if stamp.tzinfo else stamp.replace(tzinfo=dt.timezone.utc)

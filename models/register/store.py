@@ -50,6 +50,7 @@ from models.register.chain import (
     GENESIS,
     link,
 )
+from models.register.register_error import RegisterError
 from models.register.wording import DOCUMENT_KINDS, kind_words
 from models.register.writer_note import holder as writer_holder
 from models.register.writer_note import remove_note, write_note
@@ -67,11 +68,6 @@ _SEQ = re.compile(r"\{seq(?::0?\d+d)?\}")
 _ADVISORY_LOCK = 0x414E4742  # "ANGB": serialises migrations on PostgreSQL
 _CHAIN_LOCK = 0x414E4743  # serialises the hash chain's growth on PostgreSQL
 _TURN_LOCK = 0x414E4744  # an issuer's turn to render after a lost race (PostgreSQL)
-
-
-class RegisterError(ValueError):
-    """The register refused (a number issued before, an unknown certificate, a register of a
-    newer version) or cannot be reached; the message says which."""
 
 
 def _not_in_register(number: str) -> RegisterError:
@@ -2957,14 +2953,6 @@ def _item_corrected(original: CertificateRecord, meta: CertificateMetadata) -> b
         or _printed(original.item_manufacturer) != _printed(meta.item_manufacturer) \
         or no_serial(meta.item_serial) \
         and _printed(original.item_description) != _printed(meta.item_description)
-
-
-def _parse_time(text: str) -> dt.datetime:
-    try:
-        stamp = dt.datetime.fromisoformat(text)
-    except ValueError:
-        return dt.datetime.min.replace(tzinfo=dt.timezone.utc)
-    return stamp if stamp.tzinfo else stamp.replace(tzinfo=dt.timezone.utc)
 
 
 def _takes(render: Callable[..., bytes], name: str) -> bool:
