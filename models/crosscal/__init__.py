@@ -9,6 +9,11 @@ from models.messages import QT_TR_NOOP
 KEY = "crosscal"
 TITLE = QT_TR_NOOP("Cross-calibration (polygon + encoder)")
 
+#: the largest tilt of the polygon on the shaft the budget takes for a mounting without
+#: vertical readings when none is stated (the setting ``tilt_bound_arcsec``, ″): printed as
+#: the program's default, not as the laboratory's figure
+DEFAULT_TILT_BOUND_ARCSEC = 60.0
+
 #: The polygon's face deviation is signed actual − nominal, the sign its certificate feeds the
 #: polygon workbench with (dev_i in b_i = (i−1)·360°/n + dev_i). A material measure indicates
 #: its nominal value (VIM 3.6), so d_i = actual − indicated: the negative of an error

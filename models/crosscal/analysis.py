@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from models.crosscal import KEY, POLYGON_SIGN_CONVENTION, TITLE
+from models.crosscal import DEFAULT_TILT_BOUND_ARCSEC, KEY, POLYGON_SIGN_CONVENTION, TITLE
 from models.crosscal.acquisition import crosscal_guide
 from models.crosscal.export import (
     WITHOUT_COMPARATORS,
@@ -27,9 +27,10 @@ from models.crosscal.figures import ENCODER_FIGURES_NO_INTERVAL, encoder_figures
 from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, Message, joined, lines, message, reason_of, separated
-from models.parameters import Parameter
+from models.parameters import Parameter, SettingsError
 from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
+from models.uncertainty.bounded_systematic_half_range import tilt_bound_origin
 from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.printed_figure import printed_range_figures
@@ -88,7 +89,7 @@ PARAMETERS = (
                    "run (rectangular), through the design; used where vertical readings are "
                    "given; 0: not in the budget"),
     Parameter("tilt_bound_arcsec", "largest tilt of the polygon on the shaft, when not measured",
-              "float", 60.0, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
+              "float", DEFAULT_TILT_BOUND_ARCSEC, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
               help="Without vertical readings the polygon's tilt on the shaft is neither "
                    "identified nor removed: its exact effect for a tilt up to this, the worst "
                    "direction, enters the uncertainty (rectangular); not used when vertical "
@@ -138,7 +139,8 @@ class CrossCalResult:
     warnings: list[str] = field(default_factory=list)
     drift_mode: str = "fit"  # "fit" | "spread" | "report" (setting closure_drift)
     ac_scale_pct: float = 0.0  # setting: the autocollimator's scale error bound (budget)
-    tilt_bound_arcsec: float = 0.0  # setting: the tilt bound without vertical readings (budget)
+    #: setting: the tilt bound of a mounting without vertical readings (budget)
+    tilt_bound_arcsec: float = DEFAULT_TILT_BOUND_ARCSEC
     ac_roll_arcmin: float = 0.0  # setting: the autocollimator's roll bound (budget, ρ·y)
     incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
     cmc_polygon_arcsec: float = 0.0  # setting: the lab's CMC for face deviations (U floor)
@@ -146,6 +148,13 @@ class CrossCalResult:
     #: setting: the largest autocollimator drift over a mounting without a closure reading
     #: (budget, through the design); 0: none stated
     drift_bound_arcsec: float = 0.0
+
+    @property
+    def unidentified_tilt_mountings(self) -> tuple[int, ...]:
+        """The mountings whose tilt on the shaft the vertical readings do not identify (none
+        read, some missing, or too few faces): their tilt is not removed and the bound
+        ``tilt_bound_arcsec`` enters the budget for it."""
+        return unidentified_tilt_mountings(self.solution)
 
     @property
     def unchecked_drift_mountings(self) -> tuple[int, ...]:
@@ -370,6 +379,41 @@ class CrossCalResult:
         return float(np.max(np.abs(block))) if block.size else 0.0
 
 
+def unidentified_tilt_mountings(solution: CrossCalibration) -> tuple[int, ...]:
+    """The mountings of ``solution`` whose tilt was not fitted from vertical readings."""
+    tilts = solution.tilts or (None,) * len(solution.mountings)
+    return tuple(j for j, t in zip(solution.mountings, tilts, strict=True) if t is None)
+
+
+#: why a zero tilt bound is refused (a mounting's tilt not identified): audit 73 finding 1,
+#: the theodolite's and the polygon's, here for the cross-calibration
+ZERO_TILT_BOUND_REFUSED = QT_TR_NOOP(
+    "the polygon's tilt on the shaft is not identified in mounting(s) {mountings} ({why}): a "
+    "tilt bound of 0\" would claim that the polygon sits on the shaft with no tilt at all "
+    "there, which no set-up achieves and these readings cannot show; state the largest tilt "
+    "the set-up can have (the setting \"largest tilt of the polygon on the shaft, when not "
+    "measured\", --tilt-bound-arcsec), or read vertical readings of every face in those "
+    "mountings so that their tilt is fitted")
+
+
+def _refuse_zero_tilt_bound(readings: CrossCalReadings, solution: CrossCalibration,
+                            bound_arcsec: float) -> None:
+    """SettingsError (key ``tilt_bound_arcsec``: the window marks its field) when the bound
+    is 0 and some mounting's tilt is not identified: 0 would enter that tilt's effect in U as
+    nothing, a claim no set-up meets and the readings cannot check. Where every mounting's
+    tilt is fitted the bound is not used and 0 is taken."""
+    unidentified = unidentified_tilt_mountings(solution)
+    if not unidentified or bound_arcsec > 0:
+        return
+    why = (QT_TR_NOOP("no vertical readings") if readings.ac_y_arcsec is None else
+           QT_TR_NOOP("fewer than 4 faces: vertical readings cannot identify a tilt")
+           if solution.faces < 4 else
+           QT_TR_NOOP("vertical readings missing there"))
+    raise SettingsError(message(ZERO_TILT_BOUND_REFUSED,
+                                mountings=", ".join(map(str, unidentified)),
+                                why=message(why)), key="tilt_bound_arcsec")
+
+
 def _sheet_row(text: str, row: int | None, readings: CrossCalReadings) -> str:
     """The model's reason naming the sheet's row (the model counts the rows given it)."""
     if row is None:
@@ -421,12 +465,14 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
                                   ac_alignment=settings.get("ac_alignment", "levelled"))
     except CrossCalibrationInputError as exc:
         raise ValueError(_sheet_row(reason_of(exc), exc.row, readings)) from None
+    tilt_bound = float(settings.get("tilt_bound_arcsec", DEFAULT_TILT_BOUND_ARCSEC) or 0.0)
+    _refuse_zero_tilt_bound(readings, solution, tilt_bound)
     # the model's own: no closure, no vertical readings, harmonics it cannot see
     warnings: list[str] = list(solution.warnings)
     result = CrossCalResult(readings, solution, readings.closure_arcsec(), removed,
                             str(settings.get("certificate_of", "polygon")), warnings, mode,
                             float(settings.get("ac_scale_pct", 0.2) or 0.0),
-                            float(settings.get("tilt_bound_arcsec", 60.0) or 0.0),
+                            tilt_bound,
                             cmc_polygon_arcsec=float(settings.get("cmc_arcsec", 0.0) or 0.0),
                             cmc_encoder_arcsec=float(settings.get("cmc_encoder_arcsec", 0.0) or 0.0),
                             ac_roll_arcmin=float(settings.get("ac_roll_arcmin", 1.0) or 0.0),
@@ -520,6 +566,15 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
         "sign_convention": SIGN_CONVENTION,  # the encoder's error
         "polygon_deviation_sign_convention": POLYGON_SIGN_CONVENTION,
         "warnings": result.warnings,
+        # the mountings whose tilt is not identified, the tilt bound whose effect enters the
+        # uncertainty for them, and whether the lab stated it or it is the program's default
+        # (the bound and its origin null where every mounting's tilt is fitted)
+        "tilt_not_identified_mountings": list(result.unidentified_tilt_mountings),
+        "tilt_bound_arcsec": (result.tilt_bound_arcsec if result.unidentified_tilt_mountings
+                              else None),
+        "tilt_bound_origin": (tilt_bound_origin(result.tilt_bound_arcsec,
+                                                DEFAULT_TILT_BOUND_ARCSEC)
+                              if result.unidentified_tilt_mountings else None),
     }
     # the mountings whose closure or drift is null, and why (assessment 73 M3: null with no
     # reason where no closure reading was taken); null where every value is given

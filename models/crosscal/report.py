@@ -29,7 +29,12 @@ from models.certificate.builder import (
 )
 from models.certificate.document import CertificateDocument, Table, range_cells
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.crosscal import KEY, POLYGON_SIGN_CONVENTION_TEXT, TITLE
+from models.crosscal import (
+    DEFAULT_TILT_BOUND_ARCSEC,
+    KEY,
+    POLYGON_SIGN_CONVENTION_TEXT,
+    TITLE,
+)
 from models.crosscal.export import comparator_not_stated
 from models.crosscal.figures import encoder_figures
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
@@ -79,6 +84,23 @@ METHOD_SOME_WITHOUT_CLOSURE = QT_TR_NOOP(
 DRIFT_WORDS = {"fit": QT_TR_NOOP("fitted linearly over each mounting by least squares and removed"),
                "spread": QT_TR_NOOP("spread linearly over each mounting and removed"),
                "report": QT_TR_NOOP("reported, not removed")}
+
+
+def _tilt_rows(result) -> list[tuple[str, Any, Any]]:
+    """The set-up parameters' tilt row where some mounting's tilt is not identified (none
+    where every one is fitted): which mountings, and the bound whose effect enters U for
+    them, stated or the program's default (audit 73 finding 3, the theodolite's set-up
+    table's; a bound of 0 is refused there: models.crosscal.analysis)."""
+    unidentified = result.unidentified_tilt_mountings
+    if not unidentified:
+        return []
+    return [(QT_TR_NOOP("Tilt of the polygon on the shaft (not measured)"),
+             message(QT_TR_NOOP("not identified in mounting(s) {mountings}"),
+                     mountings=", ".join(map(str, unidentified))),
+             message(QT_TR_NOOP("bound {bound} (stated) in U")
+                     if result.tilt_bound_arcsec != DEFAULT_TILT_BOUND_ARCSEC else
+                     QT_TR_NOOP("bound {bound} (the program's default) in U"),
+                     bound=f"{result.tilt_bound_arcsec:g}\""))]
 
 
 def _drift_row(result) -> tuple[str, Any, Any]:
@@ -241,7 +263,14 @@ def _systematic_components(result, u_scatter: np.ndarray) -> list[BudgetComponen
             math.sqrt(3.0), 1.0, math.inf,
             message(QT_TR_NOOP("no vertical readings in {count} mounting(s): a tilt up to {psi} "
                                "(stated) in its worst direction, exact effect in the set-up's "
-                               "frame, through the design"),
+                               "frame, through the design")
+                    if result.tilt_bound_arcsec != DEFAULT_TILT_BOUND_ARCSEC else
+                    # none typed: the program's figure, not the laboratory's (audit 73
+                    # finding 3, the theodolite's and the polygon's)
+                    QT_TR_NOOP("no vertical readings in {count} mounting(s): a tilt up to {psi} "
+                               "(the program's default: no bound was stated) in its worst "
+                               "direction, exact effect in the set-up's frame, through the "
+                               "design"),
                     count=len(unmeasured), psi=f"{result.tilt_bound_arcsec:g}\"")))
     unchecked = result.unchecked_drift_mountings
     drift_effect = result.drift_bound_arcsec * drift_effect_arcsec(s)[block]
@@ -457,6 +486,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
               (QT_TR_NOOP("σ of one reading"), f"{s.sigma_arcsec:.4f}\"",
                "ν = ∞" if not math.isfinite(s.dof) else f"ν = {s.dof:.0f}"),
               _drift_row(result),
+              *_tilt_rows(result),
               (QT_TR_NOOP("Encoder"),
                QT_TR_NOOP("set to its nominal steps") if result.readings.nominal_encoder
                else QT_TR_NOOP("read at each step"),

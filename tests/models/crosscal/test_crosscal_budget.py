@@ -88,7 +88,9 @@ def test_an_unmeasured_tilt_is_covered_by_its_bound():
 
 
 def _analyze(rows, **settings):
-    text = [[str(j), str(i), f"{a:.9f}", f"{x:.6f}", ""] for j, i, a, x in rows]
+    """The bench's rows as a user's file (its vertical readings when they carry them)."""
+    text = [[str(j), str(i), f"{a:.9f}", f"{x:.6f}", f"{r[0]:.6f}" if r else ""]
+            for j, i, a, x, *r in rows]
     parsed = ReadingsSheet(KIND.columns, text).parse()
     return KIND.analyze(parsed, {**KIND.default_settings, **settings})
 
@@ -102,7 +104,13 @@ def test_the_budget_has_the_benchs_inputs(item):
     names = [c.name for c in crosscal_budget(result, CertificateMetadata()).components]
     assert names[:3] == ["Reading scatter through the design", "Autocollimator scale error",
                          "Tilt of the polygon on the shaft (not measured)"]
-    none = _analyze(rows, certificate_of=item, ac_scale_pct=0.0, tilt_bound_arcsec=0.0)
+    # no scale error stated, and the tilts fitted from the same bench's vertical readings
+    # (its own, the same draws; a bound of 0 where a tilt is not identified is refused): the
+    # scatter alone (the roll, which the vertical readings bring in, not stated either)
+    read = bench(n, 7, noise_arcsec=0.01).rows(range(n), vertical=True)
+    assert [r[:4] for r in read] == rows  # the same horizontal readings
+    none = _analyze(read, certificate_of=item, ac_scale_pct=0.0, ac_roll_arcmin=0.0)
+    assert all(t is not None for t in none.solution.tilts)
     assert [c.name for c in crosscal_budget(none, CertificateMetadata()).components] == names[:1]
     resolved = crosscal_budget(result, CertificateMetadata(item_resolution=0.1))
     assert "Item resolution" in [c.name for c in resolved.components]
@@ -132,8 +140,11 @@ def test_the_deviations_from_face_1_carry_the_scale_error_too():
     scaled_rows = bench(n, 3, noise_arcsec=0.0, ac_scale=s).rows(range(n))
     moved = results(scaled_rows, n)[n:] - results(true_rows, n)[n:]
     moved = moved - moved[0]
-    stated = _analyze(scaled_rows, ac_scale_pct=100 * s, tilt_bound_arcsec=0.0)
-    plain = _analyze(scaled_rows, ac_scale_pct=0.0, tilt_bound_arcsec=0.0)
+    # the same tilt bound in both (the default: no vertical readings, so a bound of 0 is
+    # refused): its row is the same in both, and the difference of the squares is the scale's
+    stated = _analyze(scaled_rows, ac_scale_pct=100 * s)
+    plain = _analyze(scaled_rows, ac_scale_pct=0.0)
+    assert stated.tilt_bound_arcsec == plain.tilt_bound_arcsec > 0
     k = stated.solution.coverage_factor
     share = np.sqrt(stated.polygon_u_from_face1_arcsec() ** 2 - plain.polygon_u_from_face1_arcsec() ** 2)
     np.testing.assert_allclose(share * np.sqrt(3.0) / k, np.abs(moved), rtol=0.02, atol=1e-4)
