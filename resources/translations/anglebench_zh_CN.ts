@@ -10328,7 +10328,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>face deviation d_i = the face&apos;s angle − its nominal (actual − nominal), i.e. reference − indicated, as a material measure indicates its nominal value (VIM 3.6): the negative of an error of indication; the face&apos;s angle = nominal + d_i</source>
-        <extracomment>The polygon&apos;s face deviation is signed actual − nominal, the sign its certificate feeds the polygon workbench with (dev_i in b_i = (i−1)·360°/n + dev_i). A material measure indicates its nominal value (VIM 3.6), so d_i = actual − indicated: the negative of an error of indication, an exception to the other workbenches&apos; sign stated as positioning states its own. The encoder&apos;s error of the same run keeps error = indicated − reference.</extracomment>
+        <extracomment>the largest tilt of the polygon on the shaft the budget takes for a mounting without vertical readings when none is stated (the setting ``tilt_bound_arcsec``, ″): printed as the program&apos;s default, not as the laboratory&apos;s figure The polygon&apos;s face deviation is signed actual − nominal, the sign its certificate feeds the polygon workbench with (dev_i in b_i = (i−1)·360°/n + dev_i). A material measure indicates its nominal value (VIM 3.6), so d_i = actual − indicated: the negative of an error of indication, an exception to the other workbenches&apos; sign stated as positioning states its own. The encoder&apos;s error of the same run keeps error = indicated − reference.</extracomment>
         <translation>面偏差 d_i = 工作面的角度 − 其标称值（实际值 − 标称值），即 参考值 − 示值，因实物量具的示值即其标称值（VIM 3.6）：为示值误差的负值；工作面的角度 = 标称值 + d_i</translation>
     </message>
     <message>
@@ -10485,8 +10485,16 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>多面棱体在轴上的倾斜（未测量）</translation>
     </message>
     <message>
+        <source>not identified in mounting(s) {mountings}</source>
+        <translation>安装位置 {mountings} 中未辨识</translation>
+    </message>
+    <message>
         <source>no vertical readings in {count} mounting(s): a tilt up to {psi} (stated) in its worst direction, exact effect in the set-up&apos;s frame, through the design</source>
         <translation>{count} 个安装位置无竖直读数：倾斜至多 {psi}（给定值），取最不利方向，按装置坐标系精确计算其影响，经测量设计传递</translation>
+    </message>
+    <message>
+        <source>no vertical readings in {count} mounting(s): a tilt up to {psi} (the program&apos;s default: no bound was stated) in its worst direction, exact effect in the set-up&apos;s frame, through the design</source>
+        <translation>{count} 个安装位置无竖直读数：倾斜至多 {psi}（程序默认值：未给定上限），取最不利方向，按装置坐标系精确计算其影响，经测量设计传递</translation>
     </message>
     <message>
         <source>Autocollimator drift (no closure reading)</source>
@@ -10763,12 +10771,29 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the encoder&apos;s U is withheld: mounting(s) {mountings} have no closure reading, so the autocollimator&apos;s drift is not measured, and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that these readings cannot tell from the encoder&apos;s error; add a closure reading to each mounting (its first face read again at the end) or state the largest drift over a mounting (the setting &quot;largest autocollimator drift over a mounting&quot;; --drift-bound-arcsec, drift_bound_arcsec in the metadata)</source>
-        <extracomment>a residual beyond this many σ is marked as an outlier setting: the largest autocollimator drift over a mounting without a closure reading (budget, through the design); 0: none stated</extracomment>
+        <extracomment>a residual beyond this many σ is marked as an outlier setting: the tilt bound of a mounting without vertical readings (budget) setting: the largest autocollimator drift over a mounting without a closure reading (budget, through the design); 0: none stated</extracomment>
         <translation>编码器的 U 不予给出：安装位置 {mountings} 没有闭合读数，因此未测量自准直仪的漂移，而各安装位置同向的漂移是编码器各步上的一个斜坡，这些读数无法将其与编码器误差区分；请为每个安装位置补充闭合读数（末尾再读一次其第一面），或给出安装位置内的最大漂移（设置项“安装位置内自准直仪的最大漂移”；命令行 --drift-bound-arcsec，元数据 drift_bound_arcsec）</translation>
     </message>
     <message>
         <source>the face deviations&apos; U is withheld: mounting(s) {mountings} have no closure reading, so the autocollimator&apos;s drift is not measured, and a drift that differs from mounting to mounting moves the face deviations, which nothing in these readings bounds (σ stated, or a drift not shared by every mounting); add a closure reading to each mounting (its first face read again at the end) or state the largest drift over a mounting (the setting &quot;largest autocollimator drift over a mounting&quot;; --drift-bound-arcsec, drift_bound_arcsec in the metadata)</source>
         <translation>面偏差的 U 不予给出：安装位置 {mountings} 无闭合读数，自准直仪的漂移未测量，而各安装位置之间不同的漂移会影响面偏差，这些读数中没有任何东西能界定它（σ 为给出值，或漂移并非各安装位置共有）；请为每个安装位置补充闭合读数（末尾再读一次第一面），或给出安装位置内的最大漂移（设置“安装位置内自准直仪的最大漂移”；--drift-bound-arcsec，元数据中的 drift_bound_arcsec）</translation>
+    </message>
+    <message>
+        <source>the polygon&apos;s tilt on the shaft is not identified in mounting(s) {mountings} ({why}): a tilt bound of 0&quot; would claim that the polygon sits on the shaft with no tilt at all there, which no set-up achieves and these readings cannot show; state the largest tilt the set-up can have (the setting &quot;largest tilt of the polygon on the shaft, when not measured&quot;, --tilt-bound-arcsec), or read vertical readings of every face in those mountings so that their tilt is fitted</source>
+        <extracomment>why a zero tilt bound is refused (a mounting&apos;s tilt not identified): audit 73 finding 1, the theodolite&apos;s and the polygon&apos;s, here for the cross-calibration</extracomment>
+        <translation>安装位置 {mountings} 中多面棱体在轴上的倾斜未能辨识（{why}）：倾斜上限为 0&quot; 即声称多面棱体在这些位置完全没有倾斜地装在轴上，这是任何安置都做不到、这些读数也无法显示的；请给定该安置可能的最大倾斜（设置项“多面棱体在轴上的最大倾斜（未测量时）”，命令行 --tilt-bound-arcsec），或在这些安装位置读取每个面的竖直读数，以便拟合其倾斜</translation>
+    </message>
+    <message>
+        <source>no vertical readings</source>
+        <translation>无竖直读数</translation>
+    </message>
+    <message>
+        <source>fewer than 4 faces: vertical readings cannot identify a tilt</source>
+        <translation>少于 4 个面：竖直读数无法辨识倾斜</translation>
+    </message>
+    <message>
+        <source>vertical readings missing there</source>
+        <translation>这些位置缺少竖直读数</translation>
     </message>
     <message>
         <source>row {row}: {reason}</source>
