@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 import re
-from decimal import ROUND_HALF_EVEN, Decimal
+from decimal import ROUND_FLOOR, ROUND_HALF_EVEN, Decimal
 from types import SimpleNamespace
 
 import numpy as np
@@ -46,8 +46,16 @@ def _half_range(value, lower, upper, t, rule):
 
 
 def _e29(value: float, places: int) -> Decimal:
-    return Decimal(repr(float(value))).quantize(Decimal(1).scaleb(-places),
-                                                rounding=ROUND_HALF_EVEN)
+    """E29's rounding of the decimal the value stands for: its shortest digits, and a value
+    within a billionth of the step from a 5 on the place kept taken as that 5 (binary
+    arithmetic leaves a decimal tie such as 8.85 a few units of its last bit off:
+    8.850000000000001; readings typed to six decimals or fewer cannot make a value that close
+    to a tie that is not one — audit 73, finding 2)."""
+    exact, step = Decimal(repr(float(value))), Decimal(1).scaleb(-places)
+    tie = exact.quantize(step, rounding=ROUND_FLOOR) + step / 2
+    if abs(exact - tie) <= step / 10**9:
+        exact = tie
+    return exact.quantize(step, rounding=ROUND_HALF_EVEN)
 
 
 def _compared(statement: str, symbol: str = '"') -> Decimal | None:
@@ -259,3 +267,11 @@ def test_a_value_ending_in_a_five_on_the_printed_place_is_compared_as_e29_rounds
     assert "3.5\" as measured" in c.statement
     assert c.verdict == "fail", c.statement
     assert _compared(c.statement) == Decimal("3.6")
+
+
+def test_a_tie_computed_just_above_rounds_to_even_as_the_tie_it_is():
+    """8.85″ computed as 8.850000000000001 (fresh CI's hypothesis draw) is the tie 8.85,
+    which E29 rounds to the even 8.8: a pass against ±8.8″ — as 8.85 typed would."""
+    assert _e29(8.850000000000001, 1) == _e29(8.85, 1) == Decimal("8.8")
+    c = _half_range(8.850000000000001, 3.5, 2.0, 8.8, "simple")
+    assert c.verdict == "pass" and _compared(c.statement) == Decimal("8.8")
