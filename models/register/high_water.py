@@ -23,11 +23,10 @@ from __future__ import annotations
 import datetime as dt
 import hashlib
 import json
-import os
-import tempfile
 from pathlib import Path
 
 from models.messages import QT_TR_NOOP, message
+from models.project.atomic_write import write_text_atomic
 
 __all__ = ["BEHIND", "COUNTER_BEHIND", "NOT_SIGNED", "mark_path", "mark_problems", "raise_mark",
            "read_mark"]
@@ -105,16 +104,7 @@ def raise_mark(path: Path, key: bytes, location: str, records: int, head: str,
             "written_at": dt.datetime.now(dt.timezone.utc).replace(microsecond=0).isoformat()}
     mark["signature"] = sign(key, _signed_text(mark))
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, temp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as out:
-            json.dump(mark, out, sort_keys=True)
-            out.flush()
-            os.fsync(out.fileno())
-        os.replace(temp, path)
-    except BaseException:
-        Path(temp).unlink(missing_ok=True)
-        raise
+    write_text_atomic(path, json.dumps(mark, sort_keys=True))
 
 
 def mark_problems(path: Path, key: bytes, chain: dict[int, str], counters: dict[str, int],

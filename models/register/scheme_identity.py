@@ -21,7 +21,7 @@ import re
 import unicodedata
 from collections.abc import Iterable
 
-__all__ = ["fields_issued", "number_pattern", "separators_aside"]
+__all__ = ["fields_issued", "number_pattern"]
 
 #: the fields a scheme fills in (models/certificate/metadata.format_certificate_number)
 _FIELD = re.compile(r"\{(year|month|day|seq)(?::0?\d+d)?\}")
@@ -48,13 +48,6 @@ def number_pattern(scheme: str, sequence: int, year: int, month: int, day: int
         at = field.end()
     tokens += _literal(scheme[at:])
     return re.compile(_SEP + _SEP.join(tokens) + _SEP, re.IGNORECASE)
-
-
-def separators_aside(number: str) -> str:
-    """The letters and digits of ``number`` in their order, case folded: a number typed by
-    hand with other separators or none ("AB20260002" for AB-2026-0002) has those of one
-    issued (the scheme that would tell its fields apart is not known for a typed number)."""
-    return "".join(c for c in unicodedata.normalize("NFKC", number) if c.isalnum()).casefold()
 
 
 def fields_issued(pattern: re.Pattern[str], issued: Iterable[str]) -> str | None:

@@ -1016,18 +1016,17 @@ class Register:
 
     def _check_free(self, conn, number: str, typed: bool = True) -> None:
         """Raise RegisterError if ``number``, or one that prints alike (same_identifier) or
-        has its letters and digits with other separators or none (scheme_identity; reg72
+        has its letters and digits with other separators or none (folded_serial_key; reg72
         #11), was issued. ``typed``: the number was typed (the message says to leave it
         empty); else the register allocated it (the message names ``register continue``)."""
-        from models.register.identifiers import same_identifier
-        from models.register.scheme_identity import separators_aside
+        from models.register.identifiers import folded_serial_key, same_identifier
 
         c = self._schema.CERTIFICATES.c
-        joined = separators_aside(number)
+        joined = folded_serial_key(number)  # letters and digits, separators aside
         row = next((r for r in conn.execute(self._sa.select(
             c.number, c.issued_at, c.workbench, c.item_serial).order_by(c.id))
             if r.number == number or same_identifier(r.number, number)
-            or separators_aside(r.number) == joined), None)
+            or folded_serial_key(r.number) == joined), None)
         if row is None:
             return
         said = {"number": row.number if row.number == number else f"{number} ({row.number})",

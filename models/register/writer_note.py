@@ -18,6 +18,7 @@ import datetime as dt
 import json
 import os
 import socket
+import tempfile
 from dataclasses import dataclass
 
 from models.messages import QT_TR_NOOP, Message, message
@@ -63,14 +64,18 @@ def write_note(database: str) -> None:
     body = json.dumps({"host": socket.gethostname(), "pid": os.getpid(), "user": _user(),
                        "since": dt.datetime.now(dt.timezone.utc).replace(
                            microsecond=0).isoformat()})
-    temp = f"{note_path(database)}.{os.getpid()}.tmp"  # whole or not at all: renamed
-    try:
-        with open(temp, "w", encoding="utf-8") as handle:
-            handle.write(body)
-        os.replace(temp, note_path(database))
+    target = note_path(database)
+    temp = ""
+    try:  # whole or not at all: renamed; the temporary a new file (O_EXCL), no link followed
+        handle, temp = tempfile.mkstemp(prefix=f"{os.path.basename(target)}.", suffix=".tmp",
+                                        dir=os.path.dirname(target) or ".")
+        with os.fdopen(handle, "w", encoding="utf-8") as out:
+            out.write(body)
+        os.replace(temp, target)
     except OSError:
-        with contextlib.suppress(OSError):
-            os.unlink(temp)
+        if temp:
+            with contextlib.suppress(OSError):
+                os.unlink(temp)
 
 
 def remove_note(database: str) -> None:
