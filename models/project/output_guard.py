@@ -40,6 +40,9 @@ TURN_FILE_SUFFIX = ".issuing"
 #: the note beside a SQLite register naming the process that holds its write lock
 #: (models/register/writer_note.py)
 WRITER_NOTE_SUFFIX = ".writer"
+#: the folder beside the laboratory's key where the register's high-water marks are kept
+#: (``<key file>.high-water``: models/register/high_water.py)
+HIGH_WATER_SUFFIX = ".high-water"
 
 #: the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte
 #: orders of its magic number); the -shm file has no magic and is found by its name
@@ -245,7 +248,26 @@ def check_output(path: str | os.PathLike[str] | None, protected: Sequence[Protec
                 "{flag}{out} is {what}; nothing was written: choose another name"),
                 flag=f"{flag} " if flag else "", out=os.fspath(path), what=item.what))
     refuse_database(path)
+    refuse_register_key(path, flag)
     refuse_unwritable(path, flag)
+
+
+def refuse_register_key(path: str | os.PathLike[str], flag: str = "") -> None:
+    """Raise OutputRefused when ``path`` is the laboratory's register key (a file with its
+    ``.high-water`` folder beside it) or a high-water mark in that folder (its key beside
+    it): an output over the mark stopped all issuing as a register "restored or replayed",
+    one over the key made every signature another key's (final review of stop 71)."""
+    resolved = Path(_resolved(path))
+    folder = resolved.parent
+    mark = folder.name.endswith(HIGH_WATER_SUFFIX) and \
+        (folder.parent / folder.name[: -len(HIGH_WATER_SUFFIX)]).is_file()
+    key = (resolved.parent / f"{resolved.name}{HIGH_WATER_SUFFIX}").is_dir()
+    if mark or key:
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out} is the certificate register's {what}; nothing was written: choose "
+            "another name"), flag=f"{flag} " if flag else "", out=os.fspath(path),
+            what=message(QT_TR_NOOP("high-water mark")) if mark else message(
+                QT_TR_NOOP("laboratory key"))))
 
 
 def refuse_unwritable(path: str | os.PathLike[str], flag: str = "") -> None:

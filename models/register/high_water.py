@@ -27,6 +27,7 @@ from pathlib import Path
 
 from models.messages import QT_TR_NOOP, message
 from models.project.atomic_write import write_text_atomic
+from models.project.output_guard import HIGH_WATER_SUFFIX
 
 __all__ = ["BEHIND", "COUNTER_BEHIND", "NOT_SIGNED", "mark_path", "mark_problems", "raise_mark",
            "read_mark"]
@@ -56,7 +57,7 @@ def mark_path(key_path: str, location: str) -> Path:
     """Where the mark of the register at ``location`` is kept beside the key file."""
     key = Path(key_path).expanduser()
     name = hashlib.sha256(location.encode()).hexdigest()[:16]
-    return key.parent / f"{key.name}.high-water" / f"{name}.json"
+    return key.parent / f"{key.name}{HIGH_WATER_SUFFIX}" / f"{name}.json"
 
 
 def _signed_text(mark: dict) -> str:

@@ -11325,7 +11325,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the certificate register ({path})</source>
-        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the register&apos;s own file beside a SQLite register ``X``: ``X.issuing``, the issuers&apos; turn after a lost race (a file lock, models.register.store); an output written over it (a rename: a new file) would split the issuers between two locks the note beside a SQLite register naming the process that holds its write lock (models/register/writer_note.py) the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name</extracomment>
+        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the register&apos;s own file beside a SQLite register ``X``: ``X.issuing``, the issuers&apos; turn after a lost race (a file lock, models.register.store); an output written over it (a rename: a new file) would split the issuers between two locks the note beside a SQLite register naming the process that holds its write lock (models/register/writer_note.py) the folder beside the laboratory&apos;s key where the register&apos;s high-water marks are kept (``&lt;key file&gt;.high-water``: models/register/high_water.py) the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name</extracomment>
         <translation>证书登记册（{path}）</translation>
     </message>
     <message>
@@ -11376,6 +11376,18 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>{flag}{out} is {what}; nothing was written: choose another name</source>
         <translation>{flag}{out} 是{what}；未写入任何内容：请换一个文件名</translation>
+    </message>
+    <message>
+        <source>{flag}{out} is the certificate register&apos;s {what}; nothing was written: choose another name</source>
+        <translation>{flag}{out} 是证书登记册的{what}；未写出任何内容：请另选名称</translation>
+    </message>
+    <message>
+        <source>high-water mark</source>
+        <translation>高水位标记</translation>
+    </message>
+    <message>
+        <source>laboratory key</source>
+        <translation>实验室密钥</translation>
     </message>
     <message>
         <source>{flag}{out} is not a regular file (a pipe, a device or a socket); nothing was written: name a file</source>
