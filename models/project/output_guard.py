@@ -259,9 +259,10 @@ def refuse_register_key(path: str | os.PathLike[str], flag: str = "") -> None:
     one over the key made every signature another key's (final review of stop 71)."""
     resolved = Path(_resolved(path))
     folder = resolved.parent
+    # os.path's tests: False, not an error, for a name the system cannot take (too long)
     mark = folder.name.endswith(HIGH_WATER_SUFFIX) and \
-        (folder.parent / folder.name[: -len(HIGH_WATER_SUFFIX)]).is_file()
-    key = (resolved.parent / f"{resolved.name}{HIGH_WATER_SUFFIX}").is_dir()
+        os.path.isfile(folder.parent / folder.name[: -len(HIGH_WATER_SUFFIX)])
+    key = os.path.isdir(resolved.parent / f"{resolved.name}{HIGH_WATER_SUFFIX}")
     if mark or key:
         raise OutputRefused(message(QT_TR_NOOP(
             "{flag}{out} is the certificate register's {what}; nothing was written: choose "
