@@ -32,8 +32,14 @@ from models.messages import QT_TR_NOOP
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import HalfRangeEstimate, half_range_monte_carlo
 
-__all__ = ["TILT_BOUNDED", "TILT_BOUNDED_DEFAULT", "half_range_with_bounded_systematic",
-           "tilt_bound_origin", "tilt_bounded", "widened_by_systematic", "without_inputs"]
+__all__ = ["BOUND_UNCHECKED", "TILT_BOUNDED", "TILT_BOUNDED_DEFAULT",
+           "half_range_with_bounded_systematic", "tilt_bound_origin", "tilt_bounded",
+           "widened_by_systematic", "without_inputs"]
+
+#: what a certificate says of a tilt bound whose effect enters U where the readings do not
+#: identify the tilt, the words of the decisions below (the cross-calibration's set-up row)
+BOUND_UNCHECKED = QT_TR_NOOP("the readings cannot check the bound (a larger tilt is not "
+                             "covered)")
 
 #: what the decision says of a tilt not identified that widens its interval, after how the
 #: rest was made (the polygon's, and a theodolite's decided on the means over passes)
