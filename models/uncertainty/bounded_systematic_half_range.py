@@ -32,9 +32,15 @@ from models.messages import QT_TR_NOOP
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import HalfRangeEstimate, half_range_monte_carlo
 
-__all__ = ["BOUND_UNCHECKED", "TILT_BOUNDED", "TILT_BOUNDED_DEFAULT",
+__all__ = ["BOUND_UNCHECKED", "TILT_BOUNDED", "TILT_BOUNDED_DEFAULT", "TILT_BOUND_ZERO",
            "half_range_with_bounded_systematic", "tilt_bound_origin", "tilt_bounded",
            "widened_by_systematic", "without_inputs"]
+
+#: what a tilt bound of 0 is (the setting's field at 0, its range in the docs, the settings a
+#: certificate lists): a tilt of nothing, which no set-up achieves, refused since 0.8.22
+#: where the readings do not identify the tilt (the theodolite's, the polygon's and the
+#: cross-calibration's setting; "none" read as "no bound")
+TILT_BOUND_ZERO = QT_TR_NOOP("no tilt (refused where not identified)")
 
 #: what a certificate says of a tilt bound whose effect enters U where the readings do not
 #: identify the tilt, the words of the decisions below (the cross-calibration's set-up row)
