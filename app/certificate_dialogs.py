@@ -107,7 +107,7 @@ class CertificateDialogs:
                        "it. No: nothing is issued, and the next certificate is an original."))
         return self._yes(
             tr("Correct the serial number or date of calibration?"),
-            question.format(reason=reason, number=revision.number))
+            question.format(reason=as_sentence(reason), number=revision.number))
 
     def confirm_test_report(self, reasons: list[str]) -> bool:
         return self._yes(
@@ -147,7 +147,7 @@ class CertificateDialogs:
             "{reason}.\n\nIs this item another manufacturer's than that of {numbers}? Yes: "
             "issue it; the register records that you said so. No: nothing is issued (to "
             "correct {numbers}, amend or replace it from File › Certificate register).")
-            .format(reason=reason, numbers=", ".join(numbers)))
+            .format(reason=as_sentence(reason), numbers=", ".join(numbers)))
 
     def confirm_issue_date(self, date: str, reason: str) -> bool:
         """The issue is dated far after the register's last record (reg73 #6): is today
@@ -155,7 +155,7 @@ class CertificateDialogs:
         return self._yes(tr("Is today {date}?").format(date=date), tr(
             "{reason}.\n\nIs today {date}? Yes: issue it dated {date}; the register records "
             "that you confirmed the date. No: nothing is issued; correct the computer's "
-            "clock.").format(reason=reason, date=date))
+            "clock.").format(reason=as_sentence(reason), date=date))
 
     def confirm_lookalike_serial(self, question) -> bool:
         """The serial is new to the register but looks like the serial of
@@ -193,7 +193,7 @@ class CertificateDialogs:
             "{reason}.\n\nIf this is a calibration of its own, say why (printed on the "
             "certificate with the number of {numbers}, which stays valid); to correct {numbers}, "
             "cancel and amend or replace it from File › Certificate register.").format(
-                reason=reason, numbers=", ".join(numbers)))
+                reason=as_sentence(reason), numbers=", ".join(numbers)))
 
     def _multiline_answer(self, title: str, question: str) -> str:
         """A question answered in a few lines of text ("" when cancelled), its words wrapped

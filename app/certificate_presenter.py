@@ -61,8 +61,8 @@ def _refusal(path: str, reason: str, with_path: str, without_path: str) -> str:
     {reason}. …") unless ``reason`` names it already (a file the register issued: "… .pdf
     is the PDF of certificate …"; day review 68 F12: the path was said twice), then
     ``without_path``."""
-    if path and path in reason:
-        return without_path.format(reason=reason)
+    if path and path in reason:  # the reason a sentence of its own (day 68 F9)
+        return without_path.format(reason=as_sentence(reason))
     return with_path.format(path=path, reason=reason)
 
 
@@ -777,7 +777,8 @@ class CertificatePresenter:
             if ended:  # refused for good: no later export is held to it (rev62 F1)
                 self.pending = None
             said = _not_issued_after_no(exc) if exc is declined else tr(
-                "{reason}. No certificate was written or recorded.").format(reason=explained(exc))
+                "{reason}. No certificate was written or recorded.").format(
+                reason=as_sentence(explained(exc)))  # a reason in lower case (day 68 F9)
             self.view.tell(tr("Not issued"), said + ("\n\n" + tr(
                         "The amendment or replacement of {number} is ended: the next "
                         "certificate of this workbench is an original.").format(
@@ -836,7 +837,7 @@ class CertificatePresenter:
             if not said:
                 self.view.tell(tr("Not issued"), tr(
                     "{reason}. No certificate was written or recorded.").format(
-                    reason=explained(question)))
+                    reason=as_sentence(explained(question))))
                 return None
         return another_maker, another_item
 

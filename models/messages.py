@@ -120,8 +120,13 @@ def lines(parts: Iterable[Any]) -> Message:
 def as_sentence(text: str) -> str:
     """``text`` beginning with a capital, as a sentence does (a reason begins in lower case,
     to follow "anglebench analyze: " on the command line or "…: " in a longer message); a
-    text in a script without case as it is."""
-    return text[:1].upper() + text[1:]
+    text in a script without case as it is, and one that begins with a name that is no word
+    (a file, a certificate number "ab-2026-0001", a setting's key) too: its case is its own."""
+    words = text.split(maxsplit=1)
+    first = words[0].rstrip(",:;.") if words else ""
+    if first.isalpha() and text[:1].islower():
+        return text[:1].upper() + text[1:]
+    return text
 
 
 def reason_of(exc: BaseException) -> str:

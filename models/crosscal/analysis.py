@@ -30,7 +30,7 @@ from models.messages import QT_TR_NOOP, Message, joined, lines, message, reason_
 from models.parameters import Parameter, SettingsError
 from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
-from models.uncertainty.bounded_systematic_half_range import tilt_bound_origin
+from models.uncertainty.bounded_systematic_half_range import TILT_BOUND_ZERO, tilt_bound_origin
 from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.printed_figure import printed_range_figures
@@ -89,11 +89,14 @@ PARAMETERS = (
                    "run (rectangular), through the design; used where vertical readings are "
                    "given; 0: not in the budget"),
     Parameter("tilt_bound_arcsec", "largest tilt of the polygon on the shaft, when not measured",
-              "float", DEFAULT_TILT_BOUND_ARCSEC, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
+              "float", DEFAULT_TILT_BOUND_ARCSEC, "\"", 0.0, 3600.0, decimals=1, step=10.0,
+              zero=TILT_BOUND_ZERO,
               help="Without vertical readings the polygon's tilt on the shaft is neither "
                    "identified nor removed: its exact effect for a tilt up to this, the worst "
                    "direction, enters the uncertainty (rectangular); not used when vertical "
-                   "readings are given (the tilt is then fitted and removed)"),
+                   "readings are given (the tilt is then fitted and removed); 0: a polygon on "
+                   "the shaft with no tilt at all, which no set-up achieves, refused where a "
+                   "mounting's tilt is not identified"),
     Parameter("drift_bound_arcsec", "largest autocollimator drift over a mounting, when not "
               "measured", "float", 0.0, "\"", 0.0, 100.0, decimals=3, step=0.05,
               zero="none stated",

@@ -39,6 +39,7 @@ from models.crosscal.export import comparator_not_stated
 from models.crosscal.figures import encoder_figures
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
 from models.messages import QT_TR_NOOP, message, separated
+from models.uncertainty.bounded_systematic_half_range import BOUND_UNCHECKED
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.printed_figure import printed
 
@@ -90,17 +91,19 @@ def _tilt_rows(result) -> list[tuple[str, Any, Any]]:
     """The set-up parameters' tilt row where some mounting's tilt is not identified (none
     where every one is fitted): which mountings, and the bound whose effect enters U for
     them, stated or the program's default (audit 73 finding 3, the theodolite's set-up
-    table's; a bound of 0 is refused there: models.crosscal.analysis)."""
+    table's; a bound of 0 is refused there: models.crosscal.analysis), and that the readings
+    cannot check it, as the theodolite's and the polygon's decisions say (left 74)."""
     unidentified = result.unidentified_tilt_mountings
     if not unidentified:
         return []
     return [(QT_TR_NOOP("Tilt of the polygon on the shaft (not measured)"),
              message(QT_TR_NOOP("not identified in mounting(s) {mountings}"),
                      mountings=", ".join(map(str, unidentified))),
-             message(QT_TR_NOOP("bound {bound} (stated) in U")
-                     if result.tilt_bound_arcsec != DEFAULT_TILT_BOUND_ARCSEC else
-                     QT_TR_NOOP("bound {bound} (the program's default) in U"),
-                     bound=f"{result.tilt_bound_arcsec:g}\""))]
+             separated([message(QT_TR_NOOP("bound {bound} (stated) in U")
+                                if result.tilt_bound_arcsec != DEFAULT_TILT_BOUND_ARCSEC else
+                                QT_TR_NOOP("bound {bound} (the program's default) in U"),
+                                bound=f"{result.tilt_bound_arcsec:g}\""),
+                        message(BOUND_UNCHECKED)], "; "))]
 
 
 def _drift_row(result) -> tuple[str, Any, Any]:

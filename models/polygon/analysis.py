@@ -57,6 +57,7 @@ from models.polygon.setup_statement import setup_statement
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.uncertainty.bounded_systematic_half_range import TILT_BOUND_ZERO
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
@@ -151,11 +152,14 @@ PARAMETERS = (
               help="Standard uncertainty of the measured roll; 0: the roll was not measured "
                    "(the bound above enters the budget, nothing is corrected)"),
     Parameter("tilt_bound_arcsec", "largest tilt of the polygon on the shaft, when not identified",
-              "float", DEFAULT_TILT_BOUND_ARCSEC, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
+              "float", DEFAULT_TILT_BOUND_ARCSEC, "\"", 0.0, 3600.0, decimals=1, step=10.0,
+              zero=TILT_BOUND_ZERO,
               help="When the vertical readings cannot identify the tilt (none given, all equal, "
                    "or only 3 faces: no degrees of freedom) the pyramidal error is not removed: "
                    "its exact effect for a tilt up to this, in the worst direction, enters the "
-                   "uncertainty (rectangular); not used when the tilt is fitted"),
+                   "uncertainty (rectangular); not used when the tilt is fitted; 0: a polygon "
+                   "on the shaft with no tilt at all, which no set-up achieves, refused where "
+                   "the vertical readings cannot identify the tilt"),
     Parameter("reading_noise_arcsec", "σ of a reading, when not evaluated", "float", 0.0, "\"",
               0.0, 100.0, decimals=3, step=0.01, zero="not stated",
               help="Standard deviation of one reading (autocollimator and encoder together), "

@@ -24,8 +24,8 @@ from models.positioning.model import (
     figure_text,
     infer_directions,
 )
+from models.positioning.per_target_reasons import per_target_reasons
 from models.positioning.report import (
-    NEEDS_BOTH_DIRECTIONS,
     axis_figure_values,
     figure_decimals,
     intervals_withheld,
@@ -531,11 +531,11 @@ def to_json(result: PositioningResult) -> dict[str, Any]:
     per_target["B_i"] = _array(iso.reversal)
     per_target["M_i"] = _array(iso.bidirectional_mean)
     per_target["R_i"] = _array(iso.bidirectional_repeatability)
-    # why they are null where one direction was measured (assessment 73 M3), the figures'
-    # interval_reason convention: a reason beside each, null where they are given
-    both = None if result.bidirectional else message(NEEDS_BOTH_DIRECTIONS)
-    for key in ("B_i", "M_i", "R_i"):
-        per_target[f"{key}_reason"] = both
+    # why a list has nulls, beside it, null where every value is given (assessment 73 M3):
+    # the run's reason where one direction was measured, else the targets named (a target
+    # approached one way, or once in a direction, of a run in both: left 74)
+    for key, reason in per_target_reasons(result).items():
+        per_target[f"{key}_reason"] = reason
     return {
         "target_unit": result.target_unit,
         "deviation_unit": result.deviation_unit,

@@ -17,6 +17,9 @@ issue with its own records. Two rules follow:
   (reg73 #6: ``ANGLEBENCH_REGISTER_MAX_DAYS`` had to be set for a yearly lab, and a clock a
   year ahead a minute after the last issue was accepted). The confirmation is recorded in
   the chain with the certificate (an entry ``date_confirmed``).
+
+Beside them, dates of issue never go backwards against the numbers (:func:`date_backwards`:
+the lab's time zone changed between two issues).
 """
 
 from __future__ import annotations
@@ -24,12 +27,12 @@ from __future__ import annotations
 import datetime as dt
 from dataclasses import dataclass
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, Message, message
 from models.register.register_error import RegisterError
 
 __all__ = ["CONFIRM_AFTER_DAYS", "DateToConfirm", "LastChained", "clock_checked",
-           "correction_refusal", "last_certificate_since_correction", "last_chained",
-           "parse_confirmed_date"]
+           "correction_refusal", "date_backwards", "last_certificate_since_correction",
+           "last_chained", "parse_confirmed_date"]
 
 #: an issue dated more than this many days after the register's last chained record asks
 #: the person to confirm today's date (a lab that issues weekly is not asked; a clock a
@@ -151,6 +154,30 @@ def correction_refusal(last: LastChained | None, now: dt.datetime, today: dt.dat
             "{date}: the computer's date now); correct the clock first if it is not today"),
             date=today.isoformat())
     return None
+
+
+def date_backwards(last, issue_date: dt.date, now: dt.datetime, zone: dt.tzinfo) -> Message:
+    """Why a certificate dated ``issue_date`` is not issued after ``last``, dated later
+    (:func:`last_certificate_since_correction`): the lab's time zone of this call, ``zone``,
+    is another than that of the last issue (``ANGLEBENCH_TIMEZONE`` per call, the window's
+    setting changed), and the dates of issue would go backwards against the numbers (reg72
+    #10: AB-2026-0001 dated 2026-12-07, AB-2026-0002 dated 2026-12-06). Refused rather than
+    dated otherwise: the date printed is the lab's local date of issue, and no other date is
+    right for this call; the refusal ends when the lab's date reaches the last one (a day at
+    most)."""
+    offset = now.astimezone(zone).strftime("%z")
+    from_then = dt.datetime.combine(dt.date.fromisoformat(last.issue_date), dt.time(), zone)
+    return message(QT_TR_NOOP(
+        "this certificate would be dated {date} in the lab's time zone of this issue, "
+        "{zone} (UTC{offset}), before the register's last certificate, {number}, dated "
+        "{then} (issued {at}; the zone it was dated in is not recorded): the dates of "
+        "issue would go backwards against the numbers. The lab's time zone changed "
+        "between the two issues (ANGLEBENCH_TIMEZONE, or the window's setting): issue "
+        "in the zone the lab dates its certificates in, or in this zone from {resumes} "
+        "on"),
+        date=issue_date.isoformat(), zone=str(zone), offset=f"{offset[:3]}:{offset[3:]}",
+        number=last.number, then=last.issue_date, at=last.issued_at,
+        resumes=from_then.isoformat())
 
 
 def _parse_time(text: str) -> dt.datetime:

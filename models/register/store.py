@@ -964,30 +964,6 @@ class Register:
             QT_TR_NOOP("no free number in scheme '{scheme}'"),
             scheme=scheme))
 
-    def _date_backwards(self, last, issue_date: dt.date, now: dt.datetime) -> Message:
-        """Why a certificate dated ``issue_date`` is not issued after ``last``, dated later:
-        the lab's time zone of this call is another than that of the last issue
-        (``ANGLEBENCH_TIMEZONE`` per call, the window's setting changed), and the dates of
-        issue would go backwards against the numbers (reg72 #10: AB-2026-0001 dated
-        2026-12-07, AB-2026-0002 dated 2026-12-06). Refused rather than dated otherwise: the
-        date printed is the lab's local date of issue, and no other date is right for this
-        call; the refusal ends when the lab's date reaches the last one (a day at most)."""
-        zone = self.timezone
-        offset = now.astimezone(zone).strftime("%z")
-        from_then = dt.datetime.combine(dt.date.fromisoformat(last.issue_date), dt.time(),
-                                        zone)
-        return message(QT_TR_NOOP(
-            "this certificate would be dated {date} in the lab's time zone of this issue, "
-            "{zone} (UTC{offset}), before the register's last certificate, {number}, dated "
-            "{then} (issued {at}; the zone it was dated in is not recorded): the dates of "
-            "issue would go backwards against the numbers. The lab's time zone changed "
-            "between the two issues (ANGLEBENCH_TIMEZONE, or the window's setting): issue "
-            "in the zone the lab dates its certificates in, or in this zone from {resumes} "
-            "on"),
-            date=issue_date.isoformat(), zone=str(zone), offset=f"{offset[:3]}:{offset[3:]}",
-            number=last.number, then=last.issue_date, at=last.issued_at,
-            resumes=from_then.isoformat())
-
     def continue_numbering(self, scheme: str, date: dt.date, next_sequence: int) -> str:
         """A lab moving to the register from numbers issued by hand: the next number the
         scheme allocates (for ``date``'s year, month …) is ``next_sequence``. Never moves the
@@ -1106,6 +1082,7 @@ class Register:
         # the clock rules (reg73 #6, #8): against the last chained record of any kind
         from models.register.clock_rules import (
             clock_checked,
+            date_backwards,
             last_certificate_since_correction,
             last_chained,
         )
@@ -1116,7 +1093,7 @@ class Register:
         # clock correction (the record dated by a clock set ahead stands before it)
         last = last_certificate_since_correction(conn, sa, self._schema)
         if last is not None and last.issue_date > issue_date.isoformat():
-            raise RegisterError(self._date_backwards(last, issue_date, now))
+            raise RegisterError(date_backwards(last, issue_date, now, self.timezone))
         revision, original = "original", None
         counter = before = value = None
         if supersedes:

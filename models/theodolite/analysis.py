@@ -22,6 +22,7 @@ from models.theodolite.model import (
     TheodoliteResult,
     analyze_run,
 )
+from models.uncertainty.bounded_systematic_half_range import TILT_BOUND_ZERO
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.printed_figure import PrintedFigure, printed_range_figures
@@ -88,11 +89,14 @@ PARAMETERS = (
                    "beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % "
                    "(R²), the result is refused; 0: no check"),
     Parameter("tilt_bound_arcsec", "largest axis tilt ψ, when not identified", "float",
-              DEFAULT_TILT_BOUND_ARCSEC, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
+              DEFAULT_TILT_BOUND_ARCSEC, "\"", 0.0, 3600.0, decimals=1, step=10.0,
+              zero=TILT_BOUND_ZERO,
               help="When the elevations cannot identify the tilt (all equal, only 2 distinct "
                    "values, or no degrees of freedom) the set-up's error is not removed: its "
                    "effect for a tilt up to this, in the worst direction, enters the "
-                   "uncertainty (rectangular); not used when the tilt is fitted"),
+                   "uncertainty (rectangular); not used when the tilt is fitted; 0: an axis "
+                   "with no tilt at all, which no set-up achieves, refused where the "
+                   "elevations cannot identify the tilt"),
     cmc_parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "\"", "the axis error"),
     # its budget counts the means' noise once (#39), unlike the other workbenches' help says
     dataclasses.replace(

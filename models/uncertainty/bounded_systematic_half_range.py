@@ -32,8 +32,20 @@ from models.messages import QT_TR_NOOP
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import HalfRangeEstimate, half_range_monte_carlo
 
-__all__ = ["TILT_BOUNDED", "TILT_BOUNDED_DEFAULT", "half_range_with_bounded_systematic",
-           "tilt_bound_origin", "tilt_bounded", "widened_by_systematic", "without_inputs"]
+__all__ = ["BOUND_UNCHECKED", "TILT_BOUNDED", "TILT_BOUNDED_DEFAULT", "TILT_BOUND_ZERO",
+           "half_range_with_bounded_systematic", "tilt_bound_origin", "tilt_bounded",
+           "widened_by_systematic", "without_inputs"]
+
+#: what a tilt bound of 0 is (the setting's field at 0, its range in the docs, the settings a
+#: certificate lists): a tilt of nothing, which no set-up achieves, refused since 0.8.22
+#: where the readings do not identify the tilt (the theodolite's, the polygon's and the
+#: cross-calibration's setting; "none" read as "no bound")
+TILT_BOUND_ZERO = QT_TR_NOOP("no tilt (refused where not identified)")
+
+#: what a certificate says of a tilt bound whose effect enters U where the readings do not
+#: identify the tilt, the words of the decisions below (the cross-calibration's set-up row)
+BOUND_UNCHECKED = QT_TR_NOOP("the readings cannot check the bound (a larger tilt is not "
+                             "covered)")
 
 #: what the decision says of a tilt not identified that widens its interval, after how the
 #: rest was made (the polygon's, and a theodolite's decided on the means over passes)
