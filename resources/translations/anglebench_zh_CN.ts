@@ -8355,20 +8355,8 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>经纬仪竖直度盘的读数；E 按方法论文（田留德等 2017）的定义，在水平面以下为正（OZ 向下）：若读数向上为正，则得到 α + 180° 和 −β，修正后误差不变</translation>
     </message>
     <message>
-        <source>When the elevations cannot identify the tilt (all equal, only 2 distinct values, or no degrees of freedom) the set-up&apos;s error is not removed: its effect for a tilt up to this, in the worst direction, enters the uncertainty (rectangular); not used when the tilt is fitted</source>
-        <translation>当俯仰角无法辨识倾斜（全部相等、只有 2 个不同值或没有自由度）时，安装误差不予扣除：不超过此值、方向最不利的倾斜的影响计入不确定度（矩形分布）；拟合出倾斜时不使用</translation>
-    </message>
-    <message>
-        <source>When the vertical readings cannot identify the tilt (none given, all equal, or only 3 faces: no degrees of freedom) the pyramidal error is not removed: its exact effect for a tilt up to this, in the worst direction, enters the uncertainty (rectangular); not used when the tilt is fitted</source>
-        <translation>当竖直读数无法辨识倾斜时（未给出、全部相等，或只有 3 个面：没有自由度），塔差误差不予扣除：不超过此值、处于最不利方向的倾斜的精确影响计入不确定度（矩形分布）；倾斜已拟合时不使用</translation>
-    </message>
-    <message>
         <source>Without a closure reading (the first face read again at the end of the mounting) a mounting&apos;s drift is neither measured nor removed (unless the other mountings&apos; closure readings let it be fitted), and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that the readings cannot tell from the encoder&apos;s error: its exact effect for a linear drift up to this over a mounting (a full turn), in every such mounting, enters the uncertainty (rectangular); with σ of a reading stated, each such mounting drifting its own way up to this too (that moves the face deviations as well); 0: none stated, and the encoder&apos;s U is then withheld (the face deviations are not affected by a drift common to the mountings)</source>
         <translation>没有闭合读数（安装位置末尾再读一次第一面）时，该安装位置的漂移既未测量也未消除（除非其他安装位置的闭合读数使其可以拟合），而各安装位置同向的漂移是编码器各步上的一个斜坡，读数无法将其与编码器误差区分：每个这样的安装位置中不超过此值（一整转内）的线性漂移的精确影响计入不确定度（矩形分布）；给出读数的 σ 时，也计入每个这样的安装位置各自不超过此值的不同漂移（它也会影响面偏差）；0：未给出，此时编码器的 U 不予给出（各安装位置共同的漂移不影响面偏差）</translation>
-    </message>
-    <message>
-        <source>Without vertical readings the polygon&apos;s tilt on the shaft is neither identified nor removed: its exact effect for a tilt up to this, the worst direction, enters the uncertainty (rectangular); not used when vertical readings are given (the tilt is then fitted and removed)</source>
-        <translation>无竖直读数时，多面棱体在轴上的倾斜既未辨识也未修正：按不超过此值的倾斜、最不利方向精确计算其影响，计入不确定度（矩形分布）；给出竖直读数时不用（此时倾斜被拟合并修正）</translation>
     </message>
     <message>
         <source>autocollimator scale error up to</source>
@@ -10917,8 +10905,20 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>给出垂直读数时倾斜修正所采用的坐标系，与多面棱体工作台相同：自准直仪与回转轴调平，或其垂直方向沿多面棱体轴线</translation>
     </message>
     <message>
+        <source>When the elevations cannot identify the tilt (all equal, only 2 distinct values, or no degrees of freedom) the set-up&apos;s error is not removed: its effect for a tilt up to this, in the worst direction, enters the uncertainty (rectangular); not used when the tilt is fitted; 0: an axis with no tilt at all, which no set-up achieves, refused where the elevations cannot identify the tilt</source>
+        <translation>当俯仰角无法辨识倾斜（全部相等、只有 2 个不同值或没有自由度）时，安装误差不予扣除：不超过此值、方向最不利的倾斜的影响计入不确定度（矩形分布）；拟合出倾斜时不使用；0：轴完全没有倾斜，任何安置都做不到，俯仰角无法辨识倾斜时拒绝</translation>
+    </message>
+    <message>
+        <source>When the vertical readings cannot identify the tilt (none given, all equal, or only 3 faces: no degrees of freedom) the pyramidal error is not removed: its exact effect for a tilt up to this, in the worst direction, enters the uncertainty (rectangular); not used when the tilt is fitted; 0: a polygon on the shaft with no tilt at all, which no set-up achieves, refused where the vertical readings cannot identify the tilt</source>
+        <translation>当竖直读数无法辨识倾斜时（未给出、全部相等，或只有 3 个面：没有自由度），塔差误差不予扣除：不超过此值、处于最不利方向的倾斜的精确影响计入不确定度（矩形分布）；倾斜已拟合时不使用；0：多面棱体在轴上完全没有倾斜，任何安置都做不到，竖直读数无法辨识倾斜时拒绝</translation>
+    </message>
+    <message>
         <source>Which instrument the certificate is issued for: the polygon&apos;s face deviations or the encoder&apos;s error at its steps</source>
         <translation>证书所针对的器具：多面棱体的面偏差，或编码器各步的误差</translation>
+    </message>
+    <message>
+        <source>Without vertical readings the polygon&apos;s tilt on the shaft is neither identified nor removed: its exact effect for a tilt up to this, the worst direction, enters the uncertainty (rectangular); not used when vertical readings are given (the tilt is then fitted and removed); 0: a polygon on the shaft with no tilt at all, which no set-up achieves, refused where a mounting&apos;s tilt is not identified</source>
+        <translation>无竖直读数时，多面棱体在轴上的倾斜既未辨识也未修正：按不超过此值的倾斜、最不利方向精确计算其影响，计入不确定度（矩形分布）；给出竖直读数时不用（此时倾斜被拟合并修正）；0：多面棱体在轴上完全没有倾斜，任何安置都做不到，某个安装位置的倾斜未辨识时拒绝</translation>
     </message>
     <message>
         <source>certificate of</source>
@@ -12764,6 +12764,16 @@ Replace it?</source>
         <translation>{quantity}：{trials} 次试验，种子 {seed}，仅计读数噪声。仰角读数未能辨识、也未扣除的轴倾角，是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量。上限 {bound}（程序默认值：未给定上限）以内、任意方向的倾角，至多使半峰峰值改变 {change}（即其在这些转角处对 ζ(θ) 的精确影响，β = {beta}），因此区间两端各加宽该量，对任何这样的倾角均成立；俯仰角无法核查该上限（更大的倾角不在其内）</translation>
     </message>
     <message>
+        <source>no tilt (refused where not identified)</source>
+        <extracomment>what a tilt bound of 0 is (the setting&apos;s field at 0, its range in the docs, the settings a certificate lists): a tilt of nothing, which no set-up achieves, refused since 0.8.22 where the readings do not identify the tilt (the theodolite&apos;s, the polygon&apos;s and the cross-calibration&apos;s setting; &quot;none&quot; read as &quot;no bound&quot;)</extracomment>
+        <translation>无倾斜（倾斜未辨识时拒绝）</translation>
+    </message>
+    <message>
+        <source>the readings cannot check the bound (a larger tilt is not covered)</source>
+        <extracomment>what a certificate says of a tilt bound whose effect enters U where the readings do not identify the tilt, the words of the decisions below (the cross-calibration&apos;s set-up row)</extracomment>
+        <translation>读数无法核查该上限（更大的倾角不在其内）</translation>
+    </message>
+    <message>
         <source>the tilt, not identified and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it; a tilt up to {bound} (stated) in any direction changes the half range by at most {change}, so the interval is widened by that at both ends and holds for any such tilt; the readings cannot check the bound (a larger tilt is not covered)</source>
         <extracomment>what the decision says of a tilt not identified that widens its interval, after how the rest was made (the polygon&apos;s, and a theodolite&apos;s decided on the means over passes)</extracomment>
         <translation>未辨识、也未扣除的倾角是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量；给定上限 {bound} 以内、任意方向的倾角，至多使半峰峰值改变 {change}，因此区间两端各加宽该量，对任何这样的倾角均成立；读数无法核查该上限（更大的倾角不在其内）</translation>
@@ -12772,6 +12782,34 @@ Replace it?</source>
         <source>the tilt, not identified and not removed, is one unknown error for the whole run, not noise: nothing is taken off the measured range for it; a tilt up to {bound} (the program&apos;s default: no bound was stated) in any direction changes the half range by at most {change}, so the interval is widened by that at both ends and holds for any such tilt; the readings cannot check the bound (a larger tilt is not covered)</source>
         <extracomment>the same where no bound was stated: the program&apos;s default, not the laboratory&apos;s figure (audit 73 finding 3: it was printed &quot;(stated)&quot;)</extracomment>
         <translation>未辨识、也未扣除的倾角是整个测回的一个未知误差，而不是噪声：不因其从实测极差中减去任何量；上限 {bound}（程序默认值：未给定上限）以内、任意方向的倾角，至多使半峰峰值改变 {change}，因此区间两端各加宽该量，对任何这样的倾角均成立；读数无法核查该上限（更大的倾角不在其内）</translation>
+    </message>
+    <message>
+        <source>null at target(s) {targets}: the readings have no approach in the ↑ direction there</source>
+        <extracomment>a mean, s and ±2s null where the target has no approach in that direction</extracomment>
+        <translation>目标位置 {targets} 为 null：读数中该处没有 ↑ 方向的趋近</translation>
+    </message>
+    <message>
+        <source>null at target(s) {targets}: the readings have no approach in the ↓ direction there</source>
+        <translation>目标位置 {targets} 为 null：读数中该处没有 ↓ 方向的趋近</translation>
+    </message>
+    <message>
+        <source>null at target(s) {targets}: approached only once in the ↑ direction, so no standard deviation</source>
+        <extracomment>s and ±2s null where the target is approached once in that direction</extracomment>
+        <translation>目标位置 {targets} 为 null：该处 ↑ 方向仅趋近一次，无标准偏差</translation>
+    </message>
+    <message>
+        <source>null at target(s) {targets}: approached only once in the ↓ direction, so no standard deviation</source>
+        <translation>目标位置 {targets} 为 null：该处 ↓ 方向仅趋近一次，无标准偏差</translation>
+    </message>
+    <message>
+        <source>null at target(s) {targets}: it needs both approach directions, and the readings there have one only</source>
+        <extracomment>B_i, M_i and R_i null where a target of a run in both directions has one only</extracomment>
+        <translation>目标位置 {targets} 为 null：需要两个趋近方向的读数，而该处读数只有一个方向</translation>
+    </message>
+    <message>
+        <source>null at target(s) {targets}: approached only once in a direction there, so no standard deviation</source>
+        <extracomment>R_i null where a target is approached in both directions, once in one of them</extracomment>
+        <translation>目标位置 {targets} 为 null：该处在某一方向仅趋近一次，无标准偏差</translation>
     </message>
 </context>
 </TS>
