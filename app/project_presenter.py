@@ -283,7 +283,7 @@ class ProjectPresenter(QObject):
             check_project(project, self._kinds(), str(path))
         except ProjectFileError as exc:
             self.view.tell(tr("Cannot open project"),
-                           tr("{reason}. Your current work is as it was.").format(reason=exc))
+                           tr("{reason}. Your current work is as it was.").format(reason=explained(exc)))
             return False
         self.apply_project(project, Path(path).name)
         self.path = Path(path)

@@ -203,3 +203,21 @@ def test_recovered_work_is_unsaved_work_of_the_same_file(qtbot, tmp_path, sample
     assert view.show_title.call_args.args[0].endswith("— run.anglebench.json *")
     survivor.close()
     assert not survivor.recovery.exists()
+
+
+def test_a_damaged_file_is_told_in_the_windows_language(qtbot, tmp_path, samples_dir):
+    """In a Chinese window the reason a project cannot be opened is Chinese too (until 0.8.22
+    the ProjectFileError's English text was put into the Chinese sentence)."""
+    from widgets.i18n import install_language
+
+    presenter, view, (theodolite, _) = make(qtbot, tmp_path)
+    damaged = tmp_path / "damaged.anglebench.json"
+    damaged.write_text("{ not json")
+    view.ask_save_changes.return_value = False
+    install_language("zh_CN")
+    try:
+        assert not presenter.open_project(damaged)
+    finally:
+        install_language("en")
+    _, text = view.tell.call_args.args
+    assert "damaged project file" not in text and "damaged.anglebench.json" in text, text
