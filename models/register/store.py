@@ -50,6 +50,7 @@ from models.register.chain import (
     GENESIS,
     link,
 )
+from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED
 from models.register.register_error import RegisterError
 from models.register.wording import DOCUMENT_KINDS, kind_words
 from models.register.writer_note import holder as writer_holder
@@ -310,6 +311,10 @@ REISSUED_FOUND = QT_TR_NOOP(
     "of the same number: the number was issued twice (the register restored from an older "
     "copy, or an older state copied back); nothing is issued until the loss is recorded with "
     "'anglebench register acknowledge-loss --by NAME --reason TEXT'")
+#: the findings a recorded loss answers (:meth:`Register.acknowledge_loss`): a certificate
+#: found missing, a number found issued twice, the register behind its high-water mark or the
+#: mark not the key's; any other finding still refuses it
+LOSS_FINDINGS = (MISSING_FOUND, REISSUED_FOUND, BEHIND, COUNTER_BEHIND, NOT_SIGNED)
 
 
 class RegisterTampered(RegisterError):
@@ -888,6 +893,16 @@ class Register:
             return
         with contextlib.suppress(OSError):
             raise_mark(path, self._key, self._location(), **due)
+
+    def high_water_mark(self) -> dict | None:
+        """The register's high-water mark beside the lab's key, signed with it
+        (models/register/high_water.read_mark): None without the key or without a mark; {}
+        when it cannot be read or is not the key's. Without a readable mark a loss is
+        acknowledged only with the last number known issued (:meth:`acknowledge_loss`)."""
+        from models.register.high_water import read_mark
+
+        path = self._mark_path()
+        return read_mark(path, self._key) if path is not None and self._key else None
 
     def _high_water_problems(self, links: list, counters: dict, notes) -> list:
         """With the key: what the register lacks against its high-water mark."""
@@ -2359,22 +2374,18 @@ class Register:
         broken chain, a record rewritten) still refuses. ``scheme``: the number scheme of
         ``last_number`` when the register has no counter of it (the copy restored predates
         its first number). Returns the entry's body."""
-        from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED, read_mark
-
         by, reason = " ".join((by or "").split()), " ".join((reason or "").split())
         if not by or not reason:
             raise RegisterError(message(QT_TR_NOOP(
                 "a loss is acknowledged by a named person with the reason (--by, --reason)")))
-        answered = (MISSING_FOUND, REISSUED_FOUND, BEHIND, COUNTER_BEHIND, NOT_SIGNED)
         found = self.audit(pdfs=True)
-        others = [p for p in found if getattr(p, "template", "") not in answered]
+        others = [p for p in found if getattr(p, "template", "") not in LOSS_FINDINGS]
         if others:
             raise RegisterError(message(QT_TR_NOOP(
                 "the register's records were changed after issue ({problem}): a loss is "
                 "acknowledged in a register whose own records are intact; see 'anglebench "
                 "register verify'"), problem=others[0]))
-        path = self._mark_path()
-        mark = read_mark(path, self._key) if path is not None and self._key else None
+        mark = self.high_water_mark()
         if not last_number.strip() and not mark:
             # no signed mark tells how far the numbers went: the person must (a restore
             # acknowledged without it issued the lost numbers again)
