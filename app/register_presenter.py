@@ -13,6 +13,7 @@ from PySide6.QtCore import QT_TR_NOOP
 
 from app.certificate_presenter import CertificatePresenter, PendingRevision
 from app.register_recovery_pointer import recovery_pointer
+from models.messages import as_sentence
 from models.register.store import CertificateRecord, RegisterError
 from models.register.wording import kind_words, revision_words, status_words
 from widgets.i18n import declared, explained, tr, translated
@@ -344,7 +345,7 @@ class RegisterPresenter:
                                                      typed.scheme)
                     said, left = loss_recorded(body, register.chain_head()), register.problems
             except (RegisterError, OSError) as exc:
-                return explained(exc)
+                return as_sentence(explained(exc))  # the command's words, opening the line
             self._recorded(tr("Loss recorded"), said, left)
             return ""
 
@@ -364,7 +365,7 @@ class RegisterPresenter:
                                                   parse_confirmed_date(typed.confirmed_date))
                     left = register.problems
             except (RegisterError, OSError) as exc:
-                return explained(exc)
+                return as_sentence(explained(exc))  # the command's words, opening the line
             self._recorded(tr("Clock correction recorded"), clock_corrected(body), left)
             return ""
 
@@ -373,7 +374,7 @@ class RegisterPresenter:
     def _recorded(self, title: str, said, left: list) -> None:
         """What was recorded, with any finding the register still holds (it still refuses
         issuing for those), then the list again."""
-        self.view.tell(title, "\n".join([translated(said), *(
+        self.view.tell(title, "\n".join([as_sentence(translated(said)), *(
             tr("Still found: {problem}").format(problem=translated(p)) for p in left[:20])]))
         self.refresh(self.search)
 

@@ -107,12 +107,16 @@ class _RecoveryDialog(QDialog):
         return edit
 
     def _fit(self) -> None:
-        """As wide as a line of its explanation wants, as tall as its fields, at most the
-        screen (the content scrolls below that)."""
-        width = 600 * self.logicalDpiX() // 96
+        """As wide as a line of its explanation wants (or as the user made it), as tall as
+        its fields and the refusal shown, at most the screen (the content scrolls below)."""
+        width = max(self.width(), 600 * self.logicalDpiX() // 96) if self.isVisible() \
+            else 600 * self.logicalDpiX() // 96
         margins = self.outer.contentsMargins()
-        tall = (self.inner.heightForWidth(width - margins.left() - margins.right())
+        inside = width - margins.left() - margins.right()
+        tall = (self.inner.heightForWidth(inside)
                 if self.inner.hasHeightForWidth() else self.content.sizeHint().height())
+        if self.refusal.isVisibleTo(self):  # the register's refusal, under the fields
+            tall += self.refusal.heightForWidth(inside) + self.outer.spacing()
         fit_to_screen(self, width, tall + self.buttons.sizeHint().height()
                       + margins.top() + margins.bottom() + 2 * self.outer.spacing())
 
@@ -124,6 +128,7 @@ class _RecoveryDialog(QDialog):
         if refused:
             self.refusal.setText(refused)
             self.refusal.show()
+            self._fit()  # taller by the refusal, as far as the screen allows
             return  # kept open, everything typed kept
         self.accept()
 
