@@ -779,6 +779,13 @@ class CertificatePresenter:
             said = _not_issued_after_no(exc) if exc is declined else tr(
                 "{reason}. No certificate was written or recorded.").format(
                 reason=as_sentence(explained(exc)))  # a reason in lower case (day 68 F9)
+            # a loss or a clock set ahead: the register window's own action, named (the
+            # register's words name the command)
+            from app.register_recovery_pointer import recovery_pointer
+            from models.messages import reason_of
+
+            pointer = recovery_pointer(reason_of(exc))
+            said += "\n\n" + pointer if pointer else ""
             self.view.tell(tr("Not issued"), said + ("\n\n" + tr(
                         "The amendment or replacement of {number} is ended: the next "
                         "certificate of this workbench is an original.").format(

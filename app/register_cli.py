@@ -837,28 +837,23 @@ def run_register(argv: list[str]) -> int:
                     words) + "\n")
                 return 0
             if args.command == "acknowledge-loss":
+                from models.register.recoveries import loss_recorded
+
                 body = register.acknowledge_loss(args.by, args.reason, args.last_number,
                                                  args.scheme)
-                sys.stdout.write(rendered(message(QT_TR_NOOP(
-                    "loss recorded by {by} ({reason}); counters moved: {moved}; issuing "
-                    "resumes; chain head now {head}"), by=body["by"], reason=body["reason"],
-                    moved=", ".join(f"{name} {before} → {after}" for name, (before, after)
-                                    in body["counters"].items()) or message(QT_TR_NOOP(
-                                        "none")), head=register.chain_head()), words) + "\n")
+                sys.stdout.write(rendered(loss_recorded(body, register.chain_head()), words)
+                                 + "\n")
                 for problem in register.problems:
                     _say(rendered(message(QT_TR_NOOP("anglebench register: WARNING: {problem}"),
                                           problem=problem), words))
                 return 0
             if args.command == "clock-correction":
                 from models.register.clock_rules import parse_confirmed_date
+                from models.register.recoveries import clock_corrected
 
                 body = register.correct_clock(args.by, args.reason,
                                               parse_confirmed_date(args.confirm_date))
-                sys.stdout.write(rendered(message(QT_TR_NOOP(
-                    "clock correction recorded by {by} ({reason}): {ahead}, dated {at}, was "
-                    "dated by a clock set ahead; issuing resumes on this clock ({date})"),
-                    by=body["by"], reason=body["reason"], ahead=body["ahead"],
-                    at=body["ahead_at"], date=body["confirmed_date"]), words) + "\n")
+                sys.stdout.write(rendered(clock_corrected(body), words) + "\n")
                 return 0
             if args.command == "continue":
                 import datetime as dt

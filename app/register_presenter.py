@@ -12,9 +12,12 @@ from typing import Any, Protocol
 from PySide6.QtCore import QT_TR_NOOP
 
 from app.certificate_presenter import CertificatePresenter, PendingRevision
+from app.register_recovery_pointer import recovery_pointer
+from models.messages import as_sentence
 from models.register.store import CertificateRecord, RegisterError
 from models.register.wording import kind_words, revision_words, status_words
 from widgets.i18n import declared, explained, tr, translated
+from widgets.register_recoveries import CorrectionTyped, LossTyped
 
 __all__ = ["RegisterPresenter", "RegisterView"]
 
@@ -53,6 +56,16 @@ class RegisterView(Protocol):
         thread."""
 
     def show_pdf_check(self, text: str, warning: bool) -> None: ...
+
+    def ask_loss(self, last_number_needed: bool,
+                 record: Callable[[LossTyped], str]) -> None:
+        """What ``anglebench register acknowledge-loss`` asks (the last number required
+        when ``last_number_needed``), handed to ``record`` until it returns "" (recorded)
+        or the user cancels; a refusal it returns is shown, what was typed kept."""
+
+    def ask_clock_correction(self, record: Callable[[CorrectionTyped], str]) -> None:
+        """What ``anglebench register clock-correction`` asks, handed to ``record`` as
+        :meth:`ask_loss` does."""
 
 
 def _workbench_title(key: str) -> str:
@@ -100,8 +113,9 @@ class RegisterPresenter:
             self.records, problems = [], []
             self.view.tell(tr("Register"), explained(exc))
         if problems and search is None:  # checked on opening: said once, not per keystroke
+            pointers = dict.fromkeys(filter(None, map(recovery_pointer, problems)))
             self.view.tell(tr("Register changed after issue"), "\n".join(
-                translated(p) for p in problems[:20]))
+                [*(translated(p) for p in problems[:20]), *pointers]))
         if search is None and self.records:  # on opening: the stored PDFs, in the background
             self.check_pdfs()
         self.view.show_records(COLUMNS, [
@@ -308,6 +322,61 @@ class RegisterPresenter:
                     "It is no longer valid: withdrawn ({reason}).").format(
                     reason=record.withdrawn_reason or "—")) + said)
         return record
+
+    # -- the recorded recoveries (models/register/recoveries.py) ----------------------------
+    def acknowledge_loss(self) -> None:
+        """As ``anglebench register acknowledge-loss``: asks who, why, the last number known
+        issued (required where the register has no signed high-water mark to tell it) and
+        its scheme; records them with Register.acknowledge_loss, says what was recorded, or
+        shows the register's refusal in the dialog."""
+        try:
+            with self._register() as register:
+                last_number_needed = not register.high_water_mark()
+        except RegisterError as exc:
+            self.view.tell(tr("Register"), explained(exc))
+            return
+
+        def record(typed: LossTyped) -> str:
+            from models.register.recoveries import loss_recorded
+
+            try:
+                with self._register() as register:
+                    body = register.acknowledge_loss(typed.by, typed.reason, typed.last_number,
+                                                     typed.scheme)
+                    said, left = loss_recorded(body, register.chain_head()), register.problems
+            except (RegisterError, OSError) as exc:
+                return as_sentence(explained(exc))  # the command's words, opening the line
+            self._recorded(tr("Loss recorded"), said, left)
+            return ""
+
+        self.view.ask_loss(last_number_needed, record)
+
+    def correct_clock(self) -> None:
+        """As ``anglebench register clock-correction``: asks who, why and today's date
+        (typed: the confirmation); records them with Register.correct_clock, says what was
+        recorded, or shows the register's refusal in the dialog."""
+        def record(typed: CorrectionTyped) -> str:
+            from models.register.clock_rules import parse_confirmed_date
+            from models.register.recoveries import clock_corrected
+
+            try:
+                with self._register() as register:
+                    body = register.correct_clock(typed.by, typed.reason,
+                                                  parse_confirmed_date(typed.confirmed_date))
+                    left = register.problems
+            except (RegisterError, OSError) as exc:
+                return as_sentence(explained(exc))  # the command's words, opening the line
+            self._recorded(tr("Clock correction recorded"), clock_corrected(body), left)
+            return ""
+
+        self.view.ask_clock_correction(record)
+
+    def _recorded(self, title: str, said, left: list) -> None:
+        """What was recorded, with any finding the register still holds (it still refuses
+        issuing for those), then the list again."""
+        self.view.tell(title, "\n".join([as_sentence(translated(said)), *(
+            tr("Still found: {problem}").format(problem=translated(p)) for p in left[:20])]))
+        self.refresh(self.search)
 
     def show_history(self) -> None:
         record = self.selected()

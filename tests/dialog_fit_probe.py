@@ -71,6 +71,10 @@ def main() -> None:
 
     window.show_register()
     record("certificate register", window.register_window)
+    for name, button in (("acknowledge a loss", "loss"), ("clock correction", "clock")):
+        window.register_window.recovery_buttons[button].click()  # the register's recoveries
+        record(name, window.register_window.recovery_dialog)
+        window.register_window.recovery_dialog.reject()
     window.register_window.close()
     window.show_manual()
     record("manual", window.manual)

@@ -120,6 +120,22 @@ class RegisterWindow(QDialog):
             "As Amend, but the new certificate gets a new number and replaces the original"))
         live(self.buttons["verify"].setToolTip, tr(
             "Is a PDF, byte for byte, one this register issued?"))
+        # the register's recoveries, as its commands record them (acknowledge-loss,
+        # clock-correction: each dialog names its command): beside the line that says the
+        # register's state
+        self.recovery_buttons = {}
+        for name, text, tip in (
+                ("loss", tr("Acknowledge a loss…"), tr(
+                    "Record that records were lost (an older copy restored or put back), so "
+                    "that issuing resumes past the numbers lost")),
+                ("clock", tr("Clock correction…"), tr(
+                    "Record that the register's last record was dated by a clock set ahead, "
+                    "so that a right clock issues again"))):
+            self.recovery_buttons[name] = QPushButton()
+            live(self.recovery_buttons[name].setText, text)
+            live(self.recovery_buttons[name].setToolTip, tip)
+        #: the recovery dialog open (a test types into it)
+        self.recovery_dialog: QDialog | None = None
         self.history_title = QLabel()
         live(self.history_title.setText, tr("Select a certificate and press History"))
         self.history_plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox(), axisItems={
@@ -205,7 +221,11 @@ class RegisterWindow(QDialog):
         splitter.setSizes([420, 300])
         layout = QVBoxLayout(self)
         layout.addLayout(top)
-        layout.addWidget(self.pdf_check)
+        state_row = QHBoxLayout()
+        state_row.addWidget(self.pdf_check, 1)
+        for button in self.recovery_buttons.values():
+            state_row.addWidget(button)
+        layout.addLayout(state_row)
         layout.addWidget(splitter, 1)
 
     # -- wiring ------------------------------------------------------------------------
@@ -220,6 +240,8 @@ class RegisterWindow(QDialog):
         self.buttons["print"].clicked.connect(presenter.print_pdf)
         self.buttons["verify"].clicked.connect(presenter.verify_pdf)
         self.buttons["history"].clicked.connect(presenter.show_history)
+        self.recovery_buttons["loss"].clicked.connect(presenter.acknowledge_loss)
+        self.recovery_buttons["clock"].clicked.connect(presenter.correct_clock)
         self.table.doubleClicked.connect(lambda _index: presenter.show_history())
         self.interval_button.clicked.connect(
             lambda: self.serial and presenter.set_interval(self.serial, self.interval.value()))
@@ -314,6 +336,31 @@ class RegisterWindow(QDialog):
 
     def ask_pdf_path(self, suggested: str) -> str:
         return ask_save_file(self, tr("Save the certificate's PDF"), suggested, "PDF (*.pdf)")
+
+    def ask_loss(self, last_number_needed: bool, record) -> None:
+        """The loss dialog (widgets/register_recoveries.py), open beside the window until
+        ``record`` accepts what was typed or the user cancels."""
+        from widgets.register_recoveries import LossDialog
+
+        self._open_recovery(LossDialog(self, last_number_needed, record))
+
+    def ask_clock_correction(self, record) -> None:
+        """The clock-correction dialog, open until ``record`` accepts it or it is cancelled."""
+        from widgets.register_recoveries import ClockCorrectionDialog
+
+        self._open_recovery(ClockCorrectionDialog(self, record))
+
+    def _open_recovery(self, dialog: QDialog) -> None:
+        if self.recovery_dialog is not None:
+            self.recovery_dialog.close()
+        self.recovery_dialog = dialog
+        dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
+        dialog.finished.connect(lambda _result: self._recovery_closed(dialog))
+        dialog.open()  # modal to this window; the window's event loop goes on
+
+    def _recovery_closed(self, dialog: QDialog) -> None:
+        if self.recovery_dialog is dialog:
+            self.recovery_dialog = None
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.information(self, title, text)

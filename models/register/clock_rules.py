@@ -30,10 +30,18 @@ from dataclasses import dataclass
 from models.messages import QT_TR_NOOP, Message, message
 from models.register.register_error import RegisterError
 
-__all__ = ["CONFIRM_AFTER_DAYS", "DateToConfirm", "LastChained", "clock_checked",
+__all__ = ["BEFORE_LAST", "CONFIRM_AFTER_DAYS", "DateToConfirm", "LastChained", "clock_checked",
            "correction_refusal", "date_backwards", "last_certificate_since_correction",
            "last_chained", "parse_confirmed_date"]
 
+#: an issue timed before the register's last chained record: the clock set back, or that
+#: record dated by a clock set ahead (then a clock correction answers it)
+BEFORE_LAST = QT_TR_NOOP(
+    "the computer's clock says {now}, before the register's last record ({what}, "
+    "{then}, on {workstation} by {user}): either this clock was set back — correct "
+    "it — or that record was dated by a clock set ahead; then, with this clock "
+    "right, record it with 'anglebench register clock-correction --by NAME --reason "
+    "TEXT --confirm-date {today}'. Nothing is issued until then")
 #: an issue dated more than this many days after the register's last chained record asks
 #: the person to confirm today's date (a lab that issues weekly is not asked; a clock a
 #: month or a year ahead is seen before it dates a certificate)
@@ -111,13 +119,8 @@ def clock_checked(last: LastChained | None, now: dt.datetime, issue_date: dt.dat
     if last is None:
         return None
     if last.at > now:
-        raise RegisterError(message(QT_TR_NOOP(
-            "the computer's clock says {now}, before the register's last record ({what}, "
-            "{then}, on {workstation} by {user}): either this clock was set back — correct "
-            "it — or that record was dated by a clock set ahead; then, with this clock "
-            "right, record it with 'anglebench register clock-correction --by NAME --reason "
-            "TEXT --confirm-date {today}'. Nothing is issued until then"),
-            now=now.isoformat(), what=last.what, then=last.at.isoformat(),
+        raise RegisterError(message(
+            BEFORE_LAST, now=now.isoformat(), what=last.what, then=last.at.isoformat(),
             workstation=last.workstation, user=last.os_user, today=issue_date.isoformat()))
     days = (now - last.at).days
     if days <= CONFIRM_AFTER_DAYS:

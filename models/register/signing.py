@@ -25,7 +25,16 @@ KEY_ENV_VAR = "ANGLEBENCH_REGISTER_KEY"
 #: the name of the register_state row that holds the state's signature
 STATE_SIGNATURE = "state_signature"
 #: the name of the register_state row that holds the fingerprint of the key the register is
-#: signed with (:func:`fingerprint`; written with its first signed record since 0.8.22)
+#: signed with (:func:`fingerprint`; written with its first signed record since 0.8.22).
+#: The row is not in the signed state (:func:`state_text`) and need not be: only the right
+#: key could check a signature over it, and the right key computes its own fingerprint. What
+#: the row must never do is decide alone: changed by someone who can write the database, it
+#: made the right key read as another, which switched every signature check off and hid a
+#: record they forged (regwin74). So a key whose fingerprint differs is still the register's
+#: when anything it signed says so — the state's signature, a record's, the high-water mark
+#: (store.Register._signed_with_this_key) — and the row is then reported as changed; only a
+#: key that verifies nothing is "not the key this register was signed with". No format
+#: change: registers and marks written before open as they were.
 FINGERPRINT = "key_fingerprint"
 
 

@@ -50,6 +50,7 @@ from models.register.chain import (
     GENESIS,
     link,
 )
+from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED
 from models.register.register_error import RegisterError
 from models.register.wording import DOCUMENT_KINDS, kind_words
 from models.register.writer_note import holder as writer_holder
@@ -310,6 +311,10 @@ REISSUED_FOUND = QT_TR_NOOP(
     "of the same number: the number was issued twice (the register restored from an older "
     "copy, or an older state copied back); nothing is issued until the loss is recorded with "
     "'anglebench register acknowledge-loss --by NAME --reason TEXT'")
+#: the findings a recorded loss answers (:meth:`Register.acknowledge_loss`): a certificate
+#: found missing, a number found issued twice, the register behind its high-water mark or the
+#: mark not the key's; any other finding still refuses it
+LOSS_FINDINGS = (MISSING_FOUND, REISSUED_FOUND, BEHIND, COUNTER_BEHIND, NOT_SIGNED)
 
 
 class RegisterTampered(RegisterError):
@@ -888,6 +893,16 @@ class Register:
             return
         with contextlib.suppress(OSError):
             raise_mark(path, self._key, self._location(), **due)
+
+    def high_water_mark(self) -> dict | None:
+        """The register's high-water mark beside the lab's key, signed with it
+        (models/register/high_water.read_mark): None without the key or without a mark; {}
+        when it cannot be read or is not the key's. Without a readable mark a loss is
+        acknowledged only with the last number known issued (:meth:`acknowledge_loss`)."""
+        from models.register.high_water import read_mark
+
+        path = self._mark_path()
+        return read_mark(path, self._key) if path is not None and self._key else None
 
     def _high_water_problems(self, links: list, counters: dict, notes) -> list:
         """With the key: what the register lacks against its high-water mark."""
@@ -2056,8 +2071,9 @@ class Register:
                             "it was issued before the register recorded what a document is, and "
                             "its chain does not cover it"), number=item.number,
                             kind=kind_words(item.document_kind)))
-        self.key_problem = self._key_problem(state, links)
+        self.key_problem = self._key_problem(state, links, counters)
         if self.key_problem is None:  # a wrong key calls nothing forged (reg73 #7)
+            problems += self._fingerprint_problems(state)
             problems += self._signature_problems(links)
             problems += self._state_signature_problems(rows, state, counters)
         count = len(links)
@@ -2120,33 +2136,29 @@ class Register:
             "AngleBench; restore the register from a backup"),
             records=state.get("records", "?"), head=(state.get("head") or "?")[:16])]
 
-    def _key_problem(self, state: dict, links: list) -> Message | None:
+    def _key_problem(self, state: dict, links: list, counters: dict) -> Message | None:
         """With a key: the key is not the one the register was signed with — its
         fingerprint is not the one the register holds (written with its first signed record
         since 0.8.22), or, in a register signed before, not one of its signed records'
-        signatures is this key's. Then no signature is called forged and nothing is written
-        (reg73 #7: a key file with a newline added read as every record forged, with the
-        advice to restore a backup)."""
-        from models.register.signing import (
-            FINGERPRINT,
-            KEY_ENV_VAR,
-            fingerprint,
-            key_slip,
-            signature_ok,
-        )
+        signatures is this key's — and nothing the key signed proves it the register's
+        (:meth:`_signed_with_this_key`). Then no signature is called forged and nothing is
+        written (reg73 #7: a key file with a newline added read as every record forged, with
+        the advice to restore a backup). The fingerprint row is not trusted against the
+        key's own signatures: a row changed outside AngleBench made the right key "not the
+        register's", which switched every signature check off and hid a record forged
+        (:meth:`_fingerprint_problems` reports the row)."""
+        from models.register.signing import FINGERPRINT, KEY_ENV_VAR, fingerprint, key_slip
 
         if not self._key:
             return None
         stored = state.get(FINGERPRINT)
         mine = fingerprint(self._key)
-        if stored is not None:
-            if hmac.compare_digest(stored, mine):
-                return None
-        else:
-            signed = [item for _seq, _is_entry, item in links if item.signature is not None]
-            if not signed or any(signature_ok(self._key, item.chain_sha256 or "",
-                                              item.signature) for item in signed):
-                return None
+        if stored is not None and hmac.compare_digest(stored, mine):
+            return None
+        if stored is None and not any(item.signature is not None for _s, _e, item in links):
+            return None  # nothing signed yet: this key signs from now on
+        if self._signed_with_this_key(state, links, counters):
+            return None
         slip = stored is not None and key_slip(self._key, stored)
         return message(QT_TR_NOOP(
             "the key named by {setting} is not the key this register was signed with (its "
@@ -2159,6 +2171,36 @@ class Register:
                 " — it is the register's key with a line end added or removed at its end (the "
                 "file was edited or pasted as text): restore the key file as it was"))
             if slip else "")
+
+    def _signed_with_this_key(self, state: dict, links: list, counters: dict) -> bool:
+        """Something in or beside the register carries this key's signature: the state's
+        signature over the state as it stands, a record's or entry's signature, or the
+        register's high-water mark. Only the key's holder can make one (HMAC-SHA256), so
+        the key is the register's whatever its fingerprint row says."""
+        from models.register.signing import STATE_SIGNATURE, signature_ok, state_text
+
+        assert self._key is not None
+        text = state_text(state.get("records", "?"), state.get("head", ""), counters)
+        return (signature_ok(self._key, text, state.get(STATE_SIGNATURE))
+                or any(item.signature is not None
+                       and signature_ok(self._key, item.chain_sha256 or "", item.signature)
+                       for _seq, _is_entry, item in links)
+                or bool(self.high_water_mark()))
+
+    def _fingerprint_problems(self, state: dict) -> list:
+        """With the register's key (:meth:`_key_problem` found none): the fingerprint row, if
+        there is one, must be this key's; one that is not was changed outside AngleBench —
+        it would have made this key read as another (every signature then unchecked)."""
+        from models.register.signing import FINGERPRINT, fingerprint
+
+        stored = state.get(FINGERPRINT)
+        if not self._key or stored is None or hmac.compare_digest(stored, fingerprint(self._key)):
+            return []
+        return [message(QT_TR_NOOP(
+            "the register's key fingerprint ({theirs}…) is not the fingerprint of the key its "
+            "records are signed with ({mine}…): it was changed outside AngleBench, which "
+            "would have called this key another and left every signature unchecked"),
+            theirs=stored[:16], mine=fingerprint(self._key)[:16])]
 
     @property
     def signed(self) -> bool:
@@ -2359,22 +2401,18 @@ class Register:
         broken chain, a record rewritten) still refuses. ``scheme``: the number scheme of
         ``last_number`` when the register has no counter of it (the copy restored predates
         its first number). Returns the entry's body."""
-        from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED, read_mark
-
         by, reason = " ".join((by or "").split()), " ".join((reason or "").split())
         if not by or not reason:
             raise RegisterError(message(QT_TR_NOOP(
                 "a loss is acknowledged by a named person with the reason (--by, --reason)")))
-        answered = (MISSING_FOUND, REISSUED_FOUND, BEHIND, COUNTER_BEHIND, NOT_SIGNED)
         found = self.audit(pdfs=True)
-        others = [p for p in found if getattr(p, "template", "") not in answered]
+        others = [p for p in found if getattr(p, "template", "") not in LOSS_FINDINGS]
         if others:
             raise RegisterError(message(QT_TR_NOOP(
                 "the register's records were changed after issue ({problem}): a loss is "
                 "acknowledged in a register whose own records are intact; see 'anglebench "
                 "register verify'"), problem=others[0]))
-        path = self._mark_path()
-        mark = read_mark(path, self._key) if path is not None and self._key else None
+        mark = self.high_water_mark()
         if not last_number.strip() and not mark:
             # no signed mark tells how far the numbers went: the person must (a restore
             # acknowledged without it issued the lost numbers again)

@@ -24,7 +24,8 @@ def test_every_dialog_fits_the_screen(screen, tmp_path):
     width, height, scale, language = SCREENS[screen]
     found = run_on_screen("tests.dialog_fit_probe", tmp_path, width, height, scale, language)
     expected = {"main window", "certificate details", "certificate details (Export certificate…)",
-                "which column is which", "certificate register", "manual", "quick guide", "about",
+                "which column is which", "certificate register",
+                "acknowledge a loss", "clock correction", "manual", "quick guide", "about",
                 "a message (tell)", "a question (ask)", "paste question", "draft question",
                 "what changed", "print", "open project", "import readings"}
     assert set(found) == expected  # every dialog was opened (and answered)

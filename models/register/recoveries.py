@@ -1,0 +1,63 @@
+"""The register's two recorded recoveries, which the command line and the register window
+both offer: a loss acknowledged (``anglebench register acknowledge-loss``,
+:meth:`Register.acknowledge_loss`: an older copy restored or replayed, the numbers issued
+since moved past, so issuing resumes) and a clock correction (``anglebench register
+clock-correction``, :meth:`Register.correct_clock`: the last record dated by a clock set
+ahead, so right clocks issue again). Here: what each says once recorded, and which refusal
+of an issue each answers (the window's "Not issued" then points to its own action and
+names the command)."""
+
+from __future__ import annotations
+
+from models.messages import QT_TR_NOOP, Message, message
+from models.register.clock_rules import BEFORE_LAST
+from models.register.store import LOSS_FINDINGS
+
+__all__ = ["CLOCK", "CLOCK_CORRECTED", "LOSS", "LOSS_RECORDED", "clock_corrected",
+           "loss_recorded", "recovery_answering"]
+
+#: the recovery that answers a refusal: a loss to acknowledge, a clock to correct
+LOSS, CLOCK = "loss", "clock"
+
+LOSS_RECORDED = QT_TR_NOOP(
+    "loss recorded by {by} ({reason}); counters moved: {moved}; issuing resumes; chain head "
+    "now {head}")
+CLOCK_CORRECTED = QT_TR_NOOP(
+    "clock correction recorded by {by} ({reason}): {ahead}, dated {at}, was dated by a clock "
+    "set ahead; issuing resumes on this clock ({date})")
+
+
+def loss_recorded(body: dict, head: str) -> Message:
+    """What a loss acknowledged says (``body``: :meth:`Register.acknowledge_loss`'s; ``head``:
+    the register's chain head after it): who, why, each counter moved."""
+    moved = ", ".join(f"{name} {before} → {after}"
+                      for name, (before, after) in body["counters"].items())
+    return message(LOSS_RECORDED, by=body["by"], reason=body["reason"],
+                   moved=moved or message(QT_TR_NOOP("none")), head=head)
+
+
+def clock_corrected(body: dict) -> Message:
+    """What a clock correction says (``body``: :meth:`Register.correct_clock`'s)."""
+    return message(CLOCK_CORRECTED, by=body["by"], reason=body["reason"], ahead=body["ahead"],
+                   at=body["ahead_at"], date=body["confirmed_date"])
+
+
+def recovery_answering(reason: str) -> str:
+    """Which recovery answers a refusal (``reason``: the Message an issue was refused with,
+    a finding inside it included): :data:`LOSS`, :data:`CLOCK`, or "" for none (plain text,
+    or a refusal no recovery answers: a record rewritten, a broken chain …)."""
+    found: list[str] = []
+
+    def visit(text) -> None:
+        if not isinstance(text, Message):
+            return
+        found.append(text.template)
+        for part in (*text.parts, *text.figures.values()):
+            visit(part)
+
+    visit(reason)
+    if BEFORE_LAST in found:
+        return CLOCK
+    if any(template in LOSS_FINDINGS for template in found):
+        return LOSS
+    return ""
