@@ -2721,6 +2721,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>该证书已不再有效：已作废（{reason}）。</translation>
     </message>
     <message>
+        <source>Loss recorded</source>
+        <translation>丢失已记录</translation>
+    </message>
+    <message>
+        <source>Clock correction recorded</source>
+        <translation>时钟更正已记录</translation>
+    </message>
+    <message>
+        <source>Still found: {problem}</source>
+        <translation>仍发现：{problem}</translation>
+    </message>
+    <message>
         <source>Certificate number</source>
         <translation>证书编号</translation>
     </message>
@@ -3632,6 +3644,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>loss recorded by {by} ({reason}); counters moved: {moved}; issuing resumes; chain head now {head}</source>
+        <extracomment>the recovery that answers a refusal: a loss to acknowledge, a clock to correct</extracomment>
         <translation>丢失已由 {by} 记录（{reason}）；移动的计数器：{moved}；恢复签发；链头现为 {head}</translation>
     </message>
     <message>
@@ -4742,7 +4755,24 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>某个 PDF 是否逐字节与本登记册签发的一致？</translation>
     </message>
     <message>
+        <source>Acknowledge a loss…</source>
+        <translation>确认丢失…</translation>
+    </message>
+    <message>
+        <source>Record that records were lost (an older copy restored or put back), so that issuing resumes past the numbers lost</source>
+        <translation>记录有记录丢失（恢复或放回了较早的副本），使签发在丢失的编号之后恢复</translation>
+    </message>
+    <message>
+        <source>Clock correction…</source>
+        <translation>时钟更正…</translation>
+    </message>
+    <message>
+        <source>Record that the register&apos;s last record was dated by a clock set ahead, so that a right clock issues again</source>
+        <translation>记录登记册的最后一条记录是由调快的时钟写上日期的，使正确的时钟重新可以签发</translation>
+    </message>
+    <message>
         <source>Select a certificate and press History</source>
+        <extracomment>the recovery dialog open (a test types into it)</extracomment>
         <translation>选择一份证书并按“历史”</translation>
     </message>
     <message>
@@ -7126,7 +7156,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the lab&apos;s time zone &apos;{name}&apos; is not known (an IANA name such as Asia/Shanghai or Europe/Berlin)</source>
-        <extracomment>how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it how long a connection to a PostgreSQL register waits for the server&apos;s answer (libpq&apos;s connect_timeout; a URL that sets its own keeps it) how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`) how long a write to a SQLite register waits for its write lock before giving up how long a write waits for that lock in silence before it says it is waiting, and for whom (reg72 #8: a minute of silence, then &quot;database is locked&quot;) today&apos;s date confirmed for an issue far after the last record (clock_rules), recorded</extracomment>
+        <extracomment>the findings a recorded loss answers (:meth:`Register.acknowledge_loss`): a certificate found missing, a number found issued twice, the register behind its high-water mark or the mark not the key&apos;s; any other finding still refuses it how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it how long a connection to a PostgreSQL register waits for the server&apos;s answer (libpq&apos;s connect_timeout; a URL that sets its own keeps it) how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`) how long a write to a SQLite register waits for its write lock before giving up how long a write waits for that lock in silence before it says it is waiting, and for whom (reg72 #8: a minute of silence, then &quot;database is locked&quot;) today&apos;s date confirmed for an issue far after the last record (clock_rules), recorded</extracomment>
         <translation>实验室时区“{name}”无法识别（应为 IANA 名称，如 Asia/Shanghai 或 Europe/Berlin）</translation>
     </message>
     <message>
@@ -7291,6 +7321,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation> ——它是登记册的密钥，只是末尾加上或去掉了一个行尾（该文件被当作文本编辑或粘贴过）：请将密钥文件恢复原样</translation>
     </message>
     <message>
+        <source>the register&apos;s key fingerprint ({theirs}…) is not the fingerprint of the key its records are signed with ({mine}…): it was changed outside AngleBench, which would have called this key another and left every signature unchecked</source>
+        <translation>登记册的密钥指纹（{theirs}…）不是其记录签名所用密钥的指纹（{mine}…）：它在 AngleBench 之外被改动，这会使此密钥被称为另一个密钥，所有签名都不被检查</translation>
+    </message>
+    <message>
         <source>{numbers} reports serial {serial}, calibrated {date}, of {makers}, not of {maker}: a maker&apos;s name spelt otherwise is the same maker, and this would be a second certificate of that calibration. Issue it only if it is another maker&apos;s item with the same serial (it is then recorded in the register that you said so; on the command line: --another-makers-item)</source>
         <translation>{numbers} 已报告序列号 {serial}、校准日期 {date}、制造商 {makers} 的校准，而不是 {maker} 的：只是写法不同的制造商名称仍是同一制造商，这样就会成为同一次校准的第二份证书。只有当这确实是另一制造商的、序列号相同的被校件时才签发（登记册随后会记录这是您的说明；命令行中：--another-makers-item）</translation>
     </message>
@@ -7407,6 +7441,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the computer&apos;s clock says {now}, before the register&apos;s last record ({what}, {then}, on {workstation} by {user}): either this clock was set back — correct it — or that record was dated by a clock set ahead; then, with this clock right, record it with &apos;anglebench register clock-correction --by NAME --reason TEXT --confirm-date {today}&apos;. Nothing is issued until then</source>
+        <extracomment>an issue timed before the register&apos;s last chained record: the clock set back, or that record dated by a clock set ahead (then a clock correction answers it)</extracomment>
         <translation>计算机的时钟为 {now}，早于登记册的最后一条记录（{what}，{then}，在 {workstation} 上由 {user}）：要么此时钟被调回了——请更正它——要么那条记录是以调快的时钟写上日期的；这时请在此时钟正确的情况下用 &apos;anglebench register clock-correction --by NAME --reason TEXT --confirm-date {today}&apos; 记录此事。在此之前不签发任何内容</translation>
     </message>
     <message>
@@ -11572,7 +11607,7 @@ what a name or description may hold that prints as no character of its own: a li
     </message>
     <message>
         <source>the laboratory&apos;s register key {path} cannot be read ({reason})</source>
-        <extracomment>the name of the register_state row that holds the state&apos;s signature the name of the register_state row that holds the fingerprint of the key the register is signed with (:func:`fingerprint`; written with its first signed record since 0.8.22)</extracomment>
+        <extracomment>the name of the register_state row that holds the state&apos;s signature the name of the register_state row that holds the fingerprint of the key the register is signed with (:func:`fingerprint`; written with its first signed record since 0.8.22). The row is not in the signed state (:func:`state_text`) and need not be: only the right key could check a signature over it, and the right key computes its own fingerprint. What the row must never do is decide alone: changed by someone who can write the database, it made the right key read as another, which switched every signature check off and hid a record they forged (regwin74). So a key whose fingerprint differs is still the register&apos;s when anything it signed says so — the state&apos;s signature, a record&apos;s, the high-water mark (store.Register._signed_with_this_key) — and the row is then reported as changed; only a key that verifies nothing is &quot;not the key this register was signed with&quot;. No format change: registers and marks written before open as they were.</extracomment>
         <translation>无法读取实验室的登记册密钥 {path}（{reason}）</translation>
     </message>
     <message>
@@ -12810,6 +12845,86 @@ Replace it?</source>
         <source>null at target(s) {targets}: approached only once in a direction there, so no standard deviation</source>
         <extracomment>R_i null where a target is approached in both directions, once in one of them</extracomment>
         <translation>目标位置 {targets} 为 null：该处在某一方向仅趋近一次，无标准偏差</translation>
+    </message>
+    <message>
+        <source>To record the loss here: File › Certificate register, Acknowledge a loss… (the same as &apos;anglebench register acknowledge-loss&apos;).</source>
+        <translation>在此记录丢失：文件 › 证书登记册，“确认丢失…”（与“anglebench register acknowledge-loss”相同）。</translation>
+    </message>
+    <message>
+        <source>If that record was dated by a clock set ahead and this computer&apos;s clock is right, record it here: File › Certificate register, Clock correction… (the same as &apos;anglebench register clock-correction&apos;).</source>
+        <translation>若那条记录是由调快的时钟写上日期的，而本计算机的时钟正确，请在此记录：文件 › 证书登记册，“时钟更正…”（与“anglebench register clock-correction”相同）。</translation>
+    </message>
+    <message>
+        <source>Acknowledge a loss</source>
+        <translation>确认丢失</translation>
+    </message>
+    <message>
+        <source>Records in the register that records were lost — an older copy restored or put back — with who records it and why. Every counter moves past the last number known issued, so no number is issued twice, and issuing resumes. The same as the command &apos;anglebench register acknowledge-loss&apos;.</source>
+        <translation>在登记册中记录有记录丢失——恢复或放回了较早的副本——以及由谁记录、原因。每个计数器都移过已知签发过的最后一个编号，因此没有编号会签发两次，签发随之恢复。与命令“anglebench register acknowledge-loss”相同。</translation>
+    </message>
+    <message>
+        <source>Record the loss</source>
+        <translation>记录丢失</translation>
+    </message>
+    <message>
+        <source>Recorded by</source>
+        <translation>记录人</translation>
+    </message>
+    <message>
+        <source>your name</source>
+        <translation>您的姓名</translation>
+    </message>
+    <message>
+        <source>Reason</source>
+        <translation>原因</translation>
+    </message>
+    <message>
+        <source>what was lost and restored</source>
+        <translation>丢失了什么、恢复了什么</translation>
+    </message>
+    <message>
+        <source>Last number known issued</source>
+        <translation>已知签发的最后编号</translation>
+    </message>
+    <message>
+        <source>e.g. AB-2026-0042</source>
+        <translation>例如 AB-2026-0042</translation>
+    </message>
+    <message>
+        <source>Required: without the laboratory&apos;s key and its high-water mark the register cannot tell how far its numbers went. From the lab&apos;s log or the customers&apos; copies.</source>
+        <translation>必填：没有实验室密钥及其高水位标记，登记册无法知道编号到了哪里。请根据实验室日志或客户手中的副本填写。</translation>
+    </message>
+    <message>
+        <source>Optional: the high-water mark beside the laboratory&apos;s key tells how far the numbers went; give it when the lab&apos;s log or a customer&apos;s copy names a later one.</source>
+        <translation>选填：实验室密钥旁的高水位标记说明编号到了哪里；若实验室日志或客户的副本写有更晚的编号，请填写。</translation>
+    </message>
+    <message>
+        <source>Only when the register restored has no counter of that number&apos;s scheme yet.</source>
+        <translation>仅当恢复后的登记册还没有该编号方案的计数器时填写。</translation>
+    </message>
+    <message>
+        <source>Clock correction</source>
+        <translation>时钟更正</translation>
+    </message>
+    <message>
+        <source>Records that the register&apos;s last record was dated by a clock set ahead (the year typed wrong, say), so that issues on this computer&apos;s clock, now right, are accepted again. The record dated ahead stays as issued; the correction is chained after it. The same as the command &apos;anglebench register clock-correction&apos;.</source>
+        <translation>记录登记册的最后一条记录是由调快的时钟写上日期的（例如年份输错），使按本计算机现已正确的时钟进行的签发重新被接受。日期提前的记录按签发时的样子保留；更正链接在其后。与命令“anglebench register clock-correction”相同。</translation>
+    </message>
+    <message>
+        <source>Record the correction</source>
+        <translation>记录更正</translation>
+    </message>
+    <message>
+        <source>which clock was wrong</source>
+        <translation>哪台计算机的时钟有误</translation>
+    </message>
+    <message>
+        <source>Today&apos;s date</source>
+        <translation>今天的日期</translation>
+    </message>
+    <message>
+        <source>Type today&apos;s date as you know it, not as this computer shows it: it must be the computer&apos;s date, or nothing is recorded (correct the clock first).</source>
+        <translation>输入您所知道的今天日期，而不是照抄本计算机显示的日期：它必须与计算机的日期相同，否则不记录任何内容（请先更正时钟）。</translation>
     </message>
 </context>
 </TS>
