@@ -26,7 +26,7 @@ def _positioning(window):
     presenter = _show(window, "positioning")
     presenter.table_model.replace_all([], "empty")
     presenter.set_settings({**presenter.settings, "plan_runs": 1, "plan_targets": "0:15:4",
-                            "plan_directions": "forward", "plan_order": "linear",
+                            "plan_directions": "up", "plan_order": "linear",
                             "target_unit": "deg", "deviation_unit": "arcsec"})
     return presenter
 
