@@ -130,6 +130,12 @@ def gate_scale(unit: str) -> float:
     return 3600.0 if unit == "deg" else 1.0
 
 
+def _unit_symbol(unit: str) -> str:
+    """What follows a figure in the window's unit for a reading in ``unit``: ″ for an angle
+    (arcseconds), else the readout's own unit after a space ("" for none)."""
+    return '"' if unit in ANGLE_UNITS else (f" {unit}" if unit else "")
+
+
 #: the stability shown is the spread of the frames of the last second
 SPREAD_SECONDS = 1.0
 #: how often the guidance is worked out again while connected (seconds of frames)
@@ -1226,7 +1232,7 @@ class CapturePanel(QDockWidget):
         """The window's suffix and tooltip for the unit it is applied in."""
         unit = self._gate_unit
         angle = unit in ANGLE_UNITS
-        self.window_box.setSuffix(' "' if angle else (f" {unit}" if unit else ""))
+        self.window_box.setSuffix(" " + _unit_symbol(unit).lstrip() if unit else "")
         self.window_box.setToolTip(
             tr("The spread allowed over the dwell, in arcseconds (a readout in degrees is "
                "converted to them)") if angle else
@@ -1293,7 +1299,8 @@ class CapturePanel(QDockWidget):
                 # why it waits (#41: a theodolite's 0.3" of noise spread 1.4" over a second:
                 # with the 0.5" window it never took, saying only "2 % of the dwell")
                 text += tr(" — the output spreads {spread} over a second, more than the "
-                           "window: widen the window").format(spread=f"{spread:.2g}")
+                           "window: widen the window").format(
+                    spread=f"{spread:.2g}" + _unit_symbol(self._gate_unit))
             self.auto_state.setText(text)
 
     @property
@@ -1555,8 +1562,7 @@ class CapturePanel(QDockWidget):
             shown = "   ".join(f"{s * scale:.3f}" for s in spread)
             # in the window's unit (arcseconds for an angle, else the readout's own)
             self.stability.setText(tr("Spread over the last second: {spread}{unit}").format(
-                spread=shown, unit='"' if reading.unit in ANGLE_UNITS
-                else (f" {reading.unit}" if reading.unit else "")))
+                spread=shown, unit=_unit_symbol(reading.unit)))
         if now >= self._allan_due and len(self.frames) >= 16:
             self._allan_due = now + 1.0
             self._show_allan(degrees, scale)
