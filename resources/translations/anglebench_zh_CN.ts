@@ -2546,8 +2546,20 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>未命名项目</translation>
     </message>
     <message>
+        <source>row {row}, column {column}: {typed} typed over {was}</source>
+        <translation>第 {row} 行第 {column} 列：输入的 {typed} 覆盖了 {was}</translation>
+    </message>
+    <message>
         <source>Recovered, with the values that were still being typed ({cells}): check them</source>
         <translation>已恢复，包括当时仍在输入的值（{cells}）：请核对</translation>
+    </message>
+    <message>
+        <source>; Edit › Undo puts back the value entered before</source>
+        <translation>；编辑 › 撤销可恢复此前录入的值</translation>
+    </message>
+    <message>
+        <source>Recovered typing</source>
+        <translation>恢复的输入</translation>
     </message>
     <message>
         <source>row {row}, column {column}</source>
@@ -4920,6 +4932,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Analysing {rows} readings …</source>
         <translation>正在分析 {rows} 个读数 …</translation>
+    </message>
+    <message>
+        <source>Readings — {taken} taken, {used} used</source>
+        <translation>读数 — 已取 {taken} 个，已用 {used} 个</translation>
     </message>
     <message>
         <source>{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point at a red cell to see why.</source>
@@ -9671,7 +9687,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Autocollimator (ELCOMAT kind)</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the units of a reading the auto-take window is applied to in arcseconds (a reading in another unit, a readout&apos;s mm or none, is gated in that unit, and the window says so) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
         <translation>自准直仪（ELCOMAT 类）</translation>
     </message>
     <message>
@@ -9697,7 +9713,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
-        <extracomment>where the demonstration instrument points in turn (8 s each) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short)
+        <extracomment>where the demonstration instrument points in turn (8 s each) the readout&apos;s runs through its targets (more than any plan has: ISO 230-2 asks 5) the demonstration axis&apos;s reversal error: where it stops coming down (2.9″) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short)
 ----------
 the workbenches (keys, comma-separated) the panel was open on when last left: restored open on those only, never on every tab with nothing connected (day 65, F10)</extracomment>
         <translation>仪器</translation>
@@ -9782,8 +9798,16 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
         <translation>演示仪器未能启动：{reason}</translation>
     </message>
     <message>
-        <source>Auto-take: waiting for {instrument} (link lost)</source>
+        <source>The spread allowed over the dwell, in arcseconds (a readout in degrees is converted to them)</source>
         <extracomment>restore_open has run (the window&apos;s saved state is back)</extracomment>
+        <translation>驻留时间内允许的离散，以角秒计（以度为单位的读数器换算为角秒）</translation>
+    </message>
+    <message>
+        <source>The spread allowed over the dwell, in the readout&apos;s own unit ({unit}): it sends no angle unit</source>
+        <translation>驻留时间内允许的离散，以读数器自身的单位（{unit}）计：它发送的不是角度单位</translation>
+    </message>
+    <message>
+        <source>Auto-take: waiting for {instrument} (link lost)</source>
         <translation>自动取数：等待{instrument}（链路中断）</translation>
     </message>
     <message>
@@ -10084,10 +10108,6 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>稳定时自动取数</translation>
     </message>
     <message>
-        <source>The spread allowed over the dwell (arcseconds; a readout&apos;s own unit)</source>
-        <translation>驻留时间内允许的离散（角秒；读数器为其自身单位）</translation>
-    </message>
-    <message>
         <source>Window</source>
         <translation>稳定范围</translation>
     </message>
@@ -10196,8 +10216,17 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>测试计划顺序“{order}”：应为 linear 或 pilgrim</translation>
     </message>
     <message>
+        <source>move the axis to the next target and type it in the target column</source>
+        <extracomment>the target unit&apos;s symbol as the plan writes it (models/positioning/model.py TARGET_UNITS) a direction cell&apos;s words (models/positioning/analysis.py UP, DOWN) and its arrow</extracomment>
+        <translation>将轴移动到下一个目标位置，并在目标位置列中输入它</translation>
+    </message>
+    <message>
         <source>target {target}, run {run} {arrow}</source>
         <translation>目标位置 {target}，第 {run} 次测量 {arrow}</translation>
+    </message>
+    <message>
+        <source>target {target}</source>
+        <translation>目标位置 {target}</translation>
     </message>
     <message>
         <source>set {set}: closure on face {face}</source>
