@@ -1,8 +1,8 @@
 """Day 74 finding 13 (the caption): the Chinese readings caption "读数 — 已用 3 个 — 少于 5 次测量：
 已标注" wrapped to three lines with "标注" (flagged) alone on the last, the "已" (already) of its
 word left on the line above. Qt may break between any two ideographs; the caption's last
-word is now kept whole on its last line at every width the label can take, the characters
-shown unchanged, and an English caption wraps at its spaces as before.
+words ("测量：已标注") are now kept whole on its last line at every width the label can take,
+the characters shown unchanged, and an English caption wraps at its spaces as before.
 
 The lines are laid out as the label lays out its plain word-wrapped text (QTextLayout, the
 label's font, word wrap) at each width from 30 to 400 pixels."""
@@ -16,8 +16,9 @@ from widgets.workbench_view import WorkbenchView
 
 CAPTION = "读数 — 已用 3 个"
 FLAGGED = " — 少于 5 次测量：已标注"  # as the positioning presenter appends it
-#: the characters no line may hold alone at the caption's end, nor break between
-WORD = "已标注"
+#: the caption's last words, "已标注" (flagged) after "测量" (runs): never broken, the last
+#: line never "标注" nor "注" alone
+WORD = "测量：已标注"
 #: U+2060 WORD JOINER, drawn as nothing
 JOINER = "\u2060"
 
@@ -53,7 +54,6 @@ def test_the_captions_last_word_is_never_broken_onto_a_line_alone(qtbot):
     for width in range(30, 401, 2):
         lines = _lines(view.readings_label, width)
         wrapped += len(lines) > 1
-        # "已标注" whole on the last line: never "标注" nor "注" alone there
         assert lines[-1].strip().endswith(WORD), (width, lines)
     assert wrapped > 50  # the label did wrap at most of those widths
 
