@@ -50,6 +50,9 @@ class LastChained:
     what: str  # in words: "certificate AB-2026-0001", "a clock correction" … (chained_words)
     workstation: str
     os_user: str
+    # as the chain records it where an entry names it (a date confirmed's "last", a clock
+    # correction's subject): its number, or "entry KIND SUBJECT", the form kept since 0.8.22
+    recorded: str = ""
 
 
 class DateToConfirm(RegisterError):
@@ -73,10 +76,11 @@ def last_chained(conn, sa, schema) -> LastChained | None:
     if entry is not None and (cert is None or entry.seq > cert.seq):
         return LastChained(entry.seq, _parse_time(entry.recorded_at),
                            chained_words(kind=entry.kind, subject=entry.subject),
-                           entry.workstation or "?", entry.os_user or "?")
+                           entry.workstation or "?", entry.os_user or "?",
+                           f"entry {entry.kind} {entry.subject}")
     if cert is not None:
         return LastChained(cert.seq, _parse_time(cert.issued_at), chained_words(cert.number),
-                           cert.workstation or "?", cert.os_user or "?")
+                           cert.workstation or "?", cert.os_user or "?", cert.number)
     return None
 
 
@@ -138,7 +142,7 @@ def clock_checked(last: LastChained | None, now: dt.datetime, issue_date: dt.dat
             "today was confirmed as {confirmed}, but the computer's clock gives {date}: "
             "nothing is issued until the clock is right"),
             confirmed=confirmed.isoformat(), date=issue_date.isoformat()))
-    return {"date": issue_date.isoformat(), "days_after_last": days, "last": str(last.what),
+    return {"date": issue_date.isoformat(), "days_after_last": days, "last": last.recorded,
             "last_at": last.at.isoformat()}
 
 

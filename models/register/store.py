@@ -2483,10 +2483,10 @@ class Register:
             if refused is not None:
                 raise RegisterError(refused)
             assert last is not None
-            body = {"by": by, "reason": reason, "ahead": str(last.what),
+            body = {"by": by, "reason": reason, "ahead": last.recorded,
                     "ahead_at": last.at.isoformat(), "ahead_workstation": last.workstation,
                     "ahead_os_user": last.os_user, "confirmed_date": today.isoformat()}
-            self._append_entry(conn, "clock_correction", str(last.what), body)
+            self._append_entry(conn, "clock_correction", last.recorded, body)
         return body
 
     def list(self, search: str = "", limit: int = 10_000) -> list[CertificateRecord]:

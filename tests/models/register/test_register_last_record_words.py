@@ -4,6 +4,9 @@ subject. Each record is named in words: a certificate by its number, an entry by
 records ("the acknowledgement of a loss of records", "a clock correction", "the withdrawal of
 certificate …"), never by the kind's identifier nor with a dash for a subject.
 
+Only the words change: what the chain records of the last record (a clock correction's
+subject, a date confirmed's "last") stays in the form it has had since 0.8.22.
+
 The register is used as the window and the command line use it (issue, withdraw, acknowledge
 a loss, correct the clock), its clock moved as a computer's would be; nothing else is
 imported from the code it checks."""
@@ -16,6 +19,7 @@ import os
 import re
 
 import pytest
+import sqlalchemy as sa
 
 from models.certificate.metadata import CertificateMetadata
 from models.register.store import IssueRequest, Register, RegisterError
@@ -115,3 +119,10 @@ def test_a_clock_correction_is_named_in_words(url):
         register.correct_clock("I. Chen", "PC-3's year was typed 2027", right.date())
         said = _last_record_said(_asked_after(register, 40))
     assert said == "a clock correction", said
+    # what the chain records is kept as it was recorded since 0.8.22 (only the words change)
+    engine = sa.create_engine(url)
+    with engine.connect() as conn:
+        subject, body = conn.execute(sa.text(
+            "SELECT subject, body_json FROM entries WHERE kind = 'clock_correction'")).one()
+    engine.dispose()
+    assert subject == json.loads(body)["ahead"] == "entry date_confirmed AB-2027-0001"
