@@ -9,7 +9,7 @@ import re
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["DOCUMENT_KINDS", "chained_words", "entry_words", "issued_file_words", "kind_words",
-           "revision_words", "status_words"]
+           "recorded_words", "revision_words", "status_words"]
 
 #: what a record's ``document_kind`` may be (schema version 6): the keys of the document
 #: types a certificate's details choose from (models.certificate.metadata.DOCUMENT_TYPES)
@@ -110,3 +110,16 @@ def chained_words(number: str | None = None, kind: str = "", subject: str = "") 
     if number is not None:
         return message(QT_TR_NOOP("certificate {number}"), number=number)
     return entry_words(kind, subject)
+
+
+def recorded_words(recorded: str) -> str:
+    """A record as an entry of the chain recorded it (a clock correction's subject and
+    "ahead", a date confirmed's "last": the number, or "entry KIND SUBJECT") in words, as
+    :func:`chained_words` says it; "" as it is."""
+    recorded = (recorded or "").strip()
+    if not recorded:
+        return recorded
+    if recorded.startswith("entry "):
+        kind, _, subject = recorded[len("entry "):].partition(" ")
+        return entry_words(kind, subject)
+    return chained_words(recorded)

@@ -23,6 +23,7 @@ import sqlalchemy as sa
 
 from models.certificate.metadata import CertificateMetadata
 from models.register.store import IssueRequest, Register, RegisterError
+from models.register.wording import recorded_words
 from tests.register_forgery import stand_in_pdf
 
 META = CertificateMetadata(item_serial="RX-1", item_description="Rotary encoder",
@@ -126,3 +127,19 @@ def test_a_clock_correction_is_named_in_words(url):
             "SELECT subject, body_json FROM entries WHERE kind = 'clock_correction'")).one()
     engine.dispose()
     assert subject == json.loads(body)["ahead"] == "entry date_confirmed AB-2027-0001"
+
+
+def test_what_the_chain_recorded_reads_in_the_same_words(url):
+    """A clock correction recorded the record dated ahead as the chain names it; read back
+    for a person (the window's "Clock correction recorded: …") it is said in words."""
+    ahead = ISSUED + dt.timedelta(days=365)
+    with _open(url, ISSUED) as register:
+        number = _issue(register)[0].number
+        register.clock = lambda: ahead
+        _issue(register, confirmed_date=ahead.date())
+        register.clock = lambda: ISSUED + dt.timedelta(minutes=10)
+        body = register.correct_clock("I. Chen", "year typed wrong",
+                                      (ISSUED + dt.timedelta(minutes=10)).date())
+    assert recorded_words(body["ahead"]) == "the date confirmed for certificate AB-2027-0001"
+    assert recorded_words(number) == f"certificate {number}"
+    assert recorded_words("entry loss_acknowledged —") == "the acknowledgement of a loss of records"
