@@ -144,6 +144,7 @@ class MainWindow(QMainWindow):
                 presenter.reference_standard_found = (
                     lambda reference, key=presenter.kind.key: (
                         self.certificates.add_polygon_standard(key, reference)))
+            if hasattr(presenter, "reference_standard_checked"):  # before the DCC is applied
                 presenter.reference_standard_checked = (
                     lambda reference, key=presenter.kind.key: (
                         self.certificates.polygon_standard_placed(key, reference)[1]))

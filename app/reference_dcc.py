@@ -4,8 +4,9 @@ polygon-deviation column (a warning when that column held other values), and the
 with its U, takes its place among the certificate's standards (so its U enters the budget as
 a polygon certificate's does). Refused, with the reason, as models/dcc/reader refuses: the
 schema (with --dcc-schema or ANGLEBENCH_DCC_SCHEMA), a unit that is no angle, a face count
-that differs, a signature that does not verify, a calibration due before the date of
-calibration (the details' date, else today)."""
+that differs, a signature that does not verify (or none where a trusted certificate is set),
+a calibration due before the date of calibration (the details' date, else today) or dated
+after it, and a DCC of another polygon than the details list (its serial)."""
 
 from __future__ import annotations
 

@@ -17,8 +17,12 @@ read as its certificate. Pure: lxml only, no Qt.
 Every refusal is a :class:`DccError` naming the file and why: the schema (when a folder is
 given), a unit that is not an angle (\\arcsecond, \\arcminute, \\degree, \\radian with
 \\milli, \\micro or \\nano are converted exactly to arcseconds), a face count that does not
-fit, a signature that does not verify, a calibration that expired before the measurement,
-no polygon result, an encoder's DCC whose only polygon is its reference. The XML is parsed
+fit, a signature that does not verify, no signature where a trusted certificate is set, a
+calibration that expired before the measurement or is dated after it, a validity period past
+the year 9999, a coverage factor below 1 or against its probability, a face's deviation or U
+no polygon has, no polygon result, an encoder's DCC whose only polygon is its reference. The
+DCC's item (name, serials) is read: :func:`item_notes` refuses a DCC of another item than
+the standard it is read for. The XML is parsed
 with no network, no entity resolution, no DTD and no huge-tree mode, and a document that
 declares a DTD at all is refused: a hostile file can neither read local files nor expand
 entities.
