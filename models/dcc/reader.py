@@ -276,7 +276,7 @@ class _Uncertainty:
     p: list[float]
 
 
-def _expanded(element, n: int, where: str) -> _Uncertainty | None:
+def _expanded(element, n: int, where: str, source: str = "") -> _Uncertainty | None:
     """The expanded uncertainty of a si:realListXMLList (or of a si:real, n = 1): D-SI's
     expandedMU(XMLList), or the deprecated expandedUnc(XMLList)."""
     for mu, value, k, p in (
@@ -302,7 +302,7 @@ def _expanded(element, n: int, where: str) -> _Uncertainty | None:
                 "{where}: an expanded uncertainty below 0, a coverage factor not above 0 or a "
                 "coverage probability outside (0, 1]"), where=here))
         for k_, p_ in dict.fromkeys(zip(ks, ps, strict=True)):
-            _check_coverage(k_, p_, here)
+            _check_coverage(k_, p_, here, source)
         return _Uncertainty(values, ks, ps)
     return None
 
@@ -314,7 +314,7 @@ _FEWEST_DEGREES = 2
 _K_ROUNDING = 0.02
 
 
-def _check_coverage(k: float, p: float, where: str) -> None:
+def _check_coverage(k: float, p: float, where: str, source: str = "") -> None:
     """DccError when a coverage factor is below 1 (an expanded uncertainty smaller than the
     standard uncertainty) or does not go with its coverage probability: below the normal
     distribution's k for p, or above Student's t for p with 2 degrees of freedom (k = 2
@@ -322,8 +322,9 @@ def _check_coverage(k: float, p: float, where: str) -> None:
     k from 1."""
     if k < 1:
         raise DccError(message(QT_TR_NOOP(
-            "{where}: the coverage factor k = {k:g} is below 1: an expanded uncertainty is "
-            "never smaller than the standard uncertainty"), where=where, k=k))
+            "{source}: {where}: the coverage factor k = {k:g} is below 1: an expanded "
+            "uncertainty is never smaller than the standard uncertainty"), source=source,
+            where=where, k=k))
     if p >= 1:
         return
     from scipy.stats import norm, t
@@ -332,9 +333,10 @@ def _check_coverage(k: float, p: float, where: str) -> None:
     high = float(t.ppf((1 + p) / 2, _FEWEST_DEGREES))
     if not low <= k <= high:
         raise DccError(message(QT_TR_NOOP(
-            "{where}: the coverage factor k = {k:g} and the coverage probability p = {p:g} "
-            "contradict each other (p = {p:g} goes with k from {low:.2f} to {high:.2f}): "
-            "which one the certificate means cannot be told"), where=where, k=k, p=p,
+            "{source}: {where}: the coverage factor k = {k:g} and the coverage probability "
+            "p = {p:g} contradict each other (p = {p:g} goes with k from {low:.2f} to "
+            "{high:.2f}): which one the certificate means cannot be told"), source=source,
+            where=where, k=k, p=p,
             low=low / (1 - _K_ROUNDING), high=high))
 
 
@@ -723,7 +725,7 @@ def read_polygon_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
             "{source}: certificate {id} gives {n} faces, the readings have {faces}: it is "
             "another polygon's"), source=source, id=certificate_id, n=n, faces=faces))
     arcsec = _to_arcsec(values, units, source, where_d)
-    u = _expanded(element, n, where_d)
+    u = _expanded(element, n, where_d, source)
     if u is None:
         raise DccError(message(QT_TR_NOOP(
             "{source}: the face deviations carry no expanded uncertainty (si:expandedMUXMLList): "
@@ -928,7 +930,7 @@ def _kind(element, result, quantity_name: str) -> str:
     return _UNMARKED
 
 
-def _figures(root) -> list[_Figure]:
+def _figures(root, source: str = "") -> list[_Figure]:
     """Every expanded uncertainty of the results (those under dcc:results: not a
     measuringEquipment's — the standards the certificate used — nor an influence
     condition's), converted to arcseconds or micrometres where it is an angle or a length."""
@@ -948,7 +950,7 @@ def _figures(root) -> list[_Figure]:
             units = [(element.findtext(f"{S}unit") or "").strip()] * len(values)
         if not values:
             continue
-        u = _expanded(element, len(values), where)
+        u = _expanded(element, len(values), where, source)
         if u is None:
             continue
         quantity = next(element.iterancestors(f"{D}quantity"), None)
@@ -1006,7 +1008,7 @@ def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
     used. DccError naming the file and why."""
     root, source, signer, notes = _load(path, schema_dir, trusted_cert)
     certificate_id, calibration_date = _core(root, source)
-    figures = _figures(root)
+    figures = _figures(root, source)
     due_date = _due_date(root, calibration_date, source)
     notes = notes + _check_due(due_date, measurement_date, source, certificate_id,
                                calibration_date, _states_validity(root))

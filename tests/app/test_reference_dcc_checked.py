@@ -154,7 +154,7 @@ def test_coverage_factors_that_make_no_sense_are_refused(issued_polygon, samples
     dcc = polygon_dcc(issued_polygon, tmp_path / "k.xml", _sample_deviations(samples_dir),
                       serial="P24-3", k=k, p=p)
     code, _, err = _analyze(capsys, samples_dir, dcc)
-    assert code == 2 and said in err, err
+    assert code == 2 and said in err and "k.xml: " in err, err  # the DCC named
 
 
 @pytest.mark.parametrize("face, value, u, said", [
