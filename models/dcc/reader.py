@@ -64,7 +64,7 @@ from models.messages import QT_TR_NOOP, listed, message, reason_of
 if TYPE_CHECKING:
     from lxml.etree import _Element  # (lxml ships no types: pyproject.toml [tool.mypy])
 
-__all__ = ["ARCSEC_PER_UNIT", "PLAUSIBLE_ARCSEC", "DccError", "item_notes", "PolygonReference",
+__all__ = ["ARCSEC_PER_UNIT", "PLAUSIBLE_ARCSEC", "DccError", "is_u95", "item_notes", "PolygonReference",
            "StandardCertificate",
            "POLYGON_FACE_DEVIATIONS", "angle_factor", "embedded_pdfs", "parse_dcc", "parse_decimal_list",
            "place_polygon_standard", "polygon_standard", "read_polygon_dcc",
@@ -159,12 +159,19 @@ class StandardCertificate:
                      "applies_to": self.applies_to}
         if self.uncertainty is not None:
             k = self.coverage_factor or 2.0
-            if abs(k - 2.0) < 1e-12:
+            if is_u95(k, self.coverage_probability):
                 out.update(uncertainty=self.uncertainty, basis="U95")
             else:
                 out.update(uncertainty=self.uncertainty / k, basis="u")
             out["uncertainty_unit"] = self.unit
         return out
+
+
+def is_u95(k: float, p: float | None) -> bool:
+    """Whether a U stated with ``k`` and ``p`` is listed as U95 (k = 2 at about 95 %: p from
+    0.945 to 0.955, 0.9545 the normal's): a k of 2 with another p (0.90, its effective
+    degrees of freedom few) is listed as U/k with its k, never labelled 95 %."""
+    return abs(k - 2.0) < 1e-12 and (p is None or 0.945 <= p <= 0.955)
 
 
 # -- parsing -----------------------------------------------------------------------------
@@ -793,7 +800,7 @@ def replace_face_deviations(rows: list[list[str]], position_index: int, deviatio
 
 def polygon_standard(reference: PolygonReference) -> dict:
     """The polygon as a row of the standards table (a ReferenceStandard's fields): its
-    largest face U (exact with its k: U95 when k = 2, else u = U/k), per reading — or per
+    largest face U (exact with its k: U95 when k = 2 at p ≈ 0.95, else u = U/k), per reading — or per
     face from face 1 when the DCC states face 1 as exactly 0 with no uncertainty (its
     deviations are then from face 1)."""
     k = reference.coverage_factor
@@ -804,7 +811,7 @@ def polygon_standard(reference: PolygonReference) -> dict:
                 "certificate_no": reference.certificate_id,
                 "applies_to": "from face 1" if from_face_1 else "reading",
                 "uncertainty_unit": "arcsec", "due_date": reference.due_date}
-    if abs(k - 2.0) < 1e-12:
+    if is_u95(k, reference.coverage_probability):
         standard.update(uncertainty=reference.largest_u, basis="U95")
     else:
         standard.update(uncertainty=reference.largest_u / k, basis="u")

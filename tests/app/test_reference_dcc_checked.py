@@ -157,6 +157,20 @@ def test_coverage_factors_that_make_no_sense_are_refused(issued_polygon, samples
     assert code == 2 and said in err and "k.xml: " in err, err  # the DCC named
 
 
+@pytest.mark.parametrize("p, basis", [("0.9545", "U95"), ("0.95", "U95"), ("0.90", "u")])
+def test_the_label_follows_the_stated_probability(issued_polygon, samples_dir, tmp_path, p,
+                                                  basis):
+    """F8: U with k = 2 was listed as U95 whatever p the DCC stated; k = 2 with p = 0.90
+    (few degrees of freedom) is no 95 % interval: listed as U/k with its k."""
+    from models.dcc.reader import polygon_standard, read_polygon_dcc
+
+    dcc = polygon_dcc(issued_polygon, tmp_path / "p.xml", _sample_deviations(samples_dir),
+                      u=[0.2] * 24, serial="P24-3", p=p)
+    standard = polygon_standard(read_polygon_dcc(dcc, measurement_date="2026-11-20"))
+    assert standard["basis"] == basis and standard["coverage_factor"] == 2.0
+    assert standard["uncertainty"] == pytest.approx(0.2 if basis == "U95" else 0.1)
+
+
 @pytest.mark.parametrize("face, value, u, said", [
     (5, 3_600_000.0, None, "face 5: the deviation 3.6e+06″ is beyond ±3600″"),
     (24, None, 5000.0, "face 24: the expanded uncertainty 5000″ is beyond ±3600″"),
