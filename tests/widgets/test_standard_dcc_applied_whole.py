@@ -93,6 +93,11 @@ def test_an_empty_calibration_date_checks_expiry_against_today(issued_polygon, s
                           period="P1Y")
     assert not dialog.read_standard_dcc(str(expired))
     assert "2011-01-05" in dialog.error_label.text() and _rows(dialog) == before
+    # F5: a validity period past the year 9999 escaped the slot (ValueError), unsaid
+    huge = polygon_dcc(issued_polygon, tmp_path / "huge.xml", {i: 0.0 for i in range(1, 25)},
+                       serial="P24-3", period="P9999Y")
+    assert not dialog.read_standard_dcc(str(huge))
+    assert "after the year 9999" in dialog.error_label.text() and _rows(dialog) == before
 
 
 def test_the_polygon_workbench_applies_nothing_of_a_refused_dcc(issued_polygon, samples_dir,
