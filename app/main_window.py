@@ -142,8 +142,12 @@ class MainWindow(QMainWindow):
                     lambda key=presenter.kind.key: self.certificates.issue_details(key))
             if hasattr(presenter, "reference_standard_found"):
                 presenter.reference_standard_found = (
-                    lambda standard, key=presenter.kind.key: self.certificates.add_polygon_standard(
-                        key, standard))
+                    lambda reference, key=presenter.kind.key: (
+                        self.certificates.add_polygon_standard(key, reference)))
+            if hasattr(presenter, "reference_standard_checked"):  # before the DCC is applied
+                presenter.reference_standard_checked = (
+                    lambda reference, key=presenter.kind.key: (
+                        self.certificates.polygon_standard_placed(key, reference)[1]))
         for presenter in self.presenters:  # the table exports spare them too
             presenter.protected_outputs = self.certificates.protected
             presenter.refuse_issued = self.certificates.refuse_issued  # issued files (rev63 F6)

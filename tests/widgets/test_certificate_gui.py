@@ -412,7 +412,8 @@ def test_a_standard_is_read_from_its_dcc(qtbot, tmp_path):
 
     good = tmp_path / "std.xml"
     good.write_bytes(t.document("NIM-2026-A17", results=t.standard_results(
-        [0.1, -0.2], r"\arcsecond", [0.25, 0.3]), statements=t.validity(date="2027-06-30")))
+        [0.1, -0.2], r"\arcsecond", [0.25, 0.3]), statements=t.validity(date="2027-06-30"),
+        serial="PG-24"))
     dialog = CertificateDialog(CertificateMetadata(calibration_date="2026-11-20"))
     qtbot.addWidget(dialog)
     dialog.add_standard({"description": "24-face polygon", "serial": "PG-24"})
