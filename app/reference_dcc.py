@@ -32,13 +32,14 @@ def reference_rows(path: str, kind, rows: list[list[str]], settings: dict[str, A
     """The readings' rows with the DCC's deviations in place, the reference, and what to
     say (the column's other values replaced, the reader's notes). DccError / SigningError
     for a DCC refused."""
-    from models.dcc.signature import trusted_certificate
+    from models.dcc.signature import signature_demanded, trusted_certificate
 
     columns = [c.key for c in kind.columns]
     faces = int(settings.get("faces") or 0) or None
     reference = read_polygon_dcc(path, schema_dir or None,
                                  measurement_date=calibration_date or dt.date.today(),
-                                 faces=faces, trusted_cert=trusted_certificate())
+                                 faces=faces, trusted_cert=trusted_certificate(),
+                                 signature_required=signature_demanded())
     out, differed = replace_face_deviations(rows, columns.index("position"),
                                             columns.index("polygon_dev_arcsec"), reference)
     said = list(reference.notes)

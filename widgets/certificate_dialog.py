@@ -491,7 +491,7 @@ class CertificateDialog(QDialog):
         nothing and says why; what the reader notes (no due date, an unchecked signer) is
         said."""
         from models.dcc.reader import DccError, read_standard_dcc
-        from models.dcc.signature import SigningError, trusted_certificate
+        from models.dcc.signature import SigningError, signature_demanded, trusted_certificate
 
         when = self.fields["calibration_date"].text().strip() if (
             "calibration_date" in self.fields) else ""
@@ -511,9 +511,10 @@ class CertificateDialog(QDialog):
             # as app/dcc_issue.dcc_schema_dir: the one given, the environment's, the field's
             schema_dir = (schema_dir or os.environ.get("ANGLEBENCH_DCC_SCHEMA", "")
                           or self.dcc_schema.text()).strip()
+            trust = self.dcc_signing["dcc_trusted_certificate"].text()
             found = read_standard_dcc(path, schema_dir or None, measurement_date=when,
-                                      trusted_cert=trusted_certificate(
-                                          self.dcc_signing["dcc_trusted_certificate"].text()))
+                                      trusted_cert=trusted_certificate(trust),
+                                      signature_required=signature_demanded(trust))
             # the row's standard must be the DCC's item: checked before anything changes
             fields, said = found.for_standard(*((cell(rows[0], "description"),
                                                  cell(rows[0], "serial")) if rows else ("", "")))

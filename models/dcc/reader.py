@@ -535,13 +535,15 @@ def _schema_problems(data: bytes, folder: Path) -> list[str]:
         raise DccError(reason_of(exc)) from None
 
 
-def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str
-                      ) -> tuple[_Element, str, tuple]:
+def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str,
+                      signature_required: bool = False) -> tuple[_Element, str, tuple]:
     """The root to read (what the signature covers) and the signer; DccError when a
-    signature is there and does not verify. Unsigned: the root as parsed."""
+    signature is there and does not verify, or is missing where ``signature_required`` (a
+    trusted certificate named for the DCCs read: models.dcc.signature.signature_demanded).
+    Unsigned otherwise: the root as parsed."""
     if root.find(f"{{{DS_NAMESPACE}}}Signature") is None and root.find(
             f".//{{{DS_NAMESPACE}}}Signature") is None:
-        if trusted_cert is not None:
+        if signature_required and trusted_cert is not None:
             raise DccError(message(QT_TR_NOOP(
                 "{source}: signature missing: a trusted certificate is configured, and this "
                 "DCC is not signed (a signature removed is not seen otherwise); it is not "
@@ -561,7 +563,8 @@ def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str
     return signed, check.signer, notes
 
 
-def _load(path: str | Path, schema_dir, trusted_cert) -> tuple[_Element, str, str, tuple]:
+def _load(path: str | Path, schema_dir, trusted_cert, signature_required: bool = False
+          ) -> tuple[_Element, str, str, tuple]:
     source = str(path)
     try:
         size = Path(path).stat().st_size
@@ -575,7 +578,7 @@ def _load(path: str | Path, schema_dir, trusted_cert) -> tuple[_Element, str, st
                                reason=exc.strerror or str(exc))) from None
     root = parse_dcc(data, source)
     _check_schema(data, schema_dir, source)
-    root, signer, notes = _verify_signature(data, root, trusted_cert, source)
+    root, signer, notes = _verify_signature(data, root, trusted_cert, source, signature_required)
     return root, source, signer, notes
 
 
@@ -685,11 +688,12 @@ def _an_encoders_dcc(root, source: str, certificate_id: str) -> DccError:
 def read_polygon_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
                      measurement_date: str | dt.date | None = None,
                      faces: int | None = None,
-                     trusted_cert: bytes | None = None) -> PolygonReference:
+                     trusted_cert: bytes | None = None,
+                     signature_required: bool = False) -> PolygonReference:
     """A polygon's face deviations and their U (arcseconds) from its DCC. ``faces``: the
     readings' face count (refused when the DCC's differs); ``measurement_date``: refused
     when the calibration was due before it. DccError naming the file and why."""
-    root, source, signer, notes = _load(path, schema_dir, trusted_cert)
+    root, source, signer, notes = _load(path, schema_dir, trusted_cert, signature_required)
     certificate_id, calibration_date = _core(root, source)
     results = [r for r in root.iter(f"{D}result") if _has_reftype(
         r, REFTYPE_POLYGON_FACE_DEVIATIONS) and not _is_reference_polygon(r)]
@@ -1001,7 +1005,8 @@ def _not_used(figures: list[_Figure], taken: list[_Figure]) -> list[str]:
 
 def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
                       measurement_date: str | dt.date | None = None,
-                      trusted_cert: bytes | None = None) -> StandardCertificate:
+                      trusted_cert: bytes | None = None,
+                      signature_required: bool = False) -> StandardCertificate:
     """A standard's certificate id, calibration date, due date and U from its DCC (any
     maker's). U is the U of the quantity the standard provides, not of a fitted set-up
     parameter: the largest (by U/k) among its results marked as measurement errors or
@@ -1013,7 +1018,7 @@ def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
     DCC restating them) are never taken. In arcseconds (an angle) or micrometres (a
     length), its k and p beside it; a note names the result U was taken from and those not
     used. DccError naming the file and why."""
-    root, source, signer, notes = _load(path, schema_dir, trusted_cert)
+    root, source, signer, notes = _load(path, schema_dir, trusted_cert, signature_required)
     certificate_id, calibration_date = _core(root, source)
     figures = _figures(root, source)
     due_date = _due_date(root, calibration_date, source)

@@ -121,6 +121,23 @@ def test_an_unsigned_dcc_is_refused_where_a_trusted_certificate_is_set(
     assert code == 0, err
 
 
+def test_the_labs_own_signing_certificate_demands_no_signature_of_a_dcc_read(
+        issued_polygon, samples_dir, tmp_path, capsys, monkeypatch):
+    """A lab that signs its own DCCs (ANGLEBENCH_DCC_SIGNING_CERTIFICATE) still reads a supplier's unsigned
+    DCC (a signature is optional in DCC 3.3.0): only a trusted certificate named for the DCCs
+    read demands one (the lab's signing certificate counted as that, and every unsigned DCC
+    was refused with no way to read it)."""
+    _, cert = t.self_signed(tmp_path)
+    own = tmp_path / "lab.pem"
+    own.write_bytes(cert)
+    monkeypatch.delenv("ANGLEBENCH_DCC_TRUSTED_CERTIFICATE", raising=False)
+    monkeypatch.setenv("ANGLEBENCH_DCC_SIGNING_CERTIFICATE", str(own))
+    dcc = polygon_dcc(issued_polygon, tmp_path / "unsigned.xml",
+                      _sample_deviations(samples_dir), serial="P24-3")
+    code, _, err = _analyze(capsys, samples_dir, dcc)
+    assert code == 0, err
+
+
 def test_calibration_dates_are_checked(issued_polygon, samples_dir, tmp_path, capsys):
     """F6: a calibration dated after the measurement (2026-11-20) was taken; one 25 years
     old was said only as 'states no due date (no validity statement)' — of a DCC that

@@ -79,14 +79,16 @@ class PolygonPresenter(WorkbenchPresenter):
 
     def _load_dcc(self, path: str) -> int:
         from models.dcc.reader import read_polygon_dcc
-        from models.dcc.signature import trusted_certificate
+        from models.dcc.signature import signature_demanded, trusted_certificate
 
         details = self.certificate_details()
         when = getattr(details, "calibration_date", "") or dt.date.today().isoformat()
         faces = int(self.settings.get("faces") or 0) or max(self._positions()) or None
         reference = read_polygon_dcc(path, self.dcc_schema_dir() or None, measurement_date=when,
                                      faces=faces,
-                                     trusted_cert=trusted_certificate(self.dcc_trusted_certificate()))
+                                     trusted_cert=trusted_certificate(self.dcc_trusted_certificate()),
+                                     signature_required=signature_demanded(
+                                         self.dcc_trusted_certificate()))
         # everything checked before anything changes: the polygon the details list is the
         # DCC's, and its standard one they take (U, k); then the column and the standard
         placed = tuple(self.reference_standard_checked(reference))
