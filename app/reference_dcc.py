@@ -39,7 +39,7 @@ def reference_rows(path: str, kind, rows: list[list[str]], settings: dict[str, A
     reference = read_polygon_dcc(path, schema_dir or None,
                                  measurement_date=calibration_date or dt.date.today(),
                                  faces=faces, trusted_cert=trusted_certificate(),
-                                 signature_required=signature_demanded())
+                                 trust_named=signature_demanded())
     out, differed = replace_face_deviations(rows, columns.index("position"),
                                             columns.index("polygon_dev_arcsec"), reference)
     said = list(reference.notes)

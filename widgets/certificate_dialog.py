@@ -514,7 +514,7 @@ class CertificateDialog(QDialog):
             trust = self.dcc_signing["dcc_trusted_certificate"].text()
             found = read_standard_dcc(path, schema_dir or None, measurement_date=when,
                                       trusted_cert=trusted_certificate(trust),
-                                      signature_required=signature_demanded(trust))
+                                      trust_named=signature_demanded(trust))
             # the row's standard must be the DCC's item: checked before anything changes
             fields, said = found.for_standard(*((cell(rows[0], "description"),
                                                  cell(rows[0], "serial")) if rows else ("", "")))

@@ -536,14 +536,16 @@ def _schema_problems(data: bytes, folder: Path) -> list[str]:
 
 
 def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str,
-                      signature_required: bool = False) -> tuple[_Element, str, tuple]:
+                      trust_named: bool = True) -> tuple[_Element, str, tuple]:
     """The root to read (what the signature covers) and the signer; DccError when a
-    signature is there and does not verify, or is missing where ``signature_required`` (a
-    trusted certificate named for the DCCs read: models.dcc.signature.signature_demanded).
+    signature is there and does not verify, or is missing where ``trusted_cert`` is a trust
+    named for the DCCs read (``trust_named``, models.dcc.signature.signature_demanded). A
+    ``trusted_cert`` not so named (the lab's own signing certificate, the fallback) demands
+    no signature and checks one it did not make against the certificate it carries.
     Unsigned otherwise: the root as parsed."""
     if root.find(f"{{{DS_NAMESPACE}}}Signature") is None and root.find(
             f".//{{{DS_NAMESPACE}}}Signature") is None:
-        if signature_required and trusted_cert is not None:
+        if trust_named and trusted_cert is not None:
             raise DccError(message(QT_TR_NOOP(
                 "{source}: signature missing: a trusted certificate is configured, and this "
                 "DCC is not signed (a signature removed is not seen otherwise); it is not "
@@ -552,6 +554,14 @@ def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str
     from models.dcc.signature import verify
 
     check = verify(data, trusted_cert)
+    if check.problems and trusted_cert is not None and not trust_named:
+        # the lab's own signing certificate (the fallback, not a trust named for the DCCs
+        # read) did not sign a supplier's DCC: its signature is checked against the
+        # certificate it carries, as where none is set — unchanged since signed, the signer
+        # named and said unchecked (a supplier's signed DCC was refused as not verifying)
+        carried = verify(data, None)
+        if not carried.problems:
+            check = carried
     if check.problems:
         raise DccError(message(QT_TR_NOOP("{source}: {reason}; it is not read"),
                                source=source, reason=check.problems[0]))
@@ -563,7 +573,7 @@ def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str
     return signed, check.signer, notes
 
 
-def _load(path: str | Path, schema_dir, trusted_cert, signature_required: bool = False
+def _load(path: str | Path, schema_dir, trusted_cert, trust_named: bool = True
           ) -> tuple[_Element, str, str, tuple]:
     source = str(path)
     try:
@@ -578,7 +588,7 @@ def _load(path: str | Path, schema_dir, trusted_cert, signature_required: bool =
                                reason=exc.strerror or str(exc))) from None
     root = parse_dcc(data, source)
     _check_schema(data, schema_dir, source)
-    root, signer, notes = _verify_signature(data, root, trusted_cert, source, signature_required)
+    root, signer, notes = _verify_signature(data, root, trusted_cert, source, trust_named)
     return root, source, signer, notes
 
 
@@ -689,11 +699,11 @@ def read_polygon_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
                      measurement_date: str | dt.date | None = None,
                      faces: int | None = None,
                      trusted_cert: bytes | None = None,
-                     signature_required: bool = False) -> PolygonReference:
+                     trust_named: bool = True) -> PolygonReference:
     """A polygon's face deviations and their U (arcseconds) from its DCC. ``faces``: the
     readings' face count (refused when the DCC's differs); ``measurement_date``: refused
     when the calibration was due before it. DccError naming the file and why."""
-    root, source, signer, notes = _load(path, schema_dir, trusted_cert, signature_required)
+    root, source, signer, notes = _load(path, schema_dir, trusted_cert, trust_named)
     certificate_id, calibration_date = _core(root, source)
     results = [r for r in root.iter(f"{D}result") if _has_reftype(
         r, REFTYPE_POLYGON_FACE_DEVIATIONS) and not _is_reference_polygon(r)]
@@ -1006,7 +1016,7 @@ def _not_used(figures: list[_Figure], taken: list[_Figure]) -> list[str]:
 def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
                       measurement_date: str | dt.date | None = None,
                       trusted_cert: bytes | None = None,
-                      signature_required: bool = False) -> StandardCertificate:
+                      trust_named: bool = True) -> StandardCertificate:
     """A standard's certificate id, calibration date, due date and U from its DCC (any
     maker's). U is the U of the quantity the standard provides, not of a fitted set-up
     parameter: the largest (by U/k) among its results marked as measurement errors or
@@ -1018,7 +1028,7 @@ def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
     DCC restating them) are never taken. In arcseconds (an angle) or micrometres (a
     length), its k and p beside it; a note names the result U was taken from and those not
     used. DccError naming the file and why."""
-    root, source, signer, notes = _load(path, schema_dir, trusted_cert, signature_required)
+    root, source, signer, notes = _load(path, schema_dir, trusted_cert, trust_named)
     certificate_id, calibration_date = _core(root, source)
     figures = _figures(root, source)
     due_date = _due_date(root, calibration_date, source)

@@ -136,6 +136,23 @@ def test_the_labs_own_signing_certificate_demands_no_signature_of_a_dcc_read(
                       _sample_deviations(samples_dir), serial="P24-3")
     code, _, err = _analyze(capsys, samples_dir, dcc)
     assert code == 0, err
+    # a supplier's signed DCC: its signature is not the lab's, yet intact — read, the signer
+    # named and said unchecked (it was refused as "does not verify"); altered after signing,
+    # refused
+    from models.dcc.signature import sign
+
+    supplier_key, supplier_cert = t.self_signed(tmp_path, "Supplier calibration lab")
+    signed = tmp_path / "supplier_signed.xml"
+    signed.write_bytes(sign(dcc.read_bytes(), supplier_key, supplier_cert))
+    code, _, err = _analyze(capsys, samples_dir, signed)
+    assert code == 0, err
+    assert "Supplier calibration lab" in err and "not checked against a trusted" in err, err
+    altered = tmp_path / "supplier_altered.xml"
+    text = signed.read_text(encoding="utf-8")
+    assert "P24-3" in text
+    altered.write_text(text.replace("2026", "2025", 1), encoding="utf-8")
+    code, _, err = _analyze(capsys, samples_dir, altered)
+    assert code == 2 and "does not verify" in err, err
 
 
 def test_calibration_dates_are_checked(issued_polygon, samples_dir, tmp_path, capsys):

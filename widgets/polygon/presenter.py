@@ -87,7 +87,7 @@ class PolygonPresenter(WorkbenchPresenter):
         reference = read_polygon_dcc(path, self.dcc_schema_dir() or None, measurement_date=when,
                                      faces=faces,
                                      trusted_cert=trusted_certificate(self.dcc_trusted_certificate()),
-                                     signature_required=signature_demanded(
+                                     trust_named=signature_demanded(
                                          self.dcc_trusted_certificate()))
         # everything checked before anything changes: the polygon the details list is the
         # DCC's, and its standard one they take (U, k); then the column and the standard
