@@ -14,6 +14,7 @@ from PySide6.QtCore import QT_TR_NOOP
 from app.certificate_presenter import CertificatePresenter, PendingRevision
 from app.register_recovery_pointer import recovery_pointer
 from models.messages import as_sentence
+from models.register.recoveries import LOSS, recovery_answering
 from models.register.store import CertificateRecord, RegisterError
 from models.register.wording import kind_words, revision_words, status_words
 from widgets.i18n import declared, explained, tr, translated
@@ -55,7 +56,9 @@ class RegisterView(Protocol):
         """Run ``work`` on a worker thread; ``done(its result or the exception)`` on the GUI
         thread."""
 
-    def show_pdf_check(self, text: str, warning: bool) -> None: ...
+    def show_pdf_check(self, text: str, warning: bool, detail: str = "") -> None:
+        """The window's state line: ``text``; ``detail`` (what was found, in full) where
+        the user points at it."""
 
     def ask_loss(self, last_number_needed: bool,
                  record: Callable[[LossTyped], str]) -> None:
@@ -210,16 +213,17 @@ class RegisterPresenter:
         nothing while that holds), the stored PDFs found changed, or that every stored PDF
         matches its record — that alone only when nothing else is found (regwin74: said of
         a register that refused every issue)."""
-        lines = []
-        if self.held:
-            lines.append(tr("The register issues nothing: it was changed after issue: "
-                            "{problems}").format(problems="; ".join(
-                                translated(p) for p in self.held[:3])))
+        lines, details = [], [translated(p) for p in [*self.held, *found][:20]]
+        if self.held:  # short: at 200 % the findings in full hid the list (in the tooltip)
+            lines.append(tr("The register issues nothing: it was changed after issue "
+                            "(told on opening; point here for what was found)")
+                         + (" — " + tr("Acknowledge a loss… records the loss.") if any(
+                             recovery_answering(p) == LOSS for p in self.held) else ""))
         if found:
             lines.append(tr("Stored PDFs changed after issue: {problems}").format(
-                problems="; ".join(translated(p) for p in found[:20])))
+                problems="; ".join(translated(p) for p in found[:3])))
         if lines:
-            self.view.show_pdf_check("\n".join(lines), True)
+            self.view.show_pdf_check("\n".join(lines), True, "\n".join(details))
         else:
             self.view.show_pdf_check(tr("Every stored PDF matches its record."), False)
 
