@@ -50,7 +50,7 @@ from models.register.chain import (
     GENESIS,
     link,
 )
-from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED
+from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED, REPLACED
 from models.register.register_error import RegisterError
 from models.register.wording import DOCUMENT_KINDS, kind_words
 from models.register.writer_note import holder as writer_holder
@@ -314,7 +314,7 @@ REISSUED_FOUND = QT_TR_NOOP(
 #: the findings a recorded loss answers (:meth:`Register.acknowledge_loss`): a certificate
 #: found missing, a number found issued twice, the register behind its high-water mark or the
 #: mark not the key's; any other finding still refuses it
-LOSS_FINDINGS = (MISSING_FOUND, REISSUED_FOUND, BEHIND, COUNTER_BEHIND, NOT_SIGNED)
+LOSS_FINDINGS = (MISSING_FOUND, REISSUED_FOUND, BEHIND, REPLACED, COUNTER_BEHIND, NOT_SIGNED)
 
 
 class RegisterTampered(RegisterError):

@@ -8,6 +8,7 @@ register's, not ALTERED."""
 from __future__ import annotations
 
 import os
+import shutil
 
 import pytest
 
@@ -95,3 +96,28 @@ def test_another_registers_first_certificate_is_not_this_registers(tmp_path, key
 def _first(url: str, key: str) -> bytes:
     with _open(url, key) as register:
         return register.pdf(register.list()[-1].number)
+
+
+def test_the_newest_record_rewritten_is_not_said_to_be_removed(tmp_path):
+    """regwin74: the high-water mark's finding said "records were removed since" of a
+    register that holds every record, its newest rewritten (its chain recomputed): the
+    data show a record replaced at the mark's place, and that is said."""
+    from tests.models.register.test_register_reg73 import _rewrite_newest
+
+    url = f"sqlite:///{tmp_path / 'keyed.sqlite'}"
+    key = _key(tmp_path, "lab.key")
+    _issue(url, 2, key)
+    _rewrite_newest(url, customer="Someone else")
+    with _open(url, key) as register:
+        said = [str(p) for p in register.problems]
+    assert not any("records were removed" in text for text in said)
+    assert any("holds 2 record(s), but record 2 is not the one it held there" in text
+               for text in said)
+    # an older copy restored (a record fewer) is still said to have lost records
+    url2 = f"sqlite:///{tmp_path / 'second.sqlite'}"
+    _issue(url2, 1, key)
+    shutil.copy(tmp_path / "second.sqlite", tmp_path / "backup.sqlite")
+    _issue(url2, 1, key)
+    shutil.copy(tmp_path / "backup.sqlite", tmp_path / "second.sqlite")
+    with _open(url2, key) as register:
+        assert any("records were removed since" in str(p) for p in register.problems)
