@@ -219,8 +219,17 @@ class CertificateDialogs:
         self.window.tell(title, text)
 
     def show_status(self, text: str, milliseconds: int) -> None:
-        bar = self.window.statusBar()
-        bar.showMessage(text, milliseconds)
+        """A message of the certificate (issued, a draft, results written, a standard left
+        out) is the workbench's in front, whose certificate it is: shown on its tab only, as
+        a workbench's status message is (day review 74 F15: "Certificate … issued" of the
+        polygon stayed on the Fringe tab)."""
+        window = self.window
+        bar = window.statusBar()
+        of_workbench = getattr(window, "show_workbench_status", None)
+        if of_workbench is not None and getattr(window, "presenters", None):
+            of_workbench(window.current, text, milliseconds)
+        else:
+            bar.showMessage(text, milliseconds)
         # painted now: the register may be about to wait for another's lock on this thread
         # (no event is handled meanwhile, so nothing else can run)
         bar.repaint()

@@ -344,16 +344,23 @@ class CertificatePresenter:
             self._mark_modified()  # the details are saved with the project
             self.details_changed(key)
 
-    def add_polygon_standard(self, key: str, standard: dict) -> None:
-        """Put the polygon read from its DCC (``standard``: a ReferenceStandard's fields)
-        among workbench ``key``'s standards in place of the polygon listed there
-        (models/dcc/reader.place_polygon_standard); stored with the project."""
-        from models.dcc.reader import place_polygon_standard
+    def add_polygon_standard(self, key: str, reference) -> tuple:
+        """Put the polygon read from its DCC (``reference``: a PolygonReference) among
+        workbench ``key``'s standards in place of the polygon listed there
+        (app/reference_dcc.placed_reference); stored with the project. Returns what to say;
+        DccError (another polygon's DCC) or MetadataError (a standard the details cannot
+        take), nothing stored."""
 
-        meta = self.details(key)
-        placed = place_polygon_standard(meta.to_dict()["standards"], standard)
-        self.store_details(key, CertificateMetadata.from_dict({**meta.to_dict(),
-                                                               "standards": placed}))
+        meta, said = self.polygon_standard_placed(key, reference)
+        self.store_details(key, meta)
+        return said
+
+    def polygon_standard_placed(self, key: str, reference) -> tuple:
+        """The details of workbench ``key`` with the polygon of ``reference`` placed, and
+        what to say, stored nowhere: the check before a DCC is applied."""
+        from app.reference_dcc import placed_reference
+
+        return placed_reference(self.details(key), reference)
 
     def keep_details(self, meta: CertificateMetadata) -> None:
         """The details of the workbench being edited kept with the project although its

@@ -576,7 +576,7 @@ def _with_reference_dcc(args: argparse.Namespace, kind, rows, settings, words):
     """The rows with the polygon's DCC deviations (app/reference_dcc.py), said what it
     replaced; None after saying why the DCC was refused."""
     from app.dcc_issue import dcc_schema_dir
-    from app.reference_dcc import reference_rows
+    from app.reference_dcc import placed_reference, reference_rows
     from models.certificate.metadata import MetadataError
     from models.dcc.reader import DccError
     from models.dcc.signature import SigningError
@@ -587,6 +587,9 @@ def _with_reference_dcc(args: argparse.Namespace, kind, rows, settings, words):
         rows, args.reference, said = reference_rows(
             args.reference_dcc, kind, rows, kind.settings_with_defaults(settings),
             metadata.calibration_date, dcc_schema_dir(args.dcc_schema))
+        # the polygon the details list must be the DCC's, its U one they take: checked
+        # before anything is analysed
+        said = [*said, *placed_reference(metadata, args.reference)[1]]
     except (DccError, SigningError, MetadataError) as exc:
         _say(f"anglebench analyze: --reference-dcc: {_why(exc, words)}")
         return None

@@ -142,8 +142,12 @@ class MainWindow(QMainWindow):
                     lambda key=presenter.kind.key: self.certificates.issue_details(key))
             if hasattr(presenter, "reference_standard_found"):
                 presenter.reference_standard_found = (
-                    lambda standard, key=presenter.kind.key: self.certificates.add_polygon_standard(
-                        key, standard))
+                    lambda reference, key=presenter.kind.key: (
+                        self.certificates.add_polygon_standard(key, reference)))
+            if hasattr(presenter, "reference_standard_checked"):  # before the DCC is applied
+                presenter.reference_standard_checked = (
+                    lambda reference, key=presenter.kind.key: (
+                        self.certificates.polygon_standard_placed(key, reference)[1]))
         for presenter in self.presenters:  # the table exports spare them too
             presenter.protected_outputs = self.certificates.protected
             presenter.refuse_issued = self.certificates.refuse_issued  # issued files (rev63 F6)
@@ -339,7 +343,7 @@ class MainWindow(QMainWindow):
             if isinstance(bar, StatusLine):
                 bar.show_workbench(self.presenters[index].view)
 
-    def _show_workbench_status(self, presenter, text: str, timeout: int) -> None:
+    def show_workbench_status(self, presenter, text: str, timeout: int) -> None:
         """A message about ``presenter``'s readings: shown while its tab is in front (put
         aside on another tab's, widgets/status_line.py), gone when its sheet is replaced."""
         bar = self.statusBar()
@@ -373,7 +377,7 @@ class MainWindow(QMainWindow):
         except TableImportError as exc:
             self.tell(tr("Cannot import"), explained(exc))
             return False
-        self._show_workbench_status(
+        self.show_workbench_status(
             presenter, tr("Imported {path} (Edit › Undo restores the old readings)").format(
                 path=path), 8000)
         return True
@@ -386,7 +390,7 @@ class MainWindow(QMainWindow):
         workbench it was imported into (``presenter``; None: the one in front)."""
         if path not in self.imported_files:
             self.imported_files.append(path)
-        self._show_workbench_status(
+        self.show_workbench_status(
             presenter or self.current,
             tr("Imported {name}: {rows} row(s) (Edit › Undo restores the previous readings)")
             .format(name=Path(path).name, rows=rows), 8000)

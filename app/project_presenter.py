@@ -515,11 +515,18 @@ class ProjectPresenter(QObject):
     @staticmethod
     def _with_pending(project: Project, pending: dict[str, tuple[int, int, str]]) -> Project:
         """``project`` with each editor's text in its cell (the autosave's copy only: the
-        sheet and its undo history are not touched)."""
+        sheet and its undo history are not touched). The metadata's ``pending_edits`` say
+        where each text is, and what the cell held entered (``was``: a captured reading,
+        say), for the recovery to put the text back as an edit that can be undone
+        (:meth:`_typed_over_entered`)."""
+        was: dict[str, str] = {}
         for key, (row, column, text) in pending.items():
             state = project.workbenches.get(key)
             if state is None or row < 0 or column < 0:
                 continue
+            entered = (state.rows.row(row) if isinstance(state.rows, NumericRows)
+                       else list(state.rows[row])) if row < len(state.rows) else []
+            was[key] = str(entered[column]) if column < len(entered) else ""
             # the readings with a value still being typed are the origin's no longer: a
             # certificate of the recovered work must say they were edited (day review,
             # stop 65: a file's name and SHA-256 stated for readings that were not its)
@@ -545,7 +552,8 @@ class ProjectPresenter(QObject):
             project.workbenches[key] = WorkbenchState(rows, state.settings, origin)
         if pending:
             project.metadata = {**project.metadata, "pending_edits": {
-                key: {"row": row + 1, "column": column + 1, "text": text}
+                key: {"row": row + 1, "column": column + 1, "text": text,
+                      **({"was": was[key]} if key in was else {})}
                 for key, (row, column, text) in pending.items()}}
         return project
 
@@ -647,6 +655,7 @@ class ProjectPresenter(QObject):
         # said: any may)
         unsaved = project.metadata.get(UNSAVED_READINGS)
         self.apply_project(project, Path(source).name if source else "")
+        typed_over = self._typed_over_entered(typed) if isinstance(typed, dict) else set()
         self.path = Path(source) if source else None
         # the file the crashed window's work was based on: a save asks if it changed since
         # (none known: asks whenever the file is there)
@@ -660,9 +669,52 @@ class ProjectPresenter(QObject):
         self._tell_repairs(project)
         self.update_title()
         if isinstance(typed, dict) and typed:
-            self.view.show_status(tr("Recovered, with the values that were still being typed "
-                                     "({cells}): check them").format(cells=", ".join(
-                                         tr("row {row}, column {column}").format(
-                                             row=e.get("row"), column=e.get("column"))
-                                         for e in typed.values() if isinstance(e, dict))), 0)
+            cells = ", ".join(
+                tr("row {row}, column {column}: {typed} typed over {was}").format(
+                    row=e.get("row"), column=e.get("column"), typed=e.get("text"),
+                    was=e.get("was")) if key in typed_over else
+                tr("row {row}, column {column}").format(row=e.get("row"),
+                                                        column=e.get("column"))
+                for key, e in typed.items() if isinstance(e, dict))
+            said = tr("Recovered, with the values that were still being typed ({cells}): "
+                      "check them").format(cells=cells)
+            if typed_over:
+                said += tr("; Edit › Undo puts back the value entered before")
+            self.view.show_status(said, 0)
         return True
+
+    def _typed_over_entered(self, typed: dict) -> set[str]:
+        """The workbenches whose value still being typed at the crash went over a value
+        entered (a captured reading, say): the cell set back to that value and the text
+        typed put in it again as an edit of its own, so Edit › Undo brings the entered value
+        back. The keys of those put back.
+
+        Why: the house's rule is that typed work is never lost, so the text comes back into
+        its cell as before (it was the last thing the technician did, and an editor cannot be
+        reopened in a window that has not been shown). But it was never entered: put in
+        place of a captured reading without a trace, the only way back was to retype the
+        reading from the cell's tooltip (day review 74 F2). As an edit of its own it is
+        marked "edited after capture" like any typed edit, the status line names both
+        values, and one Undo restores the captured reading. An autosave of an older version
+        (no ``was``) and a large record's rows keep the text in place as before."""
+        done = set()
+        for presenter in self.presenters:
+            entry = typed.get(presenter.kind.key)
+            model = getattr(presenter, "table_model", None)
+            if not isinstance(entry, dict) or "was" not in entry or model is None \
+                    or isinstance(model.sheet.rows, NumericRows):
+                continue
+            try:
+                row, column = int(entry["row"]) - 1, int(entry["column"]) - 1
+            except (TypeError, ValueError):
+                continue
+            was, text = str(entry.get("was", "")), str(entry.get("text", ""))
+            sheet = model.sheet
+            if not (0 <= row < sheet.row_count and 0 <= column < sheet.column_count) \
+                    or not was.strip() or was == text or sheet.text(row, column) != text:
+                continue
+            model.set_cells([(row, column, was)])
+            presenter.undo_stack.clear()  # the project as it was entered: nothing to undo
+            model.set_cells([(row, column, text)], tr("Recovered typing"))
+            done.add(presenter.kind.key)
+        return done

@@ -82,9 +82,11 @@ def _fmt(values) -> str:
 
 
 def document(number: str = "PTB-2026-0042", *, end_date: str = "2026-03-10",
-             results=None, statements=None, pdf: bytes | None = None, root_extra=None) -> bytes:
+             results=None, statements=None, pdf: bytes | None = None, root_extra=None,
+             item: str = "Optical polygon, 12 faces", serial: str = "PG-12-007") -> bytes:
     """A complete DCC 3.3.0 with ``results`` (a function filling dcc:results) and
-    ``statements`` (a function filling dcc:statements, or None for none)."""
+    ``statements`` (a function filling dcc:statements, or None for none), of the ``item``
+    with its ``serial`` ("": no identification)."""
     root = etree.Element(d("digitalCalibrationCertificate"), nsmap={"dcc": DCC, "si": SI},
                          schemaVersion="3.3.0")
     admin = sub(root, d("administrativeData"))
@@ -100,11 +102,12 @@ def document(number: str = "PTB-2026-0042", *, end_date: str = "2026-03-10",
     sub(core, d("endPerformanceDate"), end_date)
     sub(core, d("performanceLocation"), "laboratory")
     items = sub(admin, d("items"))
-    item = sub(items, d("item"))
-    text(item, d("name"), "Optical polygon, 12 faces")
-    ident = sub(sub(item, d("identifications")), d("identification"))
-    sub(ident, d("issuer"), "manufacturer")
-    sub(ident, d("value"), "PG-12-007")
+    item_element = sub(items, d("item"))
+    text(item_element, d("name"), item)
+    if serial:
+        ident = sub(sub(item_element, d("identifications")), d("identification"))
+        sub(ident, d("issuer"), "manufacturer")
+        sub(ident, d("value"), serial)
     lab = sub(sub(admin, d("calibrationLaboratory")), d("contact"))
     text(lab, d("name"), "Angle laboratory")
     sub(sub(lab, d("location")), d("city"), "Braunschweig")

@@ -483,43 +483,55 @@ class CertificateDialog(QDialog):
             self.read_standard_dcc(path)
 
     def read_standard_dcc(self, path: str, schema_dir: str = "") -> bool:
-        """Fill a standard's certificate number, uncertainty (with its basis and unit) and
-        due date from the DCC at ``path``: the selected row, else a new one. A DCC refused
-        (schema, unit, signature, expired before the date of calibration) changes nothing
-        and says why; what the reader notes (no due date, an unchecked signer) is said."""
+        """Replace a standard's certificate as a whole from the DCC at ``path`` — number,
+        serial (where the row lists none), uncertainty with its basis, unit and what it is
+        per, due date, every one the DCC speaks to or emptied — in the selected row, else a
+        new one. A DCC refused (schema, unit, signature, expired before the date of
+        calibration — today's when the field holds no date —, another item's) changes
+        nothing and says why; what the reader notes (no due date, an unchecked signer) is
+        said."""
         from models.dcc.reader import DccError, read_standard_dcc
-        from models.dcc.signature import SigningError, trusted_certificate
+        from models.dcc.signature import SigningError, signature_demanded, trusted_certificate
 
         when = self.fields["calibration_date"].text().strip() if (
             "calibration_date" in self.fields) else ""
         try:
             dt.date.fromisoformat(when)
         except ValueError:
-            when = ""
+            when = dt.date.today().isoformat()  # no date typed yet: the calibration is today's
+        rows = sorted({i.row() for i in self.standards.selectedIndexes()})
+
+        def cell(row: int, key: str) -> str:
+            item = self.standards.item(row, _STANDARD_COLUMNS.index(key))
+            return item.text() if item is not None else ""
+
         try:
             import os
 
             # as app/dcc_issue.dcc_schema_dir: the one given, the environment's, the field's
             schema_dir = (schema_dir or os.environ.get("ANGLEBENCH_DCC_SCHEMA", "")
                           or self.dcc_schema.text()).strip()
-            found = read_standard_dcc(path, schema_dir or None, measurement_date=when or None,
-                                      trusted_cert=trusted_certificate(
-                                          self.dcc_signing["dcc_trusted_certificate"].text()))
+            trust = self.dcc_signing["dcc_trusted_certificate"].text()
+            found = read_standard_dcc(path, schema_dir or None, measurement_date=when,
+                                      trusted_cert=trusted_certificate(trust),
+                                      signature_required=signature_demanded(trust))
+            # the row's standard must be the DCC's item: checked before anything changes
+            fields, said = found.for_standard(*((cell(rows[0], "description"),
+                                                 cell(rows[0], "serial")) if rows else ("", "")))
         except (DccError, SigningError) as exc:
             self.error_label.setStyleSheet("color: #b00020;")
             self.error_label.setText(explained(exc))
             return False
-        rows = sorted({i.row() for i in self.standards.selectedIndexes()})
         if rows:
             row = rows[0]
         else:
             self.add_standard({})
             row = self.standards.rowCount() - 1
-        for key, value in found.as_standard().items():
+        for key, value in fields.items():
             text = f"{value:.6g}" if isinstance(value, float) else str(value)
             self.standards.setItem(row, _STANDARD_COLUMNS.index(key), QTableWidgetItem(text))
         self.error_label.setStyleSheet("")
-        self.error_label.setText("\n".join(translated(n) for n in found.notes))
+        self.error_label.setText("\n".join(translated(n) for n in (*found.notes, *said)))
         return True
 
     def _remove_standard(self) -> None:

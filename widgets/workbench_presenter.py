@@ -1101,6 +1101,18 @@ class WorkbenchPresenter(QObject):
             return None
         return row
 
+    @staticmethod
+    def _readings_count(parsed: ParsedReadings, result: Any) -> str:
+        """"Readings — 7 used", or with a run in progress "Readings — 7 taken, 4 used": the
+        figures' readings counted, not those of the run whose readings enter no figure yet
+        (day review 74 F9: "7 used" while the summary said run 2's 3 enter no figure)."""
+        incomplete = getattr(result, "incomplete", None)
+        waiting = len(incomplete.rows) if incomplete is not None else 0
+        if waiting:
+            return tr("Readings — {taken} taken, {used} used").format(
+                taken=parsed.n, used=parsed.n - waiting)
+        return tr("Readings — {used} used").format(used=parsed.n)
+
     def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None,
                 shown: ShownAsPrinted | None = None, refused: str = "") -> None:
         self.parsed = parsed
@@ -1127,8 +1139,7 @@ class WorkbenchPresenter(QObject):
         if self.plan_problem:
             input_warnings.append(tr("Entry plan: {reason}").format(
                 reason=translated(self.plan_problem)))
-        self.view.set_readings_caption(
-            tr("Readings — {used} used").format(used=parsed.n) + (
+        self.view.set_readings_caption(self._readings_count(parsed, result) + (
                 tr(", {cells} bad cell(s)").format(cells=len(parsed.errors))
                                              if parsed.errors else ""))
         self.view.set_next_row(next_text)

@@ -38,6 +38,7 @@ from widgets.plot_grid import keep_axis_title_room
 from widgets.plot_image import ImageWrite, add_image_actions, plot_panels, write_png
 from widgets.readings_table_view import ReadingsTableView
 from widgets.settings_form import SettingsForm
+from widgets.unbroken_last_word import unbroken_last_word
 from widgets.wrapped_text_area import WrappedTextArea
 
 
@@ -559,7 +560,8 @@ class WorkbenchView(QWidget):
             self.plot_tabs.setUpdatesEnabled(True)
 
     def set_readings_caption(self, text: str) -> None:
-        self.readings_label.setText(text)
+        # wrapped, its last Chinese word kept whole (day 74 finding 13: "标注" alone)
+        self.readings_label.setText(unbroken_last_word(text))
 
     def append_to_readings_caption(self, text: str) -> None:
-        self.readings_label.setText(self.readings_label.text() + text)
+        self.set_readings_caption(self.readings_label.text() + text)

@@ -119,6 +119,23 @@ __all__ = ["TAKE_READING_KEY", "CapturePanel", "ConnectDialog", "InstrumentLink"
 
 #: the key of Take reading (a foot switch is set to send it)
 TAKE_READING_KEY = "F9"
+#: the units of a reading the auto-take window is applied to in arcseconds (a reading in
+#: another unit, a readout's mm or none, is gated in that unit, and the window says so)
+ANGLE_UNITS = ("deg", "arcsec")
+
+
+def gate_scale(unit: str) -> float:
+    """The factor from a reading's ``unit`` to the auto-take window's: degrees to
+    arcseconds (a theodolite's, a readout's), else 1."""
+    return 3600.0 if unit == "deg" else 1.0
+
+
+def _unit_symbol(unit: str) -> str:
+    """What follows a figure in the window's unit for a reading in ``unit``: ″ for an angle
+    (arcseconds), else the readout's own unit after a space ("" for none)."""
+    return '"' if unit in ANGLE_UNITS else (f" {unit}" if unit else "")
+
+
 #: the stability shown is the spread of the frames of the last second
 SPREAD_SECONDS = 1.0
 #: how often the guidance is worked out again while connected (seconds of frames)
@@ -282,19 +299,46 @@ class DemonstrationDialog(QDialog):
 
 class DemonstrationProcess:
     """``anglebench simulate KIND 0`` in a process of its own: the port it answers on, and
-    ``close()`` (also as a context manager's exit) to stop it."""
+    ``close()`` (also as a context manager's exit) to stop it.
+
+    ``noise`` (σ) and ``drift`` (a second) are in arcseconds, as the dialog says, for every
+    instrument: a readout's, which sends degrees, are converted to them (day review 74 F5:
+    the dialog's 0.05 ″ gave a readout σ = 0.05° = 180″).
+
+    The readout is an axis the operator moves through a positioning plan's targets: run
+    after run (``READOUT_RUNS`` of them), the targets rising and, ``bidirectional``,
+    falling again — read from above a few arcseconds off (``READOUT_REVERSAL_DEG``, the
+    axis's reversal error), so a take at the end target going down is a new reading (day
+    review 74 F14: it held its last position for ever, a plan's second run could not be
+    practised)."""
 
     #: where the demonstration instrument points in turn (8 s each)
     POSITIONS = {"autocollimator": ("12.5,4.1,-6.3,0.4", "12.5,-3.2"),
                  "theodolite": ("0,5,10,15", "0,89.998"),
                  "readout": ("0,15.00012,30.00007,44.99991", "0")}
+    #: the readout's runs through its targets (more than any plan has: ISO 230-2 asks 5)
+    READOUT_RUNS = 50
+    #: the demonstration axis's reversal error: where it stops coming down (2.9″)
+    READOUT_REVERSAL_DEG = 0.0008
+
+    @classmethod
+    def readout_script(cls, bidirectional: bool) -> str:
+        """The readout's positions for :attr:`READOUT_RUNS` runs of its targets."""
+        rising = [float(v) for v in cls.POSITIONS["readout"][0].split(",")]
+        run = rising + ([v + cls.READOUT_REVERSAL_DEG for v in reversed(rising)]
+                        if bidirectional else [])
+        return ",".join(f"{v:.5f}".rstrip("0").rstrip(".") for v in run * cls.READOUT_RUNS)
 
     def __init__(self, kind: str, noise: float = 0.05, drift: float = 0.0,
-                 faults: tuple[str, ...] = (), start_s: float = 30.0) -> None:
+                 faults: tuple[str, ...] = (), start_s: float = 30.0,
+                 bidirectional: bool = True, hold_s: float = 8.0) -> None:
         positions, position = self.POSITIONS[kind]
+        if kind == "readout":  # its unit is the degree: the arcseconds converted
+            positions = self.readout_script(bidirectional)
+            noise, drift = noise / 3600.0, drift / 3600.0
         command = [sys.executable, "-m", "app.main", "simulate", kind, "0",
-                   "--positions", positions, "--position", position, "--hold", "8",
-                   "--noise", f"{noise:g}", "--drift", f"{drift:g}"]
+                   "--positions", positions, "--position", position, "--hold", f"{hold_s:g}",
+                   "--noise", f"{noise:.12g}", "--drift", f"{drift:.12g}"]
         for fault in faults:
             command += ["--fault", fault]
         self.process = subprocess.Popen(command, stdout=subprocess.PIPE,
@@ -313,6 +357,9 @@ class DemonstrationProcess:
             self.process.terminate()
         with contextlib.suppress(subprocess.TimeoutExpired):
             self.process.communicate(timeout=5)
+
+    def __enter__(self) -> DemonstrationProcess:
+        return self
 
     def __exit__(self, *_exc) -> None:
         self.close()
@@ -708,8 +755,9 @@ class CapturePanel(QDockWidget):
         self.window_box.setDecimals(3)
         self.window_box.setValue(0.5)
         self.window_box.setSuffix(' "')
-        live(self.window_box.setToolTip, tr("The spread allowed over the dwell (arcseconds; a "
-                                            "readout's own unit)"))
+        self._gate_unit = "arcsec"  # what the window is applied in (_window_in)
+        self._say_window_unit()
+        on_language_change(self.window_box, self._say_window_unit)
         self.dwell_box = QDoubleSpinBox()
         self.dwell_box.setRange(0.01, 600.0)
         self.dwell_box.setDecimals(2)
@@ -919,7 +967,11 @@ class CapturePanel(QDockWidget):
         if slot is None:
             slot = 0 if not self.links[0].connected or self.links[1].connected else 1
         self.links[slot].disconnect()
-        demonstration = DemonstrationProcess(kind, noise, drift, faults)
+        # the readout goes back down the targets where the plan in front does (positioning)
+        settings = getattr(self.window_.current, "settings", {}) or {}
+        demonstration = DemonstrationProcess(
+            kind, noise, drift, faults,
+            bidirectional=settings.get("plan_directions", "both") == "both")
         self.connect_to(kind, demonstration.port, slot=slot, simulator=demonstration)
         return demonstration.port
 
@@ -1163,13 +1215,33 @@ class CapturePanel(QDockWidget):
         self._origin = None
         self.auto_state.setText("")
 
-    @property
-    def _scale(self) -> float:
-        """The gate's window is in arcseconds: a theodolite's degrees are scaled to them."""
-        return 3600.0 if self.kind == "theodolite" else 1.0
+    def _window_in(self, unit: str) -> None:
+        """The window's field says the unit it is applied in: arcseconds for an angle (a
+        readout's degrees are converted to them, as a theodolite's), else the readout's own
+        unit (day review 74 F1: a readout's degrees were gated against a window labelled ″,
+        0.5 ″ applied as 0.5° = 1800″: a readout drifting 36″/s was taken as stable).
+        Another unit than the gate was fed in starts its dwell again."""
+        if unit == self._gate_unit:
+            return
+        self._gate_unit = unit
+        self._say_window_unit()
+        if self.gate is not None:
+            self._gate_changed()  # a dwell or a take in the other unit is not this one's
+
+    def _say_window_unit(self) -> None:
+        """The window's suffix and tooltip for the unit it is applied in."""
+        unit = self._gate_unit
+        angle = unit in ANGLE_UNITS
+        self.window_box.setSuffix(" " + _unit_symbol(unit).lstrip() if unit else "")
+        self.window_box.setToolTip(
+            tr("The spread allowed over the dwell, in arcseconds (a readout in degrees is "
+               "converted to them)") if angle else
+            tr("The spread allowed over the dwell, in the readout's own unit ({unit}): it "
+               "sends no angle unit").format(unit=unit or tr("none")))
 
     def _feed_gate(self, reading: Reading) -> None:
-        gate, scale = self.gate, self._scale
+        self._window_in(reading.unit)
+        gate, scale = self.gate, gate_scale(reading.unit)
         if gate is None:
             return
         # the first link's frame fed here is live (it is marked so after the batch; a fault
@@ -1227,7 +1299,8 @@ class CapturePanel(QDockWidget):
                 # why it waits (#41: a theodolite's 0.3" of noise spread 1.4" over a second:
                 # with the 0.5" window it never took, saying only "2 % of the dwell")
                 text += tr(" — the output spreads {spread} over a second, more than the "
-                           "window: widen the window").format(spread=f"{spread:.2g}")
+                           "window: widen the window").format(
+                    spread=f"{spread:.2g}" + _unit_symbol(self._gate_unit))
             self.auto_state.setText(text)
 
     @property
@@ -1479,7 +1552,7 @@ class CapturePanel(QDockWidget):
                 break
             recent.append(v)
         degrees = reading.unit == "deg"
-        scale = 3600.0 if degrees else 1.0
+        scale = gate_scale(reading.unit)
         recent = np.array(recent)
         if degrees and len(recent):  # an angle near 0°/360° spreads by its noise, not 360°
             recent = _unwrapped_deg(recent, recent[0])
@@ -1487,8 +1560,9 @@ class CapturePanel(QDockWidget):
             spread = recent.max(axis=0) - recent.min(axis=0)
             self._spread = float(np.max(spread)) * scale  # in the gate's unit
             shown = "   ".join(f"{s * scale:.3f}" for s in spread)
+            # in the window's unit (arcseconds for an angle, else the readout's own)
             self.stability.setText(tr("Spread over the last second: {spread}{unit}").format(
-                spread=shown, unit='"' if scale != 1.0 or reading.unit == "arcsec" else ""))
+                spread=shown, unit=_unit_symbol(reading.unit)))
         if now >= self._allan_due and len(self.frames) >= 16:
             self._allan_due = now + 1.0
             self._show_allan(degrees, scale)

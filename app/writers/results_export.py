@@ -369,7 +369,7 @@ def _metadata_rows(document: CertificateDocument,
         # review 64 P8: the sheet said nothing of it)
         ("Instrument output SHA-256", document.raw_data_sha256 or None),
         ("Laboratory", meta.lab_name),
-        ("Customer", meta.customer_name), ("Item under test", meta.item_description),
+        ("Customer", meta.customer_name), ("Item calibrated", meta.item_description),
         ("Serial number", meta.item_serial), ("Grade", meta.item_grade),
         ("Date of calibration", meta.calibration_date),
         ("Date of issue", issued.issue_date if issued else None),

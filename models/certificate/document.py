@@ -220,8 +220,12 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
     rows.append((QT_TR_NOOP("Combined standard u_c"), "", "", "", "", "", "", _fmt(uc), "100.0",
                  nu_text))
     k = budget.coverage_factor
+    # k·u_c as computed, named as that: the U stated comes on the next line, rounded up (day
+    # 74 finding 12: "Expanded U (k = 2.01) 0.018" above "Expanded uncertainty U (p = 95.45 %)
+    # 0.019" did not say which was which)
     rows.append((message(QT_TR_NOOP("U of the inputs evaluated only (k = {k}): a lower bound, "
-                                    "not U") if withheld else QT_TR_NOOP("Expanded U (k = {k})"),
+                                    "not U") if withheld else
+                         QT_TR_NOOP("Expanded uncertainty k·u_c (k = {k}), before rounding"),
                          k=f"{k:.2f}"), "", "", "", "", "", "", _fmt(k * uc), "", ""))
     stated_u = float(budget.expanded[i]) if budget.points else math.nan
     if not withheld and math.isfinite(stated_u) and stated_u > 0 and not bool(
@@ -232,7 +236,8 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
         # (named as the statistics name the U stated, rounded up there too), a figure that
         # rounds itself again where the table is read in another unit (7.0 µrad for 1.436″,
         # not 1.5″ converted to 7.27 µrad)
-        rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
+        rows.append((message(QT_TR_NOOP("U stated (p = {p} %): k·u_c rounded up to two "
+                                        "significant digits"),
                              p=f"{100 * budget.probability:.2f}"), "", "", "", "",
                      "", "", PrintedFigure(stated_u, "", rounding="up",
                                            unit_key=_unit_key_of(unit)), "", ""))

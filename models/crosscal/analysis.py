@@ -389,14 +389,15 @@ def unidentified_tilt_mountings(solution: CrossCalibration) -> tuple[int, ...]:
 
 
 #: why a zero tilt bound is refused (a mounting's tilt not identified): audit 73 finding 1,
-#: the theodolite's and the polygon's, here for the cross-calibration
+#: the theodolite's and the polygon's, here for the cross-calibration; the refusal and what
+#: to do first, then why, as theirs (day 74 finding 10)
 ZERO_TILT_BOUND_REFUSED = QT_TR_NOOP(
-    "the polygon's tilt on the shaft is not identified in mounting(s) {mountings} ({why}): a "
-    "tilt bound of 0\" would claim that the polygon sits on the shaft with no tilt at all "
-    "there, which no set-up achieves and these readings cannot show; state the largest tilt "
-    "the set-up can have (the setting \"largest tilt of the polygon on the shaft, when not "
-    "measured\", --tilt-bound-arcsec), or read vertical readings of every face in those "
-    "mountings so that their tilt is fitted")
+    "a tilt bound of 0\" is refused: state the largest tilt the set-up can have (the setting "
+    "\"largest tilt of the polygon on the shaft, when not measured\", --tilt-bound-arcsec), "
+    "or read vertical readings of every face in mounting(s) {mountings} so that their tilt "
+    "is fitted. The polygon's tilt on the shaft is not identified in mounting(s) "
+    "{mountings} ({why}): 0 would claim that the polygon sits on the shaft with no tilt at "
+    "all there, which no set-up achieves and these readings cannot show")
 
 
 def _refuse_zero_tilt_bound(readings: CrossCalReadings, solution: CrossCalibration,

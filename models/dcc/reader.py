@@ -17,8 +17,12 @@ read as its certificate. Pure: lxml only, no Qt.
 Every refusal is a :class:`DccError` naming the file and why: the schema (when a folder is
 given), a unit that is not an angle (\\arcsecond, \\arcminute, \\degree, \\radian with
 \\milli, \\micro or \\nano are converted exactly to arcseconds), a face count that does not
-fit, a signature that does not verify, a calibration that expired before the measurement,
-no polygon result, an encoder's DCC whose only polygon is its reference. The XML is parsed
+fit, a signature that does not verify, no signature where a trusted certificate is set, a
+calibration that expired before the measurement or is dated after it, a validity period past
+the year 9999, a coverage factor below 1 or against its probability, a face's deviation or U
+no polygon has, no polygon result, an encoder's DCC whose only polygon is its reference. The
+DCC's item (name, serials) is read: :func:`item_notes` refuses a DCC of another item than
+the standard it is read for. The XML is parsed
 with no network, no entity resolution, no DTD and no huge-tree mode, and a document that
 declares a DTD at all is refused: a hostile file can neither read local files nor expand
 entities.
@@ -60,7 +64,8 @@ from models.messages import QT_TR_NOOP, listed, message, reason_of
 if TYPE_CHECKING:
     from lxml.etree import _Element  # (lxml ships no types: pyproject.toml [tool.mypy])
 
-__all__ = ["ARCSEC_PER_UNIT", "DccError", "PolygonReference", "StandardCertificate",
+__all__ = ["ARCSEC_PER_UNIT", "PLAUSIBLE_ARCSEC", "DccError", "is_u95", "item_notes", "PolygonReference",
+           "StandardCertificate",
            "POLYGON_FACE_DEVIATIONS", "angle_factor", "embedded_pdfs", "parse_dcc", "parse_decimal_list",
            "place_polygon_standard", "polygon_standard", "read_polygon_dcc",
            "read_standard_dcc", "replace_face_deviations"]
@@ -97,6 +102,8 @@ class PolygonReference:
     source: str = ""
     signer: str = ""  # the signature's certificate subject, "" when unsigned
     notes: tuple = field(default_factory=tuple)  # what the caller should say (unsigned …)
+    item_name: str = ""  # the item the DCC calibrates (dcc:items), "" when it names none
+    item_serials: tuple = field(default_factory=tuple)  # its identifications' values
 
     @property
     def faces(self) -> int:
@@ -121,19 +128,50 @@ class StandardCertificate:
     source: str = ""
     signer: str = ""
     notes: tuple = field(default_factory=tuple)
+    item_name: str = ""  # the item the DCC calibrates (dcc:items), "" when it names none
+    item_serials: tuple = field(default_factory=tuple)  # its identifications' values
+    applies_to: str = "reading"  # "from face 1" where its polygon's face 1 is exact
+    polygon: bool = False  # its U is a polygon's face deviations', or its item a polygon
+
+    def for_standard(self, description: str, serial: str) -> tuple[dict, tuple]:
+        """The fields a standards row listed as ``description``, ``serial`` takes from this
+        DCC (:meth:`as_standard` with the serial) and what to say; DccError, nothing to
+        take, when the DCC is another item's: its serial differs (:func:`item_notes`), or it
+        is a polygon's and the row names another standard."""
+        taken, said = item_notes(serial, self.certificate_id, self.item_name,
+                                 self.item_serials, self.source)
+        if self.polygon and description.strip() and not _POLYGON_WORDS.search(description):
+            raise DccError(message(QT_TR_NOOP(
+                "{source}: certificate {id} calibrates a polygon ({item}); the row it is read "
+                "into is {description}: it is not read (select the polygon's row)"),
+                source=self.source, id=self.certificate_id, item=self.item_name or "?",
+                description=description.strip()))
+        return {**self.as_standard(), "serial": taken}, said
 
     def as_standard(self) -> dict:
-        """The standards table's fields (a ReferenceStandard's keys): U with its k as U95
-        when k = 2, else as the standard uncertainty U/k (exact either way)."""
-        out: dict = {"certificate_no": self.certificate_id, "due_date": self.due_date}
+        """The standards table's fields (a ReferenceStandard's keys), every one the DCC
+        speaks to, so that a row takes them as a whole (nothing of the certificate it
+        replaces stays): the number, the due date ("" none stated), U with its k as U95
+        when k = 2, else as the standard uncertainty U/k (exact either way), what it is per
+        — U, basis and unit empty where the DCC states no U."""
+        out: dict = {"certificate_no": self.certificate_id, "due_date": self.due_date,
+                     "uncertainty": "", "basis": "", "uncertainty_unit": "",
+                     "applies_to": self.applies_to}
         if self.uncertainty is not None:
             k = self.coverage_factor or 2.0
-            if abs(k - 2.0) < 1e-12:
+            if is_u95(k, self.coverage_probability):
                 out.update(uncertainty=self.uncertainty, basis="U95")
             else:
                 out.update(uncertainty=self.uncertainty / k, basis="u")
             out["uncertainty_unit"] = self.unit
         return out
+
+
+def is_u95(k: float, p: float | None) -> bool:
+    """Whether a U stated with ``k`` and ``p`` is listed as U95 (k = 2 at about 95 %: p from
+    0.945 to 0.955, 0.9545 the normal's): a k of 2 with another p (0.90, its effective
+    degrees of freedom few) is listed as U/k with its k, never labelled 95 %."""
+    return abs(k - 2.0) < 1e-12 and (p is None or 0.945 <= p <= 0.955)
 
 
 # -- parsing -----------------------------------------------------------------------------
@@ -245,7 +283,7 @@ class _Uncertainty:
     p: list[float]
 
 
-def _expanded(element, n: int, where: str) -> _Uncertainty | None:
+def _expanded(element, n: int, where: str, source: str = "") -> _Uncertainty | None:
     """The expanded uncertainty of a si:realListXMLList (or of a si:real, n = 1): D-SI's
     expandedMU(XMLList), or the deprecated expandedUnc(XMLList)."""
     for mu, value, k, p in (
@@ -270,8 +308,43 @@ def _expanded(element, n: int, where: str) -> _Uncertainty | None:
             raise DccError(message(QT_TR_NOOP(
                 "{where}: an expanded uncertainty below 0, a coverage factor not above 0 or a "
                 "coverage probability outside (0, 1]"), where=here))
+        for k_, p_ in dict.fromkeys(zip(ks, ps, strict=True)):
+            _check_coverage(k_, p_, here, source)
         return _Uncertainty(values, ks, ps)
     return None
+
+
+#: the fewest effective degrees of freedom a coverage factor is taken for (GUM G.3: t_p(ν)
+#: with ν = 2 is the largest k a stated p can come with; ν → ∞ the normal's, the smallest)
+_FEWEST_DEGREES = 2
+#: how far below the normal's k(p) a stated k may be (p rounded: k = 1.96 with p = 0.9545)
+_K_ROUNDING = 0.02
+
+
+def _check_coverage(k: float, p: float, where: str, source: str = "") -> None:
+    """DccError when a coverage factor is below 1 (an expanded uncertainty smaller than the
+    standard uncertainty) or does not go with its coverage probability: below the normal
+    distribution's k for p, or above Student's t for p with 2 degrees of freedom (k = 2
+    with p = 0.5 or 0.68, k = 1 with p = 0.95). p = 1 (a bounded distribution) takes any
+    k from 1."""
+    if k < 1:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: {where}: the coverage factor k = {k:g} is below 1: an expanded "
+            "uncertainty is never smaller than the standard uncertainty"), source=source,
+            where=where, k=k))
+    if p >= 1:
+        return
+    from scipy.stats import norm, t
+
+    low = float(norm.ppf((1 + p) / 2)) * (1 - _K_ROUNDING)
+    high = float(t.ppf((1 + p) / 2, _FEWEST_DEGREES))
+    if not low <= k <= high:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: {where}: the coverage factor k = {k:g} and the coverage probability "
+            "p = {p:g} contradict each other (p = {p:g} goes with k from {low:.2f} to "
+            "{high:.2f}): which one the certificate means cannot be told"), source=source,
+            where=where, k=k, p=p,
+            low=low / (1 - _K_ROUNDING), high=high))
 
 
 def _real_list(quantity, where: str) -> tuple[list[float], list[str], _Element]:
@@ -293,13 +366,44 @@ def _to_arcsec(values: list[float], units: list[str], source: str, where: str) -
             raise DccError(message(QT_TR_NOOP(
                 "{source}: {where}: the unit {unit} is not an angle (\\arcsecond, \\arcminute, "
                 "\\degree or \\radian are read)"), source=source, where=where, unit=unit))
-        out.append(value * factor)
+        converted = value * factor
+        if not math.isfinite(converted):
+            raise DccError(message(QT_TR_NOOP(
+                "{source}: {where}: {value:g} {unit} is out of range"), source=source,
+                where=where, value=value, unit=unit))
+        out.append(converted)
     return out
+
+
+#: the largest angle the reader takes as a polygon face's deviation or an angle standard's U
+#: (as the readings' columns and the details' standards take, in arcseconds)
+PLAUSIBLE_ARCSEC = 3600.0
+
+
+def _check_plausible(values: dict[int, float], what: str, source: str, certificate_id: str,
+                     positive: bool = False) -> None:
+    """DccError naming the DCC, its certificate and the face when a value is beyond
+    ±PLAUSIBLE_ARCSEC (or, ``positive``, an uncertainty not above 0 on every face)."""
+    for face, value in sorted(values.items()):
+        if abs(value) > PLAUSIBLE_ARCSEC:
+            raise DccError(message(QT_TR_NOOP(
+                "{source}: certificate {id}, face {face}: {what} {value:g}″ is beyond "
+                "±{limit:g}″: not a polygon's; the DCC is not read"), source=source,
+                id=certificate_id, face=face, what=message(what), value=value,
+                limit=PLAUSIBLE_ARCSEC))
+    if positive and not any(v > 0 for v in values.values()):
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: certificate {id}: the expanded uncertainty is 0 on every face: no "
+            "calibration achieves that; the DCC is not read"), source=source,
+            id=certificate_id))
 
 
 def _date(text: str | None, source: str, where: str) -> str:
     text = (text or "").strip()
     try:
+        # a date (xs:date may carry a time zone: 2026-11-20Z, 2026-11-20+01:00), no more
+        if text and not re.fullmatch(r"\d{4}-\d{2}-\d{2}(Z|[+-]\d{2}:\d{2})?", text):
+            raise ValueError(text)
         return dt.date.fromisoformat(text[:10]).isoformat() if text else ""
     except ValueError:
         raise DccError(message(QT_TR_NOOP("{source}: {where}: '{text}' is not a date"),
@@ -336,6 +440,47 @@ def _core(root, source: str) -> tuple[str, str]:
                                  "coreData/endPerformanceDate")
 
 
+def _item(root) -> tuple[str, tuple[str, ...]]:
+    """The name of the item the DCC calibrates and the values of its identifications
+    (serial numbers …); ("", ()) when dcc:items names none."""
+    items = root.findall(f"{D}administrativeData/{D}items/{D}item")
+    name = next((n for n in (_name_of(i) for i in items) if n), "")
+    serials = tuple(dict.fromkeys(
+        " ".join((ident.findtext(f"{D}value") or "").split())
+        for item in items for ident in item.iterfind(f"{D}identifications/{D}identification")))
+    return name, tuple(s for s in serials if s)
+
+
+def _same_serial(a: str, b: str) -> bool:
+    return "".join(a.split()).casefold() == "".join(b.split()).casefold()
+
+
+def item_notes(serial: str, certificate_id: str, item_name: str, item_serials: tuple,
+               source: str) -> tuple[str, tuple]:
+    """The serial a standard read from a DCC is listed with, and what to say: the listed
+    ``serial`` when the DCC's item names it; the DCC's own when none is listed (said). A
+    DccError naming both when the DCC calibrates another item (the serials differ); a note
+    when the DCC names no serial (nothing to compare)."""
+    item = item_name or "?"
+    if not item_serials:
+        return serial, (message(QT_TR_NOOP(
+            "{source}: certificate {id} names no serial number of its item ({item}): check "
+            "that it is the standard's"), source=source, id=certificate_id, item=item),)
+    if not serial.strip():
+        taken = item_serials[0]
+        return taken, (message(QT_TR_NOOP(
+            "{source}: the standard's serial number was not listed: {serial} is taken from "
+            "certificate {id} ({item})"), source=source, serial=taken, id=certificate_id,
+            item=item),)
+    if any(_same_serial(serial, s) for s in item_serials):
+        return serial, ()
+    raise DccError(message(QT_TR_NOOP(
+        "{source}: certificate {id} calibrates {item}, serial {theirs}; the standard it is read "
+        "for is serial {ours}: it is another item's certificate and is not read (correct the "
+        "serial in the details if the DCC is this standard's)"), source=source,
+        id=certificate_id, item=item, theirs=listed(item_serials), ours=serial))
+
+
 def _due_date(root, calibration_date: str, source: str) -> str:
     """The due date a validity statement gives: its dcc:date, or the calibration date plus
     its dcc:period; "" when no statement gives one."""
@@ -351,8 +496,22 @@ def _due_date(root, calibration_date: str, source: str) -> str:
             return date
         period = _duration_days(statement.findtext(f"{D}period") or "")
         if period and calibration_date:
-            return _add(dt.date.fromisoformat(calibration_date), *period).isoformat()
+            try:
+                return _add(dt.date.fromisoformat(calibration_date), *period).isoformat()
+            except (ValueError, OverflowError):
+                raise DccError(message(QT_TR_NOOP(
+                    "{source}: the validity period {period} from {date} ends after the "
+                    "year 9999: no calibration is valid that long; the DCC is not read"),
+                    source=source, period=(statement.findtext(f"{D}period") or "").strip()[:40],
+                    date=calibration_date)) from None
     return ""
+
+
+def _states_validity(root) -> bool:
+    """Whether a statement of the DCC is its validity (AngleBench's own say: the results
+    relate to the calibration's time, with no due date)."""
+    return any(REFTYPE_VALIDITY in (s.get("refType") or "").split()
+               for s in root.findall(f"{D}administrativeData/{D}statements/{D}statement"))
 
 
 def _check_schema(data: bytes, schema_dir: str | Path | None, source: str) -> None:
@@ -376,18 +535,25 @@ def _schema_problems(data: bytes, folder: Path) -> list[str]:
         raise DccError(reason_of(exc)) from None
 
 
-def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str
-                      ) -> tuple[_Element, str, tuple]:
+def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str,
+                      signature_required: bool = False) -> tuple[_Element, str, tuple]:
     """The root to read (what the signature covers) and the signer; DccError when a
-    signature is there and does not verify. Unsigned: the root as parsed."""
+    signature is there and does not verify, or is missing where ``signature_required`` (a
+    trusted certificate named for the DCCs read: models.dcc.signature.signature_demanded).
+    Unsigned otherwise: the root as parsed."""
     if root.find(f"{{{DS_NAMESPACE}}}Signature") is None and root.find(
             f".//{{{DS_NAMESPACE}}}Signature") is None:
+        if signature_required and trusted_cert is not None:
+            raise DccError(message(QT_TR_NOOP(
+                "{source}: signature missing: a trusted certificate is configured, and this "
+                "DCC is not signed (a signature removed is not seen otherwise); it is not "
+                "read"), source=source))
         return root, "", ()
     from models.dcc.signature import verify
 
     check = verify(data, trusted_cert)
     if check.problems:
-        raise DccError(message(QT_TR_NOOP("{source}: its signature does not verify: {reason}"),
+        raise DccError(message(QT_TR_NOOP("{source}: {reason}; it is not read"),
                                source=source, reason=check.problems[0]))
     signed = parse_dcc(check.signed_xml, source) if check.signed_xml else root
     notes = () if check.trusted else (message(QT_TR_NOOP(
@@ -397,33 +563,61 @@ def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str
     return signed, check.signer, notes
 
 
-def _load(path: str | Path, schema_dir, trusted_cert) -> tuple[_Element, str, str, tuple]:
+def _load(path: str | Path, schema_dir, trusted_cert, signature_required: bool = False
+          ) -> tuple[_Element, str, str, tuple]:
     source = str(path)
     try:
+        size = Path(path).stat().st_size
+        if size > MAX_BYTES:  # told before the file is read
+            raise DccError(message(QT_TR_NOOP("{source}: {mb} MB: too large for a calibration "
+                                              "certificate"), source=source,
+                                   mb=size // (1024 * 1024)))
         data = Path(path).read_bytes()
     except OSError as exc:
         raise DccError(message(QT_TR_NOOP("{source}: cannot read ({reason})"), source=source,
                                reason=exc.strerror or str(exc))) from None
     root = parse_dcc(data, source)
     _check_schema(data, schema_dir, source)
-    root, signer, notes = _verify_signature(data, root, trusted_cert, source)
+    root, signer, notes = _verify_signature(data, root, trusted_cert, source, signature_required)
     return root, source, signer, notes
 
 
 def _check_due(due_date: str, measurement_date: str | dt.date | None, source: str,
-               certificate_id: str) -> tuple:
-    if not due_date:
-        return (message(QT_TR_NOOP("{source}: certificate {id} states no due date (no "
-                                   "validity statement): check the calibration interval "
-                                   "yourself"), source=source, id=certificate_id),)
+               certificate_id: str, calibration_date: str = "",
+               validity_stated: bool = False) -> tuple:
+    """DccError for a calibration dated after the measurement or due before it; with no due
+    date, a note saying the calibration's date and age (the lab's interval decides)."""
+    when = ""
     if measurement_date:
         when = (measurement_date.isoformat() if isinstance(measurement_date, dt.date)
                 else str(measurement_date))
-        if due_date < when:
-            raise DccError(message(QT_TR_NOOP(
-                "{source}: certificate {id} was due for recalibration on {due}, before the "
-                "measurement on {when}: the calibration had expired"), source=source,
-                id=certificate_id, due=due_date, when=when))
+    if when and calibration_date and calibration_date > when:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: certificate {id} was calibrated on {date}, after the measurement on "
+            "{when}: it cannot be the calibration the measurement used"), source=source,
+            id=certificate_id, date=calibration_date, when=when))
+    if not due_date:
+        if calibration_date:
+            end = dt.date.fromisoformat(when[:10]) if when else dt.date.today()
+            days = (end - dt.date.fromisoformat(calibration_date)).days
+            age = message(QT_TR_NOOP("{years:.1f} years"), years=max(days, 0) / 365.25)
+        why = (QT_TR_NOOP("its validity statement gives no due date") if validity_stated
+               else QT_TR_NOOP("no validity statement"))
+        if calibration_date:
+            return (message(QT_TR_NOOP(
+                "{source}: certificate {id} calibrated {date}, {age} before the measurement, "
+                "states no due date ({why}): check it against the standard's calibration "
+                "interval"), source=source, id=certificate_id, date=calibration_date,
+                age=age, why=message(why)),)
+        return (message(QT_TR_NOOP("{source}: certificate {id} states no due date ({why}) and "
+                                   "no calibration date: check the calibration interval "
+                                   "yourself"), source=source, id=certificate_id,
+                        why=message(why)),)
+    if when and due_date < when:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: certificate {id} was due for recalibration on {due}, before the "
+            "measurement on {when}: the calibration had expired"), source=source,
+            id=certificate_id, due=due_date, when=when))
     return ()
 
 
@@ -494,11 +688,12 @@ def _an_encoders_dcc(root, source: str, certificate_id: str) -> DccError:
 def read_polygon_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
                      measurement_date: str | dt.date | None = None,
                      faces: int | None = None,
-                     trusted_cert: bytes | None = None) -> PolygonReference:
+                     trusted_cert: bytes | None = None,
+                     signature_required: bool = False) -> PolygonReference:
     """A polygon's face deviations and their U (arcseconds) from its DCC. ``faces``: the
     readings' face count (refused when the DCC's differs); ``measurement_date``: refused
     when the calibration was due before it. DccError naming the file and why."""
-    root, source, signer, notes = _load(path, schema_dir, trusted_cert)
+    root, source, signer, notes = _load(path, schema_dir, trusted_cert, signature_required)
     certificate_id, calibration_date = _core(root, source)
     results = [r for r in root.iter(f"{D}result") if _has_reftype(
         r, REFTYPE_POLYGON_FACE_DEVIATIONS) and not _is_reference_polygon(r)]
@@ -541,7 +736,7 @@ def read_polygon_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
             "{source}: certificate {id} gives {n} faces, the readings have {faces}: it is "
             "another polygon's"), source=source, id=certificate_id, n=n, faces=faces))
     arcsec = _to_arcsec(values, units, source, where_d)
-    u = _expanded(element, n, where_d)
+    u = _expanded(element, n, where_d, source)
     if u is None:
         raise DccError(message(QT_TR_NOOP(
             "{source}: the face deviations carry no expanded uncertainty (si:expandedMUXMLList): "
@@ -551,12 +746,19 @@ def read_polygon_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
         raise DccError(message(QT_TR_NOOP(
             "{source}: the faces' uncertainties are stated with different coverage factors or "
             "probabilities; AngleBench takes one k for the polygon"), source=source))
-    due_date = _due_date(root, calibration_date, source)
-    notes = notes + _check_due(due_date, measurement_date, source, certificate_id)
     faces_of = [int(i) for i in indices]
+    deviations = dict(zip(faces_of, arcsec, strict=True))
+    uncertainties = dict(zip(faces_of, u_arcsec, strict=True))
+    _check_plausible(deviations, QT_TR_NOOP("the deviation"), source, certificate_id)
+    _check_plausible(uncertainties, QT_TR_NOOP("the expanded uncertainty"), source,
+                     certificate_id, positive=True)
+    due_date = _due_date(root, calibration_date, source)
+    notes = notes + _check_due(due_date, measurement_date, source, certificate_id,
+                               calibration_date, _states_validity(root))
+    item_name, item_serials = _item(root)
     return PolygonReference(
-        dict(zip(faces_of, arcsec, strict=True)), dict(zip(faces_of, u_arcsec, strict=True)),
-        u.k[0], u.p[0], certificate_id, calibration_date, due_date, source, signer, notes)
+        deviations, uncertainties, u.k[0], u.p[0], certificate_id, calibration_date, due_date,
+        source, signer, notes, item_name, item_serials)
 
 
 def replace_face_deviations(rows: list[list[str]], position_index: int, deviation_index: int,
@@ -602,17 +804,18 @@ def replace_face_deviations(rows: list[list[str]], position_index: int, deviatio
 
 def polygon_standard(reference: PolygonReference) -> dict:
     """The polygon as a row of the standards table (a ReferenceStandard's fields): its
-    largest face U (exact with its k: U95 when k = 2, else u = U/k), per reading — or per
+    largest face U (exact with its k: U95 when k = 2 at p ≈ 0.95, else u = U/k), per reading — or per
     face from face 1 when the DCC states face 1 as exactly 0 with no uncertainty (its
     deviations are then from face 1)."""
     k = reference.coverage_factor
     from_face_1 = (reference.deviations.get(1) == 0.0
                    and reference.expanded_uncertainty.get(1) == 0.0)
     standard: dict[str, str | float] = {"description": "polygon (face deviations from its DCC)",
+                "serial": reference.item_serials[0] if reference.item_serials else "",
                 "certificate_no": reference.certificate_id,
                 "applies_to": "from face 1" if from_face_1 else "reading",
                 "uncertainty_unit": "arcsec", "due_date": reference.due_date}
-    if abs(k - 2.0) < 1e-12:
+    if is_u95(k, reference.coverage_probability):
         standard.update(uncertainty=reference.largest_u, basis="U95")
     else:
         standard.update(uncertainty=reference.largest_u / k, basis="u")
@@ -626,21 +829,36 @@ _POLYGON_WORDS = re.compile(r"polygon|多面棱体|棱体", re.IGNORECASE)
 POLYGON_FACE_DEVIATIONS = "polygon face deviations"
 
 
-def place_polygon_standard(standards: list[dict], standard: dict) -> list[dict]:
-    """The standards (ReferenceStandard dicts) with the polygon read from its DCC in place:
-    it replaces the standard with its certificate number, else the one whose description
-    names a polygon (keeping that one's description and serial: the same polygon, now
-    with its DCC's figures), else it is added. The polygon's U thus enters the budget once."""
+def place_polygon_standard(standards: list[dict], standard: dict,
+                           reference: PolygonReference | None = None
+                           ) -> tuple[list[dict], tuple]:
+    """The standards (ReferenceStandard dicts) with the polygon read from its DCC in place,
+    and what to say: it replaces the standard with its certificate number, else the one
+    whose description names a polygon (keeping that one's description and serial: the same
+    polygon, now with its DCC's figures), else it is added. The polygon's U thus enters the
+    budget once. With ``reference`` (the DCC read), the serial the row lists must be the
+    DCC's item's (:func:`item_notes`: DccError naming both when it is another polygon's; an
+    unlisted serial is taken from the DCC, said)."""
     out = [dict(s) for s in standards]
     number = standard.get("certificate_no", "")
+
+    def checked(old: dict) -> tuple[dict, tuple]:
+        if reference is None:
+            return {}, ()
+        serial, said = item_notes(str(old.get("serial") or ""), reference.certificate_id,
+                                  reference.item_name, reference.item_serials, reference.source)
+        return ({"serial": serial} if serial else {}), said
+
     for match in (lambda s: number and s.get("certificate_no") == number,
                   lambda s: _POLYGON_WORDS.search(str(s.get("description", ""))) is not None):
         for i, old in enumerate(out):
             if match(old):
+                serial, said = checked(old)
                 kept = {k: old[k] for k in ("description", "serial") if old.get(k)}
-                out[i] = {**standard, **kept}
-                return out
-    return [*out, dict(standard)]
+                out[i] = {**standard, **kept, **serial}
+                return out, said
+    serial, said = checked({})
+    return [*out, {**standard, **serial}], said
 
 
 # -- any standard's certificate ----------------------------------------------------------
@@ -662,8 +880,9 @@ _NOT_THE_STANDARDS_REFTYPES = frozenset({
     "anglebench_decidedQuantity", PTB_NOMINAL_VALUE, PTB_REFERENCE_VALUE})
 #: names of an error or deviation (en, de, zh), and of a measured value, for a DCC that
 #: marks its results with no refType; a standard deviation is a statistic, not an error
-_ERROR_NAME = re.compile(r"error|deviation|abweichung|fehler|误差|偏差|示值误差", re.IGNORECASE)
-_MEASURED_NAME = re.compile(r"measured value|messwert|测量值|测得值", re.IGNORECASE)
+_ERROR_NAME = re.compile(r"\b(errors?|deviations?)\b|abweichung|fehler|误差|偏差|示值误差",
+                         re.IGNORECASE)
+_MEASURED_NAME = re.compile(r"\bmeasured values?\b|messwert|测量值|测得值", re.IGNORECASE)
 _STATISTIC_NAME = re.compile(r"standard deviation|standardabweichung|标准偏差|标准差",
                              re.IGNORECASE)
 
@@ -712,14 +931,17 @@ def _kind(element, result, quantity_name: str) -> str:
     if reftypes & _NOT_THE_STANDARDS_REFTYPES:
         return _NOT_THE_STANDARDS
     for name in (quantity_name, _name_of(result)):
-        if name and _ERROR_NAME.search(_STATISTIC_NAME.sub("", name)):
+        if name and _STATISTIC_NAME.search(name):
+            return _UNMARKED  # a statistic of the errors (their spread) is no error: the
+            # whole name decides, never what is left once its statistic's words are cut out
+        if name and _ERROR_NAME.search(name):
             return _ERROR
         if name and _MEASURED_NAME.search(name):
             return _MEASURED
     return _UNMARKED
 
 
-def _figures(root) -> list[_Figure]:
+def _figures(root, source: str = "") -> list[_Figure]:
     """Every expanded uncertainty of the results (those under dcc:results: not a
     measuringEquipment's — the standards the certificate used — nor an influence
     condition's), converted to arcseconds or micrometres where it is an angle or a length."""
@@ -739,7 +961,7 @@ def _figures(root) -> list[_Figure]:
             units = [(element.findtext(f"{S}unit") or "").strip()] * len(values)
         if not values:
             continue
-        u = _expanded(element, len(values), where)
+        u = _expanded(element, len(values), where, source)
         if u is None:
             continue
         quantity = next(element.iterancestors(f"{D}quantity"), None)
@@ -783,7 +1005,8 @@ def _not_used(figures: list[_Figure], taken: list[_Figure]) -> list[str]:
 
 def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
                       measurement_date: str | dt.date | None = None,
-                      trusted_cert: bytes | None = None) -> StandardCertificate:
+                      trusted_cert: bytes | None = None,
+                      signature_required: bool = False) -> StandardCertificate:
     """A standard's certificate id, calibration date, due date and U from its DCC (any
     maker's). U is the U of the quantity the standard provides, not of a fitted set-up
     parameter: the largest (by U/k) among its results marked as measurement errors or
@@ -795,17 +1018,20 @@ def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
     DCC restating them) are never taken. In arcseconds (an angle) or micrometres (a
     length), its k and p beside it; a note names the result U was taken from and those not
     used. DccError naming the file and why."""
-    root, source, signer, notes = _load(path, schema_dir, trusted_cert)
+    root, source, signer, notes = _load(path, schema_dir, trusted_cert, signature_required)
     certificate_id, calibration_date = _core(root, source)
-    figures = _figures(root)
+    figures = _figures(root, source)
     due_date = _due_date(root, calibration_date, source)
-    notes = notes + _check_due(due_date, measurement_date, source, certificate_id)
+    notes = notes + _check_due(due_date, measurement_date, source, certificate_id,
+                               calibration_date, _states_validity(root))
+    item = _item(root)
     if not figures:
         notes = notes + (message(QT_TR_NOOP(
             "{source}: no result states an expanded uncertainty: the standard's U is left "
             "empty"), source=source),)
         return StandardCertificate(certificate_id, calibration_date, due_date, None, "",
-                                   None, None, source, signer, notes)
+                                   None, None, source, signer, notes, *item, "reading",
+                                   bool(_POLYGON_WORDS.search(item[0])))
     kind = next((k for k in (_ERROR, _FACE, _MEASURED, _UNMARKED)
                  if any(f.kind == k for f in figures)), None)
     if kind is None:  # set-up parameters, summary figures, … only
@@ -814,7 +1040,8 @@ def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
             "deviation or a measured value of the standard (only {others}): the standard's U "
             "is left empty"), source=source, others=listed(_not_used(figures, []))),)
         return StandardCertificate(certificate_id, calibration_date, due_date, None, "",
-                                   None, None, source, signer, notes)
+                                   None, None, source, signer, notes, *item, "reading",
+                                   bool(_POLYGON_WORDS.search(item[0])))
     candidates = [f for f in figures if f.kind == kind]
     found = [f for f in candidates if f.unit in ("arcsec", "um")]
     if not found:
@@ -824,6 +1051,12 @@ def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
     if len({f.unit for f in found}) > 1:  # an angle standard with a length too: the angle
         found = [f for f in found if f.unit == "arcsec"]
     largest = max(found, key=lambda f: f.u / f.k)  # the largest standard uncertainty
+    if not math.isfinite(largest.u) or (largest.unit == "arcsec"
+                                        and largest.u > PLAUSIBLE_ARCSEC):
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: certificate {id}: the expanded uncertainty of “{name}”, {u:g}″, is "
+            "beyond {limit:g}″: not a standard's; the DCC is not read"), source=source,
+            id=certificate_id, name=_named(largest), u=largest.u, limit=PLAUSIBLE_ARCSEC))
     others = _not_used(figures, [f for f in candidates if f.unit == largest.unit])
     if kind == _UNMARKED:
         said = message(QT_TR_NOOP(
@@ -842,7 +1075,33 @@ def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
             source=source, name=_named(largest), kind=message(_KIND_WORDS[kind]))
     return StandardCertificate(certificate_id, calibration_date, due_date, largest.u,
                                largest.unit, largest.k, largest.p, source, signer,
-                               notes + (said,))
+                               notes + (said,), *item,
+                               _applies_to(root),
+                               kind == _FACE or bool(_POLYGON_WORDS.search(item[0])))
+
+
+def _applies_to(root) -> str:
+    """What a polygon's U in its DCC is per, as :func:`polygon_standard` says it: "from face
+    1" where the polygon result states face 1 as exactly 0 with no uncertainty, else
+    "reading"."""
+    for result in root.iter(f"{D}result"):
+        if not _has_reftype(result, REFTYPE_POLYGON_FACE_DEVIATIONS) or _is_reference_polygon(
+                result):
+            continue
+        quantities = list(result.iter(f"{D}quantity"))
+        index_q = [q for q in quantities if _has_reftype(q, REFTYPE_FACE_INDEX)]
+        deviation_q = [q for q in quantities if _has_reftype(q, REFTYPE_FACE_DEVIATION)]
+        if len(index_q) != 1 or len(deviation_q) != 1:
+            continue
+        where = _path(deviation_q[0])
+        indices, _, _ = _real_list(index_q[0], _path(index_q[0]))
+        values, _, element = _real_list(deviation_q[0], where)
+        u = _expanded(element, len(values), where) if len(indices) == len(values) else None
+        if u is None:
+            continue
+        first = {int(i): (v, w) for i, v, w in zip(indices, values, u.values, strict=True)}
+        return "from face 1" if first.get(1) == (0.0, 0.0) else "reading"
+    return "reading"
 
 
 # -- the issued PDF inside ---------------------------------------------------------------

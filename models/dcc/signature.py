@@ -27,7 +27,8 @@ if TYPE_CHECKING:
     from signxml import VerifyResult
 
 __all__ = ["CERT_ENV_VAR", "KEY_ENV_VAR", "TRUSTED_ENV_VAR", "SignatureCheck", "SigningError",
-           "has_signature", "load_signing", "sign", "sign_if_configured", "trusted_certificate",
+           "has_signature", "load_signing", "sign", "sign_if_configured", "signature_demanded",
+           "trusted_certificate",
            "verify"]
 
 KEY_ENV_VAR = "ANGLEBENCH_DCC_SIGNING_KEY"
@@ -99,6 +100,16 @@ def trusted_certificate(path: str = "") -> bytes | None:
     path = (path.strip() or os.environ.get(TRUSTED_ENV_VAR, "").strip()
             or os.environ.get(CERT_ENV_VAR, "").strip())
     return _read(path, message(QT_TR_NOOP("certificate"))) if path else None
+
+
+def signature_demanded(path: str = "") -> bool:
+    """Whether a DCC read must be signed: a trusted certificate named for the DCCs read
+    (``path``, the window's setting, or :data:`TRUSTED_ENV_VAR`). The laboratory's own
+    signing certificate (:data:`CERT_ENV_VAR`), which :func:`trusted_certificate` falls back
+    to for checking a signature that is there, demands none: it is set to sign what the lab
+    issues, and a supplier's unsigned DCC (a signature is optional in DCC 3.3.0) would
+    otherwise be refused with no way to read it."""
+    return bool(path.strip() or os.environ.get(TRUSTED_ENV_VAR, "").strip())
 
 
 def _parser():

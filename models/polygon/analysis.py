@@ -549,12 +549,14 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     if unidentified and not s["tilt_bound_arcsec"] > 0:
         # 0 would claim a polygon on the shaft with no tilt at all, which no set-up achieves
         # and these vertical readings cannot show (audit 73 finding 1, the theodolite's)
+        # the refusal and what to do first, then why (day 74 finding 10: it began with the
+        # warning's own "… the tilt bound enters the uncertainty")
         raise SettingsError(message(QT_TR_NOOP(
-            "{why} A tilt bound of 0\" would claim that the polygon sits on the shaft with no "
-            "tilt at all, which no set-up achieves and these vertical readings cannot show: "
-            "state the largest tilt the set-up can have (the setting \"largest tilt of the "
-            "polygon on the shaft, when not identified\", --tilt-bound-arcsec), or read "
-            "vertical readings that identify the tilt"), why=unidentified[0]),
+            "A tilt bound of 0\" is refused: state the largest tilt the set-up can have (the "
+            "setting \"largest tilt of the polygon on the shaft, when not identified\", "
+            "--tilt-bound-arcsec), or read vertical readings that identify the tilt. 0 would "
+            "claim that the polygon sits on the shaft with no tilt at all, which no set-up "
+            "achieves and these vertical readings cannot show. {why}"), why=unidentified[0]),
             key="tilt_bound_arcsec")
     if tilt is None:
         verdict = message(QT_TR_NOOP("Tilt not identified: {why}"),
@@ -811,8 +813,23 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
             message(QT_TR_NOOP("drift {drift} ok") if r.closure_ok else
                     QT_TR_NOOP("drift {drift} FAILED"), drift=f"{r.closure_drift_arcsec:+.2f}\""))
         if r.tilt is None:
-            tilt: Any = message(QT_TR_NOOP("no tilt"))
-        elif r.tilt.omega_determined:
+            # what is true of a tilt not identified, as the warning and the certificate say it
+            # (day 74 finding 3: "no tilt" where the readings could not show one): why, and
+            # the bound whose effect enters U in place of a correction
+            out.append(message(
+                QT_TR_NOOP("  set {set} ({sense}, from face {face}): closure {closure}; tilt "
+                           "not identified ({why}): nothing removed, a tilt up to {bound} "
+                           "(stated) enters the uncertainty")
+                if result.tilt_bound_analysed_arcsec != DEFAULT_TILT_BOUND_ARCSEC else
+                QT_TR_NOOP("  set {set} ({sense}, from face {face}): closure {closure}; tilt "
+                           "not identified ({why}): nothing removed, a tilt up to {bound} (the "
+                           "program's default: no bound was stated) enters the uncertainty"),
+                set=i, sense="+" if r.direction > 0 else "−", face=r.start_face,
+                closure=closure, why=r.tilt_not_identified_cause or r.tilt_not_identified,
+                bound=f"{result.tilt_bound_analysed_arcsec:g}\""))
+            continue
+        tilt: Any
+        if r.tilt.omega_determined:
             psi, u_psi = _with_u(r.tilt.psi_arcsec, r.tilt.u_psi_arcsec, '"')
             omega, u_omega = _with_u(r.tilt.omega_deg, r.tilt.u_omega_deg, "°")
             tilt = joined(["ψ = ", psi, " ± ", u_psi, ", ω = ", omega, " ± ", u_omega,

@@ -91,6 +91,7 @@ __all__ = ["split_sets",
     "within_set_noise", "zero_offsets_warning",
     "tilt_advice",
     "tilt_not_identified",
+    "tilt_not_identified_cause",
     "wrap_deg",
 ]
 
@@ -261,6 +262,9 @@ class PolygonSetResult:
     # position order: each position's index among the set's readings (0: its first reading,
     # the closure comes at n), for the drift carried from set to set in the budget
     reading_index: np.ndarray | None = None
+    # the same cause in a few words, for the summary's line of the set ("" when identified;
+    # :func:`tilt_not_identified_cause`)
+    tilt_not_identified_cause: str = ""
 
     @property
     def closure_arcsec(self) -> float | None:
@@ -276,6 +280,36 @@ TILT_FIT_UNKNOWNS = 3
 DEFAULT_TILT_BOUND_ARCSEC = 300.0
 
 
+def _unidentified_because(v: np.ndarray) -> str:
+    """Why readings ``v`` cannot identify the tilt, as a key: "missing" (none, or one not a
+    number), "few" (no more than the fit's unknowns), "equal" (no variation); "" when they
+    can."""
+    if v.size == 0 or not np.all(np.isfinite(v)):
+        return "missing"
+    if v.size <= TILT_FIT_UNKNOWNS:
+        return "few"
+    return "equal" if np.ptp(v) == 0 else ""
+
+
+def tilt_not_identified_cause(ac_y_arcsec) -> str:
+    """Why one set's vertical readings cannot identify the tilt, in a few words for a line of
+    the summary ("no vertical readings", "every vertical reading is 12.5\"" …); "" when they
+    can. The whole reason, with what follows from it, is :func:`tilt_not_identified`'s."""
+    v = np.asarray(ac_y_arcsec if ac_y_arcsec is not None else [], dtype=float)
+    because = _unidentified_because(v)
+    if because == "missing":
+        finite = int(np.count_nonzero(np.isfinite(v)))
+        return message(QT_TR_NOOP("no vertical readings")) if finite == 0 else message(
+            QT_TR_NOOP("vertical readings missing on {missing} of {faces} faces"),
+            missing=v.size - finite, faces=v.size)
+    if because == "few":
+        return message(QT_TR_NOOP("{n} faces: no degrees of freedom left for the tilt fit"),
+                       n=v.size)
+    if because == "equal":
+        return message(QT_TR_NOOP("every vertical reading is {value}\""), value=f"{v[0]:g}")
+    return ""
+
+
 def tilt_not_identified(ac_y_arcsec, label: str = "set 1") -> str:
     """Why one set's vertical readings cannot identify the tilt, naming it ("" when they can).
 
@@ -285,17 +319,18 @@ def tilt_not_identified(ac_y_arcsec, label: str = "set 1") -> str:
     leave it no degrees of freedom — it passes through every reading, whatever their noise.
     """
     v = np.asarray(ac_y_arcsec, dtype=float)
-    if v.size == 0 or not np.all(np.isfinite(v)):
+    because = _unidentified_because(v)
+    if because == "missing":
         return message(QT_TR_NOOP("{set}: vertical readings missing: the pyramidal tilt is not "
                                   "identified and its error not removed; the tilt bound "
                                   "enters the uncertainty."), set=set_name(label))
-    if v.size <= TILT_FIT_UNKNOWNS:
+    if because == "few":
         return message(QT_TR_NOOP(
             "{set}: {n} faces give {n} vertical readings for the tilt fit's 3 unknowns (zero, ψ, "
             "ω): no degrees of freedom are left, so the fit would pass through every reading "
             "whatever its noise. The pyramidal tilt is not identified and its error not "
             "removed; the tilt bound enters the uncertainty."), set=set_name(label), n=v.size)
-    if np.ptp(v) == 0:
+    if because == "equal":
         return message(QT_TR_NOOP(
             "{set}: every vertical reading is {value}\": no variation, while a tilt ψ moves it by "
             "2ψ over a turn. The pyramidal tilt is not identified (ψ = 0 is not a finding) and its "
@@ -377,7 +412,8 @@ def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
         results.append(PolygonSetResult(theta, error, drift, ok, tilt, pyramidal, error - pyramidal,
                                         s.direction, int(s.positions[0]),
                                         ac_y if tilt is not None else None, warnings,
-                                        unidentified, np.asarray(order)))
+                                        unidentified, np.asarray(order),
+                                        tilt_not_identified_cause(ac_y) if unidentified else ""))
     return results
 
 

@@ -12,6 +12,7 @@ import numpy as np
 from models.messages import QT_TR_NOOP, joined, lines, message, separated
 from models.parameters import Parameter, SettingsError
 from models.positioning import KEY, MEASURAND_STANDARDS, TITLE
+from models.positioning.acquisition import positioning_guide
 from models.positioning.compensation import write_compensation
 from models.positioning.model import (
     DEVIATION_UNITS,
@@ -52,6 +53,7 @@ from models.uncertainty.wide_intervals import wide_intervals_statement
 from models.workbench import (
     AcceptsRuns,
     ComparesAfterLog,
+    GuidesAcquisition,
     IssuesCertificates,
     ShowsHeadline,
     Workbench,
@@ -634,7 +636,8 @@ def _figures_line(prefix: str, figures, symbol: str, decimals: dict[str, int] | 
 
 class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningResult],
                   WritesCorrectionTable[PositioningResult], AcceptsRuns,
-                  ComparesAfterLog[PositioningResult], ShowsHeadline[PositioningResult]):
+                  ComparesAfterLog[PositioningResult], ShowsHeadline[PositioningResult],
+                  GuidesAcquisition):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -651,6 +654,7 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
     analyze = staticmethod(analyze)
     to_json = staticmethod(to_json)
     summary = staticmethod(summary)
+    acquisition_guide = staticmethod(positioning_guide)
 
     def check_settings(self, checked):
         _check_units(checked)

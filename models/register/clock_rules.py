@@ -29,6 +29,7 @@ from dataclasses import dataclass
 
 from models.messages import QT_TR_NOOP, Message, message
 from models.register.register_error import RegisterError
+from models.register.wording import chained_words
 
 __all__ = ["BEFORE_LAST", "CONFIRM_AFTER_DAYS", "DateToConfirm", "LastChained", "clock_checked",
            "correction_refusal", "date_backwards", "last_certificate_since_correction",
@@ -54,9 +55,12 @@ class LastChained:
 
     seq: int
     at: dt.datetime  # its time (UTC)
-    what: str  # its number, or "entry KIND SUBJECT"
+    what: str  # in words: "certificate AB-2026-0001", "a clock correction" … (chained_words)
     workstation: str
     os_user: str
+    # as the chain records it where an entry names it (a date confirmed's "last", a clock
+    # correction's subject): its number, or "entry KIND SUBJECT", the form kept since 0.8.22
+    recorded: str = ""
 
 
 class DateToConfirm(RegisterError):
@@ -75,13 +79,16 @@ def last_chained(conn, sa, schema) -> LastChained | None:
                         .where(c.seq.is_not(None)).order_by(c.seq.desc()).limit(1)).first()
     entry = conn.execute(sa.select(e.seq, e.recorded_at, e.kind, e.subject, e.workstation,
                                    e.os_user).order_by(e.seq.desc()).limit(1)).first()
+    # each named in words, as the messages say it (day 74 finding 8: "entry
+    # loss_acknowledged —", the database's kind and an empty subject)
     if entry is not None and (cert is None or entry.seq > cert.seq):
-        return LastChained(entry.seq, _parse_time(entry.recorded_at), message(QT_TR_NOOP(
-            "entry {kind} {subject}"), kind=entry.kind, subject=entry.subject),
-            entry.workstation or "?", entry.os_user or "?")
+        return LastChained(entry.seq, _parse_time(entry.recorded_at),
+                           chained_words(kind=entry.kind, subject=entry.subject),
+                           entry.workstation or "?", entry.os_user or "?",
+                           f"entry {entry.kind} {entry.subject}")
     if cert is not None:
-        return LastChained(cert.seq, _parse_time(cert.issued_at), cert.number,
-                           cert.workstation or "?", cert.os_user or "?")
+        return LastChained(cert.seq, _parse_time(cert.issued_at), chained_words(cert.number),
+                           cert.workstation or "?", cert.os_user or "?", cert.number)
     return None
 
 
@@ -138,7 +145,7 @@ def clock_checked(last: LastChained | None, now: dt.datetime, issue_date: dt.dat
             "today was confirmed as {confirmed}, but the computer's clock gives {date}: "
             "nothing is issued until the clock is right"),
             confirmed=confirmed.isoformat(), date=issue_date.isoformat()))
-    return {"date": issue_date.isoformat(), "days_after_last": days, "last": str(last.what),
+    return {"date": issue_date.isoformat(), "days_after_last": days, "last": last.recorded,
             "last_at": last.at.isoformat()}
 
 
@@ -146,11 +153,15 @@ def correction_refusal(last: LastChained | None, now: dt.datetime, today: dt.dat
                        confirmed: dt.date | None):
     """Why a clock correction is not recorded now (a Message), None when it is: the last
     chained record must be dated after the computer's clock, and today's date confirmed."""
-    if last is None or last.at <= now:
+    if last is None:
+        return message(QT_TR_NOOP(
+            "nothing to correct: the register holds no record yet; a clock correction records "
+            "that a record was dated by a clock set ahead"))
+    if last.at <= now:
         return message(QT_TR_NOOP(
             "nothing to correct: the register's last record ({what}) is not dated after the "
             "computer's clock ({now}); a clock correction records that a record was dated by "
-            "a clock set ahead"), what=last.what if last else "—", now=now.isoformat())
+            "a clock set ahead"), what=last.what, now=now.isoformat())
     if confirmed != today:
         return message(QT_TR_NOOP(
             "a clock correction is recorded with today's date confirmed (--confirm-date "

@@ -12,6 +12,7 @@ from __future__ import annotations
 from models.messages import QT_TR_NOOP, Message, message
 from models.register.clock_rules import BEFORE_LAST
 from models.register.store import LOSS_FINDINGS
+from models.register.wording import recorded_words
 
 __all__ = ["CLOCK", "CLOCK_CORRECTED", "LOSS", "LOSS_RECORDED", "clock_corrected",
            "loss_recorded", "numbers_lost", "recovery_answering"]
@@ -38,7 +39,8 @@ def loss_recorded(body: dict, head: str) -> Message:
 
 def clock_corrected(body: dict) -> Message:
     """What a clock correction says (``body``: :meth:`Register.correct_clock`'s)."""
-    return message(CLOCK_CORRECTED, by=body["by"], reason=body["reason"], ahead=body["ahead"],
+    return message(CLOCK_CORRECTED, by=body["by"], reason=body["reason"],
+                   ahead=recorded_words(body["ahead"]),
                    at=body["ahead_at"], date=body["confirmed_date"])
 
 

@@ -2006,6 +2006,7 @@ class Register:
         against the entries and records that set them; with ``pdfs`` each stored PDF against
         its SHA-256."""
         from models.register.chain import link_entry
+        from models.register.wording import entry_words
 
         sa, schema = self._sa, self._schema
         certificates, entries = schema.CERTIFICATES, schema.ENTRIES
@@ -2031,8 +2032,7 @@ class Register:
                         "issue)"), number=row.number))
             previous, expected = GENESIS, 1
             for seq, is_entry, item in links:
-                name = (message(QT_TR_NOOP("entry {kind} {subject}"), kind=item.kind,
-                                subject=item.subject) if is_entry else item.number)
+                name = entry_words(item.kind, item.subject) if is_entry else item.number
                 if seq != expected:
                     problems.append(message(QT_TR_NOOP(
                         "record {number}: it is at place {seq} of the chain, where {expected} "
@@ -2231,14 +2231,14 @@ class Register:
         record on every record must be signed, the last one always (a record forged and
         appended after the last genuine one carries no valid signature)."""
         from models.register.signing import signature_ok
+        from models.register.wording import entry_words
 
         if not self._key or not links:
             return []
         problems: list = []
         signed_since = None
         for _seq, is_entry, item in links:
-            name = (message(QT_TR_NOOP("entry {kind} {subject}"), kind=item.kind,
-                            subject=item.subject) if is_entry else item.number)
+            name = entry_words(item.kind, item.subject) if is_entry else item.number
             if item.signature is not None:
                 if not signature_ok(self._key, item.chain_sha256 or "", item.signature):
                     problems.append(message(QT_TR_NOOP(
@@ -2306,6 +2306,8 @@ class Register:
 
     def _at_place(self, conn, check: PrintedHead) -> PrintedHead:
         """``check`` with what the register holds right after its head."""
+        from models.register.wording import entry_words
+
         sa, certificates, entries = self._sa, self._schema.CERTIFICATES, self._schema.ENTRIES
         assert check.place is not None
         place = check.place + 1
@@ -2318,8 +2320,7 @@ class Register:
         if entry is not None:
             body = json.loads(entry.body_json or "{}")
             recorded = entry.kind == "missing" and body.get("pdf_sha256") == check.sha256
-            after = message(QT_TR_NOOP("entry {kind} {subject}"), kind=entry.kind,
-                            subject=entry.subject)
+            after = entry_words(entry.kind, entry.subject)
         elsewhere = ", ".join(conn.execute(sa.select(certificates.c.number).where(
             certificates.c.pdf_sha256 == check.sha256, sa.or_(
                 certificates.c.seq.is_(None), certificates.c.seq != place))).scalars())
@@ -2546,10 +2547,10 @@ class Register:
             if refused is not None:
                 raise RegisterError(refused)
             assert last is not None
-            body = {"by": by, "reason": reason, "ahead": str(last.what),
+            body = {"by": by, "reason": reason, "ahead": last.recorded,
                     "ahead_at": last.at.isoformat(), "ahead_workstation": last.workstation,
                     "ahead_os_user": last.os_user, "confirmed_date": today.isoformat()}
-            self._append_entry(conn, "clock_correction", str(last.what), body)
+            self._append_entry(conn, "clock_correction", last.recorded, body)
         return body
 
     def list(self, search: str = "", limit: int = 10_000) -> list[CertificateRecord]:

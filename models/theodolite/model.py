@@ -427,12 +427,14 @@ def _unidentified(theta_rel_deg: np.ndarray, elevation_deg: np.ndarray, referenc
         # 0 would claim an axis with no tilt at all, which no set-up achieves and these
         # elevations cannot show: the run's error would then be taken as the axis' own
         # (audit 73 finding 1: a true 120″ tilt, covered 14/40, 3 false passes)
+        # the refusal and what to do first, then why (day 74 finding 10: it began with the
+        # warning's own "… the tilt bound enters the uncertainty")
         raise SettingsError(message(QT_TR_NOOP(
-            "{why} A tilt bound of 0\" would claim that the axis has no tilt at all, which no "
-            "set-up achieves and these elevations cannot show: state the largest axis tilt ψ "
-            "the set-up can have (the setting \"largest axis tilt ψ, when not identified\", "
-            "--tilt-bound-arcsec), or read elevations that identify the tilt"), why=reason),
-            key="tilt_bound_arcsec")
+            "A tilt bound of 0\" is refused: state the largest axis tilt ψ the set-up can have "
+            "(the setting \"largest axis tilt ψ, when not identified\", --tilt-bound-arcsec), "
+            "or read elevations that identify the tilt. 0 would claim that the axis has no "
+            "tilt at all, which no set-up achieves and these elevations cannot show: {why}"),
+            why=reason), key="tilt_bound_arcsec")
     beta = -float(elevation_deg[reference_index])
     residuals = (np.asarray(elevation_deg, dtype=float) + beta) * 3600.0
     return Identification(

@@ -2546,8 +2546,20 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>未命名项目</translation>
     </message>
     <message>
+        <source>row {row}, column {column}: {typed} typed over {was}</source>
+        <translation>第 {row} 行第 {column} 列：输入的 {typed} 覆盖了 {was}</translation>
+    </message>
+    <message>
         <source>Recovered, with the values that were still being typed ({cells}): check them</source>
         <translation>已恢复，包括当时仍在输入的值（{cells}）：请核对</translation>
+    </message>
+    <message>
+        <source>; Edit › Undo puts back the value entered before</source>
+        <translation>；编辑 › 撤销可恢复此前录入的值</translation>
+    </message>
+    <message>
+        <source>Recovered typing</source>
+        <translation>恢复的输入</translation>
     </message>
     <message>
         <source>row {row}, column {column}</source>
@@ -3721,8 +3733,12 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>仅已评定输入量的 U（k = {k}）：为下限，不是 U</translation>
     </message>
     <message>
-        <source>Expanded U (k = {k})</source>
-        <translation>扩展不确定度 U（k = {k}）</translation>
+        <source>Expanded uncertainty k·u_c (k = {k}), before rounding</source>
+        <translation>扩展不确定度 k·u_c（k = {k}），修约前</translation>
+    </message>
+    <message>
+        <source>U stated (p = {p} %): k·u_c rounded up to two significant digits</source>
+        <translation>给出的 U（p = {p} %）：k·u_c 向上修约到两位有效数字</translation>
     </message>
     <message>
         <source>U stated: raised to the laboratory&apos;s CMC (k = {k})</source>
@@ -4922,6 +4938,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>正在分析 {rows} 个读数 …</translation>
     </message>
     <message>
+        <source>Readings — {taken} taken, {used} used</source>
+        <translation>读数 — 已取 {taken} 个，已用 {used} 个</translation>
+    </message>
+    <message>
         <source>{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point at a red cell to see why.</source>
         <translation>{cells} 个单元格无法读取（第 {rows} 行）；这些行被略去。将鼠标指向红色单元格可查看原因。</translation>
     </message>
@@ -5581,10 +5601,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值为 {seed}</translation>
     </message>
     <message>
-        <source>{why} A tilt bound of 0&quot; would claim that the polygon sits on the shaft with no tilt at all, which no set-up achieves and these vertical readings cannot show: state the largest tilt the set-up can have (the setting &quot;largest tilt of the polygon on the shaft, when not identified&quot;, --tilt-bound-arcsec), or read vertical readings that identify the tilt</source>
-        <translation>{why} 倾斜上限为 0&quot; 即声称多面棱体在轴上完全没有倾斜，这是任何安置都做不到、这些竖直读数也无法显示的：请给定该安置可能的最大倾斜（设置项“多面棱体在轴上的最大倾斜（未辨识时）”，命令行 --tilt-bound-arcsec），或读取能辨识倾斜的竖直读数</translation>
-    </message>
-    <message>
         <source>vertical along the polygon&apos;s axis, worst case over the tilt direction</source>
         <translation>竖直方向沿棱体轴线，倾斜方向的最不利情况</translation>
     </message>
@@ -5641,6 +5657,14 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>漂移 {drift}，不合格</translation>
     </message>
     <message>
+        <source>  set {set} ({sense}, from face {face}): closure {closure}; tilt not identified ({why}): nothing removed, a tilt up to {bound} (stated) enters the uncertainty</source>
+        <translation>  第 {set} 组（{sense}，从第 {face} 面起）：闭合 {closure}；倾斜未辨识（{why}）：未作修正，不超过 {bound}（给定）的倾斜计入不确定度</translation>
+    </message>
+    <message>
+        <source>  set {set} ({sense}, from face {face}): closure {closure}; tilt not identified ({why}): nothing removed, a tilt up to {bound} (the program&apos;s default: no bound was stated) enters the uncertainty</source>
+        <translation>  第 {set} 组（{sense}，从第 {face} 面起）：闭合 {closure}；倾斜未辨识（{why}）：未作修正，不超过 {bound}（程序默认值：未给定上限）的倾斜计入不确定度</translation>
+    </message>
+    <message>
         <source>ψ = {psi} ± {u}, ω not identified (ψ not told from 0)</source>
         <translation>ψ = {psi} ± {u}，ω 未辨识（ψ 与 0 无法区分）</translation>
     </message>
@@ -5663,10 +5687,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>tilt ψ = {psi} within the {allowed} allowed</source>
         <translation>倾斜 ψ = {psi}，在允许的 {allowed} 以内</translation>
-    </message>
-    <message>
-        <source>no tilt</source>
-        <translation>无倾斜数据</translation>
     </message>
     <message>
         <source>  set {set} ({sense}, from face {face}): closure {closure}; {tilt}; pyramidal correction up to {largest}</source>
@@ -5732,8 +5752,19 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>垂直读数在第 {high} 面最高、第 {low} 面最低（差值 2ψ = {spread}）：在安装座上倾斜棱体，使第 {high} 面降低、第 {low} 面升高，各约 {psi}</translation>
     </message>
     <message>
+        <source>vertical readings missing on {missing} of {faces} faces</source>
+        <translation>{faces} 个面中有 {missing} 个面缺少竖直读数</translation>
+    </message>
+    <message>
+        <source>{n} faces: no degrees of freedom left for the tilt fit</source>
+        <translation>{n} 个面：倾斜拟合没有剩余的自由度</translation>
+    </message>
+    <message>
+        <source>every vertical reading is {value}&quot;</source>
+        <translation>所有竖直读数均为 {value}&quot;</translation>
+    </message>
+    <message>
         <source>{set}: vertical readings missing: the pyramidal tilt is not identified and its error not removed; the tilt bound enters the uncertainty.</source>
-        <extracomment>the tilt fit&apos;s unknowns: the vertical reading&apos;s zero, ψ and ω the largest tilt of the polygon on the shaft the budget assumes when the readings do not identify it (the setting tilt_bound_arcsec&apos;s default, ″)</extracomment>
         <translation>{set}：缺少竖直读数：塔差倾斜未辨识，其误差未扣除；倾斜上限计入不确定度。</translation>
     </message>
     <message>
@@ -6001,8 +6032,8 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{why}这些俯仰角也显示不出读数噪声：请给出经纬仪准确度（1σ）以评定该次测量</translation>
     </message>
     <message>
-        <source>{why} A tilt bound of 0&quot; would claim that the axis has no tilt at all, which no set-up achieves and these elevations cannot show: state the largest axis tilt ψ the set-up can have (the setting &quot;largest axis tilt ψ, when not identified&quot;, --tilt-bound-arcsec), or read elevations that identify the tilt</source>
-        <translation>{why} 倾斜上限为 0&quot; 即声称轴完全没有倾斜，这是任何安置都做不到、这些俯仰角也无法显示的：请给定该安置可能的最大轴倾角 ψ（设置项“最大轴倾角 ψ（未辨识时）”，命令行 --tilt-bound-arcsec），或读取能辨识倾角的俯仰角</translation>
+        <source>A tilt bound of 0&quot; is refused: state the largest axis tilt ψ the set-up can have (the setting &quot;largest axis tilt ψ, when not identified&quot;, --tilt-bound-arcsec), or read elevations that identify the tilt. 0 would claim that the axis has no tilt at all, which no set-up achieves and these elevations cannot show: {why}</source>
+        <translation>倾斜上限 0&quot; 不予接受：请给定该安置可能的最大轴倾角 ψ（设置项“最大轴倾角 ψ（未辨识时）”，命令行 --tilt-bound-arcsec），或读取能辨识倾角的俯仰角。0 即声称轴完全没有倾斜，这是任何安置都做不到、这些俯仰角也无法显示的：{why}</translation>
     </message>
     <message>
         <source>at least 4 readings are needed to identify ψ, α, β</source>
@@ -7431,12 +7462,8 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>记录 {number}：它在哈希链中没有位置（签发后插入）</translation>
     </message>
     <message>
-        <source>entry {kind} {subject}</source>
-        <extracomment>an issue dated more than this many days after the register&apos;s last chained record asks the person to confirm today&apos;s date (a lab that issues weekly is not asked; a clock a month or a year ahead is seen before it dates a certificate)</extracomment>
-        <translation>条目 {kind} {subject}</translation>
-    </message>
-    <message>
         <source>--confirm-date {date}: not a date YYYY-MM-DD</source>
+        <extracomment>an issue dated more than this many days after the register&apos;s last chained record asks the person to confirm today&apos;s date (a lab that issues weekly is not asked; a clock a month or a year ahead is seen before it dates a certificate)</extracomment>
         <translation>--confirm-date {date}：不是 YYYY-MM-DD 格式的日期</translation>
     </message>
     <message>
@@ -7451,6 +7478,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>today was confirmed as {confirmed}, but the computer&apos;s clock gives {date}: nothing is issued until the clock is right</source>
         <translation>今天被确认为 {confirmed}，但计算机的时钟给出的是 {date}：在时钟正确之前不签发任何内容</translation>
+    </message>
+    <message>
+        <source>nothing to correct: the register holds no record yet; a clock correction records that a record was dated by a clock set ahead</source>
+        <translation>无需更正：登记册中还没有记录；时钟更正记录的是某条记录以调快的时钟写上了日期</translation>
     </message>
     <message>
         <source>nothing to correct: the register&apos;s last record ({what}) is not dated after the computer&apos;s clock ({now}); a clock correction records that a record was dated by a clock set ahead</source>
@@ -7692,6 +7723,72 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>the results file of certificate {number}</source>
         <translation>证书 {number} 的结果文件</translation>
+    </message>
+    <message>
+        <source>the withdrawal of certificate {subject}</source>
+        <extracomment>a chained entry of the register by its kind, in words (day 74 finding 8: the 30-day date confirmation named the last record &quot;entry loss_acknowledged —&quot;, the database&apos;s kind and an empty subject); ``{subject}`` is the entry&apos;s subject: a certificate&apos;s number, an item&apos;s serial, a counter&apos;s name (the kinds written by models/register/store.py)</extracomment>
+        <translation>证书 {subject} 的作废</translation>
+    </message>
+    <message>
+        <source>the results file of certificate {subject}</source>
+        <translation>证书 {subject} 的结果文件</translation>
+    </message>
+    <message>
+        <source>the date confirmed for certificate {subject}</source>
+        <translation>为证书 {subject} 确认的日期</translation>
+    </message>
+    <message>
+        <source>the note that certificate {subject} is of another maker&apos;s item of the same serial</source>
+        <translation>关于证书 {subject} 是另一制造商的同一出厂编号仪器的记录</translation>
+    </message>
+    <message>
+        <source>the note that certificate {subject}&apos;s serial only looks like another item&apos;s</source>
+        <translation>关于证书 {subject} 的出厂编号只是与另一仪器的相似的记录</translation>
+    </message>
+    <message>
+        <source>the note that certificate {subject} was shown whose record the register no longer held</source>
+        <translation>关于出示了证书 {subject}、而登记册已不再保存其记录的记录</translation>
+    </message>
+    <message>
+        <source>the note that number {subject} was issued twice</source>
+        <translation>关于编号 {subject} 被签发了两次的记录</translation>
+    </message>
+    <message>
+        <source>the acknowledgement of a loss of records (last number known issued: {subject})</source>
+        <translation>对记录丢失的确认（已知签发的最后编号：{subject}）</translation>
+    </message>
+    <message>
+        <source>a clock correction</source>
+        <translation>一次时钟更正</translation>
+    </message>
+    <message>
+        <source>the numbering continued in {subject}</source>
+        <translation>在 {subject} 中接续的编号</translation>
+    </message>
+    <message>
+        <source>the list of authorised signatories</source>
+        <translation>授权签字人名单</translation>
+    </message>
+    <message>
+        <source>the calibration interval of serial {subject}</source>
+        <translation>出厂编号 {subject} 的校准周期</translation>
+    </message>
+    <message>
+        <source>the acknowledgement of a loss of records</source>
+        <extracomment>the same where the entry names no subject (&quot;&quot; or the &quot;—&quot; a loss acknowledged without its last number is recorded with)</extracomment>
+        <translation>对记录丢失的确认</translation>
+    </message>
+    <message>
+        <source>an entry of kind &quot;{kind}&quot;</source>
+        <translation>一条类型为“{kind}”的条目</translation>
+    </message>
+    <message>
+        <source>an entry of kind &quot;{kind}&quot; ({subject})</source>
+        <translation>一条类型为“{kind}”的条目（{subject}）</translation>
+    </message>
+    <message>
+        <source>certificate {number}</source>
+        <translation>证书 {number}</translation>
     </message>
     <message>
         <source>{controller}: {rule} — {detail}</source>
@@ -8544,6 +8641,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>a measured autocollimator roll ({roll}) needs its standard uncertainty: give it, or set the measured roll to 0 (not measured)</source>
         <translation>实测的自准直仪滚转（{roll}）需要给出其标准不确定度：请给出，或将实测滚转设为 0（未实测）</translation>
+    </message>
+    <message>
+        <source>A tilt bound of 0&quot; is refused: state the largest tilt the set-up can have (the setting &quot;largest tilt of the polygon on the shaft, when not identified&quot;, --tilt-bound-arcsec), or read vertical readings that identify the tilt. 0 would claim that the polygon sits on the shaft with no tilt at all, which no set-up achieves and these vertical readings cannot show. {why}</source>
+        <translation>倾斜上限 0&quot; 不予接受：请给定该安置可能的最大倾斜（设置项“多面棱体在轴上的最大倾斜（未辨识时）”，命令行 --tilt-bound-arcsec），或读取能辨识倾斜的竖直读数。0 即声称多面棱体在轴上完全没有倾斜，这是任何安置都做不到、这些竖直读数也无法显示的。{why}</translation>
     </message>
     <message>
         <source>Tilt not identified: {why}</source>
@@ -9671,7 +9772,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Autocollimator (ELCOMAT kind)</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the units of a reading the auto-take window is applied to in arcseconds (a reading in another unit, a readout&apos;s mm or none, is gated in that unit, and the window says so) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
         <translation>自准直仪（ELCOMAT 类）</translation>
     </message>
     <message>
@@ -9697,7 +9798,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
-        <extracomment>where the demonstration instrument points in turn (8 s each) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short)
+        <extracomment>where the demonstration instrument points in turn (8 s each) the readout&apos;s runs through its targets (more than any plan has: ISO 230-2 asks 5) the demonstration axis&apos;s reversal error: where it stops coming down (2.9″) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short)
 ----------
 the workbenches (keys, comma-separated) the panel was open on when last left: restored open on those only, never on every tab with nothing connected (day 65, F10)</extracomment>
         <translation>仪器</translation>
@@ -9782,8 +9883,16 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
         <translation>演示仪器未能启动：{reason}</translation>
     </message>
     <message>
-        <source>Auto-take: waiting for {instrument} (link lost)</source>
+        <source>The spread allowed over the dwell, in arcseconds (a readout in degrees is converted to them)</source>
         <extracomment>restore_open has run (the window&apos;s saved state is back)</extracomment>
+        <translation>驻留时间内允许的离散，以角秒计（以度为单位的读数器换算为角秒）</translation>
+    </message>
+    <message>
+        <source>The spread allowed over the dwell, in the readout&apos;s own unit ({unit}): it sends no angle unit</source>
+        <translation>驻留时间内允许的离散，以读数器自身的单位（{unit}）计：它发送的不是角度单位</translation>
+    </message>
+    <message>
+        <source>Auto-take: waiting for {instrument} (link lost)</source>
         <translation>自动取数：等待{instrument}（链路中断）</translation>
     </message>
     <message>
@@ -10052,7 +10161,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source> — RUN INVALID (closure failed)</source>
-        <extracomment>the window adds a polygon read from its DCC to this workbench&apos;s standards (its U enters the budget as a polygon certificate&apos;s does) the folder of the DCC schemas a DCC is validated against (&quot;&quot;: not validated) the lab&apos;s trusted certificate for a DCC&apos;s signature (a path; &quot;&quot;: the environment&apos;s) what the last certificate loaded said beside its values (a DCC&apos;s notes, the deviation column&apos;s values replaced)</extracomment>
+        <extracomment>the window adds a polygon read from its DCC (a PolygonReference) to this workbench&apos;s standards (its U enters the budget as a polygon certificate&apos;s does); returns what to say the same, checked and stored nowhere (DccError: another polygon&apos;s; MetadataError: a standard the details cannot take): before anything of the DCC is applied the folder of the DCC schemas a DCC is validated against (&quot;&quot;: not validated) the lab&apos;s trusted certificate for a DCC&apos;s signature (a path; &quot;&quot;: the environment&apos;s) what the last certificate loaded said beside its values (a DCC&apos;s notes, the deviation column&apos;s values replaced)</extracomment>
         <translation> — 测量无效（闭合不合格）</translation>
     </message>
     <message>
@@ -10082,10 +10191,6 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>Auto-take when stable</source>
         <translation>稳定时自动取数</translation>
-    </message>
-    <message>
-        <source>The spread allowed over the dwell (arcseconds; a readout&apos;s own unit)</source>
-        <translation>驻留时间内允许的离散（角秒；读数器为其自身单位）</translation>
     </message>
     <message>
         <source>Window</source>
@@ -10196,8 +10301,17 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>测试计划顺序“{order}”：应为 linear 或 pilgrim</translation>
     </message>
     <message>
+        <source>move the axis to the next target and type it in the target column</source>
+        <extracomment>the target unit&apos;s symbol as the plan writes it (models/positioning/model.py TARGET_UNITS) a direction cell&apos;s words (models/positioning/analysis.py UP, DOWN) and its arrow</extracomment>
+        <translation>将轴移动到下一个目标位置，并在目标位置列中输入它</translation>
+    </message>
+    <message>
         <source>target {target}, run {run} {arrow}</source>
         <translation>目标位置 {target}，第 {run} 次测量 {arrow}</translation>
+    </message>
+    <message>
+        <source>target {target}</source>
+        <translation>目标位置 {target}</translation>
     </message>
     <message>
         <source>set {set}: closure on face {face}</source>
@@ -10802,12 +10916,13 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>面偏差的 U 不予给出：安装位置 {mountings} 无闭合读数，自准直仪的漂移未测量，而各安装位置之间不同的漂移会影响面偏差，这些读数中没有任何东西能界定它（σ 为给出值，或漂移并非各安装位置共有）；请为每个安装位置补充闭合读数（末尾再读一次第一面），或给出安装位置内的最大漂移（设置“安装位置内自准直仪的最大漂移”；--drift-bound-arcsec，元数据中的 drift_bound_arcsec）</translation>
     </message>
     <message>
-        <source>the polygon&apos;s tilt on the shaft is not identified in mounting(s) {mountings} ({why}): a tilt bound of 0&quot; would claim that the polygon sits on the shaft with no tilt at all there, which no set-up achieves and these readings cannot show; state the largest tilt the set-up can have (the setting &quot;largest tilt of the polygon on the shaft, when not measured&quot;, --tilt-bound-arcsec), or read vertical readings of every face in those mountings so that their tilt is fitted</source>
-        <extracomment>why a zero tilt bound is refused (a mounting&apos;s tilt not identified): audit 73 finding 1, the theodolite&apos;s and the polygon&apos;s, here for the cross-calibration</extracomment>
-        <translation>安装位置 {mountings} 中多面棱体在轴上的倾斜未能辨识（{why}）：倾斜上限为 0&quot; 即声称多面棱体在这些位置完全没有倾斜地装在轴上，这是任何安置都做不到、这些读数也无法显示的；请给定该安置可能的最大倾斜（设置项“多面棱体在轴上的最大倾斜（未测量时）”，命令行 --tilt-bound-arcsec），或在这些安装位置读取每个面的竖直读数，以便拟合其倾斜</translation>
+        <source>a tilt bound of 0&quot; is refused: state the largest tilt the set-up can have (the setting &quot;largest tilt of the polygon on the shaft, when not measured&quot;, --tilt-bound-arcsec), or read vertical readings of every face in mounting(s) {mountings} so that their tilt is fitted. The polygon&apos;s tilt on the shaft is not identified in mounting(s) {mountings} ({why}): 0 would claim that the polygon sits on the shaft with no tilt at all there, which no set-up achieves and these readings cannot show</source>
+        <extracomment>why a zero tilt bound is refused (a mounting&apos;s tilt not identified): audit 73 finding 1, the theodolite&apos;s and the polygon&apos;s, here for the cross-calibration; the refusal and what to do first, then why, as theirs (day 74 finding 10)</extracomment>
+        <translation>倾斜上限 0&quot; 不予接受：请给定该安置可能的最大倾斜（设置项“多面棱体在轴上的最大倾斜（未测量时）”，命令行 --tilt-bound-arcsec），或在安装位置 {mountings} 读取每个面的竖直读数，以拟合其倾斜。多面棱体在轴上的倾斜在安装位置 {mountings} 未辨识（{why}）：0 即声称多面棱体在那里完全没有倾斜，这是任何安置都做不到、这些读数也无法显示的</translation>
     </message>
     <message>
         <source>no vertical readings</source>
+        <extracomment>the tilt fit&apos;s unknowns: the vertical reading&apos;s zero, ψ and ω the largest tilt of the polygon on the shaft the budget assumes when the readings do not identify it (the setting tilt_bound_arcsec&apos;s default, ″)</extracomment>
         <translation>无竖直读数</translation>
     </message>
     <message>
@@ -12186,7 +12301,6 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     </message>
     <message>
         <source>{source}: {mb} MB: too large for a calibration certificate</source>
-        <extracomment>the largest DCC read (an embedded PDF makes a few MB; more is no certificate) arcseconds per D-SI angle unit (exact: 1° = 3600&quot;, 1′ = 60&quot;, 1 rad = 648000/π &quot;) micrometres per D-SI length unit (a standard&apos;s U may be a length: gauge blocks, scales)</extracomment>
         <translation>{source}：{mb} MB：作为校准证书过大</translation>
     </message>
     <message>
@@ -12226,6 +12340,15 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <translation>{where}：扩展不确定度小于 0、包含因子不大于 0，或包含概率不在 (0, 1] 内</translation>
     </message>
     <message>
+        <source>{source}: {where}: the coverage factor k = {k:g} is below 1: an expanded uncertainty is never smaller than the standard uncertainty</source>
+        <extracomment>the fewest effective degrees of freedom a coverage factor is taken for (GUM G.3: t_p(ν) with ν = 2 is the largest k a stated p can come with; ν → ∞ the normal&apos;s, the smallest) how far below the normal&apos;s k(p) a stated k may be (p rounded: k = 1.96 with p = 0.9545)</extracomment>
+        <translation>{source}：{where}：包含因子 k = {k:g} 小于 1：扩展不确定度不会小于标准不确定度</translation>
+    </message>
+    <message>
+        <source>{source}: {where}: the coverage factor k = {k:g} and the coverage probability p = {p:g} contradict each other (p = {p:g} goes with k from {low:.2f} to {high:.2f}): which one the certificate means cannot be told</source>
+        <translation>{source}：{where}：包含因子 k = {k:g} 与包含概率 p = {p:g} 相互矛盾（p = {p:g} 对应的 k 在 {low:.2f} 至 {high:.2f} 之间）：无法判断证书的本意</translation>
+    </message>
+    <message>
         <source>{where}: no si:realListXMLList</source>
         <translation>{where}：没有 si:realListXMLList</translation>
     </message>
@@ -12236,6 +12359,19 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     <message>
         <source>{source}: {where}: the unit {unit} is not an angle (\arcsecond, \arcminute, \degree or \radian are read)</source>
         <translation>{source}：{where}：单位 {unit} 不是角度单位（可读取 \arcsecond、\arcminute、\degree 或 \radian）</translation>
+    </message>
+    <message>
+        <source>{source}: {where}: {value:g} {unit} is out of range</source>
+        <translation>{source}：{where}：{value:g} {unit} 超出范围</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id}, face {face}: {what} {value:g}″ is beyond ±{limit:g}″: not a polygon&apos;s; the DCC is not read</source>
+        <extracomment>the largest angle the reader takes as a polygon face&apos;s deviation or an angle standard&apos;s U (as the readings&apos; columns and the details&apos; standards take, in arcseconds)</extracomment>
+        <translation>{source}：证书 {id}，第 {face} 面：{what} {value:g}″ 超出 ±{limit:g}″：不是多面棱体的数值；未读取该 DCC</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id}: the expanded uncertainty is 0 on every face: no calibration achieves that; the DCC is not read</source>
+        <translation>{source}：证书 {id}：各面的扩展不确定度均为 0：任何校准都达不到；未读取该 DCC</translation>
     </message>
     <message>
         <source>{source}: {where}: &apos;{text}&apos; is not a date</source>
@@ -12250,12 +12386,24 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <translation>{source}：没有 dcc:uniqueIdentifier（证书编号）</translation>
     </message>
     <message>
-        <source>{source}: not a valid DCC 3.3.0 document ({problem})</source>
-        <translation>{source}：不是有效的 DCC 3.3.0 文档（{problem}）</translation>
+        <source>{source}: certificate {id} names no serial number of its item ({item}): check that it is the standard&apos;s</source>
+        <translation>{source}：证书 {id} 未给出其器具（{item}）的出厂编号：请核查它是否属于该标准器</translation>
     </message>
     <message>
-        <source>{source}: its signature does not verify: {reason}</source>
-        <translation>{source}：其签名验证失败：{reason}</translation>
+        <source>{source}: the standard&apos;s serial number was not listed: {serial} is taken from certificate {id} ({item})</source>
+        <translation>{source}：详细信息中未列出该标准器的出厂编号：已取自证书 {id}（{item}）的 {serial}</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id} calibrates {item}, serial {theirs}; the standard it is read for is serial {ours}: it is another item&apos;s certificate and is not read (correct the serial in the details if the DCC is this standard&apos;s)</source>
+        <translation>{source}：证书 {id} 校准的是 {item}，出厂编号 {theirs}；要读入的标准器出厂编号为 {ours}：这是另一件器具的证书，未读取（若该 DCC 确属此标准器，请在详细信息中更正出厂编号）</translation>
+    </message>
+    <message>
+        <source>{source}: the validity period {period} from {date} ends after the year 9999: no calibration is valid that long; the DCC is not read</source>
+        <translation>{source}：自 {date} 起的有效期 {period} 结束于 9999 年之后：没有校准有效这么久；未读取该 DCC</translation>
+    </message>
+    <message>
+        <source>{source}: not a valid DCC 3.3.0 document ({problem})</source>
+        <translation>{source}：不是有效的 DCC 3.3.0 文档（{problem}）</translation>
     </message>
     <message>
         <source>{source}: signed by {signer}; the document is unchanged since, but the signer was not checked against a trusted certificate</source>
@@ -12264,10 +12412,6 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     <message>
         <source>{source}: cannot read ({reason})</source>
         <translation>{source}：无法读取（{reason}）</translation>
-    </message>
-    <message>
-        <source>{source}: certificate {id} states no due date (no validity statement): check the calibration interval yourself</source>
-        <translation>{source}：证书 {id} 未给出有效期（无有效性声明）：请自行核对校准周期</translation>
     </message>
     <message>
         <source>{source}: certificate {id} was due for recalibration on {due}, before the measurement on {when}: the calibration had expired</source>
@@ -12318,6 +12462,14 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <translation>{source}：各面的不确定度以不同的包含因子或包含概率给出；AngleBench 对一个多面棱体只取一个 k</translation>
     </message>
     <message>
+        <source>the deviation</source>
+        <translation>偏差</translation>
+    </message>
+    <message>
+        <source>the expanded uncertainty</source>
+        <translation>扩展不确定度</translation>
+    </message>
+    <message>
         <source>{source}: the readings&apos; row {row} measures face {position}; certificate {id} gives faces 1 to {n}: another polygon&apos;s</source>
         <translation>{source}：读数第 {row} 行测量的是第 {position} 面；证书 {id} 给出第 1 到 {n} 面：是另一个多面棱体的证书</translation>
     </message>
@@ -12350,6 +12502,47 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <source>{source}: no result states an expanded uncertainty: the standard&apos;s U is left empty</source>
         <extracomment>refTypes of results that are no quantity the standard provides: AngleBench&apos;s set-up (fitted nuisance) parameters, summary figures, budget, decided quantity; PTB&apos;s nominal and reference values (the calibrating laboratory&apos;s, not the item&apos;s) names of an error or deviation (en, de, zh), and of a measured value, for a DCC that marks its results with no refType; a standard deviation is a statistic, not an error</extracomment>
         <translation>{source}：没有结果给出扩展不确定度：该计量标准的 U 留空</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id} calibrates a polygon ({item}); the row it is read into is {description}: it is not read (select the polygon&apos;s row)</source>
+        <extracomment>the largest DCC read (an embedded PDF makes a few MB; more is no certificate) arcseconds per D-SI angle unit (exact: 1° = 3600&quot;, 1′ = 60&quot;, 1 rad = 648000/π &quot;) micrometres per D-SI length unit (a standard&apos;s U may be a length: gauge blocks, scales)</extracomment>
+        <translation>{source}：证书 {id} 校准的是多面棱体（{item}）；要读入的行是 {description}：未读取（请选择多面棱体所在的行）</translation>
+    </message>
+    <message>
+        <source>{source}: signature missing: a trusted certificate is configured, and this DCC is not signed (a signature removed is not seen otherwise); it is not read</source>
+        <translation>{source}：缺少签名：已配置可信证书，而此 DCC 未签名（否则无法发现签名已被删除）；未读取</translation>
+    </message>
+    <message>
+        <source>{source}: {reason}; it is not read</source>
+        <translation>{source}：{reason}；未读取</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id} was calibrated on {date}, after the measurement on {when}: it cannot be the calibration the measurement used</source>
+        <translation>{source}：证书 {id} 的校准日期为 {date}，晚于 {when} 的测量：它不可能是该测量所用的校准</translation>
+    </message>
+    <message>
+        <source>{years:.1f} years</source>
+        <translation>{years:.1f} 年</translation>
+    </message>
+    <message>
+        <source>its validity statement gives no due date</source>
+        <translation>其有效性声明未给出到期日期</translation>
+    </message>
+    <message>
+        <source>no validity statement</source>
+        <translation>无有效性声明</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id} calibrated {date}, {age} before the measurement, states no due date ({why}): check it against the standard&apos;s calibration interval</source>
+        <translation>{source}：证书 {id} 校准于 {date}，早于本次测量 {age}，未给出到期日期（{why}）：请按该标准器的校准间隔核查</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id} states no due date ({why}) and no calibration date: check the calibration interval yourself</source>
+        <translation>{source}：证书 {id} 未给出到期日期（{why}），也未给出校准日期：请自行核查校准间隔</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id}: the expanded uncertainty of “{name}”, {u:g}″, is beyond {limit:g}″: not a standard&apos;s; the DCC is not read</source>
+        <translation>{source}：证书 {id}：“{name}”的扩展不确定度 {u:g}″ 超出 {limit:g}″：不是标准器的数值；未读取该 DCC</translation>
     </message>
     <message>
         <source>{source}: none of its results is marked as a measurement error, a deviation or a measured value (by its refType or its name): U is the largest of all its results, that of “{name}”; check that it is the uncertainty of what the standard provides</source>

@@ -122,7 +122,7 @@ def test_the_value_being_typed_is_autosaved_and_recovered_after_kill_9(make_wind
     rows = saved.workbenches["theodolite"].rows
     assert rows[0][:2] == ["-20", "21.56"] and rows[1][:2] == ["-19", "26.56"]
     assert saved.metadata["pending_edits"]["theodolite"] == {"row": 2, "column": 2,
-                                                             "text": "26.56"}
+                                                             "text": "26.56", "was": ""}
     assert bench.sheet.text(1, 1) == ""  # the autosave changed nothing in the sheet
     # the window dies (kill -9): its lock goes with the process, the autosave stays
     os.close(window.projects.recovery._lock_fd)
@@ -160,4 +160,5 @@ def test_a_value_typed_in_a_large_record_goes_into_its_snapshot_only():
     assert snapshot.cell(3, 1) == "7.25" and rows.cell(3, 1) != "7.25"
     assert '"7.25"' in project_to_json(project)
     assert project.metadata["pending_edits"] == {"fringe": {"row": 4, "column": 2,
-                                                            "text": "7.25"}}
+                                                            "text": "7.25",
+                                                            "was": rows.cell(3, 1)}}

@@ -132,8 +132,9 @@ def test_the_budget_ends_in_the_u_stated_and_the_results_are_in_scope(issued):
     pdf = issued["pdf"]
     data = issued["json"]
     # the budget at its point: k·u_c as the inputs give it, then the U stated, the CMC
-    assert re.search(r"Expanded U \(k = 2\.00\) 1\.436 U stated: raised to the laboratory's "
-                     r"CMC \(k = 2\.00\) 2\.000", pdf), pdf[pdf.index("Expanded U"):][:200]
+    assert re.search(r"Expanded uncertainty k·u_c \(k = 2\.00\), before rounding 1\.436 U "
+                     r"stated: raised to the laboratory's CMC \(k = 2\.00\) 2\.000", pdf), \
+        pdf[pdf.index("k·u_c"):][:200]
     assert "outside the laboratory's scope" not in pdf
     assert ("At 40 of the 41 points the U these readings give (down to 1.4\") is below it, so "
             "their U is stated as the CMC, with the same coverage factor k (ILAC-P14 5.4)") in pdf

@@ -147,6 +147,28 @@ def test_stale_temp_files_of_killed_saves_are_swept(make_window, tmp_path):
     assert not stale.exists() and fresh.exists()
 
 
+@pytest.fixture(scope="module")
+def _all_samples_project(qapp, tmp_path_factory):
+    """A good project (every workbench holding its sample) as the window saves it: made once
+    for the damaged-project cases below, which each damage their own copy (a window and five
+    analyses each took ~1 s of CPU per case)."""
+    from PySide6.QtCore import QCoreApplication, QEvent
+
+    folder = tmp_path_factory.mktemp("all_samples_project")
+    source = MainWindow(settings=QSettings(str(folder / "settings.ini"),
+                                           QSettings.Format.IniFormat),
+                        recovery=RecoveryStore(folder / "recovery"))
+    source.tell = source.ask = lambda *a: pytest.fail(f"the source window asked: {a}")
+    try:
+        source.load_all_samples()
+        path = folder / "good.anglebench.json"
+        assert source.projects.save_to(path)
+        return path.read_text()
+    finally:
+        source.deleteLater()
+        QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+
+
 @pytest.mark.parametrize("change", [
     lambda d: d["workbenches"]["polygon"]["settings"].update(faces="x"),
     lambda d: d["workbenches"]["fringe"]["settings"].update(lut_size=100_000_000),
@@ -155,12 +177,9 @@ def test_stale_temp_files_of_killed_saves_are_swept(make_window, tmp_path):
     lambda d: d["workbenches"].update(mystery={"rows": [], "settings": {}}),
     lambda d: d["workbenches"]["theodolite"].update(rows=[["1", "2", "3", "4", "5", "6", "7", "8"]]),
 ])
-def test_opening_a_damaged_project_changes_nothing(make_window, tmp_path, change):
-    source = make_window()
-    source.load_all_samples()
-    path = tmp_path / "good.anglebench.json"
-    assert source.projects.save_to(path)
-    document = json.loads(path.read_text())
+def test_opening_a_damaged_project_changes_nothing(make_window, tmp_path, change,
+                                                  _all_samples_project):
+    document = json.loads(_all_samples_project)
     change(document)
     bad = tmp_path / "bad.anglebench.json"
     bad.write_text(json.dumps(document))

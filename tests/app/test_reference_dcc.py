@@ -48,7 +48,8 @@ def test_the_dcc_replaces_the_column_and_its_u_enters_the_budget(samples_dir, tm
     errors = t.polygon_errors(24, seed=2, spread_arcsec=0.3)
     dcc = tmp_path / "poly.xml"
     dcc.write_bytes(t.document("PTB-2026-0007", results=t.polygon_results(
-        errors, unit=r"\degree", u_arcsec=0.06, k=2.0), statements=t.validity(date="2027-12-31")))
+        errors, unit=r"\degree", u_arcsec=0.06, k=2.0), statements=t.validity(date="2027-12-31"),
+        item="24-face polygon", serial="P24-3"))  # the polygon the details list
     readings = samples_dir / "polygon_sample.csv"
     details = samples_dir / "certificate_polygon.json"
     code, out, err = _run(capsys, "polygon", readings, "--reference-dcc", dcc, "--dcc-schema",
@@ -133,9 +134,12 @@ def test_the_closed_loop_crosscal_polygon_dcc_read_by_the_polygon_workbench(samp
         row[2] = ""  # the column left empty: the DCC fills it
     readings = tmp_path / "encoder.csv"
     write_csv(readings, rows)
+    # the details list that polygon (P12-7), not the sample's 24-face P24-3: another item's
+    # DCC is refused (dccin74 F1)
+    details = _details(samples_dir, tmp_path, "p12.json", {
+        "description": "12-face polygon (deviations from face 1)", "serial": "P12-7"})
     code, out, err = _run(capsys, "polygon", readings, "--reference-dcc", xml, "--dcc-schema",
-                          SCHEMA, "--metadata", samples_dir / "certificate_polygon.json",
-                          "--json")
+                          SCHEMA, "--metadata", details, "--json")
     assert code == 0, err
     assert "held other values" not in err and "states no due date" in err
     result = json.loads(out)

@@ -71,7 +71,10 @@ def test_a_clock_set_ahead_is_corrected_on_the_command_line(capsys):
     today = dt.datetime.now().astimezone().date().isoformat()
     assert main(["register", "clock-correction", "--by", "I. Chen", "--reason", "PC-3 a year "
                  "ahead", "--confirm-date", today]) == 0
-    assert "clock correction recorded by I. Chen" in capsys.readouterr().out
+    said = capsys.readouterr().out
+    assert "clock correction recorded by I. Chen" in said
+    # the record dated ahead in words (day 74: "entry date_confirmed AB-…", the stored form)
+    assert "entry " not in said and "certificate AB-" in said, said
     number, _pdf = _issue(dt.datetime.now(dt.timezone.utc) + dt.timedelta(seconds=1))
     assert number.startswith(f"AB-{now.year}-")
     assert main(["register", "verify"]) == 0

@@ -115,6 +115,8 @@ def test_a_polygons_dcc_gives_the_same_u_read_as_a_polygon_and_as_a_standard(dcc
     as_standard = read_standard_dcc(dccs["crosscal"], SCHEMA).as_standard()
     assert as_standard["uncertainty"] == as_polygon["uncertainty"]
     assert as_standard["basis"] == as_polygon["basis"]
+    # and what it is per, one rule for both (dccin74 F3: the dialog kept the row's)
+    assert as_standard["applies_to"] == as_polygon["applies_to"] == "from face 1"
     assert as_standard["uncertainty"] == pytest.approx(
         max(reference.expanded_uncertainty.values()) / reference.coverage_factor, rel=1e-12)
     # the face deviations restate the errors from face 1: not named as "not used"

@@ -29,7 +29,7 @@ def contrast_on_white(colour: QColor) -> float:
 
 
 def test_the_left_pane_keeps_its_width_whatever_the_caption(window):
-    window.load_all_samples()
+    window.presenter("positioning").load_sample()  # the workbench looked at
     view = window.presenter("positioning").view
     splitter = next(s for s in view.findChildren(QSplitter)
                     if s.orientation() == Qt.Orientation.Horizontal)
@@ -65,7 +65,7 @@ def test_every_plot_text_reads_on_white(window):
 
 
 def test_each_run_has_its_own_colour_and_the_direction_its_line_style(window):
-    window.load_all_samples()
+    window.presenter("positioning").load_sample()  # the workbench looked at
     plot = window.presenter("positioning").view.readings_plot
     runs = {}
     for curve in plot.curves:
@@ -81,7 +81,8 @@ def test_each_run_has_its_own_colour_and_the_direction_its_line_style(window):
 def test_harmonic_orders_have_whole_number_ticks(window):
     from widgets.plot_grid import IntegerAxis
 
-    window.load_all_samples()
+    for key in ("polygon", "fringe"):  # the workbenches looked at
+        window.presenter(key).load_sample()
     window.show()
     axes = [window.presenter("polygon").view.harmonics.plot.getAxis("bottom"),
             window.presenter("fringe").view.plots.spectrum.getAxis("bottom")]

@@ -73,7 +73,7 @@ def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatc
 
 @pytest.mark.slow
 def test_cancelled_dialog_writes_nothing(window, tmp_path, monkeypatch):
-    window.load_all_samples()
+    window.presenter("theodolite").load_sample()  # the workbench in front, exported
     monkeypatch.setattr(CertificateDialog, "exec", lambda d: QDialog.DialogCode.Rejected)
     called = []
     window.certificates.view.choose_save_path = lambda *a: called.append(a) or str(tmp_path / "x.pdf")
@@ -104,7 +104,7 @@ def test_lab_defaults_fill_a_new_certificate(window, qtbot):
 def test_saving_lab_defaults_then_cancel_keeps_what_was_typed(window, qtbot, monkeypatch):
     """rev62day F15: Save as lab defaults, then Cancel, lost the customer and item typed;
     the dialog said nothing of what became a default."""
-    window.load_all_samples()
+    window.presenter("theodolite").load_sample()  # the workbench in front, exported
     window.tabs.setCurrentIndex(0)
     seen = {}
 
@@ -132,7 +132,7 @@ def test_saving_lab_defaults_then_cancel_keeps_what_was_typed(window, qtbot, mon
 
 @pytest.mark.slow
 def test_export_results_csv(window, tmp_path):
-    window.load_all_samples()
+    window.presenter("polygon").load_sample()  # the workbench in front, exported
     window.tabs.setCurrentIndex(1)
     out = tmp_path / "r.csv"
     window.certificates.view.choose_save_path = lambda *a: str(out)
@@ -175,7 +175,7 @@ def test_errors_of_degrees_are_shown_first_and_certified_only_when_confirmed(win
 
     from models.readings.angles import format_dms, parse_angle_deg
 
-    window.load_all_samples()
+    window.presenter("polygon").load_sample()  # the workbench in front, exported
     polygon = next(p for p in window.presenters if p.kind.key == "polygon")
     window.tabs.setCurrentIndex(window.presenters.index(polygon))
     qtbot.waitUntil(lambda: polygon.result is not None)
@@ -412,7 +412,8 @@ def test_a_standard_is_read_from_its_dcc(qtbot, tmp_path):
 
     good = tmp_path / "std.xml"
     good.write_bytes(t.document("NIM-2026-A17", results=t.standard_results(
-        [0.1, -0.2], r"\arcsecond", [0.25, 0.3]), statements=t.validity(date="2027-06-30")))
+        [0.1, -0.2], r"\arcsecond", [0.25, 0.3]), statements=t.validity(date="2027-06-30"),
+        serial="PG-24"))
     dialog = CertificateDialog(CertificateMetadata(calibration_date="2026-11-20"))
     qtbot.addWidget(dialog)
     dialog.add_standard({"description": "24-face polygon", "serial": "PG-24"})

@@ -67,8 +67,8 @@ def _drag(plot_item, dx: float, dy: float) -> None:
 def test_new_readings_after_file_new_are_in_view(window):
     """File › New, then a run typed with 1/10 of the sample's amplitude: the drift per
     period (whose top the legend had raised, turning its auto-range off) shows it."""
-    window.load_all_samples()
     presenter = window.presenter("fringe")
+    presenter.load_sample()  # the workbench looked at
     window.tabs.setCurrentIndex(window.presenters.index(presenter))
     presenter.view.plot_tabs.setCurrentIndex(4)
     plots = presenter.view.plots
@@ -92,8 +92,8 @@ def test_new_readings_after_file_new_are_in_view(window):
 
 def test_a_drag_is_kept_for_the_same_data_and_given_up_for_new_data(window, samples_dir,
                                                                     tmp_path):
-    window.load_all_samples()
     theodolite = window.presenter("theodolite")
+    theodolite.load_sample()  # the workbench looked at
     window.show()
     plot = theodolite.view.error_plot
     _settle(plot)
@@ -132,7 +132,7 @@ def test_a_drag_is_kept_for_the_same_data_and_given_up_for_new_data(window, samp
 def test_print_shows_the_plots_data(window, tmp_path):
     from PySide6.QtPrintSupport import QPrinter
 
-    window.load_all_samples()
+    window.current.load_sample()  # the workbench in front, printed
     window.show()
     view = window.current.view
     plot = view.error_plot
@@ -154,10 +154,13 @@ def test_the_positioning_deviation_plot_shows_every_point(window, size, language
     """Mean deviation per target, in English and in Chinese: the envelope of A (a
     two-point line) and the ±2s bands stay in view when the legend makes its room (the
     Chinese legend, wider, found no free corner: the view was cut at the lowest mean
-    point, ~−7″, leaving the lower envelope at −9.5″ and the ↑ band's bottom out)."""
-    window.load_all_samples()
-    window.set_language(language)
+    point, ~−7″, leaving the lower envelope at −9.5″ and the ↑ band's bottom out). Only the
+    positioning workbench's sample is loaded: with all five (~0.5 s of CPU more a case, their
+    language switched too) the window, the plot's size, the legend's place and the view's
+    range were the same at every size and in both languages (compared 2026-12-07)."""
     positioning = window.presenter("positioning")
+    positioning.load_sample()
+    window.set_language(language)
     window.resize(*size)
     window.show()
     window.tabs.setCurrentIndex(window.presenters.index(positioning))
@@ -265,10 +268,10 @@ def _wheel(widget, steps: int) -> None:
 
 def test_the_wheel_scrolls_past_a_plot_and_zooms_it_once_clicked(window):
     """#31: scrolling the panel with the wheel zoomed the plot under the pointer."""
-    window.load_all_samples()
+    positioning = window.presenter("positioning")
+    positioning.load_sample()  # the workbench looked at (its plot's size as with all five)
     window.resize(1280, 720)
     window.show()
-    positioning = window.presenter("positioning")
     window.tabs.setCurrentIndex(window.presenters.index(positioning))
     plot = positioning.view.deviation_plot.plot
     _settle(plot)

@@ -19,7 +19,8 @@ def test_a_polygon_dcc_fills_the_deviations_and_joins_the_standards(window, qtbo
     errors = t.polygon_errors(24, seed=5)
     dcc = tmp_path / "poly.xml"
     dcc.write_bytes(t.document("PTB-2026-0099", results=t.polygon_results(
-        errors, unit=r"\micro\radian", u_arcsec=0.08), statements=t.validity(date="2099-12-31")))
+        errors, unit=r"\micro\radian", u_arcsec=0.08), statements=t.validity(date="2099-12-31"),
+        item="24-face polygon", serial="P24-3"))
     before = polygon.sheet.copy_rows()
     assert polygon.load_certificate(str(dcc)) == 50  # 24 faces, two sets, closures
     for row in range(polygon.sheet.row_count):

@@ -23,9 +23,13 @@ class PolygonPresenter(WorkbenchPresenter):
 
     def __init__(self, view: PolygonView | None = None, parent=None) -> None:
         super().__init__(POLYGON, view, parent)
-        #: the window adds a polygon read from its DCC to this workbench's standards (its U
-        #: enters the budget as a polygon certificate's does)
-        self.reference_standard_found: Callable[[dict], None] = lambda _standard: None
+        #: the window adds a polygon read from its DCC (a PolygonReference) to this
+        #: workbench's standards (its U enters the budget as a polygon certificate's does);
+        #: returns what to say
+        self.reference_standard_found: Callable[[object], tuple] = lambda _reference: ()
+        #: the same, checked and stored nowhere (DccError: another polygon's; MetadataError:
+        #: a standard the details cannot take): before anything of the DCC is applied
+        self.reference_standard_checked: Callable[[object], tuple] = lambda _reference: ()
         #: the folder of the DCC schemas a DCC is validated against ("": not validated)
         self.dcc_schema_dir: Callable[[], str] = lambda: ""
         #: the lab's trusted certificate for a DCC's signature (a path; "": the environment's)
@@ -45,6 +49,7 @@ class PolygonPresenter(WorkbenchPresenter):
             self.view.append_to_readings_caption(tr(" — RUN INVALID (closure failed)"))
 
     def load_certificate_dialog(self) -> None:
+        from models.certificate.metadata import MetadataError
         from models.dcc.reader import DccError
         from models.dcc.signature import SigningError
 
@@ -52,7 +57,7 @@ class PolygonPresenter(WorkbenchPresenter):
         if path:
             try:
                 self.load_certificate(path)
-            except (TableImportError, DccError, SigningError) as exc:
+            except (TableImportError, DccError, SigningError, MetadataError) as exc:
                 self.view.tell(tr("Cannot read certificate"), explained(exc))
                 return
             if self.certificate_notes:
@@ -73,15 +78,20 @@ class PolygonPresenter(WorkbenchPresenter):
                                      str(path))
 
     def _load_dcc(self, path: str) -> int:
-        from models.dcc.reader import polygon_standard, read_polygon_dcc
-        from models.dcc.signature import trusted_certificate
+        from models.dcc.reader import read_polygon_dcc
+        from models.dcc.signature import signature_demanded, trusted_certificate
 
         details = self.certificate_details()
         when = getattr(details, "calibration_date", "") or dt.date.today().isoformat()
         faces = int(self.settings.get("faces") or 0) or max(self._positions()) or None
         reference = read_polygon_dcc(path, self.dcc_schema_dir() or None, measurement_date=when,
                                      faces=faces,
-                                     trusted_cert=trusted_certificate(self.dcc_trusted_certificate()))
+                                     trusted_cert=trusted_certificate(self.dcc_trusted_certificate()),
+                                     signature_required=signature_demanded(
+                                         self.dcc_trusted_certificate()))
+        # everything checked before anything changes: the polygon the details list is the
+        # DCC's, and its standard one they take (U, k); then the column and the standard
+        placed = tuple(self.reference_standard_checked(reference))
         column = self.sheet.column_index("polygon_dev_arcsec")
         position_column = self.sheet.column_index("position")
         differed = False
@@ -98,8 +108,8 @@ class PolygonPresenter(WorkbenchPresenter):
                     differed = True
         changed = self._fill_deviations(reference.deviations, tr("Load polygon certificate"),
                                         path, ".6f")
-        self.reference_standard_found(polygon_standard(reference))
-        notes = [translated(n) for n in reference.notes]
+        placed = tuple(self.reference_standard_found(reference) or placed)
+        notes = [translated(n) for n in (*reference.notes, *placed)]
         if differed:
             notes.insert(0, translated(message(QT_TR_NOOP(
                 "the deviation column held other values: they were replaced by those of "

@@ -49,7 +49,7 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
         (label(document, "Accreditation", "\n"), meta.lab_accreditation),
         (label(document, "Customer", "\n"),
          ", ".join(p for p in (meta.customer_name, meta.customer_address) if p)),
-        (label(document, "Item under test", "\n"), meta.item_description),
+        (label(document, "Item calibrated", "\n"), meta.item_description),
         (label(document, "Manufacturer", "\n"), meta.item_manufacturer),
         (label(document, "Model", "\n"), meta.item_model),
         (label(document, "Serial number", "\n"), meta.item_serial),

@@ -192,10 +192,17 @@ class PageFrame(FPDF):
         self.set_font(font, style if font == FONT else "", size)
 
     def text_width(self, text: str, size: float, style: str = "") -> float:
+        """The width of ``text`` set in the fonts its characters need; the font in use is
+        left as it was (measuring a text that ends in Chinese left the CJK font in use, and
+        the next cell set its Latin in it: "AngleBench" missing from the Chinese validation
+        report's running head)."""
+        family, current_style, current_size = self.font_family, self.font_style, self.font_size_pt
         width = 0.0
         for font, run in self._runs(text):
             self._use(font, size, style)
             width += self.get_string_width(run)
+        if family:
+            self.set_font(family, current_style, current_size)
         return width
 
     def mixed_text(self, x: float, y: float, text: str, size: float, style: str = "") -> None:

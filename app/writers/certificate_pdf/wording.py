@@ -17,7 +17,7 @@ from models.messages import JOINS, Message, in_language, joined, message, separa
 CHINESE = {
     "Calibration certificate": "校准证书", "Test report": "检测报告",
     "Certificate number": "证书编号", "Date of issue": "签发日期", "Laboratory": "校准机构",
-    "Accreditation": "认可", "Customer": "委托方", "Item under test": "被校准对象",
+    "Accreditation": "认可", "Customer": "委托方", "Item calibrated": "被校准对象",
     "Manufacturer": "制造商", "Serial number": "出厂编号",
     "Grade / specification": "准确度等级/技术指标", "Date of calibration": "校准日期",
     "Environment": "环境条件", "Readings": "原始记录",
@@ -79,6 +79,9 @@ CHINESE = {
 #: a test report's own words for the fields a calibration certificate names after the
 #: calibration (ISO/IEC 17025 7.8.2.1 a): the document identifies itself as what it is)
 REPORT_WORDS = {"Certificate number": "Report number", "Date of calibration": "Date of test",
+                # the item, as each document calls it (day 74 finding 13: "被校准对象 / Item under
+                # test" on a calibration certificate; "the item calibrated" in its statements)
+                "Item calibrated": "Item under test",
                 "Place of calibration": "Place of test", "Operator": "Tested by",
                 "Certificate PDF SHA-256": "Report PDF SHA-256",
                 "Separate calibration from certificate(s), which stay valid":

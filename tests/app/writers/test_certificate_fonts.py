@@ -121,3 +121,31 @@ def test_figures_and_formulas_are_never_broken_across_lines(analysed, tmp_path):
     assert all(any(seed in line for line in lines) for seed in seeds)
     assert not [line for line in lines if line.endswith(("T +", "T −", "="))]
     assert "在实验室内" in text  # the place of calibration
+
+
+def test_a_lab_name_that_ends_in_chinese_keeps_its_latin_letters(analysed, tmp_path):
+    """"Shenzhen Angle 计量实验室": measuring the head's width left the CJK font (its last
+    run's) in use, and the cell then set "Shenzhen Angle" in it — glyphs the font lacks, so
+    every page's head read "计量实验室" (until 0.8.22; the mixed name above ends in Latin)."""
+    lab = "Shenzhen Angle 计量实验室"
+    kind, result, settings, details = analysed["theodolite"]
+    metadata = CertificateMetadata.from_dict({**details, "lab_name": lab, "language": "en"})
+    document = kind.certificate_document(result, metadata, kind.sample_file, settings)
+    text, complaints = _pdftotext(certificate_pdf_bytes(document), tmp_path)
+    pages = [page for page in text.split("\f") if page.strip()]
+    assert [n for n, page in enumerate(pages, 1) if lab not in page] == [], text[:400]
+
+
+def test_the_chinese_validation_report_names_the_software_in_its_head(tmp_path):
+    """The Chinese validation record's running head is "AngleBench 方法确认" on every page (it
+    printed "方法确认": the Latin name set in the CJK font, which lacks it)."""
+    import datetime as dt
+
+    from app.validation_report import validation_pdf_bytes
+    from models.validation.cases import uncertainty_cases
+
+    pdf = validation_pdf_bytes(uncertainty_cases()[:1], dt.datetime(2026, 12, 7, 3, 0), 10,
+                               language="zh")
+    text, _ = _pdftotext(pdf, tmp_path)
+    pages = [page for page in text.split("\f") if page.strip()]
+    assert all("AngleBench 方法确认" in page for page in pages), text[:300]

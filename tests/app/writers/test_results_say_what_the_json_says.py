@@ -225,7 +225,8 @@ def test_the_budget_of_a_linear_axis_is_headed_and_stated_in_micrometres(issued)
     assert not any("\"" in str(h) or "″" in str(h) for h in header)
     data = issued["linear"]["json"]
     u = [x for d in ("up", "down") for x in data["per_target"][f"expanded_uncertainty_mean_{d}"]]
-    expanded = next(r for name, r in rows.items() if str(name).startswith("Expanded U"))
+    expanded = next(r for name, r in rows.items()
+                    if str(name).startswith("Expanded uncertainty k·u_c"))
     # the budget at the worst point: its U the largest of the JSON's, in µm
     assert expanded[7] == pytest.approx(max(u), rel=2e-3)
     # read in µrad the sheet's µm are the same numbers (they were converted as arcseconds)

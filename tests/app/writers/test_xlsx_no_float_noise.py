@@ -28,8 +28,8 @@ def test_the_budget_ends_on_the_u_stated(tmp_path):
     book = _book(tmp_path, "theodolite")
     budget = [row for row in book["Uncertainty budget"].iter_rows(values_only=True) if row]
     names = [str(row[0]) for row in budget]
-    expanded = next(row for row in budget if str(row[0]).startswith("Expanded U"))
-    stated = next(row for row in budget if str(row[0]).startswith("Expanded uncertainty U (p ="))
+    expanded = next(row for row in budget if str(row[0]).startswith("Expanded uncertainty k·u_c"))
+    stated = next(row for row in budget if str(row[0]).startswith("U stated (p ="))
     assert names.index(str(stated[0])) == names.index(str(expanded[0])) + 1
     u = Decimal(repr(float(expanded[7])))
     d = 1 - u.adjusted()  # two significant digits, rounded up

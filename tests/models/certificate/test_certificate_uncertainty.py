@@ -61,7 +61,7 @@ def test_effective_dof_is_truncated_before_t():
     assert budget.coverage_factor == pytest.approx(k_gtc) == pytest.approx(2.37, abs=0.005)
     assert GTC.reporting.k_factor(8.6, 100 * math.erf(math.sqrt(2))) < 2.35  # what it was
     table = budget_table(budget, "x")
-    combined, expanded = _line(table, "Combined standard"), _line(table, "Expanded U (k")
+    combined, expanded = _line(table, "Combined standard"), _line(table, "Expanded uncertainty k·u_c (k")
     assert combined[-1] == "8" and "k = 2.37" in expanded[0]
     assert "8.60" in str(table.note) and "G.6.4" in str(table.note)
 

@@ -113,10 +113,10 @@ def test_a_signed_dcc_is_read_and_a_changed_one_refused(tmp_path):
     untrusted = read_polygon_dcc(write(tmp_path, signed), SCHEMA)
     assert "not checked against a trusted certificate" in untrusted.notes[0]
     changed = signed.replace(b"PTB-S1", b"PTB-S2")
-    with pytest.raises(DccError, match="its signature does not verify"):
+    with pytest.raises(DccError, match="the signature does not verify: .*; it is not read"):
         read_polygon_dcc(write(tmp_path, changed, "c.xml"), SCHEMA)
     _, other = t.self_signed(tmp_path, "Someone else")
-    with pytest.raises(DccError, match="its signature does not verify"):
+    with pytest.raises(DccError, match="the signature does not verify: .*; it is not read"):
         read_polygon_dcc(write(tmp_path, signed, "o.xml"), SCHEMA, trusted_cert=other)
 
 
@@ -154,7 +154,7 @@ def test_a_standards_dcc_gives_its_id_u_and_due_date(tmp_path):
     assert got.unit == "arcsec" and got.uncertainty == pytest.approx(0.5 * 0.648 / math.pi)
     assert got.as_standard() == {"certificate_no": "NIM-2026-A17", "due_date": "2027-01-31",
                                  "uncertainty": got.uncertainty, "basis": "U95",
-                                 "uncertainty_unit": "arcsec"}
+                                 "uncertainty_unit": "arcsec", "applies_to": "reading"}
     k3 = t.document("K3", results=t.standard_results([1.0], r"\micro\metre", [0.6], k=3.0,
                                                      p=0.997))
     got = read_standard_dcc(write(tmp_path, k3, "k3.xml"), SCHEMA)
@@ -259,3 +259,31 @@ def test_every_face_gets_its_own_deviation_whatever_the_order(tmp_path_factory, 
     typed_other = [b == "x" or (b != "" and abs(float(b) - ref.deviations[face]) > 5e-4)
                    for face, b in zip(order, before, strict=True)]
     assert differed == any(typed_other)
+
+
+def test_a_file_too_large_is_refused_before_it_is_read(tmp_path, monkeypatch):
+    """dccin74 F10: the 64 MB limit was checked after the whole file was read."""
+    from pathlib import Path
+
+    big = tmp_path / "big.xml"
+    with open(big, "wb") as handle:  # sparse: 65 MB that take no disk
+        handle.truncate(65 * 1024 * 1024)
+
+    def never(self):
+        raise AssertionError(f"{self} read in full")
+
+    monkeypatch.setattr(Path, "read_bytes", never)
+    with pytest.raises(DccError, match="65 MB: too large"):
+        read_standard_dcc(big)
+
+
+@pytest.mark.parametrize("k, p", [(2.0, 0.9545), (1.96, 0.95), (2.0, 0.95), (2.02298, 0.9545),
+                                  (2.52, 0.95), (1.0, 0.6827), (3.0, 0.9973), (1.7320508, 1.0)])
+def test_a_coverage_factor_that_goes_with_its_probability_is_read(tmp_path, k, p):
+    """dccin74 F8's check refuses only what contradicts: k from the normal distribution's
+    (1.96 for 95 %) to Student's t with few degrees of freedom (2.52: ν = 6), a bounded
+    distribution's √3 at p = 1."""
+    data = t.document("K", results=t.polygon_results(t.polygon_errors(12, seed=1),
+                                                     u_arcsec=0.1, k=k, p=p))
+    got = read_polygon_dcc(write(tmp_path, data), measurement_date="2026-11-20")
+    assert (got.coverage_factor, got.coverage_probability) == (k, p)

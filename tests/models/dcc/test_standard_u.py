@@ -89,7 +89,7 @@ def test_measured_values_when_no_error_and_never_a_reference_value(tmp_path):
     assert got.uncertainty == pytest.approx(0.3, rel=1e-9) and got.coverage_factor == 2.5
     assert got.as_standard() == {"certificate_no": "LAB-2026-7", "due_date": "2027-06-30",
                                  "uncertainty": pytest.approx(0.12, rel=1e-9), "basis": "u",
-                                 "uncertainty_unit": "arcsec"}
+                                 "uncertainty_unit": "arcsec", "applies_to": "reading"}
     assert "results that are measured values; not used: Angle gauge › Reference angle" in (
         got.notes[-1])
 
@@ -109,7 +109,8 @@ def test_set_up_parameters_only_leave_the_u_empty_and_say_why(tmp_path):
     got = _read(tmp_path, "setup", _result(
         "Set-up parameters identified", ("Axis tilt ψ", [0.01], r"\degree", [0.00175], 2.07,
                                          "anglebench_setupParameter")))
-    assert got.uncertainty is None and "uncertainty" not in got.as_standard()
+    # emptied, never left to the certificate the row held before
+    assert got.uncertainty is None and got.as_standard()["uncertainty"] == ""
     assert got.notes[-1].endswith(
         "none of its results with an uncertainty is a measurement error, a deviation or a "
         "measured value of the standard (only Set-up parameters identified): the standard's U "

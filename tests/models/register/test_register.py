@@ -96,8 +96,10 @@ def _killed_mid_export(url: str) -> None:
 
 @pytest.mark.slow
 def test_a_process_killed_during_export_leaves_no_record(register_url):
-    process = multiprocessing.get_context("spawn").Process(target=_killed_mid_export,
-                                                           args=(register_url,))
+    # forked, as below: a process of its own that dies, without the ~1 s of imports a
+    # spawned one pays
+    process = multiprocessing.get_context("fork").Process(target=_killed_mid_export,
+                                                          args=(register_url,))
     process.start()
     process.join(60)
     assert process.exitcode == 3
@@ -132,7 +134,10 @@ def test_a_read_sees_one_moment_while_another_issuer_commits(register_url):
 @pytest.mark.slow
 def test_processes_allocating_at_once_never_share_a_number(register_url):
     Register(register_url).close()  # created once; the workers only open it
-    context = multiprocessing.get_context("spawn")
+    # forked: four processes of their own, each with its own connection (a spawned one
+    # imported the test module, numpy, SQLAlchemy: ~1 s of CPU each); the Qt of the
+    # parent is never touched by the children
+    context = multiprocessing.get_context("fork")
     queue = context.Queue()
     workers = [context.Process(target=_issue_many, args=(register_url, 8, queue))
                for _ in range(4)]

@@ -173,7 +173,8 @@ def test_a_process_killed_between_certificate_and_confirmation_leaves_neither(re
     with Register(register_url, timezone="UTC") as reg:
         reg.clock = lambda: ISSUED
         first = issue(reg, meta("LRA-0815"))
-    process = multiprocessing.get_context("spawn").Process(
+    # forked: a process of its own that dies (spawned, it paid ~1 s of imports)
+    process = multiprocessing.get_context("fork").Process(
         target=_killed_between_certificate_and_confirmation, args=(register_url,))
     process.start()
     process.join(60)

@@ -154,8 +154,8 @@ def test_a_certificate_timed_before_the_last_entry_is_refused(url):
         register.clock = lambda: ISSUED + dt.timedelta(seconds=52)
         register.withdraw("AB-2026-0001", "wrong customer")
         register.clock = lambda: ISSUED + dt.timedelta(seconds=2)
-        with pytest.raises(RegisterError, match=r"before the register's last record \(entry "
-                                                r"withdrawal AB-2026-0001"):
+        with pytest.raises(RegisterError, match=r"before the register's last record \(the "
+                                                r"withdrawal of certificate AB-2026-0001"):
             _issue(register)
         assert len(register.list()) == 1
 

@@ -180,7 +180,8 @@ def test_an_interval_entry_changed_is_found(issued):
     url, _, _ = issued
     sql(url, "UPDATE calibration_intervals SET interval_days = 730",
         "UPDATE entries SET body_json = '{\"days\": 730}' WHERE kind = 'interval'")
-    assert any("entry interval RX-1: the hash chain is broken" in p for p in found(url))
+    assert any("the calibration interval of serial RX-1: the hash chain is broken" in p
+               for p in found(url))
 
 
 def test_a_withdrawn_certificate_is_a_chained_record_and_set_back_is_found(issued):
@@ -393,7 +394,7 @@ def test_authorised_signatories_and_a_distinct_approver(register_url):
         assert (record.approver, record.operator) == ("Dr. Li", "Tech")
         assert register.audit() == []
     sql(register_url, "UPDATE entries SET body_json = '{\"names\": [\"Mr. Nobody\"]}'")
-    assert any("entry signatories lab: the hash chain is broken" in p
+    assert any("the list of authorised signatories: the hash chain is broken" in p
                for p in found(register_url))
 
 
