@@ -109,11 +109,12 @@ def _recovery_row(entry: dict, numbers: list[str], zone) -> tuple[str, ...]:
         return (", ".join(lost) or "—", tr("issued and lost"), "", tr("Loss acknowledged"),
                 day, "", "", "", "", tr("recorded by {by}: {reason}").format(
                     by=by, reason=reason))
-    return (str(body.get("ahead", "")), tr("dated by a clock set ahead"), "",
-            tr("Clock correction"), day, "", "", "", "", tr(
-                "recorded by {by}: {reason}; {ahead} was dated {at}").format(
-                by=by, reason=reason, ahead=body.get("ahead", "?"),
-                at=body.get("ahead_at", "?")))
+    from models.register.wording import recorded_words
+
+    ahead = translated(recorded_words(str(body.get("ahead", ""))))  # in words, not "entry …"
+    return (ahead, tr("dated by a clock set ahead"), "", tr("Clock correction"), day, "", "",
+            "", "", tr("recorded by {by}: {reason}; {ahead} was dated {at}").format(
+                by=by, reason=reason, ahead=ahead or "?", at=body.get("ahead_at", "?")))
 
 
 def _days(date: str) -> float:

@@ -163,6 +163,7 @@ def test_the_list_shows_a_clock_correction(window, qtbot, told):
     assert [row[3] for row in rows].count("Clock correction") == 1
     row = next(r for r in rows if r[3] == "Clock correction")
     assert dated_ahead in row[0] and row[1] == "dated by a clock set ahead"
+    assert not row[0].startswith("entry ")  # the record named in words
     assert row[-1].startswith("recorded by I. Chen: PC-3 a year ahead;")
     assert {r[0] for r in rows if r[3] != "Clock correction"} == {first, dated_ahead}
 
