@@ -501,6 +501,27 @@ class CertificatePresenter:
             translated(said), (BUSY_TIMEOUT_S + 10) * 1000)
         return register
 
+    def _register_refuses(self) -> bool:
+        """The register as it stands issues nothing (Register.issue_refusal), or cannot be
+        opened: said as an issue's refusal is, with the window's recovery that answers it;
+        True then."""
+        from app.register_recovery_pointer import recovery_pointer
+        from models.messages import reason_of
+        from models.register.store import RegisterError
+
+        try:
+            with self.open_register() as register:
+                refused = register.issue_refusal()
+        except RegisterError as exc:
+            refused = reason_of(exc)
+        if refused is None:
+            return False
+        said = tr("{reason}. No certificate was written or recorded.").format(
+            reason=as_sentence(translated(refused)))
+        pointer = recovery_pointer(refused)
+        self.view.tell(tr("Not issued"), said + ("\n\n" + pointer if pointer else ""))
+        return True
+
     def start_revision(self, revision: PendingRevision) -> None:
         """The next certificate of that workbench amends or replaces ``revision.number``."""
         self.pending = revision
@@ -575,6 +596,11 @@ class CertificatePresenter:
         note, separate = "", ""
         if entered.example:  # the training switch: a specimen, neither draft nor revision
             draft, revision = [], None
+        # a register that issues nothing refuses before any question about the document
+        # (day74 #7 b: "Issue it as a test report?", then the refusal); a draft and a
+        # specimen, never recorded, are still written
+        if not draft and not entered.example and self._register_refuses():
+            return False
         # asked for a certificate, issued as a test report: said, with why, before a file
         # name is asked (rev62 F7: learnt only from the status line after issue)
         if report and not draft and not entered.example and entered.document_type != "test" \

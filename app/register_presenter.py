@@ -14,6 +14,7 @@ from PySide6.QtCore import QT_TR_NOOP
 from app.certificate_presenter import CertificatePresenter, PendingRevision
 from app.register_recovery_pointer import recovery_pointer
 from models.messages import as_sentence
+from models.register.recoveries import LOSS, recovery_answering
 from models.register.store import CertificateRecord, RegisterError
 from models.register.wording import kind_words, revision_words, status_words
 from widgets.i18n import declared, explained, tr, translated
@@ -55,7 +56,9 @@ class RegisterView(Protocol):
         """Run ``work`` on a worker thread; ``done(its result or the exception)`` on the GUI
         thread."""
 
-    def show_pdf_check(self, text: str, warning: bool) -> None: ...
+    def show_pdf_check(self, text: str, warning: bool, detail: str = "") -> None:
+        """The window's state line: ``text``; ``detail`` (what was found, in full) where
+        the user points at it."""
 
     def ask_loss(self, last_number_needed: bool,
                  record: Callable[[LossTyped], str]) -> None:
@@ -79,6 +82,41 @@ def _workbench_title(key: str) -> str:
         return key
 
 
+def _when(stamp: str) -> dt.datetime:
+    """An ISO time of the register (a record's issue, an entry's recording), comparable: a
+    time written without its offset is taken as UTC; one that does not read is the
+    earliest (listed last, not dropped)."""
+    try:
+        when = dt.datetime.fromisoformat(stamp)
+    except (TypeError, ValueError):
+        return dt.datetime.min.replace(tzinfo=dt.timezone.utc)
+    return when if when.tzinfo is not None else when.replace(tzinfo=dt.timezone.utc)
+
+
+def _recovery_row(entry: dict, numbers: list[str], zone) -> tuple[str, ...]:
+    """A loss acknowledged or a clock correction as a row of the register's list (its
+    columns: :data:`COLUMNS`): the numbers lost (or the record dated ahead), what it is,
+    the day it was recorded in the lab's time zone, and who recorded it and why."""
+    from models.register.recoveries import numbers_lost
+    from models.register.store import LOSS_ACKNOWLEDGED
+
+    body = entry["body"]
+    when = _when(entry["recorded_at"])
+    day = when.astimezone(zone).date().isoformat() if when.year > 1 else ""
+    by, reason = str(body.get("by", "?")), str(body.get("reason", "?"))
+    if entry["kind"] == LOSS_ACKNOWLEDGED:
+        lost = numbers_lost(body, numbers)
+        return (", ".join(lost) or "—", tr("issued and lost"), "", tr("Loss acknowledged"),
+                day, "", "", "", "", tr("recorded by {by}: {reason}").format(
+                    by=by, reason=reason))
+    from models.register.wording import recorded_words
+
+    ahead = translated(recorded_words(str(body.get("ahead", ""))))  # in words, not "entry …"
+    return (ahead, tr("dated by a clock set ahead"), "", tr("Clock correction"), day, "", "",
+            "", "", tr("recorded by {by}: {reason}; {ahead} was dated {at}").format(
+                by=by, reason=reason, ahead=ahead or "?", at=body.get("ahead_at", "?")))
+
+
 def _days(date: str) -> float:
     return float(dt.date.fromisoformat(date).toordinal()) if date else float("nan")
 
@@ -93,10 +131,19 @@ class RegisterPresenter:
         self.certificates = certificates
         self.open_project_state = open_project_state
         self.records: list[CertificateRecord] = []
+        #: the list's rows in order: a certificate's record, or None for a row that records
+        #: a loss or a clock correction
+        self.listed: list[CertificateRecord | None] = []
         self.search = ""
         #: the instrument whose history is shown: its serial and manufacturer (#64 review
         #: F6: two makers' items of one serial are two histories)
         self._instrument = ("", "")
+        #: what the register was found changed in, as the window last opened or refreshed it:
+        #: kept in the window's state line while it holds (day74 #7 a)
+        self.held: list = []
+        #: the findings told in a box in this window, by register: each told once (day74 #7
+        #: a: four identical boxes in one session — on opening, each verify, each refresh)
+        self._told: set[tuple[str, str]] = set()
 
     def _register(self):
         return self.certificates.open_register()
@@ -105,24 +152,81 @@ class RegisterPresenter:
         if search is not None:
             self.search = search
         self.view.show_location(self.certificates.register_url())
+        recorded: list[tuple[int, tuple[str, ...]]] = []
         try:
             with self._register() as register:
                 self.records = register.list(self.search)
                 problems = register.problems
+                recoveries = register.recoveries_recorded()
+                if recoveries:  # a loss's numbers are written as the register's are
+                    numbers = [r.number for r in register.list()]
+                    recorded = [(int(e["seq"]), _recovery_row(
+                        e, numbers, register.timezone)) for e in recoveries]
         except RegisterError as exc:
             self.records, problems = [], []
             self.view.tell(tr("Register"), explained(exc))
-        if problems and search is None:  # checked on opening: said once, not per keystroke
-            pointers = dict.fromkeys(filter(None, map(recovery_pointer, problems)))
-            self.view.tell(tr("Register changed after issue"), "\n".join(
-                [*(translated(p) for p in problems[:20]), *pointers]))
+        self.held = list(problems)
+        if search is None:  # checked on opening: said once, not per keystroke
+            self._tell_new(problems)
         if search is None and self.records:  # on opening: the stored PDFs, in the background
             self.check_pdfs()
-        self.view.show_records(COLUMNS, [
-            (r.number, translated(status_words(r.status)),
-             translated(revision_words(r.revision)), translated(kind_words(r.document_kind)),
-             r.issue_date, r.calibration_date, _workbench_title(r.workbench),
-             r.item_serial, r.item_manufacturer or "", r.customer) for r in self.records])
+        elif search is None:
+            self._show_state([])
+        wanted = self.search.casefold().strip()
+        recorded = [(when, row) for when, row in recorded
+                    if not wanted or wanted in " ".join(row).casefold()]
+        # the recoveries among the certificates, newest first, each at its place in the
+        # chain (day74 #7 d: after a loss the list showed only the survivors, the gap
+        # unexplained)
+        self.listed = []
+        rows: list[tuple[str, ...]] = []
+        for r in self.records:
+            while recorded and r.seq is not None and recorded[-1][0] > r.seq:
+                rows.append(recorded.pop()[1])
+                self.listed.append(None)
+            rows.append((r.number, translated(status_words(r.status)),
+                         translated(revision_words(r.revision)),
+                         translated(kind_words(r.document_kind)), r.issue_date,
+                         r.calibration_date, _workbench_title(r.workbench), r.item_serial,
+                         r.item_manufacturer or "", r.customer))
+            self.listed.append(r)
+        while recorded:
+            rows.append(recorded.pop()[1])
+            self.listed.append(None)
+        self.view.show_records(COLUMNS, rows)
+
+    def _tell_new(self, problems: list) -> None:
+        """The findings not yet told in this window, in one box with the window's recovery
+        that answers them (its button above the list); those told before are not told again
+        — the window's state line keeps them in sight."""
+        url = self.certificates.register_url()
+        new = [p for p in problems if (url, str(p)) not in self._told]
+        if not new:
+            return
+        self._told.update((url, str(p)) for p in new)
+        pointers = dict.fromkeys(filter(None, (recovery_pointer(p, in_register_window=True)
+                                               for p in new)))
+        self.view.tell(tr("Register changed after issue"), "\n".join(
+            [*(translated(p) for p in new[:20]), *pointers]))
+
+    def _show_state(self, found: list) -> None:
+        """The window's state line: what the register was found changed in (it issues
+        nothing while that holds), the stored PDFs found changed, or that every stored PDF
+        matches its record — that alone only when nothing else is found (regwin74: said of
+        a register that refused every issue)."""
+        lines, details = [], [translated(p) for p in [*self.held, *found][:20]]
+        if self.held:  # short: at 200 % the findings in full hid the list (in the tooltip)
+            lines.append(tr("The register issues nothing: it was changed after issue "
+                            "(told on opening; point here for what was found)")
+                         + (" — " + tr("Acknowledge a loss… records the loss.") if any(
+                             recovery_answering(p) == LOSS for p in self.held) else ""))
+        if found:
+            lines.append(tr("Stored PDFs changed after issue: {problems}").format(
+                problems="; ".join(translated(p) for p in found[:3])))
+        if lines:
+            self.view.show_pdf_check("\n".join(lines), True, "\n".join(details))
+        else:
+            self.view.show_pdf_check(tr("Every stored PDF matches its record."), False)
 
     def check_pdfs(self) -> None:
         """Check every stored PDF against the SHA-256 recorded at issue on a worker thread
@@ -145,14 +249,13 @@ class RegisterPresenter:
             if isinstance(found, BaseException):
                 self.view.show_pdf_check(tr("The stored PDFs could not be checked: {reason}")
                                          .format(reason=explained(found)), True)
-            elif found:
-                self.view.show_pdf_check(tr("Stored PDFs changed after issue: {problems}")
-                                         .format(problems="; ".join(
-                                             translated(p) for p in found[:20])), True)
             else:
-                self.view.show_pdf_check(tr("Every stored PDF matches its record."), False)
+                self._show_state(list(found))
 
-        self.view.show_pdf_check(tr("Checking the stored PDFs…"), False)
+        if self.held:  # the register's state stays in sight while the files are checked
+            self._show_state([])
+        else:
+            self.view.show_pdf_check(tr("Checking the stored PDFs…"), False)
         self.view.in_background(work, done)
 
     def set_location(self, url: str) -> None:
@@ -161,8 +264,14 @@ class RegisterPresenter:
 
     def selected(self) -> CertificateRecord | None:
         row = self.view.selected_row()
-        if 0 <= row < len(self.records):
-            return self.records[row]
+        listed = self.listed
+        if 0 <= row < len(listed) and listed[row] is not None:
+            return listed[row]
+        if 0 <= row < len(listed):
+            self.view.tell(tr("Register"), tr(
+                "That row records a loss or a clock correction, not a certificate: select a "
+                "certificate."))
+            return None
         self.view.tell(tr("Register"), tr("Select a certificate first."))
         return None
 
@@ -292,9 +401,7 @@ class RegisterPresenter:
         except (OSError, RegisterError) as exc:
             self.view.tell(tr("Cannot verify"), explained(exc))
             return None
-        if problems:
-            self.view.tell(tr("Register changed after issue"), "\n".join(
-                translated(p) for p in problems[:20]))
+        self._tell_new(problems)  # what this window told before is not told again
         said = "".join("\n" + translated(line) for line in findings)
         record = found[0] if len(found) == 1 else None
         if len(found) > 1:

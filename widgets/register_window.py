@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
     QLineEdit,
     QMessageBox,
     QPushButton,
+    QSizePolicy,
     QSpinBox,
     QSplitter,
     QTableWidget,
@@ -28,6 +29,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from widgets.flow_layout import FlowLayout
 from widgets.i18n import application_language, declared, live, on_language_change, tr
 from widgets.lazy_menu_view_box import LazyMenuViewBox
 from widgets.plot_grid import show_grid
@@ -92,6 +94,10 @@ class RegisterWindow(QDialog):
         self.location = QLabel()
         self.location.setObjectName("location")  # where the register is: a path or URL
         self.location.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        # a long path or URL does not set the window's width (day74 #11: a register in a
+        # deep folder made it wider than a 200 % screen): cut at the window's edge, whole
+        # in its tooltip and when selected
+        self.location.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         self.location_edit = QLineEdit()
         live(self.location_edit.setPlaceholderText, tr("empty: the file in your data folder; "
                                                        "or postgresql://user@host/database"))
@@ -189,7 +195,9 @@ class RegisterWindow(QDialog):
         top.addWidget(self.location, 1)
         top.addWidget(self.location_edit, 1)
         top.addWidget(self.location_button)
-        actions = QHBoxLayout()
+        # the buttons wrap onto a second row on a narrow screen (day74 #11: at 200 % on a
+        # 1280×720 laptop they made the window 652 px wide, 640 px free)
+        actions = FlowLayout()
         for button in self.buttons.values():
             actions.addWidget(button)
         upper = QWidget()
@@ -201,8 +209,10 @@ class RegisterWindow(QDialog):
         lower = QWidget()
         lower_layout = QVBoxLayout(lower)
         lower_layout.setContentsMargins(0, 0, 0, 0)
-        row = QHBoxLayout()
-        row.addWidget(self.history_title, 1)
+        # the history's title on a line of its own, wrapped; its controls below, wrapping
+        self.history_title.setWordWrap(True)
+        lower_layout.addWidget(self.history_title)
+        row = FlowLayout()
         row.addWidget(self.figure_caption)
         row.addWidget(self.figure)
         self.figure_caption.hide()
@@ -249,6 +259,7 @@ class RegisterWindow(QDialog):
     # -- the presenter's calls ---------------------------------------------------------------
     def show_location(self, url: str) -> None:
         self.location.setText(url)
+        self.location.setToolTip(url)
 
     def show_records(self, header, rows) -> None:
         show_text_table(self.table, [tr(h) for h in header], rows)
@@ -379,8 +390,9 @@ class RegisterWindow(QDialog):
         self.background = [t for t in self.background if t.is_alive()] + [thread]
         thread.start()
 
-    def show_pdf_check(self, text: str, warning: bool) -> None:
+    def show_pdf_check(self, text: str, warning: bool, detail: str = "") -> None:
         self.pdf_check_warning = warning
+        self.pdf_check.setToolTip(detail)
         self.pdf_check.setStyleSheet("color: #b00020; font-weight: bold;" if warning
                                      else "color: #555555;")
         self.pdf_check.setText(("⚠ " if warning else "") + text)

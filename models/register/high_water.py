@@ -29,8 +29,8 @@ from models.messages import QT_TR_NOOP, message
 from models.project.atomic_write import write_text_atomic
 from models.project.output_guard import HIGH_WATER_SUFFIX
 
-__all__ = ["BEHIND", "COUNTER_BEHIND", "NOT_SIGNED", "mark_path", "mark_problems", "raise_mark",
-           "read_mark"]
+__all__ = ["BEHIND", "COUNTER_BEHIND", "NOT_SIGNED", "REPLACED", "mark_path", "mark_problems",
+           "raise_mark", "read_mark"]
 
 #: what an opening finds when the register holds less than the mark
 BEHIND = QT_TR_NOOP(
@@ -39,6 +39,16 @@ BEHIND = QT_TR_NOOP(
     "records were removed since — an older copy restored or replayed; a number issued since "
     "could be issued again: nothing is issued until the loss is recorded with 'anglebench "
     "register acknowledge-loss --by NAME --reason TEXT'")
+#: what an opening finds when the register holds as many records as the mark or more, but
+#: another chain at the mark's place: nothing was removed — a record there (or before it)
+#: was rewritten or replaced (regwin74: it was said "records were removed")
+REPLACED = QT_TR_NOOP(
+    "the register holds {count} record(s), but record {records} is not the one it held "
+    "there when AngleBench last wrote it on {when} (its high-water mark {path}, signed with "
+    "the key: head {head} there, {now} now): a record up to it was rewritten or replaced "
+    "since — an older copy restored and issued on, or the database changed; a number issued "
+    "before could be issued again: nothing is issued until the loss is recorded with "
+    "'anglebench register acknowledge-loss --by NAME --reason TEXT'")
 #: a counter below the mark's
 COUNTER_BEHIND = QT_TR_NOOP(
     "counter {name}: it stands at {value}, but it stood at {marked} when AngleBench last "
@@ -125,7 +135,10 @@ def mark_problems(path: Path, key: bytes, chain: dict[int, str], counters: dict[
     records, head, when = int(mark["records"]), str(mark["head"]), str(mark.get("written_at", "?"))
     problems: list = []
     held = GENESIS if records == 0 else chain.get(records)
-    if held != head:
+    if held != head and held is not None:  # as many records or more: one was replaced
+        problems.append(message(REPLACED, count=len(chain), records=records, head=head[:16],
+                                now=held[:16], when=when[:10], path=str(path)))
+    elif held != head:
         problems.append(message(BEHIND, count=len(chain), records=records, head=head[:16],
                                 when=when[:10], path=str(path)))
     for name, marked in sorted(mark["counters"].items()):

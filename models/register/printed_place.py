@@ -16,7 +16,8 @@ from models.register.chain import content_form, content_in_pdf, head_in_pdf
 from models.register.signing import KEY_ENV_VAR
 from models.register.store import CertificateRecord, Register, RegisterError
 
-__all__ = ["ALTERED_COPY", "ALTERED_OR_REPLACED", "CANNOT_TELL", "content_changed",
+__all__ = ["ALTERED_COPY", "ALTERED_INTACT_RECORD", "ALTERED_OR_REPLACED", "CANNOT_TELL",
+           "NOT_THIS_REGISTERS_FIRST", "content_changed",
            "digest_missing", "embedded_pdf", "head_before_changed", "in_this_chain",
            "lost_and_acknowledged", "record_lost", "say_its_place"]
 
@@ -28,6 +29,25 @@ ALTERED_OR_REPLACED = QT_TR_NOOP(
     "record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, "
     "or the register's record of it was replaced")
 
+
+#: a copy that carries the content digest of its number's record at its place, in a register
+#: whose records are proven intact (signed with the lab's key, every signature and the chain
+#: checked): the record cannot have been replaced, so the copy was altered (day74 #4: it
+#: was "altered, or the register's record of it was replaced")
+ALTERED_INTACT_RECORD = QT_TR_NOOP(
+    "ALTERED: {path} ({number}) is not the PDF the register issued as record {seq}: it "
+    "carries the digest of that record's content ({digest}…), and the record is intact and "
+    "signed with the laboratory's key, but the file's SHA-256 is {sha}…, the issued PDF's "
+    "{issued}…: the copy was altered after issue")
+
+#: a PDF printing the all-zero head — the head before every register's first certificate —
+#: whose record digest is no record's here: another register's certificate No. 1 is not
+#: this register's record 1 altered (day74 #4)
+NOT_THIS_REGISTERS_FIRST = QT_TR_NOOP(
+    "NOT ISSUED BY THIS REGISTER: {path} ({number}) prints the all-zero head that every "
+    "register's first certificate prints, and the digest of its record's content it carries "
+    "({carried}…) is no record's in this register: a certificate of another register (or a "
+    "copy altered together with its digest), not one this register issued")
 
 #: a copy whose number's record is at its place with another content digest, the copy
 #: carrying no proof of the lab's key that it was issued so (reg73 #4): the copy differs from
@@ -119,6 +139,11 @@ def say_its_place(register: Register, path: str, data: bytes,
                 "the loss is recorded with 'anglebench register acknowledge-loss --by NAME "
                 "--reason TEXT --last-number NUMBER'")))
         return False
+    if check.place == 0 and proven != "proven" and _digest_of_no_record(register, data):
+        # every register's first certificate prints the all-zero head: it places nothing
+        out(message(NOT_THIS_REGISTERS_FIRST, path=path, number=name,
+                    carried=content_in_pdf(data)[:16]))
+        return False
     if _number_reissued(register, check, data) and proven != "proven":
         assert check.record is not None
         out(message(ALTERED_COPY, path=path, number=name, seq=place,
@@ -142,12 +167,41 @@ def say_its_place(register: Register, path: str, data: bytes,
             other=check.record.pdf_sha256[:16]))
         _record_reissue(register, check, out)
         return False
+    if _record_proven_intact(register, check, data):
+        assert check.record is not None
+        out(message(ALTERED_INTACT_RECORD, path=path, number=name, seq=place,
+                    digest=content_in_pdf(data)[:16], sha=check.sha256[:16],
+                    issued=check.record.pdf_sha256[:16]))
+        return False
     other = (check.record.number if check.record is not None else check.after
              or message(QT_TR_NOOP("not there")))
     out(message(ALTERED_OR_REPLACED, path=path, number=name, seq=place,
         other=other, elsewhere=message(QT_TR_NOOP(" (its SHA-256 is record {numbers}'s)"),
                                        numbers=check.elsewhere) if check.elsewhere else ""))
     return False
+
+
+def _digest_of_no_record(register: Register, data: bytes) -> bool:
+    """The PDF carries a digest of its record's content and no record of the register
+    has that content (a PDF carrying none, issued before 0.8.21, is not said to be this)."""
+    carried = content_in_pdf(data)
+    return bool(carried) and all(register.record_content_digest(record) != carried
+                                 for record in register.list())
+
+
+def _record_proven_intact(register: Register, check, data: bytes) -> bool:
+    """The record at the PDF's place is of its number and has the content the PDF carries
+    the digest of, in a register that proves its records intact: the lab's key checks
+    every signature (the right key, none left unchecked) and the audit finds nothing. Then
+    the record was not replaced: a PDF that is not the record's was altered after issue
+    (day74 #4). Without the key a rewrite with the chain recomputed is not ruled out."""
+    record = check.record
+    carried = content_in_pdf(data)
+    if record is None or not check.number or record.number != check.number or not carried:
+        return False
+    if not register.signed or register.key_problem is not None or register.signed_unchecked():
+        return False
+    return register.record_content_digest(record) == carried and not register.audit(pdfs=True)
 
 
 def _record_reissue(register: Register, check, out: Callable[[Message], None]) -> None:

@@ -15,7 +15,7 @@ from models.register.store import LOSS_FINDINGS
 from models.register.wording import recorded_words
 
 __all__ = ["CLOCK", "CLOCK_CORRECTED", "LOSS", "LOSS_RECORDED", "clock_corrected",
-           "loss_recorded", "recovery_answering"]
+           "loss_recorded", "numbers_lost", "recovery_answering"]
 
 #: the recovery that answers a refusal: a loss to acknowledge, a clock to correct
 LOSS, CLOCK = "loss", "clock"
@@ -63,3 +63,41 @@ def recovery_answering(reason: str) -> str:
     if any(template in LOSS_FINDINGS for template in found):
         return LOSS
     return ""
+
+
+#: at most this many numbers lost are named one by one; more are named as a range
+_NAMED_ONE_BY_ONE = 6
+
+
+def numbers_lost(body: dict, numbers: list[str]) -> list[str]:
+    """The certificate numbers a loss acknowledged (``body``: its entry's) says were issued
+    and lost: each counter's values between where it stood and where the loss moved it,
+    written as the register's numbers of that counter are (their digits, from ``numbers``:
+    the register's numbers and the loss's own last number). A counter whose numbers' width
+    is unknown is said by its name and values ("AB-2026-# 3–4"); more than a few numbers of
+    a counter as a range (day74 #7 d)."""
+    import re
+
+    known = [n for n in [*numbers, str(body.get("last_issued") or "")] if n]
+    said: list[str] = []
+    for name, moved in dict(body.get("counters") or {}).items():
+        before, after = int(moved[0]), int(moved[1])
+        if after <= before:
+            continue
+        if name.count("#") != 1:
+            said.append(f"{name} {before + 1}–{after}")
+            continue
+        head, tail = name.split("#")
+        widths = [len(found.group(1)) for n in known if (found := re.fullmatch(
+            re.escape(head) + r"(\d+)" + re.escape(tail), n))]
+        if not widths:
+            said.append(f"{name} {before + 1}–{after}" if after > before + 1
+                        else f"{name} {after}")
+            continue
+        width = max(widths)
+        values = range(before + 1, after + 1)
+        if len(values) > _NAMED_ONE_BY_ONE:
+            said.append(f"{head}{before + 1:0{width}d}{tail} – {head}{after:0{width}d}{tail}")
+        else:
+            said += [f"{head}{value:0{width}d}{tail}" for value in values]
+    return said

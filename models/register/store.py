@@ -50,7 +50,7 @@ from models.register.chain import (
     GENESIS,
     link,
 )
-from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED
+from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED, REPLACED
 from models.register.register_error import RegisterError
 from models.register.wording import DOCUMENT_KINDS, kind_words
 from models.register.writer_note import holder as writer_holder
@@ -314,7 +314,7 @@ REISSUED_FOUND = QT_TR_NOOP(
 #: the findings a recorded loss answers (:meth:`Register.acknowledge_loss`): a certificate
 #: found missing, a number found issued twice, the register behind its high-water mark or the
 #: mark not the key's; any other finding still refuses it
-LOSS_FINDINGS = (MISSING_FOUND, REISSUED_FOUND, BEHIND, COUNTER_BEHIND, NOT_SIGNED)
+LOSS_FINDINGS = (MISSING_FOUND, REISSUED_FOUND, BEHIND, REPLACED, COUNTER_BEHIND, NOT_SIGNED)
 
 
 class RegisterTampered(RegisterError):
@@ -1246,14 +1246,9 @@ class Register:
         meta = dataclasses.replace(meta, certificate_number=number, item_serial=serial)
         # the stored PDFs and DCCs too, which opening does not re-hash: what verify reports,
         # issuing refuses (rev64 F12: a PDF replaced in the database did not stop issuing)
-        if self.key_problem is not None:  # a wrong key issues nothing (reg73 #7)
-            raise RegisterError(self.key_problem)
-        problems = self.problems or self._stored_file_problems()
-        if problems:
-            raise RegisterError(message(QT_TR_NOOP(
-                "the register's records were changed after issue ({problem}): nothing is "
-                "recorded into a broken chain; see 'anglebench register verify'"),
-                problem=problems[0]))
+        refused = self.issue_refusal()
+        if refused is not None:
+            raise RegisterError(refused)
         self._check_approval(meta)
         certificates = self._schema.CERTIFICATES
         user = _os_user()
@@ -2087,6 +2082,22 @@ class Register:
         problems += _cross_checks(rows, notes, counters, intervals)
         return problems
 
+    def issue_refusal(self) -> Message | None:
+        """Why the register, as it stands, issues nothing whatever the document (None when
+        it would issue): a wrong key (reg73 #7), or its records, state or stored files found
+        changed after issue. :meth:`issue` refuses with it; the window asks it before any
+        question about the document (day74 #7 b: "Issue it as a test report?", then the
+        refusal)."""
+        if self.key_problem is not None:  # a wrong key issues nothing (reg73 #7)
+            return self.key_problem
+        problems = self.problems or self._stored_file_problems()
+        if problems:
+            return message(QT_TR_NOOP(
+                "the register's records were changed after issue ({problem}): nothing is "
+                "recorded into a broken chain; see 'anglebench register verify'"),
+                problem=problems[0])
+        return None
+
     def _stored_file_problems(self) -> list:
         """Each stored PDF and DCC against the SHA-256 recorded at issue (in the chain): what
         :meth:`audit` with ``pdfs`` finds of the files themselves, read one record at a time
@@ -2497,6 +2508,21 @@ class Register:
                 return {**body, "recorded_at": row.recorded_at}
             named.clear()
         return None
+
+    def recoveries_recorded(self) -> list[dict]:
+        """The losses acknowledged and the clock corrections recorded, oldest first: each
+        its ``kind`` (:data:`LOSS_ACKNOWLEDGED` or "clock_correction"), ``seq``,
+        ``recorded_at``, ``subject`` and ``body`` (day74 #7 d: the register window lists
+        them among the certificates, so the gap a loss leaves is seen explained)."""
+        entries = self._schema.ENTRIES
+        with self._read() as conn:
+            rows = conn.execute(self._sa.select(
+                entries.c.seq, entries.c.kind, entries.c.subject, entries.c.body_json,
+                entries.c.recorded_at).where(entries.c.kind.in_(
+                    (LOSS_ACKNOWLEDGED, "clock_correction"))).order_by(entries.c.seq)).all()
+        return [{"kind": row.kind, "seq": row.seq, "recorded_at": row.recorded_at,
+                 "subject": row.subject, "body": json.loads(row.body_json or "{}")}
+                for row in rows]
 
     def correct_clock(self, by: str, reason: str, confirmed_date: dt.date | None) -> dict:
         """A person records that the register's last record was dated by a clock set ahead
