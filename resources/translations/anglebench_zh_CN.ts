@@ -2649,7 +2649,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Register</source>
-        <extracomment>the instrument whose history is shown: its serial and manufacturer (#64 review F6: two makers&apos; items of one serial are two histories)</extracomment>
+        <extracomment>the list&apos;s rows in order: a certificate&apos;s record, or None for a row that records a loss or a clock correction the instrument whose history is shown: its serial and manufacturer (#64 review F6: two makers&apos; items of one serial are two histories) what the register was found changed in, as the window last opened or refreshed it: kept in the window&apos;s state line while it holds (day74 #7 a) the findings told in a box in this window, by register: each told once (day74 #7 a: four identical boxes in one session — on opening, each verify, each refresh)</extracomment>
         <translation>登记册</translation>
     </message>
     <message>
@@ -2661,12 +2661,44 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>存储的 PDF 在签发后被改动：{problems}</translation>
     </message>
     <message>
+        <source>issued and lost</source>
+        <translation>已签发、已丢失</translation>
+    </message>
+    <message>
+        <source>Loss acknowledged</source>
+        <translation>已确认丢失</translation>
+    </message>
+    <message>
+        <source>recorded by {by}: {reason}</source>
+        <translation>由 {by} 记录：{reason}</translation>
+    </message>
+    <message>
+        <source>dated by a clock set ahead</source>
+        <translation>由调快的时钟标注日期</translation>
+    </message>
+    <message>
+        <source>recorded by {by}: {reason}; {ahead} was dated {at}</source>
+        <translation>由 {by} 记录：{reason}；{ahead} 的日期被标为 {at}</translation>
+    </message>
+    <message>
+        <source>The register issues nothing: it was changed after issue (told on opening; point here for what was found)</source>
+        <translation>登记册不再签发任何内容：它在签发后被改动（打开时已说明；将鼠标指向此处可查看所发现的内容）</translation>
+    </message>
+    <message>
+        <source>Acknowledge a loss… records the loss.</source>
+        <translation>“确认丢失…”可记录此次丢失。</translation>
+    </message>
+    <message>
         <source>Every stored PDF matches its record.</source>
         <translation>所有存储的 PDF 均与其记录一致。</translation>
     </message>
     <message>
         <source>Checking the stored PDFs…</source>
         <translation>正在核对存储的 PDF…</translation>
+    </message>
+    <message>
+        <source>That row records a loss or a clock correction, not a certificate: select a certificate.</source>
+        <translation>该行记录的是一次丢失或一次时钟更正，不是证书：请选择一份证书。</translation>
     </message>
     <message>
         <source>Select a certificate first.</source>
@@ -3534,6 +3566,16 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <source>CHANGED AFTER ISSUE: {path} ({number}) prints the head before record {seq}, but record {seq} is {other}, not this PDF{elsewhere}: the PDF was altered after issue, or the register&apos;s record of it was replaced</source>
         <extracomment>a PDF that prints a head of the chain whose next record is another: the PDF altered, or the record replaced — which, the register cannot tell (``register verify`` counts it as a file it did not issue, exit 1, unless the register&apos;s own checks find a change)</extracomment>
         <translation>签发后被改动：{path}（{number}）印有第 {seq} 条记录之前的链头，但第 {seq} 条记录是 {other}，不是此 PDF{elsewhere}：PDF 在签发后被改动，或登记册中它的记录被替换</translation>
+    </message>
+    <message>
+        <source>ALTERED: {path} ({number}) is not the PDF the register issued as record {seq}: it carries the digest of that record&apos;s content ({digest}…), and the record is intact and signed with the laboratory&apos;s key, but the file&apos;s SHA-256 is {sha}…, the issued PDF&apos;s {issued}…: the copy was altered after issue</source>
+        <extracomment>a copy that carries the content digest of its number&apos;s record at its place, in a register whose records are proven intact (signed with the lab&apos;s key, every signature and the chain checked): the record cannot have been replaced, so the copy was altered (day74 #4: it was &quot;altered, or the register&apos;s record of it was replaced&quot;)</extracomment>
+        <translation>已改动：{path}（{number}）不是登记册作为第 {seq} 条记录签发的 PDF：它带有该记录内容的摘要（{digest}…），该记录完好并以实验室密钥签名，但此文件的 SHA-256 为 {sha}…，签发的 PDF 为 {issued}…：该副本在签发后被改动</translation>
+    </message>
+    <message>
+        <source>NOT ISSUED BY THIS REGISTER: {path} ({number}) prints the all-zero head that every register&apos;s first certificate prints, and the digest of its record&apos;s content it carries ({carried}…) is no record&apos;s in this register: a certificate of another register (or a copy altered together with its digest), not one this register issued</source>
+        <extracomment>a PDF printing the all-zero head — the head before every register&apos;s first certificate — whose record digest is no record&apos;s here: another register&apos;s certificate No. 1 is not this register&apos;s record 1 altered (day74 #4)</extracomment>
+        <translation>非本登记册签发：{path}（{number}）印有每个登记册的第一份证书都会印的全零链头，而它所带的记录内容摘要（{carried}…）不是本登记册任何记录的：这是另一个登记册的证书（或连同摘要一起被改动的副本），不是本登记册签发的证书</translation>
     </message>
     <message>
         <source>ALTERED: {path} ({number}) is not the certificate the register issued as record {seq}: record {seq} is {number}, whose content digest is {actual}…, and this copy carries {carried}…: the copy was altered after issue{unless}</source>
@@ -12972,6 +13014,11 @@ Replace it?</source>
         <translation>登记册现有 {count} 条记录，但 AngleBench 于 {when} 最后一次写入它时，它有 {records} 条，结束于链头 {head}（其高水位标记 {path}，以密钥签名）：此后有记录被移除——较早的副本被恢复或重放；此后签发的编号可能会再次签发：在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; 记录此次丢失之前，不再签发任何内容</translation>
     </message>
     <message>
+        <source>the register holds {count} record(s), but record {records} is not the one it held there when AngleBench last wrote it on {when} (its high-water mark {path}, signed with the key: head {head} there, {now} now): a record up to it was rewritten or replaced since — an older copy restored and issued on, or the database changed; a number issued before could be issued again: nothing is issued until the loss is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos;</source>
+        <extracomment>what an opening finds when the register holds as many records as the mark or more, but another chain at the mark&apos;s place: nothing was removed — a record there (or before it) was rewritten or replaced (regwin74: it was said &quot;records were removed&quot;)</extracomment>
+        <translation>登记册现有 {count} 条记录，但第 {records} 条记录不是 AngleBench 于 {when} 最后一次写入它时该处的那一条（其高水位标记 {path}，以密钥签名：当时该处链头为 {head}，现在为 {now}）：此后截至该处的某条记录被改写或替换——较早的副本被恢复后又继续签发，或数据库被改动；此前签发的编号可能会再次签发：在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; 记录此次丢失之前，不再签发任何内容</translation>
+    </message>
+    <message>
         <source>counter {name}: it stands at {value}, but it stood at {marked} when AngleBench last wrote the register on {when} (its high-water mark {path}): an older copy restored or replayed; nothing is issued until the loss is recorded with &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos;</source>
         <extracomment>a counter below the mark&apos;s</extracomment>
         <translation>计数器 {name}：它现在为 {value}，但 AngleBench 于 {when} 最后一次写入登记册时它为 {marked}（其高水位标记 {path}）：较早的副本被恢复或重放；在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; 记录此次丢失之前，不再签发任何内容</translation>
@@ -13038,6 +13085,14 @@ Replace it?</source>
         <source>null at target(s) {targets}: approached only once in a direction there, so no standard deviation</source>
         <extracomment>R_i null where a target is approached in both directions, once in one of them</extracomment>
         <translation>目标位置 {targets} 为 null：该处在某一方向仅趋近一次，无标准偏差</translation>
+    </message>
+    <message>
+        <source>To record the loss here: the button Acknowledge a loss… above the list (the same as &apos;anglebench register acknowledge-loss&apos;).</source>
+        <translation>在此记录丢失：列表上方的“确认丢失…”按钮（与“anglebench register acknowledge-loss”相同）。</translation>
+    </message>
+    <message>
+        <source>If that record was dated by a clock set ahead and this computer&apos;s clock is right, record it here: the button Clock correction… above the list (the same as &apos;anglebench register clock-correction&apos;).</source>
+        <translation>若那条记录是由调快的时钟写上日期的，而本计算机的时钟正确，请在此记录：列表上方的“时钟更正…”按钮（与“anglebench register clock-correction”相同）。</translation>
     </message>
     <message>
         <source>To record the loss here: File › Certificate register, Acknowledge a loss… (the same as &apos;anglebench register acknowledge-loss&apos;).</source>
