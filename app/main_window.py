@@ -20,7 +20,6 @@ from PySide6.QtGui import QCloseEvent, QUndoGroup
 from PySide6.QtWidgets import (
     QApplication,
     QDialog,
-    QFileDialog,
     QLabel,
     QMainWindow,
     QMessageBox,
@@ -63,6 +62,7 @@ from widgets.i18n import (
     tr,
     translated,
 )
+from widgets.open_file import ask_open_file
 from widgets.screen_fit import fit_to_screen
 from widgets.status_line import StatusLine
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
@@ -363,7 +363,7 @@ class MainWindow(QMainWindow):
         return QMessageBox.question(self, title, text, buttons, default)
 
     def import_dialog(self) -> None:
-        path, _ = QFileDialog.getOpenFileName(
+        path = ask_open_file(
             self, tr("Import readings into {workbench}").format(
                 workbench=declared(self.current.kind.title)), self.projects.last_dir(),
             tr("Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)"))
