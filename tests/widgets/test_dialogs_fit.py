@@ -1,9 +1,11 @@
-"""Every dialog of the window fits the screen (#31): a 1280×720 laptop, and 200 % scale on
-a 2560×1600 screen (1280×800 logical). Each screen is an offscreen screen of that size in
-a process of its own (tests/dialog_fit_probe.py opens every dialog as the user does);
-a dialog whose frame leaves the screen's free area fails here, named, with its size.
-Before #31 the certificate dialog was 868 px tall (Export… and Cancel off a 720 px
-screen), the register 724 and the manual 764."""
+"""Every dialog of the window fits the screen (#31): a 1280×720 laptop, 200 % scale on
+a 2560×1600 screen (1280×800 logical) and 200 % on the 1280×720 laptop (640×360 logical,
+fit74). Each screen is an offscreen screen of that size in a process of its own
+(tests/dialog_fit_probe.py opens every dialog as the user does); a dialog whose frame
+leaves the screen's free area, whose least size is larger than it, or whose OK, Cancel or
+Open is not all on it fails here, named, with its size. Before #31 the certificate dialog
+was 868 px tall (Export… and Cancel off a 720 px screen), the register 724 and the manual
+764."""
 
 from __future__ import annotations
 
