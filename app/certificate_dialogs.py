@@ -136,9 +136,9 @@ class CertificateDialogs:
                        "the certificate; ISO/IEC 17025 7.8.8)") if revision.replacement else
                     tr("This certificate amends {number}. What changed, and why? (printed on "
                        "the certificate; ISO/IEC 17025 7.8.8)"))
-        text, ok = QInputDialog.getMultiLineText(self.window, tr("What changed"),
-                                                 question.format(number=revision.number))
-        return text if ok else ""
+        # wrapped and fitted (QInputDialog.getMultiLineText's label does not wrap: 705 px
+        # wide at 200 % on a 1280×720 laptop, 640 logical)
+        return self._multiline_answer(tr("What changed"), question.format(number=revision.number))
 
     def confirm_another_maker(self, numbers, reason: str) -> bool:
         """A current certificate of the serial and date names another manufacturer: is this

@@ -20,7 +20,6 @@ from PySide6.QtGui import QCloseEvent, QUndoGroup
 from PySide6.QtWidgets import (
     QApplication,
     QDialog,
-    QFileDialog,
     QLabel,
     QMainWindow,
     QMessageBox,
@@ -63,8 +62,10 @@ from widgets.i18n import (
     tr,
     translated,
 )
+from widgets.open_file import ask_open_file
 from widgets.screen_fit import fit_to_screen
 from widgets.status_line import StatusLine
+from widgets.text_dialog import TextDialog
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 
 log = logging.getLogger(__name__)
@@ -312,7 +313,7 @@ class MainWindow(QMainWindow):
         self.manual.show_page(self.current.kind.key, self.language)
 
     def show_guide(self) -> None:
-        QMessageBox.information(self, tr("AngleBench — quick guide"), tr(
+        TextDialog(tr("AngleBench — quick guide"), tr(
             "Type or paste the readings on the left (Return goes to the next row's first "
             "reading; a nominal step fills θ, face or target). The result, its warnings and the "
             "plots follow every edit.\n\n"
@@ -323,7 +324,7 @@ class MainWindow(QMainWindow):
             "Errors are errors of indication (indicated − reference); the positioning workbench "
             "keeps ISO 230-2's actual − target. Certificates are numbered and recorded by the "
             "register (File › Certificate register). Drop a CSV or XLSX on the window to "
-            "import it."))
+            "import it."), self).exec()
 
     def switch_tab(self, step: int) -> None:
         self.tabs.setCurrentIndex((self.tabs.currentIndex() + step) % self.tabs.count())
@@ -363,7 +364,7 @@ class MainWindow(QMainWindow):
         return QMessageBox.question(self, title, text, buttons, default)
 
     def import_dialog(self) -> None:
-        path, _ = QFileDialog.getOpenFileName(
+        path = ask_open_file(
             self, tr("Import readings into {workbench}").format(
                 workbench=declared(self.current.kind.title)), self.projects.last_dir(),
             tr("Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)"))

@@ -8,9 +8,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from PySide6.QtWidgets import QFileDialog, QLabel, QMessageBox
+from PySide6.QtWidgets import QLabel, QMessageBox
 
 from widgets.i18n import tr
+from widgets.open_file import ask_open_file
 from widgets.save_file import ask_save_file
 
 __all__ = ["ProjectDialogs"]
@@ -24,9 +25,8 @@ class ProjectDialogs:
         self.window = window
 
     def ask_open_path(self, folder: str) -> str:
-        path, _ = QFileDialog.getOpenFileName(self.window, tr("Open project"), folder,
-                                              tr("AngleBench project (*.anglebench.json *.json)"))
-        return path
+        return ask_open_file(self.window, tr("Open project"), folder,
+                             tr("AngleBench project (*.anglebench.json *.json)"))
 
     def ask_save_path(self, folder: str) -> str:
         """The name the project is written to: "run3" is run3.anglebench.json, asked about

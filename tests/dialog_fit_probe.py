@@ -7,8 +7,8 @@ from a timer that records the modal window in front and closes it."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QTimer
-from PySide6.QtWidgets import QApplication, QMessageBox, QWidget
+from PySide6.QtCore import QPoint, QRect, QTimer
+from PySide6.QtWidgets import QApplication, QDialogButtonBox, QMessageBox, QWidget
 
 from tests.screen_process import close_window, open_window
 
@@ -21,7 +21,24 @@ def record(name: str, widget: QWidget) -> None:
     screen = (widget.screen() or QApplication.primaryScreen()).availableGeometry()
     found[name] = {"frame": [frame.x(), frame.y(), frame.width(), frame.height()],
                    "available": [screen.x(), screen.y(), screen.width(), screen.height()],
-                   "minimum": [widget.minimumSizeHint().width(), widget.minimumSizeHint().height()]}
+                   "minimum": [widget.minimumSizeHint().width(), widget.minimumSizeHint().height()],
+                   "buttons": buttons_in_sight(widget)}
+
+
+def buttons_in_sight(widget: QWidget) -> list[list]:
+    """Each button of ``widget``'s button boxes (OK, Cancel, Open…: the answers, which do not
+    scroll) with whether all of it is inside the window and on the screen."""
+    window = widget.frameGeometry()
+    screen = (widget.screen() or QApplication.primaryScreen()).availableGeometry()
+    seen = []
+    for box in widget.findChildren(QDialogButtonBox):
+        for button in box.buttons():
+            if not button.isVisibleTo(widget):
+                continue
+            corner = button.mapToGlobal(QPoint(0, 0))
+            rect = QRect(corner, button.size())
+            seen.append([button.text(), window.contains(rect) and screen.contains(rect)])
+    return seen
 
 
 def answer_modal(name: str, then=None) -> None:

@@ -4,7 +4,7 @@ choice for files with the same headers."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QT_TR_NOOP
+from PySide6.QtCore import QT_TR_NOOP, Qt
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QCheckBox,
@@ -12,14 +12,19 @@ from PySide6.QtWidgets import (
     QDialog,
     QDialogButtonBox,
     QFormLayout,
+    QFrame,
     QLabel,
+    QScrollArea,
+    QStyle,
     QTableWidget,
     QTableWidgetItem,
     QVBoxLayout,
+    QWidget,
 )
 
 from models.readings.headers import match_header
 from widgets.i18n import declared, tr
+from widgets.screen_fit import fit_to_screen
 
 NONE = QT_TR_NOOP("(not in the file)")
 
@@ -55,17 +60,49 @@ class ColumnMappingDialog(QDialog):
                                         | QDialogButtonBox.StandardButton.Cancel)
         self.buttons.accepted.connect(self.accept)
         self.buttons.rejected.connect(self.reject)
-        layout = QVBoxLayout(self)
+        self.problem.setWordWrap(True)
+        # the reason, the choices and the preview scroll on a small screen (200 % on a
+        # 1280×720 laptop: 360 logical pixels; the dialog was 403 tall, OK and Cancel off
+        # it); what is still needed, the box and the buttons stay in sight
+        self.content = QWidget()
+        self.inner = inner = QVBoxLayout(self.content)
+        inner.setContentsMargins(0, 0, 0, 0)
         note = QLabel(reason)
         note.setWordWrap(True)
-        layout.addWidget(note)
-        layout.addLayout(form)
-        layout.addWidget(QLabel(tr("The first rows as they would be read:")))
-        layout.addWidget(self.preview)
+        inner.addWidget(note)
+        inner.addLayout(form)
+        inner.addWidget(QLabel(tr("The first rows as they would be read:")))
+        inner.addWidget(self.preview)
+        self.area = QScrollArea()
+        self.area.setWidgetResizable(True)
+        self.area.setFrameShape(QFrame.Shape.NoFrame)
+        self.area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.area.setWidget(self.content)
+        self.outer = layout = QVBoxLayout(self)
+        layout.addWidget(self.area, 1)
         layout.addWidget(self.problem)
         layout.addWidget(self.remember)
         layout.addWidget(self.buttons)
         self._refresh()
+        self._fit()
+
+    def _fit(self) -> None:
+        """As wide as its choices and every column of the preview want, as tall as all of
+        it, at most the screen (the reason, choices and preview scroll below)."""
+        scroll_bar = self.style().pixelMetric(QStyle.PixelMetric.PM_ScrollBarExtent, None, self)
+        margins = self.outer.contentsMargins()
+        self.preview.resizeColumnsToContents()
+        table = (self.preview.verticalHeader().sizeHint().width()
+                 + self.preview.horizontalHeader().length() + 2 * self.preview.frameWidth())
+        width = (max(self.content.sizeHint().width(), table) + scroll_bar + margins.left()
+                 + margins.right())
+        inside = width - margins.left() - margins.right() - scroll_bar
+        inner = self.inner
+        tall = (inner.heightForWidth(inside) if inner.hasHeightForWidth()
+                else self.content.sizeHint().height())
+        below = sum(w.sizeHint().height() + self.outer.spacing()
+                    for w in (self.problem, self.remember, self.buttons))
+        fit_to_screen(self, width, tall + below + margins.top() + margins.bottom())
 
     def mapping(self) -> dict[str, str]:
         return {key: box.currentData() or "" for key, box in self.choices.items()}

@@ -70,10 +70,9 @@ def test_certificate_questions_and_the_suffix_of_the_file_type_chosen(tmp_path):
         assert dialogs.choose_save_path("Export results", "r.csv", "CSV (*.csv);;Excel "
                                         "workbook (*.xlsx)") == str(tmp_path / "out.xlsx")
     assert ask.call_args.args[2] == str(tmp_path / "r.csv")  # offered in the last folder used
-    with mock.patch("app.certificate_dialogs.QInputDialog.getMultiLineText",
-                    return_value=("typo", False)) as note:
+    with mock.patch.object(CertificateDialogs, "_multiline_answer", return_value="") as note:
         assert dialogs.ask_change_note(PendingRevision("polygon", "AB-1", replacement=True)) == ""
-    assert "This certificate replaces AB-1." in note.call_args.args[2]
+    assert "This certificate replaces AB-1." in note.call_args.args[1]
 
 
 def test_the_separate_calibration_question_wraps_and_fits_the_screen(qtbot):

@@ -162,8 +162,7 @@ def test_an_imported_file_is_named_with_its_digest(window, polygon, tmp_path, qt
 
     csv = tmp_path / "bench_run_0512.csv"
     csv.write_bytes((samples_dir / polygon.kind.sample_file).read_bytes())
-    monkeypatch.setattr(app.main_window.QFileDialog, "getOpenFileName",
-                        lambda *a, **k: (str(csv), ""))
+    monkeypatch.setattr(app.main_window, "ask_open_file", lambda *a, **k: str(csv))
     window.menus.import_action.trigger()  # File › Import CSV/XLSX…, the file chosen
     qtbot.waitUntil(lambda: csv.name in window.statusBar().currentMessage(), timeout=10000)
     imported = f"imported from bench_run_0512.csv (SHA-256 {file_sha256(csv)})"
