@@ -30,11 +30,11 @@ from models.messages import QT_TR_NOOP, Message, joined, lines, message, reason_
 from models.parameters import Parameter, SettingsError
 from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
-from models.uncertainty.bounded_systematic_half_range import TILT_BOUND_ZERO, tilt_bound_origin
 from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.printed_figure import printed_range_figures
 from models.uncertainty.rounding import significant_decimals
+from models.uncertainty.tilt_bound_words import TILT_BOUND_ZERO, tilt_bound_origin
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,

@@ -39,9 +39,9 @@ from models.crosscal.export import comparator_not_stated
 from models.crosscal.figures import encoder_figures
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
 from models.messages import QT_TR_NOOP, message, separated
-from models.uncertainty.bounded_systematic_half_range import BOUND_UNCHECKED
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.printed_figure import printed
+from models.uncertainty.tilt_bound_words import BOUND_UNCHECKED
 
 __all__ = ["crosscal_budget", "crosscal_certificate"]
 

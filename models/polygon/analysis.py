@@ -57,12 +57,12 @@ from models.polygon.setup_statement import setup_statement
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
-from models.uncertainty.bounded_systematic_half_range import TILT_BOUND_ZERO
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.printed_figure import printed_range_figures
 from models.uncertainty.rounding import printed_range, uncertainty_decimals
+from models.uncertainty.tilt_bound_words import TILT_BOUND_ZERO
 from models.workbench import (
     SIGN_CONVENTION,
     AcceptsReference,
@@ -709,7 +709,7 @@ def iso230_figures(result: PolygonResult) -> dict[str, float]:
 
 def to_json(result: PolygonResult) -> dict[str, Any]:
     # only the JSON says whose the bound is: a plain summary loads no budget (test_cli_imports)
-    from models.uncertainty.bounded_systematic_half_range import tilt_bound_origin
+    from models.uncertainty.tilt_bound_words import tilt_bound_origin
 
     first = result.sets[0]
     moved = zero_moved(result)

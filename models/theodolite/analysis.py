@@ -22,12 +22,12 @@ from models.theodolite.model import (
     TheodoliteResult,
     analyze_run,
 )
-from models.uncertainty.bounded_systematic_half_range import TILT_BOUND_ZERO
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.printed_figure import PrintedFigure, printed_range_figures
 from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import uncertainty_decimals
+from models.uncertainty.tilt_bound_words import TILT_BOUND_ZERO
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -215,7 +215,7 @@ def positioning_rows(result: TheodoliteResult) -> list[list[str]]:
 
 def to_json(result: TheodoliteResult) -> dict[str, Any]:
     # only the JSON says whose the bound is: a plain summary loads no budget (test_cli_imports)
-    from models.uncertainty.bounded_systematic_half_range import tilt_bound_origin
+    from models.uncertainty.tilt_bound_words import tilt_bound_origin
 
     ident = result.identification
     u = ident.uncertainty_deg

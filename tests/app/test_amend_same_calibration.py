@@ -148,7 +148,7 @@ def test_a_pending_amendment_ends_when_another_project_is_opened(window, qtbot, 
     qtbot.waitUntil(lambda: window._current_result() is not None, timeout=20000)
     assert not window.export_certificate()  # an original of B: its number is B's, refused
     assert ("note", a) not in asked  # not asked what changed in A
-    assert f"certificate number {b} was issued on" in asked[-1][1]
+    assert f"Certificate number {b} was issued on" in asked[-1][1]
     assert _records()[a][0] == "issued" and _records()[b][0] == "issued"
     assert len(_records()) == 2
 
