@@ -913,7 +913,8 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     if not_stated:
         withheld.append(_incomplete_reason(not_stated))
     e = np.asarray(errors, dtype=float)
-    t = tolerance if isinstance(tolerance, StatedLimit) else float(tolerance)
+    # a StatedNumber kept as typed ("200.0": T to one decimal, which float() drops)
+    t = tolerance if isinstance(tolerance, (StatedLimit, StatedNumber)) else float(tolerance)
     if not e.size or not np.all(np.isfinite(e)):
         reason = _withheld_text([*withheld, message(QT_TR_NOOP(
             "the decided quantity is withheld (the errors are not all determined)"))])

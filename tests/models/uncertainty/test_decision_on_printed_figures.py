@@ -85,6 +85,16 @@ def _e29(value: float, t: Decimal) -> Decimal:
     return exact.quantize(step, rounding=ROUND_HALF_EVEN)
 
 
+def _typed(t: Decimal):
+    """T as the laboratory typed it: its trailing zeros kept ("200.0" is stated to one
+    decimal, StatedNumber), as the metadata and the settings read it. A float drops them: the
+    oracle read Decimal("200.0") to one decimal, the product 200.0 to none (hypothesis:
+    200.3125″ printed 200″ against ±200.0″, "pass" from the float, "fail" by E29 at 200.3)."""
+    from models.uncertainty.rounding import StatedNumber
+
+    return StatedNumber.from_text(str(t))
+
+
 def _unit_text(unit: str) -> str:
     return re.escape(SYMBOL[unit])
 
@@ -113,7 +123,7 @@ def _half_range_figures(statement: str, unit: str) -> tuple[Decimal, Decimal, De
 
 
 def _check_half_range(value, lower, upper, t, rule, unit):
-    c = _half_range(value, lower, upper, float(t), rule, unit)
+    c = _half_range(value, lower, upper, _typed(t), rule, unit)
     if not c.stated:
         # no statement only where a U, as computed or as printed, is not below T
         # no statement only where a U as printed (rounded up) is not below T: the
@@ -223,7 +233,7 @@ def _points_near_a_limit(draw):
 
 
 def _check_points(errors, expanded, t, rule, unit):
-    c = decide_conformity(errors, _budget(expanded, unit), float(t), rule, "points")
+    c = decide_conformity(errors, _budget(expanded, unit), _typed(t), rule, "points")
     cells = _table_cells(errors, expanded)
     if not c.stated:
         found = re.search(r"U = " + NUMBER + _unit_text(unit) + " is not smaller than",
@@ -269,6 +279,9 @@ def _check_points(errors, expanded, t, rule, unit):
 # binary, to 18.4689 and expected a fail against ±18.4688″ that E29's tie-to-even passes
 @example((np.array([18.468850000000003, 1.0]), np.array([6.0, 6.0]), Decimal("18.4688"),
           "simple", "arcsec"))
+# the test's own defect (0.8.22): T passed as a float lost the decimal it was typed with
+@example((np.array([200.3125, 100.0]), np.array([100.0, 100.0]), Decimal("200.0"), "simple",
+          "arcsec"))
 def test_every_point_verdict_is_the_one_the_results_table_gives(case):
     _check_points(*case)
 
