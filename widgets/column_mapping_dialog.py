@@ -4,7 +4,7 @@ choice for files with the same headers."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QT_TR_NOOP, Qt
+from PySide6.QtCore import QT_TR_NOOP
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QCheckBox,
@@ -12,9 +12,7 @@ from PySide6.QtWidgets import (
     QDialog,
     QDialogButtonBox,
     QFormLayout,
-    QFrame,
     QLabel,
-    QScrollArea,
     QStyle,
     QTableWidget,
     QTableWidgetItem,
@@ -25,6 +23,7 @@ from PySide6.QtWidgets import (
 from models.readings.headers import match_header
 from widgets.i18n import declared, tr
 from widgets.screen_fit import fit_to_screen
+from widgets.vertical_scroll import vertical_scroll_area
 
 NONE = QT_TR_NOOP("(not in the file)")
 
@@ -73,11 +72,7 @@ class ColumnMappingDialog(QDialog):
         inner.addLayout(form)
         inner.addWidget(QLabel(tr("The first rows as they would be read:")))
         inner.addWidget(self.preview)
-        self.area = QScrollArea()
-        self.area.setWidgetResizable(True)
-        self.area.setFrameShape(QFrame.Shape.NoFrame)
-        self.area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self.area.setWidget(self.content)
+        self.area = vertical_scroll_area(self.content)
         self.outer = layout = QVBoxLayout(self)
         layout.addWidget(self.area, 1)
         layout.addWidget(self.problem)

@@ -16,16 +16,15 @@ from PySide6.QtWidgets import (
     QDialog,
     QDialogButtonBox,
     QFormLayout,
-    QFrame,
     QLabel,
     QLineEdit,
-    QScrollArea,
     QVBoxLayout,
     QWidget,
 )
 
 from widgets.i18n import tr
 from widgets.screen_fit import fit_to_screen
+from widgets.vertical_scroll import vertical_scroll_area
 
 __all__ = ["ClockCorrectionDialog", "CorrectionTyped", "LossDialog", "LossTyped"]
 
@@ -88,11 +87,7 @@ class _RecoveryDialog(QDialog):
         inner.addWidget(_note(intro))
         inner.addLayout(self.form)
         inner.addStretch(1)
-        self.area = QScrollArea()
-        self.area.setWidgetResizable(True)
-        self.area.setFrameShape(QFrame.Shape.NoFrame)
-        self.area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self.area.setWidget(self.content)
+        self.area = vertical_scroll_area(self.content)
         self.outer = layout = QVBoxLayout(self)
         layout.addWidget(self.area, 1)
         layout.addWidget(self.refusal)
