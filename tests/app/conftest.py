@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+
 import pytest
 from PySide6.QtCore import QCoreApplication, QEvent, QSettings
 from PySide6.QtWidgets import QMessageBox
@@ -35,3 +37,24 @@ def recovering_window(qtbot, tmp_path):
         window.capture_panel.close()
         window.deleteLater()
     QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+
+
+@pytest.fixture
+def lab_key(tmp_path, monkeypatch) -> str:
+    """The laboratory's key (ANGLEBENCH_REGISTER_KEY), a file of the test's own."""
+    path = tmp_path / "keys" / "lab.key"
+    path.parent.mkdir()
+    path.write_bytes(os.urandom(32))
+    monkeypatch.setenv("ANGLEBENCH_REGISTER_KEY", str(path))
+    return str(path)
+
+
+@pytest.fixture
+def told(monkeypatch) -> list[tuple[str, str]]:
+    """What the register window tells (its message boxes), kept instead of shown."""
+    said: list[tuple[str, str]] = []
+    from widgets.register_window import RegisterWindow
+
+    monkeypatch.setattr(RegisterWindow, "tell", lambda _self, title, text: said.append(
+        (title, text)))
+    return said

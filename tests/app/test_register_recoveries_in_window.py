@@ -12,8 +12,6 @@ from __future__ import annotations
 
 import datetime as dt
 import json
-import os
-import shutil
 
 import pytest
 from PySide6.QtCore import Qt
@@ -21,53 +19,12 @@ from PySide6.QtCore import Qt
 from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url
-from models.register.store import IssueRequest, Register, RegisterError
+from models.register.store import Register, RegisterError
 from tests.app.test_certificate_presenter import COMPLETE, _theodolite, parts  # noqa: F401
-from tests.register_forgery import stand_in_pdf
-from widgets.register_window import RegisterWindow
+from tests.register_accidents import issue, restored
 
 pytestmark = pytest.mark.slow  # a main window each
 
-META = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01", item_serial="RX-1",
-                           number_scheme="AB-{year}-{seq:04d}")
-PROJECT = json.dumps({"workbenches": {"polygon": {"rows": [["0", "0.41"], ["30", "-0.22"]]}}})
-
-
-def _issue(at: dt.datetime | None = None, **kwargs) -> str:
-    with Register(register_url()) as register:
-        if at is not None:
-            register.clock = lambda: at  # type: ignore[method-assign]
-        return register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf,
-                              **kwargs)[0].number
-
-
-def _restored(tmp_path) -> list[str]:
-    """One certificate issued, the database copied, two more issued, the copy put back (the
-    disk died; last night's backup restored). The numbers lost."""
-    database = register_url().split("///", 1)[1]
-    _issue()
-    shutil.copy(database, tmp_path / "backup.sqlite")
-    lost = [_issue() for _ in range(2)]
-    shutil.copy(tmp_path / "backup.sqlite", database)
-    return lost
-
-
-@pytest.fixture
-def lab_key(tmp_path, monkeypatch) -> str:
-    path = tmp_path / "keys" / "lab.key"
-    path.parent.mkdir()
-    path.write_bytes(os.urandom(32))
-    monkeypatch.setenv("ANGLEBENCH_REGISTER_KEY", str(path))
-    return str(path)
-
-
-@pytest.fixture
-def told(monkeypatch) -> list[tuple[str, str]]:
-    """What the register window tells (its message boxes), kept instead of shown."""
-    said: list[tuple[str, str]] = []
-    monkeypatch.setattr(RegisterWindow, "tell", lambda _self, title, text: said.append(
-        (title, text)))
-    return said
 
 
 def _type(qtbot, field, text: str) -> None:
@@ -93,10 +50,10 @@ def _entries(kind: str) -> list[dict]:
 
 def test_a_restore_found_by_the_high_water_mark_is_acknowledged_in_the_window(
         window, qtbot, tmp_path, lab_key, told):
-    lost = _restored(tmp_path)
+    _, lost = restored(tmp_path)
     year = lost[0].split("-")[1]
     with pytest.raises(RegisterError, match="records were removed since"):
-        _issue()  # the restore is found: nothing is issued
+        issue()  # the restore is found: nothing is issued
     window.show_register()
     dialog = window.register_window
     # on opening: the finding, and where the window records the loss
@@ -122,14 +79,14 @@ def test_a_restore_found_by_the_high_water_mark_is_acknowledged_in_the_window(
     assert entry["body"]["counters"] == {f"AB-{year}-#": [1, 3]}
     with Register(register_url()) as register:
         assert register.problems == []
-    assert _issue() == f"AB-{year}-0004"  # no number issued twice
+    assert issue() == f"AB-{year}-0004"  # no number issued twice
 
 
 def test_without_a_key_the_window_asks_the_last_number_and_refuses_as_the_command(
         window, qtbot, tmp_path, told, capsys):
     """No key, so no high-water mark: the last number known issued is required, and the
     refusal without it is the command's sentence."""
-    lost = _restored(tmp_path)
+    _, lost = restored(tmp_path)
     year = lost[0].split("-")[1]
     assert main(["register", "acknowledge-loss", "--by", "I. Chen", "--reason", "disk died"]) == 2
     command_said = capsys.readouterr().err.strip().removeprefix("anglebench register: ")
@@ -156,16 +113,16 @@ def test_without_a_key_the_window_asks_the_last_number_and_refuses_as_the_comman
     assert dialog.recovery_dialog is None
     [entry] = _entries("loss_acknowledged")
     assert entry["subject"] == lost[-1] and entry["body"]["reason"] == "disk died"
-    assert _issue() == f"AB-{year}-0004"
+    assert issue() == f"AB-{year}-0004"
 
 
 def test_a_clock_set_ahead_is_corrected_in_the_window(window, qtbot, told, capsys):
     now = dt.datetime.now(dt.timezone.utc).replace(microsecond=0)
-    _issue(now - dt.timedelta(minutes=5))
+    issue(now - dt.timedelta(minutes=5))
     ahead = now + dt.timedelta(days=365)
-    dated_ahead = _issue(ahead, confirmed_date=ahead.astimezone().date())
+    dated_ahead = issue(ahead, confirmed_date=ahead.astimezone().date())
     with pytest.raises(RegisterError, match="before the register's last record"):
-        _issue()  # every right clock refused
+        issue()  # every right clock refused
     assert main(["register", "clock-correction", "--by", "I. Chen", "--reason", "PC-3",
                  "--confirm-date", "1999-01-01"]) == 2
     command_said = capsys.readouterr().err.strip().removeprefix("anglebench register: ")
@@ -193,7 +150,7 @@ def test_a_clock_set_ahead_is_corrected_in_the_window(window, qtbot, told, capsy
     # the last chained record: the date confirmed (wrongly) with the certificate dated ahead
     assert entry["subject"] == f"entry date_confirmed {dated_ahead}"
     assert entry["body"]["by"] == "I. Chen"
-    assert _issue().startswith(f"AB-{now.year}-")  # a right clock issues again
+    assert issue().startswith(f"AB-{now.year}-")  # a right clock issues again
     # nothing left to correct: refused with the command's words
     qtbot.mouseClick(dialog.recovery_buttons["clock"], Qt.MouseButton.LeftButton)
     again = dialog.recovery_dialog
@@ -214,7 +171,7 @@ def test_not_issued_points_to_the_windows_recoveries_and_names_the_commands(
     presenter, view, _, _ = parts
     kind, result = _theodolite(samples_dir)
     view.edit_certificate_details.return_value = COMPLETE
-    _restored(tmp_path)
+    restored(tmp_path)
     view.choose_save_path.return_value = str(tmp_path / "a.pdf")
     assert not presenter.export_certificate(kind, result, {}, "run.csv", [])
     title, text = view.tell.call_args.args
@@ -234,7 +191,7 @@ def test_not_issued_points_to_the_windows_recoveries_and_names_the_commands(
     view.edit_certificate_details.return_value = COMPLETE
     now = dt.datetime.now(dt.timezone.utc).replace(microsecond=0)
     ahead = now + dt.timedelta(days=365)
-    _issue(ahead, confirmed_date=ahead.astimezone().date())
+    issue(ahead, confirmed_date=ahead.astimezone().date())
     view.choose_save_path.return_value = str(tmp_path / "b.pdf")
     assert not presenter.export_certificate(kind, result, {}, "run.csv", [])
     title, text = view.tell.call_args.args

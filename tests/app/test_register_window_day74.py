@@ -13,62 +13,19 @@ the database file copied and put back; an issue on a clock a year ahead."""
 from __future__ import annotations
 
 import datetime as dt
-import json
-import os
-import shutil
 
 import pytest
 from PySide6.QtCore import Qt
 
 from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url
-from models.register.store import IssueRequest, Register
+from models.register.store import Register
 from tests.app.test_certificate_presenter import COMPLETE, _theodolite, parts  # noqa: F401
-from tests.register_forgery import stand_in_pdf
-from widgets.register_window import RegisterWindow
+from tests.register_accidents import issue, restored
 
 pytestmark = pytest.mark.slow  # a main window each
 
-META = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01", item_serial="RX-1",
-                           number_scheme="AB-{year}-{seq:04d}")
-PROJECT = json.dumps({"workbenches": {"polygon": {"rows": [["0", "0.41"], ["30", "-0.22"]]}}})
 CHANGED = "Register changed after issue"
-
-
-def _issue(at: dt.datetime | None = None, **kwargs) -> str:
-    with Register(register_url()) as register:
-        if at is not None:
-            register.clock = lambda: at  # type: ignore[method-assign]
-        return register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf,
-                              **kwargs)[0].number
-
-
-def _restored(tmp_path, issued: int = 1, lost: int = 2) -> tuple[list[str], list[str]]:
-    """Certificates issued, the database copied, more issued, the copy put back (the disk
-    died; last night's backup restored): the numbers kept and the numbers lost."""
-    database = register_url().split("///", 1)[1]
-    kept = [_issue() for _ in range(issued)]
-    shutil.copy(database, tmp_path / "backup.sqlite")
-    gone = [_issue() for _ in range(lost)]
-    shutil.copy(tmp_path / "backup.sqlite", database)
-    return kept, gone
-
-
-@pytest.fixture
-def lab_key(tmp_path, monkeypatch) -> str:
-    path = tmp_path / "keys" / "lab.key"
-    path.parent.mkdir()
-    path.write_bytes(os.urandom(32))
-    monkeypatch.setenv("ANGLEBENCH_REGISTER_KEY", str(path))
-    return str(path)
-
-
-@pytest.fixture
-def told(monkeypatch) -> list[tuple[str, str]]:
-    said: list[tuple[str, str]] = []
-    monkeypatch.setattr(RegisterWindow, "tell", lambda _self, title, text: said.append(
-        (title, text)))
-    return said
 
 
 def _settled(qtbot, dialog) -> None:
@@ -82,7 +39,7 @@ def test_a_restore_is_told_once_per_window_and_kept_in_its_state_line(
         window, qtbot, tmp_path, lab_key, told, monkeypatch):
     import widgets.register_window as register_window
 
-    kept, _lost = _restored(tmp_path)
+    kept, _lost = restored(tmp_path)
     with Register(register_url()) as register:
         (tmp_path / "kept.pdf").write_bytes(register.pdf(kept[0]))
     window.show_register()
@@ -122,10 +79,10 @@ def _listed(dialog) -> list[list[str]]:
 
 
 def test_the_list_shows_the_loss_and_the_numbers_lost(window, qtbot, tmp_path, told):
-    kept, lost = _restored(tmp_path, issued=2, lost=2)
+    kept, lost = restored(tmp_path, issued=2, lost=2)
     with Register(register_url()) as register:
         register.acknowledge_loss("I. Chen", "disk died", last_number=lost[-1])
-    after = _issue()
+    after = issue()
     window.show_register()
     dialog = window.register_window
     _settled(qtbot, dialog)
@@ -149,9 +106,9 @@ def test_the_list_shows_the_loss_and_the_numbers_lost(window, qtbot, tmp_path, t
 
 def test_the_list_shows_a_clock_correction(window, qtbot, told):
     now = dt.datetime.now(dt.timezone.utc).replace(microsecond=0)
-    first = _issue(now - dt.timedelta(minutes=5))
+    first = issue(now - dt.timedelta(minutes=5))
     ahead = now + dt.timedelta(days=365)
-    dated_ahead = _issue(ahead, confirmed_date=ahead.astimezone().date())
+    dated_ahead = issue(ahead, confirmed_date=ahead.astimezone().date())
     with Register(register_url()) as register:
         register.correct_clock("I. Chen", "PC-3 a year ahead", dt.datetime.now().astimezone()
                                .date())
@@ -175,7 +132,7 @@ def test_an_issue_on_a_register_that_issues_nothing_is_refused_before_any_questi
     presenter, view, _, _ = parts
     kind, result = _theodolite(samples_dir)
     view.edit_certificate_details.return_value = COMPLETE
-    _restored(tmp_path)
+    restored(tmp_path)
     view.choose_save_path.return_value = str(tmp_path / "a.pdf")
     assert not presenter.export_certificate(kind, result, {}, "run.csv", [])
     title, text = view.tell.call_args.args
