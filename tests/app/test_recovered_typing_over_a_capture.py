@@ -10,11 +10,7 @@ from __future__ import annotations
 import os
 
 import pytest
-from PySide6.QtCore import QSettings
-from PySide6.QtWidgets import QMessageBox
 
-from app.main_window import MainWindow
-from models.project.recovery import RecoveryStore
 from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import ReadoutSimulator
 
@@ -25,32 +21,9 @@ CAPTURED = 15.01401  # where the readout stands at the take (degrees)
 TYPED = "14.9999"  # typed into that cell, Return never pressed
 
 
-@pytest.fixture
-def make_window(qtbot, tmp_path):
-    made = []
-
-    def factory():
-        settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
-        window = MainWindow(settings=settings, recovery=RecoveryStore(tmp_path / "recovery"))
-        window.told = []
-        window.tell = lambda title, text: window.told.append(text)
-        window.ask = lambda *a: QMessageBox.StandardButton.Yes
-        qtbot.addWidget(window)
-        made.append(window)
-        return window
-
-    yield factory
-    from PySide6.QtCore import QCoreApplication, QEvent
-
-    for window in made:
-        window.capture_panel.close()
-        window.deleteLater()
-    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
-
-
 def test_typing_over_a_captured_reading_is_recovered_as_an_edit_that_undo_takes_back(
-        make_window, qtbot):
-    window = make_window()
+        recovering_window, qtbot):
+    window = recovering_window()
     window.show()
     bench = _show(window, "positioning")
     bench.table_model.replace_all([], "empty")
@@ -90,7 +63,7 @@ def test_typing_over_a_captured_reading_is_recovered_as_an_edit_that_undo_takes_
     editor.setText(captured)  # (the dead window's editor closed without a word)
     table.closeEditor(editor, table.itemDelegate().EndEditHint.NoHint)
 
-    survivor = make_window()
+    survivor = recovering_window()
     assert survivor.projects.offer_recovery()
     recovered = survivor.presenter("positioning")
     # the typing kept (never lost), as an edit of its own
