@@ -511,7 +511,9 @@ class CertificatePresenter:
 
         try:
             with self.open_register() as register:
-                refused = register.issue_refusal()
+                # what opening found (a restore, a wrong key, a broken chain): the stored
+                # files are read and hashed by the issue itself, not twice
+                refused = register.issue_refusal(stored_files=False)
         except RegisterError as exc:
             refused = reason_of(exc)
         if refused is None:

@@ -2082,15 +2082,17 @@ class Register:
         problems += _cross_checks(rows, notes, counters, intervals)
         return problems
 
-    def issue_refusal(self) -> Message | None:
+    def issue_refusal(self, stored_files: bool = True) -> Message | None:
         """Why the register, as it stands, issues nothing whatever the document (None when
-        it would issue): a wrong key (reg73 #7), or its records, state or stored files found
-        changed after issue. :meth:`issue` refuses with it; the window asks it before any
-        question about the document (day74 #7 b: "Issue it as a test report?", then the
-        refusal)."""
+        it would issue): a wrong key (reg73 #7), or its records, state or (``stored_files``)
+        stored PDFs and DCCs found changed after issue. :meth:`issue` refuses with it; the
+        window asks it before any question about the document (day74 #7 b: "Issue it as a
+        test report?", then the refusal) without ``stored_files``: what opening found, not
+        every stored file read and hashed on the window's thread a second time — the issue
+        itself still reads them."""
         if self.key_problem is not None:  # a wrong key issues nothing (reg73 #7)
             return self.key_problem
-        problems = self.problems or self._stored_file_problems()
+        problems = self.problems or (self._stored_file_problems() if stored_files else [])
         if problems:
             return message(QT_TR_NOOP(
                 "the register's records were changed after issue ({problem}): nothing is "
