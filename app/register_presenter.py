@@ -159,7 +159,9 @@ class RegisterPresenter:
                 problems = register.problems
                 recoveries = register.recoveries_recorded()
                 if recoveries:  # a loss's numbers are written as the register's are
-                    numbers = [r.number for r in register.list()]
+                    # every number (the list shown is a search's, when searched)
+                    every = register.list() if self.search else self.records
+                    numbers = [r.number for r in every]
                     recorded = [(int(e["seq"]), _recovery_row(
                         e, numbers, register.timezone)) for e in recoveries]
         except RegisterError as exc:
