@@ -334,10 +334,10 @@ def _check_coverage(k: float, p: float, where: str, source: str = "") -> None:
             where=where, k=k))
     if p >= 1:
         return
-    from scipy.stats import norm, t
+    from models.uncertainty.budget import coverage_factor  # the budget's own k from p
 
-    low = float(norm.ppf((1 + p) / 2)) * (1 - _K_ROUNDING)
-    high = float(t.ppf((1 + p) / 2, _FEWEST_DEGREES))
+    low = coverage_factor(math.inf, p) * (1 - _K_ROUNDING)
+    high = coverage_factor(_FEWEST_DEGREES, p)
     if not low <= k <= high:
         raise DccError(message(QT_TR_NOOP(
             "{source}: {where}: the coverage factor k = {k:g} and the coverage probability "
