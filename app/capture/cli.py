@@ -46,7 +46,7 @@ from models.capture.journal import (
     read_journal,
 )
 from models.capture.line_readout import DEFAULT_PATTERN
-from models.capture.stability import StabilityGate, UnwrappedAngles
+from models.capture.stability import StabilityGate, UnwrappedAngles, gate_scale
 from models.messages import QT_TR_NOOP, joined, message, reason_of, rendered
 from models.project.atomic_write import write_text_atomic
 from models.project.output_guard import OutputRefused, check_outputs, register_files
@@ -87,8 +87,9 @@ def _parser(words) -> argparse.ArgumentParser:
     p.add_argument("--readings", type=_positive(words, int), default=1, metavar="N",
                    help=words(QT_TR_NOOP("how many readings (default 1)")))
     p.add_argument("--stable", type=_positive(words), metavar="WINDOW", help=words(QT_TR_NOOP(
-        "take a reading when the spread of the frames stays within WINDOW (arcsec; a "
-        "readout's own unit) for --dwell seconds")))
+        "take a reading when the spread of the frames stays within WINDOW for --dwell "
+        "seconds: arcseconds for every angle (a readout's degrees converted), a readout's "
+        "own unit when it sends no angle")))
     p.add_argument("--dwell", type=_positive(words), metavar="SECONDS",
                    help=words(QT_TR_NOOP("the dwell time of --stable")))
     p.add_argument("--pattern", default=DEFAULT_PATTERN, help=words(QT_TR_NOOP(
@@ -282,11 +283,14 @@ def run_capture(argv: list[str]) -> int:
                     reason=exc.strerror or str(exc)))
         return 1
     gate = StabilityGate(args.stable, args.dwell) if args.stable else None
-    # the gate's window is in arcseconds for angles in degrees; a theodolite's angles go to
-    # the gate as continuous offsets from the first frame's (UnwrappedAngles), so a position
-    # at 0°/360°, or 180° from the first frame, settles (and averages) where it is
-    scale = 3600.0 if args.instrument == "theodolite" else 1.0
-    unwrapped = UnwrappedAngles() if scale != 1.0 else None
+    # the gate's window is in arcseconds for every angle, as in the window's capture panel
+    # (models.capture.stability.gate_scale): a theodolite's degrees and a readout's frames in
+    # degrees are converted (a readout in another unit is gated in that unit); angles in
+    # degrees go to the gate as continuous offsets from the first frame's (UnwrappedAngles),
+    # so a position at 0°/360°, or 180° from the first frame, settles (and averages) where
+    # it is
+    unwrapped: UnwrappedAngles | None = None
+    gate_unit_scale: float | None = None
     rows: list[list[object]] = []
     #: with --stable, each reading's first and last line (their indices since the start)
     dwells: list[tuple[int, int]] = []
@@ -332,6 +336,15 @@ def run_capture(argv: list[str]) -> int:
             if gate is None:
                 take([repr(round(event.time_s, 6)), *map(repr, event.values), *unit])
                 continue
+            scale = gate_scale("deg" if args.instrument == "theodolite" else
+                               getattr(event, "unit", ""))
+            if scale != gate_unit_scale:
+                # the first frame, or a readout that changed its unit mid-run: frames in two
+                # units are not one quantity, the dwell starts again
+                if gate_unit_scale is not None:
+                    gate.restart()
+                gate_unit_scale = scale
+                unwrapped = UnwrappedAngles() if scale != 1.0 else None
             offsets = (unwrapped.offsets(event.values) * scale if unwrapped is not None
                        else event.values)
             taken = gate.feed(event.time_s, offsets, tag=event.frame)

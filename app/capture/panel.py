@@ -96,7 +96,7 @@ from app.capture.worker import CaptureWorker, Fault, Reading
 from models.capture.allan import allan_deviation, last_even_run
 from models.capture.guidance import degrees_text
 from models.capture.raw_record import FRAMES_PER_BLOCK, FrameBlocks, frame_text
-from models.capture.stability import StabilityGate, UnwrappedAngles
+from models.capture.stability import ANGLE_UNITS, StabilityGate, UnwrappedAngles, gate_scale
 from models.capture.take_cells import (
     MICRORADIAN_ARCSEC,
     cell_step,
@@ -119,17 +119,6 @@ __all__ = ["TAKE_READING_KEY", "CapturePanel", "ConnectDialog", "InstrumentLink"
 
 #: the key of Take reading (a foot switch is set to send it)
 TAKE_READING_KEY = "F9"
-#: the units of a reading the auto-take window is applied to in arcseconds (a reading in
-#: another unit, a readout's mm or none, is gated in that unit, and the window says so)
-ANGLE_UNITS = ("deg", "arcsec")
-
-
-def gate_scale(unit: str) -> float:
-    """The factor from a reading's ``unit`` to the auto-take window's: degrees to
-    arcseconds (a theodolite's, a readout's), else 1."""
-    return 3600.0 if unit == "deg" else 1.0
-
-
 def _unit_symbol(unit: str) -> str:
     """What follows a figure in the window's unit for a reading in ``unit``: ″ for an angle
     (arcseconds), else the readout's own unit after a space ("" for none)."""

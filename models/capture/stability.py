@@ -24,7 +24,18 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["StabilityGate", "StableReading", "UnwrappedAngles"]
+__all__ = ["ANGLE_UNITS", "StabilityGate", "StableReading", "UnwrappedAngles", "gate_scale"]
+
+#: the units of a reading the auto-take window is applied to in arcseconds (a reading in
+#: another unit, a readout's mm or none, is gated in that unit, and the window says so)
+ANGLE_UNITS = ("deg", "arcsec")
+
+
+def gate_scale(unit: str) -> float:
+    """The factor from a reading's ``unit`` to the auto-take window's: degrees to
+    arcseconds (a theodolite's, a readout's), else 1 (the window, in the window and in
+    ``anglebench capture --stable``, is in arcseconds for every angle)."""
+    return 3600.0 if unit == "deg" else 1.0
 
 #: times are sums of floats: a dwell of 0.3 s from 2.0 s ends at 2.3 s, not 2.2999999…
 _EPS = 1e-9

@@ -271,3 +271,34 @@ def test_a_results_file_issued_under_out_during_the_capture_is_never_replaced(
     assert f"{out} is the results file of certificate AB-" in err
     assert f"written to {kept} instead" in err and f"5 readings written to {kept}" in err
     assert not list(tmp_path.glob(".*.tmp")) and not list(tmp_path.glob("*journal*"))
+
+
+@pytest.mark.slow
+def test_stable_window_is_arcseconds_for_a_readout_in_degrees(tmp_path, capsys):
+    """``--stable`` means arcseconds for every angle, as the window's auto-take does: a
+    readout sending degrees and drifting 36″ a second (0.01°/s) is never taken at
+    ``--stable 0.5`` (applied in its degrees, 0.5° took the drift as stable); the same
+    readout held still is taken, its mean the position it sent."""
+    drifting = tmp_path / "drift.csv"
+    with ReadoutSimulator("tcp", positions=[(15.0,)], drift_per_s=36.0 / 3600.0) as sim:
+        assert main(["capture", "readout", sim.port, "--readings", "1", "--stable", "0.5",
+                     "--dwell", "0.3", "--timeout", "1.5", "--out", str(drifting),
+                     *FAST]) != 0
+    assert "0 of 1 readings in 1.5 s" in capsys.readouterr().err
+    steady = tmp_path / "steady.csv"
+    with ReadoutSimulator("tcp", positions=[(15.0,)], sigma=0.02 / 3600.0) as sim:
+        assert main(["capture", "readout", sim.port, "--readings", "1", "--stable", "0.5",
+                     "--dwell", "0.3", "--timeout", "5", "--out", str(steady), *FAST]) == 0
+    (row,) = rows_of(steady)[1:]
+    assert row[2] == "deg" and float(row[1]) == pytest.approx(15.0, abs=0.5 / 3600.0)
+
+
+@pytest.mark.slow
+def test_stable_window_is_the_readouts_own_unit_when_it_sends_no_angle(tmp_path):
+    """A readout in mm drifting 0.01 mm a second settles within ``--stable 0.5`` (mm)."""
+    out = tmp_path / "mm.csv"
+    with ReadoutSimulator("tcp", positions=[(15.0,)], drift_per_s=0.01, unit="mm") as sim:
+        assert main(["capture", "readout", sim.port, "--readings", "1", "--stable", "0.5",
+                     "--dwell", "0.3", "--timeout", "5", "--out", str(out), *FAST]) == 0
+    (row,) = rows_of(out)[1:]
+    assert row[2] == "mm"
