@@ -11,11 +11,12 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from PySide6.QtWidgets import QFileDialog, QInputDialog
+from PySide6.QtWidgets import QInputDialog
 
 from models.run_overlay import overlay_from_file, overlay_from_project_json
 from models.workbench import OverlaysRuns
 from widgets.i18n import declared, explained, tr
+from widgets.open_file import ask_open_file
 from widgets.run_overlay import RunOverlay
 
 __all__ = ["RunOverlayActions"]
@@ -30,11 +31,10 @@ class RunOverlayActions:
 
     # -- dialogs (tests replace these) ---------------------------------------------
     def choose_file(self) -> str:
-        path, _ = QFileDialog.getOpenFileName(
+        return ask_open_file(
             self.window, tr("Overlay a run on {workbench}").format(
                 workbench=declared(self.window.current.kind.title)), self.window.projects.last_dir(),
             tr("Readings or project (*.csv *.txt *.xlsx *.xlsm *.json);;All files (*)"))
-        return path
 
     def choose_record(self, labels: list[str]) -> int | None:
         label, ok = QInputDialog.getItem(self.window, tr("Overlay a certificate"),

@@ -92,6 +92,8 @@ def main() -> None:
         window.register_window.recovery_buttons[button].click()  # the register's recoveries
         record(name, window.register_window.recovery_dialog)
         window.register_window.recovery_dialog.reject()
+    answer_modal("verify a certificate PDF")
+    window.register_window.buttons["verify"].click()
     window.register_window.close()
     window.show_manual()
     record("manual", window.manual)
@@ -120,6 +122,14 @@ def main() -> None:
     window.projects.open_project_dialog()
     answer_modal("import readings")
     window.import_dialog()
+    answer_modal("save project")
+    window.menus.save_as_action.trigger()
+    answer_modal("export results")
+    window.menus.export_results_action.trigger()
+    polygon = window.presenter("polygon")
+    window.tabs.setCurrentIndex(window.presenters.index(polygon))
+    answer_modal("polygon certificate")
+    polygon.view.certificate_button.click()
     close_window(window, found)
 
 

@@ -47,6 +47,7 @@ from models.messages import in_language, translator
 from models.quantity import UNITS
 from models.uncertainty.conformity import DECISION_RULE_NAMES
 from widgets.i18n import declared, explained, tr, translated
+from widgets.open_file import ask_open_file
 from widgets.screen_fit import fit_to_screen
 
 __all__ = ["CertificateDialog"]
@@ -474,11 +475,8 @@ class CertificateDialog(QDialog):
             self.standards.setItem(row, col, QTableWidgetItem(text))
 
     def _ask_standard_dcc(self) -> None:
-        from PySide6.QtWidgets import QFileDialog
-
-        path, _ = QFileDialog.getOpenFileName(self, tr("Standard's digital calibration "
-                                                       "certificate"), "",
-                                              tr("DCC (*.xml);;All files (*)"))
+        path = ask_open_file(self, tr("Standard's digital calibration certificate"), "",
+                             tr("DCC (*.xml);;All files (*)"))
         if path:
             self.read_standard_dcc(path)
 

@@ -31,7 +31,10 @@ def open_file_dialog(parent: QWidget | None, title: str, folder: str,
 def ask_open_file(parent: QWidget | None, title: str, folder: str, filters: str) -> str:
     """The file chosen to open, "" when cancelled (QFileDialog.getOpenFileName's first half)."""
     dialog = open_file_dialog(parent, title, folder, filters)
-    if dialog.exec() != QDialog.DialogCode.Accepted:
-        return ""
-    chosen = dialog.selectedFiles()
-    return chosen[0] if chosen else ""
+    try:
+        if dialog.exec() != QDialog.DialogCode.Accepted:
+            return ""
+        chosen = dialog.selectedFiles()
+        return chosen[0] if chosen else ""
+    finally:
+        dialog.deleteLater()  # not kept as one more child of ``parent`` for each file opened

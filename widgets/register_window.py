@@ -14,7 +14,6 @@ from PySide6.QtWidgets import (
     QAbstractItemView,
     QComboBox,
     QDialog,
-    QFileDialog,
     QHBoxLayout,
     QHeaderView,
     QLabel,
@@ -32,6 +31,7 @@ from PySide6.QtWidgets import (
 from widgets.flow_layout import FlowLayout
 from widgets.i18n import application_language, declared, live, on_language_change, tr
 from widgets.lazy_menu_view_box import LazyMenuViewBox
+from widgets.open_file import ask_open_file
 from widgets.plot_grid import show_grid
 from widgets.plot_image import localise_plot_menus
 from widgets.save_file import ask_save_file
@@ -341,9 +341,7 @@ class RegisterWindow(QDialog):
         self.history_plot.setLabel("left", declared(name))
 
     def ask_pdf_to_verify(self) -> str:
-        path, _ = QFileDialog.getOpenFileName(self, tr("Verify a certificate PDF"), "",
-                                              "PDF (*.pdf)")
-        return path
+        return ask_open_file(self, tr("Verify a certificate PDF"), "", "PDF (*.pdf)")
 
     def ask_pdf_path(self, suggested: str) -> str:
         return ask_save_file(self, tr("Save the certificate's PDF"), suggested, "PDF (*.pdf)")

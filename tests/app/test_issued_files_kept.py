@@ -258,10 +258,10 @@ def test_a_plots_save_image_never_replaces_an_issued_file(window, tmp_path, monk
     import os
 
     import pyqtgraph as pg
-    from PySide6.QtWidgets import QFileDialog
 
     from models.certificate.metadata import CertificateMetadata
     from models.register.store import IssueRequest
+    from widgets import save_file
 
     meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
                                item_serial="RX-1")
@@ -276,7 +276,7 @@ def test_a_plots_save_image_never_replaces_an_issued_file(window, tmp_path, monk
     told: list[str] = []
     presenter.view.tell = lambda title, text: told.append(text)
     chosen = [str(png)]
-    monkeypatch.setattr(QFileDialog, "getSaveFileName",
+    monkeypatch.setattr(save_file, "choose_save_file",
                         lambda *a, **k: (chosen[0], "PNG image (*.png)"))
     plot = presenter.view.error_plot
     save = next(action for view in [plot, *plot.findChildren(pg.GraphicsView)]

@@ -47,8 +47,7 @@ def test_a_restore_is_told_once_per_window_and_kept_in_its_state_line(
     _settled(qtbot, dialog)
     assert [title for title, _text in told] == [CHANGED]  # told on opening
     # a verify, a refresh, the window opened again: no second box of the same findings
-    monkeypatch.setattr(register_window.QFileDialog, "getOpenFileName",
-                        lambda *a, **k: (str(tmp_path / "kept.pdf"), "PDF (*.pdf)"))
+    monkeypatch.setattr(register_window, "ask_open_file", lambda *a, **k: str(tmp_path / "kept.pdf"))
     qtbot.mouseClick(dialog.buttons["verify"], Qt.MouseButton.LeftButton)
     assert told[-1][0] == "Verified"
     window.show_register()

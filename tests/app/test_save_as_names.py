@@ -8,10 +8,10 @@ from __future__ import annotations
 
 import pytest
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QFileDialog, QMessageBox
+from PySide6.QtWidgets import QMessageBox
 
 from models.project.file import load_project
-from widgets import plot_image
+from widgets import plot_image, save_file
 from widgets.save_file import with_filter_suffix
 
 pytestmark = pytest.mark.slow  # a window
@@ -21,8 +21,8 @@ PROJECT = "AngleBench project (*.anglebench.json *.json)"
 
 
 class Dialog:
-    """QFileDialog.getSaveFileName answering ``answers`` in turn ("" once they are used up:
-    cancelled), recording what it was offered."""
+    """The file dialog (widgets.save_file.choose_save_file) answering ``answers`` in turn
+    ("" once they are used up: cancelled), recording what it was offered."""
 
     def __init__(self, *answers):
         self.answers, self.offered = list(answers), []
@@ -74,7 +74,7 @@ def test_save_as_run3_does_not_replace_run3_anglebench_json_unasked(window, tmp_
                                                                    monkeypatch):
     theirs, before = _colleagues_project(window, tmp_path)
     dialog, asked = Dialog((str(tmp_path / "run3"), PROJECT)), Asked(Button.No)
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", dialog)
+    monkeypatch.setattr(save_file, "choose_save_file", dialog)
     window.ask = asked
     window.menus.save_as_action.trigger()
     assert theirs.read_bytes() == before  # the colleague's work is still there
@@ -92,7 +92,7 @@ def test_save_as_run3_replaces_run3_anglebench_json_when_told_to(window, tmp_pat
                                                                 monkeypatch):
     theirs, before = _colleagues_project(window, tmp_path)
     dialog, asked = Dialog((str(tmp_path / "run3"), PROJECT)), Asked(Button.Yes)
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", dialog)
+    monkeypatch.setattr(save_file, "choose_save_file", dialog)
     window.ask = asked
     window.menus.save_as_action.trigger()
     assert len(asked.questions) == 1 and len(dialog.offered) == 1
@@ -107,10 +107,10 @@ def test_a_name_the_dialog_asked_about_is_not_asked_again(window, tmp_path, monk
     theirs, _ = _colleagues_project(window, tmp_path)
     asked = Asked(Button.No)
     window.ask = asked
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", Dialog((str(theirs), PROJECT)))
+    monkeypatch.setattr(save_file, "choose_save_file", Dialog((str(theirs), PROJECT)))
     assert window.projects.save_as()
     assert load_project(theirs).workbenches["theodolite"].rows[0][1] == "22.22"
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", Dialog((str(tmp_path / "run4"), PROJECT)))
+    monkeypatch.setattr(save_file, "choose_save_file", Dialog((str(tmp_path / "run4"), PROJECT)))
     assert window.projects.save_as()
     assert (tmp_path / "run4.anglebench.json").exists() and asked.questions == []
 
@@ -122,12 +122,12 @@ def test_exported_results_named_without_extension_ask_before_replacing(window, t
     theirs.write_bytes(b"a colleague's workbook")
     chosen = (str(tmp_path / "results"), "Excel workbook (*.xlsx)")
     window.ask = asked = Asked(Button.No)
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", Dialog(chosen))
+    monkeypatch.setattr(save_file, "choose_save_file", Dialog(chosen))
     assert not window.export_results()
     assert theirs.read_bytes() == b"a colleague's workbook"
     assert asked.questions[0][1].startswith("results.xlsx already exists in ")
     window.ask = Asked(Button.Yes)
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", Dialog(chosen))
+    monkeypatch.setattr(save_file, "choose_save_file", Dialog(chosen))
     assert window.export_results()
     assert theirs.read_bytes()[:2] == b"PK"  # replaced by the workbook, when told to
 
@@ -138,7 +138,7 @@ def test_an_exported_certificate_named_without_pdf_asks_before_replacing(window,
     theirs = tmp_path / "AB-1.pdf"
     theirs.write_bytes(b"%PDF- a colleague's certificate")
     window.ask = asked = Asked(Button.No)
-    monkeypatch.setattr(QFileDialog, "getSaveFileName",
+    monkeypatch.setattr(save_file, "choose_save_file",
                         Dialog((str(tmp_path / "AB-1"), "PDF (*.pdf)")))
     path = window.certificates.view.choose_save_path("Export certificate", "x.pdf", "PDF (*.pdf)")
     assert path == "" and len(asked.questions) == 1
@@ -157,7 +157,7 @@ def test_a_plot_image_named_without_png_asks_before_replacing(window, tmp_path, 
         return answer
 
     monkeypatch.setattr(QMessageBox, "question", question)
-    monkeypatch.setattr(QFileDialog, "getSaveFileName",
+    monkeypatch.setattr(save_file, "choose_save_file",
                         Dialog((str(tmp_path / "plot"), "PNG image (*.png)")))
     plot = window.presenter("theodolite").view.error_plot
     plot_image._save_image(plot, "Error")
@@ -178,10 +178,10 @@ def test_the_fringe_table_gets_the_chosen_types_extension_and_asks(window, qtbot
     answers = [Button.No, Button.Yes]
     monkeypatch.setattr(QMessageBox, "question", lambda *_a: answers.pop(0))
     typed = (str(tmp_path / "lut"), "C header (*.h)")
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", Dialog(typed))
+    monkeypatch.setattr(save_file, "choose_save_file", Dialog(typed))
     qtbot.mouseClick(fringe.view.export_button, Qt.MouseButton.LeftButton)
     assert theirs.read_text() == "/* a colleague's table */" and not (tmp_path / "lut").exists()
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", Dialog(typed))
+    monkeypatch.setattr(save_file, "choose_save_file", Dialog(typed))
     qtbot.mouseClick(fringe.view.export_button, Qt.MouseButton.LeftButton)
     assert theirs.read_text().startswith("/* AngleBench fringe correction table")
     assert answers == [] and not (tmp_path / "lut").exists()

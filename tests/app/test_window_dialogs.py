@@ -9,12 +9,13 @@ import inspect
 from unittest import mock
 
 import pytest
-from PySide6.QtWidgets import QFileDialog, QMessageBox
+from PySide6.QtWidgets import QMessageBox
 
 from app.certificate_dialogs import CertificateDialogs
 from app.certificate_presenter import CertificateView, PendingRevision
 from app.project_dialogs import ProjectDialogs
 from app.project_presenter import ProjectView
+from widgets import save_file
 
 Button = QMessageBox.StandardButton
 
@@ -65,7 +66,7 @@ def test_certificate_questions_and_the_suffix_of_the_file_type_chosen(tmp_path):
     assert "These details are missing: approver." in window.ask.call_args_list[0].args[1]
     window.ask.return_value = Button.Discard  # anything but Yes: no
     assert not dialogs.confirm_draft(["approver"]) and not dialogs.confirm_implausible("2°")
-    with mock.patch.object(QFileDialog, "getSaveFileName",
+    with mock.patch.object(save_file, "choose_save_file",
                            return_value=(str(tmp_path / "out"), "Excel workbook (*.xlsx)")) as ask:
         assert dialogs.choose_save_path("Export results", "r.csv", "CSV (*.csv);;Excel "
                                         "workbook (*.xlsx)") == str(tmp_path / "out.xlsx")

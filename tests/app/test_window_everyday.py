@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
-from PySide6.QtWidgets import QFileDialog
 
+from widgets import save_file
 from widgets.save_file import with_filter_suffix
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
@@ -70,7 +70,7 @@ def test_the_chosen_file_type_gives_a_name_its_extension(window, monkeypatch, tm
     assert with_filter_suffix("/x/out.csv", "Excel workbook (*.xlsx)", both) == "/x/out.csv"
     assert with_filter_suffix("", "CSV (*.csv)", both) == ""
     window.load_all_samples()
-    monkeypatch.setattr(QFileDialog, "getSaveFileName",
+    monkeypatch.setattr(save_file, "choose_save_file",
                         lambda *a, **k: (str(tmp_path / "results"), "Excel workbook (*.xlsx)"))
     assert window.export_results()
     assert (tmp_path / "results.xlsx").read_bytes()[:2] == b"PK"  # a workbook, not a CSV
@@ -322,7 +322,7 @@ def test_results_are_read_in_the_unit_chosen_once(window, monkeypatch, tmp_path)
     theodolite, polygon = window.presenter("theodolite"), window.presenter("polygon")
     plot = theodolite.view.error_plot
     before = plot.corrected_curve.getData()[1].copy()
-    monkeypatch.setattr(QFileDialog, "getSaveFileName",
+    monkeypatch.setattr(save_file, "choose_save_file",
                         lambda *a, **k: (str(tmp_path / "arcsec.csv"), "CSV (*.csv)"))
     assert window.export_results()
     urad = next(a for a in window.menus.angle_unit_actions.actions() if a.data() == "urad")
@@ -340,7 +340,7 @@ def test_results_are_read_in_the_unit_chosen_once(window, monkeypatch, tmp_path)
     assert polygon.view.tilt_plot.plot.getAxis("left").labelText.endswith("(µrad)")
     per_target = window.presenter("positioning").view.per_target
     assert per_target.horizontalHeaderItem(1).text() == "x̄↑ (µrad)"
-    monkeypatch.setattr(QFileDialog, "getSaveFileName",
+    monkeypatch.setattr(save_file, "choose_save_file",
                         lambda *a, **k: (str(tmp_path / "urad.csv"), "CSV (*.csv)"))
     assert window.export_results()
     arcsec_rows = (tmp_path / "arcsec.csv").read_text("utf-8-sig").splitlines()

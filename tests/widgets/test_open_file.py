@@ -4,7 +4,8 @@ laptop, 640×360 logical; tests/widgets/test_dialogs_fit.py opens it from the wi
 
 from __future__ import annotations
 
-from PySide6.QtWidgets import QDialog, QFileDialog
+from PySide6.QtCore import QEvent
+from PySide6.QtWidgets import QApplication, QDialog, QFileDialog, QWidget
 
 from widgets.open_file import ask_open_file, open_file_dialog
 from widgets.screen_fit import available_size
@@ -36,3 +37,16 @@ def test_the_dialog_is_no_larger_than_the_screen_has_free(qtbot, tmp_path):
     free_width, free_height = available_size(dialog)
     assert dialog.width() == min(dialog.sizeHint().width(), free_width)
     assert dialog.height() == min(dialog.sizeHint().height(), free_height)
+
+
+def test_no_dialog_is_left_behind_in_the_window(qtbot, tmp_path, monkeypatch):
+    """Each file opened made a dialog, a child of the window kept until the window closed
+    (with its folder model watching the folder); the static function's went when it
+    returned."""
+    window = QWidget()
+    qtbot.addWidget(window)
+    monkeypatch.setattr(QFileDialog, "exec", lambda dialog: QDialog.DialogCode.Rejected)
+    for _ in range(3):
+        ask_open_file(window, "Import readings", str(tmp_path), "Readings (*.csv)")
+    QApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+    assert window.findChildren(QFileDialog) == []

@@ -328,8 +328,7 @@ def _verify_in_the_window(window, qtbot, monkeypatch, path) -> list[tuple[str, s
     told: list[tuple[str, str]] = []
     monkeypatch.setattr(register_window.RegisterWindow, "tell",
                         lambda self, title, text: told.append((title, text)))
-    monkeypatch.setattr(register_window.QFileDialog, "getOpenFileName",
-                        lambda *a, **k: (str(path), "PDF (*.pdf)"))
+    monkeypatch.setattr(register_window, "ask_open_file", lambda *a, **k: str(path))
     window.show_register()
     dialog = window.register_window
     qtbot.waitUntil(lambda: "Checking" not in dialog.pdf_check.text(), timeout=20000)

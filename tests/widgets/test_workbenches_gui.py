@@ -6,7 +6,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QGuiApplication
 
 from app.main import main
-from widgets import workbench_presenter
+from widgets import save_file, workbench_presenter
 from widgets.fringe.presenter import FringePresenter
 from widgets.polygon.presenter import PolygonPresenter
 from widgets.readings_table_model import MUTED_BRUSH
@@ -313,7 +313,7 @@ def test_fringe_table_export_to_an_unwritable_path_tells_the_user(qtbot, fringe,
     """The export goes through the workbench's correction table, as on the command line: a
     folder that is not there is told, naming the file, and nothing is raised out of the
     button's slot; a good path writes the table and says so."""
-    from PySide6.QtWidgets import QFileDialog, QMessageBox
+    from PySide6.QtWidgets import QMessageBox
 
     told = []
     monkeypatch.setattr(QMessageBox, "warning", lambda _parent, title, text: told.append(
@@ -321,7 +321,7 @@ def test_fringe_table_export_to_an_unwritable_path_tells_the_user(qtbot, fringe,
     fringe.load_sample()
     qtbot.waitUntil(lambda: fringe.result is not None)
     bad = tmp_path / "no such folder" / "table.csv"
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *_a, **_k: (str(bad), ""))
+    monkeypatch.setattr(save_file, "choose_save_file", lambda *_a, **_k: (str(bad), ""))
     qtbot.mouseClick(fringe.view.export_button, Qt.MouseButton.LeftButton)
     assert len(told) == 1
     title, text = told[0]
@@ -329,7 +329,7 @@ def test_fringe_table_export_to_an_unwritable_path_tells_the_user(qtbot, fringe,
     assert str(bad) in text and "does not exist" in text  # refused before writing (#61)
     assert not bad.parent.exists()
     good = tmp_path / "table.h"
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *_a, **_k: (str(good), ""))
+    monkeypatch.setattr(save_file, "choose_save_file", lambda *_a, **_k: (str(good), ""))
     qtbot.mouseClick(fringe.view.export_button, Qt.MouseButton.LeftButton)
     assert len(told) == 1
     assert good.read_text().startswith("/* AngleBench fringe correction table")

@@ -5,13 +5,14 @@ panel and the button that loads the polygon's certificate. Widgets only."""
 from __future__ import annotations
 
 import pyqtgraph as pg
-from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QMessageBox, QPushButton, QVBoxLayout, QWidget
 
 from models.polygon import TITLE
 from widgets.error_plot import ErrorPlot
 from widgets.figure_plot import FigurePlot, FigureRenderer
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.lazy_menu_view_box import LazyMenuViewBox
+from widgets.open_file import ask_open_file
 from widgets.plot_grid import IntegerAxis, show_grid
 from widgets.polygon.simulation import PolygonSimulation
 from widgets.reference_notice import ReferenceNotice
@@ -128,10 +129,9 @@ class PolygonView(WorkbenchView):
         self.harmonics.clear()
 
     def ask_certificate_file(self) -> str:
-        path, _ = QFileDialog.getOpenFileName(self, tr("Polygon calibration certificate"), "",
-                                              tr("Deviations (*.csv *.txt *.xlsx);;Digital "
-                                                 "calibration certificate (*.xml);;All files (*)"))
-        return path
+        return ask_open_file(self, tr("Polygon calibration certificate"), "",
+                             tr("Deviations (*.csv *.txt *.xlsx);;Digital "
+                                "calibration certificate (*.xml);;All files (*)"))
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.warning(self, title, text)
