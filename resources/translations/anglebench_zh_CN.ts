@@ -9765,10 +9765,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>读数个数（默认 1）</translation>
     </message>
     <message>
-        <source>take a reading when the spread of the frames stays within WINDOW (arcsec; a readout&apos;s own unit) for --dwell seconds</source>
-        <translation>各帧的离散在 --dwell 秒内保持在 WINDOW 之内时取一个读数（角秒；数显表用其自身单位）</translation>
-    </message>
-    <message>
         <source>the dwell time of --stable</source>
         <translation>--stable 的驻留时间</translation>
     </message>
@@ -9814,7 +9810,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Autocollimator (ELCOMAT kind)</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the units of a reading the auto-take window is applied to in arcseconds (a reading in another unit, a readout&apos;s mm or none, is gated in that unit, and the window says so) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
         <translation>自准直仪（ELCOMAT 类）</translation>
     </message>
     <message>
@@ -10013,6 +10009,10 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     <message>
         <source>autocollimator (ELCOMAT kind), theodolite (Leica GeoCOM), readout (one line per reading) or signals (a sin/cos stream, u_sin,u_cos a line)</source>
         <translation>autocollimator（ELCOMAT 类自准直仪）、theodolite（Leica GeoCOM 经纬仪）、readout（每个读数一行的数显表）或 signals（sin/cos 数据流，每行 u_sin,u_cos）</translation>
+    </message>
+    <message>
+        <source>take a reading when the spread of the frames stays within WINDOW for --dwell seconds: arcseconds for every angle (a readout&apos;s degrees converted), a readout&apos;s own unit when it sends no angle</source>
+        <translation>当各帧的离散在 --dwell 秒内保持在 WINDOW 以内时取一个读数：凡角度均以角秒计（读数器的度先换算），读数器不发送角度单位时以其自身单位计</translation>
     </message>
     <message>
         <source>also write every line the instrument sent, time-stamped, and whether it became a reading (with --stable: whether it is in a reading&apos;s dwell; the readings&apos; trace to the instrument&apos;s own output)</source>
