@@ -360,6 +360,9 @@ class RegisterPresenter:
         written; another record in its place is said; a record found whose chain before it
         was rewritten is said."""
         from models.register.printed_place import (
+            ALTERED_COPY,
+            ALTERED_INTACT_RECORD,
+            ALTERED_OR_REPLACED,
             content_changed,
             digest_missing,
             head_before_changed,
@@ -372,7 +375,7 @@ class RegisterPresenter:
         path = self.view.ask_pdf_to_verify()
         if not path:
             return None
-        findings: list[str] = []
+        findings: list = []
         try:
             with open(path, "rb") as handle:
                 data = handle.read()
@@ -415,6 +418,16 @@ class RegisterPresenter:
             self.view.tell(tr("Register changed after issue"), tr(
                 "{path} was issued by this register, but the register has LOST its record."
                 ).format(path=path) + said)
+        elif record is None and (place := next(
+                (getattr(line, "template", "") for line in findings if getattr(
+                    line, "template", "") in (ALTERED_COPY, ALTERED_INTACT_RECORD,
+                                              ALTERED_OR_REPLACED)), None)):
+            # its number's record is at its place with another content: the copy was
+            # altered after issue (or, without the key's proof, the record replaced), as
+            # ``register verify`` says — not "not in the register", a draft or another
+            # register's
+            self.view.tell(tr("Changed after issue") if place == ALTERED_OR_REPLACED
+                           else tr("Altered after issue"), said.lstrip("\n"))
         elif record is None:
             self.view.tell(tr("Not in the register"), tr(
                 "{path}: no certificate issued from this register has this PDF (SHA-256): it "

@@ -147,3 +147,41 @@ def test_an_issue_on_a_register_that_issues_nothing_is_refused_before_any_questi
     view.choose_save_path.return_value = str(tmp_path / "draft.pdf")
     assert presenter.export_certificate(kind, result, {}, "run.csv", [])
     assert (tmp_path / "draft.pdf").exists()
+
+
+@pytest.mark.parametrize("keyed", [True, False])
+def test_an_altered_copy_is_called_altered_not_absent_from_the_register(
+        window, qtbot, tmp_path, told, monkeypatch, request, keyed):
+    """A copy of a certificate edited after issue (a comment saved into the PDF) was told in
+    a box titled "Not in the register", whose text said it may be a draft or another
+    register's, beside the finding that it is this register's record altered. The title now
+    says what ``register verify`` says: "Altered after issue" where the register proves the
+    copy altered (with the lab's key, its record signed and intact), "Changed after issue"
+    where it cannot rule out the record replaced (no key); the finding alone, no "draft"."""
+    import widgets.register_window as register_window
+
+    if keyed:
+        request.getfixturevalue("lab_key")
+    number = issue()
+    issue()
+    with Register(register_url()) as register:
+        pdf = register.pdf(number)
+    at = pdf.rfind(b"%%EOF")
+    at = len(pdf) if at < 0 else at
+    (tmp_path / "edited.pdf").write_bytes(pdf[:at] + b"\n% edited after issue\n" + pdf[at:])
+    monkeypatch.setattr(register_window, "ask_open_file",
+                        lambda *a, **k: str(tmp_path / "edited.pdf"))
+    window.show_register()
+    dialog = window.register_window
+    _settled(qtbot, dialog)
+    told.clear()
+    qtbot.mouseClick(dialog.buttons["verify"], Qt.MouseButton.LeftButton)
+    title, text = told[-1]
+    if keyed:
+        assert title == "Altered after issue"
+        assert text.startswith(f"ALTERED: {tmp_path / 'edited.pdf'} ({number})")
+        assert "the copy was altered after issue" in text
+    else:
+        assert title in ("Altered after issue", "Changed after issue")
+        assert "replaced" in text or "issued again" in text
+    assert "draft" not in text and "Not in the register" not in title
