@@ -206,14 +206,58 @@ def run_gui(project: str | None, samples: bool, words=str, language: str | None 
     return app.exec()
 
 
+#: the status of a command whose output pipe closed before a binary write: what the shell
+#: gives a program that SIGPIPE ended (128 + 13); its verdict is not known
+EXIT_CLOSED_PIPE = 141
+
+
+class _ClosedPipeQuiet:
+    """Standard output that a closed pipe silences instead of stopping the command: what
+    is written after the reader went (``anglebench register verify | head -1``) is
+    discarded, and the command finishes its work and exits with its own status — verify's
+    3 for a forged record, not 0 because ``head`` stopped reading (stop 72's leftover)."""
+
+    def __init__(self, stream) -> None:
+        self._stream = stream
+        self._closed = False
+
+    def _gone(self) -> None:
+        self._closed = True
+        try:  # Python's own flush of what is still buffered, at exit, must not fail
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, self._stream.fileno())
+        except (OSError, ValueError):
+            pass
+
+    def write(self, text: str) -> int:
+        if not self._closed:
+            try:
+                return self._stream.write(text)
+            except BrokenPipeError:
+                self._gone()
+        return len(text)
+
+    def flush(self) -> None:
+        if not self._closed:
+            try:
+                self._stream.flush()
+            except BrokenPipeError:
+                self._gone()
+
+    def __getattr__(self, name: str):
+        return getattr(self._stream, name)
+
+
 def entry() -> int:
-    """The console script: a closed pipe (``anglebench analyze … | head``) ends quietly."""
+    """The console script: a closed pipe (``anglebench analyze … | head``) ends quietly,
+    and the command's exit status is still its own (:class:`_ClosedPipeQuiet`)."""
+    sys.stdout = _ClosedPipeQuiet(sys.stdout)  # type: ignore[assignment]
     try:
         return main()
-    except BrokenPipeError:
+    except BrokenPipeError:  # written past the guard (a binary write): nothing is known
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())  # Python's own flush at exit must not fail
-        return 0
+        return EXIT_CLOSED_PIPE
 
 
 if __name__ == "__main__":

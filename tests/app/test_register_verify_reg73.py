@@ -152,6 +152,28 @@ def test_verify_read_by_a_closed_pipe_ends_without_a_traceback(tmp_path):
     _, err = process.communicate(timeout=120)
     assert b"unrecognized" not in err  # the command ran
     assert b"Traceback" not in err and b"BrokenPipeError" not in err
+    assert process.returncode == 0  # an intact register: verified
+
+
+def test_verify_read_by_a_closed_pipe_still_exits_with_its_verdict(tmp_path):
+    """``register verify | head -1`` of a register whose record was edited (a customer
+    changed in the database): the reader went after the first line, and verify exited 0 —
+    a script with ``set -o pipefail`` read "verified". It finishes its checks silently and
+    exits 3, as it does with its whole output read."""
+    _issue(2)
+    _sql("UPDATE certificates SET customer = 'Someone Else' WHERE seq = 1")
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(sys.path)}
+    whole = subprocess.run([sys.executable, "-m", "app", "register", "--register",
+                            register_url(), "verify"], capture_output=True, env=env,
+                           cwd=tmp_path, timeout=120)
+    assert whole.returncode == 3, whole.stdout + whole.stderr
+    process = subprocess.Popen([sys.executable, "-m", "app", "register", "--register",
+                                register_url(), "verify"], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, env=env, cwd=tmp_path)
+    process.stdout.close()  # the reader is gone before anything is written
+    _, err = process.communicate(timeout=120)
+    assert b"Traceback" not in err and b"BrokenPipeError" not in err
+    assert process.returncode == 3
 
 
 def test_show_says_which_form_of_record_digest_a_record_uses(capsys):
