@@ -96,7 +96,13 @@ from app.capture.worker import CaptureWorker, Fault, Reading
 from models.capture.allan import allan_deviation, last_even_run
 from models.capture.guidance import degrees_text
 from models.capture.raw_record import FRAMES_PER_BLOCK, FrameBlocks, frame_text
-from models.capture.stability import ANGLE_UNITS, StabilityGate, UnwrappedAngles, gate_scale
+from models.capture.stability import (
+    ANGLE_UNITS,
+    StabilityGate,
+    UnwrappedAngles,
+    gate_scale,
+    steady_motion,
+)
 from models.capture.take_cells import (
     MICRORADIAN_ARCSEC,
     cell_step,
@@ -1031,6 +1037,7 @@ class CapturePanel(QDockWidget):
         self.stability.setText("")
         self.allan.setText("")
         self._spread: float | None = None
+        self._motion: float | None = None  # the rate the output moves at, when it does
         self._allan_due = 0.0
 
     def _reset_statistics(self) -> None:
@@ -1284,7 +1291,15 @@ class CapturePanel(QDockWidget):
             text = tr("Auto-take: settling, {percent} % of the dwell").format(
                 percent=f"{100 * part:.0f}")
             spread = getattr(self, "_spread", None)
-            if spread is not None and spread > self.window_box.value():
+            motion = getattr(self, "_motion", None)
+            if spread is not None and spread > self.window_box.value() and motion is not None:
+                # moving to the next point, or drifting: the window is not what is wrong,
+                # and widening it would take a moving reading as stable (stop 72's leftover:
+                # "spreads 5.4e+04″ … widen the window" while the axis turned)
+                text += tr(" — the output is moving ({rate} a second): it is taken once it "
+                           "stays within the window").format(
+                    rate=f"{motion:+.2g}" + _unit_symbol(self._gate_unit))
+            elif spread is not None and spread > self.window_box.value():
                 # why it waits (#41: a theodolite's 0.3" of noise spread 1.4" over a second:
                 # with the 0.5" window it never took, saying only "2 % of the dwell")
                 text += tr(" — the output spreads {spread} over a second, more than the "
@@ -1535,11 +1550,12 @@ class CapturePanel(QDockWidget):
         if reading is None:
             return
         now = reading.time_s
-        recent = []
+        recent, times = [], []
         for t, v, _ in reversed(self.frames):
             if t < now - SPREAD_SECONDS:
                 break
             recent.append(v)
+            times.append(t)
         degrees = reading.unit == "deg"
         scale = gate_scale(reading.unit)
         recent = np.array(recent)
@@ -1548,6 +1564,9 @@ class CapturePanel(QDockWidget):
         if len(recent) > 1:
             spread = recent.max(axis=0) - recent.min(axis=0)
             self._spread = float(np.max(spread)) * scale  # in the gate's unit
+            # a spread that is the axis moving (or drifting) is not a window too tight
+            rate = steady_motion(times, recent)
+            self._motion = None if rate is None else rate * scale
             shown = "   ".join(f"{s * scale:.3f}" for s in spread)
             # in the window's unit (arcseconds for an angle, else the readout's own)
             self.stability.setText(tr("Spread over the last second: {spread}{unit}").format(

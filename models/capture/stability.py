@@ -23,8 +23,10 @@ from collections import deque
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.special import stdtrit
 
-__all__ = ["ANGLE_UNITS", "StabilityGate", "StableReading", "UnwrappedAngles", "gate_scale"]
+__all__ = ["ANGLE_UNITS", "StabilityGate", "StableReading", "UnwrappedAngles", "gate_scale",
+           "steady_motion"]
 
 #: the units of a reading the auto-take window is applied to in arcseconds (a reading in
 #: another unit, a readout's mm or none, is gated in that unit, and the window says so)
@@ -36,6 +38,58 @@ def gate_scale(unit: str) -> float:
     arcseconds (a theodolite's, a readout's), else 1 (the window, in the window and in
     ``anglebench capture --stable``, is in arcseconds for every angle)."""
     return 3600.0 if unit == "deg" else 1.0
+
+
+#: a spread is the output moving when the straight line through the frames moves at least
+#: this many times the frames' own scatter about it …
+MOTION_OVER_SCATTER = 2.0
+#: … and its slope is not noise's: Student's t of the slope beyond its two-sided quantile at
+#: this probability (noise alone is called moving once in a million looks, whatever the
+#: number of frames; twice the scatter alone did so 0.27 % of the time with 8 frames)
+MOTION_FALSE_RATE = 1e-6
+#: the fewest frames a motion is told from
+MOTION_FRAMES = 5
+
+
+def steady_motion(times_s, values) -> float | None:
+    """The rate (per second, in the values' unit) at which the frames move when their spread
+    is a motion — the axis turning to the next point, a drift — and not noise: the least-
+    squares line through them moves over their time span at least
+    :data:`MOTION_OVER_SCATTER` times the peak-to-peak of the frames about it, and its slope
+    is significant (:data:`MOTION_FALSE_RATE`). None for noise, or fewer than
+    :data:`MOTION_FRAMES` frames. ``values``: one axis (1-D) or several (2-D, frames × axes:
+    the axis that moves most). Why it matters: a window too tight for the noise is widened;
+    a window that a moving output exceeds is right, and widening it would take a moving
+    axis's reading as stable."""
+    t = np.asarray(times_s, dtype=float)
+    y = np.asarray(values, dtype=float)
+    if y.ndim == 1:
+        y = y[:, None]
+    if t.size < MOTION_FRAMES or y.shape[0] != t.size or np.ptp(t) <= 0.0:
+        return None
+    dt = t - t.mean()
+    sxx = float(dt @ dt)
+    slopes = dt @ (y - y.mean(axis=0)) / sxx
+    residuals = y - y.mean(axis=0) - np.outer(dt, slopes)
+    moved = np.abs(slopes) * float(np.ptp(t))
+    scatter = np.ptp(residuals, axis=0)
+    se = np.sqrt(np.sum(residuals**2, axis=0) / (t.size - 2) / sxx)
+    critical = float(stdtrit(t.size - 2, 1.0 - 0.5 * MOTION_FALSE_RATE))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        significant = np.where(se > 0.0, np.abs(slopes) > critical * se, moved > 0.0)
+    moving = (moved > MOTION_OVER_SCATTER * scatter) & significant & (moved > 0.0)
+    if not np.any(moving):
+        return None
+    return float(slopes[int(np.argmax(np.where(moving, moved, -np.inf)))])
+    dt = t - t.mean()
+    slopes = dt @ (y - y.mean(axis=0)) / float(dt @ dt)
+    residuals = y - y.mean(axis=0) - np.outer(dt, slopes)
+    moved = np.abs(slopes) * float(np.ptp(t))
+    scatter = np.ptp(residuals, axis=0)
+    axis = int(np.argmax(moved - MOTION_OVER_SCATTER * scatter))
+    if moved[axis] > MOTION_OVER_SCATTER * scatter[axis] and moved[axis] > 0.0:
+        return float(slopes[axis])
+    return None
 
 #: times are sums of floats: a dwell of 0.3 s from 2.0 s ends at 2.3 s, not 2.2999999…
 _EPS = 1e-9
