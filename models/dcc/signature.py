@@ -187,6 +187,14 @@ def verify(xml_bytes: bytes, trusted_cert: bytes | None = None) -> SignatureChec
                 "the signature carries no X.509 certificate and no trusted certificate is "
                 "configured ({var})"), var=TRUSTED_ENV_VAR),))
     except Exception as exc:  # noqa: BLE001 — signxml raises InvalidSignature, InvalidCertificate …
+        if trusted_cert is not None and carried and _verifies(xml_bytes, carried):
+            # intact and signed, by a signer the trusted certificate does not vouch for: said
+            # so, not "Signature verification failed" (which reads as a document changed)
+            return SignatureCheck((message(QT_TR_NOOP(
+                "signed by {signer}, which the trusted certificate ({trusted}) does not "
+                "vouch for: the document is unchanged since it was signed, but not by the "
+                "signer trusted"), signer=signer or "?",
+                trusted=_subject(trusted_cert.decode("ascii", "replace")) or "?"),), signer)
         return SignatureCheck((message(QT_TR_NOOP("the signature does not verify: {reason}"),
                                        reason=str(exc) or type(exc).__name__),), signer)
     # one reference is expected (the verifier's default expect_references=1, checked by it),
@@ -194,6 +202,18 @@ def verify(xml_bytes: bytes, trusted_cert: bytes | None = None) -> SignatureChec
     verified = cast("VerifyResult", result)
     signed = etree.tostring(verified.signed_xml) if verified.signed_xml is not None else b""
     return SignatureCheck((), signer, trusted_cert is not None, signed)
+
+
+def _verifies(xml_bytes: bytes, certificate_pem: str) -> bool:
+    """Whether the document's signature verifies against ``certificate_pem`` (the one it
+    carries): unchanged since it was signed with that certificate's key."""
+    from signxml import XMLVerifier
+
+    try:
+        XMLVerifier().verify(xml_bytes, x509_cert=certificate_pem, parser=_parser())
+    except Exception:  # noqa: BLE001 — as verify()
+        return False
+    return True
 
 
 def _certificate(pem: bytes | str):

@@ -116,8 +116,14 @@ def test_a_signed_dcc_is_read_and_a_changed_one_refused(tmp_path):
     with pytest.raises(DccError, match="the signature does not verify: .*; it is not read"):
         read_polygon_dcc(write(tmp_path, changed, "c.xml"), SCHEMA)
     _, other = t.self_signed(tmp_path, "Someone else")
-    with pytest.raises(DccError, match="the signature does not verify: .*; it is not read"):
+    # intact, but signed by another than the one trusted: said so, not "does not verify"
+    with pytest.raises(DccError, match=r"signed by CN=Test lab DCC signing, which the trusted "
+                       r"certificate \(CN=Someone else\) does not vouch for: the document is "
+                       r"unchanged since it was signed, but not by the signer trusted; it is "
+                       r"not read"):
         read_polygon_dcc(write(tmp_path, signed, "o.xml"), SCHEMA, trusted_cert=other)
+    with pytest.raises(DccError, match="the signature does not verify: .*; it is not read"):
+        read_polygon_dcc(write(tmp_path, changed, "oc.xml"), SCHEMA, trusted_cert=other)
 
 
 def test_hostile_xml_reads_no_file_and_expands_no_entity(tmp_path):
