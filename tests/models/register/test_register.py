@@ -508,7 +508,9 @@ def _issue_at(url: str, start, render_s: float, queue) -> None:
     import time
 
     def slow_render(meta, head=""):
+        began = time.monotonic()
         time.sleep(render_s)  # a real PDF takes 0.3 … 9 s: rendered outside any lock
+        queue.put(("render", began, time.monotonic()))
         return f"%PDF {meta.certificate_number} {head}".encode()
 
     try:
@@ -534,10 +536,19 @@ def test_forty_processes_issuing_at_once_are_all_served(tmp_path):
                for _ in range(40)]
     for w in workers:
         w.start()
-    answers = [queue.get(timeout=600) for _ in workers]
+    answers, renders = [], []
+    while len(answers) < len(workers):
+        got = queue.get(timeout=600)
+        (renders if got[0] == "render" else answers).append(got)
     for w in workers:
         w.join(60)
     assert [a for a in answers if a[0] != "ok"] == []
+    # the renders ran side by side: a write lock held while rendering serialised them (the
+    # 60 s busy timeout would then still serve all 40, 12 s of renders in a row: only this
+    # tells #40's defect back)
+    overlapping = max(sum(1 for _, b, e in renders if b <= began < e)
+                      for _, began, _ in renders)
+    assert overlapping >= 10, overlapping
     assert sorted(n for _, n in answers) == [f"AB-2026-{i:04d}" for i in range(1, 41)]
     with Register(url) as reg:
         assert reg.problems == [] and reg.audit(pdfs=True) == []
