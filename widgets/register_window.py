@@ -143,7 +143,13 @@ class RegisterWindow(QDialog):
         #: the recovery dialog open (a test types into it)
         self.recovery_dialog: QDialog | None = None
         self.history_title = QLabel()
-        live(self.history_title.setText, tr("Select a certificate and press History"))
+        # before any history, a sentence in its place (not an empty plot with a 0–1 axis, nor
+        # a second box of words taking the list's room: at 200 % on a 1280×720 laptop the
+        # list showed one row)
+        live(self.history_title.setText, tr(
+            "Select a certificate and press History (or double-click it)"))
+        live(self.history_title.setToolTip, tr(
+            "The history: the instrument's figures over its calibrations, and its due date"))
         self.history_plot = pg.PlotWidget(background="w", viewBox=LazyMenuViewBox(), axisItems={
             "bottom": LocalDateAxis(orientation="bottom")})
         on_language_change(self, self.history_plot.getAxis("bottom").picture_again)
@@ -159,14 +165,6 @@ class RegisterWindow(QDialog):
         today = dt.date.today().toordinal() - EPOCH  # empty: the year up to today, in dates
         self.history_plot.setXRange((today - 365) * 86400.0, (today + 30) * 86400.0, padding=0)
         localise_plot_menus(self.history_plot)
-        # before any history: a sentence instead of an empty plot with a 0–1 axis
-        self.history_empty = QLabel()
-        live(self.history_empty.setText, tr("No history shown yet: select a certificate above "
-                                            "and press History (or double-click it) to see its "
-                                            "instrument's figures over time and its due date."))
-        self.history_empty.setWordWrap(True)
-        self.history_empty.setAlignment(Qt.AlignmentFlag.AlignCenter)
-        self.history_empty.setEnabled(False)
         self.history_plot.hide()
         self.figure_caption = QLabel()  # the figure's drop-down, labelled
         live(self.figure_caption.setText, tr("figure"))
@@ -211,6 +209,8 @@ class RegisterWindow(QDialog):
         lower_layout.setContentsMargins(0, 0, 0, 0)
         # the history's title on a line of its own, wrapped; its controls below, wrapping
         self.history_title.setWordWrap(True)
+        # two lines kept for it, wrapped or not (a splitter shrinks a wrapped label to less)
+        self.history_title.setMinimumHeight(2 * self.history_title.fontMetrics().lineSpacing())
         lower_layout.addWidget(self.history_title)
         row = FlowLayout()
         row.addWidget(self.figure_caption)
@@ -219,16 +219,22 @@ class RegisterWindow(QDialog):
         self.figure.hide()  # shown with a history (empty, it was a blank drop-down)
         interval_caption = QLabel()
         live(interval_caption.setText, tr("calibration interval"))
-        row.addWidget(interval_caption)
-        row.addWidget(self.interval)
-        row.addWidget(self.interval_button)
+        #: the interval is set for the instrument whose history is shown: shown with it
+        self.interval_row = (interval_caption, self.interval, self.interval_button)
+        for widget in self.interval_row:
+            row.addWidget(widget)
+            widget.hide()
         lower_layout.addLayout(row)
         lower_layout.addWidget(self.history_plot, 1)
-        lower_layout.addWidget(self.history_empty, 1)
-        splitter = QSplitter(Qt.Orientation.Vertical)
+        lower_layout.addStretch(0)
+        # the list takes the room until a history is asked for (show_history gives it half)
+        self.splitter = splitter = QSplitter(Qt.Orientation.Vertical)
         splitter.addWidget(upper)
         splitter.addWidget(lower)
-        splitter.setSizes([420, 300])
+        splitter.setStretchFactor(0, 1)
+        splitter.setStretchFactor(1, 0)
+        splitter.setCollapsible(1, False)  # the history's title stays in sight
+        splitter.setSizes([10_000, 1])
         layout = QVBoxLayout(self)
         layout.addLayout(top)
         state_row = QHBoxLayout()
@@ -290,7 +296,11 @@ class RegisterWindow(QDialog):
         for widget in (self.figure_caption, self.figure):
             widget.setVisible(bool(series))
         self.history_plot.show()
-        self.history_empty.hide()
+        for widget in self.interval_row:
+            widget.show()
+        upper, lower = self.splitter.sizes()
+        if lower < 0.45 * (upper + lower):  # the history asked for: half the room at least
+            self.splitter.setSizes([(upper + lower) // 2, (upper + lower + 1) // 2])
         self._draw_history(self.figure.currentData() or "")
         ends = [x for xs, _ in series.values() for x in xs]
         if due:

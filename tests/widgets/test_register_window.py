@@ -223,13 +223,13 @@ def test_the_history_is_labelled_and_empty_says_so_in_the_window_language(qtbot)
     view = RegisterWindow()
     qtbot.addWidget(view)
     view.show()
-    assert view.history_empty.isVisible() and not view.history_plot.isVisible()
-    assert "select a certificate" in view.history_empty.text()
+    assert not view.history_plot.isVisible()
+    assert view.history_title.text().startswith("Select a certificate and press History")
     assert not view.figure.isVisible() and not view.figure_caption.isVisible()
     day = dt.date(2026, 2, 1).toordinal()
     view.show_history("SN-1", {"corrected peak-to-peak (\")": ([day, day + 60], [0.8, 0.9])},
                       ["2026-02-01", "2026-04-02"], "2027-04-02", 365)
-    assert view.history_plot.isVisible() and not view.history_empty.isVisible()
+    assert view.history_plot.isVisible()
     assert view.figure.isVisible() and view.figure_caption.text() == "figure"
     assert view.figure.currentText() == "corrected peak-to-peak (\")"
     axis = view.history_plot.getAxis("bottom")
@@ -389,3 +389,27 @@ def test_verify_in_the_window_says_another_record_is_in_its_place(window, qtbot,
             ) in told[-1][1]
     with Register(window.certificates.register_url()) as register:
         assert not register.problems
+
+
+def test_the_list_has_the_room_until_a_history_is_asked_for(window, samples_dir, tmp_path,
+                                                             qtbot):
+    """day74: at 200 % on a 1280×720 laptop (the window 627×331) the list showed one row:
+    the history's empty area — a sentence, the interval row and a blank plot's room — held a
+    fixed share. Now the list takes the room until History is pressed, the interval row
+    (the shown instrument's) comes with the history, and the history then gets half."""
+    with window.certificates.open_register() as register:
+        issue_polygon(register, samples_dir, tmp_path, "a")
+    window.show_register()
+    dialog = window.register_window
+    dialog.resize(627, 331)
+    qtbot.waitUntil(lambda: dialog.isVisible())
+    qtbot.wait(50)
+    upper, lower = dialog.splitter.sizes()
+    assert upper > 4 * lower, (upper, lower)
+    assert lower >= dialog.history_title.sizeHint().height()  # its title stays in sight
+    assert not any(w.isVisible() for w in dialog.interval_row)
+    dialog.buttons["history"].click()
+    qtbot.wait(50)
+    upper, lower = dialog.splitter.sizes()
+    assert lower >= 0.45 * (upper + lower), (upper, lower)
+    assert all(w.isVisible() for w in dialog.interval_row)
