@@ -250,11 +250,12 @@ def write_compensation(path: str, result: PositioningResult, step: float = 0.0,
     table = compensation_table(result, step, tables)
     if fmt in CONTROLLERS:
         module = CONTROLLERS[fmt]
-        if fmt == "heidenhain":
-            files, what = module.write(table, options, name=os.path.basename(path))
+        stem = os.path.splitext(path)[0]
+        if fmt == "heidenhain":  # the .CMA beside the .COM: its path is said
+            files, what = module.write(table, options, name=os.path.basename(path),
+                                       cma_path=stem + ".CMA")
         else:
             files, what = module.write(table, options)
-        stem = os.path.splitext(path)[0]
         for suffix, text in files:  # every file made before any is written
             write_text_atomic(stem + suffix if suffix else path, text)
         return what

@@ -1,8 +1,11 @@
-"""What a controller table tells the one who loads it (outside review comp75): ISG's strict
-SGN16 bounds. Each number is checked against the log's own figures, computed here from the
-rows, not with the product's formulas."""
+"""What a controller table tells the one who loads it (outside review comp75): the files it
+names are the files written, where they are; ISG's strict SGN16 bounds. Each number is
+checked against the log's own figures, computed here from the rows, not with the product's
+formulas."""
 
 from __future__ import annotations
+
+import os
 
 import numpy as np
 import pytest
@@ -12,6 +15,7 @@ from models.positioning.compensation import compensation_table, write_compensati
 from models.positioning.controllers import CONTROLLERS
 from models.positioning.controllers.common import ControllerRuleError
 from models.readings.sheet import ReadingsSheet
+from tests import controller_emulators as emu
 
 isg, heidenhain = CONTROLLERS["isg"], CONTROLLERS["heidenhain"]
 
@@ -43,6 +47,41 @@ LINEAR = np.arange(0.0, 1000.0 + 1e-9, 50.0)
 OPTIONS = {"sinumerik": "", "fanuc": "", "heidenhain": "values=correction", "twincat": "",
            "isg": "", "mach4": "values=correction", "linuxcnc": "", "csv": ""}
 COMMENTED = {"csv": "#", "sinumerik": ";", "isg": "#", "twincat": "(*", "mach4": ";"}
+
+
+# -- F1: HEIDENHAIN's files are *.COM, named inside as on disk, both paths said ----------------
+def test_heidenhain_refuses_a_table_not_named_com_and_writes_nothing(tmp_path):
+    result = analysed(log_rows(LINEAR))
+    with pytest.raises(ControllerRuleError, match=r"\*\.COM files, named in the \.CMA .*No such "
+                                                  r"compensation table.*'OUT\.txt' would not be "
+                                                  r"loaded: name it OUT\.COM"):
+        write_compensation(str(tmp_path / "OUT.txt"), result, 0.0, "separate", "heidenhain",
+                           "values=correction")
+    assert os.listdir(tmp_path) == []
+    with pytest.raises(ControllerRuleError, match="name it X.COM"):
+        write_compensation(str(tmp_path / "X"), result, 0.0, "separate", "heidenhain",
+                           "values=correction")
+
+
+@pytest.mark.parametrize("name", ["x_axis.com", "X_AXIS.COM", "Table.Com"])
+def test_heidenhain_names_inside_are_the_files_written_and_both_paths_are_said(tmp_path, name):
+    result = analysed(log_rows(LINEAR))
+    path = tmp_path / name
+    what = write_compensation(str(path), result, 0.0, "separate", "heidenhain", "values=correction")
+    on_disk = sorted(os.listdir(tmp_path))
+    cma_file = name.rsplit(".", 1)[0] + ".CMA"
+    assert on_disk == sorted([name, cma_file])
+    com, cma = path.read_text(), (tmp_path / cma_file).read_text()
+    assert com.splitlines()[0] == f"BEGIN {name} MM"
+    assert cma.splitlines()[0] == f"BEGIN {cma_file}"
+    active = [line.split() for line in cma.splitlines() if "*" in line]
+    assert active == [["0", "*", name]]  # the .COM the control will look for: the one on disk
+    assert active[0][2] in on_disk
+    head = what.splitlines()[0]
+    assert str(tmp_path / cma_file) in head and name in head
+    # and the control as read loads it and applies the correction at a target
+    c = emu.load_heidenhain(com, cma, "X", "correction")
+    assert c.offset(250.0, 1) == pytest.approx(-(pitch(250.0) - 3.0) / 1000, abs=1e-6)
 
 
 # -- F4: ISG: MIN(SGN16) < value < MAX(SGN16) -----------------------------------------------------
