@@ -39,6 +39,7 @@ from models.positioning.controllers.common import (
     Option,
     close_turn,
     equidistant_step,
+    header_notes,
     in_target_unit,
     parse_options,
     refuse,
@@ -128,9 +129,10 @@ def lint(plan: Plan) -> Plan:
     return plan
 
 
-def render(plan: Plan) -> str:
+def render(plan: Plan, notes: list[str] | tuple[str, ...] = ()) -> str:
+    """The list; ``notes``: comment lines for its header ("#" lines)."""
     out = ["# AngleBench: leadscrew error compensation (kw.ssfk); values = actual - set point "
-           "in 0.1 um (0.0001 deg)",
+           "in 0.1 um (0.0001 deg)", *notes,
            f"kopf.log_achs_nr                 {plan.number}",
            f"kopf.log_achs_name               {plan.name}",
            "kw.ssfk.unit                     1",
@@ -151,4 +153,4 @@ def write(table, options) -> tuple[list[tuple[str, str]], str]:
     what = message(QT_TR_NOOP("ISG leadscrew error compensation list, axis {axis}, {n} points{sides}"),
                    axis=plan.name, n=plan.pos.size,
                    sides=message(QT_TR_NOOP(", bilateral")) if plan.neg is not None else "")
-    return [("", render(plan))], what
+    return [("", render(plan, header_notes(table, "# ")))], what

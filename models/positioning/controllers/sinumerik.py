@@ -42,6 +42,7 @@ from models.positioning.controllers.common import (
     Option,
     close_turn,
     equidistant_step,
+    header_notes,
     in_target_unit,
     parse_options,
     refuse,
@@ -137,7 +138,8 @@ def lint(plan: Plan) -> Plan:
     return plan
 
 
-def render(plan: Plan) -> str:
+def render(plan: Plan, notes: list[str] | tuple[str, ...] = ()) -> str:
+    """The file; ``notes``: comment lines for its header (";" lines)."""
     n, ax = plan.system - 1, plan.axis
     out = ["%_N_AX_EEC_INI",
            "; AngleBench: measuring system error compensation (K3); value = measured error "
@@ -147,7 +149,7 @@ def render(plan: Plan) -> str:
            (f"; zero at the reference point {plan.reference:g} (K3); its error {plan.reference_shift:.7g} "
             "goes to MD34090 REFP_MOVE_DIST_CORR" if np.isfinite(plan.reference) else
             "; written as measured: K3 recommends zero compensation at the reference point "
-            "(option reference)"),
+            "(option reference)"), *notes,
            "CHANDATA(1)"]
     out += [f"$AA_ENC_COMP[{n},{i},{ax}]={v:.7f}" for i, v in enumerate(plan.values)]
     out += [f"$AA_ENC_COMP_STEP[{n},{ax}]={plan.step:.7g}",
@@ -170,4 +172,5 @@ def write(table, options) -> tuple[list[tuple[str, str]], str]:
     else:
         ref = message(QT_TR_NOOP("written as measured: the manual (K3) recommends zero compensation "
                                  "at the reference point (option reference=POSITION)"))
-    return [("", render(plan))], joined((what, "; " if plan.note else "", plan.note, "; ", ref))
+    return ([("", render(plan, header_notes(table)))],
+            joined((what, "; " if plan.note else "", plan.note, "; ", ref)))

@@ -1,15 +1,18 @@
 """What a controller table tells the one who loads it (outside review comp75): the files it
-names are the files written, where they are; ISG's strict SGN16 bounds. Each number is
-checked against the log's own figures, computed here from the rows, not with the product's
-formulas."""
+names are the files written, where they are; that its positions are machine coordinates; a
+table from one approach direction; ISG's strict SGN16 bounds; a table that ends before the
+last target. Each number is checked against the log's own figures, computed here from the
+rows, not with the product's formulas."""
 
 from __future__ import annotations
 
+import math
 import os
 
 import numpy as np
 import pytest
 
+from app.main import main
 from models.positioning.analysis import POSITIONING
 from models.positioning.compensation import compensation_table, write_compensation
 from models.positioning.controllers import CONTROLLERS
@@ -84,6 +87,75 @@ def test_heidenhain_names_inside_are_the_files_written_and_both_paths_are_said(t
     assert c.offset(250.0, 1) == pytest.approx(-(pitch(250.0) - 3.0) / 1000, abs=1e-6)
 
 
+def test_the_command_line_names_both_files_and_says_the_notes_on_their_own_lines(tmp_path,
+                                                                                 capsys):
+    log = tmp_path / "log.csv"
+    log.write_text("target,run,direction,deviation\n" + "\n".join(
+        ",".join(r[:4]) for r in log_rows(LINEAR)) + "\n")
+    common = ["analyze", "positioning", str(log), "--target-unit", "mm", "--deviation-unit", "um",
+              "--compensation-format", "heidenhain", "--compensation-tables", "separate",
+              "--compensation-controller-options", "values=correction"]
+    capsys.readouterr()
+    assert main([*common, "--table", str(tmp_path / "OUT.txt")]) == 2
+    assert "name it OUT.COM" in capsys.readouterr().err
+    assert not (tmp_path / "OUT.txt").exists() and not (tmp_path / "OUT.CMA").exists()
+    assert main([*common, "--table", str(tmp_path / "x.com")]) == 0
+    err = capsys.readouterr().err.splitlines()
+    said = [line for line in err if line.startswith("HEIDENHAIN")]
+    assert len(said) == 1
+    assert f"in {tmp_path / 'x.CMA'}" in said[0] and said[0].endswith(f"written to {tmp_path / 'x.com'}")
+    following = err[err.index(said[0]) + 1]
+    assert following.startswith("the positions are the log's targets, taken as machine coordinates")
+
+
+# -- F2: the positions are machine coordinates: said with every format, in every header that can
+@pytest.mark.parametrize("fmt", list(OPTIONS))
+def test_every_table_says_its_positions_are_machine_coordinates(tmp_path, fmt):
+    result = analysed(log_rows(LINEAR))
+    tables = "bidirectional" if fmt in ("sinumerik", "fanuc") else "separate"
+    path = tmp_path / ("t.COM" if fmt == "heidenhain" else "t.txt")
+    what = write_compensation(str(path), result, 0.0, tables, fmt, OPTIONS[fmt])
+    assert "taken as machine coordinates (from the machine datum): a log taken in a work offset " \
+           "gives a table shifted by that offset" in what
+    if fmt in COMMENTED:
+        said = [line for line in path.read_text().splitlines() if "machine coordinates" in line]
+        assert len(said) == 1 and said[0].startswith(COMMENTED[fmt])
+
+
+def test_the_headers_leave_the_tables_readable_by_the_controllers(tmp_path):
+    """The comment lines added are comments to each controller as read: the tables load and
+    give the same correction as without them."""
+    result = analysed(log_rows(LINEAR))
+    for fmt, load in (("sinumerik", emu.load_sinumerik), ("isg", emu.load_isg),
+                      ("twincat", emu.load_twincat), ("mach4", emu.load_mach4)):
+        tables = "bidirectional" if fmt == "sinumerik" else "separate"
+        path = tmp_path / f"{fmt}.txt"
+        write_compensation(str(path), result, 0.0, tables, fmt, OPTIONS[fmt])
+        c = load(path.read_text())
+        want = -(pitch(300.0) - (0 if tables == "bidirectional" else 3.0)) / 1000
+        assert c.offset(300.0, 1) == pytest.approx(want, abs=1e-4 if fmt == "isg" else 1e-6), fmt
+
+
+# -- F3: one approach direction measured ---------------------------------------------------------
+@pytest.mark.parametrize("fmt", ["twincat", "isg", "sinumerik", "heidenhain", "mach4", "csv"])
+def test_a_backward_only_log_says_its_one_table_serves_both_directions(tmp_path, fmt):
+    result = analysed(log_rows(LINEAR, directions="-"))
+    path = tmp_path / ("b.COM" if fmt == "heidenhain" else "b.txt")
+    what = write_compensation(str(path), result, 0.0, "separate", fmt, OPTIONS[fmt])
+    said = ("only the backward (−) approach was measured: this one table is applied to both "
+            "directions, and approached forward (+) the axis is left off by the reversal "
+            "(not measured)")
+    assert said in what
+    if fmt in COMMENTED:
+        assert said in path.read_text()
+    forward = write_compensation(str(tmp_path / "f.txt"), analysed(log_rows(LINEAR, directions="+")),
+                                 0.0, "separate", "twincat", "")
+    assert "only the forward (+) approach was measured" in forward
+    both = write_compensation(str(tmp_path / "s.txt"), analysed(log_rows(LINEAR)), 0.0, "separate",
+                              "twincat", "")
+    assert "approach was measured" not in both
+
+
 # -- F4: ISG: MIN(SGN16) < value < MAX(SGN16) -----------------------------------------------------
 def test_isg_values_lie_strictly_inside_the_types_bounds():
     lo16, hi16 = int(np.iinfo(np.int16).min), int(np.iinfo(np.int16).max)  # −32768, 32767
@@ -126,3 +198,17 @@ def test_isg_refuses_an_error_of_3_2767_mm_through_the_writer(tmp_path):
             with pytest.raises(ControllerRuleError, match="a value of 32767 units"):
                 write_compensation(str(path), result, 0.0, "separate", "isg", "")
             assert not path.exists()
+
+
+# -- F8: a step that does not divide the span --------------------------------------------------
+@pytest.mark.parametrize("fmt", ["twincat", "csv", "sinumerik"])
+def test_a_table_that_ends_before_the_last_target_says_where_and_what_holds_beyond(tmp_path, fmt):
+    result = analysed(log_rows(LINEAR))
+    tables = "bidirectional" if fmt == "sinumerik" else "separate"
+    end = math.floor(1000 / 70) * 70  # 980
+    what = write_compensation(str(tmp_path / "t.txt"), result, 70.0, tables, fmt, OPTIONS[fmt])
+    said = (f"the table ends at {end}, {1000 - end} before the last target 1000 (the step does not "
+            f"divide the targets' span): beyond {end} the controller applies the value at {end}")
+    assert said in what and said in (tmp_path / "t.txt").read_text()
+    what = write_compensation(str(tmp_path / "u.txt"), result, 50.0, tables, fmt, OPTIONS[fmt])
+    assert "the table ends at" not in what
