@@ -18,8 +18,8 @@ import numpy as np
 from models.messages import QT_TR_NOOP, message
 from models.positioning.model import DEVIATION_UNITS
 
-__all__ = ["ControllerRuleError", "Option", "close_turn", "equidistant_step", "header_notes",
-           "in_target_unit", "parse_options", "table_notes"]
+__all__ = ["ControllerRuleError", "Option", "backlash_sense", "close_turn", "equidistant_step",
+           "header_notes", "in_target_unit", "parse_options", "reversal_and_backlash", "table_notes"]
 
 
 class ControllerRuleError(ValueError):
@@ -194,3 +194,17 @@ def header_notes(table, comment: str = "; ", extra: tuple[str, ...] = ()) -> lis
     """:func:`table_notes` (and ``extra``) as the file's comment lines, in English."""
     return [f"{comment}{str(n)}" for n in (*table_notes(table), *extra)]
 
+
+def reversal_and_backlash(table) -> tuple[float, float]:
+    """Of separate tables (compensation = −x̄): the mean reversal over the targets,
+    mean(x̄↑ − x̄↓), in the deviation unit, and the backlash that takes it out, −that, in the
+    axis unit: positive when the axis stops short on reversal (x̄↑ below x̄↓), "the encoder
+    leading the machine part (normal situation)" (SINUMERIK 808D Parameter Manual, MD32450)."""
+    reversal = float(np.mean(np.asarray(table.backward, dtype=float)
+                             - np.asarray(table.forward, dtype=float)))
+    return reversal, float(-in_target_unit(np.array([reversal]), table.deviation_unit)[0])
+
+
+def backlash_sense(backlash: float) -> str:
+    return (message(QT_TR_NOOP("positive: the axis stops short on reversal, the normal case"))
+            if backlash >= 0 else message(QT_TR_NOOP("negative: the axis overshoots on reversal")))

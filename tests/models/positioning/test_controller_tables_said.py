@@ -1,8 +1,10 @@
-"""What a controller table tells the one who loads it (outside review comp75): the files it
-names are the files written, where they are; that its positions are machine coordinates; a
-table from one approach direction; ISG's strict SGN16 bounds; a table that ends before the
-last target. Each number is checked against the log's own figures, computed here from the
-rows, not with the product's formulas."""
+"""What a controller table tells the one who loads it (outside review comp75, F1–F8): the
+files it names are the files written, where they are; that its positions are machine
+coordinates; a table from one approach direction; ISG's strict SGN16 bounds; SINUMERIK's
+modulo table from 0°, the reversal for MD32450 and the sign of the reference shift; the unit
+an inch control needs; a table that ends before the last target. Each number is checked
+against the log's own figures, computed here from the rows, not with the product's
+formulas."""
 
 from __future__ import annotations
 
@@ -15,7 +17,7 @@ import pytest
 from app.main import main
 from models.positioning.analysis import POSITIONING
 from models.positioning.compensation import compensation_table, write_compensation
-from models.positioning.controllers import CONTROLLERS
+from models.positioning.controllers import CONTROLLERS, fanuc, sinumerik
 from models.positioning.controllers.common import ControllerRuleError
 from models.readings.sheet import ReadingsSheet
 from tests import controller_emulators as emu
@@ -198,6 +200,111 @@ def test_isg_refuses_an_error_of_3_2767_mm_through_the_writer(tmp_path):
             with pytest.raises(ControllerRuleError, match="a value of 32767 units"):
                 write_compensation(str(path), result, 0.0, "separate", "isg", "")
             assert not path.exists()
+
+
+# -- F5: SINUMERIK ---------------------------------------------------------------------------------
+def rotary_error(t):
+    """″: eccentricity and a 4/rev term; periodic in 360°."""
+    r = np.radians(t)
+    return 8.0 * np.sin(r) + 3.0 * np.sin(4 * r + 0.3)
+
+
+def test_sinumerik_writes_a_turn_measured_from_minus_180_from_0_with_the_same_values():
+    targets = np.arange(-180.0, 180.0 + 1e-9, 30.0)
+    table = compensation_table(analysed(log_rows(targets, error=rotary_error, lost=5.0),
+                                        "deg", "arcsec"), tables="bidirectional")
+    [(_, text)], what = sinumerik.write(table, "modulo=360")
+    assert "$AA_ENC_COMP_MIN[0,AX1]=0\n" in text and "$AA_ENC_COMP_MAX[0,AX1]=360\n" in text
+    assert "the turn is written from 0" in what
+    c = emu.load_sinumerik(text)
+    for t in targets[1:-1]:  # the log's own means (the bidirectional mean is the error)
+        assert c.offset(float(t) % 360, 1) == pytest.approx(-rotary_error(t) / 3600, abs=1e-7), t
+    # ±180 measured twice: the mean of both ends
+    assert c.offset(180.0, 1) == pytest.approx(-rotary_error(180.0) / 3600, abs=1e-7)
+    # a turn whose points miss 0 is written from its first point, and said so
+    shifted = np.arange(5.0, 365.0 + 1e-9, 30.0)
+    table = compensation_table(analysed(log_rows(shifted, error=rotary_error, lost=5.0),
+                                        "deg", "arcsec"), tables="bidirectional")
+    [(_, text)], what = sinumerik.write(table, "modulo=360")
+    assert "$AA_ENC_COMP_MIN[0,AX1]=5\n" in text
+    assert "the turn is written 5…365: 0 is not one of its points" in what
+
+
+@pytest.mark.parametrize("lost, sense", [(6.0, "positive: the axis stops short on reversal"),
+                                         (-4.0, "negative: the axis overshoots on reversal")])
+def test_refused_separate_tables_state_the_mean_reversal_for_the_backlash_setting(lost, sense):
+    rows = log_rows(LINEAR, lost=lost)
+    # the log's own reversal: per target, mean of the + rows minus mean of the − rows
+    dev = {(r[0], r[2]): [] for r in rows}
+    for r in rows:
+        dev[(r[0], r[2])].append(float(r[3]))
+    reversal = np.mean([np.mean(dev[(t, "+")]) - np.mean(dev[(t, "-")])
+                        for t in {r[0] for r in rows}])
+    assert reversal == pytest.approx(-lost)
+    table = compensation_table(analysed(rows), tables="separate")
+    with pytest.raises(ControllerRuleError) as refused:
+        sinumerik.write(table, "")
+    said = str(refused.value)
+    assert f"mean(x̄↑ − x̄↓), is {reversal:+.4g} um" in said
+    assert f"MD32450 = {-reversal / 1000:+.6g} mm ({sense}" in said
+    with pytest.raises(ControllerRuleError) as refused:
+        fanuc.write(table, "detection_unit=0.0005")
+    said = str(refused.value)
+    assert "parameter 1851" in said and f"is {reversal:+.4g} um" in said
+    assert f"{-reversal / 1000 / 0.0005:+.4g} detection units of 0.0005 ({sense}" in said
+
+
+# -- F6: the reference shift: which way it leaves the axis -------------------------------------
+def test_sinumerik_reference_shift_says_which_way_the_axis_is_left_and_what_a_wrong_sign_gives():
+    targets = np.arange(-200.0, 600.0 + 1e-9, 50.0)
+    result = analysed(log_rows(targets))
+    table = compensation_table(result, tables="bidirectional")
+    [(_, text)], what = sinumerik.write(table, "reference=300")
+    c = emu.load_sinumerik(text)
+    # through the table the axis stands at target + x̄(t) + offset(t): the same everywhere
+    left = {t: pitch(t) / 1000 + c.offset(t, 1) for t in targets}
+    assert np.ptp(list(left.values())) < 1e-6
+    shift = pitch(300.0) / 1000  # the log's error at the reference point, mm
+    assert left[0.0] == pytest.approx(shift, abs=1e-6)
+    assert f"left {shift:+.6g} (axis unit) off at every position (actual − target)" in what
+    assert "MD34090 REFP_MOVE_DIST_CORR" in what and "not verified" in what
+    assert f"{2 * shift:+.6g} means the sign was wrong" in what
+    assert f"left {shift:+.6g} (axis unit) off" in text
+
+
+# -- F7: inch controls ---------------------------------------------------------------------------
+def test_sinumerik_says_its_table_is_metric_and_what_an_inch_control_needs():
+    table = compensation_table(analysed(log_rows(LINEAR)), tables="bidirectional")
+    [(_, text)], what = sinumerik.write(table, "")
+    said = ("positions and values in mm: a control with MD10240 SCALING_SYSTEM_IS_METRIC = 0 reads "
+            "them in inches (25.4 times too large): for it, divide the positions, the step and the "
+            "values by 25.4")
+    assert said in what and f"; {said}" in text
+    rotary = compensation_table(analysed(log_rows(np.arange(0.0, 360.0 + 1e-9, 30.0),
+                                                  error=rotary_error), "deg", "arcsec"),
+                                tables="bidirectional")
+    [(_, text)], what = sinumerik.write(rotary, "modulo=360")
+    assert "positions and values in degrees" in what and "MD10240" not in text
+
+
+def test_fanuc_says_the_detection_unit_is_in_mm_and_an_inch_machine_gives_it_so():
+    inch = 25.4
+    targets = np.arange(0.0, 40 * inch + 1e-9, 2 * inch)  # every 2 in over 40 in
+    result = analysed(log_rows(targets, lost=0.0))
+    table = compensation_table(result, tables="bidirectional")
+    [(_, tape)], what = fanuc.write(table, "detection_unit=0.00254")  # 0.0001 in
+    assert ("values and 3624 in detection units of 0.00254 mm (the table is metric): on an inch "
+            "machine give detection_unit in mm, e.g. 0.0001 in = 0.00254") in what
+    assert "N3624A1P20000\n" in tape  # 2 in / 0.0001 in
+    # each increment in 0.0001 in, from the log's errors in inches
+    compensation_in = -pitch(targets) / 1000 / inch
+    counts = np.round((compensation_in - compensation_in[0]) / 0.0001).astype(int)
+    want = np.diff(counts)
+    got = [int(line.split("P")[1]) for line in tape.splitlines() if line.startswith("N1")]
+    assert got == list(want)
+    option = next(o for o in fanuc.OPTIONS if o.key == "detection_unit")
+    assert "detection unit in mm or degrees" in option.help
+    assert "(an inch machine's in mm: 0.00254)" in option.help
 
 
 # -- F8: a step that does not divide the span --------------------------------------------------
