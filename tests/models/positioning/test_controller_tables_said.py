@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import os
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -319,3 +320,12 @@ def test_a_table_that_ends_before_the_last_target_says_where_and_what_holds_beyo
     assert said in what and said in (tmp_path / "t.txt").read_text()
     what = write_compensation(str(tmp_path / "u.txt"), result, 50.0, tables, fmt, OPTIONS[fmt])
     assert "the table ends at" not in what
+
+
+def test_the_guide_says_machine_coordinates_and_inch_controls():
+    guide = (Path(__file__).resolve().parents[3] / "docs" / "user-guide" / "positioning.md").read_text(
+        encoding="utf-8")
+    section = guide[guide.index("## Compensation tables"):guide.index("## Before and after")]
+    assert "machine coordinates" in section and "work offset" in section
+    assert "MD10240" in section and "0.00254" in section
+    assert "−32767…+32766" in section and "*.COM" in section
