@@ -534,8 +534,12 @@ def run_analyze(argv: list[str]) -> int:
             _say(rendered(message(QT_TR_NOOP("anglebench analyze: cannot write {path}: {reason}"),
                                   path=args.table, reason=str(exc)), words))
             return 1
-        _say(rendered(message(QT_TR_NOOP("{what} written to {path}"), what=what,
+        # the first line says what was written; the next ones what to know of it
+        said, _, notes = rendered(what, words).partition("\n")
+        _say(rendered(message(QT_TR_NOOP("{what} written to {path}"), what=said,
                               path=args.table), words))
+        for note in filter(None, notes.split("\n")):
+            _say(note)
     if interpolator is not None:
         try:
             said = kind.write_signal_table(args, result, interpolator)

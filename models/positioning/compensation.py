@@ -34,14 +34,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, joined, lines, message
 from models.positioning.controllers.common import (
     ControllerRuleError,
     Option,
     close_turn,
     equidistant_step,
+    header_notes,
     parse_options,
     refuse,
+    table_notes,
 )
 from models.positioning.model import DEVIATION_UNITS, PositioningResult
 from models.project.atomic_write import write_text_atomic
@@ -71,6 +73,7 @@ class CompensationTable:
     deviation_unit: str
     spacing: str  # "at the targets" or "uniform step …"
     form: str  # "separate", "bidirectional", "forward only" or "backward only"
+    last_target: float = float("nan")  # the log's last target (the table may end before it)
 
 
 def _resample(positions: np.ndarray, values: np.ndarray, grid: np.ndarray,
@@ -129,7 +132,7 @@ def compensation_table(result: PositioningResult, step: float = 0.0,
         elif backward is None:
             form = "forward only"
     return CompensationTable(grid, forward, backward, result.target_unit, result.deviation_unit,
-                             spacing, form)
+                             spacing, form, float(positions[-1]))
 
 
 def compensation_csv(table: CompensationTable) -> str:
@@ -139,6 +142,8 @@ def compensation_csv(table: CompensationTable) -> str:
               "(deviation = actual - target, ISO 230-2); commanded = target + compensation\n")
     out.write(f"# spacing: {table.spacing}\n")
     out.write(f"# {FORMS[table.form]}\n")
+    for line in header_notes(table, "# "):
+        out.write(f"{line}\n")
     if table.backward is None:
         out.write(f"position_{tu},compensation_{unit}\n")
         for p, c in zip(table.positions, table.forward, strict=True):
@@ -242,22 +247,25 @@ def check_compensation(result: PositioningResult, step: float = 0.0, tables: str
 
 def write_compensation(path: str, result: PositioningResult, step: float = 0.0,
                        tables: str = "separate", fmt: str = "csv", options: str = "") -> str:
-    """Write the table (atomically); returns a line saying what was written. ``options``
+    """Write the table (atomically); returns what was written, on its first line, and on the
+    next ones what the user must know of the table (:func:`table_notes`). ``options``
     (``key=value, …``) are the controller's (models/positioning/controllers); a table the
     controller would reject or misapply is refused naming the rule, and nothing is written."""
     from models.positioning.controllers import CONTROLLERS
 
     table = compensation_table(result, step, tables)
+    notes = table_notes(table)  # said with every format: machine coordinates, one direction, end
     if fmt in CONTROLLERS:
         module = CONTROLLERS[fmt]
-        if fmt == "heidenhain":
-            files, what = module.write(table, options, name=os.path.basename(path))
+        stem = os.path.splitext(path)[0]
+        if fmt == "heidenhain":  # the .CMA beside the .COM: its path is said
+            files, what = module.write(table, options, name=os.path.basename(path),
+                                       cma_path=stem + ".CMA")
         else:
             files, what = module.write(table, options)
-        stem = os.path.splitext(path)[0]
         for suffix, text in files:  # every file made before any is written
             write_text_atomic(stem + suffix if suffix else path, text)
-        return what
+        return _with_notes(what, notes)
     if fmt == "linuxcnc":
         text, note = linuxcnc_comp_file(table, options)
         what = message(QT_TR_NOOP("LinuxCNC compensation file (COMP_FILE_TYPE = 0), {n} points "
@@ -270,4 +278,10 @@ def write_compensation(path: str, result: PositioningResult, step: float = 0.0,
                        n=table.positions.size, form=message(FORMS[table.form]),
                        spacing=table.spacing)
     write_text_atomic(path, text)
-    return what
+    return _with_notes(what, notes)
+
+
+def _with_notes(what: str, notes: list[str]) -> str:
+    """What was written, on its first line; what the user must know of it on the next ones
+    (the command line prints "… written to PATH" after the first)."""
+    return lines((what, *notes))

@@ -126,5 +126,6 @@ class PositioningPresenter(WorkbenchPresenter):
                            tr("{path}: {reason}. Nothing else was changed.").format(
                                path=path, reason=exc.strerror or exc))
             return ""
-        self.view.show_status(tr("{what} written").format(what=translated(what)))
+        said, *notes = translated(what).split("\n")  # what was written, then what to know of it
+        self.view.show_status("; ".join([tr("{what} written").format(what=said), *notes]))
         return what

@@ -84,6 +84,12 @@ class PositioningView(WorkbenchView):
         dialog = QDialog(self)
         dialog.setWindowTitle(tr("{controller}: controller options").format(controller=controller))
         form = QFormLayout(dialog)
+        # what every controller assumes of the log, said where the table is decided (comp75 F2)
+        datum = QLabel(tr("Targets must be machine coordinates: a log in a work offset gives a "
+                          "shifted table."))
+        datum.setObjectName("machine_coordinates")
+        datum.setWordWrap(True)
+        form.addRow(datum)
         edits = {}
         for key, help_text, value in fields:
             edit = QLineEdit(value)

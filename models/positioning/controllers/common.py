@@ -18,8 +18,8 @@ import numpy as np
 from models.messages import QT_TR_NOOP, message
 from models.positioning.model import DEVIATION_UNITS
 
-__all__ = ["ControllerRuleError", "Option", "close_turn", "equidistant_step",
-           "in_target_unit", "parse_options"]
+__all__ = ["ControllerRuleError", "Option", "backlash_sense", "close_turn", "equidistant_step",
+           "header_notes", "in_target_unit", "parse_options", "reversal_and_backlash", "table_notes"]
 
 
 class ControllerRuleError(ValueError):
@@ -151,3 +151,60 @@ def close_turn(controller: str, positions: np.ndarray, columns: list[np.ndarray]
                            end=f"{end:g}")
         out.append(full)
     return grid, out, note
+
+
+def table_notes(table) -> list[str]:
+    """What the user must know of any table before loading it (said in the export's message
+    and, where the format has comments, in the file's header):
+
+    * its positions are the log's targets, taken as machine coordinates: the controllers look
+      the table up at the machine position (HEIDENHAIN: AXISPOS "with respect to the machine
+      datum"; SINUMERIK: $AA_ENC_COMP_MIN "the axis position at which the table begins";
+      TwinCAT: the uncorrected set position), so a log taken in a work offset gives a table
+      shifted by that offset — nothing is assumed of an offset the log does not state;
+    * one direction measured: the one table is applied to both directions (the other approach
+      is left off by the reversal, which was not measured);
+    * a step that does not divide the targets' span: the table ends before the last target,
+      where the controller applies the table's end value."""
+    notes: list[str] = [message(QT_TR_NOOP(
+        "the positions are the log's targets, taken as machine coordinates (from the machine "
+        "datum): a log taken in a work offset gives a table shifted by that offset"))]
+    form = getattr(table, "form", "")
+    if form in ("forward only", "backward only"):
+        notes.append(message(
+            QT_TR_NOOP("only the {measured} approach was measured: this one table is applied to both "
+                       "directions, and approached {other} the axis is left off by the reversal "
+                       "(not measured)"),
+            measured=message(QT_TR_NOOP("forward (+)")) if form == "forward only" else
+            message(QT_TR_NOOP("backward (−)")),
+            other=message(QT_TR_NOOP("backward (−)")) if form == "forward only" else
+            message(QT_TR_NOOP("forward (+)"))))
+    last_target = float(getattr(table, "last_target", float("nan")))
+    end = float(np.asarray(table.positions)[-1])
+    if np.isfinite(last_target) and last_target - end > 1e-9 * max(1.0, abs(last_target)):
+        notes.append(message(
+            QT_TR_NOOP("the table ends at {end}, {gap} before the last target {last} (the step "
+                       "does not divide the targets' span): beyond {end} the controller applies the "
+                       "value at {end}; a step that divides the span ends the table at {last}"),
+            end=f"{end:g}", gap=f"{last_target - end:g}", last=f"{last_target:g}"))
+    return notes
+
+
+def header_notes(table, comment: str = "; ", extra: tuple[str, ...] = ()) -> list[str]:
+    """:func:`table_notes` (and ``extra``) as the file's comment lines, in English."""
+    return [f"{comment}{str(n)}" for n in (*table_notes(table), *extra)]
+
+
+def reversal_and_backlash(table) -> tuple[float, float]:
+    """Of separate tables (compensation = −x̄): the mean reversal over the targets,
+    mean(x̄↑ − x̄↓), in the deviation unit, and the backlash that takes it out, −that, in the
+    axis unit: positive when the axis stops short on reversal (x̄↑ below x̄↓), "the encoder
+    leading the machine part (normal situation)" (SINUMERIK 808D Parameter Manual, MD32450)."""
+    reversal = float(np.mean(np.asarray(table.backward, dtype=float)
+                             - np.asarray(table.forward, dtype=float)))
+    return reversal, float(-in_target_unit(np.array([reversal]), table.deviation_unit)[0])
+
+
+def backlash_sense(backlash: float) -> str:
+    return (message(QT_TR_NOOP("positive: the axis stops short on reversal, the normal case"))
+            if backlash >= 0 else message(QT_TR_NOOP("negative: the axis overshoots on reversal")))

@@ -43,11 +43,13 @@ import numpy as np
 from models.messages import QT_TR_NOOP, joined, message
 from models.positioning.controllers.common import (
     Option,
+    backlash_sense,
     close_turn,
     equidistant_step,
     in_target_unit,
     parse_options,
     refuse,
+    reversal_and_backlash,
 )
 from models.positioning.model import DEVIATION_UNITS
 
@@ -56,7 +58,8 @@ SOURCE = "FANUC Parameter Manual, pitch error compensation 3620-3625"
 OPTIONS = (
     Option("axis", "int", 1, QT_TR_NOOP("controlled axis number of the parameter tape (A1, A2 …)"),
            minimum=1),
-    Option("detection_unit", "float", 0.001, QT_TR_NOOP("detection unit in mm or degrees, e.g. 0.001"),
+    Option("detection_unit", "float", 0.001, QT_TR_NOOP("detection unit in mm or degrees, e.g. 0.001 "
+                                                        "(an inch machine's in mm: 0.00254)"),
            minimum=1e-09),
     Option("magnification", "int", 1, QT_TR_NOOP("parameter 3623, pitch error compensation magnification"),
            minimum=1),
@@ -102,7 +105,8 @@ def build(table, options) -> Plan:
         raise refuse(NAME, message(QT_TR_NOOP("one table ({source})"), source=SOURCE),
                      message(QT_TR_NOOP("export one table from the bidirectional mean; the "
                                         "reversal belongs in parameter 1851 (bidirectional pitch "
-                                        "error compensation, 3605#0, is not written)")))
+                                        "error compensation, 3605#0, is not written): {reversal}"),
+                             reversal=_mean_reversal(table, o["detection_unit"])))
     if o["detection_unit"] <= 0 or o["magnification"] < 1:
         raise refuse(NAME, "3623", message(QT_TR_NOOP("detection unit and magnification must be "
                                                       "positive")))
@@ -140,6 +144,28 @@ def build(table, options) -> Plan:
                 values, o["value_limit"], o["max_points"],
                 f"{comp[r] * DEVIATION_UNITS[table.deviation_unit][1]:.3g} {table.deviation_unit}",
                 o["series"].lower())
+
+
+def _mean_reversal(table, detection_unit: float) -> str:
+    """The mean reversal over the targets and parameter 1851's value for it, in detection
+    units (positive when the axis stops short on reversal)."""
+    reversal, backlash = reversal_and_backlash(table)
+    return message(QT_TR_NOOP("the mean reversal over the targets, mean(x̄↑ − x̄↓), is {reversal} "
+                              "{deviation_unit}, {units} detection units of {detection_unit} "
+                              "({sense})"),
+                   reversal=f"{reversal:+.4g}", deviation_unit=table.deviation_unit,
+                   units=f"{backlash / detection_unit:+.4g}", detection_unit=f"{detection_unit:g}",
+                   sense=backlash_sense(backlash))
+
+
+def units_text(plan: Plan, rotary_unit: bool) -> str:
+    """The detection unit the values count, and what an inch machine needs."""
+    if rotary_unit:
+        return message(QT_TR_NOOP("values in detection units of {du}°"),
+                       du=f"{plan.detection_unit:g}")
+    return message(QT_TR_NOOP("values and 3624 in detection units of {du} mm (the table is "
+                              "metric): on an inch machine give detection_unit in mm, e.g. "
+                              "0.0001 in = 0.00254"), du=f"{plan.detection_unit:g}")
 
 
 def lint(plan: Plan) -> Plan:
@@ -197,4 +223,4 @@ def write(table, options) -> tuple[list[tuple[str, str]], str]:
                               "({offset}) is not pitch error: it is left out of the table"),
                    axis=plan.axis, first=plan.most_negative, last=plan.most_positive,
                    ref=plan.reference_number, offset=plan.reference_deviation)
-    return [("", render(plan))], joined((what,))
+    return [("", render(plan))], joined((what, "; ", units_text(plan, table.target_unit == "deg")))

@@ -10,7 +10,13 @@ the axes"):
   measured in the negative direction of traverse, if wanted, in column BACKLASH.
 * H/256: a .COM table has at most 256 entries (module 9095, error 3).
 * H/CMA: a .CMA table assigns .COM tables to axes, a column per axis; several lines may be
-  entered, only one is active (ACTIVE = *).
+  entered, only one is active (ACTIVE = *). It holds "the names of the compensation-value
+  tables (*.com)" (MANUALplus 620 Technical Manual, "Assigning the compensation value
+  tables to the axes"), and module 9095 answers error 2, "No such compensation table
+  (.COM)", for a name it cannot load: a table file not named *.COM is refused (the name it
+  needs is given), and the names inside both files are the files' names as written, in
+  their case (the .COM's BEGIN line and the .CMA's active line name the .COM; the .CMA's
+  BEGIN line names the .CMA).
 * H/rotary: on a rotary axis only the entries 0…360 are recognised.
 * H/equidistant: the compensation points are equally spaced ("Equidistant spacing
   between the measuring points is necessary", MANUALplus 620 Technical Manual, "Entering
@@ -148,6 +154,26 @@ def lint(plan: Plan) -> Plan:
     return plan
 
 
+def table_name(name: str, axis: str) -> str:
+    """H/CMA: the .COM file's name ("" → AXIS.COM); a name that is not *.COM is refused,
+    naming the one the control loads."""
+    if not name:
+        return f"{axis}.COM"
+    stem, dot, ext = name.rpartition(".")
+    if not dot or not stem or ext.lower() != "com":
+        raise refuse(NAME, message(QT_TR_NOOP("compensation tables are *.COM files, named in the "
+                                              ".CMA ({source}, module 9095: \"No such compensation "
+                                              "table (.COM)\")"), source=SOURCE),
+                     message(QT_TR_NOOP("'{name}' would not be loaded: name it {wanted}"),
+                             name=name, wanted=f"{stem or name}.COM"))
+    return name
+
+
+def cma_name(name: str) -> str:
+    """The .CMA written beside the .COM ``name``: its stem and .CMA."""
+    return f"{name.rpartition('.')[0]}.CMA"
+
+
 def render(plan: Plan, name: str) -> tuple[str, str]:
     unit = " MM" if plan.unit == "mm" else ""
     head = f"{'NR':<6}{'AXISPOS':>14}{plan.axis:>14}" + (
@@ -159,16 +185,20 @@ def render(plan: Plan, name: str) -> tuple[str, str]:
             row += f"{plan.backward[i]:>+14.6f}"
         com.append(row)
     com.append("[END]")
-    cma = [f"BEGIN {name.rsplit('.', 1)[0]}.CMA", f"{'NR':<6}{'ACTIVE':<8}{plan.axis}",
+    cma = [f"BEGIN {cma_name(name)}", f"{'NR':<6}{'ACTIVE':<8}{plan.axis}",
            f"{0:<6}{'*':<8}{name}", "[END]"]
     return "\n".join(com) + "\n", "\n".join(cma) + "\n"
 
 
-def write(table, options, name: str = "") -> tuple[list[tuple[str, str]], str]:
+def write(table, options, name: str = "", cma_path: str = ""
+          ) -> tuple[list[tuple[str, str]], str]:
+    """The .COM (``name``: its file's name, *.COM) and the .CMA beside it (``cma_path``:
+    where it is written, said in the message; its name when not given)."""
     plan = lint(build(table, options))
-    name = (name or f"{plan.axis}.COM").upper()
+    name = table_name(name, plan.axis)
     com, cma = render(plan, name)
-    what = message(QT_TR_NOOP("HEIDENHAIN .COM table for axis {axis}, {n} entries ({sense}), and "
-                              "its .CMA assignment"),
-                   axis=plan.axis, n=plan.positions.size, sense=plan.sense)
+    what = message(QT_TR_NOOP("HEIDENHAIN .COM table {name} for axis {axis}, {n} entries ({sense}), "
+                              "with its .CMA assignment in {cma}"),
+                   name=name, axis=plan.axis, n=plan.positions.size, sense=plan.sense,
+                   cma=cma_path or cma_name(name))
     return [("", com), (".CMA", cma)], what

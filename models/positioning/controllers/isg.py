@@ -17,8 +17,10 @@ Leadscrew error compensation (FCT-C5) and its parameters P-COMP-00017…00025, 0
 * I/max: kw_nr_max must be smaller than P-COMP-00059 (default 1500).
 * I/range: the type of ``pos``/``neg`` is SGN16 in older pages of the TwinCAT CNC
   documentation and SGN32 in newer ones: option ``value_type`` (default ``sgn16``, which every
-  version takes: ±32767 × 0.1 µm = ±3.2767 mm); a value beyond the type's range is refused,
-  never wrapped.
+  version takes). The range is "MIN(SGN16) < pos < MAX(SGN16)", both bounds excluded
+  (TwinCAT CNC axis compensation, kw.ssfk.table[i].pos): −32767…+32766 × 0.1 µm, i.e.
+  −3.2767…+3.2766 mm (SGN32: −2147483647…+2147483646); a value beyond it is refused, never
+  wrapped or clipped.
 
 Not verified (see docs/user-guide/positioning.md): what is applied beyond the table (held here). The ISG "CSV
 format" belongs to the volumetric compensation (TF5280), not to an axis table; it is not
@@ -37,6 +39,7 @@ from models.positioning.controllers.common import (
     Option,
     close_turn,
     equidistant_step,
+    header_notes,
     in_target_unit,
     parse_options,
     refuse,
@@ -53,8 +56,8 @@ OPTIONS = (
     Option("value_type", "text", "sgn16", QT_TR_NOOP("type of pos/neg in the kernel's "
                                                      "documentation: sgn16 (older) or sgn32")),
 )
-#: I/range: the largest magnitude of a pos/neg value of each type
-VALUE_LIMITS = {"sgn16": 2 ** 15 - 1, "sgn32": 2 ** 31 - 1}
+#: I/range: MIN and MAX of each type; a pos/neg value lies strictly between them
+VALUE_LIMITS = {"sgn16": (-2 ** 15, 2 ** 15 - 1), "sgn32": (-2 ** 31, 2 ** 31 - 1)}
 
 
 @dataclass(frozen=True)
@@ -101,14 +104,19 @@ def lint(plan: Plan) -> Plan:
         raise refuse(NAME, message(QT_TR_NOOP("kw_nr_max < P-COMP-00059 = {max_points}"),
                                    max_points=plan.max_points),
                      message(QT_TR_NOOP("{n} points: choose a larger step"), n=plan.pos.size))
-    limit = VALUE_LIMITS[plan.value_type]
+    low, high = VALUE_LIMITS[plan.value_type]
     for values in (plan.pos, plan.neg):
-        if values is not None and values.size and int(np.max(np.abs(values))) > limit:
-            raise refuse(NAME, message(QT_TR_NOOP("pos/neg are {kind}: at most ±{limit} units of "
-                                                  "0.1 µm / 0.0001°"), kind=plan.value_type.upper(),
-                                       limit=limit),
+        if values is None:
+            continue
+        outside = np.nonzero((values <= low) | (values >= high))[0]
+        if outside.size:
+            worst = outside[np.argmax(np.abs(values[outside]))]
+            raise refuse(NAME, message(QT_TR_NOOP("pos/neg are {kind}: MIN({kind}) < value < "
+                                                  "MAX({kind}), {low}…{high} units of 0.1 µm / "
+                                                  "0.0001°"), kind=plan.value_type.upper(),
+                                       low=low + 1, high=f"+{high - 1}"),
                          message(QT_TR_NOOP("a value of {value} units{hint}"),
-                                 value=int(values[np.argmax(np.abs(values))]),
+                                 value=int(values[worst]),
                                  hint=message(QT_TR_NOOP(" (value_type=sgn32 if the kernel's "
                                                          "documentation types them so)"))
                                  if plan.value_type == "sgn16" else ""))
@@ -121,9 +129,10 @@ def lint(plan: Plan) -> Plan:
     return plan
 
 
-def render(plan: Plan) -> str:
+def render(plan: Plan, notes: list[str] | tuple[str, ...] = ()) -> str:
+    """The list; ``notes``: comment lines for its header ("#" lines)."""
     out = ["# AngleBench: leadscrew error compensation (kw.ssfk); values = actual - set point "
-           "in 0.1 um (0.0001 deg)",
+           "in 0.1 um (0.0001 deg)", *notes,
            f"kopf.log_achs_nr                 {plan.number}",
            f"kopf.log_achs_name               {plan.name}",
            "kw.ssfk.unit                     1",
@@ -144,4 +153,4 @@ def write(table, options) -> tuple[list[tuple[str, str]], str]:
     what = message(QT_TR_NOOP("ISG leadscrew error compensation list, axis {axis}, {n} points{sides}"),
                    axis=plan.name, n=plan.pos.size,
                    sides=message(QT_TR_NOOP(", bilateral")) if plan.neg is not None else "")
-    return [("", render(plan))], what
+    return [("", render(plan, header_notes(table, "# ")))], what

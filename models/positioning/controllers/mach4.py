@@ -32,6 +32,7 @@ from models.positioning.controllers.common import (
     in_target_unit,
     parse_options,
     refuse,
+    table_notes,
 )
 
 NAME = "Mach4"
@@ -81,11 +82,14 @@ def lint(plan: Plan) -> Plan:
     return plan
 
 
-def render(plan: Plan) -> str:
+def render(plan: Plan, notes: list[str] | tuple[str, ...] = ()) -> str:
+    """The list; ``notes``: said in its first, comment line (the lines after it keep their
+    places: Axis, Start, Length, Points, the head, the values)."""
     sense = ("expected - actual (values=correction)" if plan.sense == "correction" else
              "actual - expected (values=error)")
     out = [f"; AngleBench: Mach4 screw map for {plan.axis} (Configure / Plugins / Machine "
-           f"Calibration, Linear Compensation); error = {sense}",
+           f"Calibration, Linear Compensation); error = {sense}"
+           + "".join(f"; {note}" for note in notes),
            f"Axis={plan.axis}", f"Start={plan.start:.9g}", f"Length={plan.length:.9g}",
            f"Points={plan.points}"]
     step = plan.length / (plan.points - 1)
@@ -105,4 +109,4 @@ def write(table, options) -> tuple[list[tuple[str, str]], str]:
                               "({sense})"),
                    axis=plan.axis, start=f"{plan.start:g}", length=f"{plan.length:g}", n=plan.points,
                    sense=plan.sense)
-    return [("", render(plan))], what
+    return [("", render(plan, [str(n) for n in table_notes(table)]))], what

@@ -30,6 +30,7 @@ from models.positioning.controllers.common import (
     Option,
     close_turn,
     equidistant_step,
+    header_notes,
     in_target_unit,
     parse_options,
     refuse,
@@ -85,10 +86,12 @@ def lint(plan: Plan) -> Plan:
     return plan
 
 
-def render(plan: Plan) -> str:
+def render(plan: Plan, notes: list[str] | tuple[str, ...] = ()) -> str:
+    """The declaration; ``notes``: comment lines for its header."""
     n = plan.positions.size
     out = ["(* AngleBench: table for Tc2_MC2 MC_TableBasedPositionCompensation; Compensation = "
-           "-mean deviation, added to the set position *)", "VAR_GLOBAL"]
+           "-mean deviation, added to the set position *)",
+           *(f"(* {line} *)" for line in notes), "VAR_GLOBAL"]
     for direction, values in plan.tables.items():
         tag = {"WorkDirectionBoth": "", "WorkDirectionPositive": "Pos",
                "WorkDirectionNegative": "Neg"}[direction]
@@ -110,4 +113,4 @@ def write(table, options) -> tuple[list[tuple[str, str]], str]:
     plan = lint(build(table, options))
     what = message(QT_TR_NOOP("TwinCAT Tc2_MC2 position compensation table(s) {name}, {n} elements"),
                    name=plan.name, n=plan.positions.size)
-    return [("", render(plan))], what
+    return [("", render(plan, header_notes(table, "")))], what

@@ -74,7 +74,8 @@ def test_isg_refuses_a_value_beyond_its_type():
     plan = isg.build(rotary, "modulo=360")
     big = plan.pos.copy()
     big[3] = 40000  # 4 mm in 0.1 µm: the audit's case
-    with pytest.raises(ControllerRuleError, match=r"SGN16: at most ±32767.*40000 units.*sgn32"):
+    with pytest.raises(ControllerRuleError, match=r"SGN16: MIN\(SGN16\) < value < MAX\(SGN16\), "
+                                                  r"-32767…\+32766 units.*40000 units.*sgn32"):
         isg.lint(isg.Plan(**{**plan.__dict__, "pos": big}))
     plan32 = isg.build(rotary, "modulo=360,value_type=sgn32")
     assert isg.lint(isg.Plan(**{**plan32.__dict__, "pos": big})).value_type == "sgn32"
