@@ -38,6 +38,7 @@ import time
 from pathlib import Path
 
 from app.capture.instruments import CAPTURE_MODES, INSTRUMENTS, Autocollimator, LineReadoutInstrument
+from app.capture.link import CANNOT_OPEN, tcp_port_refused
 from app.capture.worker import CaptureWorker, Fault
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
@@ -260,6 +261,10 @@ def run_capture(argv: list[str]) -> int:
                                "that answers requests is always asked)")))
         return EXIT_BAD_INPUT
     instrument.set_range(args.range)
+    bad_port = tcp_port_refused(args.port)
+    if bad_port is not None:  # as 'simulate' refuses one (contract75 F13: 99999 was tried)
+        say(joined(("anglebench capture: ", bad_port)))
+        return EXIT_BAD_INPUT
     try:
         outputs = (("--out", args.out), ("--raw", args.raw))
         check_outputs(outputs, register_files(register_url()))
@@ -317,6 +322,10 @@ def run_capture(argv: list[str]) -> int:
                            poll_interval_s=1.0 / args.poll_rate, raw_cap=RAW_FRAMES_IN_MEMORY)
     ends = time.monotonic() + args.timeout if args.timeout else None
     failure = None
+    #: whether the port was ever opened: until then a port that cannot be opened ends the
+    #: capture with its one line (contract75 F13: "cannot open …; reconnecting" ×3, then
+    #: the last, 4 lines where docs/capture.md promises one)
+    opened = False
 
     def journal_frames() -> None:
         for t, line, used in worker.take_raw():
@@ -341,14 +350,17 @@ def run_capture(argv: list[str]) -> int:
                 journal_frames()
                 continue
             if isinstance(event, Fault):
-                if event.final:
+                if event.final or (not opened and getattr(event.message, "template", "")
+                                   == CANNOT_OPEN):
                     failure = event.message
                     break
+                opened = True  # a fault of a link that was open (silence, a drop)
                 say(message(QT_TR_NOOP("anglebench capture: {reason}; reconnecting"),
                             reason=event.message))
                 if gate is not None:
                     gate.restart()  # a reading never bridges the frames the link lost
                 continue
+            opened = True
             unit = [event.unit] if args.instrument == "readout" else []
             if gate is None:
                 take([repr(round(event.time_s, 6)), *map(repr, event.values), *unit])
