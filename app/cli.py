@@ -530,10 +530,9 @@ def run_analyze(argv: list[str]) -> int:
         except ValueError as exc:
             _say(f"anglebench analyze: --table: {_why(exc, words)}")
             return EXIT_BAD_INPUT
-        except OSError as exc:
-            _say(rendered(message(QT_TR_NOOP("anglebench analyze: cannot write {path}: {reason}"),
-                                  path=args.table, reason=str(exc)), words))
-            return 1
+        except OSError as exc:  # a full disk: the file and the reason in words, exit 2
+            _say(rendered(_output_not_written(args.table, exc, "--table"), words))
+            return EXIT_BAD_INPUT
         # the first line says what was written; the next ones what to know of it
         said, _, notes = rendered(what, words).partition("\n")
         _say(rendered(message(QT_TR_NOOP("{what} written to {path}"), what=said,
@@ -544,9 +543,9 @@ def run_analyze(argv: list[str]) -> int:
         try:
             said = kind.write_signal_table(args, result, interpolator)
         except OSError as exc:
-            _say(rendered(message(QT_TR_NOOP("anglebench analyze: cannot write {path}: {reason}"),
-                                  path=args.interpolator_table, reason=str(exc)), words))
-            return 1
+            _say(rendered(_output_not_written(args.interpolator_table, exc, "--interpolator-table"),
+                          words))
+            return EXIT_BAD_INPUT
         _say(rendered(said, words))
     # a test report asked for is called one when refused (ISO/IEC 17025 7.8.2.1 a))
     if incomplete is not None and args.certificate:
@@ -746,9 +745,9 @@ def _write_pdf_and_dcc(args: argparse.Namespace, kind, result, document, words, 
 
     pdf = certificate_pdf_bytes(document)
     xml = _dcc_of(args, kind, result, document, pdf, words, settings) if args.dcc else None
-    write_bytes_atomic(args.certificate, pdf)
+    _writing(args.certificate, "--certificate", lambda: write_bytes_atomic(args.certificate, pdf))
     if xml is not None:
-        write_bytes_atomic(args.dcc, xml)
+        _writing(args.dcc, "--dcc", lambda: write_bytes_atomic(args.dcc, xml))
         _say(rendered(message(QT_TR_NOOP("DCC of {number} written to {path}"),
                               number=document.metadata.certificate_number, path=args.dcc), words))
 
@@ -977,10 +976,10 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
                     message(name) for name in metadata.missing_fields(
                         document.is_test_report))), words))
         if args.results:
-            if args.results.lower().endswith(".xlsx"):
-                write_results_xlsx(args.results, document, ANGLE_UNITS[args.unit])
-            else:
-                write_results_csv(args.results, document, ANGLE_UNITS[args.unit])
+            write = (write_results_xlsx if args.results.lower().endswith(".xlsx")
+                     else write_results_csv)
+            _writing(args.results, "--results",
+                     lambda: write(args.results, document, ANGLE_UNITS[args.unit]))
             _say(rendered(message(QT_TR_NOOP("Results written to {path}"), path=args.results),
                           words))
     except DccError as exc:
@@ -992,8 +991,37 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
                                          "nor its DCC was written"), reason=reason_of(exc)),
                       words))
         return EXIT_BAD_INPUT
+    except _NotWritten as exc:  # the file named, the reason in words (contract75 F12)
+        _say(rendered(_output_not_written(exc.path, exc.__cause__, exc.flag), words))
+        return EXIT_BAD_INPUT
     except (OSError, ValueError) as exc:
         _say(rendered(message(QT_TR_NOOP("anglebench analyze: cannot write: {reason}"),
                               reason=reason_of(exc)), words))
         return 1
     return 0
+
+
+class _NotWritten(Exception):
+    """An output that could not be written: the file the user named (``path``, given as
+    ``flag``); the cause is the OSError."""
+
+    def __init__(self, path: str, flag: str) -> None:
+        super().__init__(path)
+        self.path, self.flag = path, flag
+
+
+def _writing(path: str, flag: str, write: Callable[[], object]) -> None:
+    """``write()``, its OSError raised as :class:`_NotWritten` naming ``path``: the
+    atomic write fails on its temporary file, or on a full disk names no file at all."""
+    try:
+        write()
+    except OSError as exc:
+        raise _NotWritten(path, flag) from exc
+
+
+def _output_not_written(path: str, exc: BaseException | None, flag: str) -> Message:
+    """"anglebench analyze: " and why ``path`` could not be written, in words."""
+    from models.project.write_failure import output_not_written
+
+    return joined(("anglebench analyze: ",
+                   output_not_written(path, exc or OSError(), flag)))

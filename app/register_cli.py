@@ -23,7 +23,9 @@
     anglebench register continue SCHEME NEXT   continue numbering after hand-issued numbers
 
 ``--register URL`` (or ANGLEBENCH_REGISTER) chooses the register; the default is the
-SQLite file in the user's data folder. Exit 2 with one line for a refusal; ``verify``
+SQLite file in the user's data folder. A SQLite register that is not there is refused by
+the commands that read one (:data:`NEEDS_A_REGISTER`), never made: issuing makes it, and
+the set-up commands (continue, interval, signatories NAME …). Exit 2 with one line for a refusal; ``verify``
 exits 0 when everything it checked is as issued, 1 for a file (PDF, DCC, results file) the
 register did not issue (altered, a draft, another register's), 2 for a command it cannot
 carry out (the arguments, a file that cannot be read, a register that cannot be reached) and
@@ -721,6 +723,32 @@ def _holds(path: str, register, record, flag: str) -> bool:
         flag == "--dcc" and digest == record.dcc_sha256)
 
 
+#: the commands that read a register, or record what only a register with records can
+#: have (a withdrawal, a loss, a clock correction): a SQLite register that is not there is
+#: refused, never made (contract75 F10: 'register --register ./typo.sqlite verify' made an
+#: empty register, folders included, and said "hash chain intact over 0 record(s)", exit 0).
+#: Issuing makes one; so do the lab's set-up commands (continue, interval, signatories
+#: NAME …), which come before a register's first certificate.
+NEEDS_A_REGISTER = frozenset(("list", "show", "verify", "head", "export", "withdraw",
+                              "acknowledge-loss", "clock-correction"))
+
+
+def _missing_register(url: str, args: argparse.Namespace) -> Message | None:
+    """Why the command is refused when its SQLite register does not exist (None when it
+    exists, is a server's, or the command may make it)."""
+    from models.project.output_guard import sqlite_path_of_url
+
+    reads = args.command in NEEDS_A_REGISTER or (
+        args.command == "signatories" and not (args.names or args.clear or args.distinct))
+    database = sqlite_path_of_url(url)
+    if not reads or database is None or os.path.lexists(database):
+        return None
+    return message(QT_TR_NOOP(
+        "anglebench register: there is no register at {path}; nothing was created (a "
+        "register is made by its first certificate): check --register or "
+        "ANGLEBENCH_REGISTER"), path=str(database))
+
+
 def _read(path: str) -> bytes:
     from models.register.store import RegisterError
 
@@ -747,6 +775,10 @@ def run_register(argv: list[str]) -> int:
         check_outputs(outputs, register_files(url))
     except OutputRefused as exc:
         _say(f"anglebench register: {rendered(reason_of(exc), words)}")
+        return EXIT_BAD_INPUT
+    missing = _missing_register(url, args)
+    if missing is not None:
+        _say(rendered(missing, words))
         return EXIT_BAD_INPUT
     try:
         if args.command == "verify":  # a file that cannot be read: exit 2, nothing checked

@@ -326,7 +326,12 @@ def _refused(pdf: str, say) -> bool:
     ``register verify`` called the real one "NOT in the register"); a recorded results file
     left under a temporary name beside it is kept first (app/issued_outputs.py)."""
     from app.issued_outputs import refuse_issued_outputs
-    from models.project.output_guard import OutputRefused, check_output, register_files
+    from models.project.output_guard import (
+        OutputRefused,
+        check_output,
+        refuse_other_kind,
+        register_files,
+    )
     from models.register.location import register_url
 
     url = register_url()
@@ -334,6 +339,9 @@ def _refused(pdf: str, say) -> bool:
         check_output(pdf, register_files(url), "--pdf")
         for said in refuse_issued_outputs(url, [("--pdf", pdf)]):
             _say(say(joined(("anglebench validate: ", said))))
+        # nor a file that is no PDF, as analyze --certificate (contract75 F5: a readings CSV
+        # named as --pdf became the report)
+        refuse_other_kind(pdf, "--pdf")
     except OutputRefused as exc:
         _say(say(joined(("anglebench validate: ", reason_of(exc)))))
         return True
@@ -345,8 +353,8 @@ def _parser(words) -> argparse.ArgumentParser:
     parser.add_argument("--pdf", metavar="OUT.pdf",
                         help=words(QT_TR_NOOP("also write the validation report")))
     parser.add_argument("--trials", type=int, default=200,
-                        help=words(QT_TR_NOOP("simulated runs for each budget comparison "
-                                              "(default 200)")))
+                        help=words(QT_TR_NOOP("simulated runs for each budget comparison, "
+                                              "100 to 100000 (default 200)")))
     add_language_option(parser, words)
     return parser
 

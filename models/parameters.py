@@ -110,7 +110,9 @@ class Parameter:
         low = -math.inf if self.minimum is None else self.minimum
         high = math.inf if self.maximum is None else self.maximum
         if not low <= value <= high:
-            zero = "0 or " if self.zero else ""
+            # "0 or" only where 0 is outside the range (contract75 F13: "must be 0 or 0 to
+            # 3600")
+            zero = "0 or " if self.zero and not low <= 0 <= high else ""
             raise SettingsError(message(
                 QT_TR_NOOP("{key} must be {zero}{low} to {high}{value}, not {value2}"),
                 key=self.key, zero=zero, low=f"{low:g}", high=f"{high:g}",

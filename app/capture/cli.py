@@ -18,7 +18,9 @@ the link recovers from is said on stderr and the set goes on; one it does not,
 ``--timeout``, Ctrl-C, SIGTERM or SIGHUP ends with exit status 2 and one line naming the
 port, and the readings already taken are written to ``FILE.partial.csv`` (``--raw``'s lines
 too, even when no reading was taken). ``--out`` and ``--raw`` may not be one file, nor the
-certificate register.
+certificate register; one that exists is refused unless ``--overwrite`` is given, and without
+it a file that appears under the name during the capture (or an earlier ``.partial.csv``)
+is kept, the readings written beside it (``FILE.captured-STAMP.csv``).
 """
 
 from __future__ import annotations
@@ -28,6 +30,7 @@ import contextlib
 import csv
 import datetime as dt
 import io
+import os
 import queue
 import signal
 import threading
@@ -35,6 +38,7 @@ import time
 from pathlib import Path
 
 from app.capture.instruments import CAPTURE_MODES, INSTRUMENTS, Autocollimator, LineReadoutInstrument
+from app.capture.link import CANNOT_OPEN, tcp_port_refused
 from app.capture.worker import CaptureWorker, Fault
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
@@ -116,6 +120,9 @@ def _parser(words) -> argparse.ArgumentParser:
         "also write every line the instrument sent, time-stamped, and whether it became a "
         "reading (with --stable: whether it is in a reading's dwell; the readings' trace to "
         "the instrument's own output)")))
+    p.add_argument("--overwrite", action="store_true", help=words(QT_TR_NOOP(
+        "replace --out and --raw when they exist (without it an existing file is refused; "
+        "a file the register issued is never replaced)")))
     p.add_argument("--range", type=_positive(words), metavar="LIMIT", help=words(QT_TR_NOOP(
         "the instrument's range: a frame with a value beyond ±LIMIT (arcsec for the "
         "autocollimator, the readout's own unit) is refused, not taken (default: "
@@ -254,6 +261,10 @@ def run_capture(argv: list[str]) -> int:
                                "that answers requests is always asked)")))
         return EXIT_BAD_INPUT
     instrument.set_range(args.range)
+    bad_port = tcp_port_refused(args.port)
+    if bad_port is not None:  # as 'simulate' refuses one (contract75 F13: 99999 was tried)
+        say(joined(("anglebench capture: ", bad_port)))
+        return EXIT_BAD_INPUT
     try:
         outputs = (("--out", args.out), ("--raw", args.raw))
         check_outputs(outputs, register_files(register_url()))
@@ -270,6 +281,17 @@ def run_capture(argv: list[str]) -> int:
     recovery = _recover(args.out, say)
     if recovery is not None:
         return recovery
+    # an existing file is someone's readings (contract75 F4: a 50-row polygon test became 3
+    # autocollimator readings, "3 readings written" and nothing more): refused unless
+    # --overwrite, as 'register export' does; after the recovery above, which keeps a killed
+    # capture's readings whatever is refused here
+    if not args.overwrite:
+        for flag, named in outputs:
+            if named and os.path.lexists(named):
+                say(message(QT_TR_NOOP("anglebench capture: {flag} {path} exists; nothing was "
+                                       "captured: choose another name, or add --overwrite to "
+                                       "replace it"), flag=flag, path=named))
+                return EXIT_BAD_INPUT
     columns = instrument.columns
     try:
         journal = CaptureJournal(journal_path(args.out), ("time_s",) + columns, {
@@ -300,6 +322,10 @@ def run_capture(argv: list[str]) -> int:
                            poll_interval_s=1.0 / args.poll_rate, raw_cap=RAW_FRAMES_IN_MEMORY)
     ends = time.monotonic() + args.timeout if args.timeout else None
     failure = None
+    #: whether the port was ever opened: until then a port that cannot be opened ends the
+    #: capture with its one line (contract75 F13: "cannot open …; reconnecting" ×3, then
+    #: the last, 4 lines where docs/capture.md promises one)
+    opened = False
 
     def journal_frames() -> None:
         for t, line, used in worker.take_raw():
@@ -324,14 +350,17 @@ def run_capture(argv: list[str]) -> int:
                 journal_frames()
                 continue
             if isinstance(event, Fault):
-                if event.final:
+                if event.final or (not opened and getattr(event.message, "template", "")
+                                   == CANNOT_OPEN):
                     failure = event.message
                     break
+                opened = True  # a fault of a link that was open (silence, a drop)
                 say(message(QT_TR_NOOP("anglebench capture: {reason}; reconnecting"),
                             reason=event.message))
                 if gate is not None:
                     gate.restart()  # a reading never bridges the frames the link lost
                 continue
+            opened = True
             unit = [event.unit] if args.instrument == "readout" else []
             if gate is None:
                 take([repr(round(event.time_s, 6)), *map(repr, event.values), *unit])
@@ -382,16 +411,29 @@ def _kept_path(path: Path) -> Path:
                           f"{path.suffix or '.csv'}")
 
 
-def _write_output(path: Path, text: str, say) -> Path:
+def _write_output(path: Path, text: str, say, replace: bool = True) -> Path:
     """``text`` written to ``path``, checked against the files the register issued when it
     is placed (app/issued_outputs.write_sparing_issued): the check at the start is as old
     as the capture, hours maybe, and a certificate, DCC or results file issued under that
     name meanwhile was replaced by this write. Refused, the readings go to a name of their
     own beside it (``out.captured-STAMP.csv``), said. The name written; OSError when
-    neither can be written."""
-    from app.issued_outputs import write_sparing_issued
+    neither can be written. Without ``replace`` (no --overwrite) a file there is not
+    replaced either: one made during the capture, an earlier capture's ``.partial.csv``."""
+    from app.issued_outputs import refuse_issued_outputs, write_sparing_issued
 
     data = text.encode("utf-8")
+    if not replace and os.path.lexists(path):
+        reason = message(QT_TR_NOOP("{path} exists and is not replaced without --overwrite"),
+                         path=str(path))
+        try:  # an issued file there is said as such
+            refuse_issued_outputs(register_url(), [("", str(path))])
+        except OutputRefused as exc:
+            reason = reason_of(exc)
+        other = _kept_path(path)
+        write_sparing_issued(register_url(), other, data)
+        say(message(QT_TR_NOOP("anglebench capture: {reason}; written to {path} instead"),
+                    reason=reason, path=str(other)))
+        return other
     try:
         write_sparing_issued(register_url(), path, data)
         return path
@@ -430,7 +472,7 @@ def _finish(args, columns, rows, worker, journal, failure, say, dwells=None) -> 
     written: dict[Path, Path] = {}
     for path, text in writes:
         try:
-            written[path] = _write_output(path, text, say)
+            written[path] = _write_output(path, text, say, args.overwrite)
         except OSError as exc:
             say(message(QT_TR_NOOP("anglebench capture: cannot write {path}: {reason}; the {n} "
                                    "readings taken are kept in {journal}"), path=str(path),

@@ -76,6 +76,20 @@ class TcpLink:
         self._socket.close()
 
 
+#: what a port that cannot be opened is said with (the command line ends on the first one
+#: before the port was ever opened: docs/capture.md's one line)
+CANNOT_OPEN = QT_TR_NOOP("{port}: cannot open ({reason})")
+
+
+def tcp_port_refused(port: str) -> str | None:
+    """Why ``tcp://host:N`` (or ``socket://``) names no TCP port: N outside 1 … 65535 (a
+    Message); None for a good one and for a serial port."""
+    address = _tcp_address(port)
+    if address is None or 1 <= address[1] <= 65535:
+        return None
+    return message(QT_TR_NOOP("{port}: a TCP port is 1 to 65535"), port=port)
+
+
 def _tcp_address(port: str) -> tuple[str, int] | None:
     lower = port.lower()
     for scheme in ("tcp://", "socket://"):
@@ -95,16 +109,18 @@ def open_link(port: str, baud: int):
         try:
             return TcpLink(*address)
         except (OSError, ValueError) as exc:
-            raise CaptureError(message(QT_TR_NOOP("{port}: cannot open ({reason})"), port=port,
+            raise CaptureError(message(CANNOT_OPEN, port=port,
                                        reason=_reason(exc))) from None
     try:
         return serial.serial_for_url(serial_url(port), baudrate=baud, timeout=READ_TIMEOUT_S,
                                      write_timeout=1.0)
     except (serial.SerialException, OSError, ValueError) as exc:
-        raise CaptureError(message(QT_TR_NOOP("{port}: cannot open ({reason})"), port=port,
+        raise CaptureError(message(CANNOT_OPEN, port=port,
                                    reason=_reason(exc))) from None
 
 
 def _reason(exc: BaseException) -> str:
-    text = str(exc).strip() or type(exc).__name__
+    # the system's words ("Connection refused"), not "[Errno 111] Connection refused"
+    words = exc.strerror if isinstance(exc, OSError) and exc.strerror else None
+    text = (words or str(exc)).strip() or type(exc).__name__
     return text.splitlines()[0][:200]

@@ -47,6 +47,20 @@ def _numbers(words):
     return read
 
 
+def _not_negative(words):
+    """A number of 0 or more (contract75 F13: --noise -1 was accepted)."""
+    def read(text: str) -> float:
+        try:
+            value = float(text)
+        except ValueError:
+            value = -1.0
+        if not 0 <= value < float("inf"):
+            raise argparse.ArgumentTypeError(rendered(message(QT_TR_NOOP(
+                "{text}: give a number of 0 or more"), text=repr(text)), words))
+        return value
+    return read
+
+
 def _port(words):
     def read(text: str) -> int | str:
         if text.strip().lower() == "pty":
@@ -77,7 +91,7 @@ def _parser(words) -> argparse.ArgumentParser:
         "a script of readings (the first axis; the second stays), each held --hold seconds")))
     p.add_argument("--hold", type=float, default=5.0, metavar="SECONDS", help=words(QT_TR_NOOP(
         "how long each of --positions is held")))
-    p.add_argument("--noise", type=float, default=0.05, metavar="SIGMA", help=words(QT_TR_NOOP(
+    p.add_argument("--noise", type=_not_negative(words), default=0.05, metavar="SIGMA", help=words(QT_TR_NOOP(
         "Gaussian noise on every reading (arcseconds; the readout's unit)")))
     p.add_argument("--drift", type=float, default=0.0, metavar="PER_S", help=words(QT_TR_NOOP(
         "drift per second (arcseconds; the readout's unit)")))

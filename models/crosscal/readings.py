@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.messages import QT_TR_NOOP, message
+from models.number_text import fixed
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.readings.tabular_import import RawTable
 
@@ -187,8 +188,8 @@ def read_crosscal(parsed: ParsedReadings, faces_setting: int = 0) -> CrossCalRea
                                          "{reading}°, {off}° from where mounting {first} started "
                                          "({start}°): every mounting starts from the same "
                                          "encoder position"),
-                              row=sheet_rows[r], mounting=j, reading=f"{a[r]:.4f}",
-                              off=f"{off:+.3f}", first=order[0], start=f"{start:.4f}")
+                              row=sheet_rows[r], mounting=j, reading=fixed(a[r], 4),
+                              off=f"{off:+.3f}", first=order[0], start=fixed(start, 4))
         off = (a - start - k * step + 180.0) % 360.0 - 180.0
         far = np.flatnonzero(np.abs(off) > tolerance)
         if far.size:
@@ -197,7 +198,7 @@ def read_crosscal(parsed: ParsedReadings, faces_setting: int = 0) -> CrossCalRea
                                      "step {step} ({nominal}°) where mounting {mounting} reads "
                                      "face {face}: a wrong mounting or face number, or a "
                                      "mis-typed reading"),
-                          row=sheet_rows[i], reading=f"{a[i]:.4f}", off=f"{off[i]:+.3f}",
+                          row=sheet_rows[i], reading=fixed(a[i], 4), off=f"{off[i]:+.3f}",
                           step=int(k[i]), nominal=f"{(start + k[i] * step) % 360.0:.4f}",
                           mounting=int(mounting[i]), face=int(position[i]))
     return CrossCalReadings(n, mounting, position, a, x, None if blank_y.all() else y,

@@ -26,7 +26,7 @@ import numpy as np
 
 from models.damped_least_squares import polish
 from models.lazy_optimize import least_squares
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, joined, message
 from models.parameters import SettingsError
 from models.readings.angles import ARCSEC_PER_RAD
 from models.uncertainty.error_stats import ErrorStats, error_stats
@@ -92,6 +92,19 @@ class SetupParameters:
     def as_array(self) -> np.ndarray:
         return np.array([self.psi_deg, self.alpha_deg, self.beta_deg])
 
+
+
+def _zenith_hint(elevation_deg: np.ndarray) -> str:
+    """What to say after an elevation fit's refusal when every elevation is 45° … 135°:
+    such readings are a vertical circle's zenith angles V (≈ 90° towards a mirror near the
+    horizontal), read as elevations (contract75 F13: a ``zenith_deg`` or ``V`` column, taken
+    by its place, was refused without a word of --zenith); "" otherwise."""
+    finite = elevation_deg[np.isfinite(elevation_deg)]
+    if finite.size == 0 or not np.all((finite > 45.0) & (finite < 135.0)):
+        return ""
+    return message(QT_TR_NOOP(
+        "; the vertical readings are all near 90°, as zenith angles V are: if the vertical "
+        "circle reads V, set the vertical reading to zenith (--zenith; E = V − 90°)"))
 
 def _cos_sin_deg(angle_deg) -> tuple:
     """cos and sin of angles in degrees by ``math.cos`` and ``math.sin`` (the C library's): a
@@ -486,9 +499,9 @@ def identify_from_elevations(
     if not starts:
         starts = candidates[-1:] if candidates else []
     if not starts:
-        raise ValueError(message(
+        raise ValueError(joined((message(
             QT_TR_NOOP("the elevations fit no set-up (sin E is not of the form a + b cos θ + c sin θ "
-                       "with |a|, |b|, |c| ≤ 1): check the elevation column")))
+                       "with |a|, |b|, |c| ≤ 1): check the elevation column")), _zenith_hint(elev))))
 
     best = None
     for start in starts:
@@ -511,11 +524,11 @@ def identify_from_elevations(
         if best is None or cost < best[0] * (1 - 1e-9) - 1e-30:
             best = (cost, polished, fit)
     if best is None:
-        raise ValueError(
+        raise ValueError(joined((
             message(
             QT_TR_NOOP("no set-up with ψ ≤ {psi_max_deg}° and |β| ≤ {beta_max_deg}° fits the elevations"),
-            psi_max_deg=f"{psi_max_deg:g}", beta_max_deg=f"{beta_max_deg:g}")
-        )
+            psi_max_deg=f"{psi_max_deg:g}", beta_max_deg=f"{beta_max_deg:g}"),
+            _zenith_hint(elev))))
     _, setup, fit = best
     jac = _elevation_jacobian(np.radians(setup.as_array()), th)
     residuals = _elevation_model(np.radians(setup.as_array()), th) - e_rad
@@ -718,10 +731,11 @@ def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None
         bad = np.nonzero(~np.isfinite(values) | (np.abs(values) > limit))[0]
         if bad.size:
             i = int(bad[0])
-            raise ValueError(message(
+            raise ValueError(joined((message(
                 QT_TR_NOOP("row {value}, column '{name}': {values}° is beyond ±{limit}° and cannot "
                            "be a reading of this test"),
-                value=_row_of(i, row_numbers), name=name, values=f"{values[i]:g}", limit=f"{limit:g}"))
+                value=_row_of(i, row_numbers), name=name, values=f"{values[i]:g}", limit=f"{limit:g}"),
+                _zenith_hint(values) if name == "elevation_deg" else "")))
     distinct = _distinct(np.round(theta, 6))
     if distinct.size == 1:
         raise ValueError(message(

@@ -99,6 +99,9 @@ def test_two_issues_naming_one_results_file_both_keep_theirs(samples_dir, tmp_pa
     kept = tmp_path / said.split("The recorded results file is ")[1].split("; give it")[0]
     assert kept.parent == tmp_path and _sha(kept) == results[two]  # the second's, kept
     monkeypatch.undo()
+    # the undo took the test's register away too (conftest's ANGLEBENCH_REGISTER): this
+    # verified a new empty register in the default place, "intact" (contract75 F10)
+    monkeypatch.setenv("ANGLEBENCH_REGISTER", str(tmp_path / "register.sqlite"))
     capsys.readouterr()
     assert main(["register", "verify"]) == 0
     assert "hash chain intact" in capsys.readouterr().out

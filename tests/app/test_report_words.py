@@ -296,6 +296,11 @@ def test_the_command_lines_refusals_call_a_test_report_one(samples_dir, tmp_path
 def test_a_number_not_in_the_register_is_no_certificate_or_test_report(tmp_path, capsys,
                                                                        zh_catalogue, language):
     """A test report's number not found was "no certificate N in the register"."""
+    from models.register.location import register_url
+    from models.register.store import Register
+
+    with Register(register_url()):  # there (contract75 F10: one that is not is refused)
+        pass
     assert main(["register", "show", "AB-2026-0099", "--language", language]) == 2
     err = capsys.readouterr().err
     assert ("no certificate or test report AB-2026-0099 in the register" if language == "en"
