@@ -44,7 +44,11 @@ def rotate(vectors: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
     k = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
     v = np.asarray(vectors, dtype=float)
     cos, sin = np.cos(angle), np.sin(angle)
-    cross = np.cross(k[:, None], v, axis=0)
+    # k × v component by component: the products and differences np.cross(k[:, None], v,
+    # axis=0) takes, bit for bit, without its ~15 µs of moving axes (a run of 4 sets of 24
+    # faces turns ~100 normals)
+    cross = np.array([k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2],
+                      k[0] * v[1] - k[1] * v[0]])
     return v * cos + cross * sin + k[:, None] * (k @ v)[None, :] * (1.0 - cos)
 
 

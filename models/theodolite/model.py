@@ -384,6 +384,12 @@ def tilt_bound_effect_arcsec(rotation_deg, beta_deg: float, bound_arcsec: float)
     if not bound_arcsec > 0:
         return worst
     for psi in (0.5 * bound_arcsec, bound_arcsec):
+        if rotation.ndim == 1:  # a row of rotations (the analysis'): every α at once, (α, θ),
+            # each α's curve bit for bit its own scalar's (:func:`rotated_normal`) and the
+            # largest the same in any order (one call instead of 360, ~16 → 0.7 ms a run)
+            zeta = induced_error_arcsec(rotation, psi / 3600.0, np.arange(360.0), beta_deg)
+            worst = np.maximum(worst, np.max(np.abs(zeta), axis=0))
+            continue
         for alpha in np.arange(360.0):
             worst = np.maximum(worst, np.abs(induced_error_arcsec(
                 rotation, psi / 3600.0, float(alpha), beta_deg)))

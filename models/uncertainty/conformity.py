@@ -295,18 +295,19 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
     shared = np.zeros((trials, n))
     independent = np.zeros((trials, n))
     scales: dict[object, np.ndarray] = {}
+    term = np.empty((trials, n))  # each input's draws in turn (no new 12 MB array each)
     for i, comp in enumerate(budget.components):
         sens = np.broadcast_to(np.asarray(comp.sensitivity, dtype=float), (budget.points,))
         c_u = (sens * comp.standard_uncertainty(budget.points))[points]
         if not np.any(c_u) or comp.in_curve and not in_curve:
             continue
         shape = (trials, 1) if comp.common else (trials, n)
-        term = _standard_draws(rng, comp.distribution, shape) * c_u
+        np.multiply(_standard_draws(rng, comp.distribution, shape), c_u, out=term)
         if comp.evaluation == "A" and math.isfinite(comp.dof) and comp.dof > 0:
             key = comp.dof_group or i
             if key not in scales:
                 scales[key] = np.sqrt(comp.dof / rng.chisquare(comp.dof, (trials, 1)))
-            term = term * scales[key]
+            term *= scales[key]
         if evaluated is not None and comp.evaluation == "A":
             evaluated += term
         if not comp.common:

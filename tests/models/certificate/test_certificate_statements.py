@@ -1,18 +1,17 @@
 """What an ISO/IEC 17025 assessor reads on every certificate (issue: six defects).
 
-Each test names the defect it covers; the PDFs are parsed back with pypdf.
+Each test names the defect it covers; the PDFs are read back with pdfium (tests/pdf_text.py:
+the fringe sample's 15 pages in 0.03 s of CPU, pypdf's in ~0.5 s).
 """
 
 from __future__ import annotations
 
-import io
 import math
 import re
 from dataclasses import replace
 
 import numpy as np
 import pytest
-from pypdf import PdfReader
 
 from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.certificate.metadata import CertificateMetadata, MetadataError, ReferenceStandard
@@ -26,6 +25,7 @@ from models.uncertainty.budget import coverage_factor
 from models.validation.polygon_rig import PolygonRig
 from models.validation.theodolite_rig import theodolite_readings
 from models.workbench import IssuesCertificates
+from tests.pdf_text import pdf_text
 
 META = CertificateMetadata.from_dict({
     "certificate_number": "AB-2026-0100", "lab_name": "Angle Lab", "customer_name": "Customer",
@@ -41,8 +41,7 @@ FRINGE_INPUTS = {"phase_reference_u": 0.01, "adc_lsb_mv": 0.3, "adc_offset_u_mv"
 
 
 def _flat(document) -> str:
-    reader = PdfReader(io.BytesIO(certificate_pdf_bytes(document)))
-    return re.sub(r"\s+", " ", "\n".join(p.extract_text() for p in reader.pages))
+    return pdf_text(certificate_pdf_bytes(document))
 
 
 def _sample(key, settings=None):

@@ -76,10 +76,28 @@ def _certificate_text(tmp_path: Path, per_period: int, highest: int, language: s
                   r"(?:SPECIMEN-[0-9A-F]+|[A-Z]+-\d{4}-\d{4}) ", " ", text)
 
 
+@pytest.fixture(scope="module")
+def certificate_text(tmp_path_factory):
+    """``certificate_text(per_period, highest, language, capsys)``: :func:`_certificate_text`
+    once a module for each record and language (a certificate issued and printed, ~1.4 s of
+    CPU; the English one at N = 8 is read by two tests). The text is a string: no test can
+    change it."""
+    texts: dict[tuple[int, int, str], str] = {}
+
+    def text(per_period: int, highest: int, language: str, capsys) -> str:
+        key = (per_period, highest, language)
+        if key not in texts:
+            folder = tmp_path_factory.mktemp(f"certificate-{per_period}-{highest}-{language}")
+            texts[key] = _certificate_text(folder, per_period, highest, language, capsys)
+        return texts[key]
+
+    return text
+
+
 @pytest.mark.parametrize("language", ["en", "zh"])
-def test_the_method_names_the_orders_fitted_and_the_one_folded_in(tmp_path, capsys,
+def test_the_method_names_the_orders_fitted_and_the_one_folded_in(certificate_text, capsys,
                                                                     language):
-    text = _certificate_text(tmp_path, 8, 3, language, capsys)
+    text = certificate_text(8, 3, language, capsys)
     # the false claim is gone, in either language
     assert "odd harmonics (3rd, 5th)" not in text
     assert "3 次、5 次" not in text
@@ -89,8 +107,9 @@ def test_the_method_names_the_orders_fitted_and_the_one_folded_in(tmp_path, caps
                 "so A3 holds the two together.") in text
 
 
-def test_the_method_names_the_5th_where_it_is_fitted_and_folds_nothing(tmp_path, capsys):
-    text = _certificate_text(tmp_path, 64, 5, "en", capsys)
+def test_the_method_names_the_5th_where_it_is_fitted_and_folds_nothing(certificate_text,
+                                                                         capsys):
+    text = certificate_text(64, 5, "en", capsys)
     assert "an offset plus the harmonics of order 1, 3, 5 (order 1 the fundamental)" in text
     assert "is not fitted" not in text
     assert AT_SAMPLES not in text
@@ -104,11 +123,12 @@ SAID = ("at the sampled phases only: between them the correction table is built 
         "there is not determined")
 
 
-def test_the_certificate_says_the_compensation_holds_at_the_samples_only(tmp_path, capsys):
+def test_the_certificate_says_the_compensation_holds_at_the_samples_only(certificate_text,
+                                                                         capsys):
     """The statement replaces the opinion on the table (read back from the PDF); the
     statistics' "After compensation" and "Correction table" rows carry the same words (read
     from the document: a table's cells come back interleaved from pdftotext)."""
-    text = _certificate_text(tmp_path, 8, 3, "en", capsys)
+    text = certificate_text(8, 3, "en", capsys)
     # the table's own statement (its sha256) says it, in place of a statement of its own
     # (day review 68 F8, the rest)
     assert ("and the compensated error and the table hold " + SAID

@@ -222,3 +222,33 @@ def test_the_tilts_change_is_the_copys_of_before_to_its_rounding():
         assert now > 0
     assert tilt_half_range_change(np.array([0.0, 10.0]), 2.0, 0.0) == 0.0
     assert tilt_half_range_change(np.array([10.0]), 2.0, 300.0) == 0.0
+
+
+# -- the tilt bound's effect at each rotation (the set-up model's error mode) ---------------
+def tilt_bound_effect_one_direction_at_a_time(rotation, beta, bound):
+    """tilt_bound_effect_arcsec as it was until stop 75: the public ζ one α at a time."""
+    worst = np.zeros(np.shape(rotation))
+    for psi in (0.5 * bound, bound):
+        for alpha in np.arange(360.0):
+            worst = np.maximum(worst, np.abs(induced_error_arcsec(rotation, psi / 3600.0,
+                                                                  float(alpha), beta)))
+    return worst
+
+
+def test_the_tilt_bounds_effect_is_every_directions_largest_bit_for_bit():
+    """Every tilt direction at once (one ζ of 360 directions) gives the largest |ζ| at each
+    rotation that the directions one at a time give, bit for bit; a scalar rotation and no
+    bound as before."""
+    from models.theodolite.model import tilt_bound_effect_arcsec
+
+    rng = np.random.default_rng(75)
+    for _ in range(12):
+        rotation, beta, bound = random_tilt_case(rng)
+        effect = tilt_bound_effect_arcsec(rotation, beta, bound)
+        assert effect.shape == rotation.shape and np.all(effect > 0)
+        assert np.array_equal(effect, tilt_bound_effect_one_direction_at_a_time(
+            rotation, beta, bound))
+    for rotation in (np.array(12.5), np.array([0.0, 10.0])):
+        assert np.array_equal(tilt_bound_effect_arcsec(rotation, 3.0, 40.0),
+                              tilt_bound_effect_one_direction_at_a_time(rotation, 3.0, 40.0))
+    assert not np.any(tilt_bound_effect_arcsec(np.array([0.0, 10.0]), 3.0, 0.0))
