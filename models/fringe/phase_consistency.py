@@ -1,0 +1,183 @@
+"""Whether the phase given to a fringe record (N equal steps, or a θ column) is the phase its
+signals show: the checks that refuse a wrong N, or a θ cell out of place, before any figure.
+
+A wrong samples per period N makes the phase it assigns run ahead of, or behind, the signals'
+by the same amount every period: fitted period by period against one model of each channel,
+both channels' phases drift alike along a straight line, ``2π (N_true − N) / N_true`` a period (63 on a
+record of 64 samples a period: −5.6° a period, 45° over 8 periods). A right N leaves the
+periods' phases where the noise puts them. (Its fit's R² against the wrong phase was 0.946:
+the gate of R² ≥ 0.9 let it through, and the error printed was 10.7" for 0.99".)
+
+A θ cell typed wrong (another row's value, a DMS angle in the middle of a record in degrees,
+1e308) puts one sample at a phase its signals contradict: the sample lies off the fitted
+signals by far more than the other samples scatter about them.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from models.fringe.model import TWO_PI, ChannelFit, model_signal, model_slope
+from models.messages import QT_TR_NOOP, message
+
+__all__ = ["DRIFT_FLOOR_PERIOD", "DRIFT_SIGMAS", "ROW_FLOOR_DEG", "ROW_SIGMAS", "THETA_LIMIT_DEG",
+           "check_samples_follow_n", "check_theta_rows", "period_drift"]
+
+#: A θ beyond this (degrees of electrical phase) is no sample's phase: 2.8 million periods,
+#: and a float64 still resolves 1e-9 of a period there.
+THETA_LIMIT_DEG = 1e9
+#: The drift of the phase over the record is refused beyond this many of its standard
+#: uncertainties ...
+DRIFT_SIGMAS = 6.0
+#: ... and beyond this share of a period (a smaller drift over the whole record moves no
+#: printed figure: the error is stated to 0.001" of a 79" period, 1.3e-5 of it).
+DRIFT_FLOOR_PERIOD = 1e-3
+#: A period fitted for the drift holds at least this share of its N samples.
+PERIOD_SHARE = 0.5
+#: A sample lies off the fitted signals by more than this many times their scatter
+#: (a chance of 1e-15 a sample for normal noise along the path) ...
+ROW_SIGMAS = 8.0
+#: ... and by more than this phase (degrees of a period): its θ is not its phase.
+ROW_FLOOR_DEG = 0.5
+#: Gauss-Newton steps of each period's phase (the first is within 1 % of the drift of a
+#: wrong N by 1 in 64; three leave it exact to the last printed digit).
+_STEPS = 3
+
+
+def _model(theta: np.ndarray, fits: tuple[ChannelFit, ChannelFit]
+           ) -> tuple[np.ndarray, np.ndarray]:
+    return model_signal(theta, fits[0]), model_signal(theta, fits[1])
+
+
+def period_drift(place: np.ndarray, per_period: int, u: np.ndarray, fit: ChannelFit
+                 ) -> tuple[float, float, float] | None:
+    """(drift, its standard uncertainty, periods spanned): how far (rad of phase) one
+    channel's phase moves from its first period to its last against N = ``per_period`` equal
+    steps.
+
+    ``place`` is each sample's place in the record (0, 1, 2 …; a gap keeps its place). Each
+    whole period's phase shift δ_p is fitted (Gauss-Newton) against the channel's model
+    ``fit`` at the phase ``2π place / N``; a straight line through δ_p against the period's
+    mid place, weighted by what each period determines (Σ (dU/dθ)²), gives the drift a
+    period. Its uncertainty is the larger of the channel's scatter about the shifted model
+    (white noise) and, with five periods or more, the periods' scatter about the line (a
+    phase that wanders). None when fewer than two periods hold at least
+    :data:`PERIOD_SHARE` of their N samples: the drift is not determined."""
+    place = np.asarray(place, dtype=np.int64)
+    period = place // per_period
+    theta = place * (TWO_PI / per_period)
+    counts = np.bincount(period)
+    full = np.flatnonzero(counts >= max(2, PERIOD_SHARE * per_period))
+    if full.size < 2:
+        return None
+    keep = np.isin(period, full)
+    index = np.searchsorted(full, period[keep])
+    theta, u = theta[keep], np.asarray(u, dtype=float)[keep]
+    shift = np.zeros(full.size)
+    weight = np.zeros(full.size)
+    for _ in range(_STEPS):
+        at = theta + shift[index]
+        slope_v = model_slope(at, fit)
+        weight = np.bincount(index, slope_v * slope_v, minlength=full.size)
+        if not np.all(weight > 0):
+            return None
+        shift = shift + np.bincount(index, (u - model_signal(at, fit)) * slope_v,
+                                    minlength=full.size) / weight
+    residual = u - model_signal(theta + shift[index], fit)
+    noise = math.sqrt(float(residual @ residual) / max(1, theta.size - full.size))  # V
+    mid = np.bincount(index, place[keep], minlength=full.size) / counts[full] / per_period
+    total = float(np.sum(weight))
+    centre = float(np.sum(weight * mid)) / total
+    spread = float(np.sum(weight * (mid - centre) ** 2))
+    mean_shift = float(np.sum(weight * shift)) / total
+    slope = float(np.sum(weight * (mid - centre) * (shift - mean_shift))) / spread
+    u_slope = noise / math.sqrt(spread)
+    if full.size >= 5:
+        line = mean_shift + slope * (mid - centre)
+        scatter = float(np.sum(weight * (shift - line) ** 2)) / (full.size - 2)
+        u_slope = max(u_slope, math.sqrt(scatter / spread))
+    periods = float(mid[-1] - mid[0])
+    return slope * periods, u_slope * periods, periods
+
+
+def check_samples_follow_n(place: np.ndarray, per_period: int, u_sin: np.ndarray,
+                           u_cos: np.ndarray, fits: tuple[ChannelFit, ChannelFit]) -> None:
+    """Refuse N samples per period that the signals do not follow: both channels' phases
+    drift, the same way, from the first period to the last by more than
+    :data:`DRIFT_SIGMAS` standard uncertainties and more than :data:`DRIFT_FLOOR_PERIOD` of
+    a period (:func:`period_drift`). A wrong N moves both alike; a quadrature error that
+    changes along the record moves one channel against the other, and is the signals' own
+    (models.fringe.signal_quality shows it). The refusal says how many samples a period the
+    signals show."""
+    drifts = [period_drift(place, per_period, u, fit)
+              for u, fit in ((u_sin, fits[0]), (u_cos, fits[1]))]
+    if drifts[0] is None or drifts[1] is None:
+        return
+    (drift_s, u_s, periods), (drift_c, u_c, _) = drifts
+    floor = DRIFT_FLOOR_PERIOD * TWO_PI
+    if not all(abs(d) > max(DRIFT_SIGMAS * u_d, floor) for d, u_d in ((drift_s, u_s),
+                                                                     (drift_c, u_c))):
+        return
+    if (drift_s > 0) != (drift_c > 0):
+        return
+    drift = 0.5 * (drift_s + drift_c)
+    u_drift = 0.5 * math.hypot(u_s, u_c)
+    per = drift / periods  # rad a period of N samples
+    shown = per_period * TWO_PI / (TWO_PI + per)
+    raise ValueError(message(QT_TR_NOOP(
+        "the signals do not follow N = {n} samples per period: against it their phase "
+        "drifts by {per}° a period, {drift}° from the first period to the last ({sigmas} "
+        "times its uncertainty); they show {shown} samples a period. Give the N the record "
+        "was taken with, or leave it out to estimate the phase from the signals"),
+        n=per_period, per=f"{math.degrees(per):+.3g}", drift=f"{math.degrees(drift):+.3g}",
+        sigmas=f"{abs(drift) / u_drift:.0f}" if u_drift > 0 else "∞",
+        shown=f"{shown:.4g}"))
+
+
+def _signals_phase(u_s: float, u_c: float, fits: tuple[ChannelFit, ChannelFit],
+                   near_rad: float) -> float:
+    """The phase (rad) at which the fitted signals come nearest the sample (u_s, u_c), the
+    whole periods taken nearest ``near_rad``."""
+    dense = np.linspace(0.0, TWO_PI, 3600, endpoint=False)
+    m_s, m_c = _model(dense, fits)
+    phase = float(dense[int(np.argmin((m_s - u_s) ** 2 + (m_c - u_c) ** 2))])
+    return phase + TWO_PI * round((near_rad - phase) / TWO_PI)
+
+
+def check_theta_rows(theta_rad: np.ndarray, u_sin: np.ndarray, u_cos: np.ndarray,
+                     fits: tuple[ChannelFit, ChannelFit], row_of) -> None:
+    """Refuse a θ cell that contradicts its sample's signals: the sample lies off the
+    signals fitted against θ by more than :data:`ROW_SIGMAS` times the samples' scatter
+    about them (from their median distance) and by more than :data:`ROW_FLOOR_DEG`
+    of phase. The refusal names the (first) row, its θ and the phase its signals show.
+    ``row_of(i)`` is the sheet row of sample i."""
+    m_s, m_c = _model(theta_rad, fits)
+    off = np.hypot(u_sin - m_s, u_cos - m_c)  # V
+    sin_fit, cos_fit = fits
+    amplitude = 0.5 * (sin_fit.amplitude.get(1, 0.0) + cos_fit.amplitude.get(1, 0.0))
+    # σ of the samples' distance: as if all of it were along the path (a θ column's own
+    # noise; its median is 0.674 σ), the larger of the two readings of the median (the
+    # channels' noise alone, in two directions, has 1.18 σ; taken so, a θ jittered by
+    # 0.5° was refused as 2.4° off, 4.9 σ)
+    scatter = float(np.median(off)) / 0.6745
+    floor = 2.0 * amplitude * math.sin(0.5 * math.radians(ROW_FLOOR_DEG))
+    bad = np.flatnonzero(off > max(ROW_SIGMAS * scatter, floor))
+    if not bad.size:
+        return
+    i = int(bad[0])
+    theta = float(theta_rad[i])
+    shown = _signals_phase(float(u_sin[i]), float(u_cos[i]), fits, theta)
+    others = (message(QT_TR_NOOP(" (and {count} other rows)"), count=bad.size - 1)
+              if bad.size > 1 else "")
+    raise ValueError(message(QT_TR_NOOP(
+        "row {row}, column 'theta_deg': θ = {theta}° is not the phase of its signals (u_sin "
+        "{u_sin} V, u_cos {u_cos} V lie at {shown}° on the signals the other samples draw, "
+        "{off}° away, where the samples scatter by {scatter}°){others}: a mistyped θ or a row "
+        "out of place; check that row"),
+        row=row_of(i), theta=f"{math.degrees(theta):.6g}", u_sin=f"{u_sin[i]:g}",
+        u_cos=f"{u_cos[i]:g}", shown=f"{math.degrees(shown):.1f}",
+        off=f"{math.degrees(abs(shown - theta)):.3g}",
+        scatter=f"{math.degrees(scatter / amplitude) if amplitude > 0 else 0.0:.2g}",
+        others=others))
