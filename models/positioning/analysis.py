@@ -316,6 +316,47 @@ def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -
     return out
 
 
+def _check_stray_targets(parsed: ParsedReadings, targets: np.ndarray, runs: np.ndarray,
+                         directions: np.ndarray) -> None:
+    """Refuse a target read in one run only where another run, with at least as many
+    readings, has no reading there: no target of the test but a mistyped one (a run in
+    progress, with fewer readings, may not have reached it yet). It was taken for a new
+    target: the runs were planned anew, a complete last run became one in progress and its
+    readings entered no figure (contract review 75 F8)."""
+    key = np.round(targets, 9).tolist()
+    run_list = [int(r) for r in runs.tolist()]
+    sense = directions.tolist()
+    readings_of = {r: run_list.count(r) for r in set(run_list)}
+    if len(readings_of) < 2:
+        return
+    runs_at: dict[float, set[int]] = {}
+    for t, r in zip(key, run_list, strict=True):
+        runs_at.setdefault(t, set()).add(r)
+    for i, (t, r) in enumerate(zip(key, run_list, strict=True)):
+        if len(runs_at[t]) != 1:
+            continue
+        lacking = sorted(q for q in readings_of if q != r and readings_of[q] >= readings_of[r])
+        if not lacking:
+            continue
+        other = lacking[0]
+
+        def points(run: int) -> set[tuple[float, float]]:
+            return {(u, d) for u, q, d in zip(key, run_list, sense, strict=True) if q == run}
+
+        # the test's targets in the stray's place: those the other run reads in its
+        # direction and its own run does not
+        missing = sorted(u for u, d in points(other) - points(r) if d == sense[i])
+        instead = (message(QT_TR_NOOP(" (run {run} has no reading at {missing} in that "
+                                      "direction, which run {other} has)"), run=r, other=other,
+                           missing=", ".join(f"{u:g}" for u in missing[:3]))
+                   if missing else "")
+        raise ValueError(message(QT_TR_NOOP(
+            "row {row}: target {target} is read in run {run} only: run {other}, with as many "
+            "readings, has none there{instead}; a mistyped target? Check that row"),
+            row=_row(parsed, i), target=f"{targets[i]:g}", run=r, other=other,
+            instead=instead))
+
+
 def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
                      ) -> tuple[ParsedReadings, IncompleteUnit | None]:
     """The complete runs, and the last unit when it is in progress: in the linear cycle the
@@ -334,6 +375,8 @@ def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
         targets = np.round(parsed["target"].astype(float), 9)
     directions = _directions(parsed, [])
     runs = _runs_counted(parsed, targets, directions)
+    if np.all(np.isfinite(targets)):  # before a run is taken for one in progress
+        _check_stray_targets(parsed, targets, runs, directions)
     t, d, r = targets.tolist(), directions.tolist(), runs.tolist()
     # linear cycle: the last run short of the (target, direction) the runs before it have
     earlier = {(t[i], d[i]) for i in range(parsed.n) if r[i] != r[-1]}
@@ -397,6 +440,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
     deviations = _deviations(parsed, s)
     directions = _directions(parsed, warnings)
     runs = _runs(parsed, targets, directions)
+    _check_stray_targets(parsed, targets, runs, directions)
     result = evaluate(targets, runs, directions, deviations, parsed.row_index.copy(),
                       s["target_unit"], s["deviation_unit"], s["standard"], warnings)
     if repeats is not None:
