@@ -316,32 +316,51 @@ def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -
     return out
 
 
+def _contiguous(values: list) -> bool:
+    """Whether each value's rows are one block (the pilgrim-step cycle's targets)."""
+    seen, previous = set(), None
+    for value in values:
+        if value != previous:
+            if value in seen:
+                return False
+            seen.add(value)
+            previous = value
+    return True
+
+
 def _check_stray_targets(parsed: ParsedReadings, targets: np.ndarray, runs: np.ndarray,
                          directions: np.ndarray) -> None:
-    """Refuse a target read in one run only where another run, with at least as many
-    readings, has no reading there: no target of the test but a mistyped one (a run in
-    progress, with fewer readings, may not have reached it yet). It was taken for a new
+    """Refuse a target read in one run only where another run, not the one in progress,
+    has no reading there: no target of the test but a mistyped one. It was taken for a new
     target: the runs were planned anew, a complete last run became one in progress and its
-    readings entered no figure (contract review 75 F8)."""
+    readings entered no figure (contract review 75 F8).
+
+    What is no typo: a target the run in progress has not reached yet (the linear cycle's
+    last run, its readings the last rows and a part of the earlier runs' targets), and the
+    pilgrim-step cycle's last target, begun in the last rows."""
     key = np.round(targets, 9).tolist()
     run_list = [int(r) for r in runs.tolist()]
     sense = directions.tolist()
-    readings_of = {r: run_list.count(r) for r in set(run_list)}
-    if len(readings_of) < 2:
+    if len(set(run_list)) < 2:
         return
+    members = list(zip(key, sense, strict=True))
+    last = run_list[-1]
+    earlier = {members[i] for i in range(len(members)) if run_list[i] != last}
+    in_progress = last if short_last_unit(run_list, members, earlier) is not None else None
     runs_at: dict[float, set[int]] = {}
     for t, r in zip(key, run_list, strict=True):
         runs_at.setdefault(t, set()).add(r)
+    pilgrim = _contiguous(key)
     for i, (t, r) in enumerate(zip(key, run_list, strict=True)):
-        if len(runs_at[t]) != 1:
+        if len(runs_at[t]) != 1 or (pilgrim and t == key[-1]):
             continue
-        lacking = sorted(q for q in readings_of if q != r and readings_of[q] >= readings_of[r])
+        lacking = sorted(q for q in set(run_list) if q not in (r, in_progress))
         if not lacking:
             continue
         other = lacking[0]
 
         def points(run: int) -> set[tuple[float, float]]:
-            return {(u, d) for u, q, d in zip(key, run_list, sense, strict=True) if q == run}
+            return {m for m, q in zip(members, run_list, strict=True) if q == run}
 
         # the test's targets in the stray's place: those the other run reads in its
         # direction and its own run does not
@@ -351,8 +370,8 @@ def _check_stray_targets(parsed: ParsedReadings, targets: np.ndarray, runs: np.n
                            missing=", ".join(f"{u:g}" for u in missing[:3]))
                    if missing else "")
         raise ValueError(message(QT_TR_NOOP(
-            "row {row}: target {target} is read in run {run} only: run {other}, with as many "
-            "readings, has none there{instead}; a mistyped target? Check that row"),
+            "row {row}: target {target} is read in run {run} only: run {other} has no "
+            "reading there{instead}; a mistyped target? Check that row"),
             row=_row(parsed, i), target=f"{targets[i]:g}", run=r, other=other,
             instead=instead))
 

@@ -84,16 +84,43 @@ def test_a_mistyped_target_in_a_complete_positioning_file_is_refused(capsys, tmp
     line = _refused(capsys, "positioning", path)
     assert line.startswith(f"{path}: row ")
     assert int(line.split(": row ")[1].split(":")[0]) in (6, 7)
-    assert ("target 12.5043 is read in run 1 only: run 2, with as many readings, has none "
-            "there (run 1 has no reading at 150 in that direction, which run 2 has)") in line
+    assert ("target 12.5043 is read in run 1 only: run 2 has no reading there (run 1 has no "
+            "reading at 150 in that direction, which run 2 has)") in line
     assert "in progress" not in line  # run 5 is complete: it is not left out
 
 
-@pytest.mark.parametrize("last_row", [59, 110])
-def test_a_positioning_run_in_progress_is_still_one(capsys, tmp_path, samples_dir, last_row):
-    """A run short of its last targets (fewer readings than the runs before it) has not
-    reached them yet: those targets are read in the earlier runs only, and are no typos."""
+@pytest.mark.parametrize("case", ["last run complete", "last run in progress", "no run column"])
+def test_a_mistyped_target_elsewhere_is_refused_naming_its_row(capsys, tmp_path, samples_dir,
+                                                               case):
     header, rows = _rows(samples_dir / "positioning_sample.csv")
+    if case == "no run column":  # the k-th approach to a target is run k
+        header, rows = [header[0], *header[2:]], [[r[0], *r[2:]] for r in rows]
+        at = 5
+    else:
+        at = 108  # run 5, + at 120
+        assert rows[at][:3] == ["120", "5", "+"]
+        rows = rows if case == "last run complete" else rows[:115]
+    rows[at][0] = "155"
+    path = _write(tmp_path / "positioning_typo.csv", header, rows)
+    line = _refused(capsys, "positioning", path)
+    assert line.startswith(f"{path}: row ") and "is read in run " in line
+    assert int(line.split(": row ")[1].split(":")[0]) in (at + 1, at + 2)
+
+
+@pytest.mark.parametrize("order, last_row", [
+    ("linear", 14), ("linear", 40), ("linear", 59), ("linear", 110), ("linear", 129),
+    ("pilgrim step", 34), ("pilgrim step", 59), ("pilgrim step", 110), ("pilgrim step", 121)])
+def test_a_positioning_run_in_progress_is_still_one(capsys, tmp_path, samples_dir, last_row,
+                                                    order):
+    """A run short of its last targets has not reached them yet, nor has the pilgrim step's
+    last target its later runs: such targets are read in one run only, and are no typos."""
+    header, rows = _rows(samples_dir / "positioning_sample.csv")
+    if order == "pilgrim step":  # every approach of a target in turn
+        rows = sorted(rows, key=lambda r: (float(r[0]), int(r[1]), r[2] != "+"))
     path = _write(tmp_path / "positioning_progress.csv", header, rows[:last_row])
-    assert main(["analyze", "positioning", path]) == 0
-    assert "In progress: run" in capsys.readouterr().out
+    assert main(["analyze", "positioning", path]) == 0, capsys.readouterr().err
+    out = capsys.readouterr().out
+    if order == "linear" and last_row > 26:  # (run 1 alone is no run in progress)
+        assert "In progress: run" in out
+    elif order == "pilgrim step" and last_row % 10:
+        assert "In progress: target" in out
