@@ -41,6 +41,7 @@ from models.fringe.phase_consistency import (
     THETA_LIMIT_DEG,
     check_samples_follow_n,
     check_theta_rows,
+    check_theta_sequence,
 )
 from models.fringe.result import FringeResult
 from models.fringe.sampling_phase_noise import phase_noise_rad
@@ -286,6 +287,7 @@ def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str]
                 QT_TR_NOOP("row {row}, column 'theta_deg': {theta}° is beyond ±{limit}°: not a "
                            "sample's phase"),
                 row=_row(parsed, i), theta=f"{theta_col[i]:g}", limit=f"{THETA_LIMIT_DEG:g}"))
+        check_theta_sequence(theta_col, lambda i: _row(parsed, i))
         if np.ptp(theta_col) == 0:
             raise ValueError(message(
                 QT_TR_NOOP("every θ is {theta_col}°: the phase did not change"),

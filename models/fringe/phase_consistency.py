@@ -23,7 +23,7 @@ from models.fringe.model import TWO_PI, ChannelFit, model_signal, model_slope
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["DRIFT_FLOOR_PERIOD", "DRIFT_SIGMAS", "ROW_FLOOR_DEG", "ROW_SIGMAS", "THETA_LIMIT_DEG",
-           "check_samples_follow_n", "check_theta_rows", "period_drift"]
+           "check_samples_follow_n", "check_theta_rows", "check_theta_sequence", "period_drift"]
 
 #: A θ beyond this (degrees of electrical phase) is no sample's phase: 2.8 million periods,
 #: and a float64 still resolves 1e-9 of a period there.
@@ -181,3 +181,70 @@ def check_theta_rows(theta_rad: np.ndarray, u_sin: np.ndarray, u_cos: np.ndarray
         off=f"{math.degrees(abs(shown - theta)):.3g}",
         scatter=f"{math.degrees(scatter / amplitude) if amplitude > 0 else 0.0:.2g}",
         others=others))
+
+
+#: A θ column steps by less than this (degrees, the median step) where it is read along a
+#: motion (sequential), not in another order (shuffled rows).
+SEQUENCE_STEP_DEG = 45.0
+#: A θ column this share of whose θ lie within one period is wrapped into it.
+WRAPPED_SHARE = 0.99
+
+
+def check_theta_sequence(theta_deg: np.ndarray, row_of) -> None:
+    """Refuse a θ that leaves the record's sequence and comes back: in a record read along a
+    motion (median step below :data:`SEQUENCE_STEP_DEG`), a θ half a period or more away
+    from both its neighbours while they lie within half a period of each other (an end row:
+    half a period or more from the next, which steps on as the record does). Such a θ is a
+    whole number of periods off (else its signals contradict it: :func:`check_theta_rows`),
+    which the fit does not see, but the span of the record does: a record of 300° with one
+    θ typed 360° too high passed as a whole period, and its error was extrapolated over the
+    60° never sampled. Where the θ lie in [0°, 360°) or [−180°, 180°) (wrapped into one
+    period, jumping a period at each wrap; :data:`WRAPPED_SHARE` of them, a few typed wrong
+    may not) only a θ outside that period is judged
+    (a θ typed a period off lies outside); a record with other jumps of half a period (two
+    runs one after the other) is not judged. ``row_of(i)`` is the sheet row of sample i."""
+    theta = np.asarray(theta_deg, dtype=float)
+    if theta.size < 4:
+        return
+    step = np.diff(theta)
+    jumps = np.abs(step) >= 180.0
+    if not (np.any(jumps) and float(np.median(np.abs(step))) < SEQUENCE_STEP_DEG):
+        return
+    # inner rows: a jump out and one back, the neighbours together
+    out_and_back = (jumps[:-1] & jumps[1:] & (np.sign(step[:-1]) != np.sign(step[1:]))
+                    & (np.abs(theta[2:] - theta[:-2]) < 180.0))
+    candidates = [int(i) + 1 for i in np.flatnonzero(out_and_back)]
+    explained = 2 * len(candidates)
+    if jumps[0] and not jumps[1]:  # the ends: a jump to rows that step as the record does
+        candidates.insert(0, 0)
+        explained += 1
+    if jumps[-1] and not jumps[-2]:
+        candidates.append(theta.size - 1)
+        explained += 1
+    if not candidates:
+        return
+    wrapped = next(((low, low + 360.0) for low in (0.0, -180.0)
+                    if np.count_nonzero((theta >= low) & (theta < low + 360.0))
+                    >= WRAPPED_SHARE * theta.size), None)
+    if wrapped is not None:
+        # θ wrapped into one period: a wrap jumps a period (and noise at a wrap out and
+        # back), but a θ typed a period off lies outside the period
+        candidates = [i for i in candidates if not wrapped[0] <= theta[i] < wrapped[1]]
+    elif explained != int(np.count_nonzero(jumps)):
+        return  # other jumps (two runs one after the other): not judged
+    if not candidates:
+        return
+    i = candidates[0]
+    if i == 0:
+        neighbours = message(QT_TR_NOOP("the next two rows are at {a}° and {b}°"),
+                             a=f"{theta[1]:.6g}", b=f"{theta[2]:.6g}")
+    elif i == theta.size - 1:
+        neighbours = message(QT_TR_NOOP("the two rows before it are at {a}° and {b}°"),
+                             a=f"{theta[-3]:.6g}", b=f"{theta[-2]:.6g}")
+    else:
+        neighbours = message(QT_TR_NOOP("the rows before and after it are at {a}° and {b}°"),
+                             a=f"{theta[i - 1]:.6g}", b=f"{theta[i + 1]:.6g}")
+    raise ValueError(message(QT_TR_NOOP(
+        "row {row}, column 'theta_deg': θ = {theta}° leaves the record's sequence "
+        "({neighbours}): a mistyped θ; check that row"),
+        row=row_of(i), theta=f"{theta[i]:.6g}", neighbours=neighbours))

@@ -316,28 +316,17 @@ def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -
     return out
 
 
-def _contiguous(values: list) -> bool:
-    """Whether each value's rows are one block (the pilgrim-step cycle's targets)."""
-    seen, previous = set(), None
-    for value in values:
-        if value != previous:
-            if value in seen:
-                return False
-            seen.add(value)
-            previous = value
-    return True
-
-
 def _check_stray_targets(parsed: ParsedReadings, targets: np.ndarray, runs: np.ndarray,
                          directions: np.ndarray) -> None:
-    """Refuse a target read in one run only where another run, not the one in progress,
-    has no reading there: no target of the test but a mistyped one. It was taken for a new
-    target: the runs were planned anew, a complete last run became one in progress and its
-    readings entered no figure (contract review 75 F8).
+    """Refuse a target read in one run only where, in that direction, another target lacks
+    a reading in a run that reads the others: a target mistyped in place of one of the
+    test's. It was taken for a new target: the runs were planned anew, a complete last run
+    became one in progress and its readings entered no figure (contract review 75 F8).
 
-    What is no typo: a target the run in progress has not reached yet (the linear cycle's
-    last run, its readings the last rows and a part of the earlier runs' targets), and the
-    pilgrim-step cycle's last target, begun in the last rows."""
+    A target read in one run with no reading missing elsewhere is a target approached once
+    (its U is not determined, said so), and a target the run in progress has not reached
+    (the linear cycle's last run, its readings the last rows and a part of the earlier
+    runs' targets) is no hole: that run is left out of the count."""
     key = np.round(targets, 9).tolist()
     run_list = [int(r) for r in runs.tolist()]
     sense = directions.tolist()
@@ -347,33 +336,28 @@ def _check_stray_targets(parsed: ParsedReadings, targets: np.ndarray, runs: np.n
     last = run_list[-1]
     earlier = {members[i] for i in range(len(members)) if run_list[i] != last}
     in_progress = last if short_last_unit(run_list, members, earlier) is not None else None
-    runs_at: dict[float, set[int]] = {}
+    runs_of: dict[tuple[float, float], set[int]] = {}
+    for member, r in zip(members, run_list, strict=True):
+        runs_of.setdefault(member, set()).add(r)
+    targets_runs: dict[float, set[int]] = {}
     for t, r in zip(key, run_list, strict=True):
-        runs_at.setdefault(t, set()).add(r)
-    pilgrim = _contiguous(key)
+        targets_runs.setdefault(t, set()).add(r)
     for i, (t, r) in enumerate(zip(key, run_list, strict=True)):
-        if len(runs_at[t]) != 1 or (pilgrim and t == key[-1]):
+        if len(targets_runs[t]) != 1 or r == in_progress:
             continue
-        lacking = sorted(q for q in set(run_list) if q not in (r, in_progress))
-        if not lacking:
+        d = sense[i]
+        runs_d = {q for (u, e), qs in runs_of.items() if e == d for q in qs} - {in_progress}
+        holes = sorted((u, sorted(runs_d - qs)) for (u, e), qs in runs_of.items()
+                       if e == d and u != t and runs_d - qs)
+        if not holes:
             continue
-        other = lacking[0]
-
-        def points(run: int) -> set[tuple[float, float]]:
-            return {m for m, q in zip(members, run_list, strict=True) if q == run}
-
-        # the test's targets in the stray's place: those the other run reads in its
-        # direction and its own run does not
-        missing = sorted(u for u, d in points(other) - points(r) if d == sense[i])
-        instead = (message(QT_TR_NOOP(" (run {run} has no reading at {missing} in that "
-                                      "direction, which run {other} has)"), run=r, other=other,
-                           missing=", ".join(f"{u:g}" for u in missing[:3]))
-                   if missing else "")
+        u, lacking = holes[0]
         raise ValueError(message(QT_TR_NOOP(
-            "row {row}: target {target} is read in run {run} only: run {other} has no "
-            "reading there{instead}; a mistyped target? Check that row"),
-            row=_row(parsed, i), target=f"{targets[i]:g}", run=r, other=other,
-            instead=instead))
+            "row {row}: target {target} is read in run {run} only, while target {missing} "
+            "has no reading in that direction in run {lacking}, which the other runs read: "
+            "a mistyped target? Check that row"),
+            row=_row(parsed, i), target=f"{targets[i]:g}", run=r, missing=f"{u:g}",
+            lacking=", ".join(str(q) for q in lacking[:5])))
 
 
 def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]

@@ -84,8 +84,8 @@ def test_a_mistyped_target_in_a_complete_positioning_file_is_refused(capsys, tmp
     line = _refused(capsys, "positioning", path)
     assert line.startswith(f"{path}: row ")
     assert int(line.split(": row ")[1].split(":")[0]) in (6, 7)
-    assert ("target 12.5043 is read in run 1 only: run 2 has no reading there (run 1 has no "
-            "reading at 150 in that direction, which run 2 has)") in line
+    assert ("target 12.5043 is read in run 1 only, while target 150 has no reading in that "
+            "direction in run 1, which the other runs read") in line
     assert "in progress" not in line  # run 5 is complete: it is not left out
 
 
@@ -104,6 +104,8 @@ def test_a_mistyped_target_elsewhere_is_refused_naming_its_row(capsys, tmp_path,
     path = _write(tmp_path / "positioning_typo.csv", header, rows)
     line = _refused(capsys, "positioning", path)
     assert line.startswith(f"{path}: row ") and "is read in run " in line
+    assert "target 150 has no reading" in line if case == "no run column" else \
+        "target 120 has no reading in that direction in run 5" in line
     assert int(line.split(": row ")[1].split(":")[0]) in (at + 1, at + 2)
 
 
@@ -124,3 +126,13 @@ def test_a_positioning_run_in_progress_is_still_one(capsys, tmp_path, samples_di
         assert "In progress: run" in out
     elif order == "pilgrim step" and last_row % 10:
         assert "In progress: target" in out
+
+
+def test_a_target_approached_once_with_no_reading_missing_is_no_typo(capsys, tmp_path):
+    """Run 1 reads 0, 10 and 20; run 2 only 0 and 20: no target of run 1 is missing where
+    10 was read, so 10 is a target approached once (its U not determined), not a typo."""
+    path = tmp_path / "log.csv"
+    path.write_text("target,run,direction,deviation\n0,1,+,1.0\n0,2,+,1.2\n10,1,+,2.0\n"
+                    "20,1,+,2.5\n20,2,+,2.4\n", encoding="utf-8")
+    assert main(["analyze", "positioning", str(path)]) == 0
+    assert "3 targets 0…20°, 5 readings" in capsys.readouterr().out

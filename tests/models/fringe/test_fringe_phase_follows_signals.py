@@ -166,3 +166,38 @@ def test_a_theta_beyond_a_billion_degrees_is_refused_naming_its_row():
     with pytest.raises(ValueError, match=r"^row 7, column 'theta_deg': 1e\+308° is beyond "
                                          r"±1e\+09°"):
         FRINGE.analyze(readings(u_sin, u_cos, theta), {})
+
+
+def _short_record(seed: int):
+    """300° of one period (too short for a whole period's error), 1.5° a sample."""
+    rng = np.random.default_rng(seed)
+    phase = np.radians(np.arange(200) * 1.5)
+    u_sin, u_cos = head(phase, rng, 0.0003, 10.0 / 65536)
+    return u_sin, u_cos, np.degrees(phase)
+
+
+@pytest.mark.parametrize("index, periods", [(50, 1), (50, -2), (0, 1), (199, -1)])
+def test_a_theta_a_whole_period_off_is_refused_naming_its_row(index, periods):
+    """Its signals agree with it (a period on), but the record's span grew by a period: the
+    short record passed as a whole period and its error was extrapolated (exit 0)."""
+    u_sin, u_cos, theta = _short_record(8)
+    with pytest.raises(ValueError, match="covers 83.3 % of one period"):
+        FRINGE.analyze(readings(u_sin, u_cos, theta), {})
+    theta[index] += 360.0 * periods
+    with pytest.raises(ValueError, match=rf"^row {index + 1}, column 'theta_deg': θ = "
+                                         r".*° leaves the record's sequence"):
+        FRINGE.analyze(readings(u_sin, u_cos, theta), {})
+
+
+@pytest.mark.parametrize("start_deg", [354.375, 180.0, -5.625])
+def test_a_theta_column_wrapped_at_a_period_is_no_break_of_its_sequence(start_deg):
+    """θ wrapped into [0°, 360°) or [−180°, 180°) jumps back a period at every wrap, the
+    first row's too where the record starts just before one."""
+    rng = np.random.default_rng(9)
+    phase = np.radians(start_deg + np.arange(64 * 3) * 5.625)
+    u_sin, u_cos = head(phase, rng, 0.0003, 10.0 / 65536)
+    for wrapped in (np.mod(np.degrees(phase), 360.0),
+                    np.mod(np.degrees(phase) + 180.0, 360.0) - 180.0):
+        for rows in (slice(0, 64), slice(0, None)):
+            result = FRINGE.analyze(readings(u_sin[rows], u_cos[rows], wrapped[rows]), {})
+            assert result.compensated_peak_to_peak / result.period_length < 0.01
