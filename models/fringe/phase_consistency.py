@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from models.fringe.model import TWO_PI, ChannelFit, model_signal, model_slope
+from models.fringe.model import TWO_PI, ChannelFit, model_signal
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["DRIFT_FLOOR_PERIOD", "DRIFT_SIGMAS", "ROW_FLOOR_DEG", "ROW_SIGMAS", "THETA_LIMIT_DEG",
@@ -41,14 +41,25 @@ PERIOD_SHARE = 0.5
 ROW_SIGMAS = 8.0
 #: ... and by more than this phase (degrees of a period): its θ is not its phase.
 ROW_FLOOR_DEG = 0.5
-#: Gauss-Newton steps of each period's phase (the first is within 1 % of the drift of a
-#: wrong N by 1 in 64; three leave it exact to the last printed digit).
-_STEPS = 3
 
 
 def _model(theta: np.ndarray, fits: tuple[ChannelFit, ChannelFit]
            ) -> tuple[np.ndarray, np.ndarray]:
     return model_signal(theta, fits[0]), model_signal(theta, fits[1])
+
+
+def _columns(theta: np.ndarray, orders: tuple[int, ...]) -> np.ndarray:
+    """Columns 1, sin kθ, cos kθ for k in ``orders`` (the fit's order of parameters)."""
+    x = np.empty((theta.size, 1 + 2 * len(orders)))
+    x[:, 0] = 1.0
+    for i, k in enumerate(orders):
+        x[:, 1 + 2 * i] = np.sin(k * theta)
+        x[:, 2 + 2 * i] = np.cos(k * theta)
+    return x
+
+
+#: Periods with gaps fitted one by one at most (the others are left out of the drift).
+_GAP_PERIODS = 2000
 
 
 def period_drift(place: np.ndarray, per_period: int, u: np.ndarray, fit: ChannelFit
@@ -58,47 +69,81 @@ def period_drift(place: np.ndarray, per_period: int, u: np.ndarray, fit: Channel
     steps.
 
     ``place`` is each sample's place in the record (0, 1, 2 …; a gap keeps its place). Each
-    whole period's phase shift δ_p is fitted (Gauss-Newton) against the channel's model
-    ``fit`` at the phase ``2π place / N``; a straight line through δ_p against the period's
-    mid place, weighted by what each period determines (Σ (dU/dθ)²), gives the drift a
-    period. Its uncertainty is the larger of the channel's scatter about the shifted model
-    (white noise) and, with five periods or more, the periods' scatter about the line (a
-    phase that wanders). None when fewer than two periods hold at least
+    period is fitted on its own (offset and the orders of ``fit``, at the phases
+    ``2π place / N``): its fundamental's phase φ_p. A straight line through φ_p (unwrapped)
+    against the period, each weighted by its samples, gives the drift a period. Its
+    uncertainty is the larger of the channel's scatter about the periods' fits (white
+    noise: u(φ_p)² = 2σ² / (A1² n_p)) and, with five periods or more, the periods' scatter
+    about the line (a phase that wanders). None when fewer than two periods hold at least
     :data:`PERIOD_SHARE` of their N samples: the drift is not determined."""
     place = np.asarray(place, dtype=np.int64)
-    period = place // per_period
-    theta = place * (TWO_PI / per_period)
-    counts = np.bincount(period)
-    full = np.flatnonzero(counts >= max(2, PERIOD_SHARE * per_period))
-    if full.size < 2:
+    u = np.asarray(u, dtype=float)
+    amplitude = fit.amplitude.get(1, 0.0)
+    if 1 not in fit.orders or not amplitude > 0:
         return None
-    keep = np.isin(period, full)
-    index = np.searchsorted(full, period[keep])
-    theta, u = theta[keep], np.asarray(u, dtype=float)[keep]
-    shift = np.zeros(full.size)
-    weight = np.zeros(full.size)
-    for _ in range(_STEPS):
-        at = theta + shift[index]
-        slope_v = model_slope(at, fit)
-        weight = np.bincount(index, slope_v * slope_v, minlength=full.size)
-        if not np.all(weight > 0):
-            return None
-        shift = shift + np.bincount(index, (u - model_signal(at, fit)) * slope_v,
-                                    minlength=full.size) / weight
-    residual = u - model_signal(theta + shift[index], fit)
-    noise = math.sqrt(float(residual @ residual) / max(1, theta.size - full.size))  # V
-    mid = np.bincount(index, place[keep], minlength=full.size) / counts[full] / per_period
-    total = float(np.sum(weight))
-    centre = float(np.sum(weight * mid)) / total
-    spread = float(np.sum(weight * (mid - centre) ** 2))
-    mean_shift = float(np.sum(weight * shift)) / total
-    slope = float(np.sum(weight * (mid - centre) * (shift - mean_shift))) / spread
-    u_slope = noise / math.sqrt(spread)
-    if full.size >= 5:
-        line = mean_shift + slope * (mid - centre)
-        scatter = float(np.sum(weight * (shift - line) ** 2)) / (full.size - 2)
+    x = _columns(np.arange(per_period) * (TWO_PI / per_period), fit.orders)
+    params = x.shape[1]
+    if per_period < params or place.size < 2:
+        return None
+    if int(place[-1]) == place.size - 1:  # no gap (the places rise): whole periods in a row
+        full = np.arange(place.size // per_period)
+        counts = np.full(full.size + 1, per_period)
+        counts[-1] = place.size - full.size * per_period  # the last period's part
+        block = u[: full.size * per_period].reshape(full.size, per_period)
+        grid = np.full((1, per_period), np.nan)  # its one row: period full.size
+        grid[0, : counts[-1]] = u[full.size * per_period:]
+        first = full.size
+    else:
+        period, slot = np.divmod(place, per_period)
+        counts = np.bincount(period)
+        full = np.flatnonzero(counts == per_period)
+        grid = np.full((counts.size, per_period), np.nan)
+        grid[period, slot] = u
+        block = grid[full]
+        first = 0
+    phases, weights, where = [], [], []
+    squares, freedom = 0.0, 0
+    if full.size:
+        coef = np.linalg.pinv(x) @ block.T  # (params, periods)
+        # the residual sum of squares of least squares: |u|² − |X c|²
+        squares += float(np.sum(block * block)) - float(np.einsum("ip,ij,jp->", coef,
+                                                                  x.T @ x, coef))
+        freedom += full.size * (per_period - params)
+        phases.append(np.arctan2(coef[2], coef[1]))
+        weights.append(np.full(full.size, float(per_period)))
+        where.append(full.astype(float))
+    gaps = np.flatnonzero((counts < per_period) & (counts >= max(params + 1,
+                                                                  PERIOD_SHARE * per_period)))
+    for p in gaps[:_GAP_PERIODS]:
+        row = grid[p - first]
+        have = np.isfinite(row)
+        coef, *_ = np.linalg.lstsq(x[have], row[have], rcond=None)
+        residual = row[have] - x[have] @ coef
+        squares += float(residual @ residual)
+        freedom += int(have.sum()) - params
+        phases.append(np.array([math.atan2(coef[2], coef[1])]))
+        weights.append(np.array([float(have.sum())]))
+        where.append(np.array([float(p)]))
+    if not phases:
+        return None
+    at = np.concatenate(where)
+    order = np.argsort(at)
+    at, w = at[order], np.concatenate(weights)[order]
+    phase = np.unwrap(np.concatenate(phases)[order])
+    if at.size < 2:
+        return None
+    noise = math.sqrt(max(squares, 0.0) / freedom) if freedom > 0 else 0.0  # V
+    total = float(np.sum(w))
+    centre = float(np.sum(w * at)) / total
+    spread = float(np.sum(w * (at - centre) ** 2))
+    mean_phase = float(np.sum(w * phase)) / total
+    slope = float(np.sum(w * (at - centre) * (phase - mean_phase))) / spread
+    u_slope = math.sqrt(2.0) * noise / amplitude / math.sqrt(spread)
+    if at.size >= 5:
+        line = mean_phase + slope * (at - centre)
+        scatter = float(np.sum(w * (phase - line) ** 2)) / (at.size - 2)
         u_slope = max(u_slope, math.sqrt(scatter / spread))
-    periods = float(mid[-1] - mid[0])
+    periods = float(at[-1] - at[0])
     return slope * periods, u_slope * periods, periods
 
 
