@@ -37,6 +37,12 @@ from models.fringe.order_separation import (
 )
 from models.fringe.order_statistics import median
 from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
+from models.fringe.phase_consistency import (
+    THETA_LIMIT_DEG,
+    check_samples_follow_n,
+    check_theta_rows,
+    check_theta_sequence,
+)
 from models.fringe.result import FringeResult
 from models.fringe.sampling_phase_noise import phase_noise_rad
 from models.fringe.signal_quality import default_window, signal_quality
@@ -274,6 +280,14 @@ def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str]
                 QT_TR_NOOP("row {row}, column 'theta_deg': blank while other rows have a phase; fill it, "
                            "or clear the column to estimate the phase from the signals"),
                 row=_row(parsed, int(blank[0]))))
+        beyond = np.flatnonzero(np.abs(theta_col) > THETA_LIMIT_DEG)
+        if beyond.size:
+            i = int(beyond[0])
+            raise ValueError(message(
+                QT_TR_NOOP("row {row}, column 'theta_deg': {theta}° is beyond ±{limit}°: not a "
+                           "sample's phase"),
+                row=_row(parsed, i), theta=f"{theta_col[i]:g}", limit=f"{THETA_LIMIT_DEG:g}"))
+        check_theta_sequence(theta_col, lambda i: _row(parsed, i))
         if np.ptp(theta_col) == 0:
             raise ValueError(message(
                 QT_TR_NOOP("every θ is {theta_col}°: the phase did not change"),
@@ -635,6 +649,14 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                            "leave the samples per period and the θ column out to estimate the phase from "
                            "the signals"),
                 given=given, r_squared=f"{sin_fit.r_squared:.4f}", r_squared2=f"{cos_fit.r_squared:.4f}"))
+        # the R² gate is coarse (a wrong N by 1 in 64 fitted to R² 0.946): the phase given
+        # must be the signals' period by period (N), and sample by sample (a θ column)
+        if source == "samples_per_period":
+            check_samples_follow_n(parsed.row_index - parsed.row_index[0], per_period,
+                                   u_sin, u_cos, (sin_fit, cos_fit))
+        else:
+            check_theta_rows(theta, u_sin, u_cos, (sin_fit, cos_fit),
+                             lambda i: _row(parsed, i))
     given_n = per_period if source == "samples_per_period" else 0  # N as stated, if it is
     if source != "estimated":  # (after the phase is known to fit: a wrong N is said first)
         check_orders_not_aliased(theta, orders, given_n, phase_u)

@@ -316,6 +316,50 @@ def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -
     return out
 
 
+def _check_stray_targets(parsed: ParsedReadings, targets: np.ndarray, runs: np.ndarray,
+                         directions: np.ndarray) -> None:
+    """Refuse a target read in one run only where, in that direction, another target lacks
+    a reading in a run that reads the others: a target mistyped in place of one of the
+    test's. It was taken for a new target: the runs were planned anew, a complete last run
+    became one in progress and its readings entered no figure (contract review 75 F8).
+
+    A target read in one run with no reading missing elsewhere is a target approached once
+    (its U is not determined, said so), and a target the run in progress has not reached
+    (the linear cycle's last run, its readings the last rows and a part of the earlier
+    runs' targets) is no hole: that run is left out of the count."""
+    key = np.round(targets, 9).tolist()
+    run_list = [int(r) for r in runs.tolist()]
+    sense = directions.tolist()
+    if len(set(run_list)) < 2:
+        return
+    members = list(zip(key, sense, strict=True))
+    last = run_list[-1]
+    earlier = {members[i] for i in range(len(members)) if run_list[i] != last}
+    in_progress = last if short_last_unit(run_list, members, earlier) is not None else None
+    runs_of: dict[tuple[float, float], set[int]] = {}
+    for member, r in zip(members, run_list, strict=True):
+        runs_of.setdefault(member, set()).add(r)
+    targets_runs: dict[float, set[int]] = {}
+    for t, r in zip(key, run_list, strict=True):
+        targets_runs.setdefault(t, set()).add(r)
+    for i, (t, r) in enumerate(zip(key, run_list, strict=True)):
+        if len(targets_runs[t]) != 1 or r == in_progress:
+            continue
+        d = sense[i]
+        runs_d = {q for (u, e), qs in runs_of.items() if e == d for q in qs} - {in_progress}
+        holes = sorted((u, sorted(runs_d - qs)) for (u, e), qs in runs_of.items()
+                       if e == d and u != t and runs_d - qs)
+        if not holes:
+            continue
+        u, lacking = holes[0]
+        raise ValueError(message(QT_TR_NOOP(
+            "row {row}: target {target} is read in run {run} only, while target {missing} "
+            "has no reading in that direction in run {lacking}, which the other runs read: "
+            "a mistyped target? Check that row"),
+            row=_row(parsed, i), target=f"{targets[i]:g}", run=r, missing=f"{u:g}",
+            lacking=", ".join(str(q) for q in lacking[:5])))
+
+
 def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
                      ) -> tuple[ParsedReadings, IncompleteUnit | None]:
     """The complete runs, and the last unit when it is in progress: in the linear cycle the
@@ -334,6 +378,8 @@ def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
         targets = np.round(parsed["target"].astype(float), 9)
     directions = _directions(parsed, [])
     runs = _runs_counted(parsed, targets, directions)
+    if np.all(np.isfinite(targets)):  # before a run is taken for one in progress
+        _check_stray_targets(parsed, targets, runs, directions)
     t, d, r = targets.tolist(), directions.tolist(), runs.tolist()
     # linear cycle: the last run short of the (target, direction) the runs before it have
     earlier = {(t[i], d[i]) for i in range(parsed.n) if r[i] != r[-1]}
@@ -397,6 +443,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
     deviations = _deviations(parsed, s)
     directions = _directions(parsed, warnings)
     runs = _runs(parsed, targets, directions)
+    _check_stray_targets(parsed, targets, runs, directions)
     result = evaluate(targets, runs, directions, deviations, parsed.row_index.copy(),
                       s["target_unit"], s["deviation_unit"], s["standard"], warnings)
     if repeats is not None:
