@@ -2749,6 +2749,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{path} 是本登记册签发的，但登记册已丢失其记录。</translation>
     </message>
     <message>
+        <source>Changed after issue</source>
+        <translation>签发后有变化</translation>
+    </message>
+    <message>
+        <source>Altered after issue</source>
+        <translation>签发后被改动</translation>
+    </message>
+    <message>
         <source>{path}: no certificate issued from this register has this PDF (SHA-256): it was altered, is a draft, or comes from another register.</source>
         <translation>{path}：本登记册签发的证书中没有此 PDF（SHA-256）：它已被改动、是草稿，或来自其他登记册。</translation>
     </message>
@@ -3677,6 +3685,11 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{path} 自称是证书 {number} 的结果文件（其 PDF 的 SHA-256 为 {pdf}…），而登记册为该证书记录的结果文件是另一份（SHA-256 {recorded}…，{file}）：此副本在签发后被改动，或者——在没有实验室密钥的登记册中——登记册对它的记录被改写；请与实验室的副本比对</translation>
     </message>
     <message>
+        <source>anglebench register: there is no register at {path}; nothing was created (a register is made by its first certificate): check --register or ANGLEBENCH_REGISTER</source>
+        <extracomment>the commands that read a register, or record what only a register with records can have (a withdrawal, a loss, a clock correction): a SQLite register that is not there is refused, never made (contract75 F10: &apos;register --register ./typo.sqlite verify&apos; made an empty register, folders included, and said &quot;hash chain intact over 0 record(s)&quot;, exit 0). Issuing makes one; so do the lab&apos;s set-up commands (continue, interval, signatories NAME …), which come before a register&apos;s first certificate.</extracomment>
+        <translation>anglebench register：{path} 处没有登记册；未创建任何内容（登记册由其第一份证书创建）：请检查 --register 或 ANGLEBENCH_REGISTER</translation>
+    </message>
+    <message>
         <source>authorised signatories: {names}; approver and operator {rule}</source>
         <translation>授权签字人：{names}；批准人与校准员{rule}</translation>
     </message>
@@ -4533,6 +4546,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{controller}：控制器选项</translation>
     </message>
     <message>
+        <source>Targets must be machine coordinates: a log in a work offset gives a shifted table.</source>
+        <translation>目标位置必须是机床坐标：在工件坐标偏置下的记录会得到偏移的补偿表。</translation>
+    </message>
+    <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
         <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) with no :attr:`origin_step` (the origin is the sheet&apos;s as it was opened: a project&apos;s record of it, models/certificate/stored_origin.py), whether the rows were edited before, and the rows pasted before (0-based, as opened) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
@@ -4829,13 +4846,13 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>记录登记册的最后一条记录是由调快的时钟写上日期的，使正确的时钟重新可以签发</translation>
     </message>
     <message>
-        <source>Select a certificate and press History</source>
+        <source>Select a certificate and press History (or double-click it)</source>
         <extracomment>the recovery dialog open (a test types into it)</extracomment>
-        <translation>选择一份证书并按“历史”</translation>
+        <translation>选择一份证书并按“历史”（或双击它）</translation>
     </message>
     <message>
-        <source>No history shown yet: select a certificate above and press History (or double-click it) to see its instrument&apos;s figures over time and its due date.</source>
-        <translation>尚未显示历史：在上方选择一份证书并按“历史”（或双击该证书），即可看到该仪器各结果项随时间的变化及下次到期日。</translation>
+        <source>The history: the instrument&apos;s figures over its calibrations, and its due date</source>
+        <translation>历史：该仪器历次校准的数据及其到期日</translation>
     </message>
     <message>
         <source>The figure of the certificates to follow over time</source>
@@ -4864,6 +4881,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Instrument {serial} of {maker}: {count} calibration(s)</source>
+        <extracomment>the interval is set for the instrument whose history is shown: shown with it</extracomment>
         <translation>{maker} 的仪器 {serial}：{count} 次校准</translation>
     </message>
     <message>
@@ -5412,6 +5430,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{order} 次，{channel} {amplitude} mV（u {u} mV）</translation>
     </message>
     <message>
+        <source>row {row}, column &apos;theta_deg&apos;: {theta}° is beyond ±{limit}°: not a sample&apos;s phase</source>
+        <translation>第 {row} 行 theta_deg 列：{theta}° 超出 ±{limit}°：不是采样的相位</translation>
+    </message>
+    <message>
         <source> at N = {n} phases a period</source>
         <translation>（每周期 N = {n} 个相位）</translation>
     </message>
@@ -5869,6 +5891,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>第 {row} 行：没有测量序号，而其他行有；请为每一行给出序号，或全都不给</translation>
     </message>
     <message>
+        <source>row {row}: target {target} is read in run {run} only, while target {missing} has no reading in that direction in run {lacking}, which the other runs read: a mistyped target? Check that row</source>
+        <translation>第 {row} 行：目标 {target} 只在第 {run} 轮中读取，而目标 {missing} 在第 {lacking} 轮该方向没有读数（其他各轮都有）：目标输错了？请检查该行</translation>
+    </message>
+    <message>
         <source>{n} usable readings; a positioning test needs at least two targets</source>
         <translation>{n} 个可用读数；定位检测至少需要两个目标位置</translation>
     </message>
@@ -6057,8 +6083,12 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>轴倾角，未辨识（上限）</translation>
     </message>
     <message>
-        <source>{n} distinct θ give the elevation fit&apos;s 3 unknowns (ψ, α, β) no degrees of freedom: it would pass through every reading whatever its noise. The axis tilt and its direction are not identified and the set-up&apos;s error not removed; the tilt bound enters the uncertainty.</source>
+        <source>; the vertical readings are all near 90°, as zenith angles V are: if the vertical circle reads V, set the vertical reading to zenith (--zenith; E = V − 90°)</source>
         <extracomment>both set-up inputs: what the JSON&apos;s model error carries, and not the raw error the largest axis tilt the budget assumes when the elevations do not identify it (the setting tilt_bound_arcsec&apos;s default, ″; the polygon workbench&apos;s figure) the elevation fit&apos;s unknowns (ψ, α, β)</extracomment>
+        <translation>；竖直读数都接近 90°，与天顶距 V 一样：如果竖盘读的是 V，请将竖直读数设为天顶距（--zenith；E = V − 90°）</translation>
+    </message>
+    <message>
+        <source>{n} distinct θ give the elevation fit&apos;s 3 unknowns (ψ, α, β) no degrees of freedom: it would pass through every reading whatever its noise. The axis tilt and its direction are not identified and the set-up&apos;s error not removed; the tilt bound enters the uncertainty.</source>
         <translation>{n} 个不同的 θ 使俯仰角拟合的 3 个未知量（ψ、α、β）没有自由度：无论噪声如何，拟合都会穿过每个读数。轴倾角及其方向未辨识，安装误差未扣除；倾斜上限计入不确定度。</translation>
     </message>
     <message>
@@ -6432,10 +6462,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>Warning: {warning}</source>
         <translation>警告：{warning}</translation>
-    </message>
-    <message>
-        <source>anglebench analyze: cannot write {path}: {reason}</source>
-        <translation>anglebench analyze：无法写入 {path}：{reason}</translation>
     </message>
     <message>
         <source>{what} written to {path}</source>
@@ -7706,8 +7732,8 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>同时写出确认报告</translation>
     </message>
     <message>
-        <source>simulated runs for each budget comparison (default 200)</source>
-        <translation>每项不确定度评定比较的仿真次数（默认 200）</translation>
+        <source>simulated runs for each budget comparison, 100 to 100000 (default 200)</source>
+        <translation>每项不确定度评定比较的仿真次数，100 到 100000（默认 200）</translation>
     </message>
     <message>
         <source>anglebench validate: --trials must be 100 to 100000</source>
@@ -7889,12 +7915,36 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>整圈终点 {end} 取其起点的值</translation>
     </message>
     <message>
-        <source>controlled axis number of the parameter tape (A1, A2 …)</source>
-        <translation>参数带中的控制轴号（A1、A2 …）</translation>
+        <source>the positions are the log&apos;s targets, taken as machine coordinates (from the machine datum): a log taken in a work offset gives a table shifted by that offset</source>
+        <translation>位置取自记录中的目标位置，按机床坐标（自机床零点）处理：在工件坐标偏置下采集的记录会得到偏移了该偏置量的补偿表</translation>
     </message>
     <message>
-        <source>detection unit in mm or degrees, e.g. 0.001</source>
-        <translation>检测单位，mm 或度，例如 0.001</translation>
+        <source>only the {measured} approach was measured: this one table is applied to both directions, and approached {other} the axis is left off by the reversal (not measured)</source>
+        <translation>只测量了{measured}趋近：这一张表用于两个方向，{other}趋近时轴会偏差一个反向差值（未测量）</translation>
+    </message>
+    <message>
+        <source>forward (+)</source>
+        <translation>正向（+）</translation>
+    </message>
+    <message>
+        <source>backward (−)</source>
+        <translation>反向（−）</translation>
+    </message>
+    <message>
+        <source>the table ends at {end}, {gap} before the last target {last} (the step does not divide the targets&apos; span): beyond {end} the controller applies the value at {end}; a step that divides the span ends the table at {last}</source>
+        <translation>补偿表止于 {end}，比最后一个目标 {last} 少 {gap}（步距不能整除目标范围）：{end} 之外控制器沿用 {end} 处的值；能整除范围的步距会使补偿表止于 {last}</translation>
+    </message>
+    <message>
+        <source>positive: the axis stops short on reversal, the normal case</source>
+        <translation>正：轴在换向时停在未到位处，这是通常情况</translation>
+    </message>
+    <message>
+        <source>negative: the axis overshoots on reversal</source>
+        <translation>负：轴在换向时过冲</translation>
+    </message>
+    <message>
+        <source>controlled axis number of the parameter tape (A1, A2 …)</source>
+        <translation>参数带中的控制轴号（A1、A2 …）</translation>
     </message>
     <message>
         <source>parameter 3623, pitch error compensation magnification</source>
@@ -7937,8 +7987,12 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>仅一张表（{source}）</translation>
     </message>
     <message>
-        <source>export one table from the bidirectional mean; the reversal belongs in parameter 1851 (bidirectional pitch error compensation, 3605#0, is not written)</source>
-        <translation>请由双向平均值导出一张表；反向差值应设于参数 1851（不写入双向螺距误差补偿 3605#0）</translation>
+        <source>detection unit in mm or degrees, e.g. 0.001 (an inch machine&apos;s in mm: 0.00254)</source>
+        <translation>检测单位，以 mm 或度计，例如 0.001（英制机床也以 mm 计：0.00254）</translation>
+    </message>
+    <message>
+        <source>export one table from the bidirectional mean; the reversal belongs in parameter 1851 (bidirectional pitch error compensation, 3605#0, is not written): {reversal}</source>
+        <translation>按双向平均值导出一张表；反向差值应填入参数 1851（不写双向螺距误差补偿 3605#0）：{reversal}</translation>
     </message>
     <message>
         <source>detection unit and magnification must be positive</source>
@@ -7955,6 +8009,18 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>; on a rotary axis it is the first point</source>
         <translation>；旋转轴上参考点须为第一个补偿点</translation>
+    </message>
+    <message>
+        <source>the mean reversal over the targets, mean(x̄↑ − x̄↓), is {reversal} {deviation_unit}, {units} detection units of {detection_unit} ({sense})</source>
+        <translation>各目标的平均反向差值 mean(x̄↑ − x̄↓) 为 {reversal} {deviation_unit}，即 {units} 个检测单位（每个 {detection_unit}）（{sense}）</translation>
+    </message>
+    <message>
+        <source>values in detection units of {du}°</source>
+        <translation>补偿值以 {du}° 的检测单位计</translation>
+    </message>
+    <message>
+        <source>values and 3624 in detection units of {du} mm (the table is metric): on an inch machine give detection_unit in mm, e.g. 0.0001 in = 0.00254</source>
+        <translation>补偿值和 3624 以 {du} mm 的检测单位计（补偿表为公制）：英制机床请以 mm 给出 detection_unit，例如 0.0001 in = 0.00254</translation>
     </message>
     <message>
         <source>{key} in whole detection units ({source})</source>
@@ -8054,8 +8120,16 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>该表范围为 {first}…{last}</translation>
     </message>
     <message>
-        <source>HEIDENHAIN .COM table for axis {axis}, {n} entries ({sense}), and its .CMA assignment</source>
-        <translation>HEIDENHAIN .COM 补偿表，轴 {axis}，{n} 行（{sense}），及其 .CMA 分配表</translation>
+        <source>compensation tables are *.COM files, named in the .CMA ({source}, module 9095: &quot;No such compensation table (.COM)&quot;)</source>
+        <translation>补偿表为 *.COM 文件，在 .CMA 中指定（{source}，模块 9095：“No such compensation table (.COM)”）</translation>
+    </message>
+    <message>
+        <source>&apos;{name}&apos; would not be loaded: name it {wanted}</source>
+        <translation>“{name}”不会被加载：请命名为 {wanted}</translation>
+    </message>
+    <message>
+        <source>HEIDENHAIN .COM table {name} for axis {axis}, {n} entries ({sense}), with its .CMA assignment in {cma}</source>
+        <translation>HEIDENHAIN .COM 补偿表 {name}，轴 {axis}，{n} 项（{sense}），其 .CMA 分配文件为 {cma}</translation>
     </message>
     <message>
         <source>logical axis number (kopf.log_achs_nr)</source>
@@ -8079,7 +8153,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>{controller} options: value_type={value}; it takes {known}</source>
-        <extracomment>I/range: the largest magnitude of a pos/neg value of each type</extracomment>
+        <extracomment>I/range: MIN and MAX of each type; a pos/neg value lies strictly between them</extracomment>
         <translation>{controller} 选项：value_type={value}；可选值为 {known}</translation>
     </message>
     <message>
@@ -8095,8 +8169,8 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>kw_nr_max &lt; P-COMP-00059 = {max_points}</translation>
     </message>
     <message>
-        <source>pos/neg are {kind}: at most ±{limit} units of 0.1 µm / 0.0001°</source>
-        <translation>pos/neg 为 {kind}：最多 ±{limit} 个 0.1 µm / 0.0001° 单位</translation>
+        <source>pos/neg are {kind}: MIN({kind}) &lt; value &lt; MAX({kind}), {low}…{high} units of 0.1 µm / 0.0001°</source>
+        <translation>pos/neg 为 {kind}：MIN({kind}) &lt; 值 &lt; MAX({kind})，即 {low}…{high} 个 0.1 µm / 0.0001° 单位</translation>
     </message>
     <message>
         <source>a value of {value} units{hint}</source>
@@ -8175,8 +8249,16 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>每个测量系统仅一张表（{source}）</translation>
     </message>
     <message>
-        <source>export one table from the bidirectional mean; the reversal belongs in MD32450 BACKLASH</source>
-        <translation>请由双向平均值导出一张表；反向差值应设于 MD32450 BACKLASH</translation>
+        <source>export one table from the bidirectional mean; the reversal belongs in MD32450 BACKLASH: {reversal}</source>
+        <translation>按双向平均值导出一张表；反向差值应填入 MD32450 BACKLASH：{reversal}</translation>
+    </message>
+    <message>
+        <source>{note}; the turn is written from 0 (the 808D manual&apos;s suitable 0…360), the same value at every angle</source>
+        <translation>{note}；整周从 0 写起（808D 手册推荐的 0…360），各角度的值不变</translation>
+    </message>
+    <message>
+        <source>{note}; the turn is written {first}…{last}: 0 is not one of its points (the 808D manual calls 0…360 suitable)</source>
+        <translation>{note}；整周写为 {first}…{last}：0 不是其中的点（808D 手册称 0…360 为宜）</translation>
     </message>
     <message>
         <source>zero compensation at the reference point ({source})</source>
@@ -8185,6 +8267,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>the reference point {reference} lies outside the table {first}…{last}</source>
         <translation>参考点 {reference} 在补偿表 {first}…{last} 之外</translation>
+    </message>
+    <message>
+        <source>the mean reversal over the targets, mean(x̄↑ − x̄↓), is {reversal} {deviation_unit}, so MD32450 = {backlash}{unit} ({sense})</source>
+        <translation>各目标的平均反向差值 mean(x̄↑ − x̄↓) 为 {reversal} {deviation_unit}，故 MD32450 = {backlash}{unit}（{sense}）</translation>
     </message>
     <message>
         <source>measuring system (K3; MD30200 NUM_ENCS = {encoders})</source>
@@ -8211,12 +8297,20 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{minimum} 与 {maximum} 处的值相差 {gap}</translation>
     </message>
     <message>
-        <source>SINUMERIK 840D measuring system error compensation, axis {axis}, measuring system {system}, {n} points</source>
-        <translation>SINUMERIK 840D 测量系统误差补偿，轴 {axis}，测量系统 {system}，{n} 个补偿点</translation>
+        <source>zero at the reference point {reference} (K3): the axis is then left {shift} (axis unit) off at every position (actual − target), to be taken out with MD34090 REFP_MOVE_DIST_CORR; its sign there is not verified here: after re-referencing the deviation at {reference} must be 0 — {double} means the sign was wrong</source>
+        <translation>在参考点 {reference} 处为零（K3）：此时轴在每个位置都偏 {shift}（轴单位，实际 − 目标），需用 MD34090 REFP_MOVE_DIST_CORR 消除；此处未核实其符号：重新回参考点后 {reference} 处的偏差必须为 0——若为 {double} 说明符号错了</translation>
     </message>
     <message>
-        <source>zero at the reference point {reference}: its error, {shift} (axis unit), is for MD34090 REFP_MOVE_DIST_CORR</source>
-        <translation>在参考点 {reference} 处取零：该处误差 {shift}（轴单位）应填入 MD34090 REFP_MOVE_DIST_CORR</translation>
+        <source>positions and values in degrees</source>
+        <translation>位置和补偿值以度计</translation>
+    </message>
+    <message>
+        <source>positions and values in mm: a control with MD10240 SCALING_SYSTEM_IS_METRIC = 0 reads them in inches (25.4 times too large): for it, divide the positions, the step and the values by 25.4</source>
+        <translation>位置和补偿值以 mm 计：MD10240 SCALING_SYSTEM_IS_METRIC = 0 的控制器按英寸读取（大 25.4 倍）：对这种控制器，请将位置、步距和补偿值除以 25.4</translation>
+    </message>
+    <message>
+        <source>SINUMERIK 840D measuring system error compensation, axis {axis}, measuring system {system}, {n} points</source>
+        <translation>SINUMERIK 840D 测量系统误差补偿，轴 {axis}，测量系统 {system}，{n} 个补偿点</translation>
     </message>
     <message>
         <source>written as measured: the manual (K3) recommends zero compensation at the reference point (option reference=POSITION)</source>
@@ -9938,6 +10032,10 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
         <translation>自动取数：等待{instrument}的新读数</translation>
     </message>
     <message>
+        <source> — the output is moving ({rate} a second): it is taken once it stays within the window</source>
+        <translation>——输出正在移动（每秒 {rate}）：保持在窗口内后即取读数</translation>
+    </message>
+    <message>
         <source> — the output spreads {spread} over a second, more than the window: widen the window</source>
         <translation> — 输出在一秒内的离散为 {spread}，超过稳定范围：请放宽稳定范围</translation>
     </message>
@@ -10019,6 +10117,10 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
         <translation>同时写出仪器发送的每一行，带时间戳，并注明它是否成为读数（带 --stable 时：它是否在某个读数的驻留时间内；读数可追溯到仪器本身的输出）</translation>
     </message>
     <message>
+        <source>replace --out and --raw when they exist (without it an existing file is refused; a file the register issued is never replaced)</source>
+        <translation>--out 和 --raw 已存在时替换它们（不加此项时已存在的文件被拒绝；登记册签发的文件绝不会被替换）</translation>
+    </message>
+    <message>
         <source>the instrument&apos;s range: a frame with a value beyond ±LIMIT (arcsec for the autocollimator, the readout&apos;s own unit) is refused, not taken (default: autocollimator ±3600, readout any)</source>
         <translation>仪器的量程：数值超出 ±LIMIT（自准直仪以角秒计，读数显示器以其自身单位计）的数据帧被拒绝，不取为读数（默认：自准直仪 ±3600，读数显示器不限）</translation>
     </message>
@@ -10060,12 +10162,16 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
         <translation>anglebench capture：--mode 仅用于自准直仪（问答式仪器总是逐次询问）</translation>
     </message>
     <message>
+        <source>anglebench capture: {flag} {path} exists; nothing was captured: choose another name, or add --overwrite to replace it</source>
+        <translation>anglebench capture：{flag} {path} 已存在；未采集任何读数：请另选名称，或加上 --overwrite 以替换它</translation>
+    </message>
+    <message>
         <source>anglebench capture: cannot write {path}: {reason}; nothing was captured</source>
         <translation>anglebench capture：无法写入 {path}：{reason}；未进行采集</translation>
     </message>
     <message>
         <source>{port}: {n} of {total} readings in {seconds} s</source>
-        <extracomment>with --stable, each reading&apos;s first and last line (their indices since the start)</extracomment>
+        <extracomment>with --stable, each reading&apos;s first and last line (their indices since the start) whether the port was ever opened: until then a port that cannot be opened ends the capture with its one line (contract75 F13: &quot;cannot open …; reconnecting&quot; ×3, then the last, 4 lines where docs/capture.md promises one)</extracomment>
         <translation>{port}：{seconds} 秒内仅得 {total} 个读数中的 {n} 个</translation>
     </message>
     <message>
@@ -10083,6 +10189,10 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     <message>
         <source>cannot write {path} ({reason})</source>
         <translation>无法写入 {path}（{reason}）</translation>
+    </message>
+    <message>
+        <source>{path} exists and is not replaced without --overwrite</source>
+        <translation>{path} 已存在，不加 --overwrite 时不会被替换</translation>
     </message>
     <message>
         <source>anglebench capture: {reason}; written to {path} instead</source>
@@ -10118,8 +10228,12 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     </message>
     <message>
         <source>{port}: cannot open ({reason})</source>
-        <extracomment>a read returns after this long without bytes, so the worker can look up and stop how long connecting to a TCP address may take bytes read from a socket at once</extracomment>
+        <extracomment>a read returns after this long without bytes, so the worker can look up and stop how long connecting to a TCP address may take bytes read from a socket at once what a port that cannot be opened is said with (the command line ends on the first one before the port was ever opened: docs/capture.md&apos;s one line)</extracomment>
         <translation>{port}：无法打开（{reason}）</translation>
+    </message>
+    <message>
+        <source>{port}: a TCP port is 1 to 65535</source>
+        <translation>{port}：TCP 端口应在 1 到 65535 之间</translation>
     </message>
     <message>
         <source>{port}: no answer for {seconds} s</source>
@@ -11777,6 +11891,10 @@ what a name or description may hold that prints as no character of its own: a li
         <translation>{text}：请给出以逗号分隔的数值</translation>
     </message>
     <message>
+        <source>{text}: give a number of 0 or more</source>
+        <translation>{text}：请给出 0 或更大的数</translation>
+    </message>
+    <message>
         <source>{text}: a TCP port (0 to 65535; 0 takes a free one) or &apos;pty&apos;</source>
         <translation>{text}：应为 TCP 端口（0 到 65535；0 表示任取一个空闲端口）或 &apos;pty&apos;</translation>
     </message>
@@ -12663,6 +12781,10 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <translation>签名中没有 X.509 证书，且未配置可信证书（{var}）</translation>
     </message>
     <message>
+        <source>signed by {signer}, which the trusted certificate ({trusted}) does not vouch for: the document is unchanged since it was signed, but not by the signer trusted</source>
+        <translation>由 {signer} 签名，可信证书（{trusted}）不为其担保：文档自签名后未被改动，但签名者不是受信任者</translation>
+    </message>
+    <message>
         <source>the signature does not verify: {reason}</source>
         <translation>签名验证失败：{reason}</translation>
     </message>
@@ -13173,6 +13295,45 @@ Replace it?</source>
     <message>
         <source>Type today&apos;s date as you know it, not as this computer shows it: it must be the computer&apos;s date, or nothing is recorded (correct the clock first).</source>
         <translation>输入您所知道的今天日期，而不是照抄本计算机显示的日期：它必须与计算机的日期相同，否则不记录任何内容（请先更正时钟）。</translation>
+    </message>
+    <message>
+        <source>the signals do not follow N = {n} samples per period: against it their phase drifts by {per}° a period, {drift}° from the first period to the last ({sigmas} times its uncertainty); they show {shown} samples a period. Give the N the record was taken with, or leave it out to estimate the phase from the signals</source>
+        <extracomment>A θ beyond this (degrees of electrical phase) is no sample&apos;s phase: 2.8 million periods, and a float64 still resolves 1e-9 of a period there. The drift of the phase over the record is refused beyond this many of its standard uncertainties ... ... and beyond this share of a period (a smaller drift over the whole record moves no printed figure: the error is stated to 0.001&quot; of a 79&quot; period, 1.3e-5 of it). A period fitted for the drift holds at least this share of its N samples. A sample lies off the fitted signals by more than this many times their scatter (a chance of 1e-15 a sample for normal noise along the path) ... ... and by more than this phase (degrees of a period): its θ is not its phase. Periods with gaps fitted one by one at most (the others are left out of the drift).</extracomment>
+        <translation>信号与每周期 N = {n} 个采样不符：按此 N，其相位每周期漂移 {per}°，从第一个周期到最后一个周期共 {drift}°（为其不确定度的 {sigmas} 倍）；信号显示每周期 {shown} 个采样。请给出记录采集时的 N，或不给出 N 而由信号估计相位</translation>
+    </message>
+    <message>
+        <source> (and {count} other rows)</source>
+        <translation>（另有 {count} 行）</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;theta_deg&apos;: θ = {theta}° is not the phase of its signals (u_sin {u_sin} V, u_cos {u_cos} V lie at {shown}° on the signals the other samples draw, {off}° away, where the samples scatter by {scatter}°){others}: a mistyped θ or a row out of place; check that row</source>
+        <translation>第 {row} 行 theta_deg 列：θ = {theta}° 不是其信号的相位（u_sin {u_sin} V、u_cos {u_cos} V 在其余采样描出的信号上位于 {shown}°，相差 {off}°，而采样的离散为 {scatter}°）{others}：θ 输错或该行位置不对；请检查该行</translation>
+    </message>
+    <message>
+        <source>the next two rows are at {a}° and {b}°</source>
+        <extracomment>A θ column steps by less than this (degrees, the median step) where it is read along a motion (sequential), not in another order (shuffled rows). A θ column this share of whose θ lie within one period is wrapped into it.</extracomment>
+        <translation>其后两行为 {a}° 和 {b}°</translation>
+    </message>
+    <message>
+        <source>the two rows before it are at {a}° and {b}°</source>
+        <translation>其前两行为 {a}° 和 {b}°</translation>
+    </message>
+    <message>
+        <source>the rows before and after it are at {a}° and {b}°</source>
+        <translation>其前后两行为 {a}° 和 {b}°</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;theta_deg&apos;: θ = {theta}° leaves the record&apos;s sequence ({neighbours}): a mistyped θ; check that row</source>
+        <translation>第 {row} 行 theta_deg 列：θ = {theta}° 脱离了记录的顺序（{neighbours}）：θ 输错；请检查该行</translation>
+    </message>
+    <message>
+        <source>{flag}{path} cannot be written: the disk is full; nothing was written there (free some space and run again)</source>
+        <extracomment>the error numbers of a full disk or a full quota</extracomment>
+        <translation>{flag}{path} 无法写入：磁盘已满；未在该处写入任何内容（请腾出空间后重新运行）</translation>
+    </message>
+    <message>
+        <source>{flag}{path} cannot be written ({reason}); nothing was written there</source>
+        <translation>{flag}{path} 无法写入（{reason}）；未在该处写入任何内容</translation>
     </message>
 </context>
 </TS>
