@@ -131,27 +131,6 @@ def zh_window(qapp):
     install_language("en")
 
 
-@pytest.fixture
-def pdf_stand_in(monkeypatch):
-    """For a test of what is said about a document: its PDF a stand-in (its number, kind and
-    language; ~0.5 s of CPU a certificate not printed) wherever the window and the command
-    line print one (app.writers.certificate_pdf, app.certificate_issue). What is said comes
-    from the document, the register and the file written, never from the PDF's pages; the
-    printing on these paths is tested end to end elsewhere (tests/app/test_document_kind_said.py,
-    test_register_cli.py, test_translations.py's Chinese draft, the verify tests below)."""
-    import app.certificate_issue as issue
-    import app.writers.certificate_pdf as printer
-
-    def stand_in(document) -> bytes:
-        meta = document.metadata
-        return (f"%PDF-1.4\n% stand-in: {meta.certificate_number} "
-                f"{'test report' if document.is_test_report else 'certificate'} "
-                f"{meta.language} {meta.revision}\n%%EOF\n").encode()
-
-    monkeypatch.setattr(printer, "certificate_pdf_bytes", stand_in)
-    monkeypatch.setattr(issue, "certificate_pdf_bytes", stand_in)
-
-
 def _presenter():
     view = mock.create_autospec(CertificateView, instance=True)
     return view, CertificatePresenter(view, Store(), lambda: {}, mock.Mock())
