@@ -62,20 +62,8 @@ def told(monkeypatch) -> list[tuple[str, str]]:
 
 @pytest.fixture
 def pdf_stand_in(monkeypatch):
-    """A certificate's PDF a stand-in (its number, kind, language and revision) wherever the
-    window and the command line print one (app.writers.certificate_pdf, app.certificate_issue):
-    for a test of what is said about an issue or of where its files go, which never reads the
-    PDF's pages (a certificate printed costs ~0.5 s of CPU, the fringe's ~3 s). The printing
-    on these paths is tested end to end elsewhere (tests/app/test_document_kind_said.py,
-    test_register_cli.py, test_translations.py's Chinese draft, writers/)."""
-    import app.certificate_issue as issue
-    import app.writers.certificate_pdf as printer
+    """A certificate's PDF a stand-in wherever the window and the command line print one
+    (tests/pdf_stand_in.py): for a test that never reads a PDF's pages."""
+    from tests.pdf_stand_in import print_stand_ins
 
-    def stand_in(document) -> bytes:
-        meta = document.metadata
-        return (f"%PDF-1.4\n% stand-in: {meta.certificate_number} "
-                f"{'test report' if document.is_test_report else 'certificate'} "
-                f"{meta.language} {meta.revision}\n%%EOF\n").encode()
-
-    monkeypatch.setattr(printer, "certificate_pdf_bytes", stand_in)
-    monkeypatch.setattr(issue, "certificate_pdf_bytes", stand_in)
+    print_stand_ins(monkeypatch)
