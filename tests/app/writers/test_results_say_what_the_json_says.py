@@ -128,7 +128,7 @@ def issued(tmp_path_factory):
     mp = pytest.MonkeyPatch()
     mp.setenv("ANGLEBENCH_REGISTER", str(out / "register.sqlite"))
     # the XLSX and the DCC are read, never the PDF's pages: each PDF a stand-in (the fringe
-    # certificate of 512 rows and four others, ~5 s of CPU, not printed)
+    # certificate of 512 rows and four others: ~2.5 s of CPU not spent)
     print_stand_ins(mp)
     rng = np.random.default_rng(20261206)
     try:
