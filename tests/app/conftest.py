@@ -58,3 +58,12 @@ def told(monkeypatch) -> list[tuple[str, str]]:
     monkeypatch.setattr(RegisterWindow, "tell", lambda _self, title, text: said.append(
         (title, text)))
     return said
+
+
+@pytest.fixture
+def pdf_stand_in(monkeypatch):
+    """A certificate's PDF a stand-in wherever the window and the command line print one
+    (tests/pdf_stand_in.py): for a test that never reads a PDF's pages."""
+    from tests.pdf_stand_in import print_stand_ins
+
+    print_stand_ins(monkeypatch)

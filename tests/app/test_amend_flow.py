@@ -125,6 +125,7 @@ def test_amend_says_what_it_replaces_shows_it_pending_and_keeps_the_readings_sou
         assert register.get(f"{number}-A1").supersedes == number
 
 
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF read: of the questions asked
 def test_a_second_original_is_asked_about_before_the_file_name(window, qtbot, samples_dir,
                                                               tmp_path):
     polygon = window.presenter("polygon")
@@ -157,6 +158,7 @@ def test_a_second_original_is_asked_about_before_the_file_name(window, qtbot, sa
     assert calls[:3] == ["details", "separate", ("file", "polygon-certificate.pdf")]
 
 
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF read: of the questions asked
 def test_a_test_report_is_said_before_the_file_name_which_is_a_reports(window, qtbot,
                                                                       samples_dir, tmp_path):
     positioning = window.presenter("positioning")

@@ -20,6 +20,7 @@ from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url, url_for_path
 from models.register.store import IssueRequest, NotTheSameCalibration, Register
+from tests.pdf_stand_in import print_stand_ins
 
 
 def _issue(samples_dir, tmp_path, name, **changes) -> str:
@@ -46,12 +47,13 @@ def _pdf_text(path) -> str:
 
 @pytest.fixture(scope="module")
 def _two_issued(tmp_path_factory) -> tuple[Path, str, str]:
-    """A and B issued once for the module (two certificates rendered, ~1 s of CPU each),
-    into a register and folder of their own: the folder, A's number, B's."""
+    """A and B issued once for the module (their PDFs stand-ins, tests/pdf_stand_in.py: no
+    test reads them), into a register and folder of their own: the folder, A's number, B's."""
     folder = tmp_path_factory.mktemp("two_issued")
     samples_dir = Path(__file__).resolve().parents[2] / "resources" / "samples"
     with pytest.MonkeyPatch.context() as mp:
         mp.setenv("ANGLEBENCH_REGISTER", str(folder / "register.sqlite"))
+        print_stand_ins(mp)  # their PDFs are never read: the amendments' are, printed
         a = _issue(samples_dir, folder, "a", item_serial="LRA-0815",
                    calibration_date="2026-11-20")
         b = _issue(samples_dir, folder, "b", item_serial="XY-99", calibration_date="2026-11-02",
@@ -135,6 +137,7 @@ def test_the_register_refuses_another_items_details_and_another_workbench(two, t
 
 
 @pytest.mark.slow
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF read: of the register's answers
 def test_a_pending_amendment_ends_when_another_project_is_opened(window, qtbot, two, tmp_path):
     """rev62 F1: Amend… of A, then File › Open of B's project and Export certificate issued
     B's details as "A-A1" (A superseded, B two current certificates)."""
@@ -154,6 +157,7 @@ def test_a_pending_amendment_ends_when_another_project_is_opened(window, qtbot, 
 
 
 @pytest.mark.slow
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF read: of the register's answers
 def test_a_refusal_for_good_ends_the_pending_amendment(window, qtbot, two, tmp_path):
     """rev62 F1, blocked variant: A amended meanwhile at another workstation; the window's
     amendment is refused, and no later export is held to it."""
@@ -283,6 +287,7 @@ def test_the_windows_question_names_the_certificate_and_defaults_to_no(window):
     assert default == QMessageBox.StandardButton.No
 
 
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF read: of the register's answers
 def test_the_command_line_joins_a_letter_with_a_mark_and_its_look_alike(samples_dir, tmp_path,
                                                                         capsys):
     """rev63 F3 (ident_diacritic.sh): serial "MÖ-0815" (Latin), then "MӦ-0815" (Cyrillic O

@@ -69,6 +69,7 @@ COMPLETE = CertificateMetadata.from_dict({
 
 
 @pytest.mark.slow
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the presenter's questions and records
 def test_without_an_approver_the_window_writes_a_draft_and_records_nothing(parts, samples_dir,
                                                                           tmp_path):
     presenter, view, _, _ = parts
@@ -113,6 +114,7 @@ def test_an_issued_certificate_is_numbered_and_recorded_and_can_be_amended(parts
 
 
 @pytest.mark.slow
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the presenter's questions and records
 def test_a_refusal_of_the_register_writes_nothing(parts, samples_dir, tmp_path):
     presenter, view, _, _ = parts
     kind, result = _theodolite(samples_dir)
@@ -190,6 +192,7 @@ def test_export_errors_are_told_not_raised(parts, samples_dir, tmp_path):
     assert "Cannot export" in view.tell.call_args.args[0]
 
 
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the presenter's questions and records
 def test_a_draft_is_confirmed_first_and_details_carry_to_the_next_workbench(parts, samples_dir,
                                                                            tmp_path):
     presenter, view, metadata, _ = parts
@@ -211,6 +214,7 @@ def test_a_draft_is_confirmed_first_and_details_carry_to_the_next_workbench(part
 
 
 @pytest.mark.slow
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the presenter's questions and records
 def test_an_unreachable_register_issues_nothing_and_says_so(parts, samples_dir, tmp_path,
                                                             monkeypatch):
     presenter, view, _, _ = parts
@@ -235,6 +239,7 @@ def _polygon_with_errors_of_degrees(samples_dir):
 
 
 @pytest.mark.slow
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the presenter's questions and records
 def test_errors_no_encoder_has_are_certified_only_when_confirmed(parts, samples_dir, tmp_path):
     presenter, view, _, _ = parts
     kind, result = _polygon_with_errors_of_degrees(samples_dir)
@@ -251,6 +256,7 @@ def test_errors_no_encoder_has_are_certified_only_when_confirmed(parts, samples_
     assert (tmp_path / "out.pdf").exists()
 
 
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the presenter's questions and records
 def test_a_plausible_result_asks_nothing_more(parts, samples_dir, tmp_path):
     presenter, view, _, _ = parts
     kind = KINDS["polygon"]
@@ -278,6 +284,7 @@ def test_lab_default_standards_are_per_workbench(parts):
     assert [s.description for s in presenter.details("theodolite").standards] == ["Theodolite"]
 
 
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the presenter's questions and records
 def test_a_standard_of_another_quantity_is_refused_before_the_file_dialog(parts, samples_dir):
     presenter, view, _, _ = parts
     gauge = dataclasses.replace(COMPLETE, standards=CertificateMetadata.from_dict({"standards": [
@@ -291,6 +298,7 @@ def test_a_standard_of_another_quantity_is_refused_before_the_file_dialog(parts,
     view.choose_save_path.assert_not_called()
 
 
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the presenter's questions and records
 def test_a_standard_as_large_as_the_tolerance_is_asked_about(parts, samples_dir):
     presenter, view, _, _ = parts
     tight = dataclasses.replace(COMPLETE, tolerance=0.4)  # the theodolite's 0.5" ≥ ±0.4"
@@ -358,6 +366,7 @@ def test_signal_presets_saved_with_the_lab_defaults_and_kept(parts):
     assert len(presets) == len(BUILTIN_PRESETS) + 1
 
 
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the presenter's questions and records
 def test_an_issue_far_after_the_last_record_shows_the_date_and_asks(parts, samples_dir,
                                                                     tmp_path, monkeypatch):
     """reg73 #6: a yearly lab's issue was refused and the window had no way to give the

@@ -21,7 +21,10 @@ from models.register.location import register_url, url_for_path
 from models.register.store import Register
 from models.registry import KINDS
 
-pytestmark = pytest.mark.slow  # certificates are issued from the window
+#: certificates are issued from the window; the tests are of the questions asked and what
+#: the register records, never of a PDF's pages: each PDF a stand-in (tests/app/conftest.py;
+#: ~0.5 s of CPU a certificate not printed)
+pytestmark = [pytest.mark.slow, pytest.mark.usefixtures("pdf_stand_in")]
 
 FIRST_MAKER = "Möller-Wedel Optical GmbH"
 

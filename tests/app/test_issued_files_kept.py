@@ -16,6 +16,10 @@ from app.main import main
 from models.register.location import register_url
 from models.register.store import Register
 
+#: the tests are of which files an output may replace, never of a PDF's pages: each
+#: certificate's PDF a stand-in (tests/app/conftest.py; ~0.5 s of CPU a certificate not printed)
+pytestmark = pytest.mark.usefixtures("pdf_stand_in")
+
 
 def _details(samples_dir, tmp_path, name="details.json", **changes):
     meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))

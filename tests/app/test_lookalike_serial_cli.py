@@ -13,7 +13,8 @@ from models.register.store import Register
 
 
 def test_a_lookalike_serial_is_issued_only_with_its_option_and_shown(samples_dir, tmp_path,
-                                                                     capsys):
+                                                                     capsys, pdf_stand_in):
+    """(Its PDFs stand-ins, tests/pdf_stand_in.py: the register's answers are read, no page.)"""
     def analyze(name, serial, *options, maker="Möller-Wedel Optical GmbH"):
         meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
         meta.update({"example": False, "certificate_number": "", "item_serial": serial,

@@ -19,6 +19,10 @@ from models.readings.tabular_import import map_columns, read_table
 from models.register.store import Register
 from models.registry import KINDS
 
+#: the tests are of where an output may land, never of a PDF's pages: each certificate's PDF
+#: a stand-in (tests/app/conftest.py; ~0.5 s of CPU a certificate not printed)
+pytestmark = pytest.mark.usefixtures("pdf_stand_in")
+
 
 def _digest(path):
     return hashlib.sha256(path.read_bytes()).hexdigest()

@@ -14,6 +14,7 @@ from tests.app.test_certificate_presenter import COMPLETE, Store, _theodolite
 
 
 @pytest.mark.slow
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF read: of the register's records
 def test_a_register_change_ends_the_pending_amendment(samples_dir, tmp_path, monkeypatch):
     monkeypatch.delenv("ANGLEBENCH_REGISTER")  # the window's setting is the register
     view = mock.create_autospec(CertificateView, instance=True)

@@ -112,6 +112,7 @@ def _lab_register() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the register's answers
 def test_a_draft_is_not_recorded_and_bad_requests_exit_2(samples_dir, tmp_path, capsys):
     _lab_register()  # read-only commands refuse a register that is not there (contract75 F10)
     assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
@@ -160,6 +161,7 @@ def test_the_bundled_example_details_never_touch_the_users_register(samples_dir,
 
 
 @pytest.mark.slow
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the register's answers
 def test_issuing_without_an_approver_is_refused(samples_dir, tmp_path, capsys):
     """Without an approver the certificate is only a draft, and nothing is recorded."""
     _lab_register()  # read-only commands refuse a register that is not there (contract75 F10)
@@ -673,6 +675,7 @@ def test_a_full_disk_when_export_writes_is_said_in_words(tmp_path, monkeypatch, 
     assert (main(["register", "head"]), capsys.readouterr().out) == before
 
 
+@pytest.mark.usefixtures("pdf_stand_in")  # no PDF page read: the register's answers
 def test_another_makers_item_is_issued_only_with_its_option_and_shown(samples_dir, tmp_path,
                                                                       capsys):
     """rev65 F1: a certificate naming another maker than a current one of the same serial

@@ -148,7 +148,7 @@ def _english(text: str) -> set[str]:
     return {w for w in re.findall(r"[A-Za-z]{3,}", text) if w not in {"PDF", "DRAFT"}}
 
 
-def test_the_windows_draft_messages_call_a_test_report_one(samples_dir, tmp_path):
+def test_the_windows_draft_messages_call_a_test_report_one(samples_dir, tmp_path, pdf_stand_in):
     view, presenter = _presenter()
     view.confirm_draft.return_value = True
     for key, report in (("positioning", True), ("polygon", False)):
@@ -174,7 +174,7 @@ def full_disk(*_args):
 
 
 def test_the_windows_issued_but_not_written_calls_a_test_report_one(samples_dir, tmp_path,
-                                                                    monkeypatch):
+                                                                    monkeypatch, pdf_stand_in):
     view, presenter = _presenter()
     monkeypatch.setattr("app.certificate_issue._write_new", full_disk)
     for key, number, said in (("positioning", REPORT, "Test report"),
@@ -186,7 +186,8 @@ def test_the_windows_issued_but_not_written_calls_a_test_report_one(samples_dir,
             "No space left on device: save its PDF from File › Certificate register.")
 
 
-def test_an_amendments_status_line_in_the_windows_language(samples_dir, tmp_path, zh_window):
+def test_an_amendments_status_line_in_the_windows_language(samples_dir, tmp_path, zh_window,
+                                                           pdf_stand_in):
     """The revision part was "(amendment 1 of AB-…)" in a Chinese window."""
     view, presenter = _presenter()
     view.ask_change_note.return_value = "客户地址"
@@ -202,7 +203,7 @@ def test_an_amendments_status_line_in_the_windows_language(samples_dir, tmp_path
         assert not _english(status.replace(str(path), "")), status
 
 
-def test_an_amendments_status_line_in_english(samples_dir, tmp_path):
+def test_an_amendments_status_line_in_english(samples_dir, tmp_path, pdf_stand_in):
     view, presenter = _presenter()
     view.ask_change_note.return_value = "the customer's address"
     assert _export(presenter, view, samples_dir, "positioning", tmp_path / "r.pdf")
@@ -223,7 +224,7 @@ def _analyze(samples_dir, tmp_path, key, *more, **changes) -> int:
 
 @pytest.mark.parametrize("language", ["en", "zh_CN"])
 def test_the_command_lines_draft_message(samples_dir, tmp_path, capsys, zh_catalogue,
-                                         language):
+                                         language, pdf_stand_in):
     said = {}
     for key in ("positioning", "polygon"):
         assert _analyze(samples_dir, tmp_path, key, "--certificate",
@@ -307,7 +308,7 @@ def test_a_number_not_in_the_register_is_no_certificate_or_test_report(tmp_path,
             else "登记册中没有证书或检测报告 AB-2026-0099") in err, err
 
 
-def test_the_export_dialogs_title_names_a_test_report(samples_dir, tmp_path):
+def test_the_export_dialogs_title_names_a_test_report(samples_dir, tmp_path, pdf_stand_in):
     """File › Export certificate's file dialog was titled "Export certificate" for a test
     report too."""
     view, presenter = _presenter()
@@ -318,7 +319,7 @@ def test_the_export_dialogs_title_names_a_test_report(samples_dir, tmp_path):
 
 @pytest.mark.parametrize("language", ["en", "zh_CN"])
 def test_the_command_lines_issued_but_not_written(samples_dir, tmp_path, capsys, monkeypatch,
-                                                  zh_catalogue, language):
+                                                  zh_catalogue, language, pdf_stand_in):
     monkeypatch.setattr("app.certificate_issue._write_new", full_disk)
     for key, number in (("positioning", REPORT), ("polygon", CERTIFICATE)):
         out = tmp_path / f"{key}.pdf"

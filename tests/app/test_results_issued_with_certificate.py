@@ -15,6 +15,10 @@ from app.main import main
 from models.register.location import register_url
 from models.register.store import Register
 
+#: the results file and the register's records are read, never a PDF's pages (verify finds
+#: a PDF by its SHA-256): each PDF a stand-in (tests/app/conftest.py, ~0.5 s of CPU a certificate)
+pytestmark = pytest.mark.usefixtures("pdf_stand_in")
+
 TYPED_DATE = "2026-11-24"  # a date of issue typed in the details, as the review's were
 
 

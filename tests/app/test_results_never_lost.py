@@ -25,6 +25,11 @@ from models.project.output_guard import OutputRefused, check_output, check_outpu
 from models.register.location import register_url
 from models.register.store import Register, RegisterError
 
+#: the tests are of where an issue's files go and what the register keeps of them, never of
+#: a PDF's pages: each certificate's PDF a stand-in (tests/app/conftest.py; ~0.5 s of CPU a
+#: certificate not printed, at each of the module's issues and drafts)
+pytestmark = pytest.mark.usefixtures("pdf_stand_in")
+
 
 def _details(samples_dir, tmp_path, name="details.json", **changes):
     meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))

@@ -13,7 +13,8 @@ from models.register.store import Register
 
 
 def test_a_serial_left_out_is_issued_only_with_the_word_that_it_is_another_item(
-        samples_dir, tmp_path, capsys):
+        samples_dir, tmp_path, capsys, pdf_stand_in):
+    """(Its PDFs stand-ins, tests/pdf_stand_in.py: the register's answers are read, no page.)"""
     def analyze(name, serial, *options):
         meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
         meta.update({"example": False, "certificate_number": "", "item_serial": serial})

@@ -30,6 +30,7 @@ def _theodolite_file(tmp_path: Path) -> Path:
 
 
 @pytest.mark.parametrize("bound", [None, "120"])
+@pytest.mark.usefixtures("pdf_stand_in")  # the DCC read, not the PDF
 def test_the_theodolite_says_whose_bound_it_is(tmp_path, monkeypatch, bound):
     monkeypatch.setenv("ANGLEBENCH_REGISTER", str(tmp_path / "register.sqlite"))
     readings = _theodolite_file(tmp_path)

@@ -272,16 +272,20 @@ def _drawn_whole(edit, hint: str) -> bool:
                                   "系统时区（例如 Asia/Shanghai）",
                                   "empty: ANGLEBENCH_DCC_TRUSTED_CERTIFICATE, else the signing "
                                   "certificate"])
-def test_a_hint_cut_by_a_pixel_or_two_is_seen(qtbot, window, hint):
+def test_a_hint_cut_by_a_pixel_or_two_is_seen(qtbot, hint):
     """The check of the dialogs' hints (tests/small_screen_probe.cut_texts) counted the
     field's frame as room for the hint: a hint QLineEdit draws cut ("…签名证…") by up to 2 px
     passed as whole — the zh hint of the trusted certificate for a standard's DCC had no
     room to spare in the Chinese dialog at 1280×720 (its 431 px counted 433). Now the room
     is what QLineEdit paints in; here checked against what it draws, at the widest width
-    that cuts the hint and the narrowest that does not."""
+    that cuts the hint and the narrowest that does not. The Chinese hints drawn in the CJK
+    font the window registers (the font alone: a window, ~0.5 s of CPU, served only that)."""
     from PySide6.QtWidgets import QApplication, QLineEdit, QWidget
 
     from tests.small_screen_probe import cut_texts
+    from widgets.fonts import ensure_cjk_font
+
+    assert ensure_cjk_font()  # as the window does: Chinese drawn, not boxed
 
     box = QWidget()
     qtbot.addWidget(box)

@@ -5,12 +5,17 @@ fit74). Each screen is an offscreen screen of that size in a process of its own
 leaves the screen's free area, whose least size is larger than it, or whose OK, Cancel or
 Open is not all on it fails here, named, with its size. Before #31 the certificate dialog
 was 868 px tall (Export… and Cancel off a 720 px screen), the register 724 and the manual
-764."""
+764.
+
+The register's test reads the probe's runs of the 640×360 screen in English and in Chinese,
+which the test of every dialog makes: each screen and language is probed once a run
+(``probed``: a probe process is ~3 s of CPU)."""
 
 from __future__ import annotations
 
 import pytest
 
+from tests.conftest import once_a_run
 from tests.screen_process import run_on_screen
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
@@ -25,10 +30,24 @@ SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
 }
 
 
+@pytest.fixture(scope="module")
+def probed(tmp_path_factory):
+    """``probed(width, height, scale, language)``: what tests/dialog_fit_probe.py found on that
+    screen in that language, probed once a run (:func:`tests.conftest.once_a_run`: the
+    workers share it); the tests only read it."""
+
+    def found(width: int, height: int, scale: str, language: str) -> dict:
+        name = f"dialog-fit-{width}x{height}-{scale}-{language}"
+        return once_a_run(tmp_path_factory, name, lambda folder: run_on_screen(
+            "tests.dialog_fit_probe", folder, width, height, scale, language))
+
+    return found
+
+
 @pytest.mark.parametrize("screen", SCREENS)
-def test_every_dialog_fits_the_screen(screen, tmp_path):
+def test_every_dialog_fits_the_screen(screen, probed):
     width, height, scale, language = SCREENS[screen]
-    found = run_on_screen("tests.dialog_fit_probe", tmp_path, width, height, scale, language)
+    found = probed(width, height, scale, language)
     expected = {"main window", "certificate details", "certificate details (Export certificate…)",
                 "which column is which", "certificate register",
                 "acknowledge a loss", "clock correction", "manual", "quick guide", "about",
@@ -53,12 +72,12 @@ def test_every_dialog_fits_the_screen(screen, tmp_path):
 
 
 @pytest.mark.parametrize("language", ["en", "zh_CN"])
-def test_the_register_window_fits_200_percent_on_a_1280x720_laptop(language, tmp_path):
+def test_the_register_window_fits_200_percent_on_a_1280x720_laptop(language, probed):
     """day74 #11: at QT_SCALE_FACTOR=2 on 1280×720 (640×360 logical) the register window was
     652 px wide, its row of seven buttons and its interval row wider than the screen (the
     right edges of Use, History and Set interval off it); its buttons now wrap. (Every
     dialog of that screen is checked by test_every_dialog_fits_the_screen since fit74.)"""
-    found = run_on_screen("tests.dialog_fit_probe", tmp_path, 1280, 720, "2", language)
+    found = probed(1280, 720, "2", language)
     for name in ("certificate register", "acknowledge a loss", "clock correction"):
         x, y, w, h = found[name]["frame"]
         ax, ay, aw, ah = found[name]["available"]

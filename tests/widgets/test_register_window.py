@@ -15,6 +15,7 @@ from models.certificate.metadata import CertificateMetadata
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
+from tests.pdf_stand_in import print_stand_ins
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
@@ -32,6 +33,15 @@ def issue_polygon(register, samples_dir, tmp_path, name, **changes):
                              str(tmp_path / f"{name}.pdf"))
 
 
+@pytest.fixture
+def pdf_stand_in(monkeypatch):
+    """Each certificate's PDF a stand-in (tests/pdf_stand_in.py), for a test of the register's
+    records, its history and its answers that reads no PDF page (verify finds a PDF by its
+    SHA-256: the stand-in's is as much its own)."""
+    print_stand_ins(monkeypatch)
+
+
+@pytest.mark.usefixtures("pdf_stand_in")
 def test_presenter_lists_searches_and_refuses_a_superseded_amendment(window, samples_dir,
                                                                     tmp_path):
     with window.certificates.open_register() as register:
@@ -62,6 +72,7 @@ def test_presenter_lists_searches_and_refuses_a_superseded_amendment(window, sam
     assert (tmp_path / "copy.pdf").read_bytes() == (tmp_path / "a.pdf").read_bytes()
 
 
+@pytest.mark.usefixtures("pdf_stand_in")
 def test_amend_from_the_window_issues_amendment_one(window, samples_dir, tmp_path, qtbot):
     with window.certificates.open_register() as register:
         issue_polygon(register, samples_dir, tmp_path, "a")
@@ -92,6 +103,7 @@ def test_amend_from_the_window_issues_amendment_one(window, samples_dir, tmp_pat
     assert dialog.table.rowCount() == 1
 
 
+@pytest.mark.usefixtures("pdf_stand_in")
 def test_the_history_of_an_item_holds_its_serial_typed_another_way(window, samples_dir,
                                                                      tmp_path, qtbot):
     """#63 regkeys: a serial typed "rx 26 0815" is the item RX-26-0815 at issue (the
@@ -116,6 +128,7 @@ def test_the_history_of_an_item_holds_its_serial_typed_another_way(window, sampl
         assert len(y) == 2 and x[1] - x[0] == 3 * 86400.0
 
 
+@pytest.mark.usefixtures("pdf_stand_in")
 def test_the_history_of_a_serial_is_its_makers_item_only(window, samples_dir, tmp_path,
                                                           qtbot):
     """#64 review F6: Acme's "001" (calibrated 2025-06-01) and Zeta's "001" (2026-11-20)

@@ -74,6 +74,7 @@ def test_no_line_of_the_chinese_readings_line_begins_with_a_closing_mark(
     assert line.endswith(digest + "），") or line.endswith(digest + "）"), said
 
 
+@pytest.mark.usefixtures("pdf_stand_in")  # of the refusal's words: no page read
 def test_the_refusal_of_an_issued_pdf_names_its_path_once(window, qtbot, tmp_path, samples_dir):
     pdf = str(tmp_path / "issued.pdf")
     _issue(window, qtbot, tmp_path, samples_dir, "r.csv", "en", pdf, number="AB-2026-0068")
