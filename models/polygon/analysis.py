@@ -443,7 +443,7 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
             parsed["position"][rows].astype(int), parsed["encoder_deg"][rows],
             parsed["polygon_dev_arcsec"][rows], parsed["ac_x_arcsec"][rows],
             parsed["ac_y_arcsec"][rows], _direction(parsed, rows, label, warnings),
-            closure_a, closure_x, label))
+            closure_a, closure_x, label, np.asarray(parsed.row_index[rows], dtype=int)))
     closure_rows = {int(parsed.row_index[c]) for _, _, c in split if c is not None}
     return sets, faces, counting, closure_rows
 
@@ -603,6 +603,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         rounding=rounding,
         reading_noise_stated_arcsec=float(s.get("reading_noise_arcsec", 0.0) or 0.0),
         tilt_bound_analysed_arcsec=float(s["tilt_bound_arcsec"]),
+        point_rows=np.concatenate([np.asarray(r.rows)[np.argsort(r.positions)] for r in sets]),
     )
 
 
@@ -707,6 +708,25 @@ def iso230_figures(result: PolygonResult) -> dict[str, float]:
     return iso230_evaluate(theta, dev, dirs).figures
 
 
+def input_row_order(result: PolygonResult) -> np.ndarray:
+    """The permutation that puts the per-set arrays (set after set, positions 1…n in each)
+    into input-row order (SPEC §4): a set read in reverse or from another face than 1 is
+    listed as its rows were read. The identity where the rows are not known."""
+    size = len(result.sets) * result.faces
+    if result.point_rows is None or np.size(result.point_rows) != size:
+        return np.arange(size)
+    return np.argsort(np.asarray(result.point_rows), kind="stable")
+
+
+def point_faces_and_sets(result: PolygonResult) -> tuple[list[int], list[int]]:
+    """The face and the set (1, 2, … as the summary counts them) of each entry of the per-set
+    arrays in the JSON's input-row order."""
+    order = input_row_order(result)
+    faces = np.tile(np.arange(1, result.faces + 1), len(result.sets))[order]
+    sets = np.repeat(np.arange(1, len(result.sets) + 1), result.faces)[order]
+    return faces.tolist(), sets.tolist()
+
+
 def to_json(result: PolygonResult) -> dict[str, Any]:
     # only the JSON says whose the bound is: a plain summary loads no budget (test_cli_imports)
     from models.uncertainty.tilt_bound_words import tilt_bound_origin
@@ -714,8 +734,13 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
     first = result.sets[0]
     moved = zero_moved(result)
     closures = [r.closure_arcsec for r in result.sets]
+    order = input_row_order(result)  # every per-set array in input-row order (SPEC §4)
+    faces, set_numbers = point_faces_and_sets(result)
     out: dict[str, Any] = {
-        "error_arcsec": np.concatenate([r.error_arcsec for r in result.sets]).tolist(),
+        "error_arcsec": np.concatenate([r.error_arcsec for r in result.sets])[order].tolist(),
+        # each entry's face and set, so that a script can pair them (contract review 75 F1)
+        "face": faces,
+        "set": set_numbers,
         "closure_arcsec": closures[0] if len(closures) == 1 else closures,
         "closure_drift_arcsec": [r.closure_drift_arcsec for r in result.sets],
         "closure_ok": result.valid,
@@ -734,9 +759,9 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
                               else tilt_bound_origin(result.tilt_bound_analysed_arcsec,
                                                      DEFAULT_TILT_BOUND_ARCSEC)),
         "pyramidal_error_arcsec": np.concatenate(
-            [r.pyramidal_error_arcsec for r in result.sets]).tolist(),
+            [r.pyramidal_error_arcsec for r in result.sets])[order].tolist(),
         "corrected_error_arcsec": np.concatenate(
-            [r.corrected_error_arcsec for r in result.sets]).tolist(),
+            [r.corrected_error_arcsec for r in result.sets])[order].tolist(),
         "mean_corrected_error_arcsec": result.mean_corrected_arcsec.tolist(),
         "faces": result.faces,
         "counting": "with" if result.counting > 0 else "against",
@@ -1006,6 +1031,12 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
         # where U is withheld each array's U is null beside it (it was left out)
         return ["error_arcsec", "pyramidal_error_arcsec", "corrected_error_arcsec",
                 "mean_corrected_error_arcsec"]
+
+    def json_point_order(self, result):
+        # the per-set arrays' U in the JSON's input-row order, as the arrays (SPEC §4)
+        order = input_row_order(result)
+        return dict.fromkeys(("error_arcsec", "pyramidal_error_arcsec",
+                              "corrected_error_arcsec"), order)
 
     def inputs_not_stated(self, result, metadata):
         from models.polygon.report import not_stated

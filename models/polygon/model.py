@@ -239,6 +239,7 @@ class PolygonSetReadings:
     closure_encoder_deg: float | None = None  # the reading back on the start face
     closure_ac_x_arcsec: float | None = None
     label: str = "set 1"
+    rows: np.ndarray | None = None  # each reading's 0-based sheet row, approach order
 
 
 @dataclass
@@ -459,6 +460,9 @@ class PolygonResult:
     rounding: HorizontalRounding | None = None
     # the σ of a reading stated in the settings (″; 0: not stated)
     reading_noise_stated_arcsec: float = 0.0
+    # the 0-based sheet row of each point of the per-set arrays (set after set, positions
+    # 1…n in each): the JSON lists them in input-row order by it (None: not known)
+    point_rows: np.ndarray | None = None
     # the tilt bound these readings were analysed with (the setting, ″), for the analysis'
     # JSON only; a certificate's budget takes the bound from the settings it is issued with
     # (tests/models/certificate/test_settings_reach_the_certificate.py)
