@@ -550,6 +550,8 @@ def _direction_fit(group: np.ndarray, index: np.ndarray | None
     position's reading index in its set, per set), one steady drift per set along its own
     reading order. (residual sum of squares, residual degrees of freedom, residuals)."""
     m, n = group.shape
+    if m * n * (n + 2 * m) > DENSE_DIRECTION_FIT_ELEMENTS:
+        return _direction_fit_by_sets(group, index)
     columns = [np.kron(np.ones((m, 1)), np.eye(n)), np.kron(np.eye(m), np.ones((n, 1)))]
     if index is not None:
         centred = index - index.mean(axis=1, keepdims=True)
@@ -560,6 +562,42 @@ def _direction_fit(group: np.ndarray, index: np.ndarray | None
     residuals = y - design @ coef
     dof = int(y.size - np.linalg.matrix_rank(design))
     return float(np.sum(residuals**2)), dof, residuals.reshape(m, n)
+
+
+#: the largest design (elements) :func:`_direction_fit` solves whole; a larger one (some 55
+#: sets of 24 faces and more: its size grows as m², its solution as m³) is solved set by set
+#: (:func:`_direction_fit_by_sets`, the same least squares: contract review 75 F11)
+DENSE_DIRECTION_FIT_ELEMENTS = 200_000
+
+
+def _direction_fit_by_sets(group: np.ndarray, index: np.ndarray | None
+                           ) -> tuple[float, int, np.ndarray]:
+    """:func:`_direction_fit` with each set's own unknowns (its offset, its drift) eliminated
+    first: the set's values projected off its own columns (1 and its centred reading index,
+    orthogonal), the curve from the n × n normal equations Σ P_s·curve = Σ P_s·y_s (any of
+    their solutions leaves the same residuals), the rank of the design as the sets' own
+    columns' plus that matrix's. Time and memory linear in the sets."""
+    y = np.asarray(group, dtype=float)
+    m, n = y.shape
+    if index is not None:
+        centred = np.asarray(index, dtype=float)
+        centred = centred - centred.mean(axis=1, keepdims=True)
+        norms = np.sum(centred**2, axis=1)
+        unit = np.divide(centred, np.sqrt(norms)[:, None], out=np.zeros_like(centred),
+                         where=norms[:, None] > 0)
+    else:
+        unit = np.zeros((m, n))
+        norms = np.zeros(m)
+
+    def projected(values: np.ndarray) -> np.ndarray:
+        values = values - values.mean(axis=1, keepdims=True)
+        return values - unit * np.sum(unit * values, axis=1, keepdims=True)
+
+    normal = m * (np.eye(n) - np.full((n, n), 1.0 / n)) - unit.T @ unit
+    curve, *_ = np.linalg.lstsq(normal, projected(y).sum(axis=0), rcond=None)
+    residuals = projected(y - curve)
+    rank = m + int(np.count_nonzero(norms > 0)) + int(np.linalg.matrix_rank(normal))
+    return float(np.sum(residuals**2)), int(y.size - rank), residuals
 
 
 def within_set_noise(values: np.ndarray, directions: np.ndarray,
