@@ -554,6 +554,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         seed=f"{allowed_seed:.0f}\"")
     for r in results:
         warnings.extend(r.warnings)
+    warnings += _vertical_readings_missing(parsed, sets, results)
     valid = all(r.closure_ok is not False for r in results)
     tilt = results[0].tilt
     unidentified = [r.tilt_not_identified for r in results if r.tilt is None]
@@ -616,6 +617,35 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         tilt_bound_analysed_arcsec=float(s["tilt_bound_arcsec"]),
         point_rows=np.concatenate([np.asarray(r.rows)[np.argsort(r.positions)] for r in sets]),
     )
+
+
+def _vertical_readings_missing(parsed: ParsedReadings, sets: list[PolygonSetReadings],
+                               results: list) -> list[str]:
+    """Each set some of whose faces lack a vertical reading (not all: "no vertical
+    readings" says that), naming them and their rows: the tilt fitted from the faces read,
+    or too few left to fit it (contract review 75 F9: the warning named no row)."""
+    out: list[str] = []
+    for readings, result in zip(sets, results, strict=True):
+        missing = np.nonzero(~np.isfinite(np.asarray(readings.ac_y_arcsec, dtype=float)))[0]
+        if missing.size == 0 or missing.size == readings.ac_y_arcsec.size:
+            continue
+        rows = np.asarray(readings.rows)
+        shown = missing[:10]
+        where = dict(
+            set=set_name(readings.label),
+            faces=", ".join(str(int(readings.positions[i])) for i in shown)
+            + (", …" if missing.size > shown.size else ""),
+            rows=", ".join(str(_row(parsed, int(np.nonzero(parsed.row_index == rows[i])[0][0])))
+                           for i in shown) + (", …" if missing.size > shown.size else ""),
+            read=int(readings.ac_y_arcsec.size - missing.size))
+        out.append(message(
+            QT_TR_NOOP("{set}: no vertical reading on face(s) {faces} (row(s) {rows}): the "
+                       "pyramidal tilt is fitted from the {read} faces that have one and "
+                       "corrected at every face.") if result.tilt is not None else
+            QT_TR_NOOP("{set}: no vertical reading on face(s) {faces} (row(s) {rows}): the "
+                       "{read} faces that have one are too few to fit the pyramidal tilt."),
+            **where))
+    return out
 
 
 def _budget_noise(results, faces: int, corrected: np.ndarray, directions: np.ndarray,

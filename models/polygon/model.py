@@ -35,6 +35,7 @@ Angles in degrees, errors and tilts in arcseconds unless the name says otherwise
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -285,11 +286,15 @@ def _unidentified_because(v: np.ndarray) -> str:
     """Why readings ``v`` cannot identify the tilt, as a key: "missing" (none, or one not a
     number), "few" (no more than the fit's unknowns), "equal" (no variation); "" when they
     can."""
-    if v.size == 0 or not np.all(np.isfinite(v)):
+    read = v[np.isfinite(v)]
+    if read.size == 0:
         return "missing"
-    if v.size <= TILT_FIT_UNKNOWNS:
-        return "few"
-    return "equal" if np.ptp(v) == 0 else ""
+    if read.size <= TILT_FIT_UNKNOWNS:
+        # the faces that have one are too few: a vertical reading missing, or 3 faces
+        return "missing" if read.size < v.size else "few"
+    # the faces read are enough: the tilt is fitted from them (contract review 75 F9: one
+    # empty cell switched the whole set's correction off), the faces missing one named
+    return "equal" if np.ptp(read) == 0 else ""
 
 
 def tilt_not_identified_cause(ac_y_arcsec) -> str:
@@ -307,7 +312,8 @@ def tilt_not_identified_cause(ac_y_arcsec) -> str:
         return message(QT_TR_NOOP("{n} faces: no degrees of freedom left for the tilt fit"),
                        n=v.size)
     if because == "equal":
-        return message(QT_TR_NOOP("every vertical reading is {value}\""), value=f"{v[0]:g}")
+        return message(QT_TR_NOOP("every vertical reading is {value}\""),
+                       value=f"{v[np.isfinite(v)][0]:g}")
     return ""
 
 
@@ -336,8 +342,22 @@ def tilt_not_identified(ac_y_arcsec, label: str = "set 1") -> str:
             "{set}: every vertical reading is {value}\": no variation, while a tilt ψ moves it by "
             "2ψ over a turn. The pyramidal tilt is not identified (ψ = 0 is not a finding) and its "
             "error not removed; the tilt bound enters the uncertainty. Check that the vertical "
-            "readings were read, not copied."), set=set_name(label), value=f"{v[0]:g}")
+            "readings were read, not copied."), set=set_name(label),
+            value=f"{v[np.isfinite(v)][0]:g}")
     return ""
+
+
+def _fit_tilt_of_faces_read(theta: np.ndarray, ac_y: np.ndarray, ac_alignment: str,
+                            roll_rad: float) -> TiltFit:
+    """The tilt fitted to the faces that have a vertical reading (each face's correction
+    needs only ψ, ω and its angle); its residuals over every face, NaN where none was read."""
+    read = np.isfinite(ac_y)
+    if np.all(read):
+        return fit_tilt(theta, ac_y, ac_alignment, roll_rad)
+    tilt = fit_tilt(theta[read], ac_y[read], ac_alignment, roll_rad)
+    residuals = np.full(theta.size, np.nan)
+    residuals[read] = tilt.residuals_arcsec
+    return dataclasses.replace(tilt, residuals_arcsec=residuals)
 
 
 def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
@@ -399,7 +419,13 @@ def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
         pyramidal = np.zeros(n)
         unidentified = tilt_not_identified(ac_y, s.label)
         if not unidentified:
-            tilt = fit_tilt(theta, ac_y, ac_alignment, roll_rad)
+            tilt = _fit_tilt_of_faces_read(theta, ac_y, ac_alignment, roll_rad)
+            if not np.all(np.isfinite(ac_y)):
+                # the faces read fit the tilt; the budget's vertical change from the zero
+                # face takes the fitted one where a face has no reading
+                fitted = tilt.offset_arcsec + frame_readings_arcsec(
+                    theta, tilt.psi_arcsec, tilt.omega_deg, ac_alignment, roll_rad)[1]
+                ac_y = np.where(np.isfinite(ac_y), ac_y, fitted)
             pyramidal = pyramidal_correction_arcsec(theta, tilt.psi_arcsec, tilt.omega_deg, theta_z,
                                                     ac_alignment, roll_rad)
             if not tilt.omega_determined:
@@ -514,13 +540,26 @@ def vertical_fits_noise(sets: list[PolygonSetResult], faces: int
     fits = [s.tilt for s in sets if s.tilt is not None]
     residuals = [t.residuals_arcsec for t in fits]
     between = len(fits) >= 2 and all(r.shape == (faces,) for r in residuals)
-    if between:
+    complete = all(np.all(np.isfinite(r)) for r in residuals)
+    if between and complete:
         stacked = np.array(residuals)
         dof = (faces - TILT_FIT_UNKNOWNS) * (len(fits) - 1)
         scatter = float(np.sum((stacked - stacked.mean(axis=0)) ** 2))
-    else:
+    elif between:
+        # a face with no vertical reading in some set (its tilt fitted from the others):
+        # between the sets over the faces every set read, when they leave degrees of freedom
+        common = np.all(np.isfinite(np.array(residuals)), axis=0)
+        between = int(np.count_nonzero(common)) > TILT_FIT_UNKNOWNS
+        stacked = np.array(residuals)[:, common]
+        dof = (int(np.count_nonzero(common)) - TILT_FIT_UNKNOWNS) * (len(fits) - 1)
+        scatter = float(np.sum((stacked - stacked.mean(axis=0)) ** 2))
+    if not between and complete:
         dof = (faces - TILT_FIT_UNKNOWNS) * len(residuals)  # a fitted tilt has n ≥ 4
         scatter = sum(float(np.sum(r**2)) for r in residuals)
+    elif not between:
+        # about each fit, over the faces it was fitted to (4 or more)
+        dof = sum(int(np.count_nonzero(np.isfinite(r))) - TILT_FIT_UNKNOWNS for r in residuals)
+        scatter = sum(float(np.nansum(r**2)) for r in residuals)
     if dof <= 0:
         return None
     return float(np.sqrt(scatter / dof)), dof, between
