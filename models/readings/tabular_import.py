@@ -415,8 +415,8 @@ def _refuse_ambiguous(table: RawTable, columns: Sequence[Column],
                 source=table.source, first=first + 1, second=second + 1,
                 header=header[found].strip(), key=column.key))
     for k, found in enumerate(positions):
-        other = next((j for j in range(k) if found is not None and positions[j] == found), None)
-        if other is not None:
+        other = next((j for j in range(k) if positions[j] == found), None)
+        if found is not None and other is not None:
             raise TableImportError(message(
                 QT_TR_NOOP("{source}: column {position} ('{header}') is taken for both "
                            "{first} and {second}: one column holds one quantity; map each "
