@@ -554,7 +554,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         seed=f"{allowed_seed:.0f}\"")
     for r in results:
         warnings.extend(r.warnings)
-    warnings += _vertical_readings_missing(parsed, sets, results)
+    warnings += _vertical_readings_missing(sets, results)
     valid = all(r.closure_ok is not False for r in results)
     tilt = results[0].tilt
     unidentified = [r.tilt_not_identified for r in results if r.tilt is None]
@@ -619,7 +619,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     )
 
 
-def _vertical_readings_missing(parsed: ParsedReadings, sets: list[PolygonSetReadings],
+def _vertical_readings_missing(sets: list[PolygonSetReadings],
                                results: list) -> list[str]:
     """Each set some of whose faces lack a vertical reading (not all: "no vertical
     readings" says that), naming them and their rows: the tilt fitted from the faces read,
@@ -635,7 +635,7 @@ def _vertical_readings_missing(parsed: ParsedReadings, sets: list[PolygonSetRead
             set=set_name(readings.label),
             faces=", ".join(str(int(readings.positions[i])) for i in shown)
             + (", …" if missing.size > shown.size else ""),
-            rows=", ".join(str(_row(parsed, int(np.nonzero(parsed.row_index == rows[i])[0][0])))
+            rows=", ".join(str(int(rows[i]) + 1)  # as _row numbers a reading's sheet row
                            for i in shown) + (", …" if missing.size > shown.size else ""),
             read=int(readings.ac_y_arcsec.size - missing.size))
         out.append(message(
