@@ -367,12 +367,16 @@ def _refuse_copied_sets(parsed: ParsedReadings, split) -> None:
             continue
         kept, stack, count = stacks.get(values.shape, ([], np.empty((0, *values.shape)), 0))
         if count and values.shape[1] >= 3:
-            earlier = stack[:count]
-            # np.isclose(values, each earlier set's): |a − b| ≤ atol + rtol·|b|, face by face
-            alike = np.all(np.abs(values - earlier) <= 1e-9 + 1e-12 * np.abs(earlier), axis=1)
-            # every face, or all but the start face (a set turned round starts on the other's
-            # closure reading): a shaft stopped anew never reads alike at two faces
-            copied = np.nonzero(np.count_nonzero(alike, axis=1) >= values.shape[1] - 1)[0]
+            def alike(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+                # np.isclose(a, b): |a − b| ≤ atol + rtol·|b|, all four readings of a face
+                return np.all(np.abs(a - b) <= 1e-9 + 1e-12 * np.abs(b), axis=1)
+
+            # every face, or all but one (a set turned round starts on the other's closure
+            # reading): a shaft stopped anew never reads alike at two faces. Alike at all but
+            # one face, a copy is alike at face 1 or face 2: only those sets are compared whole
+            near = np.nonzero(np.any(alike(values[:, :2], stack[:count, :, :2]), axis=1))[0]
+            whole = alike(values, stack[near]) if near.size else np.zeros((0, values.shape[1]))
+            copied = near[np.count_nonzero(whole, axis=1) >= values.shape[1] - 1]
             if copied.size:
                 first_id, first_rows, _ = seen[kept[int(copied[0])]]
                 raise ValueError(message(

@@ -693,18 +693,23 @@ def set_offsets_spread(values: np.ndarray, directions: np.ndarray,
     if carried is not None:
         means = means - np.asarray(carried, dtype=float)
     squares, dof = 0.0, 0
-    centring = np.zeros((means.size, means.size))
+    blocks = []
     for d in (1, -1):
         rows = np.nonzero(directions == d)[0]
         if rows.size >= 2:
             group = means[rows]
             squares += float(np.sum((group - group.mean()) ** 2))
             dof += rows.size - 1
-            centring[np.ix_(rows, rows)] = np.eye(rows.size) - 1.0 / rows.size
+            blocks.append(rows)
     if dof == 0:
         return None
     if carried_covariance is not None:
-        squares -= float(np.trace(centring @ np.asarray(carried_covariance, dtype=float)))
+        # trace(P·C), P = I − 1/m_d within each direction's block: the block's trace less its
+        # sum over m_d (no sets × sets product: 4000 sets took 13 s, contract review 75 F11)
+        covariance = np.asarray(carried_covariance, dtype=float)
+        for rows in blocks:
+            block = covariance[np.ix_(rows, rows)]
+            squares -= float(np.trace(block)) - float(np.sum(block)) / rows.size
     return math.sqrt(max(squares / dof, floor**2)), dof
 
 

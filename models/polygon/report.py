@@ -740,31 +740,37 @@ def _carried_drift_component(result: PolygonResult, noise: float, zero: int,
     return _carried_drift_input(result, multiplier, _kept_steady_drift(result, noise))
 
 
-def _carried_drift_input(result: PolygonResult, multiplier: np.ndarray, kept: float | None
-                         ) -> list[BudgetComponent]:
+def _carried_drift_note(result: PolygonResult) -> str:
+    """What the carried drift's input says of itself: the closures, and whether spread."""
+    closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
+    how = (QT_TR_NOOP("spread within each set and removed; what the sets before carry on, not "
+                      "removed") if result.spread_drift
+           else QT_TR_NOOP("not removed: what the sets before carry on and the set's own"))
+    return message(QT_TR_NOOP("the autocollimator's zero drifts over the whole test: each set "
+                              "starts where the one before closed (closures {closures}); {how}; "
+                              "the bias it leaves beyond the closures' reading noise, in "
+                              "quadrature"),
+                   closures=", ".join(f"{c:+.2f}" for c in closures) + "\"",
+                   how=message(how))
+
+
+def _carried_drift_input(result: PolygonResult, multiplier: np.ndarray, kept: float | None,
+                         note: str | None = None) -> list[BudgetComponent]:
     """The carried drift's input for the positions' ``multiplier`` (sets' worth of drift
-    each carries) and the steady drift ``kept`` (:func:`_kept_steady_drift`)."""
+    each carries) and the steady drift ``kept`` (:func:`_kept_steady_drift`); ``note``: its
+    :func:`_carried_drift_note`, when made once for many sets."""
     # a steady drift, the closures' mean (known to 2σ²/m, σ of one reading), shrunk by the
     # share of its power beyond that noise (positive part): the mean within its noise leaves
     # little drift to carry, a drift well beyond it all of it. What varies from set to set
     # is not carried again: it puts the sets apart, an offset per set, and the zero
     # offsets' input holds it (:func:`_zero_offsets_component`)
-    closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
     bias = multiplier * (kept or 0.0)  # per position
     if not np.any(bias):
         return []
-    how = (QT_TR_NOOP("spread within each set and removed; what the sets before carry on, not "
-                      "removed") if result.spread_drift
-           else QT_TR_NOOP("not removed: what the sets before carry on and the set's own"))
     return [BudgetComponent(
         QT_TR_NOOP("Zero drift carried from set to set"), "B", "normal", np.abs(bias),
         1.0, np.where(bias < 0.0, -1.0, 1.0), math.inf,
-        message(QT_TR_NOOP("the autocollimator's zero drifts over the whole test: each set "
-                           "starts where the one before closed (closures {closures}); {how}; "
-                           "the bias it leaves beyond the closures' reading noise, in "
-                           "quadrature"),
-                closures=", ".join(f"{c:+.2f}" for c in closures) + "\"", how=message(how)),
-        common=True)]
+        _carried_drift_note(result) if note is None else note, common=True)]
 
 
 def _kept_steady_drift(result: PolygonResult, noise: float) -> float | None:
@@ -1039,9 +1045,10 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
         floor = cmc_of(settings, "cmc_arcsec")
         multipliers = _carried_drift_multipliers(result, _zero_index(result))
         kept = None if carried is None else _kept_steady_drift(result, noise)
+        note = _carried_drift_note(result) if carried else None
         for s in range(1, m):
             own = (carried if carried is None or multipliers is None
-                   else _carried_drift_input(result, multipliers[s], kept))
+                   else _carried_drift_input(result, multipliers[s], kept, note))
             later.append(_one_set(UncertaintyBudget(
                 tuple(before + (own or []) + after), result.faces,
                 metadata.coverage_probability, floor=floor), result))

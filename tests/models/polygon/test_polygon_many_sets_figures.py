@@ -90,3 +90,25 @@ def test_the_least_squares_set_by_set_is_the_whole_one(m, n, layout):
 def test_a_hundred_sets_use_the_fit_set_by_set_and_a_few_the_whole_one():
     assert 3 * FACES * (FACES + 6) <= model.DENSE_DIRECTION_FIT_ELEMENTS
     assert 100 * FACES * (FACES + 200) > model.DENSE_DIRECTION_FIT_ELEMENTS
+
+
+@pytest.mark.parametrize("m", [4, 7, 30])
+def test_the_carried_drifts_share_of_the_offsets_is_the_trace_it_was(m):
+    """set_offsets_spread takes trace(P·C) block by block (P the centring within each
+    direction): the same as the sets × sets product it replaced."""
+    rng = np.random.default_rng(m)
+    values = rng.normal(size=(m, FACES)) + rng.normal(size=(m, 1))
+    directions = np.where(np.arange(m) % 3 == 1, -1, 1)
+    before = -np.arange(m, dtype=float)
+    carried, covariance = before * 0.05, np.outer(before, before) * 1e-4
+    centring = np.zeros((m, m))
+    for d in (1, -1):
+        rows = np.nonzero(directions == d)[0]
+        centring[np.ix_(rows, rows)] = np.eye(rows.size) - 1.0 / rows.size
+    means = values.mean(axis=1) - carried
+    squares = sum(float(np.sum((means[directions == d] - means[directions == d].mean()) ** 2))
+                  for d in (1, -1)) - float(np.trace(centring @ covariance))
+    dof = m - 2
+    tau, got_dof = model.set_offsets_spread(values, directions, carried, covariance)
+    assert got_dof == dof
+    assert tau == pytest.approx(np.sqrt(squares / dof), rel=1e-12)
