@@ -41,7 +41,7 @@ from models.project.output_guard import (
 )
 from models.readings.incomplete import without_waiting_rows
 from models.readings.numeric_csv import read_numeric
-from models.readings.sheet import ReadingsSheet
+from models.readings.sheet import ParsedReadings, ReadingsSheet
 from models.readings.tabular_import import (
     MissingColumnError,
     TableImportError,
@@ -438,6 +438,12 @@ def run_analyze(argv: list[str]) -> int:
     # rows at the end that wait for their reading (a plan's or the nominal step's cells
     # filled, no reading yet) are points not yet taken, not bad rows
     parsed, _ = without_waiting_rows(parsed, kind.plan_reading_keys)
+    # every row the command line names (or takes: --reference-row) is the file's line, the
+    # header line 1, as a bad cell's is (contract review 75 F7: the checks after parsing
+    # named the window's sheet row, one less); the sheet row a reading is in is kept for
+    # the JSON's incomplete.first_row/last_row, whose meaning is kept
+    first_line = table.line_numbers[0] if table is not None and table.line_numbers \
+        else parsed.first_line
     if parsed.errors:
         first = parsed.errors[0]
         line = table.line_numbers[first.row]
@@ -447,6 +453,7 @@ def run_analyze(argv: list[str]) -> int:
                                       file=args.file, row=line, column=first.column_key,
                                       reason=first.reason), more)), words))
         return EXIT_BAD_INPUT
+    parsed = by_file_line(parsed, first_line)
     try:
         result = kind.analyze_as_far_as_it_goes(parsed, kind.settings_with_defaults(settings))
     except SettingsError as exc:
@@ -492,7 +499,8 @@ def run_analyze(argv: list[str]) -> int:
                 return EXIT_BAD_INPUT
             merge_json(data, workbench_uncertainty_json(kind, result, metadata, settings))
             data.update(certified_json(kind, result, metadata, settings))  # the certificate's
-        data["incomplete"] = None if incomplete is None else incomplete.as_dict()
+        data["incomplete"] = None if incomplete is None else _incomplete_json(incomplete,
+                                                                              first_line)
         if comparison is not None:
             data["before_after"] = {"after_file": args.compare_after, **comparison.as_dict()}
         import json  # only for --json and a certificate's details
@@ -573,6 +581,28 @@ def run_analyze(argv: list[str]) -> int:
                        (lambda: rows) if table is not None else
                        (lambda: _read_rows(args.file, kind, mapping)[1]))
     return 0
+
+
+def by_file_line(parsed: ParsedReadings, first_line: int) -> ParsedReadings:
+    """``parsed`` with each reading's row counted as the file's line (``first_line``: the
+    line of the sheet's first row), so that every workbench's ``row_index + 1`` is the line
+    its messages name: one mapping for every check after parsing."""
+    if first_line == 1:
+        return parsed
+    return dataclasses.replace(parsed, row_index=parsed.row_index + (first_line - 1),
+                               first_line=1)
+
+
+def _incomplete_json(incomplete, first_line: int) -> dict[str, Any]:
+    """The JSON's ``incomplete``: ``first_row``/``last_row`` the readings' rows as the
+    window's sheet numbers them (the first under the header is row 1, their meaning kept),
+    ``first_line``/``last_line`` the file's lines (as the summary names them)."""
+    data = incomplete.as_dict()
+    lines = {"first_line": data["first_row"], "last_line": data["last_row"]}
+    data["first_row"] = int(data["first_row"]) - (first_line - 1)
+    data["last_row"] = int(data["last_row"]) - (first_line - 1)
+    data.update(lines)
+    return data
 
 
 def _with_reference_dcc(args: argparse.Namespace, kind, rows, settings, words):

@@ -59,6 +59,24 @@ class PointUncertainty:
                    np.tile(budget.below_floor, times), float(budget.floor))
 
 
+def in_json_order(budgets: Mapping[str, UncertaintyBudget | PointUncertainty | None],
+                  orders: Mapping[str, np.ndarray]
+                  ) -> dict[str, UncertaintyBudget | PointUncertainty | None]:
+    """``budgets`` with the points of each array named in ``orders`` taken in that order
+    (the order the workbench lists the array's values in the JSON)."""
+    out = dict(budgets)
+    for name, order in orders.items():
+        budget = out.get(name)
+        if budget is None or np.size(budget.expanded) != np.size(order):
+            continue
+        below = getattr(budget, "below_floor", None)
+        out[name] = PointUncertainty(
+            np.asarray(budget.expanded, dtype=float)[order],
+            np.asarray(budget.coverage_factors, dtype=float)[order],
+            None if below is None else np.asarray(below)[order], float(budget.floor))
+    return out
+
+
 def _number(x: float) -> float | None:
     x = float(x)
     return x if math.isfinite(x) else None
@@ -228,6 +246,7 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
     except _NOT_DETERMINED as exc:  # U not determined: the arrays' U null
         names = getattr(kind, "uncertainty_array_names", lambda r: ())(result)
         budgets, withheld = dict.fromkeys(names), str(reason_of(exc))
+    budgets = in_json_order(budgets, getattr(kind, "json_point_order", lambda r: {})(result))
     conformity, tolerance, why = None, None, ""
     if metadata.tolerance is not None or getattr(kind, "tolerance_in_settings", False):
         try:  # the decision as the certificate makes it

@@ -351,6 +351,9 @@ def _refuse_copied_sets(parsed: ParsedReadings, split) -> None:
     a face, "pass"). Refused, naming both sets' first rows."""
     columns = ("position", "encoder_deg", "ac_x_arcsec", "ac_y_arcsec")
     seen: list[tuple[int, np.ndarray, np.ndarray]] = []
+    # the sets seen so far of each shape, stacked: each set is compared with all of them in
+    # one step (contract review 75 F11: set by set, 100 sets took 5000 calls)
+    stacks: dict[tuple[int, ...], tuple[list[int], np.ndarray, int]] = {}
     for set_id, rows, _ in split:
         # face by face, whatever the order: a forward set entered again as the reverse set
         # (its rows turned round) hid the reversal of the rig (B 0.017″ where 0.2″ was set);
@@ -362,19 +365,31 @@ def _refuse_copied_sets(parsed: ParsedReadings, split) -> None:
             # encoder's display alone may read alike in two real sets (a grade-7 encoder
             # shown to 0.001°, 0.3″ scatter: 8 of 8 refused, a reviewer), so no copy is told
             continue
-        for first_id, first_rows, first_values in seen:
-            if first_values.shape != values.shape:
-                continue
-            alike = np.all(np.isclose(values, first_values, rtol=1e-12, atol=1e-9), axis=0)
-            # every face, or all but the start face (a set turned round starts on the other's
-            # closure reading): a shaft stopped anew never reads alike at two faces
-            if values.shape[1] >= 3 and np.count_nonzero(alike) >= values.shape[1] - 1:
+        kept, stack, count = stacks.get(values.shape, ([], np.empty((0, *values.shape)), 0))
+        if count and values.shape[1] >= 3:
+            def alike(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+                # np.isclose(a, b): |a − b| ≤ atol + rtol·|b|, all four readings of a face
+                return np.all(np.abs(a - b) <= 1e-9 + 1e-12 * np.abs(b), axis=1)
+
+            # every face, or all but one (a set turned round starts on the other's closure
+            # reading): a shaft stopped anew never reads alike at two faces. Alike at all but
+            # one face, a copy is alike at face 1 or face 2: only those sets are compared whole
+            near = np.nonzero(np.any(alike(values[:, :2], stack[:count, :, :2]), axis=1))[0]
+            whole = alike(values, stack[near]) if near.size else np.zeros((0, values.shape[1]))
+            copied = near[np.count_nonzero(whole, axis=1) >= values.shape[1] - 1]
+            if copied.size:
+                first_id, first_rows, _ = seen[kept[int(copied[0])]]
                 raise ValueError(message(
                     QT_TR_NOOP("set {set_id} (from row {row}) repeats set {first} (from row "
                                "{first_row}) reading for reading: a copied set is no second "
                                "measurement; delete it or enter the set as it was read"),
                     set_id=set_id, row=_row(parsed, int(rows[0])), first=first_id,
                     first_row=_row(parsed, int(first_rows[0]))))
+        if count == stack.shape[0]:  # room for twice as many
+            stack = np.concatenate([stack, np.empty((max(count, 8), *values.shape))])
+        stack[count] = values
+        kept.append(len(seen))
+        stacks[values.shape] = (kept, stack, count + 1)
         seen.append((set_id, rows, values))
 
 
@@ -443,7 +458,7 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
             parsed["position"][rows].astype(int), parsed["encoder_deg"][rows],
             parsed["polygon_dev_arcsec"][rows], parsed["ac_x_arcsec"][rows],
             parsed["ac_y_arcsec"][rows], _direction(parsed, rows, label, warnings),
-            closure_a, closure_x, label))
+            closure_a, closure_x, label, np.asarray(parsed.row_index[rows], dtype=int)))
     closure_rows = {int(parsed.row_index[c]) for _, _, c in split if c is not None}
     return sets, faces, counting, closure_rows
 
@@ -543,6 +558,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         seed=f"{allowed_seed:.0f}\"")
     for r in results:
         warnings.extend(r.warnings)
+    warnings += _vertical_readings_missing(sets, results)
     valid = all(r.closure_ok is not False for r in results)
     tilt = results[0].tilt
     unidentified = [r.tilt_not_identified for r in results if r.tilt is None]
@@ -603,7 +619,37 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         rounding=rounding,
         reading_noise_stated_arcsec=float(s.get("reading_noise_arcsec", 0.0) or 0.0),
         tilt_bound_analysed_arcsec=float(s["tilt_bound_arcsec"]),
+        point_rows=np.concatenate([np.asarray(r.rows)[np.argsort(r.positions)] for r in sets]),
     )
+
+
+def _vertical_readings_missing(sets: list[PolygonSetReadings],
+                               results: list) -> list[str]:
+    """Each set some of whose faces lack a vertical reading (not all: "no vertical
+    readings" says that), naming them and their rows: the tilt fitted from the faces read,
+    or too few left to fit it (contract review 75 F9: the warning named no row)."""
+    out: list[str] = []
+    for readings, result in zip(sets, results, strict=True):
+        missing = np.nonzero(~np.isfinite(np.asarray(readings.ac_y_arcsec, dtype=float)))[0]
+        if missing.size == 0 or missing.size == readings.ac_y_arcsec.size:
+            continue
+        rows = np.asarray(readings.rows)
+        shown = missing[:10]
+        where = dict(
+            set=set_name(readings.label),
+            faces=", ".join(str(int(readings.positions[i])) for i in shown)
+            + (", …" if missing.size > shown.size else ""),
+            rows=", ".join(str(int(rows[i]) + 1)  # as _row numbers a reading's sheet row
+                           for i in shown) + (", …" if missing.size > shown.size else ""),
+            read=int(readings.ac_y_arcsec.size - missing.size))
+        out.append(message(
+            QT_TR_NOOP("{set}: no vertical reading on face(s) {faces} (row(s) {rows}): the "
+                       "pyramidal tilt is fitted from the {read} faces that have one and "
+                       "corrected at every face.") if result.tilt is not None else
+            QT_TR_NOOP("{set}: no vertical reading on face(s) {faces} (row(s) {rows}): the "
+                       "{read} faces that have one are too few to fit the pyramidal tilt."),
+            **where))
+    return out
 
 
 def _budget_noise(results, faces: int, corrected: np.ndarray, directions: np.ndarray,
@@ -707,6 +753,25 @@ def iso230_figures(result: PolygonResult) -> dict[str, float]:
     return iso230_evaluate(theta, dev, dirs).figures
 
 
+def input_row_order(result: PolygonResult) -> np.ndarray:
+    """The permutation that puts the per-set arrays (set after set, positions 1…n in each)
+    into input-row order (SPEC §4): a set read in reverse or from another face than 1 is
+    listed as its rows were read. The identity where the rows are not known."""
+    size = len(result.sets) * result.faces
+    if result.point_rows is None or np.size(result.point_rows) != size:
+        return np.arange(size)
+    return np.argsort(np.asarray(result.point_rows), kind="stable")
+
+
+def point_faces_and_sets(result: PolygonResult) -> tuple[list[int], list[int]]:
+    """The face and the set (1, 2, … as the summary counts them) of each entry of the per-set
+    arrays in the JSON's input-row order."""
+    order = input_row_order(result)
+    faces = np.tile(np.arange(1, result.faces + 1), len(result.sets))[order]
+    sets = np.repeat(np.arange(1, len(result.sets) + 1), result.faces)[order]
+    return faces.tolist(), sets.tolist()
+
+
 def to_json(result: PolygonResult) -> dict[str, Any]:
     # only the JSON says whose the bound is: a plain summary loads no budget (test_cli_imports)
     from models.uncertainty.tilt_bound_words import tilt_bound_origin
@@ -714,8 +779,13 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
     first = result.sets[0]
     moved = zero_moved(result)
     closures = [r.closure_arcsec for r in result.sets]
+    order = input_row_order(result)  # every per-set array in input-row order (SPEC §4)
+    faces, set_numbers = point_faces_and_sets(result)
     out: dict[str, Any] = {
-        "error_arcsec": np.concatenate([r.error_arcsec for r in result.sets]).tolist(),
+        "error_arcsec": np.concatenate([r.error_arcsec for r in result.sets])[order].tolist(),
+        # each entry's face and set, so that a script can pair them (contract review 75 F1)
+        "face": faces,
+        "set": set_numbers,
         "closure_arcsec": closures[0] if len(closures) == 1 else closures,
         "closure_drift_arcsec": [r.closure_drift_arcsec for r in result.sets],
         "closure_ok": result.valid,
@@ -734,9 +804,9 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
                               else tilt_bound_origin(result.tilt_bound_analysed_arcsec,
                                                      DEFAULT_TILT_BOUND_ARCSEC)),
         "pyramidal_error_arcsec": np.concatenate(
-            [r.pyramidal_error_arcsec for r in result.sets]).tolist(),
+            [r.pyramidal_error_arcsec for r in result.sets])[order].tolist(),
         "corrected_error_arcsec": np.concatenate(
-            [r.corrected_error_arcsec for r in result.sets]).tolist(),
+            [r.corrected_error_arcsec for r in result.sets])[order].tolist(),
         "mean_corrected_error_arcsec": result.mean_corrected_arcsec.tolist(),
         "faces": result.faces,
         "counting": "with" if result.counting > 0 else "against",
@@ -1006,6 +1076,12 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
         # where U is withheld each array's U is null beside it (it was left out)
         return ["error_arcsec", "pyramidal_error_arcsec", "corrected_error_arcsec",
                 "mean_corrected_error_arcsec"]
+
+    def json_point_order(self, result):
+        # the per-set arrays' U in the JSON's input-row order, as the arrays (SPEC §4)
+        order = input_row_order(result)
+        return dict.fromkeys(("error_arcsec", "pyramidal_error_arcsec",
+                              "corrected_error_arcsec"), order)
 
     def inputs_not_stated(self, result, metadata):
         from models.polygon.report import not_stated

@@ -35,6 +35,7 @@ Angles in degrees, errors and tilts in arcseconds unless the name says otherwise
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -239,6 +240,7 @@ class PolygonSetReadings:
     closure_encoder_deg: float | None = None  # the reading back on the start face
     closure_ac_x_arcsec: float | None = None
     label: str = "set 1"
+    rows: np.ndarray | None = None  # each reading's 0-based sheet row, approach order
 
 
 @dataclass
@@ -284,11 +286,15 @@ def _unidentified_because(v: np.ndarray) -> str:
     """Why readings ``v`` cannot identify the tilt, as a key: "missing" (none, or one not a
     number), "few" (no more than the fit's unknowns), "equal" (no variation); "" when they
     can."""
-    if v.size == 0 or not np.all(np.isfinite(v)):
+    read = v[np.isfinite(v)]
+    if read.size == 0:
         return "missing"
-    if v.size <= TILT_FIT_UNKNOWNS:
-        return "few"
-    return "equal" if np.ptp(v) == 0 else ""
+    if read.size <= TILT_FIT_UNKNOWNS:
+        # the faces that have one are too few: a vertical reading missing, or 3 faces
+        return "missing" if read.size < v.size else "few"
+    # the faces read are enough: the tilt is fitted from them (contract review 75 F9: one
+    # empty cell switched the whole set's correction off), the faces missing one named
+    return "equal" if np.ptp(read) == 0 else ""
 
 
 def tilt_not_identified_cause(ac_y_arcsec) -> str:
@@ -306,7 +312,8 @@ def tilt_not_identified_cause(ac_y_arcsec) -> str:
         return message(QT_TR_NOOP("{n} faces: no degrees of freedom left for the tilt fit"),
                        n=v.size)
     if because == "equal":
-        return message(QT_TR_NOOP("every vertical reading is {value}\""), value=f"{v[0]:g}")
+        return message(QT_TR_NOOP("every vertical reading is {value}\""),
+                       value=f"{v[np.isfinite(v)][0]:g}")
     return ""
 
 
@@ -335,8 +342,22 @@ def tilt_not_identified(ac_y_arcsec, label: str = "set 1") -> str:
             "{set}: every vertical reading is {value}\": no variation, while a tilt ψ moves it by "
             "2ψ over a turn. The pyramidal tilt is not identified (ψ = 0 is not a finding) and its "
             "error not removed; the tilt bound enters the uncertainty. Check that the vertical "
-            "readings were read, not copied."), set=set_name(label), value=f"{v[0]:g}")
+            "readings were read, not copied."), set=set_name(label),
+            value=f"{v[np.isfinite(v)][0]:g}")
     return ""
+
+
+def _fit_tilt_of_faces_read(theta: np.ndarray, ac_y: np.ndarray, ac_alignment: str,
+                            roll_rad: float) -> TiltFit:
+    """The tilt fitted to the faces that have a vertical reading (each face's correction
+    needs only ψ, ω and its angle); its residuals over every face, NaN where none was read."""
+    read = np.isfinite(ac_y)
+    if np.all(read):
+        return fit_tilt(theta, ac_y, ac_alignment, roll_rad)
+    tilt = fit_tilt(theta[read], ac_y[read], ac_alignment, roll_rad)
+    residuals = np.full(theta.size, np.nan)
+    residuals[read] = tilt.residuals_arcsec
+    return dataclasses.replace(tilt, residuals_arcsec=residuals)
 
 
 def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
@@ -398,7 +419,13 @@ def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
         pyramidal = np.zeros(n)
         unidentified = tilt_not_identified(ac_y, s.label)
         if not unidentified:
-            tilt = fit_tilt(theta, ac_y, ac_alignment, roll_rad)
+            tilt = _fit_tilt_of_faces_read(theta, ac_y, ac_alignment, roll_rad)
+            if not np.all(np.isfinite(ac_y)):
+                # the faces read fit the tilt; the budget's vertical change from the zero
+                # face takes the fitted one where a face has no reading
+                fitted = tilt.offset_arcsec + frame_readings_arcsec(
+                    theta, tilt.psi_arcsec, tilt.omega_deg, ac_alignment, roll_rad)[1]
+                ac_y = np.where(np.isfinite(ac_y), ac_y, fitted)
             pyramidal = pyramidal_correction_arcsec(theta, tilt.psi_arcsec, tilt.omega_deg, theta_z,
                                                     ac_alignment, roll_rad)
             if not tilt.omega_determined:
@@ -459,6 +486,9 @@ class PolygonResult:
     rounding: HorizontalRounding | None = None
     # the σ of a reading stated in the settings (″; 0: not stated)
     reading_noise_stated_arcsec: float = 0.0
+    # the 0-based sheet row of each point of the per-set arrays (set after set, positions
+    # 1…n in each): the JSON lists them in input-row order by it (None: not known)
+    point_rows: np.ndarray | None = None
     # the tilt bound these readings were analysed with (the setting, ″), for the analysis'
     # JSON only; a certificate's budget takes the bound from the settings it is issued with
     # (tests/models/certificate/test_settings_reach_the_certificate.py)
@@ -510,13 +540,26 @@ def vertical_fits_noise(sets: list[PolygonSetResult], faces: int
     fits = [s.tilt for s in sets if s.tilt is not None]
     residuals = [t.residuals_arcsec for t in fits]
     between = len(fits) >= 2 and all(r.shape == (faces,) for r in residuals)
-    if between:
+    complete = all(np.all(np.isfinite(r)) for r in residuals)
+    if between and complete:
         stacked = np.array(residuals)
         dof = (faces - TILT_FIT_UNKNOWNS) * (len(fits) - 1)
         scatter = float(np.sum((stacked - stacked.mean(axis=0)) ** 2))
-    else:
+    elif between:
+        # a face with no vertical reading in some set (its tilt fitted from the others):
+        # between the sets over the faces every set read, when they leave degrees of freedom
+        common = np.all(np.isfinite(np.array(residuals)), axis=0)
+        between = int(np.count_nonzero(common)) > TILT_FIT_UNKNOWNS
+        stacked = np.array(residuals)[:, common]
+        dof = (int(np.count_nonzero(common)) - TILT_FIT_UNKNOWNS) * (len(fits) - 1)
+        scatter = float(np.sum((stacked - stacked.mean(axis=0)) ** 2))
+    if not between and complete:
         dof = (faces - TILT_FIT_UNKNOWNS) * len(residuals)  # a fitted tilt has n ≥ 4
         scatter = sum(float(np.sum(r**2)) for r in residuals)
+    elif not between:
+        # about each fit, over the faces it was fitted to (4 or more)
+        dof = sum(int(np.count_nonzero(np.isfinite(r))) - TILT_FIT_UNKNOWNS for r in residuals)
+        scatter = sum(float(np.nansum(r**2)) for r in residuals)
     if dof <= 0:
         return None
     return float(np.sqrt(scatter / dof)), dof, between
@@ -546,6 +589,8 @@ def _direction_fit(group: np.ndarray, index: np.ndarray | None
     position's reading index in its set, per set), one steady drift per set along its own
     reading order. (residual sum of squares, residual degrees of freedom, residuals)."""
     m, n = group.shape
+    if m * n * (n + 2 * m) > DENSE_DIRECTION_FIT_ELEMENTS:
+        return _direction_fit_by_sets(group, index)
     columns = [np.kron(np.ones((m, 1)), np.eye(n)), np.kron(np.eye(m), np.ones((n, 1)))]
     if index is not None:
         centred = index - index.mean(axis=1, keepdims=True)
@@ -556,6 +601,42 @@ def _direction_fit(group: np.ndarray, index: np.ndarray | None
     residuals = y - design @ coef
     dof = int(y.size - np.linalg.matrix_rank(design))
     return float(np.sum(residuals**2)), dof, residuals.reshape(m, n)
+
+
+#: the largest design (elements) :func:`_direction_fit` solves whole; a larger one (some 55
+#: sets of 24 faces and more: its size grows as m², its solution as m³) is solved set by set
+#: (:func:`_direction_fit_by_sets`, the same least squares: contract review 75 F11)
+DENSE_DIRECTION_FIT_ELEMENTS = 200_000
+
+
+def _direction_fit_by_sets(group: np.ndarray, index: np.ndarray | None
+                           ) -> tuple[float, int, np.ndarray]:
+    """:func:`_direction_fit` with each set's own unknowns (its offset, its drift) eliminated
+    first: the set's values projected off its own columns (1 and its centred reading index,
+    orthogonal), the curve from the n × n normal equations Σ P_s·curve = Σ P_s·y_s (any of
+    their solutions leaves the same residuals), the rank of the design as the sets' own
+    columns' plus that matrix's. Time and memory linear in the sets."""
+    y = np.asarray(group, dtype=float)
+    m, n = y.shape
+    if index is not None:
+        centred = np.asarray(index, dtype=float)
+        centred = centred - centred.mean(axis=1, keepdims=True)
+        norms = np.sum(centred**2, axis=1)
+        unit = np.divide(centred, np.sqrt(norms)[:, None], out=np.zeros_like(centred),
+                         where=norms[:, None] > 0)
+    else:
+        unit = np.zeros((m, n))
+        norms = np.zeros(m)
+
+    def projected(values: np.ndarray) -> np.ndarray:
+        values = values - values.mean(axis=1, keepdims=True)
+        return values - unit * np.sum(unit * values, axis=1, keepdims=True)
+
+    normal = m * (np.eye(n) - np.full((n, n), 1.0 / n)) - unit.T @ unit
+    curve, *_ = np.linalg.lstsq(normal, projected(y).sum(axis=0), rcond=None)
+    residuals = projected(y - curve)
+    rank = m + int(np.count_nonzero(norms > 0)) + int(np.linalg.matrix_rank(normal))
+    return float(np.sum(residuals**2)), int(y.size - rank), residuals
 
 
 def within_set_noise(values: np.ndarray, directions: np.ndarray,
@@ -612,18 +693,23 @@ def set_offsets_spread(values: np.ndarray, directions: np.ndarray,
     if carried is not None:
         means = means - np.asarray(carried, dtype=float)
     squares, dof = 0.0, 0
-    centring = np.zeros((means.size, means.size))
+    blocks = []
     for d in (1, -1):
         rows = np.nonzero(directions == d)[0]
         if rows.size >= 2:
             group = means[rows]
             squares += float(np.sum((group - group.mean()) ** 2))
             dof += rows.size - 1
-            centring[np.ix_(rows, rows)] = np.eye(rows.size) - 1.0 / rows.size
+            blocks.append(rows)
     if dof == 0:
         return None
     if carried_covariance is not None:
-        squares -= float(np.trace(centring @ np.asarray(carried_covariance, dtype=float)))
+        # trace(P·C), P = I − 1/m_d within each direction's block: the block's trace less its
+        # sum over m_d (no sets × sets product: 4000 sets took 13 s, contract review 75 F11)
+        covariance = np.asarray(carried_covariance, dtype=float)
+        for rows in blocks:
+            block = covariance[np.ix_(rows, rows)]
+            squares -= float(np.trace(block)) - float(np.sum(block)) / rows.size
     return math.sqrt(max(squares / dof, floor**2)), dof
 
 

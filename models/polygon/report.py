@@ -737,27 +737,40 @@ def _carried_drift_component(result: PolygonResult, noise: float, zero: int,
         multiplier = _mean_weights(np.array([s.direction for s in result.sets])) @ multipliers
     else:
         multiplier = multipliers[drift_set]
+    return _carried_drift_input(result, multiplier, _kept_steady_drift(result, noise))
+
+
+def _carried_drift_note(result: PolygonResult) -> str:
+    """What the carried drift's input says of itself: the closures, and whether spread."""
+    closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
+    how = (QT_TR_NOOP("spread within each set and removed; what the sets before carry on, not "
+                      "removed") if result.spread_drift
+           else QT_TR_NOOP("not removed: what the sets before carry on and the set's own"))
+    return message(QT_TR_NOOP("the autocollimator's zero drifts over the whole test: each set "
+                              "starts where the one before closed (closures {closures}); {how}; "
+                              "the bias it leaves beyond the closures' reading noise, in "
+                              "quadrature"),
+                   closures=", ".join(f"{c:+.2f}" for c in closures) + "\"",
+                   how=message(how))
+
+
+def _carried_drift_input(result: PolygonResult, multiplier: np.ndarray, kept: float | None,
+                         note: str | None = None) -> list[BudgetComponent]:
+    """The carried drift's input for the positions' ``multiplier`` (sets' worth of drift
+    each carries) and the steady drift ``kept`` (:func:`_kept_steady_drift`); ``note``: its
+    :func:`_carried_drift_note`, when made once for many sets."""
     # a steady drift, the closures' mean (known to 2σ²/m, σ of one reading), shrunk by the
     # share of its power beyond that noise (positive part): the mean within its noise leaves
     # little drift to carry, a drift well beyond it all of it. What varies from set to set
     # is not carried again: it puts the sets apart, an offset per set, and the zero
     # offsets' input holds it (:func:`_zero_offsets_component`)
-    closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
-    bias = multiplier * (_kept_steady_drift(result, noise) or 0.0)  # per position
+    bias = multiplier * (kept or 0.0)  # per position
     if not np.any(bias):
         return []
-    how = (QT_TR_NOOP("spread within each set and removed; what the sets before carry on, not "
-                      "removed") if result.spread_drift
-           else QT_TR_NOOP("not removed: what the sets before carry on and the set's own"))
     return [BudgetComponent(
         QT_TR_NOOP("Zero drift carried from set to set"), "B", "normal", np.abs(bias),
         1.0, np.where(bias < 0.0, -1.0, 1.0), math.inf,
-        message(QT_TR_NOOP("the autocollimator's zero drifts over the whole test: each set "
-                           "starts where the one before closed (closures {closures}); {how}; "
-                           "the bias it leaves beyond the closures' reading noise, in "
-                           "quadrature"),
-                closures=", ".join(f"{c:+.2f}" for c in closures) + "\"", how=message(how)),
-        common=True)]
+        _carried_drift_note(result) if note is None else note, common=True)]
 
 
 def _kept_steady_drift(result: PolygonResult, noise: float) -> float | None:
@@ -831,6 +844,20 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     mean's, :func:`mean_zero_share`; one set's: :data:`ZERO_READING`, :data:`OTHER_SET`).
     ``rounding``: False leaves out the readings' rounding that the decided half range bounds
     (:func:`rounding_bounded_half_range`)."""
+    before, carried, after, _ = _budget_parts(result, metadata, settings, share, drift_set,
+                                              rounding)
+    return UncertaintyBudget(tuple(before + (carried or []) + after), result.faces,
+                             metadata.coverage_probability, floor=cmc_of(settings, "cmc_arcsec"))
+
+
+def _budget_parts(result: PolygonResult, metadata: CertificateMetadata,
+                  settings: Mapping[str, Any] | None, share: ZeroFaceShare | None,
+                  drift_set: int | None, rounding: bool
+                  ) -> tuple[list[BudgetComponent], list[BudgetComponent] | None,
+                             list[BudgetComponent], float]:
+    """:func:`polygon_budget`'s inputs in its order: those before the carried drift's, the
+    carried drift's (None: a set has no closure, or one set), those after it; and the
+    reading noise the drifts were judged against."""
     stated = settings or {}
     n = result.faces
     zero = _zero_index(result)
@@ -857,10 +884,8 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     if carried is None or result.spread_drift:
         # what a spread drift leaves within each set, or a drift no chain of closures shows
         components += _drift_component(result, noise, n, zero, share)
-    components += carried or []
-    components += _rounding_components(result, metadata, zero, n, share, rounding)
-    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
-                             floor=cmc_of(settings, "cmc_arcsec"))
+    return components, carried, _rounding_components(result, metadata, zero, n, share,
+                                                     rounding), noise
 
 
 STEP_INPUT = QT_TR_NOOP("Step of the readings as entered")
@@ -1010,9 +1035,23 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
     full = polygon_budget(result, metadata, settings)
     m = len(result.sets)
     first = _one_set(polygon_budget(result, metadata, settings, share=ZERO_READING), result)
-    # a later set's budget only where there is a later set
-    later = [_one_set(polygon_budget(result, metadata, settings, share=OTHER_SET, drift_set=s),
-                      result) for s in range(1, m)]
+    # a later set's budget only where there is a later set: the same inputs for every later
+    # set but the carried drift's, which is the set's own (contract review 75 F11: a budget
+    # built anew for each set made a 100-set file take 30 s, growing as m³)
+    later = []
+    if m > 1:
+        before, carried, after, noise = _budget_parts(result, metadata, settings, OTHER_SET,
+                                                      m - 1, True)
+        floor = cmc_of(settings, "cmc_arcsec")
+        multipliers = _carried_drift_multipliers(result, _zero_index(result))
+        kept = None if carried is None else _kept_steady_drift(result, noise)
+        note = _carried_drift_note(result) if carried else None
+        for s in range(1, m):
+            own = (carried if carried is None or multipliers is None
+                   else _carried_drift_input(result, multipliers[s], kept, note))
+            later.append(_one_set(UncertaintyBudget(
+                tuple(before + (own or []) + after), result.faces,
+                metadata.coverage_probability, floor=floor), result))
 
     def part(budget: UncertaintyBudget, keep, floor: float) -> UncertaintyBudget:
         return UncertaintyBudget(tuple(c for c in budget.components if keep(is_set_up_input(c))),

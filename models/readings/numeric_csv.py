@@ -145,4 +145,4 @@ def read_numeric(path: str | Path, columns: Sequence[Column],
                 np.all(numbers == np.round(numbers)) and np.all(np.abs(numbers) <= MAX_INTEGER)):
             return None
         values[column.key] = numbers
-    return ParsedReadings(values, np.arange(block.shape[0]), [])
+    return ParsedReadings(values, np.arange(block.shape[0]), [], table.line_numbers[0])

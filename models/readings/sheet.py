@@ -161,6 +161,9 @@ class ParsedReadings:
     values: dict[str, np.ndarray]
     row_index: np.ndarray
     errors: list[CellError] = field(default_factory=list)
+    # the file's line of the sheet's first row, when read from a file by
+    # models.readings.numeric_csv (1: the sheet's own numbering)
+    first_line: int = 1
 
     @property
     def n(self) -> int:

@@ -19,7 +19,7 @@ from pathlib import Path
 
 from models.messages import QT_TR_NOOP, message, reason_of
 from models.readings.angles import AngleParseError, parse_angle_deg
-from models.readings.headers import match_header
+from models.readings.headers import match_header, normalise_header
 from models.readings.sheet import Column
 
 __all__ = ["TableImportError", "RawTable", "map_columns", "read_table", "split_pasted_text"]
@@ -334,6 +334,7 @@ def _apply_mapping(table: RawTable, columns: Sequence[Column], positions: list[i
                    mapping: dict[str, str]) -> list[int | None]:
     names = [h.strip().lower() for h in table.header or []]
     out = list(positions)
+    mapped: dict[str, str] = {}  # a header named in the mapping -> the key it was given to
     for wanted, header in mapping.items():
         index = next((k for k, c in enumerate(columns)
                       if wanted.strip().lower() in (c.key.lower(), c.title.lower())), None)
@@ -345,6 +346,14 @@ def _apply_mapping(table: RawTable, columns: Sequence[Column], positions: list[i
         if not header.strip():
             out[index] = None
             continue
+        other = mapped.setdefault(header.strip().lower(), columns[index].key)
+        if other != columns[index].key:
+            raise TableImportError(message(
+                QT_TR_NOOP("{source}: column mapping gives the header '{header}' to both "
+                           "{first} and {second}: one column holds one quantity; map each "
+                           "to its own header"),
+                source=table.source, header=header.strip(), first=other,
+                second=columns[index].key))
         found = next((i for i, n in enumerate(names) if n == header.strip().lower()), None)
         if found is None:
             raise TableImportError(message(
@@ -385,6 +394,38 @@ def map_columns(table: RawTable, columns: Sequence[Column],
     return out
 
 
+def _refuse_ambiguous(table: RawTable, columns: Sequence[Column],
+                      positions: list[int | None]) -> None:
+    """Refuse a header that leaves open which cells a column's are (contract review 75 F6:
+    the first of two 'ac_x_arcsec' columns was analysed, the other ignored, no word): two
+    header cells that name the column alike (the same text, as normalised), or one file
+    column given to two keys (a mapping). Names the header and both column positions."""
+    header = table.header or []
+    names = [normalise_header(h) for h in header]
+    for column, found in zip(columns, positions, strict=True):
+        if found is None or found >= len(header) or not names[found]:
+            continue
+        twin = next((i for i, n in enumerate(names) if i != found and n == names[found]), None)
+        if twin is not None:
+            first, second = sorted((found, twin))
+            raise TableImportError(message(
+                QT_TR_NOOP("{source}: the header names columns {first} and {second} alike "
+                           "('{header}', {key}): which holds the readings is not clear; rename "
+                           "or delete one"),
+                source=table.source, first=first + 1, second=second + 1,
+                header=header[found].strip(), key=column.key))
+    for k, found in enumerate(positions):
+        other = next((j for j in range(k) if positions[j] == found), None)
+        if found is not None and other is not None:
+            raise TableImportError(message(
+                QT_TR_NOOP("{source}: column {position} ('{header}') is taken for both "
+                           "{first} and {second}: one column holds one quantity; map each "
+                           "to its own header"),
+                source=table.source, position=int(found) + 1,
+                header=header[found].strip() if found < len(header) else "",
+                first=columns[other].key, second=columns[k].key))
+
+
 def column_positions(table: RawTable, columns: Sequence[Column],
                      mapping: dict[str, str] | None = None) -> list[int | None]:
     """Where each of ``columns`` is in ``table`` (which has a header), found as
@@ -400,6 +441,7 @@ def column_positions(table: RawTable, columns: Sequence[Column],
                 table.header, positions = [c.strip() for c in row], below
                 table.rows, table.line_numbers = table.rows[k + 1:], table.line_numbers[k + 1:]
                 break
+    _refuse_ambiguous(table, columns, positions)
     for column, found in zip(columns, positions, strict=True):
         if found is None and column.required:
             raise MissingColumnError(

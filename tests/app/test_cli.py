@@ -265,5 +265,6 @@ def test_crosscal_json_contract(capsys, samples_dir, tmp_path):
     bad = tmp_path / "bad.csv"
     bad.write_text("\n".join(rows[:5] + [rows[3]] + rows[5:]) + "\n", encoding="utf-8")
     code, _, err = run_cli(capsys, "crosscal", str(bad))
-    # rows counted as the window counts them: the readings, the header not counted
-    assert code == 2 and "row 5: mounting 0, face 3 is read again (row 3)" in err
+    # rows named as the file's lines, the header line 1 (contract review 75 F7: the window's
+    # count, the header not counted, was one less than a bad cell's row in the same file)
+    assert code == 2 and "row 6: mounting 0, face 3 is read again (row 4)" in err

@@ -138,7 +138,8 @@ def test_rows_waiting_for_their_reading_are_points_not_yet_taken(capsys, samples
     alone.pop("incomplete")
     assert (got["unit"], got["number"], got["readings"], got["expected"]) == ("run", 5, 6, 26)
     assert partial == alone
-    # a blank reading in the middle is still refused, naming its row
+    # a blank reading in the middle is still refused, naming its row (the file's line:
+    # header line 1, contract review 75 F7)
     gap = done[:10] + [done[10][:3] + [""]] + done[11:]
     code = main(["analyze", "positioning", _write(tmp_path / "c.csv", header, gap)])
-    assert code == 2 and "row 11: neither a deviation" in capsys.readouterr().err
+    assert code == 2 and "row 12: neither a deviation" in capsys.readouterr().err

@@ -117,7 +117,8 @@ def test_a_set_copied_under_another_set_number_is_refused_naming_both(tmp_path, 
     write_readings(path, first + copied)
     assert main(["analyze", "polygon", str(path), "--json"]) == 2
     err = capsys.readouterr().err
-    assert "set 2 (from row 14) repeats set 1 (from row 1)" in err, err
+    # the file's lines, the header line 1 (contract review 75 F7)
+    assert "set 2 (from row 15) repeats set 1 (from row 2)" in err, err
     # the same set turned round and entered as the reverse set: it hid the rig's reversal
     reverse = [",".join(r.rstrip("\n").split(",")[:5] + ["2", "-"]) + "\n"
                for r in reversed(first)]

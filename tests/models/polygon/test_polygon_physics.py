@@ -108,7 +108,13 @@ def test_cli_json_on_an_exact_simulation(tmp_path, capsys):
     assert main(["analyze", "polygon", str(path), "--json", "--grade", "7"]) == 0
     data = json.loads(capsys.readouterr().out)
     truth = rig.truth_arcsec()
-    corrected = np.reshape(data["corrected_error_arcsec"], (2, 24))
+    # the JSON lists the readings in input-row order (SPEC §4; set 2 is read in reverse),
+    # each entry's face and set beside it: placed by them, not reshaped (contract review 75
+    # F1: a reshape took the face order that the JSON did not keep)
+    corrected = np.full((2, 24), np.nan)
+    corrected[np.subtract(data["set"], 1), np.subtract(data["face"], 1)] = \
+        data["corrected_error_arcsec"]
+    assert data["face"][24:27] == [1, 24, 23]
     residual = corrected - (truth - [[0.0], [1.0]])  # the reverse set reads 1" lower
     # one common offset (the zero reading's noise), then each reading's own noise
     offset = residual[:, 1:].mean()

@@ -241,9 +241,9 @@ def test_theodolite_clean_run_passes_the_fit_gate(tmp_path, capsys):
     assert max(abs(e) for e in json.loads(out)["corrected_error_arcsec"]) < 0.01
 
 
-@pytest.mark.parametrize("elevation, row, words", [
-    ({7: 0.0}, 8, "residual RMS 4"),
-    ({7: 12.5}, 8, "R² = 0.0"),
+@pytest.mark.parametrize("elevation, row, words", [  # row: the file's line (header 1)
+    ({7: 0.0}, 9, "residual RMS 4"),
+    ({7: 12.5}, 9, "R² = 0.0"),
     ({k: v for k, v in enumerate(np.random.default_rng(3).uniform(-0.5, 0.5, 21))}, None, ""),
 ])
 def test_theodolite_elevations_no_setup_explains_are_refused_with_figures(tmp_path, capsys,
@@ -262,7 +262,7 @@ def test_theodolite_fit_gate_follows_the_accuracy_setting(tmp_path, capsys):
     path.write_text(_theodolite_text(shift={7: 0.002}))  # one elevation 7" off
     assert "no set-up explains" not in run(capsys, "theodolite", str(path))[2]
     # with a stated accuracy of 0.01" the same residual is far beyond it
-    assert "is at row 8:" in refused(capsys, "theodolite", str(path), "--accuracy", "0.01")
+    assert "is at row 9:" in refused(capsys, "theodolite", str(path), "--accuracy", "0.01")
 
 
 @pytest.mark.parametrize("cell", ["90", "114", "-297", "12.5"])
@@ -270,14 +270,16 @@ def test_theodolite_one_bad_theta_is_refused_naming_its_row(tmp_path, capsys, ce
     path = tmp_path / "run.csv"
     path.write_text(_theodolite_text(theta_cell=(3, cell)))
     err = refused(capsys, "theodolite", str(path))
-    assert err.startswith(f"{path}: row 4: θ = {cell}°") and "'theta_deg'" in err
+    # the file's line (the header line 1), as a cell that does not parse is named
+    assert err.startswith(f"{path}: row 5: θ = {cell}°") and "'theta_deg'" in err
 
 
 def test_theodolite_a_bad_zero_row_is_named(tmp_path, capsys):
     path = tmp_path / "run.csv"
     path.write_text(_theodolite_text(theta_cell=(10, "30")))  # θ = 0 typed as 30 at the zero
-    err = refused(capsys, "theodolite", str(path), "--reference-row", "11")
-    assert "row 11, where the theodolite was zeroed (θ = 30°" in err
+    # --reference-row takes the file's line, as the messages name it (contract review 75 F7)
+    err = refused(capsys, "theodolite", str(path), "--reference-row", "12")
+    assert "row 12, where the theodolite was zeroed (θ = 30°" in err
 
 
 def _full_width(text: str) -> str:
