@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of, separated
+from models.number_text import fixed
 from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, MEASURAND_STANDARDS, TITLE
 from models.polygon.acquisition import polygon_guide
@@ -289,7 +290,8 @@ def _counting_sense(parsed: ParsedReadings, rows: np.ndarray, step: float, toler
         QT_TR_NOOP("row {row}: encoder reading {reading}° is {off}° from face {face} ({sense}, "
                    "relative to the set's first reading); a polygon test needs every reading "
                    "within {tolerance}° of its face"),
-        row=_row(parsed, i), reading=f"{parsed['encoder_deg'][i]:.4f}", off=f"{off:+.3f}",
+        row=_row(parsed, i), reading=fixed(float(parsed['encoder_deg'][i]), 4),
+        off=fixed(off, 3, sign=True),
         face=int(parsed['position'][i]), sense=sense, tolerance=f"{tolerance:g}"))
 
 
