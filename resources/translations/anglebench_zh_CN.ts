@@ -5673,6 +5673,14 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>闭合漂移已在各组内线性分配并从自准直仪读数中扣除。</translation>
     </message>
     <message>
+        <source>{set}: no vertical reading on face(s) {faces} (row(s) {rows}): the pyramidal tilt is fitted from the {read} faces that have one and corrected at every face.</source>
+        <translation>{set}：第 {faces} 面（第 {rows} 行）没有垂直读数：棱锥倾斜由有垂直读数的 {read} 个面拟合，并在每个面上修正。</translation>
+    </message>
+    <message>
+        <source>{set}: no vertical reading on face(s) {faces} (row(s) {rows}): the {read} faces that have one are too few to fit the pyramidal tilt.</source>
+        <translation>{set}：第 {faces} 面（第 {rows} 行）没有垂直读数：有垂直读数的 {read} 个面太少，无法拟合棱锥倾斜。</translation>
+    </message>
+    <message>
         <source>autocollimator</source>
         <translation>自准直仪</translation>
     </message>
@@ -5853,7 +5861,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>The autocollimator&apos;s zero moved between the sets: the sets&apos; mean errors within a direction scatter by {spread} where the readings&apos; noise gives {expected}. Each set&apos;s offset is taken as one unknown value of that set (in U, the same at every position), not as reading noise; check that the autocollimator was not touched between sets.</source>
-        <extracomment>the standard normal quantile of how unlikely the sets&apos; offsets must be under the reading noise alone to be named (1 − 0.999)</extracomment>
+        <extracomment>the largest design (elements) :func:`_direction_fit` solves whole; a larger one (some 55 sets of 24 faces and more: its size grows as m², its solution as m³) is solved set by set (:func:`_direction_fit_by_sets`, the same least squares: contract review 75 F11) the standard normal quantile of how unlikely the sets&apos; offsets must be under the reading noise alone to be named (1 − 0.999)</extracomment>
         <translation>自准直仪的零位在测回之间移动了：同一方向内各测回的平均误差离散为 {spread}，而读数噪声只给出 {expected}。每个测回的偏移作为该测回的一个未知值（计入 U，在每个位置都相同），而不是读数噪声；请检查测回之间是否碰动了自准直仪。</translation>
     </message>
     <message>
@@ -7118,12 +7126,24 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{source}：列映射中的 &apos;{wanted}&apos; 不是此处的列（{join}）</translation>
     </message>
     <message>
+        <source>{source}: column mapping gives the header &apos;{header}&apos; to both {first} and {second}: one column holds one quantity; map each to its own header</source>
+        <translation>{source}：列映射把表头“{header}”同时给了 {first} 和 {second}：一列只能是一个量；请为每个量映射各自的表头</translation>
+    </message>
+    <message>
         <source>{source}: column mapping {wanted}={header}: the file has no header &apos;{header}&apos; (its headers: {join})</source>
         <translation>{source}：列映射 {wanted}={header}：文件中没有表头 &apos;{header}&apos;（其表头为：{join}）</translation>
     </message>
     <message>
-        <source>{source}: row 1 (header): no column &apos;{key}&apos;; expected headers {join} (or their names, e.g. {title}{value}); the file&apos;s header is {join2}</source>
+        <source>{source}: the header names columns {first} and {second} alike (&apos;{header}&apos;, {key}): which holds the readings is not clear; rename or delete one</source>
         <extracomment>How far below the top a header is looked for (title, lab and date rows above it).</extracomment>
+        <translation>{source}：表头中第 {first} 列和第 {second} 列名称相同（“{header}”，{key}）：不清楚哪一列是读数；请重命名或删除其中一列</translation>
+    </message>
+    <message>
+        <source>{source}: column {position} (&apos;{header}&apos;) is taken for both {first} and {second}: one column holds one quantity; map each to its own header</source>
+        <translation>{source}：第 {position} 列（“{header}”）同时被用作 {first} 和 {second}：一列只能是一个量；请为每个量映射各自的表头</translation>
+    </message>
+    <message>
+        <source>{source}: row 1 (header): no column &apos;{key}&apos;; expected headers {join} (or their names, e.g. {title}{value}); the file&apos;s header is {join2}</source>
         <translation>{source}：第 1 行（表头）：没有列 &apos;{key}&apos;；应有表头 {join}（或其名称，例如 {title}{value}）；文件的表头为 {join2}</translation>
     </message>
     <message>
