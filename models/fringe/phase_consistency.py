@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from models.fringe.model import TWO_PI, ChannelFit, model_signal
+from models.fringe.model import TWO_PI, ChannelFit, fit_design, model_signal
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["DRIFT_FLOOR_PERIOD", "DRIFT_SIGMAS", "ROW_FLOOR_DEG", "ROW_SIGMAS", "THETA_LIMIT_DEG",
@@ -48,16 +48,6 @@ def _model(theta: np.ndarray, fits: tuple[ChannelFit, ChannelFit]
     return model_signal(theta, fits[0]), model_signal(theta, fits[1])
 
 
-def _columns(theta: np.ndarray, orders: tuple[int, ...]) -> np.ndarray:
-    """Columns 1, sin kθ, cos kθ for k in ``orders`` (the fit's order of parameters)."""
-    x = np.empty((theta.size, 1 + 2 * len(orders)))
-    x[:, 0] = 1.0
-    for i, k in enumerate(orders):
-        x[:, 1 + 2 * i] = np.sin(k * theta)
-        x[:, 2 + 2 * i] = np.cos(k * theta)
-    return x
-
-
 #: Periods with gaps fitted one by one at most (the others are left out of the drift).
 _GAP_PERIODS = 2000
 
@@ -81,7 +71,7 @@ def period_drift(place: np.ndarray, per_period: int, u: np.ndarray, fit: Channel
     amplitude = fit.amplitude.get(1, 0.0)
     if 1 not in fit.orders or not amplitude > 0:
         return None
-    x = _columns(np.arange(per_period) * (TWO_PI / per_period), fit.orders)
+    x = fit_design(np.arange(per_period) * (TWO_PI / per_period), fit.orders)
     params = x.shape[1]
     if per_period < params or place.size < 2:
         return None
