@@ -20,6 +20,7 @@ import math
 import numpy as np
 
 from models.fringe.model import TWO_PI, ChannelFit, fit_design, model_signal
+from models.fringe.order_statistics import median
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["DRIFT_FLOOR_PERIOD", "DRIFT_SIGMAS", "ROW_FLOOR_DEG", "ROW_SIGMAS", "THETA_LIMIT_DEG",
@@ -196,7 +197,7 @@ def check_theta_rows(theta_rad: np.ndarray, u_sin: np.ndarray, u_cos: np.ndarray
     # noise; its median is 0.674 σ), the larger of the two readings of the median (the
     # channels' noise alone, in two directions, has 1.18 σ; taken so, a θ jittered by
     # 0.5° was refused as 2.4° off, 4.9 σ)
-    scatter = float(np.median(off)) / 0.6745
+    scatter = median(np.asarray(off, dtype=float).ravel()) / 0.6745
     floor = 2.0 * amplitude * math.sin(0.5 * math.radians(ROW_FLOOR_DEG))
     bad = np.flatnonzero(off > max(ROW_SIGMAS * scatter, floor))
     if not bad.size:
@@ -243,7 +244,7 @@ def check_theta_sequence(theta_deg: np.ndarray, row_of) -> None:
         return
     step = np.diff(theta)
     jumps = np.abs(step) >= 180.0
-    if not (np.any(jumps) and float(np.median(np.abs(step))) < SEQUENCE_STEP_DEG):
+    if not (np.any(jumps) and median(np.abs(np.asarray(step, dtype=float)).ravel()) < SEQUENCE_STEP_DEG):
         return
     # inner rows: a jump out and one back, the neighbours together
     out_and_back = (jumps[:-1] & jumps[1:] & (np.sign(step[:-1]) != np.sign(step[1:]))
