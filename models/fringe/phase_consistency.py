@@ -147,11 +147,11 @@ def check_samples_follow_n(place: np.ndarray, per_period: int, u_sin: np.ndarray
     changes along the record moves one channel against the other, and is the signals' own
     (models.fringe.signal_quality shows it). The refusal says how many samples a period the
     signals show."""
-    drifts = [period_drift(place, per_period, u, fit)
-              for u, fit in ((u_sin, fits[0]), (u_cos, fits[1]))]
-    if drifts[0] is None or drifts[1] is None:
+    sine = period_drift(place, per_period, u_sin, fits[0])
+    cosine = period_drift(place, per_period, u_cos, fits[1])
+    if sine is None or cosine is None:
         return
-    (drift_s, u_s, periods), (drift_c, u_c, _) = drifts
+    (drift_s, u_s, periods), (drift_c, u_c, _) = sine, cosine
     floor = DRIFT_FLOOR_PERIOD * TWO_PI
     if not all(abs(d) > max(DRIFT_SIGMAS * u_d, floor) for d, u_d in ((drift_s, u_s),
                                                                      (drift_c, u_c))):
