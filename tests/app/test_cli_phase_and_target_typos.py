@@ -11,25 +11,10 @@ progress", 26 readings dropped, A and R not evaluated).
 
 from __future__ import annotations
 
-import csv
-import io
-
 import pytest
 
 from app.main import main
-
-
-def _rows(path):
-    with open(path, encoding="utf-8-sig", newline="") as handle:
-        table = list(csv.reader(handle))
-    return table[0], table[1:]
-
-
-def _write(path, header, rows):
-    out = io.StringIO()
-    csv.writer(out, lineterminator="\n").writerows([header, *rows])
-    path.write_text(out.getvalue(), encoding="utf-8")
-    return str(path)
+from tests.app.test_cli_incomplete import _rows, _write
 
 
 def _refused(capsys, *argv):

@@ -3,16 +3,12 @@ deviations are typed, says what comes next, and the analysis never refuses the l
 
 from __future__ import annotations
 
-from unittest import mock
-
 import numpy as np
 import pytest
-import shiboken6
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QLineEdit, QWidget
+from PySide6.QtWidgets import QLineEdit
 
 from widgets.positioning.presenter import PositioningPresenter
-from widgets.positioning.view import PositioningView
 
 PLAN = {"plan_runs": 2, "plan_targets": "0:30:4", "plan_directions": "both",
         "plan_order": "linear"}
@@ -21,16 +17,6 @@ PLAN = {"plan_runs": 2, "plan_targets": "0:30:4", "plan_directions": "both",
 def _truth(target: float, direction: str) -> float:
     """The axis' deviation at a target (a pitch error and a backlash of 1.2″)."""
     return 2.0 * np.sin(np.radians(target)) + (0.6 if direction == "+" else -0.6)
-
-
-@pytest.fixture
-def presenter_and_view(qtbot):
-    view = mock.create_autospec(PositioningView, instance=True)
-    view.settings_values.return_value = {}
-    owner = QWidget()
-    presenter = PositioningPresenter(view, parent=owner)
-    yield presenter, view
-    shiboken6.delete(owner)
 
 
 def _cells(presenter, row):

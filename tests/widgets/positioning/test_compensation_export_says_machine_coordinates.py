@@ -5,16 +5,11 @@ must know of the table."""
 
 from __future__ import annotations
 
-from unittest import mock
-
-import pytest
-import shiboken6
 from PySide6.QtCore import QTimer
-from PySide6.QtWidgets import QApplication, QDialog, QLabel, QWidget
+from PySide6.QtWidgets import QApplication, QDialog, QLabel
 
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
-from widgets.positioning.presenter import PositioningPresenter
 from widgets.positioning.view import PositioningView
 
 KIND = KINDS["positioning"]
@@ -38,16 +33,6 @@ def test_the_controller_options_form_says_the_positions_are_machine_coordinates(
     assert seen["shown"]
     assert seen["text"] == ("Targets must be machine coordinates: a log in a work offset gives a "
                             "shifted table.")
-
-
-@pytest.fixture
-def presenter_and_view(qtbot):
-    view = mock.create_autospec(PositioningView, instance=True)
-    view.settings_values.return_value = {}
-    owner = QWidget()
-    presenter = PositioningPresenter(view, parent=owner)
-    yield presenter, view
-    shiboken6.delete(owner)
 
 
 def test_a_heidenhain_export_names_the_cma_and_the_notes_in_the_status(presenter_and_view,

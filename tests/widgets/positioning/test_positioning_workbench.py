@@ -8,13 +8,10 @@ import io
 import json
 import math
 import re
-from unittest import mock
 
 import numpy as np
 import pytest
-import shiboken6
 from pypdf import PdfReader
-from PySide6.QtWidgets import QWidget
 from scipy import stats
 
 from app.main import main
@@ -23,7 +20,6 @@ from models.certificate.metadata import CertificateMetadata, MetadataError, Refe
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
-from widgets.positioning.presenter import PositioningPresenter
 from widgets.positioning.view import PositioningView
 
 KIND = KINDS["positioning"]
@@ -119,16 +115,6 @@ def test_no_certificate_when_a_target_was_approached_once(samples_dir):
 
 
 # -- presenter and window ---------------------------------------------------------------------
-@pytest.fixture
-def presenter_and_view(qtbot):
-    view = mock.create_autospec(PositioningView, instance=True)
-    view.settings_values.return_value = {}
-    owner = QWidget()
-    presenter = PositioningPresenter(view, parent=owner)
-    yield presenter, view
-    shiboken6.delete(owner)
-
-
 @pytest.mark.slow
 def test_presenter_draws_the_declared_figures_and_exports(presenter_and_view, samples_dir,
                                                           tmp_path):
