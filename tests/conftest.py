@@ -146,29 +146,39 @@ def _no_modal_mapping_dialog(monkeypatch, tmp_path):
     monkeypatch.setattr(ColumnMappingDialog, "exec", lambda _d: QDialog.DialogCode.Rejected)
 
 
-@pytest.fixture
-def window(qtbot, tmp_path):
-    """The main window with settings and autosaves of the test's own; what it would tell or
-    ask the user is recorded (``told``) or answered (discard unsaved work)."""
+def answered_window(folder: Path):
+    """The main window with settings and autosaves in ``folder``; what it would tell or ask
+    the user is recorded (``told``) or answered (discard unsaved work)."""
     from PySide6.QtCore import QSettings
     from PySide6.QtWidgets import QMessageBox
 
     from app.main_window import MainWindow
     from models.project.recovery import RecoveryStore
 
-    w = MainWindow(settings=QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat),
-                   recovery=RecoveryStore(tmp_path / "recovery"))
+    w = MainWindow(settings=QSettings(str(folder / "settings.ini"), QSettings.Format.IniFormat),
+                   recovery=RecoveryStore(folder / "recovery"))
     w.told = []
     w.tell = lambda title, text: w.told.append(text)
     w.ask = lambda *a: QMessageBox.StandardButton.Discard
-    qtbot.addWidget(w)
-    yield w
-    # deleted, not only closed: a closed window's application-wide shortcuts (Ctrl+PgDn)
-    # would otherwise still compete with the next test's window
+    return w
+
+
+def delete_window(w) -> None:
+    """``w`` deleted, not only closed: a closed window's application-wide shortcuts
+    (Ctrl+PgDn) would otherwise still compete with the next test's window."""
     from PySide6.QtCore import QCoreApplication, QEvent
 
     w.deleteLater()
     QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+
+
+@pytest.fixture
+def window(qtbot, tmp_path):
+    """:func:`answered_window` of the test's own folder."""
+    w = answered_window(tmp_path)
+    qtbot.addWidget(w)
+    yield w
+    delete_window(w)
 
 
 #: the number of Monte Carlo trials of the suite's validation runs (``anglebench validate

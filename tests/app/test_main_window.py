@@ -175,20 +175,13 @@ def _window_for_damaged_projects(qapp, tmp_path_factory):
     nothing (what each case checks, against the window as it found it), so each case finds
     the window as the last left it (a window each took ~0.4 s of CPU). What it would tell is
     kept in ``told``, its questions answered Discard (as ``make_window(Discard)``)."""
-    from PySide6.QtCore import QCoreApplication, QEvent
+    from tests.conftest import answered_window, delete_window
 
-    folder = tmp_path_factory.mktemp("window_for_damaged_projects")
-    window = MainWindow(settings=QSettings(str(folder / "settings.ini"),
-                                           QSettings.Format.IniFormat),
-                        recovery=RecoveryStore(folder / "recovery"))
-    window.told = []
-    window.tell = lambda title, text: window.told.append(text)
-    window.ask = lambda *a: QMessageBox.StandardButton.Discard
+    window = answered_window(tmp_path_factory.mktemp("window_for_damaged_projects"))
     yield window
     window.projects.autosave_timer.stop()
     window.close()
-    window.deleteLater()
-    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+    delete_window(window)
 
 
 @pytest.mark.parametrize("change", [

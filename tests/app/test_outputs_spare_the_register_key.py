@@ -20,12 +20,9 @@ SAMPLE = ROOT / "resources" / "samples" / "theodolite_sample.csv"
 
 
 @pytest.fixture
-def keyed(tmp_path, monkeypatch) -> Path:
-    key = tmp_path / "keys" / "lab.key"
-    key.parent.mkdir()
-    key.write_bytes(os.urandom(32))
-    monkeypatch.setenv("ANGLEBENCH_REGISTER_KEY", str(key))
-    return key
+def keyed(lab_key) -> Path:
+    """The laboratory's key file (tests/app/conftest.py ``lab_key``), as a path."""
+    return Path(lab_key)
 
 
 def _issue(tmp_path: Path, results: Path) -> int:

@@ -175,25 +175,14 @@ def test_instrument_style_entry_fills_theta_and_moves_to_the_next_reading(window
 def _window_typed_into_once_a_workbench(qapp, tmp_path_factory):
     """One shown window for the three workbenches' cases below: each types into its own
     workbench's empty table only (a window each took ~0.4 s of CPU)."""
-    from PySide6.QtCore import QCoreApplication, QEvent, QSettings
-    from PySide6.QtWidgets import QMessageBox
+    from tests.conftest import answered_window, delete_window
 
-    from app.main_window import MainWindow
-    from models.project.recovery import RecoveryStore
-
-    folder = tmp_path_factory.mktemp("window_typed_into")
-    shown = MainWindow(settings=QSettings(str(folder / "settings.ini"),
-                                          QSettings.Format.IniFormat),
-                       recovery=RecoveryStore(folder / "recovery"))
-    shown.told = []
-    shown.tell = lambda title, text: shown.told.append(text)
-    shown.ask = lambda *a: QMessageBox.StandardButton.Discard
+    shown = answered_window(tmp_path_factory.mktemp("window_typed_into"))
     shown.show()
     yield shown
     shown.projects.autosave_timer.stop()
     shown.close()
-    shown.deleteLater()
-    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+    delete_window(shown)
 
 
 @pytest.mark.parametrize("key", ["theodolite", "polygon", "positioning"])
