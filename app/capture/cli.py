@@ -13,7 +13,8 @@ The file is written atomically when the set is complete. Until then every readin
 to disk before it counts) and every line the instrument sent are appended to a journal
 beside it, ``FILE.csv.capture-journal.csv`` (models/capture/journal.py), removed once the
 file is written: a kill, a power cut or a full disk leaves every reading taken on disk, and
-the next capture into FILE.csv says where they are (``FILE.recovered-STAMP.csv``). A fault
+the next capture into FILE.csv says where they are (``FILE.recovered-STAMP.csv``); a file
+that cannot be written (the disk full) exits 2 naming it, the journal and why in words. A fault
 the link recovers from is said on stderr and the set goes on; one it does not,
 ``--timeout``, Ctrl-C, SIGTERM or SIGHUP ends with exit status 2 and one line naming the
 port, and the readings already taken are written to ``FILE.partial.csv`` (``--raw``'s lines
@@ -215,8 +216,8 @@ def _recover(out: str, say) -> int | None:
             say(message(QT_TR_NOOP("anglebench capture: an earlier capture into {out} did not "
                                    "end; its readings are in {journal}, and {path} cannot be "
                                    "written ({reason})"), out=out, journal=str(journal),
-                        path=str(path), reason=exc.strerror or str(exc)))
-            return 1
+                        path=str(path), reason=_why_not_written(exc)))
+            return EXIT_BAD_INPUT
     with contextlib.suppress(OSError):
         journal.unlink()
     if raw_target is not None:
@@ -302,8 +303,8 @@ def run_capture(argv: list[str]) -> int:
     except OSError as exc:
         say(message(QT_TR_NOOP("anglebench capture: cannot write {path}: {reason}; nothing was "
                                "captured"), path=str(journal_path(args.out)),
-                    reason=exc.strerror or str(exc)))
-        return 1
+                    reason=_why_not_written(exc)))
+        return EXIT_BAD_INPUT
     gate = StabilityGate(args.stable, args.dwell) if args.stable else None
     # the gate's window is in arcseconds for every angle, as in the window's capture panel
     # (models.capture.stability.gate_scale): a theodolite's degrees and a readout's frames in
@@ -411,6 +412,17 @@ def _kept_path(path: Path) -> Path:
                           f"{path.suffix or '.csv'}")
 
 
+def _why_not_written(exc: OSError) -> str:
+    """Why a capture's file could not be written, in words: "the disk is full" for ENOSPC or
+    EDQUOT (models.project.write_failure.DISK_FULL), else the system's words, never
+    "[Errno 28] …"."""
+    from models.project.write_failure import DISK_FULL
+
+    if exc.errno in DISK_FULL:
+        return message(QT_TR_NOOP("the disk is full"))
+    return exc.strerror or reason_of(exc) or type(exc).__name__
+
+
 def _write_output(path: Path, text: str, say, replace: bool = True) -> Path:
     """``text`` written to ``path``, checked against the files the register issued when it
     is placed (app/issued_outputs.write_sparing_issued): the check at the start is as old
@@ -476,9 +488,9 @@ def _finish(args, columns, rows, worker, journal, failure, say, dwells=None) -> 
         except OSError as exc:
             say(message(QT_TR_NOOP("anglebench capture: cannot write {path}: {reason}; the {n} "
                                    "readings taken are kept in {journal}"), path=str(path),
-                        reason=exc.strerror or reason_of(exc), n=len(rows),
+                        reason=_why_not_written(exc), n=len(rows),
                         journal=str(journal.path)))
-            return 1
+            return EXIT_BAD_INPUT
     target = written.get(target, target)
     raw_target = written.get(raw_target, raw_target) if raw_target is not None else None
     journal.remove()
