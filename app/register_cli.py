@@ -925,6 +925,15 @@ def run_register(argv: list[str]) -> int:
 
         if isinstance(exc, BrokenPipeError):
             raise  # a closed pipe (register list | head): the console script ends quietly
+        if exc.errno in (errno.ENOSPC, getattr(errno, "EDQUOT", errno.ENOSPC)) and \
+                args.command == "export":
+            # the file the user named (not the temporary one beside it), exit 2 as analyze's
+            # outputs (models.project.write_failure)
+            _say(rendered(message(QT_TR_NOOP(
+                "anglebench register: {path} cannot be written: the disk is full; nothing was "
+                "written there and the register is unchanged (free some space and try again)"),
+                path=args.out), words))
+            return EXIT_BAD_INPUT
         if exc.errno in (errno.ENOSPC, getattr(errno, "EDQUOT", errno.ENOSPC)):
             # said in words, where (the folder written into), not "[Errno 28] …" (stop 63)
             folder = os.path.dirname(os.path.abspath(exc.filename)) if exc.filename else "?"

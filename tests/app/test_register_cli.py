@@ -667,10 +667,10 @@ def test_a_full_disk_when_export_writes_is_said_in_words(tmp_path, monkeypatch, 
         raise OSError(errno.ENOSPC, "No space left on device", str(tmp_path / ".all.zip.tmp"))
 
     monkeypatch.setattr(register_cli, "write_bytes_atomic", full)
-    assert main(["register", "export", str(tmp_path / "all.zip")]) == 1
+    assert main(["register", "export", str(tmp_path / "all.zip")]) == 2  # as analyze's outputs
     err = capsys.readouterr().err
-    assert (f"the disk is full at {tmp_path}: nothing was written there; the register is "
-            "unchanged") in err and "Errno" not in err
+    assert (f"{tmp_path / 'all.zip'} cannot be written: the disk is full; nothing was written "
+            "there and the register is unchanged") in err and "Errno" not in err  # the file named
     assert not (tmp_path / "all.zip").exists()
     assert (main(["register", "head"]), capsys.readouterr().out) == before
 
