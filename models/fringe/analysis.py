@@ -326,9 +326,24 @@ def period_shortfall_allowed(theta_rad: np.ndarray, step_rad: float,
     larger of the stated ``phase_u_rad`` and the noise the record's second differences
     show, :func:`phase_noise_rad`), never more than half a step (a record one step short
     is short); 1e-9 of a
-    period for phases without noise (their rounding)."""
+    period for phases without noise (their rounding).
+
+    The step from the last phase back to the first is one more step of the record, so it may
+    also be as long as the longest step the record itself shows, and by the steps' own
+    spread (:data:`SPAN_NOISE_MARGIN` robust standard deviations) longer (cov76 F1: one
+    period of 64 phases with 0.5–1° of sampling jitter, or phases estimated from low-noise
+    signals, whose steps are not even enough for :func:`phase_noise_rad`, spanned 359.2–359.6°
+    and were refused in 7 of 16 records), never by a whole step: a record whose steps
+    scatter that much may lack one phase of its grid, which the fit's few harmonics do not
+    miss; one without scatter a step short is refused."""
     noise = max(phase_u_rad, phase_noise_rad(theta_rad))
     allowed = SPAN_NOISE_MARGIN * math.sqrt(2.0) * noise
+    theta = np.asarray(theta_rad, dtype=float)
+    if theta.size > 2 and np.ptp(theta) < TWO_PI:  # one period's phases in the record's order
+        steps = np.abs(np.diff(theta))
+        spread = median(np.abs(steps - median(steps))) / 0.6745
+        allowed = max(allowed, float(np.max(steps)) - step_rad + SPAN_NOISE_MARGIN * spread)
+        return max(1e-9 * TWO_PI, min(allowed, 0.999 * step_rad))
     return max(1e-9 * TWO_PI, min(allowed, 0.5 * step_rad))
 
 

@@ -62,3 +62,35 @@ def test_the_command_line_refuses_with_one_line(tmp_path, capsys):
     assert main(["analyze", "fringe", str(path), "--samples-per-period", "64", "--json"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "covers 62.5 % of one period" in err[0]
+
+
+def _one_period(count: int, jitter_deg: float, seed: int, with_theta: bool = True,
+                noise_v: float = 0.001) -> ParsedReadings:
+    """``count`` samples of a 64-step period whose true phases are jittered (the sampling's
+    timing), the θ column the reference's reading of the true phase — or no θ at all."""
+    rng = np.random.default_rng(seed)
+    theta = equal_steps(count, 64) + np.radians(jitter_deg) * rng.standard_normal(count)
+    head = Channels(offsets_v=HEAD.offsets_v, amplitudes_v=HEAD.amplitudes_v,
+                    quadrature_deg=HEAD.quadrature_deg, sin_harmonics=HEAD.sin_harmonics,
+                    cos_harmonics=HEAD.cos_harmonics, noise_v=noise_v, adc_bits=16)
+    u_sin, u_cos = head.sample(theta, rng)
+    column = np.degrees(theta) if with_theta else np.full(count, np.nan)
+    return ParsedReadings({"u_sin": u_sin, "u_cos": u_cos, "theta_deg": column},
+                          np.arange(count))
+
+
+def test_one_period_with_jittered_or_estimated_phases_is_one_whole_period():
+    """cov76 F1: one period of 64 samples (the seed's own design) with 0.5–2° of sampling
+    jitter, its θ column the reference's, was refused as "99.8 % of one period" in 7 of 16
+    records, and so were phases estimated from low-noise signals (no θ, no N): the step back
+    from the last phase to the first is one more step of the record. Even steps a step short,
+    and a jittered record a quarter of a period short, stay refused."""
+    for seed in range(12):
+        for jitter in (0.5, 1.0, 2.0):
+            FRINGE.analyze(_one_period(64, jitter, seed), {})  # no refusal
+        FRINGE.analyze(_one_period(64, 0.0, seed, with_theta=False), {})
+    with pytest.raises(ValueError, match=r"covers 98\.4 % of one period"):
+        FRINGE.analyze(_one_period(63, 0.0, 0), {})  # one step short
+    for seed in range(4):
+        with pytest.raises(ValueError, match=r"covers 7\d\.\d % of one period"):
+            FRINGE.analyze(_one_period(48, 2.0, seed), {})
