@@ -97,7 +97,8 @@ PARAMETERS = (
               maximum=1_000_000, zero="phase from θ or the signals",
               help="Equal steps, N samples a period. 0: the phase from the θ column or, without "
                    "one, estimated from the signals (Heydemann); a record that does not follow N "
-                   "is refused"),
+                   "is refused, and a θ column whose phases the signals fit far better than N's "
+                   "steps is used in N's place, said"),
     Parameter("max_order", "highest harmonic", "int", 5, minimum=1, maximum=31,
               help="The highest harmonic fitted to each channel"),
     Parameter("harmonics", "harmonics", "choice", "odd",
@@ -261,11 +262,49 @@ def _ellipse(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray) -> El
     return ellipse
 
 
+#: a θ column given with N is taken in N's place when the signals fitted at its phases leave
+#: at most this share of the residual sum of squares they leave at N equal steps
+THETA_FITS_BETTER = 0.5
+
+
+def _theta_fits_better(parsed: ParsedReadings, per_period: int, warnings: list[str]) -> bool:
+    """Whether a complete θ column given with N is where the samples were and N's equal steps
+    are not (cov76 F4: sampling jittered by 2° of phase, its θ column dropped for N gave a
+    half range of 1.3–1.8″ for a true 0.71″): the signals say so — fitted at the θ column's
+    phases they leave at most :data:`THETA_FITS_BETTER` of the residual they leave at N
+    equal steps. A θ column that is only noisier than N's steps fits worse and is not used."""
+    theta_col = parsed["theta_deg"]
+    if not np.all(np.isfinite(theta_col)) or np.any(np.abs(theta_col) > THETA_LIMIT_DEG):
+        return False
+    place = parsed.row_index - parsed.row_index[0]
+    orders = (1, 3, 5) if per_period >= 12 else (1,)
+    channels = [parsed["u_sin"], parsed["u_cos"]]
+    if not all(np.all(np.isfinite(c)) for c in channels):
+        return False
+    try:
+        at_theta = fit_channels(np.radians(theta_col), channels, orders)
+        at_steps = fit_channels(place * (TWO_PI / per_period), channels, orders)
+    except ValueError:
+        return False
+    ss_theta = sum(f.residual_rms ** 2 for f in at_theta)
+    ss_steps = sum(f.residual_rms ** 2 for f in at_steps)
+    if not ss_theta < THETA_FITS_BETTER * ss_steps:
+        return False
+    warnings.append(message(QT_TR_NOOP(
+        "The samples per period N = {n} was not used: the samples are not at equal steps — the "
+        "signals fitted at the θ column's phases leave {theta} mV rms, at N equal steps "
+        "{steps} mV rms; the phase is the θ column's."), n=per_period,
+        theta=f"{1e3 * math.sqrt(ss_theta / 2):.3g}", steps=f"{1e3 * math.sqrt(ss_steps / 2):.3g}"))
+    return True
+
+
 def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str]
                   ) -> tuple[str, np.ndarray | None]:
     """The mode and, for a fixed sampling or a θ column, each sample's phase (rad)."""
     theta_col = parsed["theta_deg"]
     has_theta = bool(np.any(np.isfinite(theta_col)))
+    if per_period and has_theta and _theta_fits_better(parsed, per_period, warnings):
+        per_period = 0  # the θ column's phases are where the samples were
     if per_period:
         if has_theta:
             warnings.append(message(QT_TR_NOOP("The θ column was not used: samples per period N "
@@ -584,6 +623,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     ellipse = _ellipse(parsed, u_sin, u_cos)
     checkpoint()
     source, given_theta = _phase_source(parsed, per_period, warnings)
+    if source == "theta_column":  # N given and the θ column taken in its place: N is unused
+        per_period = 0
     stated_ellipse: EllipseFit | None = ellipse
     where = _lissajous_phases(u_sin, u_cos)[0]
     if given_theta is not None and where < ELLIPSE_PHASES:

@@ -94,3 +94,36 @@ def test_one_period_with_jittered_or_estimated_phases_is_one_whole_period():
     for seed in range(4):
         with pytest.raises(ValueError, match=r"covers 7\d\.\d % of one period"):
             FRINGE.analyze(_one_period(48, 2.0, seed), {})
+
+
+def _with_theta_and_n(jittered_signals: bool, seed: int) -> ParsedReadings:
+    """Three periods of 64 steps, 2° of phase of timing jitter, and a θ column: either the
+    signals sampled at the jittered phases and θ the reference's reading of them, or the
+    signals at the equal steps and θ a noisy reference's reading of those."""
+    rng = np.random.default_rng(seed)
+    steps = equal_steps(192, 64)
+    off_grid = steps + np.radians(2.0) * rng.standard_normal(steps.size)
+    signal_at, theta = (off_grid, off_grid) if jittered_signals else (steps, off_grid)
+    u_sin, u_cos = HEAD.sample(signal_at, rng)
+    return ParsedReadings({"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.degrees(theta)},
+                          np.arange(steps.size))
+
+
+def test_a_theta_column_where_the_samples_were_is_used_in_place_of_n():
+    """cov76 F4: with N and a θ column, the θ column was dropped (a warning) even when the
+    sampling was jittered by 2°: the half range came out 1.3–1.8″ for a true 0.71″. The
+    signals tell which phases they were taken at: fitted at the θ column's they leave far
+    less residual, and then the θ column is the phase (the same figures as without N). A θ
+    column that is only a noisier reading of equal steps fits worse and N stays."""
+    settings = {"samples_per_period": 64, "lines_per_rev": 16384}
+    for seed in range(3):
+        parsed = _with_theta_and_n(True, seed)
+        both = FRINGE.analyze(parsed, settings)
+        theta_only = FRINGE.analyze(parsed, {**settings, "samples_per_period": 0})
+        assert both.phase_source == "theta_column"
+        assert np.array_equal(both.raw_error, theta_only.raw_error)
+        assert any("N = 64 was not used: the samples are not at equal steps" in w
+                   for w in both.warnings)
+        noisy_theta = FRINGE.analyze(_with_theta_and_n(False, seed), settings)
+        assert noisy_theta.phase_source == "samples_per_period"
+        assert any("The θ column was not used" in w for w in noisy_theta.warnings)
