@@ -128,8 +128,29 @@ PARAMETERS = (
                   "an encoder's error at its steps"),
 )
 
-#: a residual beyond this many σ is marked as an outlier
+#: a residual is marked as an outlier beyond the limit that all of a clean run's residuals
+#: (normal, as many as the readings) stay within but once in this many runs: Šidák's share
+#: of it for each (cov76 F8: a fixed 3σ flagged one of 156 clean readings in a third of runs)
+OUTLIER_RUNS = 100
+#: the limit never below this many σ
 OUTLIER_SIGMAS = 3.0
+
+
+def _residual_count(result) -> int:
+    """How many residuals the outliers are judged among."""
+    s = result.solution
+    return int((s.scatter_residuals_arcsec if s.scatter_residuals_arcsec.size
+                else s.residuals_arcsec).size)
+
+
+def outlier_sigmas(readings: int) -> float:
+    """The limit, in σ of the fit, beyond which one of ``readings`` residuals is an outlier:
+    a clean run's largest |residual| passes it once in :data:`OUTLIER_RUNS` runs (3.0 for
+    one reading … 4.0 for 156, 4.42 for 1000)."""
+    from scipy.special import ndtri
+
+    each = 1.0 - (1.0 - 1.0 / OUTLIER_RUNS) ** (1.0 / max(int(readings), 1))
+    return max(OUTLIER_SIGMAS, float(ndtri(1.0 - each / 2.0)))
 
 
 @dataclass(frozen=True)
@@ -232,14 +253,15 @@ class CrossCalResult:
 
     @property
     def outliers(self) -> np.ndarray:
-        """Indices of the readings whose residual exceeds OUTLIER_SIGMAS·σ (the residuals σ
+        """Indices of the readings whose residual exceeds :func:`outlier_sigmas`·σ (the residuals σ
         is judged by: in the "report" mode those with the drifts fitted)."""
         s = self.solution
         if not s.sigma_arcsec > 0:
             return np.zeros(0, dtype=int)
         residuals = (s.scatter_residuals_arcsec if s.scatter_residuals_arcsec.size
                      else s.residuals_arcsec)
-        return np.flatnonzero(np.abs(residuals) > OUTLIER_SIGMAS * s.sigma_arcsec)
+        limit = outlier_sigmas(residuals.size) * s.sigma_arcsec
+        return np.flatnonzero(np.abs(residuals) > limit)
 
     def encoder_runs_arcsec(self) -> np.ndarray:
         """Each mounting's own estimate of the encoder's error at each step (mountings ×
@@ -486,7 +508,8 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
         shown = ", ".join(str(readings.row(i)) for i in result.outliers[:8])
         warnings.append(message(QT_TR_NOOP("{count} reading(s) lie beyond {sigmas}σ of the fit "
                                            "(rows {rows}): check them"),
-                                count=int(result.outliers.size), sigmas=f"{OUTLIER_SIGMAS:g}",
+                                count=int(result.outliers.size),
+                                sigmas=f"{outlier_sigmas(_residual_count(result)):.1f}",
                                 rows=shown + (" …" if result.outliers.size > 8 else "")))
     return result
 

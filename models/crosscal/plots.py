@@ -112,7 +112,7 @@ def residual_figure(result) -> PlotFigure:
                                  r.position[order].astype(float), s.residuals_arcsec[order],
                                  GREY, True))
     for q, i in enumerate(result.outliers):
-        series.append(PlotSeries(QT_TR_NOOP("outlier (> 3σ)") if q == 0 else "",
+        series.append(PlotSeries(QT_TR_NOOP("outlier") if q == 0 else "",
                                  np.array([float(r.position[i])]),
                                  np.array([s.residuals_arcsec[i]]), RED, True))
     return PlotFigure(QT_TR_NOOP("Residuals per mounting and face"), QT_TR_NOOP("face"),
