@@ -1129,9 +1129,11 @@ def not_stated(result: PolygonResult, metadata: CertificateMetadata | None = Non
     and the details do not state it (where the shaft stopped within its display's step is
     in each error and in nothing the readings show)."""
     out = []
-    if len(result.sets) == 1 and result.sets[0].tilt is None:
+    stated = result.reading_noise_stated_arcsec > 0  # in U for one set (cov76 F10: it was
+    # named "not in U" beside the U it was in, and no statement could ever be made)
+    if len(result.sets) == 1 and result.sets[0].tilt is None and not stated:
         out.append(QT_TR_NOOP("repeatability of the readings"))
-    elif len(result.sets) == 1 and not result.reading_noise_stated_arcsec > 0:
+    elif len(result.sets) == 1 and not stated:
         out.append(ENCODER_NOISE_NOT_STATED)
     rounding = result.rounding
     if (rounding is not None and rounding.encoder_on_nominal and not rounding.repeated

@@ -132,3 +132,22 @@ def test_with_sigma_stated_u_and_the_decided_interval_cover(faces):
         points += faces - 1
     assert hits >= binom.ppf(0.01, runs, 0.9545), hits
     assert covered / points >= 0.93, covered / points
+
+
+def test_a_stated_sigma_is_not_named_missing_from_u_without_vertical_readings():
+    """cov76 F10: one set with no vertical readings (the tilt not fitted) and the σ of a
+    reading stated: U held it ("one set: in U the stated σ of a reading stands for it"), yet
+    the certificate named "repeatability of the readings" among the inputs not in U, so no
+    statement could ever be made. Without the σ it stays named."""
+    from models.polygon.report import not_stated
+
+    bench = OneSetBench(faces=12, seed=3)
+    rows = bench.rows(np.random.default_rng(3))
+    for row in rows:
+        row[4] = ""  # no vertical readings
+    parsed = ReadingsSheet(POLYGON.columns, rows).parse()
+    stated = POLYGON.analyze(parsed, {**SETTINGS, "reading_noise_arcsec": _sigma(bench)})
+    assert stated.sets[0].tilt is None
+    assert "repeatability of the readings" not in not_stated(stated)
+    unstated = POLYGON.analyze(parsed, SETTINGS)
+    assert "repeatability of the readings" in not_stated(unstated)
