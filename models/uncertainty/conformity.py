@@ -541,7 +541,7 @@ class Conformity:
 #: which U the decision rule uses when the half range decides (the guard band w, the
 #: probabilities, the U ≥ T test): its own interval's half-widths, not a point's U
 WHICH_U_HALF_RANGE = QT_TR_NOOP(
-    "the U of the decision rule (its guard bands and its test U < T) is this quantity's own, "
+    "the U of the decision rule (its guard bands and its test U₊ < T) is this quantity's own, "
     "the half-widths U₋ and U₊ of its coverage interval, not the U of a point (up to {u}, "
     "not smaller than T = {t}): the half range is one figure made from all the points, "
     "with an interval of its own")
@@ -751,7 +751,9 @@ def _with_compared(sentence: str, compared: ComparedValue, rule: str, verdict: s
     re-done from the figures printed and the rounding said as it is done."""
     decided_on_value = rule == "simple" or (rule == "guarded" and verdict in (
         "conditional pass", "conditional fail"))
-    if not (compared.said and decided_on_value):
+    # no comparison beside no statement (assessment 76 L2: "Compared with T: 0.95″" printed
+    # after "No statement of conformity is possible")
+    if not (compared.said and decided_on_value) or verdict == "not assessed":
         return sentence
     return separated([sentence, message(COMPARED_WITH_T, value=compared.text)], " ")
 
@@ -796,6 +798,16 @@ def _too_uncertain(u: PrintedFigure, t: float, q: str) -> str:
                               "U = {u} is not smaller than the tolerance T = {t}, so no result "
                               "could be shown to lie within it."), u=u,
                    t=tolerance_figure(t, q))
+
+
+def _upper_too_uncertain(u: PrintedFigure, t: float, q: str) -> str:
+    """The statement when an asymmetric interval's upper half-width U₊, which guards
+    acceptance, is not smaller than T: no result could be shown to conform; ``u`` as
+    printed (rounded up)."""
+    return message(QT_TR_NOOP("No statement of conformity is possible: the interval's upper "
+                              "half-width U₊ = {u}, which guards acceptance, is not smaller "
+                              "than the tolerance T = {t}, so no result could be shown to lie "
+                              "within it."), u=u, t=tolerance_figure(t, q))
 
 
 def _incomplete_reason(inputs) -> str:
@@ -1065,16 +1077,23 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     # printed as T is no U below it
     # (the statement's U₋, U₊; where U₋ is held at 0, the lower half-width rounded up, which
     # the zones print, is said where it alone reaches T)
+    # Only U₊ can make every acceptance impossible (ILAC-G8 4.2: acceptance needs
+    # value + U₊ ≤ T, rejection value − U₋ > T, and a value beyond T + U₋ can always be
+    # found): U₋ ≥ T leaves the rule's zones all reachable (a fail, or a conditional fail
+    # within T + U₋), so it stops no statement. Until 0.8.24 max(U₋, U₊) ≥ T withheld one
+    # and said "no result could be shown to lie within" T of a U₊ = 0.50″ < T = 0.8″
+    # (assessment 76 M2: 0.95″ −0.94″/+0.50″, a conditional fail under the guarded rule).
     slack = 1e-9 * 10.0 ** -places
-    widest = max((shown["upper"], shown["lower"]), key=lambda figure: figure.shown)
-    if widest.shown < t - slack:
-        widest = printed(max(upper, lower), q, decimals=places, rounding="up")
-    if max(upper, lower) >= t or widest.shown >= t - slack:
-        reasons.append(message(QT_TR_NOOP("U = {u} is not smaller than T = {t}"),
-                               u=widest, t=tolerance_figure(t, q)))
+    plus = shown["upper"]
+    symmetric = str(shown["upper"]) == str(shown["lower"])  # printed "±U"
+    if upper >= t or plus.shown >= t - slack:
+        reasons.append(message(QT_TR_NOOP("U = {u} is not smaller than T = {t}") if symmetric
+                               else QT_TR_NOOP("U₊ = {u} is not smaller than T = {t}"),
+                               u=plus, t=tolerance_figure(t, q)))
     if reasons:
         verdict = "not assessed"
-        sentence[verdict] = (_too_uncertain(widest, t, q)
+        sentence[verdict] = ((_too_uncertain(plus, t, q) if symmetric else
+                              _upper_too_uncertain(plus, t, q))
                              if not withheld else
                              message(QT_TR_NOOP("No statement of conformity: {reason}."),
                                      reason=_withheld_text(reasons)))
