@@ -98,6 +98,15 @@ DECISION_RULES = {
                          "of a false acceptance reaches 50 % at the limit"),
 }
 
+#: whether the decision rule was agreed with the customer (ISO/IEC 17025 7.1.3, ILAC-G8 3),
+#: said after the rule where the certificate's details tell it (:func:`decide_conformity`'s
+#: ``rule_agreed``): agreed, or the rule requested with no agreement recorded
+RULE_AGREEMENT = {
+    True: QT_TR_NOOP("agreed with the customer (ISO/IEC 17025 7.1.3)"),
+    False: QT_TR_NOOP("the rule requested with the specification; no agreement of it with the "
+                      "customer is recorded (ISO/IEC 17025 7.1.3)"),
+}
+
 #: each rule's short name, as the certificate details' choice and the window's result
 #: summary name it (the statement above is the certificate's)
 DECISION_RULE_NAMES = {
@@ -496,6 +505,9 @@ class Conformity:
     # ``conforming_probability`` at least it after a pass, at most it after a fail
     # (assessment 73 M6: "100.00 %" and "< 0.01 %" printed of a bound beside a pass)
     risk_is_bound: bool = False
+    # whether the rule was agreed with the customer (ISO/IEC 17025 7.1.3), as the details
+    # say; None where not told (a window's preview, a validation): ``rule`` then says nothing
+    rule_agreed: bool | None = None
 
     @property
     def risk_not_bounded(self) -> bool:
@@ -881,7 +893,8 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
                       rule: str = "guarded", quantity: str = "half_range",
                       invalid_reason: str = "", what: str = QT_TR_NOOP("corrected error"),
                       point_names=None, not_stated=(),
-                      estimate: HalfRangeEstimate | None = None) -> Conformity:
+                      estimate: HalfRangeEstimate | None = None,
+                      rule_agreed: bool | None = None) -> Conformity:
     """The verdict on an error curve against ±``tolerance`` (ILAC-G8:09/2019).
 
     ``errors`` are in the budget's unit (arcsec, or nm for an interferometer); a
@@ -897,7 +910,9 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     results table does (the deciding point is named so). ``estimate``: the half range and
     its interval as the workbench itself evaluates them (positioning: E/2 with E's own
     interval), in place of :func:`half_range_monte_carlo`; its ``method`` text, when it has
-    one, describes the decided quantity instead.
+    one, describes the decided quantity instead. ``rule_agreed``: whether the rule was
+    agreed with the customer (the details' ``decision_rule_agreed``), said after the rule
+    (:data:`RULE_AGREEMENT`); None says nothing of it.
     """
     q = budget.unit.written()
     if isinstance(tolerance, Quantity):
@@ -910,11 +925,18 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
                                  else float(tolerance.value), tolerance.unit.key))
     what = message(what) if not hasattr(what, "template") else what
     rule_text = message(DECISION_RULES[rule])
+    if rule_agreed is not None:
+        # ILAC-G8:09/2019 and ISO/IEC 17025 7.1.3: a rule not inherent in the specification is
+        # agreed with the customer; simple acceptance (up to 50 % false-acceptance risk) most
+        # of all. The certificate says whether it was, never claims it where not recorded
+        # (assessment 76 L5)
+        rule_text = separated([rule_text, message(RULE_AGREEMENT[bool(rule_agreed)])], "; ")
     sentence = {v: message(template, t=tolerance_figure(tolerance or 0.0, q))
                 for v, template in _SENTENCE.items()}
     if quantity not in DECISION_QUANTITIES:
         raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
-    common = {"rule_key": rule, "probability": budget.probability, "unit": budget.unit.key}
+    common = {"rule_key": rule, "probability": budget.probability, "unit": budget.unit.key,
+              "rule_agreed": rule_agreed}
     if tolerance is None:
         reason = message(QT_TR_NOOP("no specification (tolerance) was given"))
         return Conformity("not assessed", message(QT_TR_NOOP(
