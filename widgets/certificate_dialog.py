@@ -262,7 +262,9 @@ class CertificateDialog(QDialog):
             "ISO/IEC 17025 7.1.3: the decision rule was communicated to and agreed with the "
             "customer (a contract or an order that records it). The certificate says so; "
             "unticked, it says the rule is the one requested, with no agreement recorded"))
-        cert.layout().addRow("", self.rule_agreed)
+        # right under the rule it qualifies
+        rule_row = cert.layout().getWidgetPosition(self.decision_rule)[0]
+        cert.layout().insertRow(rule_row + 1, "", self.rule_agreed)
         # the training switch: a specimen exactly as "example": true makes one on the command
         # line (watermarked, numbered SPECIMEN-…, recorded in no register)
         self.training = QCheckBox(tr("Training / specimen"))
