@@ -43,7 +43,7 @@ from models.parameters import Parameter, SettingsError, Shortcut, check_paramete
 from models.readings.incomplete import IncompleteUnit
 from models.readings.sheet import Column, ParsedReadings
 from models.sign_convention import SIGN_CONVENTION, SIGN_CONVENTION_TEXT
-from models.uncertainty.lab_scope import scope_statement
+from models.uncertainty.lab_scope import cmc_quantity, scope_statement
 
 if TYPE_CHECKING:  # for their types only: a plain analyze draws no plot and plans no entry
     from models.certificate.document import CertificateDocument
@@ -251,7 +251,14 @@ class Workbench(ABC, Generic[ResultT]):
         why = test_report_statement(document)
         if why:
             document = dataclasses.replace(document, statements=(why, *document.statements))
-        scope = scope_statement(document.budget, document.unit, document.figures_raised_to_cmc)
+        # an accredited calibration certificate with no CMC stated says that its U was not
+        # compared with the scope's (ILAC-P14 5.4; assessment 76 L7), where the workbench
+        # has a CMC setting to state it in
+        accredited = (bool(document.metadata.lab_accreditation.strip())
+                      and not document.is_test_report
+                      and any(cmc_quantity(p) for p in self.parameters))
+        scope = scope_statement(document.budget, document.unit, document.figures_raised_to_cmc,
+                                accredited=accredited)
         if scope:
             document = dataclasses.replace(document, statements=(*document.statements, scope))
         return document

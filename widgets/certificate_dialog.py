@@ -254,6 +254,17 @@ class CertificateDialog(QDialog):
             self.choices[key] = box
             cert.layout().addRow(tr(label), box)
         self.decision_rule = self.choices["decision_rule"]
+        # ISO/IEC 17025 7.1.3: the rule agreed with this customer (the certificate says so,
+        # or that it is the rule requested with no agreement recorded: assessment 76 L5)
+        self.rule_agreed = QCheckBox(tr("Decision rule agreed with the customer"))
+        self.rule_agreed.setObjectName("decision_rule_agreed")
+        self.rule_agreed.setToolTip(tr(
+            "ISO/IEC 17025 7.1.3: the decision rule was communicated to and agreed with the "
+            "customer (a contract or an order that records it). The certificate says so; "
+            "unticked, it says the rule is the one requested, with no agreement recorded"))
+        # right under the rule it qualifies
+        rule_row = cert.layout().getWidgetPosition(self.decision_rule)[0]
+        cert.layout().insertRow(rule_row + 1, "", self.rule_agreed)
         # the training switch: a specimen exactly as "example": true makes one on the command
         # line (watermarked, numbered SPECIMEN-…, recorded in no register)
         self.training = QCheckBox(tr("Training / specimen"))
@@ -454,6 +465,7 @@ class CertificateDialog(QDialog):
         self.notes.setPlainText(meta.notes)
         self.training.setChecked(meta.example)
         self.checker_role.setChecked(meta.checker_role)
+        self.rule_agreed.setChecked(meta.decision_rule_agreed)
         if not meta.issue_date:
             self.fields["issue_date"].setText(dt.date.today().isoformat())
         self.standards.setRowCount(0)
@@ -545,6 +557,7 @@ class CertificateDialog(QDialog):
         data["notes"] = self.notes.toPlainText()
         data["example"] = self.training.isChecked()
         data["checker_role"] = self.checker_role.isChecked()
+        data["decision_rule_agreed"] = self.rule_agreed.isChecked()
         standards = []
         for row in range(self.standards.rowCount()):
             entry = {key: (self.standards.item(row, col).text()

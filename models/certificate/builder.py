@@ -265,7 +265,8 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
                                    withheld, what=decision.what,
                                    point_names=decision.point_names,
                                    not_stated=not_stated,
-                                   estimate=decision.estimate)
+                                   estimate=decision.estimate,
+                                   rule_agreed=metadata.decision_rule_agreed)
     more.setdefault("not_in_u", tuple(not_stated))
     if not_stated:
         # U declared incomplete: traceability needs every link's contribution in U (VIM

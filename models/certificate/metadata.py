@@ -372,6 +372,10 @@ class CertificateMetadata:
     checker_role: bool = False
     checker: str = ""
     decision_rule: str = "guarded"
+    # the decision rule was agreed with the customer (ISO/IEC 17025 7.1.3: "communicated to,
+    # and agreed with, the customer"); false: the rule requested, no agreement recorded. Of
+    # this certificate, not a lab default (each customer's agreement is its own)
+    decision_rule_agreed: bool = False
     decision_quantity: str = "half_range"
     coverage_probability_pct: float = 100.0 * DEFAULT_COVERAGE_PROBABILITY
     document_type: str = "calibration"
@@ -423,7 +427,7 @@ class CertificateMetadata:
                 values[f.name] = _stated_limit(raw, _optional_number(raw, f.name))
             elif f.name in cls._NUMBERS:
                 values[f.name] = _optional_number(raw, f.name)
-            elif f.name in ("example", "checker_role"):
+            elif f.name in ("example", "checker_role", "decision_rule_agreed"):
                 if not isinstance(raw, bool):
                     raise MetadataError(message(QT_TR_NOOP(
                         "certificate field '{name}' must be true or false"), name=f.name))

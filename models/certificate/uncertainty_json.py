@@ -158,6 +158,9 @@ def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> di
         "tolerance": _number(tolerance),
         "verdict": conformity.verdict if stated else None,
         "rule": conformity.rule_key,
+        # agreed with the customer (ISO/IEC 17025 7.1.3), as the details say; false: the rule
+        # requested, no agreement recorded (the certificate's "Decision rule" says which)
+        "rule_agreed": conformity.rule_agreed,
         # stated only with a statement of conformity: where none may be made (U incomplete,
         # U ≥ T, the error untraceable) a probability of conformity would rest on that U
         "probability_conforming": _number(conformity.conforming_probability) if stated else None,
@@ -283,7 +286,8 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
                 "interval_low": None, "interval_high": None,
                 "coverage_probability": None, "unit": unit,
                 "tolerance": _number(tolerance), "verdict": None,
-                "rule": metadata.decision_rule, "reason": why}
+                "rule": metadata.decision_rule,
+                "rule_agreed": bool(metadata.decision_rule_agreed), "reason": why}
             given = getattr(metadata, "tolerance_quantity", None)
             said = None if given is None else tolerance_stated_json(
                 SimpleNamespace(stated=(given.value, given.unit.key)))

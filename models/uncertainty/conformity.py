@@ -98,6 +98,15 @@ DECISION_RULES = {
                          "of a false acceptance reaches 50 % at the limit"),
 }
 
+#: whether the decision rule was agreed with the customer (ISO/IEC 17025 7.1.3, ILAC-G8 3),
+#: said after the rule where the certificate's details tell it (:func:`decide_conformity`'s
+#: ``rule_agreed``): agreed, or the rule requested with no agreement recorded
+RULE_AGREEMENT = {
+    True: QT_TR_NOOP("agreed with the customer (ISO/IEC 17025 7.1.3)"),
+    False: QT_TR_NOOP("the rule requested with the specification; no agreement of it with the "
+                      "customer is recorded (ISO/IEC 17025 7.1.3)"),
+}
+
 #: each rule's short name, as the certificate details' choice and the window's result
 #: summary name it (the statement above is the certificate's)
 DECISION_RULE_NAMES = {
@@ -496,6 +505,9 @@ class Conformity:
     # ``conforming_probability`` at least it after a pass, at most it after a fail
     # (assessment 73 M6: "100.00 %" and "< 0.01 %" printed of a bound beside a pass)
     risk_is_bound: bool = False
+    # whether the rule was agreed with the customer (ISO/IEC 17025 7.1.3), as the details
+    # say; None where not told (a window's preview, a validation): ``rule`` then says nothing
+    rule_agreed: bool | None = None
 
     @property
     def risk_not_bounded(self) -> bool:
@@ -541,7 +553,7 @@ class Conformity:
 #: which U the decision rule uses when the half range decides (the guard band w, the
 #: probabilities, the U ≥ T test): its own interval's half-widths, not a point's U
 WHICH_U_HALF_RANGE = QT_TR_NOOP(
-    "the U of the decision rule (its guard bands and its test U < T) is this quantity's own, "
+    "the U of the decision rule (its guard bands and its test U₊ < T) is this quantity's own, "
     "the half-widths U₋ and U₊ of its coverage interval, not the U of a point (up to {u}, "
     "not smaller than T = {t}): the half range is one figure made from all the points, "
     "with an interval of its own")
@@ -751,7 +763,9 @@ def _with_compared(sentence: str, compared: ComparedValue, rule: str, verdict: s
     re-done from the figures printed and the rounding said as it is done."""
     decided_on_value = rule == "simple" or (rule == "guarded" and verdict in (
         "conditional pass", "conditional fail"))
-    if not (compared.said and decided_on_value):
+    # no comparison beside no statement (assessment 76 L2: "Compared with T: 0.95″" printed
+    # after "No statement of conformity is possible")
+    if not (compared.said and decided_on_value) or verdict == "not assessed":
         return sentence
     return separated([sentence, message(COMPARED_WITH_T, value=compared.text)], " ")
 
@@ -796,6 +810,16 @@ def _too_uncertain(u: PrintedFigure, t: float, q: str) -> str:
                               "U = {u} is not smaller than the tolerance T = {t}, so no result "
                               "could be shown to lie within it."), u=u,
                    t=tolerance_figure(t, q))
+
+
+def _upper_too_uncertain(u: PrintedFigure, t: float, q: str) -> str:
+    """The statement when an asymmetric interval's upper half-width U₊, which guards
+    acceptance, is not smaller than T: no result could be shown to conform; ``u`` as
+    printed (rounded up)."""
+    return message(QT_TR_NOOP("No statement of conformity is possible: the interval's upper "
+                              "half-width U₊ = {u}, which guards acceptance, is not smaller "
+                              "than the tolerance T = {t}, so no result could be shown to lie "
+                              "within it."), u=u, t=tolerance_figure(t, q))
 
 
 def _incomplete_reason(inputs) -> str:
@@ -869,7 +893,8 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
                       rule: str = "guarded", quantity: str = "half_range",
                       invalid_reason: str = "", what: str = QT_TR_NOOP("corrected error"),
                       point_names=None, not_stated=(),
-                      estimate: HalfRangeEstimate | None = None) -> Conformity:
+                      estimate: HalfRangeEstimate | None = None,
+                      rule_agreed: bool | None = None) -> Conformity:
     """The verdict on an error curve against ±``tolerance`` (ILAC-G8:09/2019).
 
     ``errors`` are in the budget's unit (arcsec, or nm for an interferometer); a
@@ -885,7 +910,9 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     results table does (the deciding point is named so). ``estimate``: the half range and
     its interval as the workbench itself evaluates them (positioning: E/2 with E's own
     interval), in place of :func:`half_range_monte_carlo`; its ``method`` text, when it has
-    one, describes the decided quantity instead.
+    one, describes the decided quantity instead. ``rule_agreed``: whether the rule was
+    agreed with the customer (the details' ``decision_rule_agreed``), said after the rule
+    (:data:`RULE_AGREEMENT`); None says nothing of it.
     """
     q = budget.unit.written()
     if isinstance(tolerance, Quantity):
@@ -898,11 +925,18 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
                                  else float(tolerance.value), tolerance.unit.key))
     what = message(what) if not hasattr(what, "template") else what
     rule_text = message(DECISION_RULES[rule])
+    if rule_agreed is not None:
+        # ILAC-G8:09/2019 and ISO/IEC 17025 7.1.3: a rule not inherent in the specification is
+        # agreed with the customer; simple acceptance (up to 50 % false-acceptance risk) most
+        # of all. The certificate says whether it was, never claims it where not recorded
+        # (assessment 76 L5)
+        rule_text = separated([rule_text, message(RULE_AGREEMENT[bool(rule_agreed)])], "; ")
     sentence = {v: message(template, t=tolerance_figure(tolerance or 0.0, q))
                 for v, template in _SENTENCE.items()}
     if quantity not in DECISION_QUANTITIES:
         raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
-    common = {"rule_key": rule, "probability": budget.probability, "unit": budget.unit.key}
+    common = {"rule_key": rule, "probability": budget.probability, "unit": budget.unit.key,
+              "rule_agreed": rule_agreed}
     if tolerance is None:
         reason = message(QT_TR_NOOP("no specification (tolerance) was given"))
         return Conformity("not assessed", message(QT_TR_NOOP(
@@ -946,7 +980,21 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
                 if math.isfinite(wp) and wp > 0 else
                 _verdict(xp, t, 0.0 if rule == "simple" else wp, rule)
                 for (xp, wp, dp), c in zip(pairs, compared, strict=True)]
-    worst = max(range(e.size), key=lambda i: (_ORDER.index(verdicts[i]), abs(e[i]) + u[i]))
+    # each point's probability of lying within ±T
+    inside = np.array([probability_conforming(float(xi), float(wi), float(wi), t,
+                                              budget.probability, two_sided=True)
+                       for xi, wi in zip(e, u, strict=True)])
+    # the deciding point: of the points with the worst verdict, after a rejection the one
+    # that fails most surely (its probability of conformity the lowest, so that the risk
+    # printed, that point's, is the tightest bound on a false rejection); after an
+    # acceptance the one nearest the limit, |e| + U (the risk printed is then the sum over
+    # all points). Until 0.8.24 |e| + U chose after a rejection too: target 90° ↓
+    # (10.0″ ± 2.1″) where 60° ↓ (10.3″ ± 1.5″) fails more surely (assessment 76 L3).
+    rank = max(_ORDER.index(v) for v in verdicts)
+    candidates = [i for i in range(e.size) if _ORDER.index(verdicts[i]) == rank]
+    worst = (min(candidates, key=lambda i: (inside[i], -(abs(e[i]) + u[i])))
+             if _ORDER[rank] in ("fail", "conditional fail") else
+             max(candidates, key=lambda i: abs(e[i]) + u[i]))
     x, w = abs(float(e[worst])), float(u[worst])
     d = pairs[worst][2]
     verdict = verdicts[worst]
@@ -956,12 +1004,10 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
     if budget.floor > 0:  # the deciding point's U is its interval's both half-widths
         raised = bool(budget.below_floor[worst])
         common = {**common, "raised_to_cmc": (raised, raised)}
-    # P(every point within ±T) ≥ 1 − Σ P(point i outside) (Boole); ≤ P(the worst point within)
-    inside = np.array([probability_conforming(float(xi), float(wi), float(wi), t,
-                                              budget.probability, two_sided=True)
-                       for xi, wi in zip(e, u, strict=True)])
+    # P(every point within ±T) ≥ 1 − Σ P(point i outside) (Boole); ≤ P(the deciding point
+    # within), the lowest of the points rejected
     conforming = (max(0.0, 1.0 - float(np.sum(1.0 - inside)))
-                  if verdict in ("pass", "conditional pass") else float(np.min(inside)))
+                  if verdict in ("pass", "conditional pass") else float(inside[worst]))
     # the deciding point's error as the results table prints it, signed, with its ±U (until
     # 0.8.17 |e|, which the certificate's row then printed as a half range held at 0: "6″
     # −6″/+18″, 0″ … 25″" for a point at −6″)
@@ -1065,16 +1111,23 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     # printed as T is no U below it
     # (the statement's U₋, U₊; where U₋ is held at 0, the lower half-width rounded up, which
     # the zones print, is said where it alone reaches T)
+    # Only U₊ can make every acceptance impossible (ILAC-G8 4.2: acceptance needs
+    # value + U₊ ≤ T, rejection value − U₋ > T, and a value beyond T + U₋ can always be
+    # found): U₋ ≥ T leaves the rule's zones all reachable (a fail, or a conditional fail
+    # within T + U₋), so it stops no statement. Until 0.8.24 max(U₋, U₊) ≥ T withheld one
+    # and said "no result could be shown to lie within" T of a U₊ = 0.50″ < T = 0.8″
+    # (assessment 76 M2: 0.95″ −0.94″/+0.50″, a conditional fail under the guarded rule).
     slack = 1e-9 * 10.0 ** -places
-    widest = max((shown["upper"], shown["lower"]), key=lambda figure: figure.shown)
-    if widest.shown < t - slack:
-        widest = printed(max(upper, lower), q, decimals=places, rounding="up")
-    if max(upper, lower) >= t or widest.shown >= t - slack:
-        reasons.append(message(QT_TR_NOOP("U = {u} is not smaller than T = {t}"),
-                               u=widest, t=tolerance_figure(t, q)))
+    plus = shown["upper"]
+    symmetric = str(shown["upper"]) == str(shown["lower"])  # printed "±U"
+    if upper >= t or plus.shown >= t - slack:
+        reasons.append(message(QT_TR_NOOP("U = {u} is not smaller than T = {t}") if symmetric
+                               else QT_TR_NOOP("U₊ = {u} is not smaller than T = {t}"),
+                               u=plus, t=tolerance_figure(t, q)))
     if reasons:
         verdict = "not assessed"
-        sentence[verdict] = (_too_uncertain(widest, t, q)
+        sentence[verdict] = ((_too_uncertain(plus, t, q) if symmetric else
+                              _upper_too_uncertain(plus, t, q))
                              if not withheld else
                              message(QT_TR_NOOP("No statement of conformity: {reason}."),
                                      reason=_withheld_text(reasons)))

@@ -28,7 +28,7 @@ from models.parameters import Parameter
 if TYPE_CHECKING:  # a budget's module is loaded by whoever makes one (not a plain analyze)
     from models.uncertainty.budget import UncertaintyBudget
 
-__all__ = ["HeldToCmc", "cmc_of", "cmc_parameter", "cmc_quantity", "held_to_cmc",
+__all__ = ["CMC_NOT_STATED", "HeldToCmc", "cmc_of", "cmc_parameter", "cmc_quantity", "held_to_cmc",
            "scope_statement"]
 
 
@@ -120,13 +120,30 @@ def held_to_cmc(value: float, minus: float, plus: float, cmc: float, *,
     return HeldToCmc(value, max(minus, cmc), max(plus, cmc), raised, non_negative)
 
 
+#: an accredited calibration certificate whose CMC is not stated: its U was not compared with
+#: the scope (assessment 76 L7)
+CMC_NOT_STATED = QT_TR_NOOP(
+    "No calibration and measurement capability (CMC) of the laboratory is stated for this "
+    "quantity in the analysis settings, so the U stated here has not been compared with the "
+    "CMC of its scope of accreditation (ILAC-P14:09/2020 5.4: no U smaller than the CMC is "
+    "stated under accreditation).")
+
+
 def scope_statement(budget: UncertaintyBudget, unit: str = "\"",
-                    figures: Sequence[str] = ()) -> Any:
+                    figures: Sequence[str] = (), accredited: bool = False) -> Any:
     """The certificate's statement of the laboratory's CMC, the points outside its scope and
-    the ``figures`` (their names as printed) whose coverage interval was raised to it
-    ("" when no CMC is stated)."""
-    if not budget.floor > 0 or not budget.points:
+    the ``figures`` (their names as printed) whose coverage interval was raised to it; where
+    no CMC is stated, "" unless the certificate is an ``accredited`` calibration certificate,
+    which then says that its U was not compared with the CMC (:data:`CMC_NOT_STATED`).
+
+    An assessor reads "laboratory's CMC: none stated" under an accreditation mark as a U that
+    may lie below the scope's (ILAC-P14 5.4): until 0.8.24 such a certificate printed it with
+    no word (assessment 76 L7). The certificate is still issued — the CMC is the laboratory's
+    to state, and the software cannot know it — but says what was not checked."""
+    if not budget.points:
         return ""
+    if not budget.floor > 0:
+        return message(CMC_NOT_STATED) if accredited else ""
     below = budget.below_floor
     cmc = f"{budget.floor:g}{unit}"
     held = "" if not figures else message(QT_TR_NOOP(

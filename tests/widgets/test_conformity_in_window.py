@@ -43,10 +43,10 @@ def test_the_window_states_the_certificates_conformity_verdict(window):
             assert "The item conforms to the specification ±3\" (pass)." in printed.statement
             assert f"Conformity: pass ({rule}). Decided value 0.94\", interval " \
                 "[0.00, 1.45]\"." in shown, shown
-        else:  # U ≥ T: no statement, and why
+        else:  # U₊ ≥ T: no statement, and why (U₊ guards acceptance: assessment 76 M2)
             assert printed.verdict == "not assessed"
             assert f"Conformity: no statement ({rule}): " in shown, shown
-            assert 'U = 0.94" is not smaller than T = 0.2". Decided value 0.94", interval ' \
+            assert 'U₊ = 0.51" is not smaller than T = 0.2". Decided value 0.94", interval ' \
                 '[0.00, 1.45]".' in shown, shown
 
 

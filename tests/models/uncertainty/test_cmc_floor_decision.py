@@ -61,7 +61,8 @@ def test_no_statement_when_the_cmc_is_not_smaller_than_t():
     errors, budget = _curve_and_budget(3.0)
     held = decide_conformity(errors, budget, T, "guarded", "half_range")
     assert held.verdict == "not assessed"
-    assert "U = 3.0\" is not smaller than T = 3\"" in held.reason
+    # the lower end held at 0 prints U₋ as the value, so U₊, the one that guards acceptance
+    assert "U₊ = 3.0\" is not smaller than T = 3\"" in held.reason
 
 
 def test_the_statement_says_which_u_its_rule_uses_when_a_points_u_reaches_t():
@@ -75,7 +76,7 @@ def test_the_statement_says_which_u_its_rule_uses_when_a_points_u_reaches_t():
     decided = decide_conformity(errors, budget, t, "guarded", "half_range")
     assert max(decided.expanded, decided.lower_half_width) < t
     assert decided.stated
-    assert ("the U of the decision rule (its guard bands and its test U < T) is this "
+    assert ("the U of the decision rule (its guard bands and its test U₊ < T) is this "
             "quantity's own, the half-widths U₋ and U₊ of its coverage interval, not the U of "
             f"a point (up to {point_u:.2f}\", not smaller than T = {t:g}\")") in decided.quantity
     # below T, nothing to explain

@@ -125,20 +125,19 @@ def _half_range_figures(statement: str, unit: str) -> tuple[Decimal, Decimal, De
 def _check_half_range(value, lower, upper, t, rule, unit):
     c = _half_range(value, lower, upper, _typed(t), rule, unit)
     if not c.stated:
-        # no statement only where a U, as computed or as printed, is not below T
-        # no statement only where a U as printed (rounded up) is not below T: the
-        # statement's U₋ or U₊, or the lower half-width rounded up where U₋ is held at 0
-        found = re.search(r"U = " + NUMBER + _unit_text(unit) + " is not smaller than",
+        # no statement only where U₊, which guards acceptance, as computed or as printed
+        # (rounded up) is not below T: no result could then be shown to lie within T; U₋
+        # guards rejection, which a value beyond T + U₋ reaches whatever U₋ (assessment 76 M2)
+        found = re.search(r"U₊? = " + NUMBER + _unit_text(unit) + " is not smaller than",
                           c.reason)
         assert found, c.reason
         said = Decimal(found.group(1))
         x, minus, plus = _half_range_figures(c.statement, unit)
-        digit = Decimal(1).scaleb(-len(found.group(1).partition(".")[2]))
         assert said >= t
-        assert said in (minus, plus) or Decimal(0) <= said - Decimal(max(upper, lower)) < digit
+        assert said == plus
         return
     x, minus, plus = _half_range_figures(c.statement, unit)
-    assert max(minus, plus) < t
+    assert plus < t
     compared = _compared(c.statement, unit)
     redone = ilac_verdict(rule, x, minus, plus, t, compared)
     assert _printed_verdict(c.statement) == c.verdict == redone, (c.statement, c.zones)

@@ -62,3 +62,24 @@ def test_one_point_alone_is_its_probability_not_a_bound(rule_case):
     c = _decide([e], [2.0], 10.0)
     assert c.verdict == rule_case and "at most" not in c.statement
     assert "not bounded" not in c.statement
+
+
+@pytest.mark.parametrize("rule", ["simple", "guarded_binary", "guarded"])
+def test_the_point_that_fails_most_surely_decides_a_fail(rule):
+    """Assessment 76 L3: 10.0″ ± 2.1″ (|e| + U = 12.1″) and 10.3″ ± 1.5″ (11.8″) against
+    ±5″: both fail, the second more surely (its probability of lying within ±T the lower:
+    5.3″ is 7.1 σ beyond T against 4.8 σ), so it decides and its probability is the one
+    printed, a bound the first would loosen. Until 0.8.24 |e| + U chose the first."""
+    errors, expanded, t = np.array([1.0, 10.0, -10.3, 2.0]), np.array([1.0, 2.1, 1.5, 1.0]), 5.0
+    e, u = errors, expanded
+    budget = UncertaintyBudget((BudgetComponent("noise", "B", "normal", u / 2.0, 1.0, 1.0,
+                                                math.inf),), e.size, P, "arcsec")
+    c = decide_conformity(e, budget, t, rule, "points",
+                          point_names=["a", "b", "c", "d"])
+    assert c.verdict == "fail" and c.point == "c"
+    assert c.value == pytest.approx(-10.3) and c.expanded == pytest.approx(1.5)
+    assert "the deciding point is c: |e| = 10.3\", U = 1.5\"" in c.statement
+    within = 1.0 - _outside(-10.3, 1.5, t)
+    assert within < 1.0 - _outside(10.0, 2.1, t)
+    assert c.decision_risk == pytest.approx(within, rel=1e-6)
+    assert c.conforming_probability == pytest.approx(within, rel=1e-6)
