@@ -1866,8 +1866,12 @@ class CapturePanel(QDockWidget):
             # the step the cell was rounded to: within half of it the cell is as captured
             steps[link.slot] = max(steps.get(link.slot, 0.0), step)
         self.update_guide()
-        notes += self._off_the_plan(sheet, row, targets, taking)
-        notes += self._off_the_target(presenter, row, place, targets, taking)
+        # a reading that does not match its row's point (another face, another target): said
+        # beside the guidance and its cell marked in the table (live76 F1: later takes went
+        # into another face's row without a word)
+        mismatched = self._off_the_plan(sheet, row, targets, taking) \
+            + self._off_the_target(presenter, row, place, targets, taking)
+        notes += [text for _, text in mismatched]
         filled = {c for _, c, _ in changes}
         if place is not None and place.row == row:  # the plan's cells, where blank
             for key, text in place.cells.items():
@@ -1939,6 +1943,8 @@ class CapturePanel(QDockWidget):
                             columns={key: frozenset(k for t, _, k in targets if t is link)
                                      for link, key in keyed})
             self._widen(table, changes)
+            for key, text in mismatched:
+                model.warn_take(row, keys.index(key), text)
             if 0 in taking:
                 self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
             # what the take could not place, or took far from where the plan expects it:
@@ -1959,32 +1965,38 @@ class CapturePanel(QDockWidget):
         return tr("{instrument}: its reading was not taken: this workbench has no column for "
                   "it").format(instrument=link.name)
 
-    def _off_the_plan(self, sheet, row: int, targets, taking) -> list[str]:
+    def _off_the_plan(self, sheet, row: int, targets, taking) -> list[tuple[str, str]]:
         """A warning per angle a take reads more than half the pitch between the plan's
         points away from the one the plan expects there (:attr:`next_reading`'s nominal:
         the encoder at the face) — the table at another face (#62 review F9: 300° taken
-        where 270° was expected, without a word). The reading is kept."""
+        where 270° was expected, without a word). The reading is kept; with the key of the
+        column it is in (the take marks that cell)."""
         step = self.next_reading
-        if step is None or step.pitch_deg <= 0.0 or not step.nominal:
+        if step is None or step.pitch_deg <= 0.0 or not (step.nominal or step.near):
             return []
         keys = [c.key for c in sheet.columns]
         out = []
         for link, i, key in targets:
-            expected = step.nominal.get(key)
+            # the reading the plan expects, or those it would take when it cannot say which
+            # (the polygon's second face: either way round from the first)
+            nominal = step.nominal.get(key)
+            candidates = (nominal,) if nominal is not None else step.near.get(key, ())
             got, unit, _ = taking[link.slot]
-            if expected is None or unit != "deg" or i >= len(got):
+            if not candidates or unit != "deg" or i >= len(got):
                 continue
-            off = (float(got[i]) - expected + 180.0) % 360.0 - 180.0
+            expected, off = min((
+                (c, (float(got[i]) - c + 180.0) % 360.0 - 180.0) for c in candidates),
+                key=lambda pair: abs(pair[1]))
             if abs(off) <= step.pitch_deg / 2.0:
                 continue
-            out.append(tr("Row {row}: {column} {value}° is {off}° from the ≈ {expected}° the "
+            out.append((key, tr("Row {row}: {column} {value}° is {off}° from the ≈ {expected}° the "
                           "plan expects at face {face} (more than half the {pitch}° between "
                           "faces): check the table's position. The reading is kept; undo the "
                           "take if it is wrong").format(
                 row=row + 1, column=declared(sheet.columns[keys.index(key)].header),
                 face=step.fill.get("position", "?"),
                 value=f"{float(got[i]) % 360.0:.4f}", off=f"{off:+.1f}",
-                expected=degrees_text(expected), pitch=degrees_text(step.pitch_deg)))
+                expected=degrees_text(expected), pitch=degrees_text(step.pitch_deg))))
         return out
 
     @staticmethod
@@ -2021,7 +2033,8 @@ class CapturePanel(QDockWidget):
                 out[link.slot] = (tuple(values), unit, frames)
         return out
 
-    def _off_the_target(self, presenter, row: int, place, targets, taking) -> list[str]:
+    def _off_the_target(self, presenter, row: int, place, targets,
+                        taking) -> list[tuple[str, str]]:
         """A warning per reading of a position (``Workbench.reading_positions``: positioning's
         measured) nearer another target of the plan than its row's: more than half the
         distance to the neighbouring target from it (models/capture/wrong_target.py) — the
@@ -2046,14 +2059,14 @@ class CapturePanel(QDockWidget):
             if off is None:
                 continue
             symbol = "°" if position[1] == "deg" else f" {position[1]}"
-            out.append(tr("Row {row}: {column} {value}{unit} is {off}{unit} from target "
+            out.append((key, tr("Row {row}: {column} {value}{unit} is {off}{unit} from target "
                           "{target}{unit}, the plan's for this row (more than half the "
                           "{gap}{unit} to the neighbouring target {neighbour}{unit}): check the "
                           "axis's position. The reading is kept; undo the take if it is "
                           "wrong").format(
                 row=row + 1, column=declared(sheet.columns[keys.index(key)].header),
                 value=f"{off.reading:.4f}", off=f"{off.off:+.4f}", unit=symbol,
-                target=f"{off.target:g}", gap=f"{off.gap:g}", neighbour=f"{off.neighbour:g}"))
+                target=f"{off.target:g}", gap=f"{off.gap:g}", neighbour=f"{off.neighbour:g}")))
         return out
 
     @staticmethod

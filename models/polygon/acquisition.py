@@ -60,14 +60,15 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
     count = 0  # N, once known (below): the pitch said with an encoder figure
 
     def said(text, face: int, set_no: int, reading: int,
-             encoder: float | None = None) -> NextReading:
+             encoder: float | None = None, near: tuple[float, ...] = ()) -> NextReading:
         if n > 1:
             text = message(QT_TR_NOOP("{what} — reading {k} of {n}"), what=text, k=reading, n=n)
         fill = {"position": str(face)}
         if uses_sets or set_no > 1:
             fill["set"] = str(set_no)
         nominal = {} if encoder is None else {"encoder_deg": float(encoder) % 360.0}
-        return NextReading(text, fill, reading, n, nominal, 360.0 / count if count else 0.0)
+        return NextReading(text, fill, reading, n, nominal, 360.0 / count if count else 0.0,
+                           {"encoder_deg": near} if near else {})
 
     face = _int(groups[-1][0][0]) if groups else None
     if face is None:
@@ -154,4 +155,11 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
     figures: dict[str, object] = {"face": following, "set": set_no}
     if encoder is not None:
         figures["encoder"] = degrees_text(encoder)
-    return said(message(template, **figures), following, set_no, 1, encoder)
+    near: tuple[float, ...] = ()
+    if encoder is None and count and encoders[0] is not None:
+        # the way the encoder counts not known yet: the face is that many steps of 360°/N
+        # either way round from the set's first (a reading at neither is at another face)
+        steps = ((following - first_face) * order) % count
+        near = tuple(sorted({(encoders[0] + sign * steps * 360.0 / count) % 360.0
+                             for sign in (1, -1)}))
+    return said(message(template, **figures), following, set_no, 1, encoder, near)

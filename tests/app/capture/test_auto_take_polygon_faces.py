@@ -208,3 +208,36 @@ def test_f9_with_the_only_instrument_lost_says_why(window, qtbot):
         qtbot.wait(300)
         assert presenter.table_model.sheet.row_count == rows_before + 1
         panel.disconnect_instrument()
+
+
+def test_a_take_at_another_face_than_its_rows_is_said_and_marked(bench, window, qtbot):
+    """live76 run3: row 2 "face 2" got face 7's reading (190°) with no word: the guide could
+    not say the encoder at face 2 (the way it counts not known after one face), so nothing
+    was checked. Either way round from face 1 is 40° or 340°; 190° is neither: said beside
+    the guidance, and the encoder's cell marked in the table with the same words."""
+    from tests.app.capture.test_capture_marks import _connect, _take_at
+
+    panel = window.capture_panel
+    model = bench.table_model
+    keys = [c.key for c in model.sheet.columns]
+    encoder = keys.index("encoder_deg")
+    with AutocollimatorSimulator("pty", positions=[(0.5, 0.25)]) as ac, \
+            ReadoutSimulator("pty", positions=[(10.0,)]) as ro:
+        _connect(panel, ac, ro)
+        assert _take_at(qtbot, panel, ac, ro, 10.0, 0.5, 0.25) == "row 1"
+        assert panel.take_note.text() == ""
+        assert _take_at(qtbot, panel, ac, ro, 190.0, 0.75, 0.5) == "row 2"
+        note = panel.take_note.text()
+        panel.disconnect_instrument()
+    assert model.sheet.text(1, keys.index("position")) == "2"
+    assert note == ("Row 2: encoder a [deg] 190.0000° is +150.0° from the ≈ 40° the plan "
+                    "expects at face 2 (more than half the 30° between faces): check the "
+                    "table's position. The reading is kept; undo the take if it is wrong")
+    assert model.take_warning(1, encoder) == note and model.take_warning(0, encoder) is None
+    from widgets.readings_table_model import WARNED_BRUSH
+
+    index = model.index(1, encoder)
+    assert model.data(index, Qt.ItemDataRole.BackgroundRole) == WARNED_BRUSH
+    assert model.data(index, Qt.ItemDataRole.ToolTipRole) == note
+    bench.undo_stack.undo()  # the take undone: its mark goes with it
+    assert model.take_warning(1, encoder) is None

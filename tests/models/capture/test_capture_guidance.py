@@ -172,3 +172,16 @@ def test_a_reversed_set_is_guided_to_the_face_its_row_names_with_that_faces_enco
     assert guided.nominal == {"encoder_deg": pytest.approx(190.0)}
     # a row with no face yet: the direction of the readings, as before
     assert polygon_guide(rows[:2], {}, settings_).text == "go to face 3 (encoder ≈ 190°)"
+
+
+def test_the_second_face_is_expected_either_way_round_from_the_first():
+    """live76 run3: after one face the guide cannot say which way the encoder counts, so it
+    gave no figure and a take at face 7 went into face 2's row unchecked. The readings it
+    would take there are the first ± 360°/N (the off-plan check warns of any other)."""
+    guided = polygon_guide([_row(1, 10.0)], {}, {"faces": 12, "readings_per_point": 1})
+    assert guided.text == "go to face 2" and guided.nominal == {}
+    assert guided.near == {"encoder_deg": (pytest.approx(40.0), pytest.approx(340.0))}
+    assert guided.pitch_deg == pytest.approx(30.0)
+    # known the way round: the one figure, nothing "either way"
+    guided = polygon_guide([_row(1, 10.0), _row(2, 40.0)], {}, {"faces": 12})
+    assert guided.nominal == {"encoder_deg": pytest.approx(70.0)} and guided.near == {}
