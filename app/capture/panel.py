@@ -1339,7 +1339,9 @@ class CapturePanel(QDockWidget):
         # autocollimator's reading (nulled at each face) says nothing of it (live76 F1)
         table = self._table_link()
         gate.moves_seen_elsewhere = table is not None
-        if table is not None and gate.waiting_for_move:
+        if gate.waiting_for_move and self._next_point_here(table):
+            gate.moved()  # a new set starting where its last closed: read again, no move
+        elif table is not None and gate.waiting_for_move:
             link = table[0]
             latest, taken_at = link.latest, link.taken_position
             if latest is not None and taken_at is not None and abs(
@@ -1687,6 +1689,33 @@ class CapturePanel(QDockWidget):
                     and (link.latest is None or link.latest.unit == "deg"):
                 return link, key
         return None
+
+    def _next_point_here(self, table: tuple[InstrumentLink, str] | None) -> bool:
+        """The plan's next point is where the last take was, so there is no move to wait
+        for: the next set starting at the face its last closed on (the polygon's set 2 at
+        face 1, read right after set 1's closure there). With the table's encoder: the
+        reading the guide expects (or each it would take) within half the pitch of the
+        encoder at the last take; else the face the guide names is the last take's row's."""
+        step = self.next_reading
+        presenter = getattr(self.window_, "current", None)
+        if step is None or presenter is None or step.reading > 1:
+            return False
+        if table is not None:
+            link, key = table
+            if link.taken_position is None:
+                return False
+            nominal = step.nominal.get(key)
+            candidates = (nominal,) if nominal is not None else step.near.get(key, ())
+            return any(abs((c - link.taken_position + 180.0) % 360.0 - 180.0)
+                       < self.table_move_deg() for c in candidates)
+        face = step.fill.get("position", "").strip()
+        last = next((row for key, row, _ in reversed(self.taken)
+                     if key == presenter.kind.key), None)
+        sheet = presenter.table_model.sheet
+        keys = [c.key for c in sheet.columns]
+        if not face or last is None or "position" not in keys or last >= sheet.row_count:
+            return False
+        return sheet.text(last, keys.index("position")).strip() == face
 
     def table_move_deg(self) -> float:
         """How far the table's encoder must turn from the last take for the next face: half

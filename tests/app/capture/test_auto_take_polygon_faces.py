@@ -241,3 +241,47 @@ def test_a_take_at_another_face_than_its_rows_is_said_and_marked(bench, window, 
     assert model.data(index, Qt.ItemDataRole.ToolTipRole) == note
     bench.undo_stack.undo()  # the take undone: its mark goes with it
     assert model.take_warning(1, encoder) is None
+
+
+@pytest.mark.parametrize("with_encoder", [True, False])
+def test_the_next_set_starting_at_the_closure_face_is_read_there_without_a_move(
+        window, qtbot, with_encoder):
+    """Set 2 starts at face 1, where set 1's closure was just read (the guide: "set 2: go to
+    face 1 (encoder ≈ 10°)"): the table does not move, and waiting for a move skipped it —
+    set 2's face 4 then went into its face 1 row (the live76 repro, with the encoder rule).
+    The plan's next point being where the table is, it is read after a fresh dwell."""
+    bench = _show(window, "polygon")
+    bench.table_model.replace_all([], "empty")
+    bench.set_settings({**bench.settings, "faces": 4, "plan_sets": 2})
+    panel = window.capture_panel
+    # face, encoder, AC x nulled; set 1 round and closed, then set 2 the other way
+    plan = [(1, 10.0, 0.10), (2, 100.0, 0.25), (3, 190.0, 0.05), (4, 280.0, 0.30),
+            (1, 10.0, 0.20), (1, 10.0, 0.15), (4, 280.0, 0.35)]
+    with AutocollimatorSimulator("pty", positions=[(0.10, -3.2)], rate_hz=50.0) as ac, \
+            ReadoutSimulator("pty", positions=[(10.0,)]) as ro:
+        panel.connect_to("autocollimator", ac.port, **FAST)
+        if with_encoder:
+            panel.connect_to("readout", ro.port, slot=1, **FAST)
+            readout = panel.links[1]
+            readout.column.setCurrentIndex(readout.column.findData("encoder_deg"))
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=5000)
+        _auto(panel)
+        qtbot.waitUntil(lambda: len(_rows(bench)) == 1, timeout=5000)
+        for i in range(1, len(plan)):
+            if plan[i][1] != plan[i - 1][1]:  # the table turns: the mirror out of view
+                _turn(qtbot, ac, ro, plan[i - 1][1], plan[i][1], plan[i][2])
+            else:  # set 2 at set 1's closure face: re-nulled at most, the table still
+                ac.positions[0] = (plan[i][2], -3.2)
+            qtbot.waitUntil(lambda i=i: len(_rows(bench)) == i + 1, timeout=5000)
+        qtbot.wait(800)  # and nothing more while the table stays at face 4
+        rows = _rows(bench)
+        sheet = bench.table_model.sheet
+        sets = [sheet.text(r, [c.key for c in sheet.columns].index("set"))
+                for r in range(len(rows))]
+        panel.disconnect_instrument()
+    assert [int(f) for f, _, _ in rows] == [face for face, _, _ in plan]
+    assert sets == ["1"] * 5 + ["2"] * 2
+    assert [float(x) for _, _, x in rows] == [pytest.approx(x, abs=0.02) for _, _, x in plan]
+    if with_encoder:
+        assert [float(e) for _, e, _ in rows] == [pytest.approx(e, abs=1e-4)
+                                                  for _, e, _ in plan]
