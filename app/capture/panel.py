@@ -1700,6 +1700,9 @@ class CapturePanel(QDockWidget):
         presenter = getattr(self.window_, "current", None)
         if step is None or presenter is None or step.reading > 1:
             return False
+        if self._placement(presenter) is None \
+                and getattr(presenter, "plan_complete", int)():
+            return False  # the plan is done: a take now is one after it, never by itself
         if table is not None:
             link, key = table
             if link.taken_position is None:
