@@ -1691,8 +1691,8 @@ class CapturePanel(QDockWidget):
         return None
 
     def _next_point_here(self, table: tuple[InstrumentLink, str] | None) -> bool:
-        """The plan's next point is where the last take was, so there is no move to wait
-        for: the next set starting at the face its last closed on (the polygon's set 2 at
+        """The entry plan's next point is where the last take was, so there is no move to
+        wait for: the next set starting at the face its last closed on (the polygon's set 2 at
         face 1, read right after set 1's closure there). With the table's encoder: the
         reading the guide expects (or each it would take) within half the pitch of the
         encoder at the last take; else the face the guide names is the last take's row's."""
@@ -1700,9 +1700,11 @@ class CapturePanel(QDockWidget):
         presenter = getattr(self.window_, "current", None)
         if step is None or presenter is None or step.reading > 1:
             return False
-        if self._placement(presenter) is None \
-                and getattr(presenter, "plan_complete", int)():
-            return False  # the plan is done: a take now is one after it, never by itself
+        if self._placement(presenter) is None:
+            # only the entry plan says a next point is read where the last was: with none,
+            # or done, the guide's next set is open-ended (a take then, by itself, read the
+            # last face over and over), and the move is waited for
+            return False
         if table is not None:
             link, key = table
             if link.taken_position is None:
