@@ -720,6 +720,7 @@ class InstrumentLink:
         if event is None:
             return
         names = [self.panel.column_name(key) for key in event.columns]
+        detail: str
         if event.value is not None and event.limits is not None and names:
             unit = '"' if self.kind == "autocollimator" else ("°" if self.kind == "theodolite"
                                                              else "")

@@ -31,8 +31,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.special import stdtrit
 
-__all__ = ["ANGLE_UNITS", "OUT_OF_VIEW_GAP_S", "StabilityGate", "StableReading", "UnwrappedAngles", "gate_scale",
-           "steady_motion"]
+__all__ = ["ANGLE_UNITS", "OUT_OF_VIEW_GAP_S", "StabilityGate", "StableReading",
+           "UnwrappedAngles", "gate_scale", "steady_motion"]
 
 #: the units of a reading the auto-take window is applied to in arcseconds (a reading in
 #: another unit, a readout's mm or none, is gated in that unit, and the window says so)
