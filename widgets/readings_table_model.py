@@ -22,6 +22,8 @@ from widgets.table_commands import (
 INVALID_BRUSH = QBrush(QColor(255, 205, 205))
 MUTED_BRUSH = QBrush(QColor(235, 240, 250))
 EDITED_BRUSH = QBrush(QColor(255, 226, 160))  # a captured reading edited since
+#: a take's reading that does not match its row's point (another face, another target)
+WARNED_BRUSH = QBrush(QColor(255, 190, 120))
 
 _Index = QModelIndex | QPersistentModelIndex
 #: the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each
@@ -52,6 +54,12 @@ class ReadingsTableModel(QAbstractTableModel):
         #: cells whose captured reading was edited since, with what to say of each
         #: (models/capture/edits.py): drawn apart, the text in their tooltip
         self.edited_cells: dict[tuple[int, int], str] = {}
+        #: cells a take filled with a reading that does not match its row's point (the table
+        #: at another face, the axis at another target: live76 F1), with the text the take
+        #: wrote and what to say of it: drawn apart, the words in their tooltip, while the
+        #: cell holds that text (undone, retyped or taken again, the mark goes). Rows
+        #: inserted or removed above move them
+        self.take_warnings: dict[tuple[int, int], tuple[str, str]] = {}
         #: the capture's takes of this workbench (models/capture/take_rows.TakeRows, set by
         #: the window): every command that moves rows moves them, before the sheet is said
         #: changed (review 61 F5: a row deleted above captured readings made them all look
@@ -151,6 +159,8 @@ class ReadingsTableModel(QAbstractTableModel):
                 return INVALID_BRUSH
             if (r, c) in self.edited_cells:
                 return EDITED_BRUSH
+            if self.take_warning(r, c) is not None:
+                return WARNED_BRUSH
             if r in self.highlight_rows:
                 return MUTED_BRUSH
             return None
@@ -159,6 +169,9 @@ class ReadingsTableModel(QAbstractTableModel):
             edited = self.edited_cells.get((r, c))
             if reason is None and edited is not None:
                 return translated(edited)
+            warned = self.take_warning(r, c)
+            if reason is None and warned is not None:
+                return translated(warned)
             column = self.sheet.columns[c]  # the header the user sees, the file's key beside it
             why = (tr("Row {row}, {header} ({key}): {reason}").format(
                 row=r + 1, header=declared(column.header), key=column.key,
@@ -169,6 +182,30 @@ class ReadingsTableModel(QAbstractTableModel):
                 return f"{translated(edited)}\n{why}"
             return why
         return None
+
+    def take_warning(self, r: int, c: int) -> str | None:
+        """What a take said of the reading it wrote in cell (r, c), while the cell holds it."""
+        warned = self.take_warnings.get((r, c))
+        if warned is None or r >= self.sheet.row_count or self.sheet.text(r, c) != warned[0]:
+            return None
+        return warned[1]
+
+    def warn_take(self, r: int, c: int, message: str) -> None:
+        """Mark cell (r, c), as a take just wrote it, with ``message`` (a Message or text)."""
+        self.take_warnings[(r, c)] = (self.sheet.text(r, c), message)
+        index = self.index(r, c)
+        self.dataChanged.emit(index, index, [Qt.ItemDataRole.BackgroundRole,
+                                             Qt.ItemDataRole.ToolTipRole])
+
+    def _move_warnings(self, at: int, count: int) -> None:
+        """Rows inserted (``count`` > 0) or removed (< 0) at ``at``: the marks below move."""
+        moved = {}
+        for (r, c), warned in self.take_warnings.items():
+            if r < at:
+                moved[(r, c)] = warned
+            elif count > 0 or r >= at - count:
+                moved[(r + count, c)] = warned
+        self.take_warnings = moved
 
     def cleared_after_capture(self, r: int, c: int) -> bool:
         """The cell of a captured reading the user emptied: an edit (marked so, its tooltip
@@ -383,6 +420,7 @@ class ReadingsTableModel(QAbstractTableModel):
         self.beginInsertRows(QModelIndex(), at, at + len(rows) - 1)
         self.sheet.insert_rows(at, rows)
         self.endInsertRows()
+        self._move_warnings(at, len(rows))
         self.move_takes(takes)
         self.headerDataChanged.emit(Qt.Orientation.Vertical, at, self.sheet.row_count)
         self.sheet_changed.emit()
@@ -391,6 +429,7 @@ class ReadingsTableModel(QAbstractTableModel):
         self.beginRemoveRows(QModelIndex(), at, at + count - 1)
         removed = self.sheet.remove_rows(at, count)
         self.endRemoveRows()
+        self._move_warnings(at, -count)
         self.move_takes(takes)
         self.headerDataChanged.emit(Qt.Orientation.Vertical, at, self.sheet.row_count)
         self.sheet_changed.emit()
@@ -402,6 +441,7 @@ class ReadingsTableModel(QAbstractTableModel):
             self.sheet.adopt_rows(rows, checked)
         except ValueError:
             self.sheet.replace_all(rows)
+        self.take_warnings = {}  # of rows that are gone
         self.endResetModel()
         self.move_takes(takes)
         self.sheet_changed.emit()

@@ -40,7 +40,7 @@ from pathlib import Path
 
 from app.capture.instruments import CAPTURE_MODES, INSTRUMENTS, Autocollimator, LineReadoutInstrument
 from app.capture.link import CANNOT_OPEN, tcp_port_refused
-from app.capture.worker import CaptureWorker, Fault
+from app.capture.worker import CaptureWorker, Fault, NoTarget
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
 from models.capture.journal import (
@@ -51,7 +51,12 @@ from models.capture.journal import (
     read_journal,
 )
 from models.capture.line_readout import DEFAULT_PATTERN
-from models.capture.stability import StabilityGate, UnwrappedAngles, gate_scale
+from models.capture.stability import (
+    OUT_OF_VIEW_GAP_S,
+    StabilityGate,
+    UnwrappedAngles,
+    gate_scale,
+)
 from models.messages import QT_TR_NOOP, joined, message, reason_of, rendered
 from models.project.atomic_write import write_text_atomic
 from models.project.output_guard import OutputRefused, check_outputs, register_files
@@ -327,6 +332,8 @@ def run_capture(argv: list[str]) -> int:
     #: capture with its one line (contract75 F13: "cannot open …; reconnecting" ×3, then
     #: the last, 4 lines where docs/capture.md promises one)
     opened = False
+    #: when the frames with no measurement began (None: readings come)
+    no_target_since: float | None = None
 
     def journal_frames() -> None:
         for t, line, used in worker.take_raw():
@@ -362,6 +369,15 @@ def run_capture(argv: list[str]) -> int:
                     gate.restart()  # a reading never bridges the frames the link lost
                 continue
             opened = True
+            if isinstance(event, NoTarget):
+                # frames with no measurement (a mirror out of view): the link is alive
+                no_target_since = event.time_s
+                continue
+            if no_target_since is not None:
+                # a reading never bridges a gap of frames without one
+                if gate is not None and event.time_s - no_target_since >= OUT_OF_VIEW_GAP_S:
+                    gate.restart()
+                no_target_since = None
             unit = [event.unit] if args.instrument == "readout" else []
             if gate is None:
                 take([repr(round(event.time_s, 6)), *map(repr, event.values), *unit])

@@ -20,7 +20,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from models.capture.autocollimator import AutocollimatorFrame, command, parse_autocollimator_line
-from models.capture.errors import FrameError
+from models.capture.errors import FrameError, NoMeasurement
 from models.capture.geocom import (
     GET_ANGLE5,
     INCLINE_AUTOMATIC,
@@ -82,8 +82,11 @@ class Instrument:
             limit = self.limits[i] if i < len(self.limits) else None
             if limit is not None and not limit[0] <= value <= limit[1]:
                 name = self.columns[i] if i < len(self.columns) else f"value {i + 1}"
-                raise FrameError(f"{name} {value:g} outside the instrument's range "
-                                 f"{limit[0]:g} … {limit[1]:g}")
+                # a whole frame beyond the range: no measurement (a mirror out of view),
+                # the link is alive
+                raise NoMeasurement(f"{name} {value:g} outside the instrument's range "
+                                    f"{limit[0]:g} … {limit[1]:g}",
+                                    (name,) if i < len(self.columns) else (), value, limit)
 
     def set_range(self, half_width: float | None) -> None:
         """Every value within ±``half_width`` (the instrument's own unit); None: the
@@ -127,7 +130,10 @@ class Autocollimator(Instrument):
         if not frame.complete:
             missing = " and ".join(a for a, v in (("x", frame.x_arcsec), ("y", frame.y_arcsec))
                                    if v is None)
-            raise FrameError(f"status {frame.status}: {missing} not valid")
+            raise NoMeasurement(f"status {frame.status}: {missing} not valid",
+                                tuple(key for key, v in zip(self.columns, (frame.x_arcsec,
+                                                                           frame.y_arcsec),
+                                                            strict=True) if v is None))
         return (frame.x_arcsec, frame.y_arcsec), "arcsec"
 
 

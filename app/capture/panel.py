@@ -68,7 +68,7 @@ from pathlib import Path
 
 import numpy as np
 from PySide6.QtCore import QSettings, Qt, QTimer
-from PySide6.QtGui import QKeySequence
+from PySide6.QtGui import QKeySequence, QShortcut
 from PySide6.QtWidgets import (
     QBoxLayout,
     QCheckBox,
@@ -92,12 +92,13 @@ from PySide6.QtWidgets import (
 )
 
 from app.capture.instruments import INSTRUMENTS
-from app.capture.worker import CaptureWorker, Fault, Reading
+from app.capture.worker import CaptureWorker, Fault, NoTarget, Reading
 from models.capture.allan import allan_deviation, last_even_run
 from models.capture.guidance import degrees_text
 from models.capture.raw_record import FRAMES_PER_BLOCK, FrameBlocks, frame_text
 from models.capture.stability import (
     ANGLE_UNITS,
+    OUT_OF_VIEW_GAP_S,
     StabilityGate,
     UnwrappedAngles,
     gate_scale,
@@ -155,6 +156,14 @@ QWIDGETSIZE_MAX = (1 << 24) - 1
 #: fringe). "The current cell" by default took nothing when the cursor was on another
 #: instrument's column (#62 review F5: a blank encoder cell, no take in the raw record)
 READOUT_COLUMNS = ("encoder_deg", "measured", "theta_deg")
+#: the columns of the table's own position (the polygon's and the cross-calibration's
+#: encoder): a second instrument read into one shows the table's move to the next face
+TABLE_COLUMNS = ("encoder_deg",)
+#: with the pitch between faces not known yet (no *faces* set, too few faces read), the
+#: table's move is half of 1°, the finest pitch the polygon's guide knows (360 faces)
+TABLE_PITCH_UNKNOWN_DEG = 1.0
+#: the instruments' names for their values, where the workbench has no column for them
+_VALUE_NAMES = {"ac_x_arcsec": "x", "ac_y_arcsec": "y", "azimuth_deg": "Hz", "zenith_deg": "V"}
 #: a nominal the plan writes (the encoder at the face) is written to this (″)
 NOMINAL_RESOLUTION_ARCSEC = 0.01
 #: settings keys (per instrument kind)
@@ -457,6 +466,12 @@ class InstrumentLink:
         #: the frames after it (a reconnection is a gap in the series, however short)
         self.gap_before = -math.inf
         self.lost = False  # the value shown is stale (greyed, "link lost")
+        #: frames arrive with no measurement since this one (a mirror out of view); None:
+        #: readings come. Not a fault of the link: said as what it is (live76 F3)
+        self.no_target: NoTarget | None = None
+        #: the table's position (degrees) this link read at its last take, where it reads
+        #: the table's encoder (:data:`TABLE_COLUMNS`); None: no take of it yet
+        self.taken_position: float | None = None
         self.simulator = None  # a demonstration instrument this link started
         self.box = QGroupBox()
         live(self.box.setTitle, tr("Instrument") if slot == 0 else tr("Second instrument"))
@@ -574,6 +589,8 @@ class InstrumentLink:
         self.received = 0
         self.taken_frame = -1
         self.lost = False
+        self.no_target = None
+        self.taken_position = None
         self.value.setText("—")
         self.value.setStyleSheet(_VALUE_STYLE)
         # the window rides out a link down ~15 s (0.2 s, 0.4 s, … between 12 tries): an
@@ -612,6 +629,7 @@ class InstrumentLink:
             simulator.__exit__(None, None, None)
         self.latest = None
         self.lost = False
+        self.no_target = None
         self.value.setText("—")
         self.value.setStyleSheet(_VALUE_STYLE)
         self.disconnect_button.setEnabled(False)
@@ -671,7 +689,55 @@ class InstrumentLink:
             else:
                 shown.append(f"{cell[0]}{cell[1]}")
         text = "   ".join(shown)
-        self.value.setText(tr("{value} (link lost)").format(value=text) if self.lost else text)
+        if not self.lost:
+            self.value.setText(text)
+        elif self.no_target is not None:
+            self.value.setText(tr("{value} ({why})").format(value=text, why=self.no_reading_why))
+        else:
+            self.value.setText(tr("{value} (link lost)").format(value=text))
+
+    @property
+    def no_target_words(self) -> str:
+        """What frames with no measurement mean for this instrument, in words."""
+        return tr("no mirror in view") if self.kind == "autocollimator" else \
+            tr("no target in view")
+
+    @property
+    def no_reading_why(self) -> str:
+        """Why there is no reading to take: no target in view (frames come, none holds a
+        measurement), or the link lost."""
+        if self.no_target is not None:
+            return self.no_target_words
+        if self.latest is None and not self.last_fault:
+            return tr("no reading yet")
+        return tr("link lost")
+
+    def say_no_target(self) -> None:
+        """The status while frames with no measurement come: what it means, with the value
+        beyond the range under the column's name (never its key), and that the link is
+        fine — no reconnection, nothing given up (live76 F3)."""
+        event = self.no_target
+        if event is None:
+            return
+        names = [self.panel.column_name(key) for key in event.columns]
+        detail: str
+        if event.value is not None and event.limits is not None and names:
+            unit = '"' if self.kind == "autocollimator" else ("°" if self.kind == "theodolite"
+                                                             else "")
+            detail = tr("{column} {value}{unit} is beyond the range {low} … {high}{unit}").format(
+                column=names[0], value=f"{event.value:g}", unit=unit,
+                low=f"{event.limits[0]:g}", high=f"{event.limits[1]:g}")
+        elif names:
+            detail = tr("it marks {columns} not valid").format(columns=", ".join(names))
+        else:
+            detail = tr("none holds a measurement")
+        self.status.setStyleSheet("color: #8a5a00;")
+        what = tr("No mirror in view") if self.kind == "autocollimator" else \
+            tr("No target in view")
+        self.status.setText(tr("{what}: frames arrive from {port}, but {detail}. Not a fault "
+                               "of the link: the readings come back with the target").format(
+            what=what, port=self.worker.port if self.worker is not None else "",
+            detail=detail))
 
     @property
     def usable(self) -> bool:
@@ -741,6 +807,12 @@ class CapturePanel(QDockWidget):
         live(self._set_take_text, tr("Take reading (F9)"))
         self.take_button.clicked.connect(lambda: self.take_reading())
         self.take_button.setEnabled(False)
+        # F9 (a foot switch) while the button is disabled with an instrument connected (its
+        # link lost, no mirror in view): the take is refused with why, beside the guidance —
+        # a disabled button's key did nothing and said nothing (live76 F8)
+        self.refused_key = QShortcut(QKeySequence(TAKE_READING_KEY), self)
+        self.refused_key.activated.connect(lambda: self.take_reading())
+        self.refused_key.setEnabled(False)
         # auto-take: the stability gate's window and dwell
         self.auto = QCheckBox()
         live(self.auto.setText, tr("Auto-take when stable"))
@@ -985,7 +1057,11 @@ class CapturePanel(QDockWidget):
         super().closeEvent(event)
 
     def _links_changed(self) -> None:
-        self.take_button.setEnabled(any(link.usable for link in self.links))
+        usable = any(link.usable for link in self.links)
+        self.take_button.setEnabled(usable)
+        self.refused_key.setEnabled(not usable and any(link.connected for link in self.links))
+        if hasattr(self, "auto_state"):  # what auto-take waits for, said when a link changes
+            self._show_gate()
         if not any(link.connected for link in self.links):
             self.timer.stop()
         self._capturing()
@@ -1260,6 +1336,19 @@ class CapturePanel(QDockWidget):
             offsets = np.asarray(reading.values, dtype=float)
         step = self.next_reading
         gate.retake = bool(step is not None and step.reading < step.of)
+        # with the table's encoder read beside, the move to the next face is seen on it; the
+        # autocollimator's reading (nulled at each face) says nothing of it (live76 F1)
+        table = self._table_link()
+        gate.moves_seen_elsewhere = table is not None
+        if gate.waiting_for_move and self._next_point_here(table):
+            gate.moved()  # a new set starting where its last closed: read again, no move
+        elif table is not None and gate.waiting_for_move:
+            link = table[0]
+            latest, taken_at = link.latest, link.taken_position
+            if latest is not None and taken_at is not None and abs(
+                    (float(latest.values[0]) - taken_at + 180.0) % 360.0 - 180.0) \
+                    >= self.table_move_deg():
+                gate.moved()
         taken = gate.feed(reading.time_s, offsets * scale, tag=reading.frame)
         if taken is None:
             return
@@ -1277,12 +1366,17 @@ class CapturePanel(QDockWidget):
             return
         waiting = self.waiting_for()
         if waiting:
-            self.auto_state.setText(tr("Auto-take: waiting for {instrument} (link lost)").format(
-                instrument=waiting[0].name))
+            self.auto_state.setText(tr("Auto-take: waiting for {instrument} ({why})").format(
+                instrument=waiting[0].name, why=waiting[0].no_reading_why))
             return
         phase, part = self.gate.progress(self.latest.time_s)
         again = [link for link in self.used_again() if link is not self.links[0]]
-        if phase == "taken":
+        table = self._table_link() if phase == "taken" else None
+        if table is not None:
+            self.auto_state.setText(tr("Auto-take: taken; turn the table to the next face "
+                                       "({column} ≥ {move}° from the take)").format(
+                column=self.column_name(table[1]), move=f"{self.table_move_deg():g}"))
+        elif phase == "taken":
             self.auto_state.setText(tr("Auto-take: taken; move to the next point"))
         elif again:
             self.auto_state.setText(tr("Auto-take: waiting for a new reading from {instrument}")
@@ -1407,6 +1501,17 @@ class CapturePanel(QDockWidget):
         return (cell_text(value, unit, link.resolution_arcsec, dms, column_def.unit), symbol,
                 cell_step(unit, link.resolution_arcsec, dms, column_def.unit))
 
+    def column_name(self, key: str) -> str:
+        """The name the user sees for an instrument's value ``key``: its column's header on
+        the workbench in front, else the instrument's own name for it (never the key)."""
+        presenter = getattr(self.window_, "current", None)
+        columns = presenter.table_model.sheet.columns if presenter is not None else ()
+        header = next((c.header for c in columns if c.key == key), None)
+        if header is None:
+            return _VALUE_NAMES.get(key, key)
+        # the header less its unit ("AC x [″]"): the figure beside it carries the unit
+        return re.sub(r"\s*\[[^\]]*\]$", "", str(declared(header))) or str(declared(header))
+
     def cell_texts(self, link: InstrumentLink, values: tuple[float, ...],
                    unit: str) -> dict[int, tuple[str, str]]:
         """{value index: (cell text, unit symbol)} for the values of ``link`` a take would
@@ -1474,6 +1579,8 @@ class CapturePanel(QDockWidget):
         for link in self.links:
             if link.worker is not None and link.latest is not None and not link.lost \
                     and now - link.fresh_at > STALE_S:
+                if link.no_target is not None:  # frames come, no measurement: said so
+                    link.say_no_target()
                 link.mark_lost(True)
 
     def _drain_link(self, link: InstrumentLink, worker: CaptureWorker,
@@ -1488,6 +1595,7 @@ class CapturePanel(QDockWidget):
             if isinstance(event, Fault):
                 reason = translated(event.message)
                 link.last_fault = reason
+                link.no_target = None  # silence, not a target out of view
                 link.status.setText(reason if event.final
                                     else tr("{reason} (reconnecting)").format(reason=reason))
                 link.status.setStyleSheet("color: #b00020;")
@@ -1498,6 +1606,12 @@ class CapturePanel(QDockWidget):
                     self.gate.restart()  # a take never bridges the frames the link lost
                 ended = ended or event.final
                 continue
+            if isinstance(event, NoTarget):
+                if link.no_target is None:
+                    link.no_target = event
+                continue
+            if link.no_target is not None:
+                self._target_back(link, event)
             link.received += 1
             link.frames.append((event.time_s, event.values, event.frame))
             link.latest = event
@@ -1544,6 +1658,80 @@ class CapturePanel(QDockWidget):
                                           "ended ({reason})").format(
                     instrument=name, reason=link.last_fault))
             link.disconnect()
+
+    def _target_back(self, link: InstrumentLink, reading: Reading) -> None:
+        """A reading after frames with no measurement: out of view for
+        :data:`~models.capture.stability.OUT_OF_VIEW_GAP_S` or more, that is a gap (the dwell
+        starts afresh, the Allan deviation is of the frames after it) and, for the first
+        instrument with no table encoder beside it, the move to the next face (live76 F1:
+        an autocollimator nulled at each face reads within the window of the last take at
+        every face, and auto-take waited for ever)."""
+        gone = link.no_target
+        link.no_target = None
+        if gone is None or reading.time_s - gone.time_s < OUT_OF_VIEW_GAP_S:
+            return  # a frame marked not valid among good ones: no gap
+        if link.frames:
+            link.gap_before = link.frames[-1][0]
+        if link is self.links[0] and self.gate is not None:
+            self.gate.restart()
+            if self._table_link() is None:
+                self.gate.moved()
+
+    def _table_link(self) -> tuple[InstrumentLink, str] | None:
+        """The second instrument that reads the table's encoder (:data:`TABLE_COLUMNS`) in
+        degrees, with the column, once it has a take to count from: the table's move to the
+        next face is seen on it."""
+        presenter = getattr(self.window_, "current", None)
+        if presenter is None:
+            return None
+        for link, _, key in self._targets(presenter):
+            if link is not self.links[0] and key in TABLE_COLUMNS and link.connected \
+                    and link.taken_position is not None \
+                    and (link.latest is None or link.latest.unit == "deg"):
+                return link, key
+        return None
+
+    def _next_point_here(self, table: tuple[InstrumentLink, str] | None) -> bool:
+        """The entry plan's next point is where the last take was, so there is no move to
+        wait for: the next set starting at the face its last closed on (the polygon's set 2 at
+        face 1, read right after set 1's closure there). With the table's encoder: the
+        reading the guide expects (or each it would take) within half the pitch of the
+        encoder at the last take; else the face the guide names is the last take's row's."""
+        step = self.next_reading
+        presenter = getattr(self.window_, "current", None)
+        if step is None or presenter is None or step.reading > 1:
+            return False
+        if self._placement(presenter) is None:
+            # only the entry plan says a next point is read where the last was: with none,
+            # or done, the guide's next set is open-ended (a take then, by itself, read the
+            # last face over and over), and the move is waited for
+            return False
+        if table is not None:
+            link, key = table
+            if link.taken_position is None:
+                return False
+            nominal = step.nominal.get(key)
+            candidates = (nominal,) if nominal is not None else step.near.get(key, ())
+            return any(abs((c - link.taken_position + 180.0) % 360.0 - 180.0)
+                       < self.table_move_deg() for c in candidates)
+        face = step.fill.get("position", "").strip()
+        last = next((row for key, row, _ in reversed(self.taken)
+                     if key == presenter.kind.key), None)
+        sheet = presenter.table_model.sheet
+        keys = [c.key for c in sheet.columns]
+        if not face or last is None or "position" not in keys or last >= sheet.row_count:
+            return False
+        return sheet.text(last, keys.index("position")).strip() == face
+
+    def table_move_deg(self) -> float:
+        """How far the table's encoder must turn from the last take for the next face: half
+        the pitch between faces (360°/N), the same half the off-plan check counts a reading
+        nearer another face by. A table nudged to null the autocollimator (seconds to
+        minutes of arc) is no move; half of 1° while the pitch is not known."""
+        step = self.next_reading
+        pitch = step.pitch_deg if step is not None and step.pitch_deg > 0.0 \
+            else TABLE_PITCH_UNKNOWN_DEG
+        return pitch / 2.0
 
     def _show_statistics(self) -> None:
         reading = self.latest
@@ -1648,8 +1836,9 @@ class CapturePanel(QDockWidget):
         # while the gate counted it taken)
         waiting = [link for link in self.waiting_for() if values is None or link is not first]
         if waiting:
-            self.take_note.setText(tr("Not taken: no reading from {instrument} (link lost)")
-                                   .format(instrument=waiting[0].name))
+            self.take_note.setText(tr("Not taken: no reading from {instrument} ({why})")
+                                   .format(instrument=waiting[0].name,
+                                           why=waiting[0].no_reading_why))
             return ""
         # a take by hand uses every link's latest frame: each must be new since its last
         # take (auto-take's own frames are new; the gate waits for the others': _feed_gate)
@@ -1712,8 +1901,12 @@ class CapturePanel(QDockWidget):
             # the step the cell was rounded to: within half of it the cell is as captured
             steps[link.slot] = max(steps.get(link.slot, 0.0), step)
         self.update_guide()
-        notes += self._off_the_plan(sheet, row, targets, taking)
-        notes += self._off_the_target(presenter, row, place, targets, taking)
+        # a reading that does not match its row's point (another face, another target): said
+        # beside the guidance and its cell marked in the table (live76 F1: later takes went
+        # into another face's row without a word)
+        mismatched = self._off_the_plan(sheet, row, targets, taking) \
+            + self._off_the_target(presenter, row, place, targets, taking)
+        notes += [text for _, text in mismatched]
         filled = {c for _, c, _ in changes}
         if place is not None and place.row == row:  # the plan's cells, where blank
             for key, text in place.cells.items():
@@ -1762,6 +1955,10 @@ class CapturePanel(QDockWidget):
         # "edited after capture", with the undone take's values). In its session before
         # (undone), so that the cells come with it in its row, superseding an older take
         # there (review 62 F1: marked edited until the next change)
+        for link, i, key in targets:  # where the table was at this take
+            got, unit, _ = taking[link.slot]
+            if key in TABLE_COLUMNS and unit == "deg" and i < len(got):
+                link.taken_position = float(got[i])
         for link, session, take in new_takes:
             session.takes.append(take)
             session.steps.append(steps.get(link.slot, 0.0))
@@ -1781,6 +1978,8 @@ class CapturePanel(QDockWidget):
                             columns={key: frozenset(k for t, _, k in targets if t is link)
                                      for link, key in keyed})
             self._widen(table, changes)
+            for key, text in mismatched:
+                model.warn_take(row, keys.index(key), text)
             if 0 in taking:
                 self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
             # what the take could not place, or took far from where the plan expects it:
@@ -1801,32 +2000,38 @@ class CapturePanel(QDockWidget):
         return tr("{instrument}: its reading was not taken: this workbench has no column for "
                   "it").format(instrument=link.name)
 
-    def _off_the_plan(self, sheet, row: int, targets, taking) -> list[str]:
+    def _off_the_plan(self, sheet, row: int, targets, taking) -> list[tuple[str, str]]:
         """A warning per angle a take reads more than half the pitch between the plan's
         points away from the one the plan expects there (:attr:`next_reading`'s nominal:
         the encoder at the face) — the table at another face (#62 review F9: 300° taken
-        where 270° was expected, without a word). The reading is kept."""
+        where 270° was expected, without a word). The reading is kept; with the key of the
+        column it is in (the take marks that cell)."""
         step = self.next_reading
-        if step is None or step.pitch_deg <= 0.0 or not step.nominal:
+        if step is None or step.pitch_deg <= 0.0 or not (step.nominal or step.near):
             return []
         keys = [c.key for c in sheet.columns]
         out = []
         for link, i, key in targets:
-            expected = step.nominal.get(key)
+            # the reading the plan expects, or those it would take when it cannot say which
+            # (the polygon's second face: either way round from the first)
+            nominal = step.nominal.get(key)
+            candidates = (nominal,) if nominal is not None else step.near.get(key, ())
             got, unit, _ = taking[link.slot]
-            if expected is None or unit != "deg" or i >= len(got):
+            if not candidates or unit != "deg" or i >= len(got):
                 continue
-            off = (float(got[i]) - expected + 180.0) % 360.0 - 180.0
+            expected, off = min((
+                (c, (float(got[i]) - c + 180.0) % 360.0 - 180.0) for c in candidates),
+                key=lambda pair: abs(pair[1]))
             if abs(off) <= step.pitch_deg / 2.0:
                 continue
-            out.append(tr("Row {row}: {column} {value}° is {off}° from the ≈ {expected}° the "
+            out.append((key, tr("Row {row}: {column} {value}° is {off}° from the ≈ {expected}° the "
                           "plan expects at face {face} (more than half the {pitch}° between "
                           "faces): check the table's position. The reading is kept; undo the "
                           "take if it is wrong").format(
                 row=row + 1, column=declared(sheet.columns[keys.index(key)].header),
                 face=step.fill.get("position", "?"),
                 value=f"{float(got[i]) % 360.0:.4f}", off=f"{off:+.1f}",
-                expected=degrees_text(expected), pitch=degrees_text(step.pitch_deg)))
+                expected=degrees_text(expected), pitch=degrees_text(step.pitch_deg))))
         return out
 
     @staticmethod
@@ -1863,7 +2068,8 @@ class CapturePanel(QDockWidget):
                 out[link.slot] = (tuple(values), unit, frames)
         return out
 
-    def _off_the_target(self, presenter, row: int, place, targets, taking) -> list[str]:
+    def _off_the_target(self, presenter, row: int, place, targets,
+                        taking) -> list[tuple[str, str]]:
         """A warning per reading of a position (``Workbench.reading_positions``: positioning's
         measured) nearer another target of the plan than its row's: more than half the
         distance to the neighbouring target from it (models/capture/wrong_target.py) — the
@@ -1888,14 +2094,14 @@ class CapturePanel(QDockWidget):
             if off is None:
                 continue
             symbol = "°" if position[1] == "deg" else f" {position[1]}"
-            out.append(tr("Row {row}: {column} {value}{unit} is {off}{unit} from target "
+            out.append((key, tr("Row {row}: {column} {value}{unit} is {off}{unit} from target "
                           "{target}{unit}, the plan's for this row (more than half the "
                           "{gap}{unit} to the neighbouring target {neighbour}{unit}): check the "
                           "axis's position. The reading is kept; undo the take if it is "
                           "wrong").format(
                 row=row + 1, column=declared(sheet.columns[keys.index(key)].header),
                 value=f"{off.reading:.4f}", off=f"{off.off:+.4f}", unit=symbol,
-                target=f"{off.target:g}", gap=f"{off.gap:g}", neighbour=f"{off.neighbour:g}"))
+                target=f"{off.target:g}", gap=f"{off.gap:g}", neighbour=f"{off.neighbour:g}")))
         return out
 
     @staticmethod

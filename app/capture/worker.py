@@ -23,11 +23,11 @@ import serial
 
 from app.capture.instruments import Instrument
 from app.capture.link import READ_BLOCK, CaptureError, TcpLink, open_link
-from models.capture.errors import FrameError
+from models.capture.errors import FrameError, NoMeasurement
 from models.capture.framing import LineFramer
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["CaptureWorker", "DroppedLines", "Fault", "Reading"]
+__all__ = ["CaptureWorker", "DroppedLines", "Fault", "NoTarget", "Reading"]
 
 
 @dataclass(frozen=True)
@@ -48,6 +48,27 @@ class Fault:
     #: a :class:`models.messages.Message`: English as a ``str``, translatable
     message: str
     final: bool
+
+
+@dataclass(frozen=True)
+class NoTarget:
+    """Frames arrive whole but carry no measurement (:class:`~models.capture.errors.
+    NoMeasurement`: an autocollimator's mirror out of its view while the table turns): put
+    once, at the first such frame after a reading (or the connection). The link is alive: it
+    is not a :class:`Fault`, and the worker never reconnects for it; the next
+    :class:`Reading` ends it."""
+
+    #: seconds since the worker started, when the frame arrived
+    time_s: float
+    #: why the frame holds no measurement (English, as the worker's refusals)
+    reason: str
+    #: the instrument's columns (keys) concerned, the value beyond the range and the range
+    #: (None: the instrument marks the axes not valid)
+    columns: tuple[str, ...] = ()
+    value: float | None = None
+    limits: tuple[float, float] | None = None
+    #: the frame's index among the lines the worker kept
+    frame: int = -1
 
 
 class DroppedLines(LookupError):
@@ -143,7 +164,7 @@ class CaptureWorker(LinkThread):
         #: the instrument did not stream when asked to and is read by single-shot requests
         self.polling = False
         self._open = opener
-        self.events: queue.Queue[Reading | Fault] = queue.Queue()
+        self.events: queue.Queue[Reading | Fault | NoTarget] = queue.Queue()
         #: lines refused (noise, a wrong baud rate, an invalid axis, an error reply)
         self.refused = 0
         self.refusals: list[str] = []
@@ -294,6 +315,10 @@ class CaptureWorker(LinkThread):
         heard_bytes = False
         last_refusal = ""
         start = last_good = time.monotonic()
+        #: the last whole frame that carried no measurement (a mirror out of view): the
+        #: instrument is heard, not silent; and whether NoTarget was put since the last reading
+        last_no_target = start
+        out_of_view = False
         in_flight: float | None = None  # when the request in flight was sent
         heard_since_request = False
         asked_at = -1e9
@@ -368,16 +393,26 @@ class CaptureWorker(LinkThread):
                         if parsed is not None:
                             instrument.check_range(parsed[0])
                     except FrameError as exc:
-                        self._keep(now - self._t0, line, False)
+                        kept = self._keep(now - self._t0, line, False)
                         self.refused += 1
-                        last_refusal = str(exc)
                         self._refusal(str(exc))
+                        if isinstance(exc, NoMeasurement):
+                            # the instrument is there, seeing no target: said once, never a
+                            # fault of the link (live76 F3)
+                            last_no_target = now
+                            if not out_of_view:
+                                out_of_view = True
+                                self.events.put(NoTarget(now - self._t0, str(exc), exc.columns,
+                                                         exc.value, exc.limits, kept))
+                            continue
+                        last_refusal = str(exc)
                         continue
                     index = self._keep(now - self._t0, line, parsed is not None)
                     if parsed is None:
                         continue
                     got += 1
                     last_good = now
+                    out_of_view = False
                     # what a silence after this says is of the bytes since it: a link that read
                     # well and went quiet is "no answer", not "only unreadable bytes"
                     heard_bytes, last_refusal = False, ""
@@ -390,7 +425,9 @@ class CaptureWorker(LinkThread):
                     self.timeouts += 1
                     raise LinkLost(self._no_reading_message(heard_bytes, last_refusal, True,
                                                             got > 0), got)
-                if now - last_good > self.silence_s and not waiting:
+                # only silence (or nothing whole) is a fault: frames with no measurement
+                # are an instrument that sees no target
+                if now - max(last_good, last_no_target) > self.silence_s and not waiting:
                     raise LinkLost(self._no_reading_message(heard_bytes, last_refusal, False), got)
         except (serial.SerialException, OSError) as exc:
             reason = (str(exc).strip() or type(exc).__name__).splitlines()[0][:200]

@@ -38,6 +38,11 @@ class NextReading:
     #: known): a reading more than half of it from its :attr:`nominal` is nearer another
     #: point than the one the plan expects (the window warns of it at the take)
     pitch_deg: float = 0.0
+    #: column key -> the readings the plan would take there when it cannot say which one
+    #: (the polygon's second face of a set: its first reading ± the steps of 360°/N, the way
+    #: the encoder counts not known yet); a reading more than half the pitch from every one
+    #: of them is nearer another point (warned of at the take, as a :attr:`nominal`)
+    near: dict[str, tuple[float, ...]] = field(default_factory=dict)
 
     @property
     def new_point(self) -> bool:

@@ -12,6 +12,12 @@ took (the operator turns to the next position) before it can take again: a set o
 positions gives n readings, not n copies of the first. ``retake=True`` takes again at
 once (n readings of one position, each from fresh frames).
 
+Where the move to the next position is seen elsewhere (``moves_seen_elsewhere``: the
+table's encoder read by another instrument, the mirror leaving an autocollimator's view),
+the position just taken is left only by :meth:`moved`: an autocollimator nulled at each
+face reads the same within the window at every face, and its reading moving at one face
+(re-nulled, drifting) is no other face.
+
 When the link is lost and comes back (:meth:`restart`) the dwell starts again from the
 frames after it: a reading is never the mean of frames from both sides of a gap in
 which the instrument was not heard.
@@ -25,8 +31,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.special import stdtrit
 
-__all__ = ["ANGLE_UNITS", "StabilityGate", "StableReading", "UnwrappedAngles", "gate_scale",
-           "steady_motion"]
+__all__ = ["ANGLE_UNITS", "OUT_OF_VIEW_GAP_S", "StabilityGate", "StableReading",
+           "UnwrappedAngles", "gate_scale", "steady_motion"]
 
 #: the units of a reading the auto-take window is applied to in arcseconds (a reading in
 #: another unit, a readout's mm or none, is gated in that unit, and the window says so)
@@ -91,6 +97,13 @@ def steady_motion(times_s, values) -> float | None:
         return float(slopes[axis])
     return None
 
+#: frames with no measurement (an autocollimator's mirror out of view) for this long between
+#: two readings are a gap: the dwell starts again after it, and — the move to the next face
+#: seen by the autocollimator alone — the position just taken is left. A turn to the next
+#: face takes longer, by hand or by a motor; one frame marked not valid among good ones (a
+#: speck, a vibration: 4 ms at 250 Hz) is neither
+OUT_OF_VIEW_GAP_S = 0.5
+
 #: times are sums of floats: a dwell of 0.3 s from 2.0 s ends at 2.3 s, not 2.2999999…
 _EPS = 1e-9
 
@@ -116,6 +129,9 @@ class StabilityGate:
         if not (window > 0 and dwell_s > 0):
             raise ValueError("the window and the dwell time must be greater than 0")
         self.window, self.dwell_s, self.retake = window, dwell_s, retake
+        #: the position just taken is left only when :meth:`moved` says so, not when the
+        #: output leaves the window around it
+        self.moves_seen_elsewhere = False
         #: (time, values, tag, sequence number) of the frames kept
         self._frames: deque[tuple[float, np.ndarray, object, int]] = deque()
         self._taken: np.ndarray | None = None
@@ -163,12 +179,24 @@ class StabilityGate:
         after a reconnection is not taken twice."""
         self._clear()
 
+    @property
+    def waiting_for_move(self) -> bool:
+        """A position was taken and the gate waits for the move to the next."""
+        return self._taken is not None
+
+    def moved(self) -> None:
+        """The move to the next position was seen (elsewhere than in the frames fed: another
+        instrument, the target leaving the view): the next stable dwell is taken, however
+        near the position just taken it reads. The frames kept before it are forgotten."""
+        self._taken = None
+        self._clear()
+
     def feed(self, time_s: float, values, tag: object = None) -> StableReading | None:
         """One frame (``tag``: what names it, e.g. its index in the raw record; the reading
         carries its first frame's); the reading when this frame completes a stable dwell."""
         value = np.atleast_1d(np.asarray(values, dtype=float))
         if self._taken is not None:
-            if np.all(np.abs(value - self._taken) <= self.window):
+            if self.moves_seen_elsewhere or np.all(np.abs(value - self._taken) <= self.window):
                 return None  # still at the position just taken
             self._taken = None
             self._clear()

@@ -60,14 +60,15 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
     count = 0  # N, once known (below): the pitch said with an encoder figure
 
     def said(text, face: int, set_no: int, reading: int,
-             encoder: float | None = None) -> NextReading:
+             encoder: float | None = None, near: tuple[float, ...] = ()) -> NextReading:
         if n > 1:
             text = message(QT_TR_NOOP("{what} — reading {k} of {n}"), what=text, k=reading, n=n)
         fill = {"position": str(face)}
         if uses_sets or set_no > 1:
             fill["set"] = str(set_no)
         nominal = {} if encoder is None else {"encoder_deg": float(encoder) % 360.0}
-        return NextReading(text, fill, reading, n, nominal, 360.0 / count if count else 0.0)
+        return NextReading(text, fill, reading, n, nominal, 360.0 / count if count else 0.0,
+                           {"encoder_deg": near} if near else {})
 
     face = _int(groups[-1][0][0]) if groups else None
     if face is None:
@@ -103,34 +104,46 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
         guess = round(360.0 / abs(first_step))
         if 3 <= guess <= 360 and abs(abs(first_step) - 360.0 / guess) < 90.0 / guess ** 2:
             count = guess
-    closed = len(in_set) > 1 and face == first_face
-    if closed:  # the set is done: the next one starts where this one did
-        encoder = encoders[0]
-        text = message(QT_TR_NOOP("set {set}: go to face {face}"), set=set_no + 1, face=first_face)
-        if encoder is not None:
-            text = message(QT_TR_NOOP("set {set}: go to face {face} (encoder ≈ {encoder}°)"),
-                           set=set_no + 1, face=first_face, encoder=degrees_text(encoder % 360))
-        return said(text, first_face, set_no + 1, 1, encoder)
     order = 1
     if len(pattern_faces) > 1:
         gap = pattern_faces[1] - pattern_faces[0]
         order = -1 if gap == -1 or (count and gap == count - 1) else 1
-    following = face + order
+    per_face = None  # the encoder's step from a face to the next in the pattern's order
+    if count and first_step is not None:
+        per_face = math.copysign(360.0 / count, first_step)
+    elif count and str(settings.get("counting", "auto")) in ("with", "against"):
+        per_face = order * (360.0 / count) * (1 if settings["counting"] == "with" else -1)
+
+    def encoder_at(at: int) -> float | None:
+        """The encoder expected at face ``at``: the set's first reading plus the steps of
+        360°/N between their faces (which way the set goes round does not change where a
+        face is)."""
+        if per_face is None or encoders[0] is None:
+            return None
+        return (encoders[0] + ((at - first_face) * order) % count * per_face) % 360.0
+
+    # the face the row the reading goes to already names (the entry plan's, or one typed):
+    # the guidance says that face, never another (live76 F2: a reversed set 2's first step
+    # was guided by set 1's direction, "go to face 2" where the plan's row said face 4)
+    planned = _int(current.get("position", ""))
+    if planned is not None and (planned < 1 or (count and planned > count)):
+        planned = None
+    closed = len(in_set) > 1 and face == first_face
+    if closed:  # the set is done: the next one starts where this one did
+        start_face = first_face if planned is None else planned
+        encoder = encoders[0] if start_face == first_face else encoder_at(start_face)
+        text = message(QT_TR_NOOP("set {set}: go to face {face}"), set=set_no + 1, face=start_face)
+        if encoder is not None:
+            text = message(QT_TR_NOOP("set {set}: go to face {face} (encoder ≈ {encoder}°)"),
+                           set=set_no + 1, face=start_face, encoder=degrees_text(encoder % 360))
+        return said(text, start_face, set_no + 1, 1, encoder)
+    following = face + order if planned is None else planned
     if count:
         following = (following - 1) % count + 1
     elif following < 1:
         return NextReading(message(QT_TR_NOOP("go to the next face (set the number of faces)")),
                            {}, 1, n)
-    encoder = None
-    if count and encoders[0] is not None:
-        per_face = None
-        if first_step is not None:
-            per_face = math.copysign(360.0 / count, first_step)
-        elif str(settings.get("counting", "auto")) in ("with", "against"):
-            per_face = order * (360.0 / count) * (1 if settings["counting"] == "with" else -1)
-        if per_face is not None:
-            steps = ((following - first_face) * order) % count
-            encoder = (encoders[0] + steps * per_face) % 360.0
+    encoder = encoder_at(following) if count else None
     closure = bool(count) and following == first_face
     if closure:
         template = (QT_TR_NOOP("go back to face {face} (encoder ≈ {encoder}°): the closure of "
@@ -142,4 +155,11 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
     figures: dict[str, object] = {"face": following, "set": set_no}
     if encoder is not None:
         figures["encoder"] = degrees_text(encoder)
-    return said(message(template, **figures), following, set_no, 1, encoder)
+    near: tuple[float, ...] = ()
+    if encoder is None and count and encoders[0] is not None:
+        # the way the encoder counts not known yet: the face is that many steps of 360°/N
+        # either way round from the set's first (a reading at neither is at another face)
+        steps = ((following - first_face) * order) % count
+        near = tuple(sorted({(encoders[0] + sign * steps * 360.0 / count) % 360.0
+                             for sign in (1, -1)}))
+    return said(message(template, **figures), following, set_no, 1, encoder, near)

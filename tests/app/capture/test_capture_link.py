@@ -3,6 +3,7 @@ socket:// handler on 127.0.0.1) against the protocol simulators, in every fault 
 
 from __future__ import annotations
 
+import contextlib
 import queue
 import time
 
@@ -11,7 +12,7 @@ import pytest
 
 from app.capture.instruments import Autocollimator, LineReadoutInstrument, Theodolite
 from app.capture.link import serial_url
-from app.capture.worker import CaptureWorker, Fault, Reading
+from app.capture.worker import CaptureWorker, Fault, NoTarget, Reading
 from tests.instrument_simulators import AutocollimatorSimulator, ReadoutSimulator, TheodoliteSimulator
 
 FAST = {"silence_s": 0.2, "retries": 1, "retry_pause_s": 0.05}
@@ -27,7 +28,7 @@ def collect(worker: CaptureWorker, n: int, timeout_s: float = 5.0):
             continue
         if isinstance(event, Reading):
             readings.append(event)
-        else:
+        elif not isinstance(event, NoTarget):  # frames with no measurement are no fault
             faults.append(event)
             if event.final:
                 break
@@ -69,6 +70,46 @@ def test_a_frame_with_an_invalid_axis_never_becomes_a_reading():
     assert [s for s in sent_before if None in s]  # invalid frames were sent …
     assert worker.refused >= 10                   # … and refused
     assert any("not valid" in r for r in worker.refusals)
+
+
+def test_frames_out_of_range_are_no_target_in_view_never_a_fault_of_the_link():
+    """live76 F3: an autocollimator whose mirror is out of view (the table turning) sends
+    frames beyond its range: after the silence (0.2 s) the link was reconnected, and given
+    up after the retries. For 1 s (five times the silence) it is one NoTarget, no fault, no
+    reconnection, and the readings go on when the mirror is back; only silence is a fault."""
+    with AutocollimatorSimulator("pty", positions=[(1.0, 2.0)], rate_hz=50.0) as sim:
+        worker = CaptureWorker(sim.port, Autocollimator(), **FAST).start()
+        events = []
+        try:
+            end = time.monotonic() + 3.0
+            while time.monotonic() < end:
+                with contextlib.suppress(queue.Empty):
+                    events.append(worker.events.get(timeout=0.05))
+                if time.monotonic() > end - 2.5 and sim.positions[0] == (1.0, 2.0) \
+                        and not any(isinstance(e, NoTarget) for e in events):
+                    sim.positions[0] = (9999.0, 2.0)  # out of view
+                    back = time.monotonic() + 1.0
+                if sim.positions[0] != (1.0, 2.0) and time.monotonic() > back:
+                    sim.positions[0] = (1.5, 2.0)  # back in view
+            sim.faults.add("silence")  # the instrument stops: that is a fault
+            end = time.monotonic() + 2.0
+            while time.monotonic() < end and not any(isinstance(e, Fault) for e in events):
+                with contextlib.suppress(queue.Empty):
+                    events.append(worker.events.get(timeout=0.05))
+        finally:
+            worker.stop()
+    kinds = [type(e).__name__ for e in events]
+    first_gone = kinds.index("NoTarget")
+    # until the instrument fell silent: readings and one NoTarget, no fault of the link
+    assert kinds.count("NoTarget") == 1
+    assert set(kinds[:kinds.index("Fault")]) == {"Reading", "NoTarget"}
+    (gone,) = [e for e in events if isinstance(e, NoTarget)]
+    assert gone.columns == ("ac_x_arcsec",) and gone.value == pytest.approx(9999.0)
+    assert gone.limits == (-3600.0, 3600.0)
+    before, after = events[first_gone - 1], events[first_gone + 1]
+    assert before.values == (1.0, 2.0) and after.values == (1.5, 2.0)
+    assert after.time_s - gone.time_s >= 0.9  # out of view for 1 s, heard all along
+    assert "no answer" in str(events[kinds.index("Fault")].message)
 
 
 def test_line_noise_is_refused_and_every_frame_is_still_read():

@@ -153,3 +153,35 @@ def test_the_crosscal_nominal_encoder_is_the_start_plus_the_steps(sense):
     # no encoder reading at the start, or no face count: nothing is guessed
     assert guide([_crosscal_row(0, 1, None)], {}, {"faces": n}).nominal == {}
     assert guide(rows[:2], {}, {"faces": 0}).nominal == {}
+
+
+def test_a_reversed_set_is_guided_to_the_face_its_row_names_with_that_faces_encoder():
+    """live76 F2: 4 faces, set 1 read 1→2→3→4→1 (encoder 10°, 100°, 190°, 280°), set 2 goes
+    the other way round (the plan pre-fills its next row with face 4). After set 2's first
+    face the guidance said "go to face 2 (encoder ≈ 100°)" from set 1's direction, and the
+    off-plan check expected 100°. The row's face is what is said, with the encoder at it."""
+    rows = [_row(f, 10.0 + (f - 1) * 90.0) for f in (1, 2, 3, 4, 1)] + [_row(1, 10.0, "2")]
+    settings_ = {"faces": 4, "readings_per_point": 1}
+    guided = polygon_guide(rows, {"position": "4", "set": "2"}, settings_)
+    assert guided.text == "go to face 4 (encoder ≈ 280°)"
+    assert guided.fill == {"position": "4", "set": "2"}
+    assert guided.nominal == {"encoder_deg": pytest.approx(280.0)}
+    # and on round the other way: face 3 after 1, 4 (set 2's own direction now)
+    guided = polygon_guide(rows + [_row(4, 280.0, "2")], {"position": "3", "set": "2"}, settings_)
+    assert guided.text == "go to face 3 (encoder ≈ 190°)"
+    assert guided.nominal == {"encoder_deg": pytest.approx(190.0)}
+    # a row with no face yet: the direction of the readings, as before
+    assert polygon_guide(rows[:2], {}, settings_).text == "go to face 3 (encoder ≈ 190°)"
+
+
+def test_the_second_face_is_expected_either_way_round_from_the_first():
+    """live76 run3: after one face the guide cannot say which way the encoder counts, so it
+    gave no figure and a take at face 7 went into face 2's row unchecked. The readings it
+    would take there are the first ± 360°/N (the off-plan check warns of any other)."""
+    guided = polygon_guide([_row(1, 10.0)], {}, {"faces": 12, "readings_per_point": 1})
+    assert guided.text == "go to face 2" and guided.nominal == {}
+    assert guided.near == {"encoder_deg": (pytest.approx(40.0), pytest.approx(340.0))}
+    assert guided.pitch_deg == pytest.approx(30.0)
+    # known the way round: the one figure, nothing "either way"
+    guided = polygon_guide([_row(1, 10.0), _row(2, 40.0)], {}, {"faces": 12})
+    assert guided.nominal == {"encoder_deg": pytest.approx(70.0)} and guided.near == {}
