@@ -334,6 +334,7 @@ def run_capture(argv: list[str]) -> int:
     opened = False
     #: when the frames with no measurement began (None: readings come)
     no_target_since: float | None = None
+    no_target_reason = ""
 
     def journal_frames() -> None:
         for t, line, used in worker.take_raw():
@@ -351,6 +352,11 @@ def run_capture(argv: list[str]) -> int:
                 failure = message(QT_TR_NOOP("{port}: {n} of {total} readings in {seconds} s"),
                                   port=args.port, n=len(rows), total=args.readings,
                                   seconds=f"{args.timeout:g}")
+                if no_target_since is not None:  # the instrument heard, seeing no target
+                    failure = message(QT_TR_NOOP(
+                        "{failure}; its frames carry no measurement since {since} s ({reason}): "
+                        "no target in view?"), failure=failure,
+                        since=f"{no_target_since:.1f}", reason=no_target_reason)
                 break
             try:
                 event = worker.events.get(timeout=0.05)
@@ -371,7 +377,7 @@ def run_capture(argv: list[str]) -> int:
             opened = True
             if isinstance(event, NoTarget):
                 # frames with no measurement (a mirror out of view): the link is alive
-                no_target_since = event.time_s
+                no_target_since, no_target_reason = event.time_s, event.reason
                 continue
             if no_target_since is not None:
                 # a reading never bridges a gap of frames without one

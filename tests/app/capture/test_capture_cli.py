@@ -302,3 +302,16 @@ def test_stable_window_is_the_readouts_own_unit_when_it_sends_no_angle(tmp_path)
                      "--dwell", "0.3", "--timeout", "5", "--out", str(out), *FAST]) == 0
     (row,) = rows_of(out)[1:]
     assert row[2] == "mm"
+
+
+def test_a_timeout_while_no_target_is_in_view_says_so(tmp_path, capsys):
+    """bench76: frames beyond the range (a mirror out of view) are no fault of the link, so the
+    command line neither reconnects nor gives up for them: a --timeout that ends the capture
+    then says the frames carried no measurement, and why."""
+    out = tmp_path / "ac.csv"
+    with AutocollimatorSimulator("pty", positions=[(9999.0, 2.0)]) as sim:
+        assert main(["capture", "autocollimator", sim.port, "--readings", "5", "--out",
+                     str(out), "--timeout", "1", *FAST]) == 2
+    err = capsys.readouterr().err
+    assert "0 of 5 readings in 1 s; its frames carry no measurement since" in err, err
+    assert "no target in view?" in err and "reconnecting" not in err
