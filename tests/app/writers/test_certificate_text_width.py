@@ -32,6 +32,7 @@ def frames():
         close_fonts(pdf)
 
 
+@pytest.mark.slow  # ~0.4 s: the CJK font parsed, 150 texts measured twice
 @settings(max_examples=150, deadline=None)
 @given(text=st.text(ALPHABET, max_size=60), frame=st.sampled_from(["latin", "cjk"]),
        size=st.sampled_from([6.0, 7.5, 8, 8.5, 9, 11]), style=st.sampled_from(["", "B"]))
