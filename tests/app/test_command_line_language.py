@@ -115,8 +115,10 @@ def test_the_language_follows_the_locale(tmp_path, monkeypatch, capsys):
 
 
 @pytest.fixture
-def issued(tmp_path, samples_dir, capsys):
-    """A register with one certificate issued from the polygon sample."""
+def issued(tmp_path, samples_dir, capsys, pdf_stand_in):
+    """A register with one certificate issued from the polygon sample (its PDF a stand-in,
+    tests/pdf_stand_in.py: the register's words are what is read, and verify finds the
+    file by its SHA-256; printing it cost ~0.6 s of CPU)."""
     pdf = tmp_path / "issued.pdf"
     details = json.loads((samples_dir / "certificate_polygon.json").read_text("utf-8"))
     own = tmp_path / "details.json"  # the lab's own, made from the example

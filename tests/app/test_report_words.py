@@ -345,12 +345,17 @@ def test_the_command_lines_issued_but_not_written(samples_dir, tmp_path, capsys,
 @pytest.fixture(scope="module")
 def _report_and_certificate_issued(tmp_path_factory) -> Path:
     """The positioning sample's test report and the polygon sample's certificate, each with
-    its results file, issued once for the module into a register of their own (four
-    documents rendered: ~1.5 s of CPU); the folder that holds the register and the files."""
+    its results file, issued once for the module into a register of their own; the folder
+    that holds the register and the files. The PDFs are stand-ins (tests/pdf_stand_in.py):
+    ``register verify`` finds a file by its SHA-256 and names the kind the register
+    recorded, never the pages (the two printed took ~1 s of CPU)."""
+    from tests.pdf_stand_in import print_stand_ins
+
     folder = tmp_path_factory.mktemp("report_and_certificate")
     samples_dir = Path(__file__).resolve().parents[2] / "resources" / "samples"
     with pytest.MonkeyPatch.context() as mp:
         mp.setenv("ANGLEBENCH_REGISTER", str(folder / "register.sqlite"))
+        print_stand_ins(mp)
         for key in ("positioning", "polygon"):
             assert _analyze(samples_dir, folder, key, "--certificate", str(folder / f"{key}.pdf"),
                             "--results", str(folder / f"{key}.xlsx")) == 0

@@ -362,9 +362,11 @@ def test_the_command_lines_own_words_in_chinese(tmp_path, capsys, samples_dir):
 
 
 @pytest.mark.slow
-def test_the_register_window_follows_the_language(window, samples_dir, tmp_path, capsys):
+def test_the_register_window_follows_the_language(window, samples_dir, tmp_path, capsys,
+                                                  pdf_stand_in):
     """A record's status and revision are the register's English words as data, shown in
-    the window's language; the open register follows a change of language at once."""
+    the window's language; the open register follows a change of language at once. (The
+    certificate's PDF a stand-in: the register's record is what is shown.)"""
     from app.main import main
 
     details = json.loads((samples_dir / "certificate_polygon.json").read_text("utf-8"))

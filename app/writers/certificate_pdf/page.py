@@ -4,7 +4,9 @@ headings and paragraphs, each text run set in the font its characters need."""
 from __future__ import annotations
 
 from fpdf import FPDF
-from fpdf.enums import XPos, YPos
+from fpdf.enums import CharVPos, XPos, YPos
+from fpdf.fonts import TTFFont
+from fpdf.unicode_script import UnicodeScript, get_unicode_script
 
 from app.writers.certificate_pdf.fonts import CJK_FONT, FONT, _latin_coverage, font_files
 from app.writers.certificate_pdf.line_breaks import _CLOSING, _long_word, _mostly_cjk, _units
@@ -16,6 +18,17 @@ PAGE_TOTAL_ALIAS = "{nb}"
 INK = (20, 20, 20)
 GREY = (110, 110, 110)
 RULE = (170, 170, 170)
+
+
+_SCRIPTS: dict[str, UnicodeScript] = {}
+
+
+def _script(ch: str) -> UnicodeScript:
+    """fpdf2's ``get_unicode_script(ch)``, each character looked up once a process."""
+    found = _SCRIPTS.get(ch)
+    if found is None:
+        found = _SCRIPTS[ch] = get_unicode_script(ch)
+    return found
 
 
 #: the marks that close what comes before them (the Chinese closing ones, and the Latin
@@ -200,10 +213,48 @@ class PageFrame(FPDF):
         width = 0.0
         for font, run in self._runs(text):
             self._use(font, size, style)
-            width += self.get_string_width(run)
+            width += self._run_width(run)
         if family:
             self.set_font(family, current_style, current_size)
         return width
+
+    def _run_width(self, run: str) -> float:
+        """``get_string_width(run)`` in the font in use, the same figure to the last bit,
+        summed as fpdf2 2.8 sums it: each fragment its characters' widths (integers, in
+        thousandths of the size) times the size, over the scale; a fragment ends where the
+        Unicode script changes when there are fallback fonts. fpdf2 builds the fragments
+        with a graphics state each and looks each character's script up in a list of ranges,
+        and :meth:`_wrapped` measures a line again for every word added: ~13 % of printing
+        the samples' certificates, ~5 % so (the same bytes printed). A run fpdf2 would treat
+        otherwise (a character the font lacks, text shaping, spacing, stretching, a sub- or
+        superscript, the page count's alias) is measured by fpdf2 itself
+        (tests/app/writers/test_certificate_text_width.py)."""
+        font = self.current_font
+        if (not run or type(font) is not TTFFont or not self.is_ttf_font or font.is_symbol
+                or self.text_shaping or self.char_spacing != 0 or self.font_stretching != 100
+                or self.char_vpos != CharVPos.LINE or "\n" in run
+                or (self.str_alias_nb_pages and self.str_alias_nb_pages in run)
+                or not all(ord(ch) in font.cmap for ch in run)):
+            return self.get_string_width(run)
+        pieces: list[str | list[str]] = [run]
+        if self._fallback_font_ids:  # fpdf2's _parse_chars: a fragment per script
+            pieces, script = [], None
+            piece: list[str] = []
+            for ch in run:
+                found = _script(ch)
+                if found not in (UnicodeScript.COMMON, UnicodeScript.UNKNOWN, script):
+                    if piece and script:
+                        pieces.append(piece)
+                        piece = []
+                    script = found
+                piece.append(ch)
+            if piece:
+                pieces.append(piece)
+        size = self.font_size_pt
+        if size > font.biggest_size_pt:
+            font.biggest_size_pt = size
+        cw = font.cw
+        return sum((sum(cw[ord(c)] for c in piece) * size * 0.001) / self.k for piece in pieces)
 
     def mixed_text(self, x: float, y: float, text: str, size: float, style: str = "") -> None:
         """``text()`` of ``text`` in as many fonts as its characters need."""

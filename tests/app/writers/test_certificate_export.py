@@ -47,7 +47,10 @@ def _meta(key):
     return replace(META, tolerance=None) if key == "polygon" else META
 
 
+@functools.cache
 def _analysed(key):
+    """The sample of ``key`` analysed with the default settings, once a module (the tests
+    read the result and never change it: the theodolite's alone was analysed nine times)."""
     kind = KINDS[key]
     table = read_table(SAMPLES / kind.sample_file)
     parsed = ReadingsSheet(kind.columns, map_columns(table, kind.columns)).parse()
@@ -59,13 +62,21 @@ def _text(pdf: bytes) -> tuple[str, int]:
     return "\n".join(page.extract_text() for page in reader.pages), len(reader.pages)
 
 
+@functools.cache
+def _sample_certificate(key):
+    """The certificate of ``key``'s sample with :func:`_meta`'s details: (document, PDF, its
+    text, its pages), printed once a module (the polygon's was printed for three tests)."""
+    kind, result = _analysed(key)
+    document = kind.certificate_document(result, _meta(key), kind.sample_file)
+    pdf = certificate_pdf_bytes(document)
+    return (document, pdf, *_text(pdf))
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("key", sorted(KINDS))
 def test_certificate_of_each_sample_carries_its_figures(key):
     kind, result = _analysed(key)
-    document = kind.certificate_document(result, _meta(key), kind.sample_file)
-    pdf = certificate_pdf_bytes(document)
-    text, pages = _text(pdf)
+    document, _pdf, text, pages = _sample_certificate(key)
     flat = re.sub(r"\s+", " ", text)
     assert f"Page {pages} of {pages}" in flat and "Page 1 of" in flat
     assert "AB-2026-0042" in flat and "长春光机所" in flat and "王工" in flat
@@ -97,8 +108,8 @@ def test_certificate_of_each_sample_carries_its_figures(key):
 @pytest.mark.slow
 def test_certificate_is_deterministic_and_marks_drafts():
     kind, result = _analysed("polygon")
-    doc = kind.certificate_document(result, _meta("polygon"), "p.csv")
-    assert certificate_pdf_bytes(doc) == certificate_pdf_bytes(doc)
+    document, pdf, _text_printed, _pages = _sample_certificate("polygon")
+    assert certificate_pdf_bytes(document) == pdf  # printed again: the same bytes
     draft = kind.certificate_document(result, CertificateMetadata(created="2026-01-01T00:00:00"))
     text, _ = _text(certificate_pdf_bytes(draft))
     assert "DRAFT" in text and "customer" in text
@@ -106,8 +117,8 @@ def test_certificate_is_deterministic_and_marks_drafts():
 
 @pytest.mark.slow
 def test_polygon_certificate_prints_every_warning_of_the_window():
-    kind, result = _analysed("polygon")
-    text, _ = _text(certificate_pdf_bytes(kind.certificate_document(result, _meta("polygon"))))
+    _kind, result = _analysed("polygon")
+    text = _sample_certificate("polygon")[2]
     flat = re.sub(r"\s+", " ", text)
     assert "exceeds the 270\" allowed for grade 3" in flat  # the sample's 480" tilt, levelled
     assert "239\" worst case over the tilt direction, 250\" at ω = 90°" in flat
