@@ -40,6 +40,7 @@ def window(_window_of_the_module, qtbot):
     file, no nominal step, no undo history, in English, the first workbench in front, its
     first size, no manual open, nothing told yet."""
     from PySide6.QtCore import QCoreApplication, QEvent
+    from PySide6.QtWidgets import QApplication
 
     shown = _window_of_the_module
     if shown.language != "en":
@@ -57,6 +58,10 @@ def window(_window_of_the_module, qtbot):
     shown.tabs.setCurrentIndex(0)
     shown.statusBar().clearMessage()
     shown.told.clear()
+    # the active window again, as a window just shown is (its shortcuts need it): a manual or
+    # another case's window shown since took that from it
+    shown.activateWindow()
+    qtbot.waitUntil(lambda: QApplication.activeWindow() is shown, timeout=2000)
     return shown
 
 
