@@ -1,13 +1,18 @@
 """Opens every dialog of the window on the screen Qt was started with and prints, as JSON,
 each one's frame and the screen's available geometry (tests/widgets/test_dialogs_fit.py runs it
-in a process of its own per screen: an offscreen screen of a given size and scale).
+in a process of its own per screen: an offscreen screen of a given size and scale), for each
+language of its arguments (``python -m tests.dialog_fit_probe en zh_CN``): a window of its own
+in each, one after another, ``{language: {dialog: ...}}``.
 
 Each dialog is opened the way the user opens it (its menu action, its button), answered
 from a timer that records the modal window in front and closes it."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QPoint, QRect, QTimer
+import json
+import sys
+
+from PySide6.QtCore import QCoreApplication, QEvent, QPoint, QRect, QTimer
 from PySide6.QtWidgets import QApplication, QDialogButtonBox, QMessageBox, QWidget
 
 from tests.screen_process import close_window, open_window
@@ -58,11 +63,22 @@ def answer_modal(name: str, then=None) -> None:
 
 
 def main() -> None:
-    app = QApplication.instance() or QApplication(["anglebench"])
+    QApplication.instance() or QApplication(["anglebench"])
+    by_language = {}
+    for language in sys.argv[1:] or ["en"]:
+        found.clear()
+        probe(language)
+        by_language[language] = dict(found)
+    sys.stdout.write(json.dumps(by_language) + "\n")
+
+
+def probe(language: str) -> None:
+    """Every dialog of a window in ``language`` recorded in ``found``."""
     from widgets.certificate_dialog import CertificateDialog
     from widgets.column_mapping_dialog import ColumnMappingDialog
 
-    window = open_window("anglebench-fit-")
+    app = QApplication.instance()
+    window = open_window("anglebench-fit-", language)
     app.processEvents()
     record("main window", window)
 
@@ -130,7 +146,9 @@ def main() -> None:
     window.tabs.setCurrentIndex(window.presenters.index(polygon))
     answer_modal("polygon certificate")
     polygon.view.certificate_button.click()
-    close_window(window, found)
+    close_window(window, None)
+    window.deleteLater()  # gone before the next language's window is made
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
 if __name__ == "__main__":

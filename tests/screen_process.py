@@ -17,9 +17,11 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def run_on_screen(probe: str, tmp_path: Path, width: int, height: int, scale: str,
-                  language: str) -> dict:
+                  language: str | list[str]) -> dict:
     """Run the module ``probe`` (``python -m``) on a ``width``×``height`` offscreen screen at
-    QT_SCALE_FACTOR ``scale`` with the window in ``language``; its last line of output, JSON."""
+    QT_SCALE_FACTOR ``scale`` with the window in ``language`` (a probe that takes several
+    languages, one window after another in its one process, is given a list); its last line
+    of output, JSON."""
     config = tmp_path / "screen.json"
     config.write_text(json.dumps({"screens": [{
         "name": "laptop", "x": 0, "y": 0, "width": width, "height": height,
@@ -27,15 +29,17 @@ def run_on_screen(probe: str, tmp_path: Path, width: int, height: int, scale: st
     env = {**os.environ, "QT_QPA_PLATFORM": f"offscreen:configfile={config}",
            "QT_SCALE_FACTOR": scale, "PYTHONPATH": str(ROOT), "HOME": str(tmp_path),
            "XDG_CONFIG_HOME": str(tmp_path / "config"), "XDG_DATA_HOME": str(tmp_path / "data")}
-    run = subprocess.run([sys.executable, "-m", probe, language], env=env, capture_output=True,
-                         text=True, timeout=600, cwd=tmp_path)
+    languages = [language] if isinstance(language, str) else language
+    run = subprocess.run([sys.executable, "-m", probe, *languages], env=env,
+                         capture_output=True, text=True, timeout=600, cwd=tmp_path)
     assert run.returncode == 0, run.stderr[-3000:]
     return json.loads(run.stdout.strip().splitlines()[-1])
 
 
-def open_window(prefix: str):
+def open_window(prefix: str, language: str | None = None):
     """The main window on every bundled sample, shown, with its settings and recovery in a
-    scratch folder and the language of the probe's first argument (en by default)."""
+    scratch folder of its own and in ``language`` (by default the probe's first argument, en
+    without one)."""
     from PySide6.QtCore import QSettings
 
     from app.main_window import MainWindow
@@ -43,15 +47,19 @@ def open_window(prefix: str):
 
     scratch = Path(tempfile.mkdtemp(prefix=prefix))
     settings = QSettings(str(scratch / "settings.ini"), QSettings.Format.IniFormat)
-    settings.setValue("ui/language", sys.argv[1] if len(sys.argv) > 1 else "en")
+    if language is None:
+        language = sys.argv[1] if len(sys.argv) > 1 else "en"
+    settings.setValue("ui/language", language)
     window = MainWindow(settings=settings, recovery=RecoveryStore(scratch / "recovery"))
     window.load_all_samples()
     window.show()
     return window
 
 
-def close_window(window, found: dict) -> None:
-    """Close ``window``, leaving no recovery behind, and print ``found`` as the probe's JSON."""
+def close_window(window, found: dict | None) -> None:
+    """Close ``window``, leaving no recovery behind, and print ``found`` as the probe's JSON
+    (a probe of several windows prints once, after the last: ``found`` None before)."""
     window.projects.recovery.discard()
     window.close()
-    sys.stdout.write(json.dumps(found) + "\n")
+    if found is not None:
+        sys.stdout.write(json.dumps(found) + "\n")

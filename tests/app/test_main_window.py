@@ -34,8 +34,8 @@ def make_window(qtbot, tmp_path):
     QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
-def test_tabs_and_menus(make_window):
-    window = make_window()
+def test_tabs_and_menus(_window_of_the_module):
+    window = _window_of_the_module
     titles = [window.tabs.tabText(i) for i in range(window.tabs.count())]
     assert titles[0] == "Theodolite run"
     menus = [a.text() for a in window.menuBar().actions()]
@@ -60,17 +60,20 @@ def test_save_and_reopen_round_trip(make_window, tmp_path, samples_dir):
     assert other.projects.recent_files()[0] == str(path)
 
 
-def test_damaged_or_newer_project_keeps_current_work(make_window, tmp_path):
-    window = make_window(answer=QMessageBox.StandardButton.Discard)
-    window.load_all_samples()
+def test_damaged_or_newer_project_keeps_current_work(_window_of_the_module, tmp_path):
+    """(The window of the module, its questions answered Discard; the workbench whose work
+    is checked holds its sample.)"""
+    window = _window_of_the_module
+    window.presenter("theodolite").load_sample()
     before = window.presenter("theodolite").sheet.copy_rows()
+    told = len(window.told)
     damaged = tmp_path / "damaged.json"
     damaged.write_text('{"format": "anglebench-project", "schema_version": 1, "workb')
     assert not window.projects.open_project(damaged)
     newer = tmp_path / "newer.json"
     newer.write_text(json.dumps({"format": "anglebench-project", "schema_version": 7}))
     assert not window.projects.open_project(newer)
-    assert "damaged project file" in window.told[0] and "newer AngleBench" in window.told[1]
+    assert "damaged project file" in window.told[told] and "newer AngleBench" in window.told[told + 1]
     assert window.presenter("theodolite").sheet.copy_rows() == before
 
 
@@ -170,14 +173,15 @@ def _all_samples_project(qapp, tmp_path_factory):
 
 
 @pytest.fixture(scope="module")
-def _window_for_damaged_projects(qapp, tmp_path_factory):
-    """One window for the damaged-project cases below: opening a damaged project changes
-    nothing (what each case checks, against the window as it found it), so each case finds
-    the window as the last left it (a window each took ~0.4 s of CPU). What it would tell is
-    kept in ``told``, its questions answered Discard (as ``make_window(Discard)``)."""
+def _window_of_the_module(qapp, tmp_path_factory):
+    """One window for the cases that only read it (its tabs and menus) and for those that
+    check that opening a damaged or newer project changes nothing (each against the window
+    as it found it, so each finds it as the last left it): a window each took ~0.4 s of
+    CPU. What it would tell is kept in ``told``, its questions answered Discard (as
+    ``make_window(Discard)``)."""
     from tests.conftest import answered_window, delete_window
 
-    window = answered_window(tmp_path_factory.mktemp("window_for_damaged_projects"))
+    window = answered_window(tmp_path_factory.mktemp("window_of_the_module"))
     yield window
     window.projects.autosave_timer.stop()
     window.close()
@@ -192,13 +196,13 @@ def _window_for_damaged_projects(qapp, tmp_path_factory):
     lambda d: d["workbenches"].update(mystery={"rows": [], "settings": {}}),
     lambda d: d["workbenches"]["theodolite"].update(rows=[["1", "2", "3", "4", "5", "6", "7", "8"]]),
 ])
-def test_opening_a_damaged_project_changes_nothing(_window_for_damaged_projects, tmp_path,
+def test_opening_a_damaged_project_changes_nothing(_window_of_the_module, tmp_path,
                                                   change, _all_samples_project):
     document = json.loads(_all_samples_project)
     change(document)
     bad = tmp_path / "bad.anglebench.json"
     bad.write_text(json.dumps(document))
-    window = _window_for_damaged_projects
+    window = _window_of_the_module
     theodolite = window.presenter("theodolite")
     theodolite.table_model.set_cells([(0, 0, "7"), (1, 0, "8")])
     rows, title = theodolite.sheet.copy_rows(), window.windowTitle()
@@ -228,7 +232,7 @@ def test_close_can_be_cancelled(make_window):
 
 def test_import_bad_file_reports_and_keeps_readings(make_window, tmp_path):
     window = make_window()
-    window.load_all_samples()
+    window.presenter("theodolite").load_sample()  # the workbench whose readings are checked
     before = window.presenter("theodolite").sheet.copy_rows()
     bad = tmp_path / "bad.csv"
     bad.write_text("foo,bar\n1,2\n")
@@ -239,7 +243,7 @@ def test_import_bad_file_reports_and_keeps_readings(make_window, tmp_path):
 
 def test_import_is_undoable(make_window, tmp_path):
     window = make_window()
-    window.load_all_samples()
+    window.presenter("theodolite").load_sample()  # the workbench whose readings are checked
     bench = window.presenter("theodolite")
     before = bench.sheet.copy_rows()
     good = tmp_path / "good.csv"

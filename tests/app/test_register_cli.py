@@ -22,6 +22,7 @@ from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url, url_for_path
 from models.register.schema import CERTIFICATES
 from models.register.store import IssueRequest, Register, RegisterError
+from tests.pdf_stand_in import print_stand_ins
 
 
 def issue(samples_dir, tmp_path, name, capsys, **changes):
@@ -76,8 +77,10 @@ def test_issue_list_show_verify_export(samples_dir, tmp_path, capsys, issued_a):
     code, err = issued_a
     year = dt.datetime.now(dt.timezone.utc).year  # the register's day of issue
     assert code == 0 and f"Certificate AB-{year}-0001 issued" in err
-    code, err = issue(samples_dir, tmp_path, "b", capsys,  # the sample's own number
-                      item_serial="RX-26-0816")  # another item: the same one is refused (#61)
+    with pytest.MonkeyPatch.context() as mp:  # b's pages are never read: a stand-in PDF
+        print_stand_ins(mp)
+        code, err = issue(samples_dir, tmp_path, "b", capsys,  # the sample's own number
+                          item_serial="RX-26-0816")  # another item: the same one is refused (#61)
     assert code == 0 and "AB-2026-0042" in err
     code, err = issue(samples_dir, tmp_path, "c", capsys, item_serial="RX-26-0817")  # once only
     assert code == 2 and "AB-2026-0042 was issued on" in err and not (tmp_path / "c.pdf").exists()
@@ -143,10 +146,13 @@ def test_the_bundled_example_details_never_touch_the_users_register(samples_dir,
     unmarked certificate with the sample's own number, "recorded" in a throw-away
     register): numbered SPECIMEN-…, recorded nowhere, never claiming to be."""
     _lab_register()  # read-only commands refuse a register that is not there (contract75 F10)
-    for _ in range(2):  # twice: no clash, since nothing is kept
-        assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
-                     "--certificate", str(tmp_path / "example.pdf"), "--metadata",
-                     str(samples_dir / "certificate_polygon.json")]) == 0
+    for run in range(2):  # twice: no clash, since nothing is kept
+        with pytest.MonkeyPatch.context() as mp:
+            if run == 0:  # the first one's pages are never read (the second's are): a stand-in
+                print_stand_ins(mp)
+            assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                         "--certificate", str(tmp_path / "example.pdf"), "--metadata",
+                         str(samples_dir / "certificate_polygon.json")]) == 0
         err = capsys.readouterr().err
         assert "SPECIMEN SPECIMEN-" in err and "recorded in no register" in err
         assert "AB-2026-0042" not in err and "recorded in the register" not in err
@@ -416,9 +422,12 @@ def test_a_checker_signs_when_the_labs_template_asks_and_show_prints_it(samples_
                     checker="Zhao Min")
     text = _pdf_text(tmp_path / "two.pdf")
     assert code == 0 and "Operator" in text and "Checked by" not in text
-    # asked for, but no checker named: a draft, nothing recorded
-    code, err = issue(samples_dir, tmp_path, "draft", capsys, certificate_number="",
-                      checker_role=True)
+    # asked for, but no checker named: a draft, nothing recorded (its pages never read: a
+    # stand-in PDF)
+    with pytest.MonkeyPatch.context() as mp:
+        print_stand_ins(mp)
+        code, err = issue(samples_dir, tmp_path, "draft", capsys, certificate_number="",
+                          checker_role=True)
     assert code == 0 and "checker missing; nothing was recorded" in err
     for language, roles in (("en", ("Calibrated by", "Checked by", "Approved by")),
                             ("zh", ("校准员", "核验员", "批准人")),

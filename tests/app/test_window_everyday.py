@@ -16,11 +16,53 @@ from widgets.save_file import with_filter_suffix
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
 
+@pytest.fixture(scope="module")
+def _window_of_the_module(qapp, tmp_path_factory):
+    """One shown window (focus and key presses need a visible window) for the cases below,
+    each of which starts from it as :func:`window` leaves it: a window each took ~0.45 s of
+    CPU."""
+    from tests.conftest import answered_window, delete_window
+
+    shown = answered_window(tmp_path_factory.mktemp("window_of_the_module"))
+    shown.show()
+    shown.size_when_made = shown.size()
+    yield shown
+    shown.projects.autosave_timer.stop()
+    shown.close()
+    delete_window(shown)
+
+
 @pytest.fixture
-def window(window):
-    """Shown: focus and key presses need a visible window."""
-    window.show()
-    return window
+def window(_window_of_the_module, qtbot):
+    """:func:`_window_of_the_module` as a fresh one is, but for the analyses of the empty
+    sheets File › New makes (a fresh window has analysed nothing yet; no case here asks
+    before it loads or types): every sheet empty, the set-ups the lab's defaults, no project
+    file, no nominal step, no undo history, in English, the first workbench in front, its
+    first size, no manual open, nothing told yet."""
+    from PySide6.QtCore import QCoreApplication, QEvent
+    from PySide6.QtWidgets import QApplication
+
+    shown = _window_of_the_module
+    if shown.language != "en":
+        shown.set_language("en")
+    shown.projects.new_project()
+    for presenter in shown.presenters:
+        presenter.view.step.setValue(0.0)
+        presenter.undo_stack.clear()
+    if shown.manual is not None:
+        shown.manual.close()
+        shown.manual.deleteLater()
+        shown.manual = None
+        QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+    shown.resize(shown.size_when_made)
+    shown.tabs.setCurrentIndex(0)
+    shown.statusBar().clearMessage()
+    shown.told.clear()
+    # the active window again, as a window just shown is (its shortcuts need it): a manual or
+    # another case's window shown since took that from it
+    shown.activateWindow()
+    qtbot.waitUntil(lambda: QApplication.activeWindow() is shown, timeout=2000)
+    return shown
 
 
 def test_ctrl_pgdown_and_ctrl_tab_switch_workbenches_even_from_the_table(window, qtbot):
@@ -171,27 +213,11 @@ def test_instrument_style_entry_fills_theta_and_moves_to_the_next_reading(window
     assert not window.presenter("fringe").view.step.isVisibleTo(window.presenter("fringe").view)
 
 
-@pytest.fixture(scope="module")
-def _window_typed_into_once_a_workbench(qapp, tmp_path_factory):
-    """One shown window for the three workbenches' cases below: each types into its own
-    workbench's empty table only (a window each took ~0.4 s of CPU)."""
-    from tests.conftest import answered_window, delete_window
-
-    shown = answered_window(tmp_path_factory.mktemp("window_typed_into"))
-    shown.show()
-    yield shown
-    shown.projects.autosave_timer.stop()
-    shown.close()
-    delete_window(shown)
-
-
 @pytest.mark.parametrize("key", ["theodolite", "polygon", "positioning"])
-def test_return_without_a_step_goes_to_the_next_rows_first_column(
-        _window_typed_into_once_a_workbench, qtbot, key):
+def test_return_without_a_step_goes_to_the_next_rows_first_column(window, qtbot, key):
     """No nominal step: the technician types θ, the face or the target too, so Return
     lands on it (#31: it landed on A, the encoder or the deviation, and a typed run
     shifted every row by one column)."""
-    window = _window_typed_into_once_a_workbench
     presenter = window.presenter(key)
     window.tabs.setCurrentIndex(window.presenters.index(presenter))
     table = presenter.view.table
@@ -328,12 +354,26 @@ def test_print_puts_the_result_and_plot_on_a_page(window, tmp_path):
     assert window.menus.print_action.shortcut().toString() == "Ctrl+P"
 
 
-def test_results_are_read_in_the_unit_chosen_once(window, monkeypatch, tmp_path):
+@pytest.fixture
+def own_window(qtbot, tmp_path):
+    """A shown window of the test's own (settings and autosaves in its folder)."""
+    from tests.conftest import answered_window, delete_window
+
+    made = answered_window(tmp_path)
+    qtbot.addWidget(made)
+    made.show()
+    yield made
+    delete_window(made)
+
+
+def test_results_are_read_in_the_unit_chosen_once(own_window, monkeypatch, tmp_path):
     """View › Angle unit: every workbench's plots, figures, verdict and exported results
-    change unit together, with the unit in every title, and the choice is remembered."""
+    change unit together, with the unit in every title, and the choice is remembered (a
+    window of its own: the unit chosen is remembered in its settings)."""
     from app.main_window import MainWindow
     from models.project.recovery import RecoveryStore
 
+    window = own_window
     window.load_all_samples()
     theodolite, polygon = window.presenter("theodolite"), window.presenter("polygon")
     plot = theodolite.view.error_plot

@@ -34,6 +34,32 @@ def _type_details(qtbot, dialog: CertificateDialog) -> None:
                          "uncertainty": 0.5})
 
 
+@pytest.fixture(scope="module")
+def _window_of_the_module(qapp, tmp_path_factory):
+    """One window for the cases below that neither save the lab's defaults nor issue (the
+    window's settings and the register are each case's own otherwise) nor need a window
+    never analysed: a window each took ~0.45 s of CPU."""
+    from tests.conftest import answered_window, delete_window
+
+    made = answered_window(tmp_path_factory.mktemp("window_of_the_module"))
+    yield made
+    made.projects.autosave_timer.stop()
+    made.close()
+    delete_window(made)
+
+
+@pytest.fixture
+def shared_window(_window_of_the_module, qtbot):
+    """:func:`_window_of_the_module` after File › New (every sheet empty and analysed so, no
+    certificate details kept with the project), the first workbench in front, nothing told
+    yet (what a case sets on it, a monkeypatch, is undone after it)."""
+    made = _window_of_the_module
+    made.projects.new_project()
+    made.tabs.setCurrentIndex(0)
+    made.told.clear()
+    return made
+
+
 @pytest.mark.slow
 def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatch):
     window.load_all_samples()
@@ -72,17 +98,21 @@ def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatc
 
 
 @pytest.mark.slow
-def test_cancelled_dialog_writes_nothing(window, tmp_path, monkeypatch):
+def test_cancelled_dialog_writes_nothing(shared_window, tmp_path, monkeypatch):
+    window = shared_window
     window.presenter("theodolite").load_sample()  # the workbench in front, exported
     monkeypatch.setattr(CertificateDialog, "exec", lambda d: QDialog.DialogCode.Rejected)
     called = []
-    window.certificates.view.choose_save_path = lambda *a: called.append(a) or str(tmp_path / "x.pdf")
+    monkeypatch.setattr(window.certificates.view, "choose_save_path",
+                        lambda *a: called.append(a) or str(tmp_path / "x.pdf"))
     assert not window.export_certificate()
     assert not called and not (tmp_path / "x.pdf").exists()
 
 
 @pytest.mark.slow
 def test_no_result_is_told_not_crashed(window):
+    """(A window of its own: one never analysed; File › New leaves each workbench analysed,
+    empty, which says its readings are too few instead.)"""
     assert not window.export_certificate()
     assert "Nothing" in window.told[0] or "no readings" in window.told[0]
 
@@ -131,11 +161,12 @@ def test_saving_lab_defaults_then_cancel_keeps_what_was_typed(window, qtbot, mon
 
 
 @pytest.mark.slow
-def test_export_results_csv(window, tmp_path):
+def test_export_results_csv(shared_window, tmp_path, monkeypatch):
+    window = shared_window
     window.presenter("polygon").load_sample()  # the workbench in front, exported
     window.tabs.setCurrentIndex(1)
     out = tmp_path / "r.csv"
-    window.certificates.view.choose_save_path = lambda *a: str(out)
+    monkeypatch.setattr(window.certificates.view, "choose_save_path", lambda *a: str(out))
     window.menus.export_results_action.trigger()
     lines = out.read_text(encoding="utf-8-sig").splitlines()
     result = window.current.result
@@ -144,10 +175,11 @@ def test_export_results_csv(window, tmp_path):
 
 
 @pytest.mark.slow
-def test_a_stored_detail_gone_bad_blanks_nothing(window, qtbot, monkeypatch):
+def test_a_stored_detail_gone_bad_blanks_nothing(shared_window, qtbot, monkeypatch):
     """humidity stored as "45 %" (an older version, or a hand-edited project): the other
     details stay in the dialog, the bad one shows as stored and is marked; all bad fields
     are marked at once."""
+    window = shared_window
     window.projects.metadata["certificates"] = {"theodolite": {
         "lab_name": "Angle Lab", "customer_name": "Customer", "humidity_pct": "45 %",
         "temperature_c": "warm"}}
@@ -169,11 +201,13 @@ def test_a_stored_detail_gone_bad_blanks_nothing(window, qtbot, monkeypatch):
 
 
 @pytest.mark.slow
-def test_errors_of_degrees_are_shown_first_and_certified_only_when_confirmed(window, qtbot,
-                                                                          tmp_path, monkeypatch):
+def test_errors_of_degrees_are_shown_first_and_certified_only_when_confirmed(
+        shared_window, qtbot, tmp_path, monkeypatch):
     from PySide6.QtWidgets import QMessageBox
 
     from models.readings.angles import format_dms, parse_angle_deg
+
+    window = shared_window
 
     window.presenter("polygon").load_sample()  # the workbench in front, exported
     polygon = next(p for p in window.presenters if p.kind.key == "polygon")
@@ -186,12 +220,14 @@ def test_errors_of_degrees_are_shown_first_and_certified_only_when_confirmed(win
                     polygon.view.warnings.text())
     assert polygon.view.verdict.text().startswith("*** ERRORS OF 2.00°")  # bold, on top
     asked = []
-    window.ask = lambda title, text, *a: asked.append(text) or QMessageBox.StandardButton.No
+    monkeypatch.setattr(window, "ask", lambda title, text, *a: asked.append(text) or
+                        QMessageBox.StandardButton.No)
     opened = []
     monkeypatch.setattr(CertificateDialog, "exec", lambda d: opened.append(d) or 0)
     assert not window.export_certificate()
     assert "ERRORS OF 2.00°" in asked[0] and not opened  # refused before any detail is asked
-    window.ask = lambda title, text, *a: asked.append(text) or QMessageBox.StandardButton.Yes
+    monkeypatch.setattr(window, "ask", lambda title, text, *a: asked.append(text) or
+                        QMessageBox.StandardButton.Yes)
     window.export_certificate()
     assert opened  # confirmed: on to the details
 

@@ -17,6 +17,29 @@ pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window
 SIZES = [(1600, 1000), (1280, 720), (1280, 800)]
 
 
+@pytest.fixture(scope="module")
+def _window_of_the_module(qapp, tmp_path_factory):
+    """One window for the cases that each set what they look at themselves (the workbench in
+    front, its readings or sample, the language, the window's size, the plot's tab): a window
+    each took ~0.45 s of CPU."""
+    from tests.conftest import answered_window, delete_window
+
+    shown = answered_window(tmp_path_factory.mktemp("plot_ranges_window"))
+    yield shown
+    shown.projects.autosave_timer.stop()
+    shown.close()
+    delete_window(shown)
+
+
+@pytest.fixture
+def shared_window(_window_of_the_module, qtbot):
+    """:func:`_window_of_the_module`, in English again after each case (a case that asks for
+    no language finds the window as a fresh one, in English)."""
+    yield _window_of_the_module
+    if _window_of_the_module.language != "en":
+        _window_of_the_module.set_language("en")
+
+
 def _settle(widget) -> None:
     for _ in range(3):
         QApplication.processEvents()
@@ -40,7 +63,8 @@ def _inside(plot_item, curves) -> list[str]:
 
 
 @pytest.mark.parametrize("size", SIZES, ids=lambda s: f"{s[0]}x{s[1]}")
-def test_the_lissajous_figure_is_shown_whole(window, samples_dir, size):
+def test_the_lissajous_figure_is_shown_whole(shared_window, samples_dir, size):
+    window = shared_window
     presenter = window.presenter("fringe")
     plots = presenter.view.plots
     window.resize(*size)
@@ -150,14 +174,17 @@ def test_print_shows_the_plots_data(window, tmp_path):
 
 @pytest.mark.parametrize("language", ["en", "zh_CN"])
 @pytest.mark.parametrize("size", SIZES, ids=lambda s: f"{s[0]}x{s[1]}")
-def test_the_positioning_deviation_plot_shows_every_point(window, size, language):
+def test_the_positioning_deviation_plot_shows_every_point(shared_window, size, language):
     """Mean deviation per target, in English and in Chinese: the envelope of A (a
     two-point line) and the ±2s bands stay in view when the legend makes its room (the
     Chinese legend, wider, found no free corner: the view was cut at the lowest mean
     point, ~−7″, leaving the lower envelope at −9.5″ and the ↑ band's bottom out). Only the
     positioning workbench's sample is loaded: with all five (~0.5 s of CPU more a case, their
     language switched too) the window, the plot's size, the legend's place and the view's
-    range were the same at every size and in both languages (compared 2026-12-07)."""
+    range were the same at every size and in both languages (compared 2026-12-07). The six
+    cases share one window (each loads the sample and sets its language and size: a case
+    after another at the same data is resized and relabelled, then checked)."""
+    window = shared_window
     positioning = window.presenter("positioning")
     positioning.load_sample()
     window.set_language(language)
@@ -178,8 +205,8 @@ def test_the_positioning_deviation_plot_shows_every_point(window, size, language
 
 
 @pytest.mark.parametrize("language", ["en", "zh_CN"])
-def test_a_legend_above_a_narrow_plot_never_pushes_its_right_out_of_view(window, samples_dir,
-                                                                          language):
+def test_a_legend_above_a_narrow_plot_never_pushes_its_right_out_of_view(
+        shared_window, samples_dir, language, monkeypatch):
     """Review 62, F13: with the certificate's tolerance and U bands the legend has seven
     entries; above a plot as narrow as with the instrument panel docked, in one title line,
     it made the plot wider than its view, which cut off the right: the 330° and 360° targets
@@ -190,8 +217,9 @@ def test_a_legend_above_a_narrow_plot_never_pushes_its_right_out_of_view(window,
 
     details = CertificateMetadata.from_dict(json.loads(
         (samples_dir / "certificate_positioning.json").read_text(encoding="utf-8")))
+    window = shared_window
     positioning = window.presenter("positioning")
-    positioning.certificate_details = lambda: details
+    monkeypatch.setattr(positioning, "certificate_details", lambda: details)
     window.set_language(language)
     positioning.load_sample()
     window.resize(1000, 662)
@@ -220,9 +248,10 @@ def _lab(rgb) -> np.ndarray:
 
 
 @pytest.mark.parametrize("key", ["polygon", "theodolite"])
-def test_what_if_legends_keep_every_entry_off_the_curves_in_distinct_colours(window, key):
+def test_what_if_legends_keep_every_entry_off_the_curves_in_distinct_colours(shared_window, key):
     """#31: at 1280×720 the What-if legends covered the curves and lost their last entry;
     ω = 90° and 135° were two greens."""
+    window = shared_window
     presenter = window.presenter(key)
     sim = presenter.view.simulation
     window.resize(1280, 720)
@@ -338,7 +367,8 @@ def test_a_plot_with_no_data_shows_a_neutral_view_and_says_so(window):
                 assert text is None or not text.isVisible(), f"{presenter.kind.key} › {tab}"
 
 
-def test_the_title_above_a_legend_follows_a_change_of_language(window, samples_dir):
+def test_the_title_above_a_legend_follows_a_change_of_language(shared_window, samples_dir,
+                                                               monkeypatch):
     """rev62day F14: with the legend in the title line (a tolerance's bands, a narrow plot),
     the title stayed "Mean positional deviation with ±2s" in the Chinese window: the title
     kept above the legend was the one of the first placement, never relabelled."""
@@ -348,8 +378,9 @@ def test_the_title_above_a_legend_follows_a_change_of_language(window, samples_d
 
     details = CertificateMetadata.from_dict(json.loads(
         (samples_dir / "certificate_positioning.json").read_text(encoding="utf-8")))
+    window = shared_window
     positioning = window.presenter("positioning")
-    positioning.certificate_details = lambda: details
+    monkeypatch.setattr(positioning, "certificate_details", lambda: details)
     window.set_language("en")
     positioning.load_sample()
     window.resize(1000, 662)

@@ -173,9 +173,10 @@ def test_the_history_of_a_serial_is_its_makers_item_only(window, samples_dir, tm
         assert register.audit() == []
 
 
-def test_chinese_in_the_window_is_drawn_not_boxed(window):
+def test_chinese_in_the_window_is_drawn_not_boxed(qapp):
     """Without a system CJK font the window registers the bundled one, which has the glyphs
-    of a Chinese customer's name."""
+    of a Chinese customer's name (widgets.fonts.ensure_cjk_font, which the window calls, asked
+    here itself: no window needed, ~0.45 s of CPU)."""
     from PySide6.QtGui import QFont, QFontMetrics
 
     from widgets.fonts import ensure_cjk_font
