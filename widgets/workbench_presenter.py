@@ -196,7 +196,7 @@ def conformity_text(conformity: Any) -> str:
     "no statement" and why (the certificate's full statement: :func:`conformity_statement`)."""
     from models.quantity import unit
     from models.uncertainty.conformity import DECISION_RULE_NAMES
-    from models.uncertainty.rounding import interval_decimals
+    from models.uncertainty.rounding import fixed_places, interval_decimals
 
     if conformity is None:
         return ""
@@ -219,7 +219,8 @@ def conformity_text(conformity: Any) -> str:
         d = interval_decimals(low, high)
         written = unit(conformity.unit).written()
         text += " " + tr("Decided value {value}, interval [{low}, {high}]{unit}.").format(
-            value=f"{value:.{d}f}{written}", low=f"{low:.{d}f}", high=f"{high:.{d}f}",
+            value=f"{fixed_places(value, d)}{written}", low=fixed_places(low, d),
+            high=fixed_places(high, d),
             unit=written)
     return text
 
