@@ -50,15 +50,19 @@ def _up(u: float) -> str:
 
 @pytest.fixture(scope="module")
 def linear_nm(tmp_path_factory):
-    """The bundled positioning sample as a linear axis read in nm (targets /10 in mm, the
-    deviations ×100): the assessor's pos_nm.csv."""
+    return nm_axis(tmp_path_factory.mktemp("nm"))
+
+
+def nm_axis(folder: Path):
+    """(result, certificate document) of the bundled positioning sample as a linear axis read
+    in nm (targets /10 in mm, the deviations ×100): the assessor's pos_nm.csv, ±1500 nm."""
     kind = KINDS["positioning"]
     lines = Path("resources/samples/positioning_sample.csv").read_text("utf-8").splitlines()
     rows = [lines[0]]
     for line in lines[1:]:
         target, run, direction, deviation = line.split(",")
         rows.append(f"{float(target) / 10:g},{run},{direction},{float(deviation) * 100:g}")
-    path = tmp_path_factory.mktemp("nm") / "pos_nm.csv"
+    path = folder / "pos_nm.csv"
     path.write_text("\n".join(rows) + "\n", "utf-8")
     parsed = ReadingsSheet(kind.columns, map_columns(read_table(str(path)),
                                                      kind.columns)).parse()
