@@ -12,11 +12,11 @@ from decimal import ROUND_CEILING, ROUND_HALF_EVEN, Decimal
 
 def two_significant(u: float) -> int:
     """Decimals that show u with two significant digits after rounding it up (0.994 is
-    1.0), never negative."""
+    1.0); negative from 100 on (168 is 170, to the tens: assessment 76 M1)."""
     d = 1 - math.floor(math.log10(u))
     if _grid(u, d, ROUND_CEILING) >= Decimal(10) ** (2 - d):
         d -= 1
-    return max(0, d)
+    return d
 
 
 def _grid(x: float, d: int, how) -> Decimal:
@@ -32,4 +32,4 @@ def u_beside(value: float, u: float) -> str:
     """The U printed beside ``value`` (its text, to U's decimal): U rounded up, the same
     beside any value."""
     d = two_significant(u)
-    return f"{_grid(u, d, ROUND_CEILING):.{d}f}"
+    return f"{_grid(u, d, ROUND_CEILING):.{max(0, d)}f}"

@@ -253,7 +253,8 @@ class ErrorPlot(QWidget):
         values = values[np.isfinite(values)]
         span = float(values.max() - values.min()) if values.size else 0.0
         decimals = significant_decimals(span)  # two significant digits of the span: a third
-        return 2 if decimals is None else decimals + 1
+        # a span of 100 or more (negative decimals) still to 0.1, as before 0.8.25
+        return 2 if decimals is None else max(0, decimals) + 1
 
     def set_residuals(self, x, residuals) -> None:
         if residuals is None:

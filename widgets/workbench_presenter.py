@@ -194,9 +194,10 @@ def conformity_text(conformity: Any) -> str:
     """The statement of conformity in the window's language, short, as the result summary
     shows it: the verdict, the decision rule and the decided value with its interval; or
     "no statement" and why (the certificate's full statement: :func:`conformity_statement`)."""
+    from models.certificate.document import printed_decided_figures
     from models.quantity import unit
     from models.uncertainty.conformity import DECISION_RULE_NAMES
-    from models.uncertainty.rounding import interval_decimals
+    from models.uncertainty.rounding import fixed_places, interval_decimals
 
     if conformity is None:
         return ""
@@ -214,12 +215,22 @@ def conformity_text(conformity: Any) -> str:
                                                            rule=rule)
     value, upper, lower = conformity.value, conformity.expanded, conformity.expanded_lower
     lower = lower if np.isfinite(lower) else upper
-    if np.isfinite(value) and np.isfinite(upper) and np.isfinite(lower):
+    # the figures the certificate prints (the value ± its printed U the interval's ends:
+    # assessment 76 M1, where the window said [780, 1220] nm beside the certificate's
+    # 770 nm … 1230 nm), else the interval rounded to its half-width's decimal
+    shown = printed_decided_figures(conformity, "", conformity.unit)
+    if shown is not None:
+        written = unit(conformity.unit).written()
+        text += " " + tr("Decided value {value}, interval [{low}, {high}]{unit}.").format(
+            value=f"{shown['value']}{written}", low=shown["low"], high=shown["high"],
+            unit=written)
+    elif np.isfinite(value) and np.isfinite(upper) and np.isfinite(lower):
         low, high = value - lower, value + upper
         d = interval_decimals(low, high)
         written = unit(conformity.unit).written()
         text += " " + tr("Decided value {value}, interval [{low}, {high}]{unit}.").format(
-            value=f"{value:.{d}f}{written}", low=f"{low:.{d}f}", high=f"{high:.{d}f}",
+            value=f"{fixed_places(value, d)}{written}", low=fixed_places(low, d),
+            high=fixed_places(high, d),
             unit=written)
     return text
 

@@ -30,7 +30,12 @@ from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
-from models.certificate.document import CertificateDocument, Table, budget_table
+from models.certificate.document import (
+    CertificateDocument,
+    Table,
+    budget_table,
+    printed_decided_figures,
+)
 from models.certificate.export_resolution import rounded_point_columns
 from models.certificate.interval_note import interval_cells
 from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_in_unit, text_in_unit
@@ -39,6 +44,8 @@ from models.project.atomic_write import write_bytes_atomic
 from models.quantity import UNITS
 from models.register.wording import revision_words
 from models.uncertainty.conformity import RISK_BOUND_NOTE
+from models.uncertainty.printed_figure import PrintedFigure, printed
+from models.uncertainty.rounding import written_places
 
 if TYPE_CHECKING:
     from models.register.store import CertificateRecord
@@ -350,6 +357,9 @@ def _metadata_rows(document: CertificateDocument,
     meta = document.metadata
     report = document.is_test_report
     q = document.budget.unit.symbol  # the unit of the errors, the budget and the tolerance
+    # the decided figures as printed (none printed so: the computed ones, as before)
+    decided: dict[str, object] = dict(printed_decided_figures(
+        document.conformity, "", document.budget.unit.key) or {})
     rows: list[tuple[str, object]] = [
         ("Certificate number", issued.number if issued else None),
         ("Status", issued_status(issued.number, report) if issued else not_issued(report)),
@@ -376,21 +386,28 @@ def _metadata_rows(document: CertificateDocument,
         ("Operator", meta.operator), ("Approver", meta.approver),
         ("Temperature (°C)", meta.temperature_c), ("Relative humidity (%)", meta.humidity_pct),
         ("Sign convention", document.sign_convention),
-        (f"Expanded uncertainty U, largest ({q})", document.expanded_uncertainty),
+        # U and the decided value's figures as the certificate prints them (GUM 7.2.6: U
+        # rounded up to two significant digits, the value to its decimal), the figures this
+        # sheet's certificate number and PDF SHA-256 certify (assessment 76 M4: U 1.4365″
+        # unrounded here beside 1.5″ certified); the JSON and the DCC state them unrounded
+        (f"Expanded uncertainty U, largest ({q})", _printed_u(document)),
         ("No U stated because", document.uncertainty_withheld),
         ("Coverage factor k there",
          math.nan if document.uncertainty_withheld else document.budget.coverage_factor),
         ("Coverage probability (%)", 100.0 * document.budget.probability),
         (f"Tolerance ± ({q})", document.tolerance),
         ("Decided quantity", document.conformity.quantity),
-        (f"Decided value ({q})", document.conformity.value),
+        (f"Decided value ({q})", decided.get("value", document.conformity.value)),
         # both half-widths, as the certificate prints an asymmetric interval (−U₋/+U₊); one
         # "U" gave the upper only (review 61 F5)
         (f"U of the decided value, below it (U−) ({q})",
-         document.conformity.lower_half_width),
-        (f"U of the decided value, above it (U+) ({q})", document.conformity.expanded),
-        (f"Decided value: interval low ({q})", document.conformity.interval_low),
-        (f"Decided value: interval high ({q})", document.conformity.interval_high),
+         decided.get("lower", document.conformity.lower_half_width)),
+        (f"U of the decided value, above it (U+) ({q})",
+         decided.get("upper", document.conformity.expanded)),
+        (f"Decided value: interval low ({q})",
+         decided.get("low", document.conformity.interval_low)),
+        (f"Decided value: interval high ({q})",
+         decided.get("high", document.conformity.interval_high)),
         ("Decided value: coverage probability (%)", 100.0 * document.conformity.probability),
         # only with a statement of conformity, as the JSON (null) and the PDF: where none is
         # made (the error not traceable, U incomplete, U ≥ T) a probability would rest on
@@ -507,6 +524,29 @@ class _Words:
         return value
 
 
+def _printed_u(document: CertificateDocument) -> object:
+    """The certificate's largest U as it prints it, rounded up to two significant digits
+    (GUM 7.2.6), in any unit the sheet is read in; nan where no U is stated."""
+    big_u = document.expanded_uncertainty
+    if not (math.isfinite(big_u) and big_u > 0):
+        return big_u
+    return printed(big_u, "", rounding="up", unit_key=document.budget.unit.key)
+
+
+def _printed_cell(ws, figure: PrintedFigure):
+    """A figure as the certificate prints it (:class:`PrintedFigure`) as a number cell
+    that shows the decimals it is printed to: 1.5 shown "1.5", 170 (a U of 168 nm rounded
+    up to two significant digits) "170"."""
+    from openpyxl.cell import WriteOnlyCell
+
+    value = _cell(figure.shown)
+    if value is None:
+        return None
+    cell = WriteOnlyCell(ws, value)
+    cell.number_format = number_format(written_places(figure.places))
+    return cell
+
+
 def _cell(value: object) -> object:
     if value is None:
         return None
@@ -550,7 +590,9 @@ def _metadata_in_unit(rows: list[tuple[str, object]], unit: AngleUnit,
     for key, value in rows:
         header, factor = words.label(key, unit)
         stated = getattr(value, "stated", None)  # a tolerance as the customer stated it
-        if stated is not None and factor != 1.0 and stated[1] == unit.key:
+        if isinstance(value, PrintedFigure):  # rounded in the sheet's unit, from its value
+            value = value.to(unit.key)
+        elif stated is not None and factor != 1.0 and stated[1] == unit.key:
             value = float(stated[0])  # in its own unit: as stated, not its conversion back
         elif isinstance(value, int | float) and not isinstance(value, bool):
             # a converted figure without the binary noise of the multiplication (a tolerance
@@ -612,7 +654,7 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
     ws = book.create_sheet(details_sheet_name(document))
     wrapped = Alignment(wrap_text=True, vertical="top")  # a bilingual text: Chinese above
     for key, value in _metadata_in_unit(_metadata_rows(document, issued), unit, words):
-        value = _cell(value)
+        value = _printed_cell(ws, value) if isinstance(value, PrintedFigure) else _cell(value)
         if isinstance(value, str) and "\n" in value:
             value = WriteOnlyCell(ws, value)
             value.alignment = wrapped

@@ -37,7 +37,7 @@ from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
 from models.uncertainty.printed_figure import StatedLimit, converted_limit
-from models.uncertainty.rounding import StatedNumber
+from models.uncertainty.rounding import StatedNumber, fixed_places, uncertainty_decimals
 
 __all__ = ["Column", "Decision", "PointTable", "Statistics", "build_certificate",
            "difference_column", "figure_column", "text_column", "uncertainty_column"]
@@ -83,8 +83,10 @@ def difference_column(header: str, values, less, expanded, less_expanded=None) -
         out = []
         for v, w, u, uw in rows:
             a, b = rounded_cells((v,), u, shown)[0][0], rounded_cells((w,), uw, shown)[0][0]
-            d = min(len(a.partition(".")[2]), len(b.partition(".")[2]))
-            out.append((a, b, format(round(float(v) - float(w), d) + 0.0, f"+.{d}f"), d))
+            # the coarser of the two figures' decimals (to the tens where a U is 100 or
+            # more: assessment 76 M1), not read from their text
+            d = min(_cell_decimals(u, shown), _cell_decimals(uw, shown))
+            out.append((a, b, fixed_places(float(v) - float(w), d, "+"), d))
         return out
 
     def cells(shown: int) -> list[str]:
@@ -98,6 +100,15 @@ def difference_column(header: str, values, less, expanded, less_expanded=None) -
                     for a, b, c, d in printed(shown))
         return message(ROUNDED_APART) if apart else ""
     return Column(header, cells, note)
+
+
+def _cell_decimals(expanded: float, reference_decimals: int) -> int:
+    """The decimal :func:`models.certificate.document.rounded_cells` prints a point's figure
+    to: its U's (two significant digits), a reference point's (U zero or not finite)
+    ``reference_decimals``."""
+    if expanded == 0 or not math.isfinite(expanded):
+        return reference_decimals
+    return uncertainty_decimals(expanded)
 
 
 #: under a results table where a printed difference (a correction, B_i) is not the

@@ -41,11 +41,11 @@ from models.uncertainty.printed_figure import (
     rounded_to,
 )
 from models.uncertainty.probability_text import percent_text
-from models.uncertainty.rounding import printed_range, stated_pair
+from models.uncertainty.rounding import fixed_places, printed_range, stated_pair
 
 __all__ = ["CertificateDocument", "Exact", "decision_rows", "PlotFigure", "PlotSeries", "Table",
-           "budget_table", "format_uncertain", "gum_pair", "range_cells", "rounded_cells",
-           "table_decimals", "opinion",
+           "budget_table", "format_uncertain", "gum_pair", "printed_decided_figures",
+           "range_cells", "rounded_cells", "table_decimals", "opinion",
            "reference_standard_components", "resolution_component"]
 
 
@@ -187,6 +187,23 @@ def _fmt(value: float, digits: int = 3) -> str:
     return f"{value:.{digits}f}"
 
 
+def _before_rounding(expanded: float) -> str:
+    """k·u_c as the budget prints it before rounding: to three decimals, or to as many more
+    (up to 12) as show why it is rounded up to the U stated below it: 360.000001, not
+    "360.000" above a U of 370 (two significant digits rounded up, GUM 7.2.6; the
+    0.000001 is the small inputs' share in quadrature, not noise: assessment 76 M1)."""
+    text = _fmt(expanded)
+    if not (math.isfinite(expanded) and expanded > 0):
+        return text
+    decimals = uncertainty_decimals(expanded)
+    stated = rounded_to(expanded, decimals, "up")
+    for digits in range(3, 13):
+        text = _fmt(expanded, digits)
+        if rounded_to(float(text), decimals, "up") == stated:
+            break
+    return text
+
+
 def _dof_text(nu: float) -> str:
     if not np.isfinite(nu):
         return "∞"
@@ -226,7 +243,7 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
     rows.append((message(QT_TR_NOOP("U of the inputs evaluated only (k = {k}): a lower bound, "
                                     "not U") if withheld else
                          QT_TR_NOOP("Expanded uncertainty k·u_c (k = {k}), before rounding"),
-                         k=f"{k:.2f}"), "", "", "", "", "", "", _fmt(k * uc), "", ""))
+                         k=f"{k:.2f}"), "", "", "", "", "", "", _before_rounding(k * uc), "", ""))
     stated_u = float(budget.expanded[i]) if budget.points else math.nan
     if not withheld and math.isfinite(stated_u) and stated_u > 0 and not bool(
             budget.below_floor[i]):
@@ -347,6 +364,30 @@ def decided_interval_probability(conformity: Conformity) -> float | None:
 DECIDING_POINT = QT_TR_NOOP("the deciding point: {point}")
 
 
+def printed_decided_figures(conformity: Conformity, unit: str = "\"", unit_key: str = ""
+                            ) -> dict[str, PrintedFigure] | None:
+    """The decided value, its U₋ and U₊ and its interval's ends as the certificate prints
+    them ("value", "lower", "upper", "low", "high"), each in any unit it is read in: the
+    value to the nearest, each U rounded up to two significant digits at most (GUM 7.2.6),
+    the ends the printed value ∓ the printed U (assessment 70 M1); a half range's interval
+    asymmetric, its lower end held at 0 (U₋ then the value less it). None where nothing is
+    printed so (the value not a number, U not a positive number). The statistics' row and
+    the XLSX's *Certificate* sheet state these (assessment 76 M4: the sheet gave U = 1.4365″
+    unrounded where the certificate it records states 1.5″)."""
+    if not math.isfinite(conformity.value):
+        return None
+    lower = conformity.expanded_lower
+    if conformity.monte_carlo is not None and math.isfinite(lower) and lower > 0:
+        # U₋, U₊ the value to the interval's ends, after clipping (the statement's)
+        minus, plus = printed_half_widths(conformity.value, lower, conformity.expanded)
+        return printed_interval_figures(conformity.value, minus, plus, unit, clip=True,
+                                        unit_key=unit_key)
+    if significant_decimals(conformity.expanded) is None:
+        return None
+    return printed_interval_figures(conformity.value, conformity.expanded,
+                                    conformity.expanded, unit, unit_key=unit_key)
+
+
 def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
                   points: str, unit: str = "\"", uncertainty_withheld: str = "",
                   interval_columns: bool = False) -> list[tuple[str, ...]]:
@@ -369,11 +410,9 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
         if conformity.monte_carlo is not None and math.isfinite(lower) and lower > 0:
             # two significant digits at most on either side (GUM 7.2.6): the larger's decimal
             d = significant_decimals(max(lower, conformity.expanded)) or digits
-            # U₋, U₊ the value to the interval's ends, after clipping (the statement's)
-            minus, plus = printed_half_widths(conformity.value, lower, conformity.expanded)
-            # value ± U the printed interval, each figure in any unit it is read in
-            # (assessment 70 H3, M1)
-            shown = printed_interval_figures(conformity.value, minus, plus, unit, clip=True)
+            plus = printed_half_widths(conformity.value, lower, conformity.expanded)[1]
+            shown = printed_decided_figures(conformity, unit)
+            assert shown is not None  # a half range with its interval
             value = joined([shown["value"], "\n",  # a line each: never broken
                             asymmetric_figures(shown)])
             low, high = shown["low"], shown["high"]
@@ -387,14 +426,13 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
                                                 float(budget.floor), bool(raised and raised[0])),
                               message(QT_TR_NOOP("measured {measured}"),
                                       measured=printed(measured, unit, u=max(lower, plus)))
-                              if f"{measured:.{d}f}" != f"{conformity.value:.{d}f}" else "",
+                              if fixed_places(measured, d) != fixed_places(conformity.value, d)
+                              else "",
                               conformity.quantity], "; ")
         else:
             value = format_uncertain(conformity.value, conformity.expanded, unit)
-            d = significant_decimals(conformity.expanded)
-            if d is not None:  # value ± U the printed interval (assessment 70 M1)
-                shown = printed_interval_figures(conformity.value, conformity.expanded,
-                                                 conformity.expanded, unit)
+            shown = printed_decided_figures(conformity, unit)
+            if shown is not None:  # value ± U the printed interval (assessment 70 M1)
                 value = joined([shown["value"], " ± ", shown["upper"]])
                 low, high = shown["low"], shown["high"]
             else:
@@ -423,7 +461,7 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
     rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
                          p=f"{100 * budget.probability:.2f}"),
                  printed(big_u, unit, rounding="up") if digits is not None and big_u > 0 else
-                 f"{big_u:.{digits}f}{unit}", *padding,
+                 f"{fixed_places(big_u, digits)}{unit}", *padding,
                  message(QT_TR_NOOP("largest over the {points}; k = {k} there"),
                          points=message(points), k=f"{budget.coverage_factor:.2f}")))
     return rows
@@ -478,9 +516,9 @@ def rounded_cells(values, expanded: float, reference_decimals: int,
         d = uncertainty_decimals(expanded)
         shown_u = (stated_pair(float(values[0]), expanded)[1] if len(values) == 1 else
                    rounded_to(expanded, d, "up"))
-        u_text = f"{shown_u:.{d}f}"
-    spec = f"+.{d}f" if signed else f".{d}f"
-    return [format(float(v), spec) for v in values], u_text
+        u_text = fixed_places(shown_u, d)
+    # a zero unsigned, as in every column (assessment 76 L6)
+    return [fixed_places(float(v), d, "+" if signed else "") for v in values], u_text
 
 
 def gum_pair(value: float, expanded: float, unit: str, signed: bool = False,

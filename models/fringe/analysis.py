@@ -58,7 +58,7 @@ from models.messages import (
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.lab_scope import cmc_parameter
-from models.uncertainty.rounding import uncertainty_decimals
+from models.uncertainty.rounding import fixed_places, uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     IssuesCertificates,
@@ -894,11 +894,9 @@ def _with_u(value: float, u: float | None, signed: bool = False) -> str:
         decimals, shown_u = 4, ""
     else:
         decimals = uncertainty_decimals(u)
-        shown_u = f" ± {u:.{decimals}f}"
-    rounded = round(value, decimals)
-    if rounded == 0.0:  # no sign on a zero, and never a negative one
-        return f"{0.0:.{decimals}f}{shown_u}"
-    return f"{rounded:{spec}.{decimals}f}{shown_u}"
+        shown_u = f" ± {fixed_places(u, decimals)}"
+    # no sign on a zero, and never a negative one
+    return f"{fixed_places(value, decimals, spec)}{shown_u}"
 
 
 def _fit_line(name: str, fit: ChannelFit, u: Mapping[str, float] | None) -> Any:

@@ -62,7 +62,7 @@ from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.printed_figure import printed_range_figures
-from models.uncertainty.rounding import printed_range, uncertainty_decimals
+from models.uncertainty.rounding import fixed_places, printed_range, uncertainty_decimals
 from models.uncertainty.tilt_bound_words import TILT_BOUND_ZERO
 from models.workbench import (
     SIGN_CONVENTION,
@@ -858,7 +858,7 @@ def _with_u(value: float, u: float, unit: str) -> tuple[str, str]:
     its decimal (GUM 7.2.6): ("120.0003°", "0.0012°"), never a u of "0.00°"."""
     if not (math.isfinite(u) and u > 0):
         decimals = uncertainty_decimals(u)
-        return f"{value:.{decimals}f}{unit}", f"{u:.{decimals}f}{unit}"
+        return f"{fixed_places(value, decimals)}{unit}", f"{fixed_places(u, decimals)}{unit}"
     from models.uncertainty.printed_figure import printed  # each in any unit it is read in (H3)
 
     return printed(value, unit, u=u), printed(u, unit)

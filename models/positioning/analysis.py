@@ -49,6 +49,7 @@ from models.uncertainty.figure_intervals import FIGURE_VALUE_NOTE, figure_object
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.probability_text import percent_text
+from models.uncertainty.rounding import fixed_places
 from models.uncertainty.wide_intervals import wide_intervals_statement
 from models.workbench import (
     AcceptsRuns,
@@ -649,7 +650,8 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
             d = decimals[key]
             # each end with its unit: shown in µrad or mdeg, both ends are converted (the
             # low end, bare, stayed in arcseconds beside a converted high end)
-            parts += [", " if i else "", f"{key} {iv.low:.{d}f}{sym} … {iv.high:.{d}f}{sym}"]
+            parts += [", " if i else "",
+                      f"{key} {fixed_places(iv.low, d)}{sym} … {fixed_places(iv.high, d)}{sym}"]
             if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
                 parts.append(f" ({percent_text(iv.probability)} %)")
         out.append(joined(parts))

@@ -28,6 +28,7 @@ import numpy as np
 from models.messages import QT_TR_NOOP, message
 from models.readings.resolution import coarse
 from models.uncertainty.iso230 import Iso230Result, iso230_evaluate
+from models.uncertainty.rounding import fixed_places
 
 __all__ = ["DEVIATION_UNITS", "MIN_RUNS", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "STANDARDS",
            "TARGET_UNITS", "PositioningResult", "Vdi3441Result", "evaluate", "figure_text",
@@ -70,7 +71,7 @@ def figure_text(value: float | None, symbol: str, decimals: int = 3) -> str:
     "not evaluated" when the readings could not determine it."""
     if value is None or not math.isfinite(value):
         return message(QT_TR_NOOP("not evaluated"))
-    return f"{value:.{decimals}f}{symbol}"
+    return f"{fixed_places(value, decimals)}{symbol}"
 
 
 def infer_directions(targets: np.ndarray) -> np.ndarray:

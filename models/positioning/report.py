@@ -73,7 +73,7 @@ from models.uncertainty.figure_intervals import (
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.printed_figure import interval_range, printed
 from models.uncertainty.probability_text import percent_text
-from models.uncertainty.rounding import without_interval_decimals
+from models.uncertainty.rounding import fixed_places, without_interval_decimals
 from models.uncertainty.undetermined_repeatability import (
     RUNS_UNDETERMINED,
     RUNS_UNDETERMINED_READINGS,
@@ -512,7 +512,7 @@ def _deviation_text(s: float) -> str:
     if s == 0:
         return "0"  # readings alike (their display's step is then an input of U)
     d = significant_decimals(s)
-    return "—" if d is None else f"{s:.{d}f}"
+    return "—" if d is None else fixed_places(s, d)  # 151 nm is "150" (assessment 76 M1)
 
 
 def _figure_cells(value: float | None, interval: FigureInterval | None,

@@ -26,7 +26,7 @@ from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
 from models.uncertainty.printed_figure import PrintedFigure, printed_range_figures
 from models.uncertainty.probability_text import percent_text
-from models.uncertainty.rounding import uncertainty_decimals
+from models.uncertainty.rounding import fixed_places, uncertainty_decimals
 from models.uncertainty.tilt_bound_words import TILT_BOUND_ZERO
 from models.workbench import (
     SIGN_CONVENTION,
@@ -293,7 +293,7 @@ def _intervals_line(result: TheodoliteResult, printed: Mapping[str, int] | None 
         d = decimals.get(key, 2)  # the figure's, as its value is printed
         # each end with its unit: shown in µrad or mdeg, both ends are converted (the low
         # end, bare, stayed in arcseconds beside a converted high end)
-        parts += [", " if i else "", f"{key} {iv.low:.{d}f}\" … {iv.high:.{d}f}\""]
+        parts += [", " if i else "", f"{key} {fixed_places(iv.low, d)}\" … {fixed_places(iv.high, d)}\""]
         if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
             parts.append(f" ({percent_text(iv.probability)} %)")
     # R, R↑, R↓ of two passes: no interval, and why (audit 68 finding 3)
@@ -399,7 +399,7 @@ def summary(result: TheodoliteResult, printed: int | None = None) -> str:
         decimals = theodolite_figure_decimals(
             result, theodolite_budget(result, CertificateMetadata()), held=False)
         decimals |= getattr(printed, "figures", {})  # the certificate's, where known
-        figs = ", ".join(f"{k} = {v:.{decimals.get(k, 2)}f}\""
+        figs = ", ".join(f"{k} = {fixed_places(v, decimals.get(k, 2))}\""
                          for k, v in result.iso230.figures.items())
         out.append(f"ISO 230-2: {figs}")
         out.append(_intervals_line(result, getattr(printed, "figures", {})))
@@ -527,7 +527,7 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
         return message(
             QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up "
                        "contributed {share} to the raw peak-to-peak"),
-            **corrected, share=f"{share + 0.0:+.{d}f}\"")
+            **corrected, share=f"{fixed_places(share, d, '+')}\"")
 
     def headline(self, r: TheodoliteResult) -> dict[str, float]:
         return {"corrected peak-to-peak (\")": r.corrected_stats.peak_to_peak,

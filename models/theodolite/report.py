@@ -109,6 +109,7 @@ from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.printed_figure import interval_range, printed
 from models.uncertainty.probability_text import percent_text
+from models.uncertainty.rounding import fixed_places
 from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
 __all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
@@ -441,12 +442,12 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
             # positioning's (day 68 F5: "R_up 4.24″" beside an interval 0″ … 443″ withheld);
             # the DCC states it at full precision
             d = decimals[key]
-            rows.append((f"ISO 230-2 {key}", Exact(f"{v:.{d}f}\"", float(v)), message(
+            rows.append((f"ISO 230-2 {key}", Exact(f"{fixed_places(v, d)}\"", float(v)), message(
                 QT_TR_NOOP("no coverage interval: {reason}"), reason=alone[key])))
             continue
         if iv is None:  # no interval at all: to the decimal its readings support (F5)
             said = withheld is None or any(r[2] for r in rows)  # the reason once
-            rows.append((f"ISO 230-2 {key}", Exact(f"{v:.{decimals[key]}f}\"", float(v)),
+            rows.append((f"ISO 230-2 {key}", Exact(f"{fixed_places(v, decimals[key])}\"", float(v)),
                          message(QT_TR_NOOP("no coverage interval")) if said else message(
                 QT_TR_NOOP("no coverage interval: {reason}"), reason=message(withheld))))
             continue

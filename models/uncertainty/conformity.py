@@ -54,6 +54,7 @@ from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import (
     StatedNumber,
     e29_rounded,
+    fixed_places,
     interval_decimals,
     interval_ends,
     significant_decimals,
@@ -157,8 +158,8 @@ def gum_rounded(value: float, expanded: float) -> tuple[str, str]:
     printed U is (issue 39), the value to the same decimal, to the nearest; U of zero gives
     the value to two decimals and U as "0"."""
     decimals = uncertainty_decimals(expanded)
-    u = "0" if expanded == 0 else f"{rounded_to(expanded, decimals, 'up'):.{decimals}f}"
-    return f"{value:.{decimals}f}", u
+    u = "0" if expanded == 0 else fixed_places(rounded_to(expanded, decimals, "up"), decimals)
+    return fixed_places(value, decimals), u
 
 
 def expanded_text(expanded: float, unit: str = "\"", reference: bool | None = None) -> str:
@@ -662,7 +663,7 @@ class ComparedValue:
 
     @property
     def text(self) -> str:
-        return f"{self.value:.{self.decimals}f}{self.symbol}"
+        return f"{fixed_places(self.value, self.decimals)}{self.symbol}"
 
 
 def compared_with_limit(exact: float, shown: float, places: int, t: float,
@@ -1139,7 +1140,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     # the noise's median excess as the printed figures give it, so that "value, the measured
     # m less e" adds up as printed (0.45″ = 0.49″ − 0.04″, not "less 0.05″": the
     # excess 0.0460″ of 0.4918″ − 0.4457″); none, as measured (positioning's E/2)
-    excess = round(float(f"{measured:.{d}f}") - float(f"{x:.{d}f}"), d) + 0.0
+    excess = round(round(measured, d) - round(x, d), d) + 0.0
     # "reaches further below" only where the interval printed does: its U₋ printed above its
     # U₊ and its lower end further from the value than its upper end (until 0.8.18 said of
     # every lower ≥ upper, so of half-widths raised to the CMC and printed ±0.050″ alike)
@@ -1165,7 +1166,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                                    "{low} … {high} (U = {u}, coverage probability {p} %); the "
                                    "measured value lies above it, as noise only widens a "
                                    "measured range. {sentence}"), **said)
-                if float(f"{measured:.{d}f}") > high.shown else
+                if round(measured, d) > high.shown else
                 message(QT_TR_NOOP("Half the peak-to-peak {what}: {value}, the measured {measured} "
                                    "less {excess}, the median amount by which noise widens a "
                                    "measured range. Coverage interval of the true half range "
@@ -1297,8 +1298,8 @@ def asymmetric_figures(shown: dict) -> str:
 
 def asymmetric_text(lower: float, upper: float, q: str, d: int) -> str:
     """An interval's half-widths: "±U" when they agree to the digits shown, else "−a/+b"."""
-    if f"{lower:.{d}f}" == f"{upper:.{d}f}":
-        return f"±{upper:.{d}f}{q}"
+    if fixed_places(lower, d) == fixed_places(upper, d):
+        return f"±{fixed_places(upper, d)}{q}"
     # an interval wholly below the value (a range biased high by noise): its upper end signed
-    upper_text = f"+{upper:.{d}f}" if upper >= 0 else f"−{-upper:.{d}f}"
-    return f"−{lower:.{d}f}{q}/{upper_text}{q}"
+    upper_text = f"+{fixed_places(upper, d)}" if upper >= 0 else f"−{fixed_places(-upper, d)}"
+    return f"−{fixed_places(lower, d)}{q}/{upper_text}{q}"

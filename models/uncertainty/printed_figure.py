@@ -37,7 +37,7 @@ import math
 from typing import cast
 
 from models.quantity import UnitError, unit
-from models.uncertainty.rounding import stated_interval, uncertainty_decimals
+from models.uncertainty.rounding import fixed_places, stated_interval, uncertainty_decimals
 
 __all__ = ["CONVERTED_LIMIT_DIGITS", "PrintedFigure", "PrintedRange", "converted_limit",
            "converted_text", "interval_range", "printed", "printed_interval_figures",
@@ -105,7 +105,7 @@ class PrintedFigure(str):
             shown = round(shown - rounded_to(float(less), places, rounding), places) + 0.0
         text = ("—" if not math.isfinite(shown) else
                 f"{value:{sign}g}{symbol}" if rounding == "g" else
-                f"{shown:{sign}.{places}f}{symbol}")
+                f"{fixed_places(shown, places, sign)}{symbol}")
         figure = super().__new__(cls, text)
         figure.value, figure.u, figure.decimals = value, u, decimals
         figure.rounding, figure.sign, figure.symbol = rounding, sign, symbol
@@ -204,7 +204,7 @@ class ZoneLimit(PrintedFigure):
         factor = unit(self.band.unit_key).size / unit(band.unit_key).size
         symbol = unit(key).written() if self.symbol.strip() else ""
         # the zones' decimal beside U's as it was, in the unit read (U's own there)
-        decimals = max(0, self.decimals + band.places - self.band.places)
+        decimals = self.decimals + band.places - self.band.places
         return ZoneLimit(self.limit * factor, band, self.side, symbol, decimals)
 
 

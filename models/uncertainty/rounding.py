@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["StatedNumber", "e29_rounded", "interval_decimals", "interval_ends", "printed_range",
-           "significant_decimals", "stated_decimals", "stated_interval", "stated_pair",
-           "uncertainty_decimals", "without_interval_decimals"]
+__all__ = ["StatedNumber", "e29_rounded", "fixed_places", "interval_decimals", "interval_ends",
+           "printed_range", "significant_decimals", "stated_decimals", "stated_interval",
+           "stated_pair", "uncertainty_decimals", "without_interval_decimals", "written_places"]
 
 
 def significant_decimals(expanded: float) -> int | None:
@@ -24,7 +24,28 @@ def significant_decimals(expanded: float) -> int | None:
     up = round(units) if abs(units - round(units)) < 1e-9 else math.ceil(units)
     if up >= 100:
         decimals -= 1  # rounding up carried into a third digit
-    return max(0, decimals)
+    return decimals
+
+
+def written_places(decimals: int) -> int:
+    """The places after the point a figure rounded to ``decimals`` is written with: none
+    where ``decimals`` is negative (a figure rounded to the tens, "170")."""
+    return max(0, int(decimals))
+
+
+def fixed_places(value: float, decimals: int, sign: str = "") -> str:
+    """``value`` rounded to ``decimals`` (to the nearest; negative: to the tens, hundreds …,
+    :func:`significant_decimals`) and written in fixed notation with
+    :func:`written_places` places ("170" for 168.3 at −1, "+0.40" for 0.397 at 2), ``sign``
+    "+" to sign it. A figure that rounds to zero has no sign, "0.0" (never "-0.0", nor
+    "+0.0" with ``sign``): zero is neither positive nor negative, and one convention holds
+    in every column (assessment 76 L6: a results table printed "0.0" at θ = −2° and "+0.0"
+    at the reference point). A value that is not finite is written as Python writes it
+    ("nan")."""
+    if not math.isfinite(value):
+        return f"{value:{sign}}"
+    shown = round(float(value), int(decimals)) + 0.0
+    return f"{shown:{'' if shown == 0.0 else sign}.{written_places(decimals)}f}"
 
 
 def uncertainty_decimals(expanded: float) -> int:
@@ -53,7 +74,7 @@ def without_interval_decimals(scatter: float, step: float | None) -> int:
     show no scatter; three decimals where neither is known. Day review 68 F5: such a figure
     was printed to 0.001″ beside figures with intervals printed to 1″."""
     first = significant_decimals(scatter) if math.isfinite(scatter) else None
-    shown = [d for d in (None if first is None else max(0, first - 1), _step_decimals(step))
+    shown = [d for d in (None if first is None else first - 1, _step_decimals(step))
              if d is not None]
     return min(shown) if shown else 3
 
@@ -94,11 +115,11 @@ def printed_range(low: float, high: float, decimals: int) -> tuple[str, str, str
     """A range as it is printed ("-1.08", "-0.10", "0.98"), the window's and the
     certificate's alike: its ends signed, to ``decimals``, and the peak-to-peak the
     difference of the ends as printed, so that it adds up as printed (2.65 for the ends
-    -2.12 and +0.53, whatever the unrounded 2.64…). Never "-0.00": a zero is "+0.00"."""
-    a, b = (f"{v:+.{decimals}f}" for v in (low, high))
-    a, b = ("+" + t[1:] if t.startswith("-") and float(t) == 0.0 else t for t in (a, b))
+    -2.12 and +0.53, whatever the unrounded 2.64…). A zero has no sign, "0.00"
+    (:func:`fixed_places`; until 0.8.24 "+0.00")."""
+    a, b = (fixed_places(v, decimals, "+") for v in (low, high))
     ptp = round(float(b) - float(a), decimals) + 0.0
-    return a, b, f"{ptp:.{decimals}f}"
+    return a, b, fixed_places(ptp, decimals)
 
 
 def _on_grid(value: float, decimals: int, towards) -> float:

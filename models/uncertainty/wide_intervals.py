@@ -19,7 +19,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from models.messages import QT_TR_NOOP, Message, message, separated
-from models.uncertainty.rounding import interval_decimals, interval_ends
+from models.uncertainty.rounding import fixed_places, interval_decimals, interval_ends
 
 __all__ = ["FAR_ABOVE", "SIGMA_FIGURES", "far_above", "wide_intervals_statement"]
 
@@ -75,7 +75,9 @@ def wide_intervals_statement(figures: Mapping[str, float], intervals: Mapping, r
         iv = intervals[key]
         d = interval_decimals(iv.low, iv.high)
         low, high = interval_ends(iv.low, iv.high, d) if outwards else (iv.low, iv.high)
-        listed.append(message(FIGURE, figure=key, value=f"{figures[key]:.{d}f}{symbol}",
-                              low=f"{low:.{d}f}{symbol}", high=f"{high:.{d}f}{symbol}"))
+        listed.append(message(FIGURE, figure=key,
+                              value=f"{fixed_places(figures[key], d)}{symbol}",
+                              low=f"{fixed_places(low, d)}{symbol}",
+                              high=f"{fixed_places(high, d)}{symbol}"))
     return message(PASSES if passes else RUNS, runs=runs, nu=runs - 1,
                    figures=separated(listed, ", "))

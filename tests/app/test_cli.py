@@ -1,4 +1,5 @@
 import json
+import math
 import subprocess
 import sys
 
@@ -174,10 +175,15 @@ def test_unit_option_converts_the_summary_and_the_results(capsys, samples_dir, t
     # the details' sheet: *Report*, these details listing no standard (assessment 73 L4)
     meta_a = {row[0].value: row[1].value for row in a["Report"].iter_rows()}
     meta_m = {row[0].value: row[1].value for row in m["Report"].iter_rows()}
-    assert meta_m["Expanded uncertainty U, largest (mdeg)"] == pytest.approx(
-        meta_a["Expanded uncertainty U, largest (\")"] / 3.6)
     code, out, _ = run_cli(capsys, "theodolite", sample, "--unit", "mdeg", "--json")
     assert "corrected_error_arcsec" in json.loads(out)
+    # the sheet's U is the certificate's as printed (assessment 76 M4), in each unit rounded
+    # there from the unrounded U, up to two significant digits: 1.4773″ is 1.5″ and
+    # 0.41036 mdeg is 0.42 mdeg (not 1.5″ converted, 0.4167 mdeg)
+    u = max(json.loads(out)["expanded_uncertainty_corrected_error_arcsec"])
+    assert meta_a["Expanded uncertainty U, largest (\")"] == math.ceil(u * 10) / 10 == 1.5
+    assert meta_m["Expanded uncertainty U, largest (mdeg)"] == math.ceil(u / 3.6 * 100) / 100
+    assert meta_m["Expanded uncertainty U, largest (mdeg)"] == 0.42
 
 
 @pytest.mark.slow

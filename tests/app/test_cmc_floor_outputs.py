@@ -114,9 +114,13 @@ def test_the_decided_interval_is_held_to_the_cmc_in_every_output(issued):
     assert f"Probability of a false acceptance at this decision: {100 * risk:.2f} %" in pdf
     sheet = issued["xlsx"]["Certificate"]
     rows = {row[0]: row[1] for row in sheet.iter_rows(values_only=True) if row and row[0]}
-    assert rows['U of the decided value, below it (U−) (")'] == CMC
+    # the sheet states the figures the certificate prints (assessment 76 M4): U₋ the printed
+    # value where the lower end is held at 0, U₊ the CMC, the ends the printed value ∓ them
+    assert rows['Decided value (")'] == shown
+    assert rows['U of the decided value, below it (U−) (")'] == minus
     assert rows['U of the decided value, above it (U+) (")'] == CMC
-    assert rows['Decided value: interval high (")'] == pytest.approx(x + CMC, abs=1e-12)
+    assert rows['Decided value: interval low (")'] == low
+    assert rows['Decided value: interval high (")'] == high
     dcc = issued["dcc"]
     figures = {
         q.findtext("dcc:name/dcc:content", namespaces=NS): float(q.findtext(

@@ -25,16 +25,18 @@ SYMBOL = {"arcsec": "\"", "urad": " µrad", "mdeg": " mdeg"}
 
 def _two_significant(u: float) -> int:
     """Decimals that show u with two significant digits after rounding it UP, as every
-    printed U is (9.93 shows as 10, not 10.0), never negative."""
+    printed U is (9.93 shows as 10, not 10.0); negative from 100 on (137 shows as 140, to
+    the tens: assessment 76 M1)."""
     d = 1 - math.floor(math.log10(u))
     if float(Decimal(repr(u)).quantize(Decimal(1).scaleb(-d), ROUND_CEILING)) >= 10.0 ** (2 - d):
         d -= 1
-    return max(0, d)
+    return d
 
 
 def _fixed(x: float, d: int, how=ROUND_HALF_EVEN) -> str:
     q = Decimal(repr(x)).quantize(Decimal(1).scaleb(-d), how)
-    return f"{q:.{d}f}" if q != 0 else f"{0:.{d}f}"
+    places = max(0, d)
+    return f"{q:.{places}f}" if q != 0 else f"{0:.{places}f}"
 
 
 def _off_the_edge(x: float, d: int) -> bool:
@@ -82,7 +84,9 @@ def test_a_decided_interval_reads_value_plus_minus_u_in_every_unit(value, lower,
                    ANGLE_UNITS[key])
     v, lo, up, a, b = (Decimal(t) for t in re.findall(r"-?\d+(?:\.\d+)?", text))
     d = _two_significant(max(lower, upper) * f)
-    assert -v.as_tuple().exponent == d or d == 0
+    # written with d decimals; none from the tens on (d ≤ 0), each figure then on U's grid
+    assert -v.as_tuple().exponent == max(0, d)
+    assert all(x % Decimal(1).scaleb(-d) == 0 for x in (v, lo, up, a, b))
     assert v - lo == a and v + up == b
     assume(all(_off_the_edge(x * f, d) for x in (value, lower, upper, value - lower,
                                                    value + upper)))

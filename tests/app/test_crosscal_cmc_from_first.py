@@ -180,7 +180,8 @@ def test_the_certificate_prints_u_from_face1_held_to_the_cmc(issued):
     assert [r[5] for r in rows] == [u_beside(x, CMC_POLYGON) for x in d1[1:]]
     assert [r[3] for r in rows] == [u_beside(x, CMC_POLYGON) for x in deviation[1:]]
     assert [r[4] for r in rows] == [f"{x:+.2f}" for x in d1[1:]]
-    assert re.search(r"^\s*1\s+0\.0000\s+[+-]\d\.\d\d\s+0\.1\d\s+\+0\.00\s*$", text, re.M)
+    # face 1 from face 1: zero, unsigned (assessment 76 L6)
+    assert re.search(r"^\s*1\s+0\.0000\s+[+-]\d\.\d\d\s+0\.1\d\s+0\.00\s*$", text, re.M)
     flat = " ".join(text.split())
     assert flat.count("reference point, by") == 1  # face 1's U (the layout wraps it)
     assert "U(x_j − x_i), is at most 0.10\"." in flat  # two significant digits (GUM 7.2.6)

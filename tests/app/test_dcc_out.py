@@ -231,8 +231,9 @@ def test_the_cross_calibrations_u_is_one_figure_in_json_certificate_and_dcc(issu
     assert 0.03 < u.max() < 0.04  # the comparator's 0.1″ (k = 2) per reading is in
     text = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True,
                           text=True).stdout
-    rows = re.findall(r"^\s+(\d+)\s+(\d+\.\d{4})\s+([+\-]\d\.\d{3})\s+(\d\.\d{3})\s+"
-                      r"([+\-]\d\.\d{3})\s*(\d\.\d{3})?", text, re.M)
+    # signed, a zero unsigned (assessment 76 L6)
+    rows = re.findall(r"^\s+(\d+)\s+(\d+\.\d{4})\s+([+\-]?\d\.\d{3})\s+(\d\.\d{3})\s+"
+                      r"([+\-]?\d\.\d{3})\s*(\d\.\d{3})?", text, re.M)
     assert len(rows) == 12
     # each U as printed beside its figure (two significant digits rounded up, the figure ± U
     # holding the computed interval: issue 39)

@@ -125,11 +125,26 @@ def test_positioning_in_urad_read_in_arcsec(capsys, samples_dir, tmp_path):
     text = sheet["Conformity"]
     per_urad = 0.004 * 3600 * PER_ARCSEC_URAD
     assert f"±0.004° ({per_urad:.6g} µrad)" in text and "14.4" not in text
-    u = sheet["U of the decided value, above it (U+) (\")"] * PER_ARCSEC_URAD
-    d = 1 - math.floor(math.log10(u))
-    d -= round(u, d) >= 10.0 ** (2 - d)
+    assert main(["analyze", "positioning", str(samples_dir / "positioning_sample.csv"),
+                 "--misalignment-u", "0.2", "--reference-resolution", "0.1",
+                 "--temperature-u", "0.2", "--deviation-unit", "urad", "--metadata", details,
+                 "--json"]) == 0
+    decided = json.loads(capsys.readouterr().out)["decided_quantity"]
+    value, u = abs(decided["value"]), decided["interval_high"] - decided["value"]
+
+    def two_digits(u: float) -> int:
+        d = 1 - math.floor(math.log10(u))
+        return d - (round(u, d) >= 10.0 ** (2 - d))
+
+    d = two_digits(u)
     found = re.search(r"\|e\| = ([\d.]+) µrad, U = ([\d.]+) µrad", text)
     assert found, text
-    value = abs(sheet["Decided value (\")"]) * PER_ARCSEC_URAD
     assert found.group(1) == f"{value:.{d}f}"
     assert found.group(2) == str(Decimal(repr(u)).quantize(Decimal(1).scaleb(-d), ROUND_CEILING))
+    # the sheet's figures in arcseconds: the same decided value and U read there, converted
+    # from their values and rounded there as the certificate prints them (assessment 76 M4)
+    value, u = value / PER_ARCSEC_URAD, u / PER_ARCSEC_URAD
+    d = two_digits(u)
+    assert abs(sheet["Decided value (\")"]) == round(value, d)
+    assert sheet["U of the decided value, above it (U+) (\")"] == float(
+        Decimal(repr(u)).quantize(Decimal(1).scaleb(-d), ROUND_CEILING))

@@ -11,6 +11,7 @@ import dataclasses
 import pytest
 
 from models.certificate.metadata import CertificateMetadata
+from tests.models.certificate.test_u_of_a_hundred_or_more import nm_axis
 
 pytestmark = pytest.mark.slow  # a window
 
@@ -60,3 +61,17 @@ def test_details_no_certificate_can_be_made_with_are_said_in_the_window(window):
     shown = presenter.view.verdict.text()
     assert "No statement of conformity: the certificate details give a tolerance of ±3\"" \
         in shown, shown
+
+
+def test_the_window_prints_the_decided_interval_as_the_certificate_in_nm(tmp_path):
+    """A linear axis in nm (assessment 76 M1): the window's line gives the decided value and
+    its interval as the certificate prints them, 1000 nm and 770 … 1230 nm (U = 230 nm,
+    rounded up to two significant digits), not the interval rounded on its own
+    ([780, 1220] nm; until 0.8.24 [776, 1219] nm beside the certificate's 776 … 1220 nm)."""
+    from widgets.workbench_presenter import conformity_text
+
+    _, document = nm_axis(tmp_path)
+    assert "770 nm … 1230 nm" in str(document.conformity.statement) or any(
+        "770 nm … 1230 nm" in str(cell) for row in document.statistics.rows for cell in row)
+    assert conformity_text(document.conformity).endswith(
+        "Decided value 1000 nm, interval [770, 1230] nm.")

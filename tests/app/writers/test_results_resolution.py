@@ -1,6 +1,6 @@
 """The XLSX *Results* sheet and the results CSV write each point's figures three decimals
 finer than the certificate prints them, not their binary noise (a correction of
--3.456836534665442e-05″ where +0.00″ is printed), and never change a printed figure; the CSV
+-3.456836534665442e-05″ where 0.00″ is printed), and never change a printed figure; the CSV
 holds the sheet's figures (day review 65: it wrote ten significant digits, -3.456836535e-05)."""
 
 from __future__ import annotations
@@ -93,7 +93,7 @@ def test_the_sheet_rounds_to_every_printed_figure(key):
 
 def _noisy(key: str):
     """The workbench's certificate, a correction of it the float noise of a reference-near
-    one (the certificate prints +0.00″ or +0.0″ there)."""
+    one (the certificate prints 0.00″ or 0.0″ there)."""
     kind, result = _analysed(key)
     document = kind.certificate_document(result, _meta(key))
     noisy = dict(document.point_columns)["correction_arcsec"].copy()

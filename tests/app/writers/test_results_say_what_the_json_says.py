@@ -192,10 +192,18 @@ def test_no_probability_of_conformity_where_the_json_withholds_it(issued):
     assert sheet["Probability of a wrong decision (%)"] is None
     assert sheet["Verdict"] == "not assessed"
     assert "not traceable" in sheet["No statement of conformity because"]
-    # the decided value and its interval are stated in both, the same figures
-    assert sheet["Decided value (\")"] == pytest.approx(decided["value"], abs=1e-12)
-    assert sheet["Decided value: interval low (\")"] == pytest.approx(decided["interval_low"])
-    assert sheet["Decided value: interval high (\")"] == pytest.approx(decided["interval_high"])
+    # the decided value and its interval are stated in both: the sheet as the certificate
+    # prints them (assessment 76 M4), the JSON unrounded; the one the other rounded to U's
+    # second significant digit (the ends the printed value ∓ the printed U: within 1.5 digits)
+    digit = 10.0 ** (math.floor(math.log10(sheet["U of the decided value, above it (U+) (\")"]))
+                     - 1)
+    assert sheet["Decided value (\")"] == pytest.approx(round(decided["value"], -round(
+        math.log10(digit))), abs=1e-12)
+    assert sheet["Decided value (\")"] != decided["value"]
+    assert sheet["Decided value: interval low (\")"] == pytest.approx(decided["interval_low"],
+                                                                      abs=1.5001 * digit)
+    assert sheet["Decided value: interval high (\")"] == pytest.approx(decided["interval_high"],
+                                                                       abs=1.5001 * digit)
 
 
 @pytest.mark.parametrize("case", ["linear", "theodolite"])

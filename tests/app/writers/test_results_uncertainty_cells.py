@@ -38,9 +38,38 @@ def test_xlsx_holds_value_and_u_as_numbers_and_the_decision_figures():
     assert rows[2][1:4] == [0.407, 0.094, 0.094]
     assert rows[3][1:4] == [0.41, 0.12, 0.14]
     certificate = {r[0]: r[1] for r in book["Certificate"].iter_rows(values_only=True)}
-    c = doc.conformity
-    assert certificate["Decided value: interval low (\")"] == pytest.approx(c.interval_low)
-    assert certificate["Decided value: interval high (\")"] == pytest.approx(c.interval_high)
+    # U and the decided figures as the certificate prints them (assessment 76 M4: the sheet
+    # gave U = 1.4773″ and the interval's end 1.4482″ beside the 1.5″ and 1.45″ printed)
+    decided = next(row for row in doc.statistics.rows if row[0].startswith("Decided"))
+    assert decided[1] == "0.94\"\n−0.94\"/+0.51\"" and decided[2].startswith(
+        "interval 0.00\" … 1.45\";")
+    assert certificate["Decided value (\")"] == 0.94
+    assert certificate["U of the decided value, below it (U−) (\")"] == 0.94
+    assert certificate["U of the decided value, above it (U+) (\")"] == 0.51
+    assert certificate["Decided value: interval low (\")"] == 0.0
+    assert certificate["Decided value: interval high (\")"] == 1.45
+    assert doc.expanded_uncertainty == pytest.approx(1.4773, abs=1e-4)
+    assert certificate["Expanded uncertainty U, largest (\")"] == 1.5
     assert certificate["Decided value: coverage probability (%)"] == pytest.approx(95.45, abs=0.01)
     risk = certificate["Probability of a wrong decision (%)"]  # "< 0.01" as the PDF's
     assert risk == "< 0.01" or 0.01 <= risk <= 100
+
+
+def test_the_certificate_sheet_read_in_urad_rounds_there_as_the_certificate_does():
+    """In µrad the sheet's U and decided figures are the certificate's read in µrad, rounded
+    there from their values (1.4773″ = 7.162 µrad → U = 7.2 µrad; 0.9409″ = 4.562 µrad with
+    U₋ 4.562, U₊ 2.459 µrad → 4.6, 4.6, 2.5 µrad, the interval 0 … 7.1 µrad), never the
+    arcsecond figures converted (1.5″ = 7.27 µrad) nor unrounded (assessment 76 M4)."""
+    from models.display_units import ANGLE_UNITS
+
+    kind, result = _analysed("theodolite")
+    doc = kind.certificate_document(result, META)
+    book = load_workbook(io.BytesIO(results_xlsx_bytes(doc, unit=ANGLE_UNITS["urad"])))
+    sheet = {r[0].value: r[1] for r in book["Certificate"].iter_rows()}
+    figures = {name: (sheet[name].value, sheet[name].number_format) for name in (
+        "Expanded uncertainty U, largest (µrad)", "Decided value (µrad)",
+        "U of the decided value, below it (U−) (µrad)",
+        "U of the decided value, above it (U+) (µrad)", "Decided value: interval low (µrad)",
+        "Decided value: interval high (µrad)")}
+    assert list(figures.values()) == [(7.2, "0.0"), (4.6, "0.0"), (4.6, "0.0"), (2.5, "0.0"),
+                                      (0, "0.0"), (7.1, "0.0")]

@@ -71,7 +71,8 @@ def test_each_figure_is_printed_to_the_decimal_of_its_own_u():
     assert doc.results.header == ("Point", "Error (\")", "Correction (\")", "U (\")")
     # U = 0: the figures to the decimal of the median positive U (0.83″ → 2 decimals)
     assert doc.results.rows == [
-        ("A", "+0.00", "+0.00", "reference point, by definition"),
+        # a zero unsigned, as a figure that rounds to zero elsewhere (assessment 76 L6)
+        ("A", "0.00", "0.00", "reference point, by definition"),
         ("B", "+1.23", "-0.50", "0.46"),
         ("C", "-2.5", "+0.2", "1.2"),  # 0.25 to one decimal: round half to even
     ]

@@ -191,5 +191,6 @@ def test_sample_json_and_certificate_agree_at_the_zero_reading(capsys, samples_d
     assert "U is zero at face 1 of set 1" not in text
     assert "U is zero only at the zero reading, face 1 of set 1" in text
     assert "its error and its U are not zero" in text
-    # U to two significant digits and the error to the same decimal (GUM 7.2.6)
-    assert re.search(r"\b1 0\.000 -0\.10 \+0\.00 -0\.10 0\.13\b", text), text
+    # U to two significant digits and the error to the same decimal (GUM 7.2.6); a zero
+    # correction unsigned (assessment 76 L6)
+    assert re.search(r"\b1 0\.000 -0\.10 0\.00 -0\.10 0\.13\b", text), text
