@@ -24,6 +24,7 @@ from models.certificate.document import (
     Table,
     decision_rows,
     rounded_cells,
+    rounded_figure,
     table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata
@@ -65,7 +66,7 @@ def figure_column(header: str, values, expanded) -> Column:
     """Each point's figure, signed, to the decimal of its U (two significant digits); a point
     whose U is zero (a reference point) or not finite to the table's reference decimal."""
     pairs = list(zip(values, expanded, strict=True))
-    return Column(header, lambda shown: [rounded_cells((v,), u, shown)[0][0] for v, u in pairs])
+    return Column(header, lambda shown: [rounded_figure(v, u, shown) for v, u in pairs])
 
 
 def difference_column(header: str, values, less, expanded, less_expanded=None) -> Column:
@@ -78,13 +79,17 @@ def difference_column(header: str, values, less, expanded, less_expanded=None) -
     +0.01″ and one correction two ways in one table (#61 assessor's re-check, N1)."""
     less_expanded = expanded if less_expanded is None else less_expanded
     rows = list(zip(values, less, expanded, less_expanded, strict=True))
+    made: dict[int, list[tuple[str, str, str, int]]] = {}  # the cells and the note's check
 
     def printed(shown: int) -> list[tuple[str, str, str, int]]:
+        if shown in made:
+            return made[shown]
         out = []
         for v, w, u, uw in rows:
-            a, b = rounded_cells((v,), u, shown)[0][0], rounded_cells((w,), uw, shown)[0][0]
+            a, b = rounded_figure(v, u, shown), rounded_figure(w, uw, shown)
             d = min(len(a.partition(".")[2]), len(b.partition(".")[2]))
             out.append((a, b, format(round(float(v) - float(w), d) + 0.0, f"+.{d}f"), d))
+        made[shown] = out
         return out
 
     def cells(shown: int) -> list[str]:

@@ -45,6 +45,7 @@ from models.uncertainty.rounding import printed_range, stated_pair
 
 __all__ = ["CertificateDocument", "Exact", "decision_rows", "PlotFigure", "PlotSeries", "Table",
            "budget_table", "format_uncertain", "gum_pair", "range_cells", "rounded_cells",
+           "rounded_figure",
            "table_decimals", "opinion",
            "reference_standard_components", "resolution_component"]
 
@@ -474,13 +475,23 @@ def rounded_cells(values, expanded: float, reference_decimals: int,
     if expanded == 0 or not math.isfinite(expanded):
         d = reference_decimals
         u_text = message(REFERENCE_POINT_TEXT) if expanded == 0 else "—"
+    elif len(values) == 1:
+        _, shown_u, d = stated_pair(float(values[0]), expanded)
+        u_text = f"{shown_u:.{d}f}"
     else:
         d = uncertainty_decimals(expanded)
-        shown_u = (stated_pair(float(values[0]), expanded)[1] if len(values) == 1 else
-                   rounded_to(expanded, d, "up"))
-        u_text = f"{shown_u:.{d}f}"
+        u_text = f"{rounded_to(expanded, d, 'up'):.{d}f}"
     spec = f"+.{d}f" if signed else f".{d}f"
     return [format(float(v), spec) for v in values], u_text
+
+
+def rounded_figure(value: float, expanded: float, reference_decimals: int) -> str:
+    """:func:`rounded_cells`' cell of one figure, signed, without its U: to the decimal of
+    ``expanded`` (two significant digits), or ``reference_decimals`` where U is zero or not
+    finite (a results table's column of figures: no U worked out for each cell)."""
+    d = (reference_decimals if expanded == 0 or not math.isfinite(expanded)
+         else uncertainty_decimals(expanded))
+    return format(float(value), f"+.{d}f")
 
 
 def gum_pair(value: float, expanded: float, unit: str, signed: bool = False,
