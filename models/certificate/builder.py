@@ -24,6 +24,7 @@ from models.certificate.document import (
     Table,
     decision_rows,
     rounded_cells,
+    rounded_figure,
     table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata
@@ -65,7 +66,7 @@ def figure_column(header: str, values, expanded) -> Column:
     """Each point's figure, signed, to the decimal of its U (two significant digits); a point
     whose U is zero (a reference point) or not finite to the table's reference decimal."""
     pairs = list(zip(values, expanded, strict=True))
-    return Column(header, lambda shown: [rounded_cells((v,), u, shown)[0][0] for v, u in pairs])
+    return Column(header, lambda shown: [rounded_figure(v, u, shown) for v, u in pairs])
 
 
 def difference_column(header: str, values, less, expanded, less_expanded=None) -> Column:
@@ -78,8 +79,11 @@ def difference_column(header: str, values, less, expanded, less_expanded=None) -
     +0.01″ and one correction two ways in one table (#61 assessor's re-check, N1)."""
     less_expanded = expanded if less_expanded is None else less_expanded
     rows = list(zip(values, less, expanded, less_expanded, strict=True))
+    made: dict[int, list[tuple[str, str, str, int]]] = {}  # the cells and the note's check
 
     def printed(shown: int) -> list[tuple[str, str, str, int]]:
+        if shown in made:
+            return made[shown]
         out = []
         for v, w, u, uw in rows:
             a, b = rounded_cells((v,), u, shown)[0][0], rounded_cells((w,), uw, shown)[0][0]
@@ -87,6 +91,7 @@ def difference_column(header: str, values, less, expanded, less_expanded=None) -
             # more: assessment 76 M1), not read from their text
             d = min(_cell_decimals(u, shown), _cell_decimals(uw, shown))
             out.append((a, b, fixed_places(float(v) - float(w), d, "+"), d))
+        made[shown] = out
         return out
 
     def cells(shown: int) -> list[str]:

@@ -45,7 +45,7 @@ from models.uncertainty.rounding import fixed_places, printed_range, stated_pair
 
 __all__ = ["CertificateDocument", "Exact", "decision_rows", "PlotFigure", "PlotSeries", "Table",
            "budget_table", "format_uncertain", "gum_pair", "printed_decided_figures",
-           "range_cells", "rounded_cells", "table_decimals", "opinion",
+           "range_cells", "rounded_cells", "rounded_figure", "table_decimals", "opinion",
            "reference_standard_components", "resolution_component"]
 
 
@@ -519,6 +519,15 @@ def rounded_cells(values, expanded: float, reference_decimals: int,
         u_text = fixed_places(shown_u, d)
     # a zero unsigned, as in every column (assessment 76 L6)
     return [fixed_places(float(v), d, "+" if signed else "") for v in values], u_text
+
+
+def rounded_figure(value: float, expanded: float, reference_decimals: int) -> str:
+    """:func:`rounded_cells`' cell of one figure, signed, without its U: to the decimal of
+    ``expanded`` (two significant digits), or ``reference_decimals`` where U is zero or not
+    finite (a results table's column of figures: no U worked out for each cell)."""
+    d = (reference_decimals if expanded == 0 or not math.isfinite(expanded)
+         else uncertainty_decimals(expanded))
+    return fixed_places(float(value), d, "+")
 
 
 def gum_pair(value: float, expanded: float, unit: str, signed: bool = False,

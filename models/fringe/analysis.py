@@ -746,9 +746,10 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         unit, period = "nm", float(s["period_nm"])
     else:
         unit, period = "arcsec", period_arcsec(lines)
-    _check_compensable(sin_fit, cos_fit)
+    figure = _fitted_figure(sin_fit, cos_fit)  # (the two checks' one figure)
+    _check_compensable(sin_fit, cos_fit, figure)
     table = build_correction_table(sin_fit, cos_fit, int(s["lut_size"]), zero=str(s["table_zero"]))
-    _check_compensates(sin_fit, cos_fit, table)
+    _check_compensates(sin_fit, cos_fit, table, figure)
     measured = np.arctan2(u_sin, u_cos)
     to_unit = period / TWO_PI
     raw = interpolation_error_rad(measured, theta) * to_unit
@@ -780,7 +781,10 @@ MAX_MODEL_RESIDUAL_SHARE = 0.5
 MAX_MODEL_RESIDUAL_PERIOD = 0.01
 
 
-def _fitted_figure(sin_fit: ChannelFit, cos_fit: ChannelFit, samples: int = 4096):
+def _fitted_figure(sin_fit: ChannelFit, cos_fit: ChannelFit, samples: int = 4096
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(phases, the fitted sin channel, the fitted cos channel) over a period: the Lissajous
+    figure the checks below judge (made once for both: ~0.5 ms of a record's analysis)."""
     dense = np.linspace(0.0, TWO_PI, samples, endpoint=False)
     return dense, model_signal(dense, sin_fit), model_signal(dense, cos_fit)
 
@@ -790,11 +794,13 @@ def _volts(value: float, sign: str = "") -> str:
     return text.replace("-0.000", "+0.000") if sign else text
 
 
-def _check_compensable(sin_fit: ChannelFit, cos_fit: ChannelFit) -> None:
+def _check_compensable(sin_fit: ChannelFit, cos_fit: ChannelFit,
+                       figure: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None) -> None:
     """Refuse a compensation over the measured phase atan2(u_sin, u_cos) where that phase
     does not turn once, forward, a period: the fitted Lissajous figure must circle 0 V (an
-    offset larger than the amplitude leaves the origin outside) without looping back."""
-    _, model_sin, model_cos = _fitted_figure(sin_fit, cos_fit)
+    offset larger than the amplitude leaves the origin outside) without looping back
+    (``figure``: :func:`_fitted_figure` of the fits, when made)."""
+    _, model_sin, model_cos = _fitted_figure(sin_fit, cos_fit) if figure is None else figure
     measured = np.arctan2(model_sin, model_cos)
     steps = np.diff(np.concatenate([measured, measured[:1]]))
     steps = (steps + math.pi) % TWO_PI - math.pi
@@ -816,10 +822,11 @@ def _check_compensable(sin_fit: ChannelFit, cos_fit: ChannelFit) -> None:
             "compensate"), **figures))
 
 
-def _check_compensates(sin_fit: ChannelFit, cos_fit: ChannelFit, table) -> None:
+def _check_compensates(sin_fit: ChannelFit, cos_fit: ChannelFit, table,
+                       figure: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None) -> None:
     """The proof: the table applied to the fitted signals removes their error (else refused,
-    with the figures)."""
-    dense, model_sin, model_cos = _fitted_figure(sin_fit, cos_fit)
+    with the figures; ``figure`` as :func:`_check_compensable`'s)."""
+    dense, model_sin, model_cos = _fitted_figure(sin_fit, cos_fit) if figure is None else figure
     measured = np.arctan2(model_sin, model_cos)
     before = float(np.ptp(interpolation_error_rad(measured, dense)))
     after = float(np.ptp(interpolation_error_rad(table.compensate(measured), dense)))

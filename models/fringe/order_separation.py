@@ -22,6 +22,7 @@ what a phase noise of the stated reference's u could make (:data:`NOISE_MARGIN` 
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -213,7 +214,37 @@ def separated_up_to(theta_rad: np.ndarray, highest: int, phase_u_rad: float = 0.
     apart at the phases ``theta_rad`` (each single order and pair at least its
     :func:`required_separation`, the design's :func:`variance_inflation` at most
     1/SEPARATION_MIN²); 0 when not even order 1 is. ``weights``: samples at each phase,
-    when ``theta_rad`` are distinct phases."""
+    when ``theta_rad`` are distinct phases.
+
+    Up to :data:`KEPT_PHASES` phases, the answer is kept for the phases, weights and u last
+    asked about (:func:`_kept_separated_up_to`): N equal steps are the same N phases in every
+    record of a design, and their answer, worked out again, took a fifth of a record's
+    analysis (the same answer: it is made from those figures alone)."""
+    theta = np.asarray(theta_rad, dtype=float)
+    w = None if weights is None else np.asarray(weights, dtype=float)
+    if theta.size > KEPT_PHASES or (w is not None and w.size > KEPT_PHASES):
+        return _separated_up_to(theta, highest, phase_u_rad, w)
+    return _kept_separated_up_to(theta.tobytes(), theta.shape, highest, phase_u_rad,
+                                 None if w is None else (w.tobytes(), w.shape))
+
+
+#: the most phases whose :func:`separated_up_to` is kept (32 kB of key)
+KEPT_PHASES = 4096
+
+
+@functools.lru_cache(maxsize=64)
+def _kept_separated_up_to(theta: bytes, shape: tuple[int, ...], highest: int,
+                          phase_u_rad: float, weights: tuple[bytes, tuple[int, ...]] | None
+                          ) -> int:
+    """:func:`_separated_up_to` of the phases (and weights) given as their bytes."""
+    return _separated_up_to(
+        np.frombuffer(theta).reshape(shape), highest, phase_u_rad,
+        None if weights is None else np.frombuffer(weights[0]).reshape(weights[1]))
+
+
+def _separated_up_to(theta_rad: np.ndarray, highest: int, phase_u_rad: float,
+                     weights: np.ndarray | None) -> int:
+    """:func:`separated_up_to`, worked out."""
     orders = tuple(range(highest + 1))
     gram = order_gram(theta_rad, orders, weights)
     for top in range(highest, 0, -1):

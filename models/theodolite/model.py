@@ -237,18 +237,25 @@ def setups_from_coefficients(a: float, b: float, c: float) -> list[SetupParamete
     return [p.canonical() for p in out]
 
 
-def _elevation_model(params_rad: np.ndarray, theta_rad: np.ndarray) -> np.ndarray:
+def _elevation_model(params_rad: np.ndarray, theta_rad: np.ndarray,
+                     cos_sin: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
+    """The elevations (rad) of the set-up ``params_rad`` (ψ, α, β) at ``theta_rad``;
+    ``cos_sin``: cos θ and sin θ when the caller has them (a fit calls this for one θ a
+    dozen times: the same values)."""
     psi, alpha, beta = params_rad
     cp, sp, ca, sa, cb, sb = (
         math.cos(psi), math.sin(psi), math.cos(alpha), math.sin(alpha),
         math.cos(beta), math.sin(beta),
     )
+    ct, st = (np.cos(theta_rad), np.sin(theta_rad)) if cos_sin is None else cos_sin
     a = -cp * sp * ca * cb - cp * cp * sb
-    z = a + (-sb - a) * np.cos(theta_rad) + sp * sa * cb * np.sin(theta_rad)
+    z = a + (-sb - a) * ct + sp * sa * cb * st
     return np.arcsin(np.clip(z, -1.0, 1.0))
 
 
-def _elevation_jacobian(params_rad: np.ndarray, theta_rad: np.ndarray) -> np.ndarray:
+def _elevation_jacobian(params_rad: np.ndarray, theta_rad: np.ndarray,
+                        cos_sin: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
+    """d(elevation)/d(ψ, α, β) at ``theta_rad`` (``cos_sin`` as :func:`_elevation_model`)."""
     psi, alpha, beta = params_rad
     cp, sp, ca, sa, cb, sb = (
         math.cos(psi), math.sin(psi), math.cos(alpha), math.sin(alpha),
@@ -261,7 +268,7 @@ def _elevation_jacobian(params_rad: np.ndarray, theta_rad: np.ndarray) -> np.nda
     ])
     db = -da + np.array([0.0, 0.0, -cb])
     dc = np.array([cp * sa * cb, sp * ca * cb, -sp * sa * sb])
-    ct, st = np.cos(theta_rad), np.sin(theta_rad)
+    ct, st = (np.cos(theta_rad), np.sin(theta_rad)) if cos_sin is None else cos_sin
     a = -cp * sp * ca * cb - cp * cp * sb
     z = a + (-sb - a) * ct + sp * sa * cb * st
     cos_e = np.sqrt(np.clip(1.0 - z * z, 1e-300, None))
@@ -491,6 +498,26 @@ def identify_from_elevations(
     ValueError
         If there are fewer than 4 points or no admissible set-up exists.
     """
+    return _identification(_elevation_fit(theta_deg, elevation_deg, psi_max_deg, beta_max_deg))
+
+
+@dataclass(frozen=True)
+class _ElevationFit:
+    """The set-up fitted to the elevations (:func:`_elevation_fit`), before its covariance,
+    residuals and warnings are worked out (:func:`_identification`)."""
+
+    setup: SetupParameters
+    theta_rad: np.ndarray
+    cos_sin: tuple[np.ndarray, np.ndarray]
+    elevation_rad: np.ndarray
+    candidates: list[SetupParameters]
+
+
+def _elevation_fit(theta_deg, elevation_deg, psi_max_deg: float = 45.0,
+                   beta_max_deg: float = 45.0) -> _ElevationFit:
+    """The set-up of :func:`identify_from_elevations` (its refusals the same), without the
+    identification's covariance and warnings: the run's iteration on the true rotation
+    (:func:`analyze_run`) needs only the set-up of each step but the last."""
     theta = np.asarray(theta_deg, dtype=float)
     elev = np.asarray(elevation_deg, dtype=float)
     if theta.size < 4:
@@ -498,7 +525,8 @@ def identify_from_elevations(
             QT_TR_NOOP("at least 4 readings are needed to identify ψ, α, β")))
     th = theta * D2R
     e_rad = elev * D2R
-    design = np.column_stack([np.ones_like(th), np.cos(th), np.sin(th)])
+    cos_sin = (np.cos(th), np.sin(th))
+    design = np.column_stack([np.ones_like(th), *cos_sin])
     (a, b, c), *_ = np.linalg.lstsq(design, np.sin(e_rad), rcond=None)
     candidates = setups_from_coefficients(a, b, c)
     starts = [p for p in candidates if _within(p, psi_max_deg, beta_max_deg)]
@@ -511,13 +539,13 @@ def identify_from_elevations(
 
     best = None
     for start in starts:
-        fit = polish(lambda x: _elevation_model(x, th) - e_rad,
-                     lambda x: _elevation_jacobian(x, th), np.radians(start.as_array()))
+        fit = polish(lambda x: _elevation_model(x, th, cos_sin) - e_rad,
+                     lambda x: _elevation_jacobian(x, th, cos_sin), np.radians(start.as_array()))
         if not fit.converged:  # MINPACK's LM from the same start (imports scipy.optimize)
             fit = least_squares(
-                lambda x: _elevation_model(x, th) - e_rad,
+                lambda x: _elevation_model(x, th, cos_sin) - e_rad,
                 np.radians(start.as_array()),
-                jac=lambda x: _elevation_jacobian(x, th),
+                jac=lambda x: _elevation_jacobian(x, th, cos_sin),
                 method="lm",
                 xtol=1e-15,
                 ftol=1e-15,
@@ -535,9 +563,15 @@ def identify_from_elevations(
             QT_TR_NOOP("no set-up with ψ ≤ {psi_max_deg}° and |β| ≤ {beta_max_deg}° fits the elevations"),
             psi_max_deg=f"{psi_max_deg:g}", beta_max_deg=f"{beta_max_deg:g}"),
             _zenith_hint(elev))))
-    _, setup, fit = best
-    jac = _elevation_jacobian(np.radians(setup.as_array()), th)
-    residuals = _elevation_model(np.radians(setup.as_array()), th) - e_rad
+    return _ElevationFit(best[1], th, cos_sin, e_rad, candidates)
+
+
+def _identification(fitted: _ElevationFit) -> Identification:
+    """The identification of a set-up fitted to the elevations: its covariance, residuals,
+    fit quality and warnings."""
+    setup, th, e_rad = fitted.setup, fitted.theta_rad, fitted.elevation_rad
+    jac = _elevation_jacobian(np.radians(setup.as_array()), th, fitted.cos_sin)
+    residuals = _elevation_model(np.radians(setup.as_array()), th, fitted.cos_sin) - e_rad
     cov = _covariance(jac, residuals)
     ident = Identification(
         setup=setup,
@@ -546,7 +580,7 @@ def identify_from_elevations(
         r_squared=_r_squared(e_rad, residuals),
         residual_rms_arcsec=float(np.sqrt(np.mean(residuals**2))) * ARCSEC_PER_RAD,
         method="elevation",
-        candidates=candidates,
+        candidates=fitted.candidates,
     )
     ident.warnings.extend(_separation_warnings(ident))
     return ident
@@ -900,12 +934,15 @@ def analyze_run(
         # The elevations were read where the axis truly was, θ_true = θ + e, not at the
         # indicated θ; fitting them against θ lets the axis' own error leak into the
         # set-up. Iterate: identify, recover θ_true from the azimuths, identify again.
+        # (each step's set-up only; the identification, its covariance and warnings, of the
+        # last: a fifth of a run's analysis was spent on those of the steps before it)
         rotation = theta_rel
         for _ in range(_TRUE_ROTATION_MAX_ITERATIONS):
-            ident = identify_from_elevations(rotation, elev, psi_max_deg, beta_max_deg)
-            previous, rotation = rotation, true_rotation_deg(az_rel, ident.setup)
+            fitted = _elevation_fit(rotation, elev, psi_max_deg, beta_max_deg)
+            previous, rotation = rotation, true_rotation_deg(az_rel, fitted.setup)
             if np.max(np.abs(rotation - previous)) < 1e-10:  # deg, i.e. 4e-7"
                 break
+        ident = _identification(fitted)
         elev_res = ident.residuals_arcsec
     elif method == "azimuth":
         start = None

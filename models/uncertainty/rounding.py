@@ -5,6 +5,7 @@ command line rounds its U and needs no more (tests/app/test_cli_imports.py)."""
 
 from __future__ import annotations
 
+import functools
 import math
 
 __all__ = ["StatedNumber", "e29_rounded", "fixed_places", "interval_decimals", "interval_ends",
@@ -15,8 +16,15 @@ __all__ = ["StatedNumber", "e29_rounded", "fixed_places", "interval_decimals", "
 def significant_decimals(expanded: float) -> int | None:
     """Decimals that show U with at most two significant digits (GUM 7.2.6, JJF 1059.1),
     after rounding up, as every U is printed (0.0996 is "0.10", not "0.100"; 0.994 is "1.0",
-    not "1.00"); None if U is not a positive number. Never negative: a U of 100 or more is
-    printed to the unit."""
+    not "1.00"); None if U is not a positive number. Negative for a U of 100 or more: to the
+    tens, hundreds … (assessment 76 M1: 168 nm is "170 nm")."""
+    return _significant_decimals(float(expanded))
+
+
+@functools.lru_cache(maxsize=4096)
+def _significant_decimals(expanded: float) -> int | None:
+    """:func:`significant_decimals` of a float, kept for the U last asked about: a results
+    table asks for each point's U in every column (a fringe certificate's 1,300 asks)."""
     if not math.isfinite(expanded) or expanded <= 0:
         return None
     decimals = 1 - int(math.floor(math.log10(expanded)))
@@ -165,8 +173,13 @@ def stated_pair(value: float, expanded: float) -> tuple[float, float, int]:
     if not (math.isfinite(expanded) and expanded > 0):
         return value, expanded, uncertainty_decimals(expanded)
     decimals = uncertainty_decimals(expanded)
-    shown = stated_interval(value, expanded, expanded, decimals)
-    return shown["value"], shown["upper"], decimals
+    # stated_interval(value, expanded, expanded, decimals)'s value and upper U, worked out
+    # alone (a results table asks for one a cell: a fringe certificate's 1,800): the value
+    # to the nearest; U rounded up, or as it is beside a value that is not a number
+    shown = round(value, decimals) + 0.0
+    if not math.isfinite(value):
+        return shown, expanded, decimals
+    return shown, round(_on_grid(expanded, decimals, math.ceil), decimals) + 0.0, decimals
 
 
 def stated_decimals(number: float) -> int:

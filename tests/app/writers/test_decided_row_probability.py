@@ -64,14 +64,14 @@ def test_decided_row_prints_its_own_coverage_probability(kind, language, tmp_pat
     if shutil.which("pdftotext") is None:
         pytest.fail("pdftotext is missing: apt-get install poppler-utils (.ci/run does)")
     csv, meta = _readings(kind, tmp_path), _metadata(kind, language, tmp_path)
-    assert main(["analyze", kind, str(csv), "--metadata", str(meta), "--json"]) == 0
-    decided = json.loads(capsys.readouterr().out)["decided_quantity"]
+    pdf = tmp_path / "c.pdf"
+    # the certificate and the JSON of one analysis (the JSON that of --json alone)
+    assert main(["analyze", kind, str(csv), "--metadata", str(meta), "--json",
+                 "--certificate", str(pdf)]) == 0
+    out = capsys.readouterr().out
+    decided = json.loads(out[out.index("{"):])["decided_quantity"]
     p = decided["coverage_probability"]
     assert p is not None and decided["interval_low"] is not None
-    pdf = tmp_path / "c.pdf"
-    assert main(["analyze", kind, str(csv), "--metadata", str(meta), "--certificate",
-                 str(pdf)]) == 0
-    capsys.readouterr()
     text = subprocess.run(["pdftotext", "-layout", "-enc", "UTF-8", str(pdf), "-"],
                           capture_output=True, text=True, encoding="utf-8", check=True).stdout
     rows = _decided_rows(text)
