@@ -82,6 +82,30 @@ METHOD = QT_TR_NOOP(
     "origin is arbitrary); the modelled error, tabulated over the measured phase, is the "
     "correction, and the compensated error is what remains after applying it."
 )
+#: the method as identified by the particle swarm of the paper (--method pso): the method
+#: says what was fitted, never "linear least squares" whatever identified it (assessment 76
+#: H1a); no certificate is made of it (identification_refusal), the text is for any other
+#: reader of the method
+METHOD_PSO = QT_TR_NOOP(
+    "The sine and cosine signals of the encoder's grating are sampled over whole periods. Each "
+    "channel is modelled as an offset plus the harmonics of order {orders} (order 1 the "
+    "fundamental) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and identified by particle "
+    "swarm optimisation on the first period, as the paper does (kept for comparison with "
+    "linear least squares, which reaches the exact optimum). The interpolation error is the "
+    "phase atan2(u_sin, u_cos) minus θ, given with its mean over the period removed (the "
+    "phase's origin is arbitrary); the modelled error, tabulated over the measured phase, is "
+    "the correction, and the compensated error is what remains after applying it."
+)
+#: why no certificate, no U and no statement of conformity rest on a particle swarm's fit
+#: (assessment 76 H1: the sample's swarm, 600 times the least squares' cost, decided "pass"
+#: where least squares decided "fail", from an interval of the least squares' covariance)
+PSO_REFUSAL = QT_TR_NOOP(
+    "the signals were identified by particle swarm (the paper's method, kept for "
+    "comparison): a swarm stopped where its cost stalls gives no covariance, so its "
+    "parameters, its correction table and the error curve fitted from them have no "
+    "uncertainty, and its residual RMS, {sin} mV (sin) and {cos} mV (cos), is {ratio} times "
+    "that of the least-squares fit of the same readings ({lsq_sin} and {lsq_cos} mV); "
+    "identify by least squares (the default) for a certificate, its JSON U and a decision")
 #: an order not fitted that the sampled phases fold into a fitted one, said in the method
 FOLDED_METHOD = QT_TR_NOOP(
     "Order {order} is not fitted: at the sampled phases it cannot be told from order {into}, "
@@ -95,7 +119,33 @@ def method_text(result) -> Any:
     folded = [message(FOLDED_METHOD, order=order, into=into,
                       amplitude=f"A{into}" if into else "A₀")
               for order, into in getattr(result, "folded_orders", ())]
-    return separated([message(METHOD, orders=orders), *folded], " ")
+    said = METHOD_PSO if getattr(result, "method", "lsq") == "pso" else METHOD
+    return separated([message(said, orders=orders), *folded], " ")
+
+
+def identification_refusal(result) -> Any:
+    """Why no certificate of ``result`` can be issued, nor U and a decision stated, whatever
+    its details ("" when they can): an identification by particle swarm. The swarm is the
+    paper's, kept to compare with: it has no covariance of its own, and the least-squares
+    covariance the budget propagates is that of the least-squares estimate, not of a search
+    stopped where it stalls (the sample's swarm: 600 times the least squares' cost on the
+    first period, sin A3 0.022 V against 0.079 V). Refused whatever its residual, so no
+    threshold of "far worse" is needed: least squares reaches the exact optimum of the same
+    model, so the swarm never fits better, and a swarm that reached it would be that fit."""
+    if getattr(result, "method", "lsq") != "pso":
+        return ""
+    lsq = tuple(result.least_squares_residual_rms) or (math.nan, math.nan)
+    own = (result.sin_fit.residual_rms, result.cos_fit.residual_rms)
+    ratio = math.sqrt((own[0] ** 2 + own[1] ** 2) / (lsq[0] ** 2 + lsq[1] ** 2))
+    return message(PSO_REFUSAL, sin=f"{own[0] * 1e3:.3g}", cos=f"{own[1] * 1e3:.3g}",
+                   ratio=f"{ratio:.3g}", lsq_sin=f"{lsq[0] * 1e3:.3g}",
+                   lsq_cos=f"{lsq[1] * 1e3:.3g}")
+
+
+def _refuse_identification(result) -> None:
+    refusal = identification_refusal(result)
+    if refusal:
+        raise MetadataError(refusal)
 
 
 OBSERVABILITY_STATEMENT = QT_TR_NOOP(
@@ -229,7 +279,9 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
 def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
                   settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
     """The budget of the compensated error, or of the as-found error (no model input), held
-    to the laboratory's CMC of the ``settings`` ``result`` was analysed with (None: none)."""
+    to the laboratory's CMC of the ``settings`` ``result`` was analysed with (None: none).
+    MetadataError for a particle swarm's fit (:func:`identification_refusal`)."""
+    _refuse_identification(result)
     n = result.theta_rad.size
     to_unit = result.period_length / (2.0 * math.pi)
     ds, dc = _phase_sensitivities(result)
@@ -442,7 +494,9 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
     # act on it; none with an estimated phase (parameter_uncertainty)
     stated = parameter_uncertainty(result)
     if stated.withheld:
-        no_u = message(QT_TR_NOOP("no U (phase estimated from the signals)"))
+        no_u = message(QT_TR_NOOP("no U (identified by particle swarm)")
+                       if getattr(result, "method", "lsq") == "pso" else
+                       QT_TR_NOOP("no U (phase estimated from the signals)"))
         rows = []
         for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
             rows.append((named(message(QT_TR_NOOP("{channel}: offset A₀"), channel=label), 0),
@@ -467,7 +521,11 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
                          *gum_pair(fit.amplitude[h], k * ua, " V")))
             phase_u = phase_expanded(fit.amplitude[h], stated.amplitude_scatter[label][h], up,
                                      k)
-            if math.isfinite(phase_u):
+            if not math.isfinite(ua):  # no U for the amplitude: nothing is said of its
+                # significance (a swarm's A1 = 3.7 V printed "not significant (A1 ≤ U)")
+                rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], math.nan, " rad",
+                                                         signed=True)))
+            elif math.isfinite(phase_u):
                 rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], phase_u, " rad",
                                                          signed=True)))
             elif abs(fit.amplitude[h]) > k * ua:  # a phase, but its U would not hold
@@ -549,6 +607,7 @@ def printed_samples(raw: np.ndarray, comp: np.ndarray, big_u: np.ndarray, per: i
 def fringe_certificate(result, metadata: CertificateMetadata, source_name: str = "",
                        method_reference: str = "",
                        settings: Mapping[str, Any] | None = None) -> CertificateDocument:
+    _refuse_identification(result)  # no U, no decision: the swarm's, before its details
     as_left = bool(metadata.as_left_table_sha256) and \
         metadata.as_left_table_sha256.strip().lower() == result.table.sha256
     if metadata.as_left_table_sha256 and not as_left:
