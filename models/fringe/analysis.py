@@ -124,7 +124,11 @@ PARAMETERS = (
                    "with N equal steps the sampling's uniformity (the timing of the samples), "
                    "with a θ column its reference's stated U / k; with an estimated phase it enters "
                    "U, but the error is not traceable however it is stated (what leaves the "
-                   "Lissajous figure round is not observable). 0: not stated"),
+                   "Lissajous figure round is not observable). Independent from sample to "
+                   "sample: it widens the decided half range's interval through the fit. A "
+                   "phase reference standard listed with its U is the same reference: the "
+                   "larger enters, once (a standard's ° is shaft angle, 1/L of a period's). "
+                   "0: not stated"),
     Parameter("adc_lsb_mv", "ADC LSB", "float", 0.0, "mV", 0.0, 10_000.0, zero="not stated",
               decimals=4, step=0.01,
               help="The ADC's step (quantisation LSB/√12 per channel). 0: not stated"),
@@ -1009,9 +1013,15 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
     def certified_json(self, result, metadata, settings=None):
         # each signal parameter's U beside it, at the certificate's probability, as the
         # certificate's parameters table prints it (issue 39; audit 69 finding 2)
-        from models.fringe.report import parameters_json
+        from models.fringe.report import parameters_json, reference_unit_warnings
 
-        return parameters_json(result, float(metadata.coverage_probability))
+        out = parameters_json(result, float(metadata.coverage_probability))
+        # a phase reference standard's "°" read as shaft angle, said as the certificate
+        # says it (assessment 76 M3)
+        said = reference_unit_warnings(result, metadata)
+        if said:
+            out["warnings"] = [*result.warnings, *(str(w) for w in said)]
+        return out
 
     def inputs_not_stated(self, result, metadata):
         from models.fringe.report import not_stated

@@ -22,6 +22,7 @@ Phases are converted to shaft angle by the grating period 1296000"/L.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -61,9 +62,16 @@ from models.fringe.parameter_uncertainty import (
     parameter_uncertainty,
     phase_expanded,
 )
+from models.fringe.reference_through_fit import reference_curve_modes
 from models.fringe.rounding_at_phases import repeated_bound
 from models.messages import QT_TR_NOOP, joined, listed, message, separated
-from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
+from models.quantity import UNITS, Quantity, UnitError
+from models.uncertainty.budget import (
+    BudgetComponent,
+    UncertaintyBudget,
+    coverage_factor,
+    divisor_for_basis,
+)
 from models.uncertainty.conformity import HalfRangeEstimate
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.printed_figure import printed
@@ -227,6 +235,113 @@ def _stated_inputs(result, ds: np.ndarray, dc: np.ndarray, to_unit: float) -> li
     return out
 
 
+#: the settings' phase reference u's row (_stated_inputs)
+_SETTING_REFERENCE = "Phase reference"
+
+
+def _is_phase_reference(standard) -> bool:
+    """A listed standard stated to be the phase reference (role "reference") with its U: the
+    settings' phase reference u is the same reference's. One with no role stated is not
+    told from the ADC (a test lists an ADC with a U in arcsec), so it enters as before."""
+    return standard.uncertainty is not None and standard.role == "reference"
+
+
+def _may_be_phase_reference(standard) -> bool:
+    """A listed standard with a U that is not stated to be the ADC: its u, per sample, is of
+    each sample's phase."""
+    return standard.uncertainty is not None and standard.role != "adc"
+
+
+def _reference_once(metadata: CertificateMetadata, standards: list[BudgetComponent],
+                    stated: list[BudgetComponent], symbol: str) -> list[BudgetComponent]:
+    """The standards' rows (one per standard with a U, in the order listed) and the settings'
+    stated inputs, the phase reference entered once: the settings' *phase reference u* is
+    the u of each sample's phase, the θ reference's U / k or the sampling's timing, the
+    same reference as a listed phase reference standard (assessment 76 M3: "Phase reference
+    (sampling clock)" and "Phase reference" both entered). Where both are given, the larger
+    standard uncertainty enters (on the safe side), its note naming the other."""
+    listed = [std for std in metadata.standards if std.uncertainty is not None]
+    setting = [c for c in stated if c.name == _SETTING_REFERENCE]
+    references = [c for c, std in zip(standards, listed, strict=True) if _is_phase_reference(std)]
+    if not setting or not references:
+        return [*standards, *stated]
+    own = setting[0]
+    u_setting = float(np.max(own.standard_uncertainty(1)))
+    largest = max(references, key=lambda c: float(np.max(c.standard_uncertainty(1))))
+    u_standard = float(np.max(largest.standard_uncertainty(1)))
+    if u_standard >= u_setting:
+        kept = [dataclasses.replace(c, note=message(QT_TR_NOOP(
+            "{note}; the settings' phase reference u ({u}) is of this reference and is not "
+            "entered again"), note=c.note, u=f"{u_setting:.2g}{symbol}"))
+            if c is largest else c for c in standards]
+        return [*kept, *(c for c in stated if c is not own)]
+    kept = [c for c in standards if not any(c is r for r in references)]
+    named = dataclasses.replace(own, note=message(QT_TR_NOOP(
+        "{note}; the listed standard {names} (u {u}) is this reference: entered once, the "
+        "larger"), note=own.note, names=listed_names(references),
+        u=f"{u_standard:.2g}{symbol}"))
+    return [*kept, *(named if c is own else c for c in stated)]
+
+
+def listed_names(components: list[BudgetComponent]) -> Any:
+    return listed(message(c.name) for c in components)
+
+
+#: how the phase reference enters the decided half range's interval (assessment 76 M3: its
+#: budget said "u per sample" while the interval took it as one shift that cancels)
+REFERENCE_IN_HALF_RANGE = QT_TR_NOOP(
+    "The phase reference's errors are taken as independent from sample to sample (its u per "
+    "sample): they enter the decided half range's interval through the fit of the signals, "
+    "as the signals' noise does, not as one shift of the whole period, which would cancel in "
+    "a half range.")
+
+
+def _phase_reference_entered(result, metadata: CertificateMetadata) -> bool:
+    return bool((result.inputs or {}).get("phase_reference_u")) or any(
+        std.uncertainty is not None for std in metadata.standards)
+
+
+#: a phase reference standard's u per sample from this share of a signal period up is taken
+#: for a figure of a signal period stated in shaft angle: a reference that uncertain could
+#: not give the phase of an interpolation error of about 1 % of a period (the signals would
+#: not follow its θ), and "0.05°" of a period read as shaft angle is 0.05 × L periods
+PERIOD_SHARE_DOUBTED = 0.1
+
+REFERENCE_UNIT_WARNING = QT_TR_NOOP(
+    "Reference standard '{name}': its uncertainty {given} is taken as shaft angle, as every "
+    "standard's figure is: u = {u} per sample, {periods} signal periods, which no phase "
+    "reference of an interpolation error can be. The settings' phase reference u and the θ "
+    "column are in degrees of a signal period (one period is {period} of shaft angle): if "
+    "its certificate states {given} of a signal period, state {converted} (shaft angle) in "
+    "the standards table.")
+
+
+def reference_unit_warnings(result, metadata: CertificateMetadata) -> list[Any]:
+    """A warning for each phase reference standard whose u per sample is
+    :data:`PERIOD_SHARE_DOUBTED` of a signal period or more (an encoder's: a standard's "°"
+    is shaft angle, the settings' "°" of a signal period; assessment 76 M3: 0.05° listed,
+    180" per sample, U 361" at every sample, nothing said)."""
+    if result.unit != "arcsec":
+        return []
+    out = []
+    for std in metadata.standards:
+        if not _may_be_phase_reference(std):
+            continue
+        try:
+            u = std.uncertainty_in("arcsec") / divisor_for_basis(std.basis)[0]
+            of_period = float(Quantity(std.uncertainty, std.uncertainty_unit).in_unit("deg"))
+        except (MetadataError, UnitError):
+            continue
+        if u < PERIOD_SHARE_DOUBTED * result.period_length:
+            continue
+        given = f"{std.uncertainty:g}{UNITS[std.uncertainty_unit].symbol}"
+        out.append(message(REFERENCE_UNIT_WARNING, name=std.description or "#", given=given,
+                           u=f"{u:.4g}\"", periods=f"{u / result.period_length:.3g}",
+                           period=f"{result.period_length:.4g}\"",
+                           converted=f"{of_period / 360.0 * result.period_length:.4g}\""))
+    return out
+
+
 _STATED_NAMES = ("Phase reference", "ADC quantisation", "ADC offset", "ADC gain ratio",
                  "ADC linearity")
 
@@ -293,9 +408,10 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
     us = model_signal_std(result.theta_rad, sig_s, result.sin_fit.orders, result.theta_rad)
     uc = model_signal_std(result.theta_rad, sig_c, result.cos_fit.orders, result.theta_rad)
     model = np.hypot(ds * us, dc * uc) * to_unit
-    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
-                                               unit=result.unit, common=True)
-    components += _stated_inputs(result, ds, dc, to_unit)
+    components = _reference_once(
+        metadata, reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
+                                                unit=result.unit, common=True),
+        _stated_inputs(result, ds, dc, to_unit), result.unit_symbol)
     components.append(BudgetComponent(
         QT_TR_NOOP("Signal noise"), "A", "normal", noise, 1.0, 1.0, dof,
         message(QT_TR_NOOP("σ = {sin} mV (sin), {cos} mV (cos) from the fit residuals, "
@@ -397,13 +513,29 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
                 distribution="rectangular"))
     if not inputs.get("adc_lsb_mv", 0.0):
         components += _readings_rounding(result, ds, dc)
-    u_phase = inputs.get("phase_reference_u", 0.0)
-    if u_phase:
-        components.append(BudgetComponent(
-            QT_TR_NOOP("Phase reference"), "B", "normal", u_phase / 360.0 * result.period_length,
-            1.0, 1.0, math.inf, common=True))
-    components += reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
-                                                unit=result.unit, common=True)
+    # the phase reference's errors, independent from sample to sample (a standard stated per
+    # reading, the settings' u of each sample's phase): through the fit, as the signals'
+    # noise, not one shift of the whole period that cancels in the half range (assessment
+    # 76 M3: a u of 0.001" to 2" per sample left the decided interval as it was)
+    references = _reference_once(
+        metadata, reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
+                                                unit=result.unit),
+        [c for c in _stated_inputs(result, np.zeros(1), np.zeros(1), to_unit)
+         if c.name == _SETTING_REFERENCE], result.unit_symbol)
+    if references:
+        modes = reference_curve_modes(result, theta)
+        for reference in references:
+            u = float(np.max(reference.standard_uncertainty(1)))
+            for j in range(modes.shape[1]):
+                components.append(signed(
+                    modes[:, j], message(QT_TR_NOOP("{name}, through the fit, direction {j}"),
+                                         name=message(reference.name), j=j + 1), u,
+                    message(QT_TR_NOOP("u = {u} of each sample's phase, independent from "
+                                       "sample to sample: carried through the least-squares "
+                                       "fit to the fitted curve, as the signals' noise is (a "
+                                       "shift common to every sample would cancel in the "
+                                       "half range; these do not)"),
+                            u=f"{u:.2g}{result.unit_symbol}")))
     # held to the laboratory's CMC of the ``settings`` (None: none), as the samples' budget:
     # the decided half range's interval is held to it (models.uncertainty.conformity)
     return UncertaintyBudget(tuple(components), theta.size, metadata.coverage_probability,
@@ -793,12 +925,17 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         tolerance=tol, plots=(drawn["errors"],
                               fringe_plots.first_period_with_uncertainty(result, shown_u, per),
                               drawn["residuals"]),
-        warnings=result.warnings, unit=sym, untraceable=tuple(untraceable),
+        warnings=(*result.warnings, *reference_unit_warnings(result, metadata)), unit=sym,
+        untraceable=tuple(untraceable),
         not_in_u=tuple(not_stated(result, metadata)),
         stated_inputs=tuple(c.name for c in budget.components
                             if c.name in _STATED_NAMES),
         statements=(table_statement, *advice) + (
-            (OBSERVABILITY_STATEMENT,) if result.phase_source == "estimated" else ()),
+            (OBSERVABILITY_STATEMENT,) if result.phase_source == "estimated" else ()) + (
+            # how the phase reference enters the decided half range, said in words
+            (REFERENCE_IN_HALF_RANGE,)
+            if metadata.decision_quantity == "half_range" and tol is not None
+            and _phase_reference_entered(result, metadata) else ()),
         uncertainty_withheld=message(ESTIMATED_PHASE_REASON) if no_u else "",
         point_columns=(("sample", np.arange(1, raw.size + 1, dtype=float)),
          ("phase_deg", np.degrees(result.theta_rad)), (f"raw_error_{unit}", raw),
