@@ -122,3 +122,18 @@ def test_the_command_line_writes_no_certificate_of_a_swarms_fit(tmp_path, sample
     assert code == 2
     assert not pdf.exists() and not xlsx.exists()
     assert "identified by particle swarm" in capsys.readouterr().err
+
+
+def test_the_window_says_why_before_the_details_dialog(pso):
+    from unittest import mock
+
+    from app.certificate_presenter import CertificatePresenter, CertificateView
+
+    view = mock.create_autospec(CertificateView, instance=True)
+    presenter = CertificatePresenter(view, mock.MagicMock(), dict, lambda: None)
+    assert not presenter.export_certificate(FRINGE, pso, {**SETTINGS, "method": "pso"},
+                                            "fringe_sample.csv")
+    view.edit_certificate_details.assert_not_called()
+    view.choose_save_path.assert_not_called()
+    title, text = view.tell.call_args.args
+    assert text.startswith("No certificate: the signals were identified by particle swarm")
