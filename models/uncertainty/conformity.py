@@ -284,6 +284,9 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
       parameters' covariance): drawn the same way;
     * ``independent``: every other input, one draw per point.
 
+    A stated input the readings hold as noise (``in_readings``: a phase reference's errors
+    at each sample through a fit) is drawn with the ``shared`` ones, not in ``evaluated``.
+
     A Type A input with ν degrees of freedom is drawn as a t-distribution (JCGM 101 6.4.9),
     its scale s·√(ν/χ²_ν) one draw per trial for all the inputs of one estimate
     (``dof_group``). ``in_curve`` False: the inputs held in the measured curve
@@ -299,7 +302,7 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
     for i, comp in enumerate(budget.components):
         sens = np.broadcast_to(np.asarray(comp.sensitivity, dtype=float), (budget.points,))
         c_u = (sens * comp.standard_uncertainty(budget.points))[points]
-        if not np.any(c_u) or comp.in_curve and not in_curve:
+        if not np.any(c_u) or (comp.in_curve or comp.in_readings) and not in_curve:
             continue
         shape = (trials, 1) if comp.common else (trials, n)
         np.multiply(_standard_draws(rng, comp.distribution, shape), c_u, out=term)
@@ -312,7 +315,7 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
             evaluated += term
         if not comp.common:
             independent += term
-        elif comp.evaluation == "A":
+        elif comp.evaluation == "A" or comp.in_readings:
             shared += term
         else:
             systematic += term
@@ -425,7 +428,7 @@ def half_range_monte_carlo(errors, budget: UncertaintyBudget,
     base = e + systematic
     ranges = 2.0 * np.ptp(base, axis=1) - np.ptp(base + noise, axis=1)
     high_range, median_range = np.quantile(ranges, [1.0 - UPPER_TAIL * alpha, 0.5])
-    if any(c.in_curve and not c.common for c in budget.components):
+    if any(c.in_curve and not c.common or c.in_readings for c in budget.components):
         # the inputs held in the curve (a reference's error at each point) may be smaller
         # than stated: their excess is then not in the measured range, and taking it out
         # put the upper end below the truth. The upper end also holds with them at zero.
