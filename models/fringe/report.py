@@ -62,7 +62,7 @@ from models.fringe.parameter_uncertainty import (
     parameter_uncertainty,
     phase_expanded,
 )
-from models.fringe.reference_through_fit import reference_curve_modes
+from models.fringe.reference_through_fit import reference_curve_modes, scatter_beyond_reference
 from models.fringe.rounding_at_phases import repeated_bound
 from models.messages import QT_TR_NOOP, joined, listed, message, separated
 from models.quantity import UNITS, Quantity, UnitError
@@ -447,38 +447,59 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
     """The budget of the model's as-found error at the phases ``theta`` (see
     :func:`model_error_curve`), every input with its nature: each independent direction of
     each channel's fitted parameters (their covariance from the fit residuals, Type A with
-    n − p degrees of freedom, one estimate a channel), each channel's ADC offset and the
+    n − p degrees of freedom, or J − p from the phase means where the phases repeat and
+    those scatter more, one estimate a channel), each channel's ADC offset and the
     channels' gain ratio are one unknown value for the whole record, carried to every phase
     through their signed sensitivity; the ADC's quantisation and linearity are bounded
     errors of each reading (rectangular, per phase); the reference standards' and the phase
-    reference's errors shift the phase of the whole period (one value each)."""
-    n = result.theta_rad.size
+    reference's errors, independent from sample to sample, through the fit, each of its
+    independent directions one value for the record, the fit's own directions drawn with
+    the scatter beyond what those errors would show (counted once:
+    :func:`models.fringe.reference_through_fit.scatter_beyond_reference`)."""
     to_unit = result.period_length / (2.0 * math.pi)
     s = model_signal(theta, result.sin_fit)
     c = model_signal(theta, result.cos_fit)
     r2 = s**2 + c**2
     ds, dc = c / r2 * to_unit, -s / r2 * to_unit  # ∂φ/∂u_s, ∂φ/∂u_c, as shaft angle per V
-    p = 1 + 2 * len(result.sin_fit.orders)
-    dof = max(n - p, 1)
 
     def signed(effect: np.ndarray, name, figure: float, note, evaluation="B", nu=math.inf,
-               group="", distribution="normal") -> BudgetComponent:
+               group="", distribution="normal", in_readings=False) -> BudgetComponent:
         divisor = math.sqrt(3.0) if distribution == "rectangular" else 1.0
         return BudgetComponent(name, evaluation, distribution, np.abs(effect) * figure, divisor,
                                np.where(effect < 0, -1.0, 1.0), nu, note, common=True,
-                               dof_group=group)
+                               dof_group=group, in_readings=in_readings)
 
+    # the phase reference's errors, independent from sample to sample (a standard stated per
+    # reading, the settings' u of each sample's phase): through the fit, as the signals'
+    # noise, not one shift of the whole period that cancels in the half range (assessment
+    # 76 M3: a u of 0.001" to 2" per sample left the decided interval as it was); counted
+    # once with the readings' scatter, which shows them where they are in the readings
+    # (reference_through_fit.scatter_beyond_reference: the larger of the two, not the sum)
+    references = _reference_once(
+        metadata, reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
+                                                unit=result.unit),
+        [c for c in _stated_inputs(result, np.zeros(1), np.zeros(1), to_unit)
+         if c.name == _SETTING_REFERENCE], result.unit_symbol)
+    u_references = [float(np.max(reference.standard_uncertainty(1))) for reference in references]
+    scatter = scatter_beyond_reference(result, math.hypot(*u_references) / to_unit)
     components = []
-    for label, fit, d in (("sin", result.sin_fit, ds), ("cos", result.cos_fit, dc)):
-        sigma = fit.residual_rms * math.sqrt(n / dof)
+    for label, fit, d, beyond in (("sin", result.sin_fit, ds, scatter[0]),
+                                  ("cos", result.cos_fit, dc, scatter[1])):
         modes = model_signal_modes(result.theta_rad, fit.orders, theta)
+        note = QT_TR_NOOP("one independent direction of the fitted parameters' covariance, "
+                          "carried to the modelled phase error") \
+            if not beyond.reference_v > 0.0 else message(QT_TR_NOOP(
+                "one independent direction of the fitted parameters' covariance, carried to "
+                "the modelled phase error, drawn with the readings' scatter beyond what the "
+                "phase reference's errors would show ({shown} mV shown, {reference} mV the "
+                "reference's share, which its own directions carry: counted once)"),
+                shown=f"{beyond.shown_v * 1e3:.3g}",
+                reference=f"{beyond.reference_v * 1e3:.3g}")
         for j in range(modes.shape[1]):
             components.append(signed(
                 d * modes[:, j], message(QT_TR_NOOP("Fitted model, {channel} channel, direction "
                                                     "{j}"), channel=label, j=j + 1),
-                sigma, QT_TR_NOOP("one independent direction of the fitted parameters' "
-                                  "covariance, carried to the modelled phase error"),
-                "A", dof, f"fit {label}"))
+                beyond.sigma_v, note, "A", beyond.dof, f"fit {label}"))
     inputs = result.inputs or {}
     offset = inputs.get("adc_offset_u_mv", 0.0)
     if offset:
@@ -513,19 +534,12 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
                 distribution="rectangular"))
     if not inputs.get("adc_lsb_mv", 0.0):
         components += _readings_rounding(result, ds, dc)
-    # the phase reference's errors, independent from sample to sample (a standard stated per
-    # reading, the settings' u of each sample's phase): through the fit, as the signals'
-    # noise, not one shift of the whole period that cancels in the half range (assessment
-    # 76 M3: a u of 0.001" to 2" per sample left the decided interval as it was)
-    references = _reference_once(
-        metadata, reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
-                                                unit=result.unit),
-        [c for c in _stated_inputs(result, np.zeros(1), np.zeros(1), to_unit)
-         if c.name == _SETTING_REFERENCE], result.unit_symbol)
     if references:
-        modes = reference_curve_modes(result, theta)
-        for reference in references:
-            u = float(np.max(reference.standard_uncertainty(1)))
+        # repeated at each phase where the phase means show it; shown by the readings'
+        # scatter: noise they hold, else an envelope they may not
+        modes = reference_curve_modes(result, theta, any(side.repeated for side in scatter))
+        held = all(channel.holds_reference for channel in scatter)
+        for reference, u in zip(references, u_references, strict=True):
             for j in range(modes.shape[1]):
                 components.append(signed(
                     modes[:, j], message(QT_TR_NOOP("{name}, through the fit, direction {j}"),
@@ -535,7 +549,8 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
                                        "fit to the fitted curve, as the signals' noise is (a "
                                        "shift common to every sample would cancel in the "
                                        "half range; these do not)"),
-                            u=f"{u:.2g}{result.unit_symbol}")))
+                            u=f"{u:.2g}{result.unit_symbol}"), "A" if held else "B",
+                    in_readings=not held))
     # held to the laboratory's CMC of the ``settings`` (None: none), as the samples' budget:
     # the decided half range's interval is held to it (models.uncertainty.conformity)
     return UncertaintyBudget(tuple(components), theta.size, metadata.coverage_probability,
