@@ -42,10 +42,12 @@ the fit, Σⱼ cⱼ·r̄ⱼ² / (J − p) (cⱼ readings at phase j, J phases: t
 with the phases as the units, Draper & Smith, *Applied Regression Analysis*, 3rd ed., 2.1),
 which an error repeated at every phase raises by the number of periods and independent
 errors do not; taken where the lack-of-fit F test finds it larger at 95 % (else pooled), and
-only with a reference stated (none stated, the fit's scatter is taken as it was). The
-reference's errors are then taken as repeated too, the same at a phase in every period
-(each phase's cⱼ readings moving together: its directions √cⱼ times larger), and its share
-of the phase means' scatter, u²·Σ cⱼ(1 − hⱼ)·S′ⱼ² / (J − p), counted once as above.
+only with a reference stated (none stated, the fit's scatter is taken as it was). Where the
+readings show the reference's share (else what repeats is not its errors, and the stated u
+stays an envelope of independent ones), the reference's errors are then taken as repeated
+too, the same at a phase in every period (each phase's cⱼ readings moving together: its
+directions √cⱼ times larger), and its share of the phase means' scatter,
+u²·Σ cⱼ(1 − hⱼ)·S′ⱼ² / (J − p), counted once as above.
 
 Where the readings show the reference's share (:attr:`ChannelScatter.holds_reference`) its
 directions are drawn as the fit's own are, noise the readings hold (their excess on the
@@ -129,8 +131,13 @@ class ChannelScatter:
         estimate of ν degrees of freedom). Shown, the reference's errors are in the
         readings and bias their range as noise does; not shown, the reference is better
         than stated (a stated figure is an envelope) and its errors may not be there."""
-        return self.shown_v ** 2 >= self.reference_v ** 2 * (
-            1.0 - 2.0 * math.sqrt(2.0 / max(self.dof, 1)))
+        return _shows(self.shown_v ** 2, self.reference_v ** 2, self.dof)
+
+
+def _shows(shown2: float, reference2: float, dof: int) -> bool:
+    """Whether a scatter's variance ``shown2`` (of ``dof`` degrees of freedom) is not below
+    ``reference2`` by more than twice its own relative standard deviation √(2/ν)."""
+    return shown2 >= reference2 * (1.0 - 2.0 * math.sqrt(2.0 / max(dof, 1)))
 
 
 def scatter_beyond_reference(result, u_rad: float) -> tuple[ChannelScatter, ChannelScatter]:
@@ -173,9 +180,17 @@ def scatter_beyond_reference(result, u_rad: float) -> tuple[ChannelScatter, Chan
                 c_j = groups.counts[held]
                 h_j = c_j * np.einsum("ij,jk,ik->i", x_j[held], inverse, x_j[held])
                 slope2 = model_slope(groups.phases[held], fit) ** 2
-                reference2 = u_rad ** 2 * float(np.sum(c_j * (1.0 - h_j) * slope2)) / means_dof
-                out.append(ChannelScatter(math.sqrt(max(means2 - reference2, 0.0)), means_dof,
-                                          math.sqrt(means2), math.sqrt(reference2), True))
+                repeated2 = u_rad ** 2 * float(np.sum(c_j * (1.0 - h_j) * slope2)) / means_dof
+                if _shows(means2, repeated2, means_dof):  # what repeats may be its errors
+                    out.append(ChannelScatter(math.sqrt(max(means2 - repeated2, 0.0)),
+                                              means_dof, math.sqrt(means2),
+                                              math.sqrt(repeated2), True))
+                else:  # something repeats, less than the reference's errors would: not
+                    # them (a reference better than stated), its u an envelope of
+                    # independent ones, the fit's directions the means' scatter beyond it
+                    out.append(ChannelScatter(math.sqrt(max(means2 - reference2, 0.0)),
+                                              means_dof, math.sqrt(means2),
+                                              math.sqrt(reference2)))
                 continue
         out.append(ChannelScatter(math.sqrt(max(shown2 - reference2, 0.0)), dof,
                                   math.sqrt(shown2), math.sqrt(reference2)))
