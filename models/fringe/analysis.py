@@ -125,10 +125,11 @@ PARAMETERS = (
                    "with a θ column its reference's stated U / k; with an estimated phase it enters "
                    "U, but the error is not traceable however it is stated (what leaves the "
                    "Lissajous figure round is not observable). Independent from sample to "
-                   "sample: it widens the decided half range's interval through the fit. A "
-                   "phase reference standard listed with its U is the same reference: the "
-                   "larger enters, once (a standard's ° is shaft angle, 1/L of a period's). "
-                   "0: not stated"),
+                   "sample: it widens the decided half range's interval through the fit, "
+                   "counted once with the readings' scatter (the larger of the two, not their "
+                   "sum). A phase reference standard listed with its U is the same reference: "
+                   "the larger enters, once (a standard's ° is shaft angle, 1/L of a "
+                   "period's). 0: not stated"),
     Parameter("adc_lsb_mv", "ADC LSB", "float", 0.0, "mV", 0.0, 10_000.0, zero="not stated",
               decimals=4, step=0.01,
               help="The ADC's step (quantisation LSB/√12 per channel). 0: not stated"),

@@ -268,9 +268,10 @@ def test_the_interval_covers_with_the_references_errors_in_the_readings():
     first-principles generator (/work/s76/fringe76b_out/sim.py, 200 records, 2026-12-07):
     0.8.24 covered 185, median width 0.060" (its fit's scatter takes the phase errors as
     each channel's own noise, which understates their spread in the curve by 1.3x); the first
-    rework 200, about 0.118" (the stated u and the scatter summed); now counted once, see
-    the report. The interval must cover, and the stated u widen it less than 1.45 times the
-    interval with it unstated (counted once), more than 1.1 (its structure counts)."""
+    rework 200, about 0.118" (the stated u and the scatter summed); now 199, 0.080" (the
+    estimate's own spread asks 0.054" of a correct 95.45 % interval). The interval must
+    cover, and the stated u widen it less than 1.45 times the interval with it unstated
+    (counted once), more than 1.1 (its structure counts)."""
     period = 1296000 / 16384
     truth = _head().true_half_range_rad() * period / (2 * math.pi)
     rng = np.random.default_rng(76)
