@@ -109,7 +109,8 @@ PARAMETERS = (
               choices=(("lsq", "least squares (exact)"),
                        ("pso", "particle swarm (Gao et al. 2013)")),
               help="Exact linear least squares, or the particle swarm of the method's paper "
-                   "(Gao et al. 2013; first period only, for comparison)"),
+                   "(Gao et al. 2013; first period only, for comparison: it has no U, so no "
+                   "certificate is made of it)"),
     Parameter("lut_size", "correction table size", "int", 1024, minimum=8, maximum=65536,
               help="Entries of the correction table over the measured phase"),
     Parameter("table_zero", "table zero", "choice", "mean",
@@ -124,7 +125,12 @@ PARAMETERS = (
                    "with N equal steps the sampling's uniformity (the timing of the samples), "
                    "with a θ column its reference's stated U / k; with an estimated phase it enters "
                    "U, but the error is not traceable however it is stated (what leaves the "
-                   "Lissajous figure round is not observable). 0: not stated"),
+                   "Lissajous figure round is not observable). Independent from sample to "
+                   "sample: it widens the decided half range's interval through the fit, "
+                   "counted once with the readings' scatter (the larger of the two, not their "
+                   "sum). A phase reference standard listed with its U is the same reference: "
+                   "the larger enters, once (a standard's ° is shaft angle, 1/L of a "
+                   "period's). 0: not stated"),
     Parameter("adc_lsb_mv", "ADC LSB", "float", 0.0, "mV", 0.0, 10_000.0, zero="not stated",
               decimals=4, step=0.01,
               help="The ADC's step (quantisation LSB/√12 per channel). 0: not stated"),
@@ -668,6 +674,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     elif theta.size > 1:
         check_record_covers_a_period(theta, median(np.abs(np.diff(theta))), phase_u)
     pso_seconds, design = None, None
+    least_squares_rms: tuple[float, ...] = ()
     phase_index = (np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
                    if source == "samples_per_period" else None)
     if s["method"] == "pso":
@@ -679,9 +686,17 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         ps, pc = fit_channel_pso(theta[span], u_sin[span]), fit_channel_pso(theta[span], u_cos[span])
         sin_fit, cos_fit = ps.fit, pc.fit
         for fit, u in ((sin_fit, u_sin), (cos_fit, u_cos)):  # over the whole record, as the
-            # least squares' (the swarm leaves it unset: the budget's noise was NaN and the
-            # certificate a traceback)
-            fit.residual_rms = float(np.sqrt(np.mean((u - model_signal(theta, fit)) ** 2)))
+            # least squares' (the swarm leaves them unset: the budget's noise was NaN and the
+            # certificate a traceback; R² printed "nan", assessment 76 H1)
+            resid = u - model_signal(theta, fit)
+            fit.residual_rms = float(np.sqrt(np.mean(resid**2)))
+            centred = u - np.mean(u)
+            ss_tot = float(centred @ centred)
+            fit.r_squared = 1.0 - float(resid @ resid) / ss_tot if ss_tot > 0 else 0.0
+        # the least squares of the same readings, over the whole record: how far the swarm
+        # is from the fit it stands in for (said when a certificate of it is refused)
+        least_squares_rms = tuple(f.residual_rms for f in fit_channels(theta, [u_sin, u_cos],
+                                                                      orders))
         pso_seconds = ps.seconds + pc.seconds
         lsq_cost = sum(f.cost for f in fit_channels(theta[span], [u_sin[span], u_cos[span]]))
         warnings.append(message(
@@ -769,7 +784,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         samples_per_period=per_period, method=str(s["method"]), sin_periods=sin_periods,
         cos_periods=cos_periods, phase_source=source, unit=unit, period_length=period,
         ellipse=stated_ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
-        pso_seconds=pso_seconds, warnings=warnings, unmodelled_orders=unmodelled,
+        pso_seconds=pso_seconds, least_squares_residual_rms=least_squares_rms,
+        warnings=warnings, unmodelled_orders=unmodelled,
         folded_orders=tuple((f.order, f.into) for f in folds),
         inputs={key: float(s[key]) for key in BUDGET_INPUTS},
     )
@@ -906,7 +922,8 @@ def _with_u(value: float, u: float | None, signed: bool = False) -> str:
     return f"{fixed_places(value, decimals, spec)}{shown_u}"
 
 
-def _fit_line(name: str, fit: ChannelFit, u: Mapping[str, float] | None) -> Any:
+def _fit_line(name: str, fit: ChannelFit, u: Mapping[str, float] | None,
+              no_u: Any = "") -> Any:
     """One channel's fitted parameters, each ± its standard uncertainty ``u`` (the fit's
     scatter and the ADC's stated figures: models.fringe.parameter_uncertainty): the offset and
     each order's amplitude and phase, the phase to the decimal its own u supports (day review
@@ -921,7 +938,8 @@ def _fit_line(name: str, fit: ChannelFit, u: Mapping[str, float] | None) -> Any:
                      f"∠ {_with_u(fit.phase[k], of(f'c{k}'), signed=True)} rad")
     if u is None:
         return joined(("  " + ", ".join(parts) + " ",
-                       message(QT_TR_NOOP("(no u: the phase was estimated from the signals)")),
+                       no_u or message(QT_TR_NOOP("(no u: the phase was estimated from the "
+                                                  "signals)")),
                        f"; R² = {fit.r_squared:.8f}"))
     return joined(("  ", message(QT_TR_NOOP("{parameters} (± u, k = 1); R² = {r_squared}"),
                                  parameters=", ".join(parts), r_squared=f"{fit.r_squared:.8f}")))
@@ -936,6 +954,9 @@ def summary(result: FringeResult) -> str:
     from models.fringe.parameter_uncertainty import parameter_uncertainty
 
     stated = parameter_uncertainty(result)
+    # the swarm's parameters have no u (parameter_uncertainty.PSO_REASON), said as such
+    no_u = (message(QT_TR_NOOP("(no u: identified by particle swarm, which gives no "
+                               "covariance)")) if result.method == "pso" else "")
     period, sym = result.period_length, result.unit_symbol
     raw = result.raw_error
     scale = (message(QT_TR_NOOP("L = {lines} (period {period})"), lines=result.lines_per_rev,
@@ -949,8 +970,8 @@ def summary(result: FringeResult) -> str:
                         n=raw.size, source=source, scale=scale),
                 message(QT_TR_NOOP("; the motion reversed {count} time(s)"),
                         count=result.reversals) if result.reversals else "")),
-        _fit_line("A", result.sin_fit, stated.channels.get("sin")),
-        _fit_line("B", result.cos_fit, stated.channels.get("cos")),
+        _fit_line("A", result.sin_fit, stated.channels.get("sin"), no_u),
+        _fit_line("B", result.cos_fit, stated.channels.get("cos"), no_u),
         message(QT_TR_NOOP("Offsets {sin} / {cos} mV, amplitude ratio {ratio}, quadrature error "
                            "{quadrature}°"),
                 sin=f"{1e3 * result.sin_fit.offset:+.2f}", cos=f"{1e3 * result.cos_fit.offset:+.2f}",
@@ -1045,12 +1066,24 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
 
         return fringe_certificate(result, metadata, source_name, self.method_reference, settings)
 
+    def certificate_refusal(self, result):
+        # a particle swarm's fit: no U, no certificate whatever the details (assessment 76 H1)
+        from models.fringe.report import identification_refusal
+
+        return identification_refusal(result)
+
     def certified_json(self, result, metadata, settings=None):
         # each signal parameter's U beside it, at the certificate's probability, as the
         # certificate's parameters table prints it (issue 39; audit 69 finding 2)
-        from models.fringe.report import parameters_json
+        from models.fringe.report import parameters_json, reference_unit_warnings
 
-        return parameters_json(result, float(metadata.coverage_probability))
+        out = parameters_json(result, float(metadata.coverage_probability))
+        # a phase reference standard's "°" read as shaft angle, said as the certificate
+        # says it (assessment 76 M3)
+        said = reference_unit_warnings(result, metadata)
+        if said:
+            out["warnings"] = [*result.warnings, *(str(w) for w in said)]
+        return out
 
     def inputs_not_stated(self, result, metadata):
         from models.fringe.report import not_stated

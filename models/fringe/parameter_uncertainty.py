@@ -76,7 +76,7 @@ from models.fringe.rounding_at_phases import RoundingAtPhases, parameter_varianc
 from models.fringe.sampling_phase_noise import phase_excess_variance, phase_noise_rad
 from models.messages import QT_TR_NOOP, Message, listed, message
 
-__all__ = ["ESTIMATED_REASON", "INCOMPLETE_REASON", "ParameterUncertainty",
+__all__ = ["ESTIMATED_REASON", "INCOMPLETE_REASON", "PSO_REASON", "ParameterUncertainty",
            "incomplete_reason", "parameter_uncertainty", "phase_expanded",
            "sample_phase_u_rad"]
 
@@ -86,6 +86,12 @@ ESTIMATED_REASON = QT_TR_NOOP(
     "they are identified in the estimated phase's frame, which the signals' harmonics shift "
     "(a distortion of the phase that leaves the Lissajous figure round is not observable); "
     "the bias is not determined, and a U from the fit would not cover it")
+
+#: why no parameter has a U when a particle swarm identified them (assessment 76 H1b: the
+#: offsets printed a U of the ADC's figures alone, the rest "—")
+PSO_REASON = QT_TR_NOOP(
+    "no U is stated for the signal parameters: they were identified by particle swarm (kept "
+    "for comparison), which gives no covariance; least squares gives their U")
 
 
 #: why the parameters' U stated are incomplete: a figure that acts on them not stated
@@ -153,6 +159,8 @@ def _worked_out(result) -> ParameterUncertainty:
     """:func:`parameter_uncertainty`, worked out."""
     if result.phase_source == "estimated":
         return ParameterUncertainty(withheld=ESTIMATED_REASON)
+    if getattr(result, "method", "lsq") == "pso":
+        return ParameterUncertainty(withheld=PSO_REASON)
     inputs = result.inputs or {}
     offset_v = float(inputs.get("adc_offset_u_mv", 0.0) or 0.0) * 1e-3
     gain = float(inputs.get("adc_gain_u_pct", 0.0) or 0.0) / 100.0

@@ -22,6 +22,7 @@ Phases are converted to shaft angle by the grating period 1296000"/L.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -61,9 +62,16 @@ from models.fringe.parameter_uncertainty import (
     parameter_uncertainty,
     phase_expanded,
 )
+from models.fringe.reference_through_fit import reference_curve_modes, scatter_beyond_reference
 from models.fringe.rounding_at_phases import repeated_bound
 from models.messages import QT_TR_NOOP, joined, listed, message, separated
-from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
+from models.quantity import UNITS, Quantity, UnitError
+from models.uncertainty.budget import (
+    BudgetComponent,
+    UncertaintyBudget,
+    coverage_factor,
+    divisor_for_basis,
+)
 from models.uncertainty.conformity import HalfRangeEstimate
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.printed_figure import printed
@@ -82,6 +90,30 @@ METHOD = QT_TR_NOOP(
     "origin is arbitrary); the modelled error, tabulated over the measured phase, is the "
     "correction, and the compensated error is what remains after applying it."
 )
+#: the method as identified by the particle swarm of the paper (--method pso): the method
+#: says what was fitted, never "linear least squares" whatever identified it (assessment 76
+#: H1a); no certificate is made of it (identification_refusal), the text is for any other
+#: reader of the method
+METHOD_PSO = QT_TR_NOOP(
+    "The sine and cosine signals of the encoder's grating are sampled over whole periods. Each "
+    "channel is modelled as an offset plus the harmonics of order {orders} (order 1 the "
+    "fundamental) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and identified by particle "
+    "swarm optimisation on the first period, as the paper does (kept for comparison with "
+    "linear least squares, which reaches the exact optimum). The interpolation error is the "
+    "phase atan2(u_sin, u_cos) minus θ, given with its mean over the period removed (the "
+    "phase's origin is arbitrary); the modelled error, tabulated over the measured phase, is "
+    "the correction, and the compensated error is what remains after applying it."
+)
+#: why no certificate, no U and no statement of conformity rest on a particle swarm's fit
+#: (assessment 76 H1: the sample's swarm, 600 times the least squares' cost, decided "pass"
+#: where least squares decided "fail", from an interval of the least squares' covariance)
+PSO_REFUSAL = QT_TR_NOOP(
+    "the signals were identified by particle swarm (the paper's method, kept for "
+    "comparison): a swarm stopped where its cost stalls gives no covariance, so its "
+    "parameters, its correction table and the error curve fitted from them have no "
+    "uncertainty, and its residual RMS, {sin} mV (sin) and {cos} mV (cos), is {ratio} times "
+    "that of the least-squares fit of the same readings ({lsq_sin} and {lsq_cos} mV); "
+    "identify by least squares (the default) for a certificate, its JSON U and a decision")
 #: an order not fitted that the sampled phases fold into a fitted one, said in the method
 FOLDED_METHOD = QT_TR_NOOP(
     "Order {order} is not fitted: at the sampled phases it cannot be told from order {into}, "
@@ -95,7 +127,33 @@ def method_text(result) -> Any:
     folded = [message(FOLDED_METHOD, order=order, into=into,
                       amplitude=f"A{into}" if into else "A₀")
               for order, into in getattr(result, "folded_orders", ())]
-    return separated([message(METHOD, orders=orders), *folded], " ")
+    said = METHOD_PSO if getattr(result, "method", "lsq") == "pso" else METHOD
+    return separated([message(said, orders=orders), *folded], " ")
+
+
+def identification_refusal(result) -> Any:
+    """Why no certificate of ``result`` can be issued, nor U and a decision stated, whatever
+    its details ("" when they can): an identification by particle swarm. The swarm is the
+    paper's, kept to compare with: it has no covariance of its own, and the least-squares
+    covariance the budget propagates is that of the least-squares estimate, not of a search
+    stopped where it stalls (the sample's swarm: 600 times the least squares' cost on the
+    first period, sin A3 0.022 V against 0.079 V). Refused whatever its residual, so no
+    threshold of "far worse" is needed: least squares reaches the exact optimum of the same
+    model, so the swarm never fits better, and a swarm that reached it would be that fit."""
+    if getattr(result, "method", "lsq") != "pso":
+        return ""
+    lsq = tuple(result.least_squares_residual_rms) or (math.nan, math.nan)
+    own = (result.sin_fit.residual_rms, result.cos_fit.residual_rms)
+    ratio = math.sqrt((own[0] ** 2 + own[1] ** 2) / (lsq[0] ** 2 + lsq[1] ** 2))
+    return message(PSO_REFUSAL, sin=f"{own[0] * 1e3:.3g}", cos=f"{own[1] * 1e3:.3g}",
+                   ratio=f"{ratio:.3g}", lsq_sin=f"{lsq[0] * 1e3:.3g}",
+                   lsq_cos=f"{lsq[1] * 1e3:.3g}")
+
+
+def _refuse_identification(result) -> None:
+    refusal = identification_refusal(result)
+    if refusal:
+        raise MetadataError(refusal)
 
 
 OBSERVABILITY_STATEMENT = QT_TR_NOOP(
@@ -177,6 +235,113 @@ def _stated_inputs(result, ds: np.ndarray, dc: np.ndarray, to_unit: float) -> li
     return out
 
 
+#: the settings' phase reference u's row (_stated_inputs)
+_SETTING_REFERENCE = "Phase reference"
+
+
+def _is_phase_reference(standard) -> bool:
+    """A listed standard stated to be the phase reference (role "reference") with its U: the
+    settings' phase reference u is the same reference's. One with no role stated is not
+    told from the ADC (a test lists an ADC with a U in arcsec), so it enters as before."""
+    return standard.uncertainty is not None and standard.role == "reference"
+
+
+def _may_be_phase_reference(standard) -> bool:
+    """A listed standard with a U that is not stated to be the ADC: its u, per sample, is of
+    each sample's phase."""
+    return standard.uncertainty is not None and standard.role != "adc"
+
+
+def _reference_once(metadata: CertificateMetadata, standards: list[BudgetComponent],
+                    stated: list[BudgetComponent], symbol: str) -> list[BudgetComponent]:
+    """The standards' rows (one per standard with a U, in the order listed) and the settings'
+    stated inputs, the phase reference entered once: the settings' *phase reference u* is
+    the u of each sample's phase, the θ reference's U / k or the sampling's timing, the
+    same reference as a listed phase reference standard (assessment 76 M3: "Phase reference
+    (sampling clock)" and "Phase reference" both entered). Where both are given, the larger
+    standard uncertainty enters (on the safe side), its note naming the other."""
+    listed = [std for std in metadata.standards if std.uncertainty is not None]
+    setting = [c for c in stated if c.name == _SETTING_REFERENCE]
+    references = [c for c, std in zip(standards, listed, strict=True) if _is_phase_reference(std)]
+    if not setting or not references:
+        return [*standards, *stated]
+    own = setting[0]
+    u_setting = float(np.max(own.standard_uncertainty(1)))
+    largest = max(references, key=lambda c: float(np.max(c.standard_uncertainty(1))))
+    u_standard = float(np.max(largest.standard_uncertainty(1)))
+    if u_standard >= u_setting:
+        kept = [dataclasses.replace(c, note=message(QT_TR_NOOP(
+            "{note}; the settings' phase reference u ({u}) is of this reference and is not "
+            "entered again"), note=c.note, u=f"{u_setting:.2g}{symbol}"))
+            if c is largest else c for c in standards]
+        return [*kept, *(c for c in stated if c is not own)]
+    kept = [c for c in standards if not any(c is r for r in references)]
+    named = dataclasses.replace(own, note=message(QT_TR_NOOP(
+        "{note}; the listed standard {names} (u {u}) is this reference: entered once, the "
+        "larger"), note=own.note, names=listed_names(references),
+        u=f"{u_standard:.2g}{symbol}"))
+    return [*kept, *(named if c is own else c for c in stated)]
+
+
+def listed_names(components: list[BudgetComponent]) -> Any:
+    return listed(message(c.name) for c in components)
+
+
+#: how the phase reference enters the decided half range's interval (assessment 76 M3: its
+#: budget said "u per sample" while the interval took it as one shift that cancels)
+REFERENCE_IN_HALF_RANGE = QT_TR_NOOP(
+    "The phase reference's errors are taken as independent from sample to sample (its u per "
+    "sample): they enter the decided half range's interval through the fit of the signals, "
+    "as the signals' noise does, not as one shift of the whole period, which would cancel in "
+    "a half range.")
+
+
+def _phase_reference_entered(result, metadata: CertificateMetadata) -> bool:
+    return bool((result.inputs or {}).get("phase_reference_u")) or any(
+        std.uncertainty is not None for std in metadata.standards)
+
+
+#: a phase reference standard's u per sample from this share of a signal period up is taken
+#: for a figure of a signal period stated in shaft angle: a reference that uncertain could
+#: not give the phase of an interpolation error of about 1 % of a period (the signals would
+#: not follow its θ), and "0.05°" of a period read as shaft angle is 0.05 × L periods
+PERIOD_SHARE_DOUBTED = 0.1
+
+REFERENCE_UNIT_WARNING = QT_TR_NOOP(
+    "Reference standard '{name}': its uncertainty {given} is taken as shaft angle, as every "
+    "standard's figure is: u = {u} per sample, {periods} signal periods, which no phase "
+    "reference of an interpolation error can be. The settings' phase reference u and the θ "
+    "column are in degrees of a signal period (one period is {period} of shaft angle): if "
+    "its certificate states {given} of a signal period, state {converted} (shaft angle) in "
+    "the standards table.")
+
+
+def reference_unit_warnings(result, metadata: CertificateMetadata) -> list[Any]:
+    """A warning for each phase reference standard whose u per sample is
+    :data:`PERIOD_SHARE_DOUBTED` of a signal period or more (an encoder's: a standard's "°"
+    is shaft angle, the settings' "°" of a signal period; assessment 76 M3: 0.05° listed,
+    180" per sample, U 361" at every sample, nothing said)."""
+    if result.unit != "arcsec":
+        return []
+    out = []
+    for std in metadata.standards:
+        if not _may_be_phase_reference(std):
+            continue
+        try:
+            u = std.uncertainty_in("arcsec") / divisor_for_basis(std.basis)[0]
+            of_period = float(Quantity(std.uncertainty, std.uncertainty_unit).in_unit("deg"))
+        except (MetadataError, UnitError):
+            continue
+        if u < PERIOD_SHARE_DOUBTED * result.period_length:
+            continue
+        given = f"{std.uncertainty:g}{UNITS[std.uncertainty_unit].symbol}"
+        out.append(message(REFERENCE_UNIT_WARNING, name=std.description or "#", given=given,
+                           u=f"{u:.4g}\"", periods=f"{u / result.period_length:.3g}",
+                           period=f"{result.period_length:.4g}\"",
+                           converted=f"{of_period / 360.0 * result.period_length:.4g}\""))
+    return out
+
+
 _STATED_NAMES = ("Phase reference", "ADC quantisation", "ADC offset", "ADC gain ratio",
                  "ADC linearity")
 
@@ -229,7 +394,9 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
 def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
                   settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
     """The budget of the compensated error, or of the as-found error (no model input), held
-    to the laboratory's CMC of the ``settings`` ``result`` was analysed with (None: none)."""
+    to the laboratory's CMC of the ``settings`` ``result`` was analysed with (None: none).
+    MetadataError for a particle swarm's fit (:func:`identification_refusal`)."""
+    _refuse_identification(result)
     n = result.theta_rad.size
     to_unit = result.period_length / (2.0 * math.pi)
     ds, dc = _phase_sensitivities(result)
@@ -241,9 +408,10 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
     us = model_signal_std(result.theta_rad, sig_s, result.sin_fit.orders, result.theta_rad)
     uc = model_signal_std(result.theta_rad, sig_c, result.cos_fit.orders, result.theta_rad)
     model = np.hypot(ds * us, dc * uc) * to_unit
-    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
-                                               unit=result.unit, common=True)
-    components += _stated_inputs(result, ds, dc, to_unit)
+    components = _reference_once(
+        metadata, reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
+                                                unit=result.unit, common=True),
+        _stated_inputs(result, ds, dc, to_unit), result.unit_symbol)
     components.append(BudgetComponent(
         QT_TR_NOOP("Signal noise"), "A", "normal", noise, 1.0, 1.0, dof,
         message(QT_TR_NOOP("σ = {sin} mV (sin), {cos} mV (cos) from the fit residuals, "
@@ -279,38 +447,59 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
     """The budget of the model's as-found error at the phases ``theta`` (see
     :func:`model_error_curve`), every input with its nature: each independent direction of
     each channel's fitted parameters (their covariance from the fit residuals, Type A with
-    n − p degrees of freedom, one estimate a channel), each channel's ADC offset and the
+    n − p degrees of freedom, or J − p from the phase means where the phases repeat and
+    those scatter more, one estimate a channel), each channel's ADC offset and the
     channels' gain ratio are one unknown value for the whole record, carried to every phase
     through their signed sensitivity; the ADC's quantisation and linearity are bounded
     errors of each reading (rectangular, per phase); the reference standards' and the phase
-    reference's errors shift the phase of the whole period (one value each)."""
-    n = result.theta_rad.size
+    reference's errors, independent from sample to sample, through the fit, each of its
+    independent directions one value for the record, the fit's own directions drawn with
+    the scatter beyond what those errors would show (counted once:
+    :func:`models.fringe.reference_through_fit.scatter_beyond_reference`)."""
     to_unit = result.period_length / (2.0 * math.pi)
     s = model_signal(theta, result.sin_fit)
     c = model_signal(theta, result.cos_fit)
     r2 = s**2 + c**2
     ds, dc = c / r2 * to_unit, -s / r2 * to_unit  # ∂φ/∂u_s, ∂φ/∂u_c, as shaft angle per V
-    p = 1 + 2 * len(result.sin_fit.orders)
-    dof = max(n - p, 1)
 
     def signed(effect: np.ndarray, name, figure: float, note, evaluation="B", nu=math.inf,
-               group="", distribution="normal") -> BudgetComponent:
+               group="", distribution="normal", in_readings=False) -> BudgetComponent:
         divisor = math.sqrt(3.0) if distribution == "rectangular" else 1.0
         return BudgetComponent(name, evaluation, distribution, np.abs(effect) * figure, divisor,
                                np.where(effect < 0, -1.0, 1.0), nu, note, common=True,
-                               dof_group=group)
+                               dof_group=group, in_readings=in_readings)
 
+    # the phase reference's errors, independent from sample to sample (a standard stated per
+    # reading, the settings' u of each sample's phase): through the fit, as the signals'
+    # noise, not one shift of the whole period that cancels in the half range (assessment
+    # 76 M3: a u of 0.001" to 2" per sample left the decided interval as it was); counted
+    # once with the readings' scatter, which shows them where they are in the readings
+    # (reference_through_fit.scatter_beyond_reference: the larger of the two, not the sum)
+    references = _reference_once(
+        metadata, reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
+                                                unit=result.unit),
+        [c for c in _stated_inputs(result, np.zeros(1), np.zeros(1), to_unit)
+         if c.name == _SETTING_REFERENCE], result.unit_symbol)
+    u_references = [float(np.max(reference.standard_uncertainty(1))) for reference in references]
+    scatter = scatter_beyond_reference(result, math.hypot(*u_references) / to_unit)
     components = []
-    for label, fit, d in (("sin", result.sin_fit, ds), ("cos", result.cos_fit, dc)):
-        sigma = fit.residual_rms * math.sqrt(n / dof)
+    for label, fit, d, beyond in (("sin", result.sin_fit, ds, scatter[0]),
+                                  ("cos", result.cos_fit, dc, scatter[1])):
         modes = model_signal_modes(result.theta_rad, fit.orders, theta)
+        note = QT_TR_NOOP("one independent direction of the fitted parameters' covariance, "
+                          "carried to the modelled phase error") \
+            if not beyond.reference_v > 0.0 else message(QT_TR_NOOP(
+                "one independent direction of the fitted parameters' covariance, carried to "
+                "the modelled phase error, drawn with the readings' scatter beyond what the "
+                "phase reference's errors would show ({shown} mV shown, {reference} mV the "
+                "reference's share, which its own directions carry: counted once)"),
+                shown=f"{beyond.shown_v * 1e3:.3g}",
+                reference=f"{beyond.reference_v * 1e3:.3g}")
         for j in range(modes.shape[1]):
             components.append(signed(
                 d * modes[:, j], message(QT_TR_NOOP("Fitted model, {channel} channel, direction "
                                                     "{j}"), channel=label, j=j + 1),
-                sigma, QT_TR_NOOP("one independent direction of the fitted parameters' "
-                                  "covariance, carried to the modelled phase error"),
-                "A", dof, f"fit {label}"))
+                beyond.sigma_v, note, "A", beyond.dof, f"fit {label}"))
     inputs = result.inputs or {}
     offset = inputs.get("adc_offset_u_mv", 0.0)
     if offset:
@@ -345,13 +534,23 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
                 distribution="rectangular"))
     if not inputs.get("adc_lsb_mv", 0.0):
         components += _readings_rounding(result, ds, dc)
-    u_phase = inputs.get("phase_reference_u", 0.0)
-    if u_phase:
-        components.append(BudgetComponent(
-            QT_TR_NOOP("Phase reference"), "B", "normal", u_phase / 360.0 * result.period_length,
-            1.0, 1.0, math.inf, common=True))
-    components += reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
-                                                unit=result.unit, common=True)
+    if references:
+        # repeated at each phase where the phase means show it; shown by the readings'
+        # scatter: noise they hold, else an envelope they may not
+        modes = reference_curve_modes(result, theta, any(side.repeated for side in scatter))
+        held = all(channel.holds_reference for channel in scatter)
+        for reference, u in zip(references, u_references, strict=True):
+            for j in range(modes.shape[1]):
+                components.append(signed(
+                    modes[:, j], message(QT_TR_NOOP("{name}, through the fit, direction {j}"),
+                                         name=message(reference.name), j=j + 1), u,
+                    message(QT_TR_NOOP("u = {u} of each sample's phase, independent from "
+                                       "sample to sample: carried through the least-squares "
+                                       "fit to the fitted curve, as the signals' noise is (a "
+                                       "shift common to every sample would cancel in the "
+                                       "half range; these do not)"),
+                            u=f"{u:.2g}{result.unit_symbol}"), "A" if held else "B",
+                    in_readings=not held))
     # held to the laboratory's CMC of the ``settings`` (None: none), as the samples' budget:
     # the decided half range's interval is held to it (models.uncertainty.conformity)
     return UncertaintyBudget(tuple(components), theta.size, metadata.coverage_probability,
@@ -442,7 +641,9 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
     # act on it; none with an estimated phase (parameter_uncertainty)
     stated = parameter_uncertainty(result)
     if stated.withheld:
-        no_u = message(QT_TR_NOOP("no U (phase estimated from the signals)"))
+        no_u = message(QT_TR_NOOP("no U (identified by particle swarm)")
+                       if getattr(result, "method", "lsq") == "pso" else
+                       QT_TR_NOOP("no U (phase estimated from the signals)"))
         rows = []
         for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
             rows.append((named(message(QT_TR_NOOP("{channel}: offset A₀"), channel=label), 0),
@@ -467,7 +668,11 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
                          *gum_pair(fit.amplitude[h], k * ua, " V")))
             phase_u = phase_expanded(fit.amplitude[h], stated.amplitude_scatter[label][h], up,
                                      k)
-            if math.isfinite(phase_u):
+            if not math.isfinite(ua):  # no U for the amplitude: nothing is said of its
+                # significance (a swarm's A1 = 3.7 V printed "not significant (A1 ≤ U)")
+                rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], math.nan, " rad",
+                                                         signed=True)))
+            elif math.isfinite(phase_u):
                 rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], phase_u, " rad",
                                                          signed=True)))
             elif abs(fit.amplitude[h]) > k * ua:  # a phase, but its U would not hold
@@ -549,6 +754,7 @@ def printed_samples(raw: np.ndarray, comp: np.ndarray, big_u: np.ndarray, per: i
 def fringe_certificate(result, metadata: CertificateMetadata, source_name: str = "",
                        method_reference: str = "",
                        settings: Mapping[str, Any] | None = None) -> CertificateDocument:
+    _refuse_identification(result)  # no U, no decision: the swarm's, before its details
     as_left = bool(metadata.as_left_table_sha256) and \
         metadata.as_left_table_sha256.strip().lower() == result.table.sha256
     if metadata.as_left_table_sha256 and not as_left:
@@ -734,12 +940,17 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         tolerance=tol, plots=(drawn["errors"],
                               fringe_plots.first_period_with_uncertainty(result, shown_u, per),
                               drawn["residuals"]),
-        warnings=result.warnings, unit=sym, untraceable=tuple(untraceable),
+        warnings=(*result.warnings, *reference_unit_warnings(result, metadata)), unit=sym,
+        untraceable=tuple(untraceable),
         not_in_u=tuple(not_stated(result, metadata)),
         stated_inputs=tuple(c.name for c in budget.components
                             if c.name in _STATED_NAMES),
         statements=(table_statement, *advice) + (
-            (OBSERVABILITY_STATEMENT,) if result.phase_source == "estimated" else ()),
+            (OBSERVABILITY_STATEMENT,) if result.phase_source == "estimated" else ()) + (
+            # how the phase reference enters the decided half range, said in words
+            (REFERENCE_IN_HALF_RANGE,)
+            if metadata.decision_quantity == "half_range" and tol is not None
+            and _phase_reference_entered(result, metadata) else ()),
         uncertainty_withheld=message(ESTIMATED_PHASE_REASON) if no_u else "",
         point_columns=(("sample", np.arange(1, raw.size + 1, dtype=float)),
          ("phase_deg", np.degrees(result.theta_rad)), (f"raw_error_{unit}", raw),

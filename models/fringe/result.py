@@ -43,6 +43,9 @@ class FringeResult:
     table_zero: str = "mean"
     reversals: int = 0
     pso_seconds: float | None = None
+    # the particle swarm's: (sin, cos) residual RMS (V) of the least-squares fit of the same
+    # readings over the whole record, to set the swarm's beside (empty: fitted by least squares)
+    least_squares_residual_rms: tuple[float, ...] = ()
     warnings: list[str] = field(default_factory=list)
     # orders the signals hold that the fit leaves out (the particle swarm's fixed orders):
     # the error between the samples is then not determined (unmodelled_harmonics)

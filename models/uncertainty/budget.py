@@ -110,6 +110,12 @@ class BudgetComponent:
     # its error at each point is one value for the whole run, held in the measured curve and
     # not in the scatter of the readings (a reference's calibration error at that position)
     in_curve: bool = False
+    # a stated (Type B) random error the readings hold as they hold their noise (a phase
+    # reference's independent errors at each sample, carried through a fit to the fitted
+    # curve): drawn with the noise, its excess on the measured range taken out as the
+    # noise's, and, as it may be smaller than stated, the upper end and the value also held
+    # with it at zero (models.uncertainty.conformity.half_range_monte_carlo)
+    in_readings: bool = False
     # its figure is stated for any angle between two readings (ReferenceStandard.applies_to
     # "angle"): the difference of two points' errors is within it, not within twice it
     per_angle: bool = False

@@ -319,6 +319,9 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
       parameters' covariance): drawn the same way;
     * ``independent``: every other input, one draw per point.
 
+    A stated input the readings hold as noise (``in_readings``: a phase reference's errors
+    at each sample through a fit) is drawn with the ``shared`` ones, not in ``evaluated``.
+
     A Type A input with ν degrees of freedom is drawn as a t-distribution (JCGM 101 6.4.9),
     its scale s·√(ν/χ²_ν) one draw per trial for all the inputs of one estimate
     (``dof_group``). ``in_curve`` False: the inputs held in the measured curve
@@ -334,7 +337,7 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
     for i, comp in enumerate(budget.components):
         sens = np.broadcast_to(np.asarray(comp.sensitivity, dtype=float), (budget.points,))
         c_u = (sens * comp.standard_uncertainty(budget.points))[points]
-        if np.any(c_u) and not (comp.in_curve and not in_curve):
+        if np.any(c_u) and not ((comp.in_curve or comp.in_readings) and not in_curve):
             included.append((i, comp, c_u))
     # with every input one value a trial (the fringe's 22), each input's draws are taken in
     # the generator's order first and summed afterwards block by block of trials: every
@@ -355,8 +358,9 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
             if key not in scales:
                 scales[key] = np.sqrt(comp.dof / rng.chisquare(comp.dof, (trials, 1)))
             scale = scales[key]
-        part = (independent if not comp.common else shared if comp.evaluation == "A"
-                else systematic)
+        # an input the readings hold as noise (in_readings) is drawn with the noise
+        part = (independent if not comp.common
+                else shared if comp.evaluation == "A" or comp.in_readings else systematic)
         drawn = _InputDraws(draws, c_u, scale,
                             evaluated if comp.evaluation == "A" else None, part)
         if per_point:
@@ -476,7 +480,7 @@ def half_range_monte_carlo(errors, budget: UncertaintyBudget,
     base = e + systematic
     ranges = 2.0 * np.ptp(base, axis=1) - np.ptp(base + noise, axis=1)
     high_range, median_range = np.quantile(ranges, [1.0 - UPPER_TAIL * alpha, 0.5])
-    if any(c.in_curve and not c.common for c in budget.components):
+    if any(c.in_curve and not c.common or c.in_readings for c in budget.components):
         # the inputs held in the curve (a reference's error at each point) may be smaller
         # than stated: their excess is then not in the measured range, and taking it out
         # put the upper end below the truth. The upper end also holds with them at zero.

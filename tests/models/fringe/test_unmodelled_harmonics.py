@@ -83,9 +83,10 @@ def test_signals_with_only_the_orders_asked_for_are_left_as_they_are(periods):
 
 @pytest.mark.slow
 def test_the_particle_swarm_withholds_the_half_range_it_cannot_model():
-    """The particle swarm fits orders 1, 3, 5 and no other: a 2nd harmonic is named and the
-    decided half range over the whole period is withheld with the reason."""
-    from models.certificate.metadata import CertificateMetadata
+    """The particle swarm fits orders 1, 3, 5 and no other: a 2nd harmonic is named, and
+    no certificate (so no decided half range) is made of the swarm's fit at all since
+    assessment 76 H1 (tests/models/fringe/test_fringe_pso_no_certificate.py)."""
+    from models.certificate.metadata import CertificateMetadata, MetadataError
     from models.fringe.report import fringe_certificate
 
     head = FringeHead(offsets_v=(0.01, -0.02), amplitudes_v=(1.0, 0.98), noise_v=0.001,
@@ -96,8 +97,8 @@ def test_the_particle_swarm_withholds_the_half_range_it_cannot_model():
     assert any("particle swarm" in w and "order 2" in w for w in result.warnings)
     metadata = CertificateMetadata.from_dict({"tolerance": 1.0, "tolerance_unit": "arcsec",
                                               "decision_quantity": "half_range"})
-    conformity = fringe_certificate(result, metadata).conformity
-    assert conformity.verdict == "not assessed" and "order 2" in conformity.reason
+    with pytest.raises(MetadataError, match="identified by particle swarm"):
+        fringe_certificate(result, metadata)
 
 
 @pytest.mark.parametrize("bits", [10, 12, 14, 16])

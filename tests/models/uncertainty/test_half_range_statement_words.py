@@ -98,10 +98,13 @@ def _fringe_statement() -> tuple[str, float, float]:
     every_input = {"phase_reference_u": 0.01, "adc_lsb_mv": 0.3, "adc_offset_u_mv": 0.5,
                    "adc_gain_u_pct": 0.05, "adc_linearity_mv": 0.5}
     result = kind.analyze(parsed, kind.settings_with_defaults(every_input))
+    # the ADC listed without a U in arcsec: with one (0.3″ U95, 0.15″ a sample, far more
+    # than the record's scatter shows) it was taken as a phase reference's errors through
+    # the fit, an envelope drawn as noise (fringe76b), whose median excess put the value
+    # 0.001″ below the measured one: not the case this test is about
     meta = CertificateMetadata.from_dict({
         "tolerance": 0.5, "tolerance_unit": "arcsec", "decision_rule": "guarded",
-        "standards": [{"description": "Data acquisition (16-bit ADC)", "uncertainty": 0.3,
-                       "uncertainty_unit": "arcsec", "basis": "U95"}]})
+        "standards": [{"description": "Data acquisition (16-bit ADC)"}]})
     conformity = kind.certificate_document(result, meta).conformity
     assert conformity.monte_carlo is not None
     return conformity.statement, conformity.value, conformity.monte_carlo.measured
