@@ -31,7 +31,7 @@ from models.messages import as_sentence
 from models.project.output_guard import check_output
 from models.register.wording import revision_words
 from models.workbench import IssuesCertificates
-from widgets.i18n import explained, tr, translated
+from widgets.i18n import explained, joined, tr, translated
 
 if TYPE_CHECKING:
     from models.register.store import LookalikeSerial
@@ -321,7 +321,7 @@ class CertificatePresenter:
         each new set (the details are read on every redraw of the plots)."""
         said = tuple(texts)
         if said and said != self._skipped_said.get(key):
-            self.view.show_status("; ".join(translated(t) for t in texts), 20000)
+            self.view.show_status(joined("; ", (translated(t) for t in texts)), 20000)
         self._skipped_said[key] = said
 
     def stored_details(self, key: str) -> CertificateMetadata | None:
@@ -677,7 +677,7 @@ class CertificatePresenter:
                         tr("Draft written to {path} — DRAFT: {missing} missing; nothing was "
                            "recorded in the register"))
                 self.view.show_status(self._with_dcc(said.format(
-                    path=path, missing=", ".join(tr(m) for m in draft)), path), 10000)
+                    path=path, missing=joined(", ", (tr(m) for m in draft))), path), 10000)
                 return True
             return self._issue(kind, result, entered, settings, rows or [], source_name, path,
                                revision, note, raw_capture, separate, confirmed)

@@ -467,7 +467,8 @@ class MainWindow(QMainWindow):
             return False
         if source.result is None:
             problem = source.problem or tr("no readings have been analysed yet")
-            self.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {problem}.")
+            self.tell(tr("Nothing to send"), tr("{workbench}: {problem}.").format(
+                workbench=declared(source.kind.title), problem=problem))
             return False
         rows = source.kind.run_rows(source.result)
         # the positioning certificate says where these readings came from: the sending
@@ -504,7 +505,8 @@ class MainWindow(QMainWindow):
             return None
         if presenter.result is None:
             problem = presenter.problem or tr("no readings have been analysed yet")
-            self.tell(tr("Nothing to export"), f"{declared(presenter.kind.title)}: {problem}.")
+            self.tell(tr("Nothing to export"), tr("{workbench}: {problem}.").format(
+                workbench=declared(presenter.kind.title), problem=problem))
             return None
         return presenter.result
 
