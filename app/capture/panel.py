@@ -905,6 +905,9 @@ class CapturePanel(QDockWidget):
         if tabs is not None:
             tabs.currentChanged.connect(self.workbench_changed)
         on_language_change(self, self._refill_columns)
+        # the guidance in the new language, connected or not (day review live76 F4: with no
+        # instrument connected it stayed in the old one until the next take)
+        on_language_change(self, self._guide_again)
 
     def _docked(self, area) -> None:
         """At the bottom the panel's parts stand side by side; at a side, one above the other."""
@@ -1225,6 +1228,10 @@ class CapturePanel(QDockWidget):
             return
         for link in self.links:
             link.fill_columns(presenter.kind.columns)
+
+    def _guide_again(self) -> None:
+        if getattr(self.window_, "current", None) is not None:
+            self.update_guide()
 
     # ------------------------------------------------------------ the raw frames
     def raw_sessions(self, workbench: str) -> list[dict]:
