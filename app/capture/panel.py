@@ -132,6 +132,24 @@ def _unit_symbol(unit: str) -> str:
     return '"' if unit in ANGLE_UNITS else (f" {unit}" if unit else "")
 
 
+def _significant(value: float, digits: int = 3) -> str:
+    """``value`` with ``digits`` significant digits, never in scientific notation."""
+    return np.format_float_positional(float(value), precision=digits, unique=False,
+                                      fractional=False, trim="-")
+
+
+def last_still_run(values: np.ndarray, window: float) -> int:
+    """Where the frames since the reading last moved begin: a move is a step from one frame
+    to the next larger than the stability window (in the same unit as ``values``) and than
+    five times the frames' own noise (a noisy instrument is not moving)."""
+    if len(values) < 2:
+        return 0
+    steps = np.abs(np.diff(values))
+    noise = 1.4826 * float(np.median(steps)) / np.sqrt(2.0)
+    moved = np.flatnonzero(steps > max(window, 5.0 * noise))
+    return int(moved[-1]) + 1 if len(moved) else 0
+
+
 #: the stability shown is the spread of the frames of the last second
 SPREAD_SECONDS = 1.0
 #: how often the guidance is worked out again while connected (seconds of frames)
@@ -1773,7 +1791,10 @@ class CapturePanel(QDockWidget):
     def _show_allan(self, degrees: bool, scale: float) -> None:
         """The first instrument's Allan deviation over its frames since the last gap (a link
         lost, a pause, a rate set anew): the formula takes frames as evenly spaced, and
-        frames from both sides of a gap as neighbours showed a step across it as noise."""
+        frames from both sides of a gap as neighbours showed a step across it as noise.
+        Only over the frames since the reading last moved, in the window's unit with three
+        significant digits (day review live76 F9: "5.1e+03 (0.0753 s)" of a readout moved
+        from target to target, the moves read as noise)."""
         link = self.links[0]
         kept = [frame for frame in self.frames if frame[0] > link.gap_before]
         times = np.array([t for t, _, _ in kept])
@@ -1782,20 +1803,30 @@ class CapturePanel(QDockWidget):
             self.allan.setText(tr("Allan deviation: waiting for frames after the gap")
                                if self.frames else "")
             return
-        times = times[start:]
-        tau0 = float(np.median(np.diff(times)))
         first = np.array([v[0] for _, v, _ in kept[start:]])
         if degrees:
             first = _unwrapped_deg(first, first[0])
+        still = last_still_run(first * scale, self.window_box.value())
+        if len(first) - still < 16:
+            self.allan.setText(tr("Allan deviation: the reading is moving (waiting for it to "
+                                  "stay still)"))
+            return
+        after_gap = start > 0 or len(kept) != len(self.frames)
+        times, first = times[start + still:], first[still:]
+        tau0 = float(np.median(np.diff(times)))
         taus, adev = allan_deviation(first, tau0)
         # three of them (the shortest, a middle and the longest τ): the text stays short
         picked = sorted({0, len(taus) // 2, len(taus) - 1}) if len(taus) else []
-        figures = ", ".join(f"{adev[i] * scale:.3g} ({taus[i]:.3g} s)" for i in picked)
-        self.allan.setText(
-            tr("Allan deviation (first axis): {figures}").format(figures=figures)
-            if start == 0 and len(kept) == len(self.frames) else
-            tr("Allan deviation (first axis, since the last gap): {figures}").format(
-                figures=figures))
+        unit = _unit_symbol(self.latest.unit if self.latest is not None else "")
+        figures = ", ".join(f"{_significant(adev[i] * scale)}{unit} ({_significant(taus[i])} s)"
+                            for i in picked)
+        if still:
+            said = tr("Allan deviation (first axis, since the reading last moved): {figures}")
+        elif after_gap:
+            said = tr("Allan deviation (first axis, since the last gap): {figures}")
+        else:
+            said = tr("Allan deviation (first axis): {figures}")
+        self.allan.setText(said.format(figures=figures))
 
     # ------------------------------------------------------------ take reading
     def waiting_for(self) -> list[InstrumentLink]:
