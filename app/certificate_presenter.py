@@ -561,7 +561,8 @@ class CertificatePresenter:
         shown = self.details(kind.key)
         # the "Readings:" line the certificate will print, shown in the details dialog
         # before issue (day review 67 F7)
-        self.readings_line = readings_stated(kind.key, source_name, rows or [], raw_capture)[0]
+        self.readings_line = readings_stated(kind.key, source_name, rows or [], raw_capture,
+                                             kind.columns)[0]
         while True:
             entered = self.edit_details(shown)
             if entered is None:
@@ -664,7 +665,8 @@ class CertificatePresenter:
                 check_output(self._dcc_path(path), self.protected())
             self._refuse_issued((("", path), ("", self._dcc_path(path))))
             # a draft and a specimen say where the readings came from as the issued one would
-            origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture)
+            origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture,
+                                             kind.columns)
             if entered.example:
                 return self._specimen(kind, result, entered, settings, origin, path, digest)
             if draft:
@@ -939,7 +941,8 @@ class CertificatePresenter:
         try:
             check_output(path, self.protected())
             self._refuse_issued((("", path),))  # rev62 F8
-            origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture)
+            origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture,
+                                             kind.columns)
             document = dataclasses.replace(kind.certificate_document(
                 result, self.details(kind.key), origin, settings), raw_data_sha256=digest)
             if path.lower().endswith(".xlsx"):
