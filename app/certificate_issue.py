@@ -234,11 +234,12 @@ def sign_if_configured(xml: bytes, key_file: str = "", cert_file: str = "") -> b
 
 def readings_stated(workbench: str, source_name: str, rows: Sequence[Sequence[str]],
                     raw_capture: Sequence[dict[str, Any]] | None,
-                    columns: Sequence[Column] = ()) -> tuple[str, str]:
+                    columns: Sequence[Column] = (), result: Any = None) -> tuple[str, str]:
     """The certificate's "Readings:" (``source_name``, and the rows captured from the
     instruments: day review 64 P8) and the instrument output's SHA-256 ("" when no reading
     was taken from it). With the workbench's ``columns``, the rows that cannot be read are
-    named as left out of the analysis, and not counted (day review live76 F6)."""
+    named as left out of the analysis, and not counted (day review live76 F6), and so are
+    the rows ``result`` left out (a positioning reading at another position: F7)."""
     # the instrument output is the readings' origin only when a reading was taken from it:
     # a session with no take (the tab was in front while instruments were connected) is
     # kept with the record, not named on the certificate (rev62day F15: "Instrument output:
@@ -252,6 +253,7 @@ def readings_stated(workbench: str, source_name: str, rows: Sequence[Sequence[st
     if columns and filled and taken:
         used = set(ReadingsSheet(columns, rows).parse().row_index.tolist())
         left_out = [r for r in filled if r not in used]
+    left_out = sorted({*left_out, *(int(r) for r in getattr(result, "left_out", ()))})
     origin = readings_origin(source_name, captured_rows(sessions, rows, workbench),
                              len(filled), left_out)
     return origin, raw_digest(sessions) if taken else ""
@@ -308,7 +310,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                        READINGS_SOURCE: source_name},
                       {kind.key: raw_capture} if raw_capture else {})
     # "Readings:" as the rows came (typed, or which captured) and the instrument output
-    origin, digest = readings_stated(kind.key, source_name, rows, raw_capture, kind.columns)
+    origin, digest = readings_stated(kind.key, source_name, rows, raw_capture, kind.columns,
+                                     result)
     edited = tuple(e.text() for e in readings_edited_after_capture(
         kind, settings, rows, raw_capture)) if raw_capture else ()
     request = IssueRequest(kind.key, metadata, project_to_json(project),

@@ -562,7 +562,7 @@ class CertificatePresenter:
         # the "Readings:" line the certificate will print, shown in the details dialog
         # before issue (day review 67 F7)
         self.readings_line = readings_stated(kind.key, source_name, rows or [], raw_capture,
-                                             kind.columns)[0]
+                                             kind.columns, result)[0]
         while True:
             entered = self.edit_details(shown)
             if entered is None:
@@ -666,7 +666,7 @@ class CertificatePresenter:
             self._refuse_issued((("", path), ("", self._dcc_path(path))))
             # a draft and a specimen say where the readings came from as the issued one would
             origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture,
-                                             kind.columns)
+                                             kind.columns, result)
             if entered.example:
                 return self._specimen(kind, result, entered, settings, origin, path, digest)
             if draft:
@@ -942,7 +942,7 @@ class CertificatePresenter:
             check_output(path, self.protected())
             self._refuse_issued((("", path),))  # rev62 F8
             origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture,
-                                             kind.columns)
+                                             kind.columns, result)
             document = dataclasses.replace(kind.certificate_document(
                 result, self.details(kind.key), origin, settings), raw_data_sha256=digest)
             if path.lower().endswith(".xlsx"):

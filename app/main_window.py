@@ -563,7 +563,8 @@ class MainWindow(QMainWindow):
         print: their source and the rows captured from the instruments."""
         key = presenter.kind.key
         return readings_stated(key, self._source_name(presenter), presenter.result_state().rows,
-                               self.capture_panel.raw_sessions(key), presenter.kind.columns)[0]
+                               self.capture_panel.raw_sessions(key), presenter.kind.columns,
+                               presenter.result)[0]
 
     def _source_shown(self) -> str:
         """:meth:`_source_name` in the window's language."""

@@ -247,14 +247,14 @@ def readings_origin(source: str, captured: Sequence[int], row_count: int,
     """The "Readings:" line: ``source`` (a project file's name, or :data:`TYPED`) and the
     rows taken from the instruments (``captured``, 0-based, of ``row_count`` rows) — all of
     them, or which. ``source`` alone when none was. ``left_out``: filled rows the analysis
-    could not read (0-based), named, and neither counted nor said captured (day review
+    left out (0-based: a cell it cannot read, a reading it refused), named, and neither
+    counted nor said captured (day review
     live76 F6: "all 17 rows captured" beside "Readings 16", row 17 having no target)."""
     if left_out:
         out = set(left_out)
         used = readings_origin(source, [r for r in captured if r not in out],
                                row_count - len(out))
-        return message(QT_TR_NOOP("{readings}; row(s) {rows} left out of the analysis (a "
-                                  "cell that cannot be read)"),
+        return message(QT_TR_NOOP("{readings}; row(s) {rows} left out of the analysis"),
                        readings=used, rows=row_spans(sorted(out)))
     if not captured:
         return message(source) if source == TYPED else source

@@ -293,7 +293,24 @@ def test_a_row_the_analysis_cannot_read_is_named_not_counted():
     sessions = [{"workbench": "positioning", "takes": [[r, r, r] for r in range(17)]}]
     origin, _digest = readings_stated("positioning", TYPED, rows, sessions, COLUMNS)
     assert origin == ("all 16 rows captured from the instruments; row(s) 17 left out of the "
-                      "analysis (a cell that cannot be read)")
+                      "analysis")
     # every row read: as before
     origin, _digest = readings_stated("positioning", TYPED, rows[:16], sessions, COLUMNS)
     assert origin == "all 16 rows captured from the instruments"
+
+
+def test_a_reading_the_analysis_left_out_is_named_not_counted():
+    """A positioning reading at another position than its target (left out, live76 F7) is
+    named on the "Readings:" line as the rows that cannot be read are."""
+    from types import SimpleNamespace
+
+    from app.certificate_issue import readings_stated
+    from models.positioning.analysis import COLUMNS
+
+    rows = [[str(15 * (i % 4)), str(1 + i // 8), "+" if i % 8 < 4 else "-", "", "0.1"]
+            for i in range(16)]
+    sessions = [{"workbench": "positioning", "takes": [[r, r, r] for r in range(16)]}]
+    origin, _digest = readings_stated("positioning", TYPED, rows, sessions, COLUMNS,
+                                      SimpleNamespace(left_out=(6,)))
+    assert origin == ("all 15 rows captured from the instruments; row(s) 7 left out of the "
+                      "analysis")
