@@ -546,6 +546,10 @@ class InstrumentLink:
         readout = self.kind == "readout"
         self.column.setVisible(readout)
         self.column_label.setVisible(readout)
+        # no instrument yet: no resolution of its own to show ("as sent" until an
+        # autocollimator was connected: day review live76 F11)
+        self.resolution.setEnabled(bool(self.kind))
+        self.resolution_label.setEnabled(bool(self.kind))
         self.resolution.blockSignals(True)
         try:
             value = self.resolution_arcsec
@@ -706,6 +710,8 @@ class InstrumentLink:
                 shown.append(fixed_text(v, 6 if reading.unit == "deg" else 3) + unit)
             else:
                 shown.append(f"{cell[0]}{cell[1]}")
+        if self.kind == "autocollimator" and len(shown) == 2:  # which axis is which (live76)
+            shown = [f"x {shown[0]}", f"y {shown[1]}"]
         text = "   ".join(shown)
         if not self.lost:
             self.value.setText(text)

@@ -27,8 +27,9 @@ def test_take_reading_fills_the_polygon_row_as_one_undo_step(window, qtbot):
         panel.connect_to("autocollimator", sim.port, **FAST)
         qtbot.waitUntil(lambda: panel.latest is not None, timeout=3000)
         qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
-        # as the cells will read (0.01" resolution), not 3 decimals of its own (#41 review)
-        assert panel.value.text() == '3.25"   -1.50"'
+        # as the cells will read (0.01" resolution), not 3 decimals of its own (#41 review),
+        # each axis named (day review live76 F11: "9.56″ −3.19″")
+        assert panel.value.text() == 'x 3.25"   y -1.50"'
         steps = presenter.undo_stack.count()
         panel.take_button.click()
         panel.disconnect_instrument()
@@ -92,3 +93,16 @@ def test_no_blank_band_at_the_top_of_the_panel_docked_at_a_side(window):
     top = panel.links[0].box.mapTo(panel.body, QPoint(0, 0)).y()
     # the margin, the (empty) guidance's line and the layout's spacing: no more
     assert top <= panel.guide.sizeHint().height() + 20, top
+
+
+def test_the_resolution_is_the_instruments_once_one_is_connected(window, qtbot):
+    """Day review live76 F11: the first instrument's Resolution read "as sent" before any
+    instrument was connected (an autocollimator's is 0.01″); it waits for the instrument."""
+    _show(window, "polygon")
+    panel = window.capture_panel
+    link = panel.links[0]
+    assert not link.resolution.isEnabled() and not link.resolution_label.isEnabled()
+    with AutocollimatorSimulator("pty", positions=[(3.25, -1.5)]) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        assert link.resolution.isEnabled() and link.resolution.currentText() == '0.01"'
+        panel.disconnect_instrument()
