@@ -466,7 +466,8 @@ class MainWindow(QMainWindow):
         if not self.result_is_current(source, sending=True):
             return False
         if source.result is None:
-            problem = source.problem or tr("no readings have been analysed yet")
+            problem = (translated(source.problem) if source.problem else
+                       tr("no readings have been analysed yet"))
             self.tell(tr("Nothing to send"), tr("{workbench}: {problem}.").format(
                 workbench=declared(source.kind.title), problem=problem))
             return False
@@ -504,7 +505,8 @@ class MainWindow(QMainWindow):
         if not self.result_is_current(presenter):
             return None
         if presenter.result is None:
-            problem = presenter.problem or tr("no readings have been analysed yet")
+            problem = (translated(presenter.problem) if presenter.problem else
+                       tr("no readings have been analysed yet"))
             self.tell(tr("Nothing to export"), tr("{workbench}: {problem}.").format(
                 workbench=declared(presenter.kind.title), problem=problem))
             return None

@@ -50,7 +50,8 @@ def send_reference(window: Any) -> bool:
     if not window.result_is_current(source, sending=True):  # never a result older than
         return False  # the readings it stands for
     if source.result is None:
-        problem = source.problem or tr("no readings have been analysed yet")
+        problem = (translated(source.problem) if source.problem else
+                       tr("no readings have been analysed yet"))
         window.tell(tr("Nothing to send"), tr("{workbench}: {problem}.").format(
                 workbench=declared(source.kind.title), problem=problem))
         return False

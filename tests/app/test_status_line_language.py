@@ -160,10 +160,14 @@ def test_a_refusal_to_export_is_said_again_in_the_language_chosen(switched_back)
     test: 0 usable readings; …" stayed English, an f-string of its translated parts)."""
     window = switched_back
     window.tell = lambda title, text: window.statusBar().showMessage(text, 15000)
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
+    bench = window.presenter("polygon")
+    window.tabs.setCurrentIndex(window.presenters.index(bench))
+    bench.table_model.replace_all([], "empty")
+    bench.analyse_if_due()
     assert window._current_result() is None
     said = window.statusBar().currentMessage()
-    assert said.startswith("Polygon") and said.endswith("."), said
+    assert said == ("Polygon encoder test: 0 usable readings; a polygon test needs at least 3 "
+                    "positions."), said
     choose_language(window, "zh_CN")
     chinese = window.statusBar().currentMessage()
     assert HAN.search(chinese) and "Polygon" not in chinese, chinese
