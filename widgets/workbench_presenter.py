@@ -1131,6 +1131,8 @@ class WorkbenchPresenter(QObject):
         (day review 74 F9: "7 used" while the summary said run 2's 3 enter no figure)."""
         incomplete = getattr(result, "incomplete", None)
         waiting = len(incomplete.rows) if incomplete is not None else 0
+        # and the readings the analysis left out (positioning's far beyond the limit: live76 F7)
+        waiting += len(getattr(result, "left_out", ()) or ())
         if waiting:
             return tr("Readings — {taken} taken, {used} used").format(
                 taken=parsed.n, used=parsed.n - waiting)

@@ -313,6 +313,8 @@ def test_a_reading_left_out_is_drawn_apart_and_named(presenter_and_view):
     presenter.refresh()
     assert presenter.result is not None, presenter.problem
     assert presenter.table_model.highlight_rows == {6}
+    assert presenter._readings_count(presenter.parsed, presenter.result) == \
+        "Readings — 16 taken, 15 used"
     assert any(str(w).startswith("Row 7: measured 0.0001° at target 15°")
                for w in presenter.result.warnings)
     rows[6][4] = "15.0003"  # the row taken again at its target
