@@ -710,9 +710,12 @@ class InstrumentLink:
                 shown.append(fixed_text(v, 6 if reading.unit == "deg" else 3) + unit)
             else:
                 shown.append(f"{cell[0]}{cell[1]}")
-        if self.kind == "autocollimator" and len(shown) == 2:  # which axis is which (live76)
-            shown = [f"x {shown[0]}", f"y {shown[1]}"]
-        text = "   ".join(shown)
+        if self.kind == "autocollimator" and len(shown) == 2:
+            # which axis is which, one a line (day review live76 F11: "9.56″ −3.19″"; beside
+            # each other, with their names, they wrapped in the middle of the panel)
+            text = f"x {shown[0]}\ny {shown[1]}"
+        else:
+            text = "   ".join(shown)
         if not self.lost:
             self.value.setText(text)
         elif self.no_target is not None:

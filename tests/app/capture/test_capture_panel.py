@@ -29,7 +29,7 @@ def test_take_reading_fills_the_polygon_row_as_one_undo_step(window, qtbot):
         qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
         # as the cells will read (0.01" resolution), not 3 decimals of its own (#41 review),
         # each axis named (day review live76 F11: "9.56″ −3.19″")
-        assert panel.value.text() == 'x 3.25"   y -1.50"'
+        assert panel.value.text() == 'x 3.25"\ny -1.50"'
         steps = presenter.undo_stack.count()
         panel.take_button.click()
         panel.disconnect_instrument()
