@@ -2077,7 +2077,9 @@ class CapturePanel(QDockWidget):
                           "take if it is wrong").format(
                 row=row + 1, column=declared(sheet.columns[keys.index(key)].header),
                 face=step.fill.get("position", "?"),
-                value=f"{float(got[i]) % 360.0:.4f}", off=f"{off:+.1f}",
+                # rounded before the turn is taken: −0.00001 is 0.0000°, not 360.0000° beside
+                # the cell's "-0.00001" (day review live76 F11)
+                value=f"{round(float(got[i]), 4) % 360.0:.4f}", off=f"{off:+.1f}",
                 expected=degrees_text(expected), pitch=degrees_text(step.pitch_deg))))
         return out
 

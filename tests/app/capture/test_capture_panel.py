@@ -106,3 +106,19 @@ def test_the_resolution_is_the_instruments_once_one_is_connected(window, qtbot):
         panel.connect_to("autocollimator", sim.port, **FAST)
         assert link.resolution.isEnabled() and link.resolution.currentText() == '0.01"'
         panel.disconnect_instrument()
+
+
+def test_an_encoder_just_below_zero_is_said_as_the_cell_reads_it(window):
+    """Day review live76 F11: the cell read "-0.00001" while the off-plan note said
+    "360.0000°"."""
+    from types import SimpleNamespace
+
+    presenter = _show(window, "polygon")
+    panel = window.capture_panel
+    link = panel.links[0]
+    panel.next_reading = SimpleNamespace(pitch_deg=30.0, nominal={"encoder_deg": 40.0},
+                                         near={}, fill={"position": "5"})
+    said = panel._off_the_plan(presenter.table_model.sheet, 21, [(link, 0, "encoder_deg")],
+                               {link.slot: ((-0.00001,), "deg", (0, 0))})
+    assert len(said) == 1 and said[0][1].startswith(
+        "Row 22: encoder a [deg] 0.0000° is -40.0° from the ≈ 40° the plan expects at face 5"), said
