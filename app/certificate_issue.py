@@ -31,6 +31,7 @@ from models.certificate.readings_origin import captured_rows, filled_rows, readi
 from models.project.file import READINGS_SOURCE, Project, WorkbenchState, project_to_json
 from models.project.output_guard import check_output, register_files
 from models.readings.angles import parse_angle_deg
+from models.readings.sheet import Column, ReadingsSheet
 from models.register.store import CertificateRecord, IssueRequest, Register
 
 log = logging.getLogger(__name__)
@@ -232,18 +233,29 @@ def sign_if_configured(xml: bytes, key_file: str = "", cert_file: str = "") -> b
 
 
 def readings_stated(workbench: str, source_name: str, rows: Sequence[Sequence[str]],
-                    raw_capture: Sequence[dict[str, Any]] | None) -> tuple[str, str]:
+                    raw_capture: Sequence[dict[str, Any]] | None,
+                    columns: Sequence[Column] = (), result: Any = None) -> tuple[str, str]:
     """The certificate's "Readings:" (``source_name``, and the rows captured from the
     instruments: day review 64 P8) and the instrument output's SHA-256 ("" when no reading
-    was taken from it)."""
+    was taken from it). With the workbench's ``columns``, the rows that cannot be read are
+    named as left out of the analysis, and not counted (day review live76 F6), and so are
+    the rows ``result`` left out (a positioning reading at another position: F7)."""
     # the instrument output is the readings' origin only when a reading was taken from it:
     # a session with no take (the tab was in front while instruments were connected) is
     # kept with the record, not named on the certificate (rev62day F15: "Instrument output:
     # SHA-256 …" on a report none of whose readings was captured)
     sessions = list(raw_capture or ())
     taken = any(session.get("takes") for session in sessions)
+    filled = filled_rows(rows)
+    left_out: list[int] = []
+    # said with the rows captured (a sheet of takes, parsed again in a moment): a file's
+    # million typed rows are not parsed a second time for it
+    if columns and filled and taken:
+        used = set(ReadingsSheet(columns, rows).parse().row_index.tolist())
+        left_out = [r for r in filled if r not in used]
+    left_out = sorted({*left_out, *(int(r) for r in getattr(result, "left_out", ()))})
     origin = readings_origin(source_name, captured_rows(sessions, rows, workbench),
-                             len(filled_rows(rows)))
+                             len(filled), left_out)
     return origin, raw_digest(sessions) if taken else ""
 
 
@@ -298,7 +310,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                        READINGS_SOURCE: source_name},
                       {kind.key: raw_capture} if raw_capture else {})
     # "Readings:" as the rows came (typed, or which captured) and the instrument output
-    origin, digest = readings_stated(kind.key, source_name, rows, raw_capture)
+    origin, digest = readings_stated(kind.key, source_name, rows, raw_capture, kind.columns,
+                                     result)
     edited = tuple(e.text() for e in readings_edited_after_capture(
         kind, settings, rows, raw_capture)) if raw_capture else ()
     request = IssueRequest(kind.key, metadata, project_to_json(project),

@@ -31,7 +31,7 @@ from models.messages import as_sentence
 from models.project.output_guard import check_output
 from models.register.wording import revision_words
 from models.workbench import IssuesCertificates
-from widgets.i18n import explained, tr, translated
+from widgets.i18n import explained, joined, tr, translated
 
 if TYPE_CHECKING:
     from models.register.store import LookalikeSerial
@@ -321,7 +321,7 @@ class CertificatePresenter:
         each new set (the details are read on every redraw of the plots)."""
         said = tuple(texts)
         if said and said != self._skipped_said.get(key):
-            self.view.show_status("; ".join(translated(t) for t in texts), 20000)
+            self.view.show_status(joined("; ", (translated(t) for t in texts)), 20000)
         self._skipped_said[key] = said
 
     def stored_details(self, key: str) -> CertificateMetadata | None:
@@ -561,7 +561,8 @@ class CertificatePresenter:
         shown = self.details(kind.key)
         # the "Readings:" line the certificate will print, shown in the details dialog
         # before issue (day review 67 F7)
-        self.readings_line = readings_stated(kind.key, source_name, rows or [], raw_capture)[0]
+        self.readings_line = readings_stated(kind.key, source_name, rows or [], raw_capture,
+                                             kind.columns, result)[0]
         while True:
             entered = self.edit_details(shown)
             if entered is None:
@@ -664,7 +665,8 @@ class CertificatePresenter:
                 check_output(self._dcc_path(path), self.protected())
             self._refuse_issued((("", path), ("", self._dcc_path(path))))
             # a draft and a specimen say where the readings came from as the issued one would
-            origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture)
+            origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture,
+                                             kind.columns, result)
             if entered.example:
                 return self._specimen(kind, result, entered, settings, origin, path, digest)
             if draft:
@@ -677,7 +679,7 @@ class CertificatePresenter:
                         tr("Draft written to {path} — DRAFT: {missing} missing; nothing was "
                            "recorded in the register"))
                 self.view.show_status(self._with_dcc(said.format(
-                    path=path, missing=", ".join(tr(m) for m in draft)), path), 10000)
+                    path=path, missing=joined(", ", (tr(m) for m in draft))), path), 10000)
                 return True
             return self._issue(kind, result, entered, settings, rows or [], source_name, path,
                                revision, note, raw_capture, separate, confirmed)
@@ -939,7 +941,8 @@ class CertificatePresenter:
         try:
             check_output(path, self.protected())
             self._refuse_issued((("", path),))  # rev62 F8
-            origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture)
+            origin, digest = readings_stated(kind.key, source_name, rows or [], raw_capture,
+                                             kind.columns, result)
             document = dataclasses.replace(kind.certificate_document(
                 result, self.details(kind.key), origin, settings), raw_data_sha256=digest)
             if path.lower().endswith(".xlsx"):

@@ -978,7 +978,7 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
             from app.certificate_issue import readings_edited_after_capture, readings_stated
 
             origin, digest = readings_stated(kind.key, source, rows(),
-                                             raw_capture)
+                                             raw_capture, kind.columns, result)
             document = dataclasses.replace(
                 kind.certificate_document(result, metadata, origin, settings),
                 raw_data_sha256=digest, edited_readings=tuple(

@@ -466,8 +466,10 @@ class MainWindow(QMainWindow):
         if not self.result_is_current(source, sending=True):
             return False
         if source.result is None:
-            problem = source.problem or tr("no readings have been analysed yet")
-            self.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {problem}.")
+            problem = (translated(source.problem) if source.problem else
+                       tr("no readings have been analysed yet"))
+            self.tell(tr("Nothing to send"), tr("{workbench}: {problem}.").format(
+                workbench=declared(source.kind.title), problem=problem))
             return False
         rows = source.kind.run_rows(source.result)
         # the positioning certificate says where these readings came from: the sending
@@ -503,8 +505,10 @@ class MainWindow(QMainWindow):
         if not self.result_is_current(presenter):
             return None
         if presenter.result is None:
-            problem = presenter.problem or tr("no readings have been analysed yet")
-            self.tell(tr("Nothing to export"), f"{declared(presenter.kind.title)}: {problem}.")
+            problem = (translated(presenter.problem) if presenter.problem else
+                       tr("no readings have been analysed yet"))
+            self.tell(tr("Nothing to export"), tr("{workbench}: {problem}.").format(
+                workbench=declared(presenter.kind.title), problem=problem))
             return None
         return presenter.result
 
@@ -561,7 +565,8 @@ class MainWindow(QMainWindow):
         print: their source and the rows captured from the instruments."""
         key = presenter.kind.key
         return readings_stated(key, self._source_name(presenter), presenter.result_state().rows,
-                               self.capture_panel.raw_sessions(key))[0]
+                               self.capture_panel.raw_sessions(key), presenter.kind.columns,
+                               presenter.result)[0]
 
     def _source_shown(self) -> str:
         """:meth:`_source_name` in the window's language."""

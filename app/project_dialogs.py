@@ -36,7 +36,7 @@ class ProjectDialogs:
 
     def ask_save_changes(self, question: str = "") -> bool | None:
         answer = self.window.ask(
-            tr("Unsaved readings"), question or tr("Save the changes to the project first?"),
+            tr("Unsaved changes"), question or tr("Save the changes to the project first?"),
             QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
             | QMessageBox.StandardButton.Cancel, QMessageBox.StandardButton.Save)
         if answer == QMessageBox.StandardButton.Save:

@@ -50,8 +50,10 @@ def send_reference(window: Any) -> bool:
     if not window.result_is_current(source, sending=True):  # never a result older than
         return False  # the readings it stands for
     if source.result is None:
-        problem = source.problem or tr("no readings have been analysed yet")
-        window.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {problem}.")
+        problem = (translated(source.problem) if source.problem else
+                       tr("no readings have been analysed yet"))
+        window.tell(tr("Nothing to send"), tr("{workbench}: {problem}.").format(
+                workbench=declared(source.kind.title), problem=problem))
         return False
     try:
         # the details its certificate would be issued with now: never a smaller U than it states
@@ -70,7 +72,8 @@ def send_reference(window: Any) -> bool:
         CertificateMetadata.from_dict(meta.to_dict())
         cells = target.accept_reference(reference)
     except ValueError as exc:
-        window.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {explained(exc)}")
+        window.tell(tr("Nothing to send"), tr("{workbench}: {problem}").format(
+            workbench=declared(source.kind.title), problem=explained(exc)))
         return False
     window.certificates.store_details(target.kind.key, meta)
     sent = window.projects.metadata.get(SENT_REFERENCES)

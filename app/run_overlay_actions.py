@@ -104,7 +104,7 @@ class RunOverlayActions:
             with self.window.certificates.open_register() as register:
                 records = [r for r in register.list() if r.workbench == key]
         except Exception as exc:  # noqa: BLE001 - any register failure is told, not raised
-            self.window.tell(tr("Cannot overlay"), str(exc))
+            self.window.tell(tr("Cannot overlay"), explained(exc))
             return False
         if not records:
             self.window.tell(tr("Cannot overlay"), tr("The register holds no certificate of "

@@ -32,7 +32,7 @@ from PySide6.QtCore import QT_TR_NOOP, QCoreApplication, QLibraryInfo, QLocale, 
 from models.messages import TRANSLATIONS_DIR, Message, declared_text, reason_of, rendered
 
 __all__ = ["LANGUAGES", "SEEN_DECLARED", "Language", "Said", "Tr", "application_language",
-           "declared", "explained", "install_language", "live", "on_language_change",
+           "declared", "explained", "install_language", "joined", "live", "on_language_change",
            "resolve_language", "said_again", "tr", "translated"]
 
 LANGUAGES = {"system": QT_TR_NOOP("System language"), "en": "English",
@@ -105,6 +105,14 @@ def said_again(text):
     if isinstance(text, Said):
         return text.again()
     return text
+
+
+def joined(separator: str, parts) -> Said:
+    """``parts`` joined by ``separator``, said again each in the language then installed
+    (day review live76 F5: "; ".join(…) of translated texts stayed in the language it was
+    shown in)."""
+    parts = list(parts)
+    return Said(separator.join(parts), lambda: separator.join(str(said_again(p)) for p in parts))
 
 
 def tr(source: str) -> Tr:

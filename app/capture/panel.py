@@ -132,6 +132,24 @@ def _unit_symbol(unit: str) -> str:
     return '"' if unit in ANGLE_UNITS else (f" {unit}" if unit else "")
 
 
+def _significant(value: float, digits: int = 3) -> str:
+    """``value`` with ``digits`` significant digits, never in scientific notation."""
+    return np.format_float_positional(float(value), precision=digits, unique=False,
+                                      fractional=False, trim="-")
+
+
+def last_still_run(values: np.ndarray, window: float) -> int:
+    """Where the frames since the reading last moved begin: a move is a step from one frame
+    to the next larger than the stability window (in the same unit as ``values``) and than
+    five times the frames' own noise (a noisy instrument is not moving)."""
+    if len(values) < 2:
+        return 0
+    steps = np.abs(np.diff(values))
+    noise = 1.4826 * float(np.median(steps)) / np.sqrt(2.0)
+    moved = np.flatnonzero(steps > max(window, 5.0 * noise))
+    return int(moved[-1]) + 1 if len(moved) else 0
+
+
 #: the stability shown is the spread of the frames of the last second
 SPREAD_SECONDS = 1.0
 #: how often the guidance is worked out again while connected (seconds of frames)
@@ -528,6 +546,10 @@ class InstrumentLink:
         readout = self.kind == "readout"
         self.column.setVisible(readout)
         self.column_label.setVisible(readout)
+        # no instrument yet: no resolution of its own to show ("as sent" until an
+        # autocollimator was connected: day review live76 F11)
+        self.resolution.setEnabled(bool(self.kind))
+        self.resolution_label.setEnabled(bool(self.kind))
         self.resolution.blockSignals(True)
         try:
             value = self.resolution_arcsec
@@ -688,7 +710,12 @@ class InstrumentLink:
                 shown.append(fixed_text(v, 6 if reading.unit == "deg" else 3) + unit)
             else:
                 shown.append(f"{cell[0]}{cell[1]}")
-        text = "   ".join(shown)
+        if self.kind == "autocollimator" and len(shown) == 2:
+            # which axis is which, one a line (day review live76 F11: "9.56″ −3.19″"; beside
+            # each other, with their names, they wrapped in the middle of the panel)
+            text = f"x {shown[0]}\ny {shown[1]}"
+        else:
+            text = "   ".join(shown)
         if not self.lost:
             self.value.setText(text)
         elif self.no_target is not None:
@@ -905,6 +932,9 @@ class CapturePanel(QDockWidget):
         if tabs is not None:
             tabs.currentChanged.connect(self.workbench_changed)
         on_language_change(self, self._refill_columns)
+        # the guidance in the new language, connected or not (day review live76 F4: with no
+        # instrument connected it stayed in the old one until the next take)
+        on_language_change(self, self._guide_again)
 
     def _docked(self, area) -> None:
         """At the bottom the panel's parts stand side by side; at a side, one above the other."""
@@ -1225,6 +1255,10 @@ class CapturePanel(QDockWidget):
             return
         for link in self.links:
             link.fill_columns(presenter.kind.columns)
+
+    def _guide_again(self) -> None:
+        if getattr(self.window_, "current", None) is not None:
+            self.update_guide()
 
     # ------------------------------------------------------------ the raw frames
     def raw_sessions(self, workbench: str) -> list[dict]:
@@ -1766,7 +1800,10 @@ class CapturePanel(QDockWidget):
     def _show_allan(self, degrees: bool, scale: float) -> None:
         """The first instrument's Allan deviation over its frames since the last gap (a link
         lost, a pause, a rate set anew): the formula takes frames as evenly spaced, and
-        frames from both sides of a gap as neighbours showed a step across it as noise."""
+        frames from both sides of a gap as neighbours showed a step across it as noise.
+        Only over the frames since the reading last moved, in the window's unit with three
+        significant digits (day review live76 F9: "5.1e+03 (0.0753 s)" of a readout moved
+        from target to target, the moves read as noise)."""
         link = self.links[0]
         kept = [frame for frame in self.frames if frame[0] > link.gap_before]
         times = np.array([t for t, _, _ in kept])
@@ -1775,20 +1812,30 @@ class CapturePanel(QDockWidget):
             self.allan.setText(tr("Allan deviation: waiting for frames after the gap")
                                if self.frames else "")
             return
-        times = times[start:]
-        tau0 = float(np.median(np.diff(times)))
         first = np.array([v[0] for _, v, _ in kept[start:]])
         if degrees:
             first = _unwrapped_deg(first, first[0])
+        still = last_still_run(first * scale, self.window_box.value())
+        if len(first) - still < 16:
+            self.allan.setText(tr("Allan deviation: the reading is moving (waiting for it to "
+                                  "stay still)"))
+            return
+        after_gap = start > 0 or len(kept) != len(self.frames)
+        times, first = times[start + still:], first[still:]
+        tau0 = float(np.median(np.diff(times)))
         taus, adev = allan_deviation(first, tau0)
         # three of them (the shortest, a middle and the longest τ): the text stays short
         picked = sorted({0, len(taus) // 2, len(taus) - 1}) if len(taus) else []
-        figures = ", ".join(f"{adev[i] * scale:.3g} ({taus[i]:.3g} s)" for i in picked)
-        self.allan.setText(
-            tr("Allan deviation (first axis): {figures}").format(figures=figures)
-            if start == 0 and len(kept) == len(self.frames) else
-            tr("Allan deviation (first axis, since the last gap): {figures}").format(
-                figures=figures))
+        unit = _unit_symbol(self.latest.unit if self.latest is not None else "")
+        figures = ", ".join(f"{_significant(adev[i] * scale)}{unit} ({_significant(taus[i])} s)"
+                            for i in picked)
+        if still:
+            said = tr("Allan deviation (first axis, since the reading last moved): {figures}")
+        elif after_gap:
+            said = tr("Allan deviation (first axis, since the last gap): {figures}")
+        else:
+            said = tr("Allan deviation (first axis): {figures}")
+        self.allan.setText(said.format(figures=figures))
 
     # ------------------------------------------------------------ take reading
     def waiting_for(self) -> list[InstrumentLink]:
@@ -2030,7 +2077,9 @@ class CapturePanel(QDockWidget):
                           "take if it is wrong").format(
                 row=row + 1, column=declared(sheet.columns[keys.index(key)].header),
                 face=step.fill.get("position", "?"),
-                value=f"{float(got[i]) % 360.0:.4f}", off=f"{off:+.1f}",
+                # rounded before the turn is taken: −0.00001 is 0.0000°, not 360.0000° beside
+                # the cell's "-0.00001" (day review live76 F11)
+                value=f"{round(float(got[i]), 4) % 360.0:.4f}", off=f"{off:+.1f}",
                 expected=degrees_text(expected), pitch=degrees_text(step.pitch_deg))))
         return out
 

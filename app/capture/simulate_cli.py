@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import re
 import signal
 import sys
 import threading
@@ -59,6 +60,28 @@ def _not_negative(words):
                 "{text}: give a number of 0 or more"), text=repr(text)), words))
         return value
     return read
+
+
+#: the options whose value is a list of numbers, which may begin with a minus sign
+_NUMBER_LISTS = ("--position", "--positions")
+
+
+def _numbers_attached(argv: list[str]) -> list[str]:
+    """``argv`` with a list of numbers that begins with a minus sign attached to its option
+    (``--positions -1.1,0`` as ``--positions=-1.1,0``): argparse takes "-1.1,0" for an
+    option and said "expected one argument" (day review live76 F10)."""
+    out: list[str] = []
+    i = 0
+    while i < len(argv):
+        word = argv[i]
+        following = argv[i + 1] if i + 1 < len(argv) else ""
+        if word in _NUMBER_LISTS and re.match(r"-\.?\d", following):
+            out.append(f"{word}={following}")
+            i += 2
+            continue
+        out.append(word)
+        i += 1
+    return out
 
 
 def _port(words):
@@ -151,7 +174,7 @@ def run_simulate(argv: list[str], ready=None) -> int:
     """The command; ``ready`` (tests) is called with the simulator once it serves, and the
     command returns when it is set to stop (``simulator.stop_event``)."""
     with speaking(language_asked(argv)) as words:
-        args = _parser(words).parse_args(argv)
+        args = _parser(words).parse_args(_numbers_attached(argv))
         try:
             head = {}
             if args.instrument == "signals":  # the noise in mV; the stream at its own rate

@@ -242,10 +242,20 @@ def row_spans(rows: Sequence[int]) -> str:
     return ", ".join(spans)
 
 
-def readings_origin(source: str, captured: Sequence[int], row_count: int) -> str:
+def readings_origin(source: str, captured: Sequence[int], row_count: int,
+                    left_out: Sequence[int] = ()) -> str:
     """The "Readings:" line: ``source`` (a project file's name, or :data:`TYPED`) and the
     rows taken from the instruments (``captured``, 0-based, of ``row_count`` rows) — all of
-    them, or which. ``source`` alone when none was."""
+    them, or which. ``source`` alone when none was. ``left_out``: filled rows the analysis
+    left out (0-based: a cell it cannot read, a reading it refused), named, and neither
+    counted nor said captured (day review
+    live76 F6: "all 17 rows captured" beside "Readings 16", row 17 having no target)."""
+    if left_out:
+        out = set(left_out)
+        used = readings_origin(source, [r for r in captured if r not in out],
+                               row_count - len(out))
+        return message(QT_TR_NOOP("{readings}; row(s) {rows} left out of the analysis"),
+                       readings=used, rows=row_spans(sorted(out)))
     if not captured:
         return message(source) if source == TYPED else source
     if len(captured) >= row_count:

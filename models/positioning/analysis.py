@@ -230,18 +230,50 @@ def _deviations(parsed: ParsedReadings, s: dict[str, Any]) -> np.ndarray:
                        "give one of the two, or make them agree"),
             row=_row(parsed, i), deviation=f"{deviation[i]:g}", from_measured=f"{from_measured[i]:.4f}",
             s=s['deviation_unit']))
-    out = np.where(np.isfinite(deviation), deviation, from_measured)
-    limit = DEVIATION_LIMIT[s["target_unit"]] * scale
-    beyond = np.nonzero(np.abs(out) > limit)[0]
-    if beyond.size:
-        i = int(beyond[0])
-        raise ValueError(
-            message(
-            QT_TR_NOOP("row {row}: a deviation of {out} {s} is beyond {limit} {s} ({deviation_limit} "
-                       "{s2}): check the deviation unit, or whether a position was typed as a deviation"),
-            row=_row(parsed, i), out=f"{out[i]:g}", s=s['deviation_unit'], limit=f"{limit:g}",
-            deviation_limit=f"{DEVIATION_LIMIT[s['target_unit']]:g}", s2=s['target_unit']))
-    return out
+    return np.where(np.isfinite(deviation), deviation, from_measured)
+
+
+def _beyond_limit(parsed: ParsedReadings, s: dict[str, Any], deviations: np.ndarray,
+                  targets: np.ndarray) -> tuple[np.ndarray, list[str]]:
+    """The readings whose deviation is beyond :data:`DEVIATION_LIMIT` (a mask) and what to
+    say of each. A few of them are readings of another position (a take at a target the
+    table was not at: a measured 0° in the row of target 15°), left out of the analysis and
+    named, the rest of the test kept; most of them are a wrong unit, and refused (day
+    review live76 F7: one take at the wrong target withheld the whole result, with "whether
+    a position was typed as a deviation" of rows captured, in "arcsec" and "deg")."""
+    sym, tsym = DEVIATION_UNITS[s["deviation_unit"]][2], TARGET_UNITS[s["target_unit"]]
+    limit = DEVIATION_LIMIT[s["target_unit"]] * DEVIATION_UNITS[s["deviation_unit"]][1]
+    beyond = np.abs(deviations) > limit
+    if not beyond.any():
+        return beyond, []
+    measured = parsed["measured"].astype(float)
+    given = np.isfinite(parsed["deviation"].astype(float))
+    kept_targets = np.unique(np.round(targets[~beyond], 9)).size
+    if beyond.sum() * 2 >= beyond.size or kept_targets < 2:
+        i = int(np.nonzero(beyond)[0][0])
+        raise ValueError(message(QT_TR_NOOP(
+            "row {row}: a deviation of {out}{s} is beyond {limit}{s} ({deviation_limit}{s2}), "
+            "as are {n} of the {count} readings: check the deviation unit"),
+            row=_row(parsed, i), out=f"{deviations[i]:g}", s=sym, limit=f"{limit:g}",
+            deviation_limit=f"{DEVIATION_LIMIT[s['target_unit']]:g}", s2=tsym,
+            n=int(beyond.sum()), count=int(beyond.size)))
+    said = []
+    for i in np.nonzero(beyond)[0]:
+        if given[i]:
+            said.append(message(QT_TR_NOOP(
+                "Row {row}: a deviation of {out}{s} is beyond {limit}{s} ({deviation_limit}{s2}): "
+                "left out of the analysis; check its reading"),
+                row=_row(parsed, int(i)), out=f"{deviations[i]:g}", s=sym, limit=f"{limit:g}",
+                deviation_limit=f"{DEVIATION_LIMIT[s['target_unit']]:g}", s2=tsym))
+        else:
+            said.append(message(QT_TR_NOOP(
+                "Row {row}: measured {measured}{s2} at target {target}{s2}, a deviation of "
+                "{out}{s} beyond {limit}{s} ({deviation_limit}{s2}): left out of the analysis "
+                "(a reading at another position than its target's?)"),
+                row=_row(parsed, int(i)), measured=f"{measured[i]:g}", target=f"{targets[i]:g}",
+                out=f"{deviations[i]:g}", s=sym, limit=f"{limit:g}",
+                deviation_limit=f"{DEVIATION_LIMIT[s['target_unit']]:g}", s2=tsym))
+    return beyond, said
 
 
 #: readings that show neither a scatter nor a step (models.positioning.report refuses U)
@@ -442,6 +474,12 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
             targets=f"{targets[0]:g}"))
     warnings: list[str] = []
     deviations = _deviations(parsed, s)
+    beyond, said = _beyond_limit(parsed, s, deviations, targets)
+    left_out = tuple(int(r) for r in parsed.row_index[beyond])
+    if left_out:  # a few readings of another position: named, the rest of the test kept
+        keep = ~beyond
+        parsed, targets, deviations = subset(parsed, keep), targets[keep], deviations[keep]
+        warnings.extend(said)
     directions = _directions(parsed, warnings)
     runs = _runs(parsed, targets, directions)
     _check_stray_targets(parsed, targets, runs, directions)
@@ -454,6 +492,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
                                         repeats.s_mean["deviation"],
                                         repeats.s_mean["measured"] * scale)
     result.inputs = {key: float(s[key]) for key in BUDGET_INPUTS}
+    result.left_out = left_out
     result.readings_step = step
     copy = copied_run(runs, directions, targets, deviations, step, result.pooled_s())
     if copy is not None:

@@ -171,6 +171,9 @@ class PositioningResult:
     # the step of the readings as entered, in the deviation unit (models.readings.resolution);
     # None when they lie on no grid of six decimals
     readings_step: float | None = None
+    # the sheet rows (0-based) of readings left out for a deviation beyond the limit (a
+    # reading at another position than its target's: analysis._beyond_limit)
+    left_out: tuple[int, ...] = ()
 
     @property
     def positions(self) -> np.ndarray:

@@ -152,3 +152,39 @@ def test_an_import_message_belongs_to_its_workbench(switched_back, samples_dir, 
     assert positioning.kind.sample_file not in window.statusBar().currentMessage()
     click_tab(positioning)
     assert positioning.kind.sample_file in window.statusBar().currentMessage()
+
+
+def test_a_refusal_to_export_is_said_again_in_the_language_chosen(switched_back):
+    """File › Export certificate with no result, then View › Language › 中文: the refusal
+    in the status line is said again in Chinese (day review live76 F5: "Polygon encoder
+    test: 0 usable readings; …" stayed English, an f-string of its translated parts)."""
+    window = switched_back
+    window.tell = lambda title, text: window.statusBar().showMessage(text, 15000)
+    bench = window.presenter("polygon")
+    window.tabs.setCurrentIndex(window.presenters.index(bench))
+    bench.table_model.replace_all([], "empty")
+    bench.analyse_if_due()
+    assert window._current_result() is None
+    said = window.statusBar().currentMessage()
+    assert said == ("Polygon encoder test: 0 usable readings; a polygon test needs at least 3 "
+                    "positions."), said
+    choose_language(window, "zh_CN")
+    chinese = window.statusBar().currentMessage()
+    assert HAN.search(chinese) and "Polygon" not in chinese, chinese
+    assert not re.search(r"[A-Za-z]{4,}", chinese), chinese
+    choose_language(window, "en")
+    assert window.statusBar().currentMessage() == said
+
+
+def test_words_joined_are_said_again_each(switched_back):
+    """A list of translated texts joined (a draft's missing details, the standards left
+    out) is said again in the new language, not kept as one plain text."""
+    from widgets.i18n import joined
+
+    window = switched_back
+    window.statusBar().showMessage(joined("; ", [tr("Printed"), "/tmp/a.pdf"]), 8000)
+    assert window.statusBar().currentMessage() == "Printed; /tmp/a.pdf"
+    choose_language(window, "zh_CN")
+    chinese = window.statusBar().currentMessage()
+    assert chinese.endswith("; /tmp/a.pdf") and "Printed" not in chinese and HAN.search(chinese), \
+        chinese

@@ -48,7 +48,7 @@ class _StreamingAutocollimator:
 
 
 def _figures(text: str) -> list[float]:
-    return [float(m) for m in re.findall(r"([-+0-9.eE]+) \([-+0-9.eE]+ s\)", text)]
+    return [float(m) for m in re.findall(r"([-+0-9.eE]+)\"? \([-+0-9.eE]+ s\)", text)]
 
 
 def test_the_allan_deviation_is_of_the_frames_after_a_reconnection(window, qtbot):
@@ -72,3 +72,46 @@ def test_the_allan_deviation_is_of_the_frames_after_a_reconnection(window, qtbot
     # white noise of 0.05" averages down: never above it; the step read as noise was ~1.5"
     assert all(0.0 < f < 2 * SIGMA for f in figures), shown
     assert "since the last gap" in shown
+
+
+def test_the_allan_deviation_is_of_the_still_frames_in_the_instruments_unit(window, qtbot):
+    """A reading moved from point to point (a readout taken target after target): the Allan
+    deviation is of the frames since it last moved, in the window's unit with a few
+    significant digits (day review live76 F9: "5.1e+03 (0.0753 s), 1.26e+04 …", no unit,
+    the moves read as noise)."""
+    from tests.instrument_simulators import AutocollimatorSimulator
+
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
+    panel = window.capture_panel
+    script = [(0.0, 0.0), (300.0, 0.0)] * 3 + [(0.0, 0.0)]  # moved 300" six times, then still
+    with AutocollimatorSimulator("pty", positions=script, hold_s=0.3, sigma=SIGMA) as sim:
+        panel.connect_to("autocollimator", sim.port, silence_s=0.5, retries=1)
+        qtbot.waitUntil(lambda: len(panel.frames) > 16 and panel.latest is not None, timeout=5000)
+        qtbot.wait(2600)  # every move made, then 0.8 s still
+        values = np.array([v[0] for _, v, _ in panel.frames])
+        panel._allan_due = 0.0
+        qtbot.waitUntil(lambda: panel._allan_due > 0.0, timeout=3000)
+        shown = panel.allan.text()
+        panel.disconnect_instrument()
+    assert values.max() > 250.0 and values.min() < 50.0  # the frames kept hold the moves
+    # the frames since the last move (or a gap of the stream after it): never across one
+    assert shown.startswith(("Allan deviation (first axis, since the reading last moved): ",
+                             "Allan deviation (first axis, since the last gap): ")), shown
+    assert "e+" not in shown and "e-" not in shown, shown
+    figures = [float(m) for m in re.findall(r'([0-9.]+)" \([0-9.]+ s\)', shown)]
+    assert len(figures) == 3, shown
+    assert all(0.0 < f < 2 * SIGMA for f in figures), shown  # the noise, not the 300" moves
+
+
+def test_a_move_is_a_step_beyond_the_window_and_figures_are_positional():
+    from app.capture import panel as panel_module
+
+    values = np.random.default_rng(3).normal(0.0, SIGMA, 400)
+    values[100:200] += 300.0  # moved 300" and back
+    values[260:300] += np.linspace(0.0, 600.0, 40)  # moved 600" over 40 frames, then held
+    values[300:] += 600.0
+    assert panel_module.last_still_run(values, 0.5) == 299  # at 600" from frame 299 on
+    assert panel_module.last_still_run(values[:260], 0.5) == 200
+    assert panel_module.last_still_run(np.full(30, 7.0), 0.5) == 0
+    assert panel_module._significant(5123.4) == "5120" and panel_module._significant(0.07531) \
+        == "0.0753"

@@ -27,8 +27,9 @@ def test_take_reading_fills_the_polygon_row_as_one_undo_step(window, qtbot):
         panel.connect_to("autocollimator", sim.port, **FAST)
         qtbot.waitUntil(lambda: panel.latest is not None, timeout=3000)
         qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
-        # as the cells will read (0.01" resolution), not 3 decimals of its own (#41 review)
-        assert panel.value.text() == '3.25"   -1.50"'
+        # as the cells will read (0.01" resolution), not 3 decimals of its own (#41 review),
+        # each axis named (day review live76 F11: "9.56″ −3.19″")
+        assert panel.value.text() == 'x 3.25"\ny -1.50"'
         steps = presenter.undo_stack.count()
         panel.take_button.click()
         panel.disconnect_instrument()
@@ -92,3 +93,32 @@ def test_no_blank_band_at_the_top_of_the_panel_docked_at_a_side(window):
     top = panel.links[0].box.mapTo(panel.body, QPoint(0, 0)).y()
     # the margin, the (empty) guidance's line and the layout's spacing: no more
     assert top <= panel.guide.sizeHint().height() + 20, top
+
+
+def test_the_resolution_is_the_instruments_once_one_is_connected(window, qtbot):
+    """Day review live76 F11: the first instrument's Resolution read "as sent" before any
+    instrument was connected (an autocollimator's is 0.01″); it waits for the instrument."""
+    _show(window, "polygon")
+    panel = window.capture_panel
+    link = panel.links[0]
+    assert not link.resolution.isEnabled() and not link.resolution_label.isEnabled()
+    with AutocollimatorSimulator("pty", positions=[(3.25, -1.5)]) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        assert link.resolution.isEnabled() and link.resolution.currentText() == '0.01"'
+        panel.disconnect_instrument()
+
+
+def test_an_encoder_just_below_zero_is_said_as_the_cell_reads_it(window):
+    """Day review live76 F11: the cell read "-0.00001" while the off-plan note said
+    "360.0000°"."""
+    from types import SimpleNamespace
+
+    presenter = _show(window, "polygon")
+    panel = window.capture_panel
+    link = panel.links[0]
+    panel.next_reading = SimpleNamespace(pitch_deg=30.0, nominal={"encoder_deg": 40.0},
+                                         near={}, fill={"position": "5"})
+    said = panel._off_the_plan(presenter.table_model.sheet, 21, [(link, 0, "encoder_deg")],
+                               {link.slot: ((-0.00001,), "deg", (0, 0))})
+    assert len(said) == 1 and said[0][1].startswith(
+        "Row 22: encoder a [deg] 0.0000° is -40.0° from the ≈ 40° the plan expects at face 5"), said

@@ -215,7 +215,8 @@ def test_a_direction_at_zero_spreads_by_its_noise_not_by_360_degrees(window, qtb
         qtbot.waitUntil(lambda: " s)" in panel.allan.text() and panel.stability.text() != "",
                         timeout=8000)  # figures, not "waiting for frames after the gap"
         spread = [float(v) for v in panel.stability.text().split(":")[1].replace('"', "").split()]
-        allan = [float(part.split("(")[0]) for part in panel.allan.text().split(":")[1].split(",")]
+        allan = [float(part.split("(")[0].replace('"', ""))
+                 for part in panel.allan.text().split(":")[1].split(",")]
         panel.disconnect_instrument()
     hz = [v[0] for v in sim.sent if v is not None]
     assert min(hz) < 0.001 and max(hz) > 359.999  # it did read on both sides of 0°

@@ -96,3 +96,21 @@ def test_the_simulators_import_nothing_of_the_code_they_check():
         elif isinstance(node, ast.ImportFrom):
             imported.add((node.module or "").split(".")[0])
     assert imported <= set(sys.stdlib_module_names) | {"__future__"}, imported
+
+
+@pytest.mark.parametrize("option", ["--positions", "--position"])
+def test_a_list_of_numbers_may_begin_with_a_minus_sign(option, capsys):
+    """``--positions -1.1,0,1.1`` is the script asked for (day review live76 F10: argparse
+    took "-1.1,…" for an option and said "expected one argument"; only
+    ``--positions=-1.1,…`` worked)."""
+    from app.capture.simulate_cli import run_simulate
+
+    seen = []
+
+    def ready(sim, done):
+        seen.append([tuple(p) for p in sim.positions])
+        done.set()
+
+    assert run_simulate(["readout", "0", option, "-1.1,0,1.1", "--noise", "0"], ready) == 0
+    expected = [(-1.1,), (0.0,), (1.1,)] if option == "--positions" else [(-1.1,)]
+    assert seen == [expected]

@@ -26,3 +26,31 @@ def test_f9_takes_after_a_change_of_language(window, path):
     finally:
         choose_language(window, "en")
     assert "F9" in button.text()
+
+
+def test_the_guidance_is_said_in_the_language_chosen_with_nothing_connected(window):
+    """View › Language with no instrument connected: the panel's guidance follows (day
+    review live76 F4: it stayed English in the Chinese window, Chinese in the English one,
+    as it was worked out again only while frames came in)."""
+    import re
+
+    from tests.app.capture.window_steps import show_workbench
+
+    presenter = show_workbench(window, "positioning")
+    presenter.table_model.replace_all([], "empty")
+    presenter.set_settings({**presenter.settings, "plan_runs": 2, "plan_targets": "0:15:3",
+                            "plan_directions": "both", "plan_order": "linear",
+                            "target_unit": "deg", "deviation_unit": "arcsec"})
+    panel = window.capture_panel
+    assert not any(link.worker for link in panel.links)
+    panel.update_guide()
+    english = panel.guide.text()
+    assert english == "Next: target 0°, run 1 ↑", english
+    try:
+        choose_language(window, "zh_CN")
+        chinese = panel.guide.text()
+        assert re.search(r"[\u4e00-\u9fff]", chinese) and "Next" not in chinese, chinese
+        assert "0°" in chinese, chinese
+    finally:
+        choose_language(window, "en")
+    assert panel.guide.text() == english

@@ -278,3 +278,39 @@ def _details_sheet(book):
     """The sheet of the document's details: *Report* on a test report's file (assessment 73
     L4), else *Certificate*."""
     return book["Report" if "Report" in book.sheetnames else "Certificate"]
+
+
+def test_a_row_the_analysis_cannot_read_is_named_not_counted():
+    """A take after the plan's end made row 17 with no target, which the analysis leaves
+    out: the report said "all 17 rows captured from the instruments" beside "Readings 16"
+    (day review live76 F6). Now it counts the 16 rows read and names row 17 left out."""
+    from app.certificate_issue import readings_stated
+    from models.positioning.analysis import COLUMNS
+
+    rows = [[str(15 * (i % 4)), str(1 + i // 8), "+" if i % 8 < 4 else "-", "", f"{15 * (i % 4)}.0002"]
+            for i in range(16)]
+    rows.append(["", "", "", "", "0.0001"])  # row 17: no target
+    sessions = [{"workbench": "positioning", "takes": [[r, r, r] for r in range(17)]}]
+    origin, _digest = readings_stated("positioning", TYPED, rows, sessions, COLUMNS)
+    assert origin == ("all 16 rows captured from the instruments; row(s) 17 left out of the "
+                      "analysis")
+    # every row read: as before
+    origin, _digest = readings_stated("positioning", TYPED, rows[:16], sessions, COLUMNS)
+    assert origin == "all 16 rows captured from the instruments"
+
+
+def test_a_reading_the_analysis_left_out_is_named_not_counted():
+    """A positioning reading at another position than its target (left out, live76 F7) is
+    named on the "Readings:" line as the rows that cannot be read are."""
+    from types import SimpleNamespace
+
+    from app.certificate_issue import readings_stated
+    from models.positioning.analysis import COLUMNS
+
+    rows = [[str(15 * (i % 4)), str(1 + i // 8), "+" if i % 8 < 4 else "-", "", "0.1"]
+            for i in range(16)]
+    sessions = [{"workbench": "positioning", "takes": [[r, r, r] for r in range(16)]}]
+    origin, _digest = readings_stated("positioning", TYPED, rows, sessions, COLUMNS,
+                                      SimpleNamespace(left_out=(6,)))
+    assert origin == ("all 15 rows captured from the instruments; row(s) 7 left out of the "
+                      "analysis")

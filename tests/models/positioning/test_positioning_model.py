@@ -187,7 +187,7 @@ def test_runs_of_one_approach_do_not_pretend_a_repeatability():
     ([["0", "1", "+", "1", ""], ["0", "2", "+", "2", ""]], {}, "at least two targets"),
     ([["0", "1", "+", "1", ""], ["1", "1", "+", "4000", ""]], {}, "row 2: a deviation of 4000"),
     ([["0", "1", "+", "1", ""], ["1", "1", "+", "20000", ""]],
-     {"target_unit": "mm", "deviation_unit": "um"}, "beyond 10000 um"),
+     {"target_unit": "mm", "deviation_unit": "um"}, "beyond 10000 µm"),
     ([["0", "1", "+", "1", ""], ["1e308", "1", "+", "2", ""]], {},
      "row 2: target 1e+308 deg is beyond ±36000 deg"),
 ])
@@ -196,7 +196,44 @@ def test_logs_that_cannot_be_a_positioning_test_are_refused(rows, settings_, mes
         analyze(rows, **settings_)
 
 
-def test_a_deviation_unit_of_the_wrong_kind_is_refused():
+def _two_runs_measured():
+    """2 runs × 4 targets ↑↓ (16 rows), each a measured position 1–5″ off its target."""
+    rows = []
+    for run in (1, 2):
+        for direction, targets in (("+", (0, 15, 30, 45)), ("-", (45, 30, 15, 0))):
+            rows += [[str(t), str(run), direction, "",
+                      f"{t + (run + (2 if direction == '-' else 0)) / 3600:.6f}"]
+                     for t in targets]
+    return rows
+
+
+def test_a_reading_at_another_position_is_left_out_and_named_the_rest_kept():
+    """Day review live76 F7: after a missed point row 7 (target 15°) got a measured 0°; the
+    whole result was withheld ("row 7: a deviation of -54000 arcsec is beyond 3600 arcsec (1
+    deg): … or whether a position was typed as a deviation"), nothing having been typed.
+    The row is left out and named, with the units' symbols; the other 15 readings stay."""
+    rows = _two_runs_measured()
+    rows[6][4] = "0.0001"
+    result = analyze(rows)
+    assert result.left_out == (6,)
+    assert 6 not in result.rows.tolist() and len(result.deviations) == 15
+    said = [str(w) for w in result.warnings]
+    assert said[0] == ('Row 7: measured 0.0001° at target 15°, a deviation of -53999.6" beyond '
+                       '3600" (1°): left out of the analysis (a reading at another position '
+                       "than its target's?)"), said
+    assert result.iso.backward is not None  # the rest of the work stays
+    assert analyze(_two_runs_measured()).left_out == ()
+
+
+def test_most_readings_beyond_the_limit_are_a_unit_refused_with_symbols():
+    rows = _two_runs_measured()
+    for row in rows:  # positions (in arcseconds) typed into the deviation column
+        row[3], row[4] = f"{float(row[4]) * 3600:.1f}", ""
+    with pytest.raises(ValueError) as refused:
+        analyze(rows)
+    assert str(refused.value) == ('row 2: a deviation of 54001" is beyond 3600" (1°), as are '
+                                  "12 of the 16 readings: check the deviation unit")
+
     with pytest.raises(ValueError, match="deviation_unit um is for an axis in mm"):
         POSITIONING.checked_settings({"target_unit": "deg", "deviation_unit": "um"})
 

@@ -298,3 +298,26 @@ def test_an_unwritable_compensation_path_is_told_by_its_name(presenter_and_view,
     assert text.startswith(f"{bad}: ") and ".tmp" not in text
     assert not bad.parent.exists()
     view.show_status.assert_not_called()
+
+
+def test_a_reading_left_out_is_drawn_apart_and_named(presenter_and_view):
+    """Day review live76 F7: one take at the wrong target (row 7: measured 0° at target 15°)
+    blanked the whole result. Now the result stands, the row is drawn apart in the table and
+    the warning names it."""
+    from tests.models.positioning.test_positioning_model import _two_runs_measured
+
+    presenter, _view = presenter_and_view
+    rows = _two_runs_measured()
+    rows[6][4] = "0.0001"
+    presenter.table_model.replace_all(rows)
+    presenter.refresh()
+    assert presenter.result is not None, presenter.problem
+    assert presenter.table_model.highlight_rows == {6}
+    assert presenter._readings_count(presenter.parsed, presenter.result) == \
+        "Readings — 16 taken, 15 used"
+    assert any(str(w).startswith("Row 7: measured 0.0001° at target 15°")
+               for w in presenter.result.warnings)
+    rows[6][4] = "15.0003"  # the row taken again at its target
+    presenter.table_model.replace_all(rows)
+    presenter.refresh()
+    assert presenter.table_model.highlight_rows == set()
