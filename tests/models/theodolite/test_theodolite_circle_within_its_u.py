@@ -75,12 +75,14 @@ def _spread_of_e(d: np.ndarray, reversal: float, sigma: float, passes: int,
 def test_stated_at_its_pointing_noise_the_figures_intervals_are_narrower(capsys, tmp_path):
     """The theodolite stated at exactly its pointing noise σ = 0.5″ (no circle error), 2
     passes over 11 θ of a smooth curve, 12 runs: E's interval, whose width is mostly the
-    widening for a circle error the readings cannot exclude, is at most 3.4 times (median of
+    widening for a circle error the readings cannot exclude, is at most 3.5 times (median of
     the runs) ±2 standard deviations of E itself (4 s_E, s_E by first principles from the
-    rig's curve: 3.27 measured), and so is the decided half range's against ±2 of its own
-    (E/2; here E's interval halved). Before (the circle taken as a normal error, the union
-    bound): 3.61 and 3.61 on these runs (the study of #39 in this cell, 60 runs: E 3.67
-    before, 3.31 now; the decided half range 2.88 and 2.60)."""
+    rig's curve: 3.27 measured, 3.45 since E's upper end reaches the unshrunk world's pivot
+    at 1/8 of the tail: cov76 F3, a spike whose mean came out low missed above), and so is
+    the decided half range's against ±2 of its own (E/2; here E's interval halved). Before
+    (the circle taken as a normal error, the union bound): 3.61 and 3.61 on these runs (the
+    study of #39 in this cell, 60 runs: E 3.67 before, 3.31 then; the decided half range
+    2.88 and 2.60)."""
     rng = np.random.default_rng(391)
     theta = np.linspace(-20.0, 20.0, 11)
     ratios: dict[str, list[float]] = {"E": [], "decided": []}
@@ -94,8 +96,8 @@ def test_stated_at_its_pointing_noise_the_figures_intervals_are_narrower(capsys,
         ratios["E"].append((e["interval_high"] - e["interval_low"]) / (4.0 * spread))
         ratios["decided"].append((decided["interval_high"] - decided["interval_low"])
                                  / (2.0 * spread))
-    assert float(np.median(ratios["E"])) <= 3.4, ratios["E"]
-    assert float(np.median(ratios["decided"])) <= 3.4, ratios["decided"]
+    assert float(np.median(ratios["E"])) <= 3.5, ratios["E"]
+    assert float(np.median(ratios["decided"])) <= 3.5, ratios["decided"]
 
 
 #: the runs of the hidden circle error study in the suite: against the curve its smoke
