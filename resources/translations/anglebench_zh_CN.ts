@@ -80,10 +80,6 @@
         <translation>修正表在所测相位上的条目数</translation>
     </message>
     <message>
-        <source>Equal steps, N samples a period. 0: the phase from the θ column or, without one, estimated from the signals (Heydemann); a record that does not follow N is refused</source>
-        <translation>等间隔，每周期 N 个采样。0：相位取自 θ 列，若无该列则由信号估计（Heydemann）；不符合 N 的记录被拒绝</translation>
-    </message>
-    <message>
         <source>Every set&apos;s errors are taken from this one reading of set 1, so reversal and repeatability between sets are kept</source>
         <translation>各组的误差都以第 1 组的这一读数为零位，从而保留组间的反向差和重复性</translation>
     </message>
@@ -105,6 +101,7 @@
     </message>
     <message>
         <source>sample</source>
+        <extracomment>the points a period is judged on when the decided quantity is the half range of the continuous as-found error (the fitted model&apos;s, over the whole period)</extracomment>
         <translation>采样点</translation>
     </message>
     <message>
@@ -2179,12 +2176,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>未命名</translation>
     </message>
     <message>
-        <source>Unsaved readings</source>
-        <translation>未保存的读数</translation>
-    </message>
-    <message>
         <source>Save the changes to the project first?</source>
         <translation>先保存对项目的更改吗？</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>有未保存的更改</translation>
     </message>
     <message>
         <source>Project changed on disk</source>
@@ -2261,6 +2258,10 @@ Yes: replace it with this window&apos;s project. No: save this window&apos;s pro
     <message>
         <source>Printed</source>
         <translation>已打印</translation>
+    </message>
+    <message>
+        <source>{workbench}: {problem}.</source>
+        <translation>{workbench}：{problem}。</translation>
     </message>
     <message>
         <source>The readings are still being read from the file; send again when their result is shown.</source>
@@ -3731,6 +3732,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>anglebench register：{out} 已存在；未写入任何内容：请另选名称，或加上 --overwrite 以替换它</translation>
     </message>
     <message>
+        <source>anglebench register: {path} cannot be written: the disk is full; nothing was written there and the register is unchanged (free some space and try again)</source>
+        <translation>anglebench register：无法写入 {path}：磁盘已满；未在该处写入任何内容，登记册未改变（请腾出空间后重试）</translation>
+    </message>
+    <message>
         <source>anglebench register: the disk is full at {path}: nothing was written there; the register is unchanged (free some space and try again)</source>
         <translation>anglebench register：{path} 处磁盘已满：未在该处写入任何内容；登记册未改变（请腾出空间后重试）</translation>
     </message>
@@ -4171,6 +4176,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>条纹信号：载入编码器的修正表的校验和（印在导出的修正表中）；补偿后误差即作为交付状态给出</translation>
     </message>
     <message>
+        <source>Decision rule agreed with the customer</source>
+        <translation>判定规则已与客户约定</translation>
+    </message>
+    <message>
+        <source>ISO/IEC 17025 7.1.3: the decision rule was communicated to and agreed with the customer (a contract or an order that records it). The certificate says so; unticked, it says the rule is the one requested, with no agreement recorded</source>
+        <translation>ISO/IEC 17025 7.1.3：判定规则已告知客户并经其同意（有记录该规则的合同或订单）。证书将如此说明；不勾选时，证书说明该规则为所要求的规则，未记录约定</translation>
+    </message>
+    <message>
         <source>Training / specimen</source>
         <translation>培训 / 样本</translation>
     </message>
@@ -4551,7 +4564,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) with no :attr:`origin_step` (the origin is the sheet&apos;s as it was opened: a project&apos;s record of it, models/certificate/stored_origin.py), whether the rows were edited before, and the rows pasted before (0-based, as opened) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
+        <extracomment>a take&apos;s reading that does not match its row&apos;s point (another face, another target) the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip cells a take filled with a reading that does not match its row&apos;s point (the table at another face, the axis at another target: live76 F1), with the text the take wrote and what to say of it: drawn apart, the words in their tooltip, while the cell holds that text (undone, retyped or taken again, the mark goes). Rows inserted or removed above move them the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) with no :attr:`origin_step` (the origin is the sheet&apos;s as it was opened: a project&apos;s record of it, models/certificate/stored_origin.py), whether the rows were edited before, and the rows pasted before (0-based, as opened) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -4984,6 +4997,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Entry plan: {point}</source>
         <translation>录入计划：{point}</translation>
+    </message>
+    <message>
+        <source>Row {row}: taken after the end of the entry plan ({plan}); the reading is kept but left out of the analysis until its {columns} is typed</source>
+        <translation>第 {row} 行：在录入计划（{plan}）结束后取得；该读数予以保留，但在填入其{columns}之前不参与分析</translation>
     </message>
     <message>
         <source>Row {row}: taken after the end of the entry plan ({plan}); the reading is kept, as a point the plan does not have</source>
@@ -5430,6 +5447,11 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{order} 次，{channel} {amplitude} mV（u {u} mV）</translation>
     </message>
     <message>
+        <source>The samples per period N = {n} was not used: the samples are not at equal steps — the signals fitted at the θ column&apos;s phases leave {theta} mV rms, at N equal steps {steps} mV rms; the phase is the θ column&apos;s.</source>
+        <extracomment>a θ column given with N is taken in N&apos;s place when the signals fitted at its phases leave at most this share of the residual sum of squares they leave at N equal steps</extracomment>
+        <translation>未使用每周期采样数 N = {n}：采样并非等间隔——在 θ 列相位上拟合信号的残差为 {theta} mV（均方根），在 N 个等间隔上为 {steps} mV（均方根）；相位取自 θ 列。</translation>
+    </message>
+    <message>
         <source>row {row}, column &apos;theta_deg&apos;: {theta}° is beyond ±{limit}°: not a sample&apos;s phase</source>
         <translation>第 {row} 行 theta_deg 列：{theta}° 超出 ±{limit}°：不是采样的相位</translation>
     </message>
@@ -5496,6 +5518,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>phase estimated from the signals</source>
         <translation>相位由信号估计</translation>
+    </message>
+    <message>
+        <source>(no u: identified by particle swarm, which gives no covariance)</source>
+        <translation>（无 u：由粒子群法辨识，不给出协方差）</translation>
     </message>
     <message>
         <source>L = {lines} (period {period})</source>
@@ -5878,8 +5904,16 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>第 {row} 行：偏差为 {deviation}，但 实测 − 目标 = {from_measured}（{s}）：请只给出其一，或使两者一致</translation>
     </message>
     <message>
-        <source>row {row}: a deviation of {out} {s} is beyond {limit} {s} ({deviation_limit} {s2}): check the deviation unit, or whether a position was typed as a deviation</source>
-        <translation>第 {row} 行：偏差 {out} {s} 超出 {limit} {s}（{deviation_limit} {s2}）：请检查偏差单位，或是否把位置填成了偏差</translation>
+        <source>row {row}: a deviation of {out}{s} is beyond {limit}{s} ({deviation_limit}{s2}), as are {n} of the {count} readings: check the deviation unit</source>
+        <translation>第 {row} 行：偏差 {out}{s} 超出 {limit}{s}（{deviation_limit}{s2}），{count} 个读数中有 {n} 个如此：请检查偏差的单位</translation>
+    </message>
+    <message>
+        <source>Row {row}: a deviation of {out}{s} is beyond {limit}{s} ({deviation_limit}{s2}): left out of the analysis; check its reading</source>
+        <translation>第 {row} 行：偏差 {out}{s} 超出 {limit}{s}（{deviation_limit}{s2}）：不参与分析；请检查该读数</translation>
+    </message>
+    <message>
+        <source>Row {row}: measured {measured}{s2} at target {target}{s2}, a deviation of {out}{s} beyond {limit}{s} ({deviation_limit}{s2}): left out of the analysis (a reading at another position than its target&apos;s?)</source>
+        <translation>第 {row} 行：在目标位置 {target}{s2} 处测得 {measured}{s2}，偏差 {out}{s} 超出 {limit}{s}（{deviation_limit}{s2}）：不参与分析（是否在其目标以外的位置读取？）</translation>
     </message>
     <message>
         <source>The readings of every target came out identical in each direction (s = 0 everywhere) and show no step of their display: their repeatability cannot be told. The figures of the axis get no coverage interval and no certificate is issued; enter the readings with the digits the reference shows.</source>
@@ -6670,13 +6704,8 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>reference point, by definition</source>
-        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape, pooled over the shape&apos;s 12 cells (noise 0.1, 0.5, 1 and 2 times the true half range, 12, 36 and 72 points, 100 runs a cell: models.validation.half_range.coverage_study, seed 20261202, 2000 trials), and every cell within the binomial scatter of the probability stated (no cell&apos;s hits so few that a true coverage of 95.45 % would give as few in under 1 % of studies; the lowest cells: smooth 98 %, rough 96 %, spike 96 %, the samples&apos; real curves 94 of 100). The certificate prints these beside the probability stated, never a lowest cell that reads as a coverage below it. tests/benchmarks/test_half_range_coverage.py reruns the study and checks both; `anglebench validate` with fewer runs; tests/models/uncertainty/test_half_range_coverage.py a smoke version. what a U of zero at a reference point is printed as (never &quot;0.00&quot;)</extracomment>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. the trials × points the draws are summed in at a time (:func:`_draws_by_nature`: 128 kB an array, the five it works on held in a core&apos;s cache) The coverage the half-range interval achieved in its validation, by curve shape, pooled over the shape&apos;s 12 cells (noise 0.1, 0.5, 1 and 2 times the true half range, 12, 36 and 72 points, 100 runs a cell: models.validation.half_range.coverage_study, seed 20261202, 2000 trials), and every cell within the binomial scatter of the probability stated (no cell&apos;s hits so few that a true coverage of 95.45 % would give as few in under 1 % of studies; the lowest cells: smooth 98 %, rough 96 %, spike 96 %, the samples&apos; real curves 94 of 100). The certificate prints these beside the probability stated, never a lowest cell that reads as a coverage below it. tests/benchmarks/test_half_range_coverage.py reruns the study and checks both; `anglebench validate` with fewer runs; tests/models/uncertainty/test_half_range_coverage.py a smoke version. what a U of zero at a reference point is printed as (never &quot;0.00&quot;)</extracomment>
         <translation>参考点，按定义为零</translation>
-    </message>
-    <message>
-        <source>the U of the decision rule (its guard bands and its test U &lt; T) is this quantity&apos;s own, the half-widths U₋ and U₊ of its coverage interval, not the U of a point (up to {u}, not smaller than T = {t}): the half range is one figure made from all the points, with an interval of its own</source>
-        <extracomment>The lower end&apos;s least favourable curve: every gap to an extreme shrunk by this many standard deviations of its own noise (ε_i − ε_a), soft thresholding (Donoho &amp; Johnstone, *Biometrika* 81 (1994) 425–455) — the gaps the noise cannot resolve become ties, which maximise the range&apos;s bias (Romano, Shaikh &amp; Wolf 2014: the least favourable curve the data allow). Chosen by the coverage study (models.validation.half_range, 200 runs a cell): at 2 and 2.5 more cells missed below in more than 2.275 % of runs. The upper end&apos;s tail: the (UPPER_TAIL · α) quantile of the pivot under the measured curve (α = 1 − p; 0.5 % at p = 95.45 %), not α/2: the plug-in curve&apos;s bias is a little too large for a curve with two near-equal extremes at few points (a rough curve, 12 points: 7 % of misses above at α/2, 2 % at this tail, in the coverage study). the share of the trials in which the budget&apos;s noise alone may give a flat curve a range below the measured one before the readings are said to contradict the budget (a budget that is right is contradicted by at most this share of the readings: a flat curve&apos;s measured range is the noise&apos;s own) which U the decision rule uses when the half range decides (the guard band w, the probabilities, the U ≥ T test): its own interval&apos;s half-widths, not a point&apos;s U</extracomment>
-        <translation>判定规则所用的 U（其保护带及 U &lt; T 的检验）是该量自身的 U，即其包含区间的半宽 U₋ 和 U₊，而不是某一点的 U（最大 {u}，不小于 T = {t}）：半峰峰值是由全部点得出的一个量，有其自身的区间</translation>
     </message>
     <message>
         <source>probability of conformity from the decided value&apos;s own interval (JCGM 106:2012, 9.5: specific risk): the value&apos;s distribution taken as normal on each side of it, each side&apos;s standard deviation that half-width divided by the normal factor of the stated coverage probability, so that the interval holds it; with every point deciding, at most the sum over the points of each one&apos;s probability of lying outside ±T (Boole&apos;s inequality)</source>
@@ -6791,9 +6820,27 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>不作符合性声明：未给出技术要求（允差）。</translation>
     </message>
     <message>
+        <source>agreed with the customer (ISO/IEC 17025 7.1.3)</source>
+        <extracomment>whether the decision rule was agreed with the customer (ISO/IEC 17025 7.1.3, ILAC-G8 3), said after the rule where the certificate&apos;s details tell it (:func:`decide_conformity`&apos;s ``rule_agreed``): agreed, or the rule requested with no agreement recorded</extracomment>
+        <translation>已与客户约定（ISO/IEC 17025 7.1.3）</translation>
+    </message>
+    <message>
+        <source>the rule requested with the specification; no agreement of it with the customer is recorded (ISO/IEC 17025 7.1.3)</source>
+        <translation>随技术要求提出的规则；未记录该规则已与客户约定（ISO/IEC 17025 7.1.3）</translation>
+    </message>
+    <message>
+        <source>the U of the decision rule (its guard bands and its test U₊ &lt; T) is this quantity&apos;s own, the half-widths U₋ and U₊ of its coverage interval, not the U of a point (up to {u}, not smaller than T = {t}): the half range is one figure made from all the points, with an interval of its own</source>
+        <extracomment>The lower end&apos;s least favourable curve: every gap to an extreme shrunk by this many standard deviations of its own noise (ε_i − ε_a), soft thresholding (Donoho &amp; Johnstone, *Biometrika* 81 (1994) 425–455) — the gaps the noise cannot resolve become ties, which maximise the range&apos;s bias (Romano, Shaikh &amp; Wolf 2014: the least favourable curve the data allow). Chosen by the coverage study (models.validation.half_range, 200 runs a cell): at 2 and 2.5 more cells missed below in more than 2.275 % of runs. The upper end&apos;s tail: the (UPPER_TAIL · α) quantile of the pivot under the measured curve (α = 1 − p; 0.5 % at p = 95.45 %), not α/2: the plug-in curve&apos;s bias is a little too large for a curve with two near-equal extremes at few points (a rough curve, 12 points: 7 % of misses above at α/2, 2 % at this tail, in the coverage study). the share of the trials in which the budget&apos;s noise alone may give a flat curve a range below the measured one before the readings are said to contradict the budget (a budget that is right is contradicted by at most this share of the readings: a flat curve&apos;s measured range is the noise&apos;s own) which U the decision rule uses when the half range decides (the guard band w, the probabilities, the U ≥ T test): its own interval&apos;s half-widths, not a point&apos;s U</extracomment>
+        <translation>判定规则所用的 U（其保护带及检验 U₊ &lt; T）是该量自身的 U，即其包含区间的半宽 U₋ 和 U₊，而不是某一点的 U（最大 {u}，不小于 T = {t}）：半范围是由全部点得出的一个量，有其自身的区间</translation>
+    </message>
+    <message>
         <source>Compared with T: {value}, the result rounded to the finer of T&apos;s last place as stated and U&apos;s last digit (ASTM E29 §6.4 rounds to T&apos;s last place; the finer digit of U is kept).</source>
         <extracomment>the value compared with T where it is not the statement&apos;s printed value, or keeps a digit finer than T&apos;s last place (:attr:`ComparedValue.said`): the rule as it is done, the finer of the two places (until 0.8.21 &quot;rounded to the last place of T as stated (ASTM E29 §6.4)&quot;, which a value printed 2.3571 µrad beside ±2.357 µrad contradicted: assessment 73 M1)</extracomment>
         <translation>与 T 比较：{value}，即结果修约到 T 所述的最后一位与 U 的最后一位中较细的一位（ASTM E29 §6.4 修约到 T 的最后一位；U 较细的一位予以保留）。</translation>
+    </message>
+    <message>
+        <source>No statement of conformity is possible: the interval&apos;s upper half-width U₊ = {u}, which guards acceptance, is not smaller than the tolerance T = {t}, so no result could be shown to lie within it.</source>
+        <translation>无法作符合性声明：用于保护接受判定的区间上半宽 U₊ = {u} 不小于允差 T = {t}，任何结果都不能证明在其范围以内。</translation>
     </message>
     <message>
         <source>bounds, not the probabilities themselves (Boole&apos;s inequality over the points): the probability of a wrong decision is at most the figure given, the probability of conformity at least it after a pass and at most it after a fail; a bound of 100 % on the probability of a wrong decision leaves it not bounded by this method</source>
@@ -6827,6 +6874,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>the decided quantity is withheld (the data do not determine it)</source>
         <translation>判定量不予给出（数据无法确定它）</translation>
+    </message>
+    <message>
+        <source>U₊ = {u} is not smaller than T = {t}</source>
+        <translation>U₊ = {u} 不小于 T = {t}</translation>
     </message>
     <message>
         <source>Half the peak-to-peak {what}: {value} as measured, coverage interval {low} … {high} (U = {u}, coverage probability {p} %; noise can only widen a measured range, so the interval reaches further below the value than above it). {sentence}</source>
@@ -8527,6 +8578,14 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>自准直仪滚转 ≤</translation>
     </message>
     <message>
+        <source>Equal steps, N samples a period. 0: the phase from the θ column or, without one, estimated from the signals (Heydemann); a record that does not follow N is refused, and a θ column whose phases the signals fit far better than N&apos;s steps is used in N&apos;s place, said</source>
+        <translation>等间隔，每周期 N 个采样。0：相位取自 θ 列，若无该列则由信号估计（Heydemann）；不符合 N 的记录被拒绝；若信号与 θ 列相位的拟合远优于与 N 个等间隔的拟合，则以 θ 列代替 N 并予以说明</translation>
+    </message>
+    <message>
+        <source>Exact linear least squares, or the particle swarm of the method&apos;s paper (Gao et al. 2013; first period only, for comparison: it has no U, so no certificate is made of it)</source>
+        <translation>精确的线性最小二乘，或方法原文（2013 年的论文）的粒子群法（仅第一个周期，供比较：它没有 U，因此不据其出具证书）</translation>
+    </message>
+    <message>
         <source>Largest relative error of the autocollimator&apos;s indication over the readings&apos; span (its scale and linearity, from its calibration), rectangular: it enters the uncertainty through the design (a constant offset cancels in each mounting&apos;s offset); 0: not in the budget</source>
         <translation>自准直仪示值在读数范围内的最大相对误差（其刻度与线性，取自其校准），矩形分布：经测量设计计入不确定度（恒定零位偏差在各安装位置的偏移中抵消）；0：不计入预算</translation>
     </message>
@@ -8561,6 +8620,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>Standard deviation of one reading (autocollimator and encoder together), from the lab&apos;s own records, used only when the readings cannot evaluate it (a single set: its vertical readings give the autocollimator&apos;s noise but not the encoder&apos;s, and their scatter about the tilt fit holds the faces&apos; own pyramidal errors); 0: not stated, and then a single set gets no uncertainty, nor a decided value&apos;s interval</source>
         <translation>单次读数的标准偏差（自准直仪与编码器合计），取自实验室自己的记录，仅在读数本身无法评定时使用（只有一个测回：其垂直读数给出自准直仪的噪声，但给不出编码器的，且其对倾斜拟合的离散包含各面自身的塔差）；0：未给出，此时只有一个测回则不给出不确定度，也不给出判定值的区间</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty of each sample&apos;s phase, in degrees of a signal period: with N equal steps the sampling&apos;s uniformity (the timing of the samples), with a θ column its reference&apos;s stated U / k; with an estimated phase it enters U, but the error is not traceable however it is stated (what leaves the Lissajous figure round is not observable). Independent from sample to sample: it widens the decided half range&apos;s interval through the fit, counted once with the readings&apos; scatter (the larger of the two, not their sum). A phase reference standard listed with its U is the same reference: the larger enters, once (a standard&apos;s ° is shaft angle, 1/L of a period&apos;s). 0: not stated</source>
+        <translation>每个采样点相位的标准不确定度，以信号周期的度表示：N 个等间隔时为采样的均匀性（采样的时刻），有 θ 列时为其基准所给的 U / k；相位由信号估计时它计入 U，但无论如何给出，该误差都不可溯源（使李萨如图形保持为圆的部分不可观测）。各采样点之间相互独立：它经拟合使判定的半范围区间变宽，并与读数离散只计入一次（取二者中较大者，而非二者之和）。列出并给出 U 的相位基准计量标准即为同一基准：取较大者，只计入一次（计量标准的 ° 为轴角，一个周期的 1/L）。0：未给出</translation>
     </message>
     <message>
         <source>Standard uncertainty of the measured roll; 0: the roll was not measured (the bound above enters the budget, nothing is corrected)</source>
@@ -8599,10 +8662,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>计划的 θ：起点:步长:个数（-20:1:41）或列表（-20, -10, 0, 10, 20）</translation>
     </message>
     <message>
-        <source>Exact linear least squares, or the particle swarm of the method&apos;s paper (Gao et al. 2013; first period only, for comparison)</source>
-        <translation>精确线性最小二乘，或方法论文（高旭等 2013）的粒子群算法（仅第一个周期，用于比较）</translation>
-    </message>
-    <message>
         <source>HEIDENHAIN 1 Vpp (standard values)</source>
         <translation>HEIDENHAIN 1 Vpp（标准值）</translation>
     </message>
@@ -8621,10 +8680,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>Odd harmonics only (the model of the method&apos;s paper, Gao et al. 2013), or every order up to the highest</source>
         <translation>仅奇次谐波（方法论文高旭等 2013 的模型），或直到最高次的所有谐波</translation>
-    </message>
-    <message>
-        <source>Standard uncertainty of each sample&apos;s phase, in degrees of a signal period: with N equal steps the sampling&apos;s uniformity (the timing of the samples), with a θ column its reference&apos;s stated U / k; with an estimated phase it enters U, but the error is not traceable however it is stated (what leaves the Lissajous figure round is not observable). 0: not stated</source>
-        <translation>每个采样相位的标准不确定度，以一个信号周期的度数表示：N 等步采样时为采样的均匀性（采样的时刻），有 θ 列时为其参考给出的 U / k；由信号估计相位时计入 U，但无论如何填写误差都不可溯源（使李萨如图形保持为圆的部分不可观测）。0：未给出</translation>
     </message>
     <message>
         <source>Table 1 of the method&apos;s paper (Tian et al. 2015): the accuracy judged, and the tilt it allows (shown with the results, for the set-up chosen below)</source>
@@ -9252,6 +9307,11 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>相位由信号本身估计，无相位参考：谐波失真中使李萨如图形保持为圆的部分不可观测，因此误差的 U 不完整（请给出参考的 θ 列或每周期 N 个采样）</translation>
     </message>
     <message>
+        <source>no U is stated for the signal parameters: they were identified by particle swarm (kept for comparison), which gives no covariance; least squares gives their U</source>
+        <extracomment>why no parameter has a U when a particle swarm identified them (assessment 76 H1b: the offsets printed a U of the ADC&apos;s figures alone, the rest &quot;—&quot;)</extracomment>
+        <translation>未给出信号参数的 U：它们由粒子群法辨识（保留供比较），该方法不给出协方差；最小二乘法给出其 U</translation>
+    </message>
+    <message>
         <source>The U of {parameters} is incomplete: {inputs} not stated, so not in it (what it leaves in these parameters the fit&apos;s scatter does not show; stated, it may make these U several times larger).</source>
         <extracomment>why the parameters&apos; U stated are incomplete: a figure that acts on them not stated (assessment 70 M7: the bundled record&apos;s offsets printed &quot;U 0.00018 V&quot; with no word of it beside the table, 5.5 times less than with the ADC&apos;s figures stated)</extracomment>
         <translation>{parameters}的 U 不完整：{inputs}未给出，因而未计入（它在这些参数中造成的影响，拟合的分散性无法显示；给出后这些 U 可能大数倍）。</translation>
@@ -9339,12 +9399,44 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>Fitted model, {channel} channel, direction {j}</source>
-        <extracomment>the points a period is judged on when the decided quantity is the half range of the continuous as-found error (the fitted model&apos;s, over the whole period)</extracomment>
         <translation>拟合模型，{channel} 通道，第 {j} 个方向</translation>
     </message>
     <message>
         <source>one independent direction of the fitted parameters&apos; covariance, carried to the modelled phase error</source>
         <translation>拟合参数协方差的一个独立方向，传播至模型相位误差</translation>
+    </message>
+    <message>
+        <source>The sine and cosine signals of the encoder&apos;s grating are sampled over whole periods. Each channel is modelled as an offset plus the harmonics of order {orders} (order 1 the fundamental) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and identified by particle swarm optimisation on the first period, as the paper does (kept for comparison with linear least squares, which reaches the exact optimum). The interpolation error is the phase atan2(u_sin, u_cos) minus θ, given with its mean over the period removed (the phase&apos;s origin is arbitrary); the modelled error, tabulated over the measured phase, is the correction, and the compensated error is what remains after applying it.</source>
+        <extracomment>the method as identified by the particle swarm of the paper (--method pso): the method says what was fitted, never &quot;linear least squares&quot; whatever identified it (assessment 76 H1a); no certificate is made of it (identification_refusal), the text is for any other reader of the method</extracomment>
+        <translation>在整周期内采样编码器光栅的正弦和余弦信号。每一路信号建模为直流偏置加 {orders} 次谐波（1 次为基波）及其相位，u = A₀ + Σ A_k sin(kθ + c_k)，并按原文方法在第一个周期上用粒子群优化辨识（保留以便与可达到精确最优的线性最小二乘比较）。细分误差为相位 atan2(u_sin, u_cos) 减去 θ，并扣除其在一个周期内的平均值后给出（相位原点是任意的）；按实测相位制表的模型误差即为修正值，补偿后误差为施加修正后的剩余误差。</translation>
+    </message>
+    <message>
+        <source>the signals were identified by particle swarm (the paper&apos;s method, kept for comparison): a swarm stopped where its cost stalls gives no covariance, so its parameters, its correction table and the error curve fitted from them have no uncertainty, and its residual RMS, {sin} mV (sin) and {cos} mV (cos), is {ratio} times that of the least-squares fit of the same readings ({lsq_sin} and {lsq_cos} mV); identify by least squares (the default) for a certificate, its JSON U and a decision</source>
+        <extracomment>why no certificate, no U and no statement of conformity rest on a particle swarm&apos;s fit (assessment 76 H1: the sample&apos;s swarm, 600 times the least squares&apos; cost, decided &quot;pass&quot; where least squares decided &quot;fail&quot;, from an interval of the least squares&apos; covariance)</extracomment>
+        <translation>信号由粒子群法辨识（原文的方法，保留供比较）：粒子群在代价停止下降处停止，不给出协方差，因此其参数、修正表及由其拟合的误差曲线都没有不确定度；其残差均方根 {sin} mV（sin）和 {cos} mV（cos）是同一读数最小二乘拟合（{lsq_sin} 和 {lsq_cos} mV）的 {ratio} 倍；出具证书、给出 JSON 中的 U 和作判定时，请用最小二乘法辨识（默认）</translation>
+    </message>
+    <message>
+        <source>{note}; the settings&apos; phase reference u ({u}) is of this reference and is not entered again</source>
+        <extracomment>the settings&apos; phase reference u&apos;s row (_stated_inputs)</extracomment>
+        <translation>{note}；设置中的相位参考 u（{u}）属于此基准，不再重复计入</translation>
+    </message>
+    <message>
+        <source>{note}; the listed standard {names} (u {u}) is this reference: entered once, the larger</source>
+        <translation>{note}；所列计量标准 {names}（u {u}）即为此基准：只计入一次，取较大者</translation>
+    </message>
+    <message>
+        <source>The phase reference&apos;s errors are taken as independent from sample to sample (its u per sample): they enter the decided half range&apos;s interval through the fit of the signals, as the signals&apos; noise does, not as one shift of the whole period, which would cancel in a half range.</source>
+        <extracomment>how the phase reference enters the decided half range&apos;s interval (assessment 76 M3: its budget said &quot;u per sample&quot; while the interval took it as one shift that cancels)</extracomment>
+        <translation>相位参考的误差按各采样点之间相互独立处理（其每个采样点的 u）：它们与信号噪声一样，经信号的拟合计入判定的半范围区间，而不是作为整个周期的一个平移（那样会在半范围中抵消）。</translation>
+    </message>
+    <message>
+        <source>Reference standard &apos;{name}&apos;: its uncertainty {given} is taken as shaft angle, as every standard&apos;s figure is: u = {u} per sample, {periods} signal periods, which no phase reference of an interpolation error can be. The settings&apos; phase reference u and the θ column are in degrees of a signal period (one period is {period} of shaft angle): if its certificate states {given} of a signal period, state {converted} (shaft angle) in the standards table.</source>
+        <extracomment>a phase reference standard&apos;s u per sample from this share of a signal period up is taken for a figure of a signal period stated in shaft angle: a reference that uncertain could not give the phase of an interpolation error of about 1 % of a period (the signals would not follow its θ), and &quot;0.05°&quot; of a period read as shaft angle is 0.05 × L periods</extracomment>
+        <translation>计量标准“{name}”：其不确定度 {given} 按轴角理解，与每个计量标准的数值相同：每个采样点 u = {u}，即 {periods} 个信号周期，细分误差的相位基准不可能如此。设置中的相位参考 u 和 θ 列以信号周期的度表示（一个周期为 {period} 轴角）：若其证书给出的是信号周期的 {given}，请在计量标准表中填写 {converted}（轴角）。</translation>
+    </message>
+    <message>
+        <source>one independent direction of the fitted parameters&apos; covariance, carried to the modelled phase error, drawn with the readings&apos; scatter beyond what the phase reference&apos;s errors would show ({shown} mV shown, {reference} mV the reference&apos;s share, which its own directions carry: counted once)</source>
+        <translation>拟合参数协方差的一个独立方向，传播至模型相位误差，按读数离散中超出相位参考误差所应显示部分抽样（显示 {shown} mV，其中基准所占 {reference} mV 由其自身的方向承载：只计入一次）</translation>
     </message>
     <message>
         <source>ADC offset, {channel} channel</source>
@@ -9371,6 +9463,14 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>整个记录为同一图样，在所述数值以内</translation>
     </message>
     <message>
+        <source>{name}, through the fit, direction {j}</source>
+        <translation>{name}，经拟合，方向 {j}</translation>
+    </message>
+    <message>
+        <source>u = {u} of each sample&apos;s phase, independent from sample to sample: carried through the least-squares fit to the fitted curve, as the signals&apos; noise is (a shift common to every sample would cancel in the half range; these do not)</source>
+        <translation>每个采样点相位的 u = {u}，各采样点之间相互独立：与信号噪声一样经最小二乘拟合传播至拟合曲线（对所有采样点相同的平移会在半范围中抵消；这些不会）</translation>
+    </message>
+    <message>
         <source>Readings&apos; rounding, {channel} channel</source>
         <extracomment>the share of the typed step below which the rounding&apos;s bound left repeated is none, the noise having dithered it (the bound is 0.2 % of the step at σ = δ/2, kept; 10⁻⁸ at σ = δ)</extracomment>
         <translation>读数的舍入，{channel} 通道</translation>
@@ -9382,6 +9482,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>{name}, with order {orders} folded in (they alias at these phases)</source>
         <translation>{name}，含折入的 {orders} 次谐波（二者在这些相位上混叠）</translation>
+    </message>
+    <message>
+        <source>no U (identified by particle swarm)</source>
+        <translation>无 U（由粒子群法辨识）</translation>
     </message>
     <message>
         <source>no U (phase estimated from the signals)</source>
@@ -9924,7 +10028,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Autocollimator (ELCOMAT kind)</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) the columns of the table&apos;s own position (the polygon&apos;s and the cross-calibration&apos;s encoder): a second instrument read into one shows the table&apos;s move to the next face with the pitch between faces not known yet (no *faces* set, too few faces read), the table&apos;s move is half of 1°, the finest pitch the polygon&apos;s guide knows (360 faces) the instruments&apos; names for their values, where the workbench has no column for them a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
         <translation>自准直仪（ELCOMAT 类）</translation>
     </message>
     <message>
@@ -9950,7 +10054,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
-        <extracomment>where the demonstration instrument points in turn (8 s each) the readout&apos;s runs through its targets (more than any plan has: ISO 230-2 asks 5) the demonstration axis&apos;s reversal error: where it stops coming down (2.9″) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short)
+        <extracomment>where the demonstration instrument points in turn (8 s each) the readout&apos;s runs through its targets (more than any plan has: ISO 230-2 asks 5) the demonstration axis&apos;s reversal error: where it stops coming down (2.9″) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short) frames arrive with no measurement since this one (a mirror out of view); None: readings come. Not a fault of the link: said as what it is (live76 F3) the table&apos;s position (degrees) this link read at its last take, where it reads the table&apos;s encoder (:data:`TABLE_COLUMNS`); None: no take of it yet
 ----------
 the workbenches (keys, comma-separated) the panel was open on when last left: restored open on those only, never on every tab with nothing connected (day 65, F10)</extracomment>
         <translation>仪器</translation>
@@ -10022,8 +10126,52 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
         <translation>已断开与 {port} 的连接</translation>
     </message>
     <message>
+        <source>{value} ({why})</source>
+        <translation>{value}（{why}）</translation>
+    </message>
+    <message>
         <source>{value} (link lost)</source>
         <translation>{value}（链路中断）</translation>
+    </message>
+    <message>
+        <source>no mirror in view</source>
+        <translation>视场内无反射镜</translation>
+    </message>
+    <message>
+        <source>no target in view</source>
+        <translation>视场内无目标</translation>
+    </message>
+    <message>
+        <source>no reading yet</source>
+        <translation>尚无读数</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>链路中断</translation>
+    </message>
+    <message>
+        <source>{column} {value}{unit} is beyond the range {low} … {high}{unit}</source>
+        <translation>{column} {value}{unit} 超出量程 {low} … {high}{unit}</translation>
+    </message>
+    <message>
+        <source>it marks {columns} not valid</source>
+        <translation>它将 {columns} 标为无效</translation>
+    </message>
+    <message>
+        <source>none holds a measurement</source>
+        <translation>均不含测量值</translation>
+    </message>
+    <message>
+        <source>No mirror in view</source>
+        <translation>视场内无反射镜</translation>
+    </message>
+    <message>
+        <source>No target in view</source>
+        <translation>视场内无目标</translation>
+    </message>
+    <message>
+        <source>{what}: frames arrive from {port}, but {detail}. Not a fault of the link: the readings come back with the target</source>
+        <translation>{what}：{port} 有数据帧到达，但{detail}。这不是链路故障：目标回到视场后读数即恢复</translation>
     </message>
     <message>
         <source>{instrument} on {port}</source>
@@ -10042,10 +10190,6 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     <message>
         <source>The spread allowed over the dwell, in the readout&apos;s own unit ({unit}): it sends no angle unit</source>
         <translation>驻留时间内允许的离散，以读数器自身的单位（{unit}）计：它发送的不是角度单位</translation>
-    </message>
-    <message>
-        <source>Auto-take: waiting for {instrument} (link lost)</source>
-        <translation>自动取数：等待{instrument}（链路中断）</translation>
     </message>
     <message>
         <source>Auto-take: waiting for a new reading from {instrument}</source>
@@ -10070,6 +10214,18 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     <message>
         <source>Spread over the last second: {spread}{unit}</source>
         <translation>最近一秒内的离散：{spread}{unit}</translation>
+    </message>
+    <message>
+        <source>Allan deviation: the reading is moving (waiting for it to stay still)</source>
+        <translation>阿伦偏差：读数正在变化（等待其稳定）</translation>
+    </message>
+    <message>
+        <source>Allan deviation (first axis, since the reading last moved): {figures}</source>
+        <translation>阿伦偏差（第一轴，自读数上次变化以来）：{figures}</translation>
+    </message>
+    <message>
+        <source>Not taken: no reading from {instrument} ({why})</source>
+        <translation>未取数：{instrument}无读数（{why}）</translation>
     </message>
     <message>
         <source>{instrument}: its reading was not taken: no column of its own to go to (the current cell&apos;s is another instrument&apos;s, or there is none) — choose one in “Readout into”</source>
@@ -10115,10 +10271,6 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     <message>
         <source>Allan deviation (first axis, since the last gap): {figures}</source>
         <translation>阿伦偏差（第一轴，自最后一次间断起）：{figures}</translation>
-    </message>
-    <message>
-        <source>Not taken: no reading from {instrument} (link lost)</source>
-        <translation>未取数：{instrument}没有读数（链路中断）</translation>
     </message>
     <message>
         <source>Not taken: no new reading from {instrument} since the last take</source>
@@ -10191,8 +10343,12 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     </message>
     <message>
         <source>{port}: {n} of {total} readings in {seconds} s</source>
-        <extracomment>with --stable, each reading&apos;s first and last line (their indices since the start) whether the port was ever opened: until then a port that cannot be opened ends the capture with its one line (contract75 F13: &quot;cannot open …; reconnecting&quot; ×3, then the last, 4 lines where docs/capture.md promises one)</extracomment>
+        <extracomment>with --stable, each reading&apos;s first and last line (their indices since the start) whether the port was ever opened: until then a port that cannot be opened ends the capture with its one line (contract75 F13: &quot;cannot open …; reconnecting&quot; ×3, then the last, 4 lines where docs/capture.md promises one) when the frames with no measurement began (None: readings come)</extracomment>
         <translation>{port}：{seconds} 秒内仅得 {total} 个读数中的 {n} 个</translation>
+    </message>
+    <message>
+        <source>{failure}; its frames carry no measurement since {since} s ({reason}): no target in view?</source>
+        <translation>{failure}；自 {since} s 起其数据帧不含测量值（{reason}）：视场内没有目标？</translation>
     </message>
     <message>
         <source>anglebench capture: {reason}; reconnecting</source>
@@ -10209,6 +10365,10 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     <message>
         <source>cannot write {path} ({reason})</source>
         <translation>无法写入 {path}（{reason}）</translation>
+    </message>
+    <message>
+        <source>the disk is full</source>
+        <translation>磁盘已满</translation>
     </message>
     <message>
         <source>{path} exists and is not replaced without --overwrite</source>
@@ -10259,7 +10419,7 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
         <source>{port}: no answer for {seconds} s</source>
         <extracomment>the default baud rate of a serial ADC stream the index (since the worker started) of the block&apos;s first line seconds since the worker started when the block arrived (each of its lines) the lines as sent, and per line whether it became a sample the samples (V), in the order of the lines that gave them lines kept and not read that were not refused (a connection&apos;s first line: it may be the rest of a sample begun before the connection) lines framed, samples read and lines refused since the start
 ----------
-seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (read back with :meth:`CaptureWorker.lines`) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests: :attr:`request_interval_s`) the least time between two requests to an instrument that only answers requests (a readout, a theodolite): with none, one that answers at once is asked again at once (#62 review: a readout polled at ~8.7 kHz, 2 M frames in a morning&apos;s record) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection requests numbered over the worker&apos;s whole life, not per connection: a late reply to the last connection&apos;s request 1 would otherwise match this one&apos;s request 1 whether a connection of this worker has read a streamed frame the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) the lines the instrument sent that are still in memory, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only. Read them with :meth:`lines` (indices since the start, under the lock): lines before ``raw_first`` have been dropped the index (since the start) of ``raw[0]``: lines a consumer has taken (:meth:`take_raw`) beyond ``raw_cap``, or said it no longer needs (:meth:`release`), are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
+seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (read back with :meth:`CaptureWorker.lines`) a :class:`models.messages.Message`: English as a ``str``, translatable seconds since the worker started, when the frame arrived why the frame holds no measurement (English, as the worker&apos;s refusals) the instrument&apos;s columns (keys) concerned, the value beyond the range and the range (None: the instrument marks the axes not valid) the frame&apos;s index among the lines the worker kept how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests: :attr:`request_interval_s`) the least time between two requests to an instrument that only answers requests (a readout, a theodolite): with none, one that answers at once is asked again at once (#62 review: a readout polled at ~8.7 kHz, 2 M frames in a morning&apos;s record) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection requests numbered over the worker&apos;s whole life, not per connection: a late reply to the last connection&apos;s request 1 would otherwise match this one&apos;s request 1 whether a connection of this worker has read a streamed frame the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) the lines the instrument sent that are still in memory, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only. Read them with :meth:`lines` (indices since the start, under the lock): lines before ``raw_first`` have been dropped the index (since the start) of ``raw[0]``: lines a consumer has taken (:meth:`take_raw`) beyond ``raw_cap``, or said it no longer needs (:meth:`release`), are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>
     </message>
     <message>
@@ -10280,6 +10440,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>{port}: the link dropped ({reason})</source>
+        <extracomment>the last whole frame that carried no measurement (a mirror out of view): the instrument is heard, not silent; and whether NoTarget was put since the last reading</extracomment>
         <translation>{port}：连接中断（{reason}）</translation>
     </message>
     <message>
@@ -10375,6 +10536,14 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>Dwell</source>
         <translation>驻留时间</translation>
+    </message>
+    <message>
+        <source>Auto-take: waiting for {instrument} ({why})</source>
+        <translation>自动取数：等待{instrument}（{why}）</translation>
+    </message>
+    <message>
+        <source>Auto-take: taken; turn the table to the next face ({column} ≥ {move}° from the take)</source>
+        <translation>自动取数：已取；请将转台转到下一面（{column} 距本次取数 ≥ {move}°）</translation>
     </message>
     <message>
         <source>Auto-take: taken; move to the next point</source>
@@ -11043,6 +11212,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>偏差 (&quot;)</translation>
     </message>
     <message>
+        <source>outlier</source>
+        <translation>异常值</translation>
+    </message>
+    <message>
         <source>face deviation ± U</source>
         <translation>面偏差 ± U</translation>
     </message>
@@ -11053,10 +11226,6 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>residual per mounting</source>
         <translation>各安装位置残差</translation>
-    </message>
-    <message>
-        <source>outlier (&gt; 3σ)</source>
-        <translation>异常值（&gt; 3σ）</translation>
     </message>
     <message>
         <source>Residuals per mounting and face</source>
@@ -11084,7 +11253,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the encoder&apos;s U is withheld: mounting(s) {mountings} have no closure reading, so the autocollimator&apos;s drift is not measured, and a drift the same way in every mounting is a ramp over the encoder&apos;s steps that these readings cannot tell from the encoder&apos;s error; add a closure reading to each mounting (its first face read again at the end) or state the largest drift over a mounting (the setting &quot;largest autocollimator drift over a mounting&quot;; --drift-bound-arcsec, drift_bound_arcsec in the metadata)</source>
-        <extracomment>a residual beyond this many σ is marked as an outlier setting: the tilt bound of a mounting without vertical readings (budget) setting: the largest autocollimator drift over a mounting without a closure reading (budget, through the design); 0: none stated</extracomment>
+        <extracomment>a residual is marked as an outlier beyond the limit that all of a clean run&apos;s residuals (normal, as many as the readings) stay within but once in this many runs: Šidák&apos;s share of it for each (cov76 F8: a fixed 3σ flagged one of 156 clean readings in a third of runs) the limit never below this many σ setting: the tilt bound of a mounting without vertical readings (budget) setting: the largest autocollimator drift over a mounting without a closure reading (budget, through the design); 0: none stated</extracomment>
         <translation>编码器的 U 不予给出：安装位置 {mountings} 没有闭合读数，因此未测量自准直仪的漂移，而各安装位置同向的漂移是编码器各步上的一个斜坡，这些读数无法将其与编码器误差区分；请为每个安装位置补充闭合读数（末尾再读一次其第一面），或给出安装位置内的最大漂移（设置项“安装位置内自准直仪的最大漂移”；命令行 --drift-bound-arcsec，元数据 drift_bound_arcsec）</translation>
     </message>
     <message>
@@ -11395,6 +11564,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>{workbench} has no reference to send.</source>
         <translation>{workbench}没有可发送的参考值。</translation>
+    </message>
+    <message>
+        <source>{workbench}: {problem}</source>
+        <translation>{workbench}：{problem}</translation>
     </message>
     <message>
         <source>{workbench}: {cells} reference values sent to {target} with their U (largest u = {u}); Edit › Undo there restores the column</source>
@@ -11781,8 +11954,12 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>本文件为检测报告，而非校准证书：其结果的计量溯源性未建立（{why}）。</translation>
     </message>
     <message>
+        <source>No calibration and measurement capability (CMC) of the laboratory is stated for this quantity in the analysis settings, so the U stated here has not been compared with the CMC of its scope of accreditation (ILAC-P14:09/2020 5.4: no U smaller than the CMC is stated under accreditation).</source>
+        <extracomment>each setting made by cmc_parameter → what it is the CMC of (the JSON&apos;s laboratory_cmc) an accredited calibration certificate whose CMC is not stated: its U was not compared with the scope (assessment 76 L7)</extracomment>
+        <translation>分析设置中未给出实验室对该量的校准和测量能力（CMC），因此此处给出的 U 未与其认可范围的 CMC 作比较（ILAC-P14:09/2020 5.4：在认可范围内给出的 U 不得小于 CMC）。</translation>
+    </message>
+    <message>
         <source>The coverage interval of {figures} is held to it as well: each half-width these readings give below the CMC is stated as the CMC about the figure&apos;s value (the lower end not below 0 where the figure cannot be negative), with the probability printed beside it, which the wider interval covers at least.</source>
-        <extracomment>each setting made by cmc_parameter → what it is the CMC of (the JSON&apos;s laboratory_cmc)</extracomment>
         <translation>{figures} 的包含区间同样不低于 CMC：这些读数给出的半宽小于 CMC 的一侧，以指标值为中心按 CMC 给出（指标不可能为负时下限不低于 0），旁边所印的概率保持不变，较宽的区间的覆盖概率不低于它。</translation>
     </message>
     <message>
@@ -11916,6 +12093,7 @@ what a name or description may hold that prints as no character of its own: a li
     </message>
     <message>
         <source>{text}: a TCP port (0 to 65535; 0 takes a free one) or &apos;pty&apos;</source>
+        <extracomment>the options whose value is a list of numbers, which may begin with a minus sign</extracomment>
         <translation>{text}：应为 TCP 端口（0 到 65535；0 表示任取一个空闲端口）或 &apos;pty&apos;</translation>
     </message>
     <message>
@@ -13005,6 +13183,10 @@ Replace it?</source>
     <message>
         <source>{project}: {source}</source>
         <translation>{project}：{source}</translation>
+    </message>
+    <message>
+        <source>{readings}; row(s) {rows} left out of the analysis</source>
+        <translation>{readings}；第 {rows} 行不参与分析</translation>
     </message>
     <message>
         <source>all {count} rows captured from the instruments</source>
