@@ -45,4 +45,9 @@ def test_one_set_without_sigma_shows_no_interval_and_says_what_to_state(window, 
     assert "Decided value" in shown and "no uncertainty can be given" not in shown, shown
     low, high = printed.interval_low, printed.interval_high
     assert low <= bench.truth_half_range() <= high
-    assert f"interval [{low:.2f}, {high:.2f}]" in shown, (shown, low, high)
+    # the ends as the certificate prints them: the printed value ∓ the printed U (round76)
+    from models.certificate.document import printed_decided_figures
+
+    ends = printed_decided_figures(printed)
+    low_text, high_text = (str(ends[end]).rstrip('"') for end in ("low", "high"))
+    assert f"interval [{low_text}, {high_text}]" in shown, (shown, ends)

@@ -140,7 +140,7 @@ def test_the_mirror_out_of_view_is_said_and_never_a_link_fault(bench, window, qt
         assert status == (f'No mirror in view: frames arrive from {ac.port}, but AC x 9999" is '
                           f'beyond the range -3600 … 3600". Not a fault of the link: the '
                           f'readings come back with the target')
-        assert value == '0.10"   -3.20" (no mirror in view)'
+        assert value == 'x 0.10"\ny -3.20" (no mirror in view)'  # x and y on two lines (day76 F11)
         assert state.startswith("Auto-take: waiting for Autocollimator (ELCOMAT kind) on ") \
             and state.endswith("(no mirror in view)")
         assert not panel.take_button.isEnabled()
