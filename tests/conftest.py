@@ -172,6 +172,16 @@ def delete_window(w) -> None:
     QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
+def window_of_a_module(folder: Path):
+    """A generator for a module-scoped fixture: :func:`answered_window` in ``folder``, yielded
+    once, then stopped, closed and deleted (the windows several cases of one module share)."""
+    made = answered_window(folder)
+    yield made
+    made.projects.autosave_timer.stop()
+    made.close()
+    delete_window(made)
+
+
 @pytest.fixture
 def window(qtbot, tmp_path):
     """:func:`answered_window` of the test's own folder."""

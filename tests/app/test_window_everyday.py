@@ -21,15 +21,12 @@ def _window_of_the_module(qapp, tmp_path_factory):
     """One shown window (focus and key presses need a visible window) for the cases below,
     each of which starts from it as :func:`window` leaves it: a window each took ~0.45 s of
     CPU."""
-    from tests.conftest import answered_window, delete_window
+    from tests.conftest import window_of_a_module
 
-    shown = answered_window(tmp_path_factory.mktemp("window_of_the_module"))
-    shown.show()
-    shown.size_when_made = shown.size()
-    yield shown
-    shown.projects.autosave_timer.stop()
-    shown.close()
-    delete_window(shown)
+    for shown in window_of_a_module(tmp_path_factory.mktemp("window_of_the_module")):
+        shown.show()
+        shown.size_when_made = shown.size()
+        yield shown
 
 
 @pytest.fixture

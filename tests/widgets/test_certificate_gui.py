@@ -39,13 +39,9 @@ def _window_of_the_module(qapp, tmp_path_factory):
     """One window for the cases below that neither save the lab's defaults nor issue (the
     window's settings and the register are each case's own otherwise) nor need a window
     never analysed: a window each took ~0.45 s of CPU."""
-    from tests.conftest import answered_window, delete_window
+    from tests.conftest import window_of_a_module
 
-    made = answered_window(tmp_path_factory.mktemp("window_of_the_module"))
-    yield made
-    made.projects.autosave_timer.stop()
-    made.close()
-    delete_window(made)
+    yield from window_of_a_module(tmp_path_factory.mktemp("window_of_the_module"))
 
 
 @pytest.fixture

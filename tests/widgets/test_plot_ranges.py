@@ -22,13 +22,9 @@ def _window_of_the_module(qapp, tmp_path_factory):
     """One window for the cases that each set what they look at themselves (the workbench in
     front, its readings or sample, the language, the window's size, the plot's tab): a window
     each took ~0.45 s of CPU."""
-    from tests.conftest import answered_window, delete_window
+    from tests.conftest import window_of_a_module
 
-    shown = answered_window(tmp_path_factory.mktemp("plot_ranges_window"))
-    yield shown
-    shown.projects.autosave_timer.stop()
-    shown.close()
-    delete_window(shown)
+    yield from window_of_a_module(tmp_path_factory.mktemp("plot_ranges_window"))
 
 
 @pytest.fixture
