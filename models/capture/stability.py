@@ -87,15 +87,6 @@ def steady_motion(times_s, values) -> float | None:
     if not np.any(moving):
         return None
     return float(slopes[int(np.argmax(np.where(moving, moved, -np.inf)))])
-    dt = t - t.mean()
-    slopes = dt @ (y - y.mean(axis=0)) / float(dt @ dt)
-    residuals = y - y.mean(axis=0) - np.outer(dt, slopes)
-    moved = np.abs(slopes) * float(np.ptp(t))
-    scatter = np.ptp(residuals, axis=0)
-    axis = int(np.argmax(moved - MOTION_OVER_SCATTER * scatter))
-    if moved[axis] > MOTION_OVER_SCATTER * scatter[axis] and moved[axis] > 0.0:
-        return float(slopes[axis])
-    return None
 
 #: frames with no measurement (an autocollimator's mirror out of view) for this long between
 #: two readings are a gap: the dwell starts again after it, and — the move to the next face
