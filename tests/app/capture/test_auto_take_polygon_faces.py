@@ -59,6 +59,19 @@ def _auto(panel) -> None:
     panel.auto.setChecked(True)
 
 
+def _first_take(panel, bench, qtbot, ac, ro=None) -> None:
+    """The autocollimator connected (and the encoder's readout ``ro`` into the encoder
+    column), auto-take on, and the first face taken."""
+    panel.connect_to("autocollimator", ac.port, **FAST)
+    if ro is not None:
+        panel.connect_to("readout", ro.port, slot=1, **FAST)
+        readout = panel.links[1]
+        readout.column.setCurrentIndex(readout.column.findData("encoder_deg"))
+    qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=5000)
+    _auto(panel)
+    qtbot.waitUntil(lambda: len(_rows(bench)) == 1, timeout=5000)
+
+
 def _turn(qtbot, ac, ro, encoder_from, encoder_to, x, out_s=0.8) -> None:
     """The table turned from one face to the next: the mirror out of view for ``out_s``,
     then the autocollimator nulled at ``x`` and the encoder at ``encoder_to``."""
@@ -76,13 +89,7 @@ def test_auto_take_takes_every_face_of_a_nulled_autocollimator_with_the_encoder(
     panel = window.capture_panel
     with AutocollimatorSimulator("pty", positions=[(FACES[0][1], -3.2)], rate_hz=50.0) as ac, \
             ReadoutSimulator("pty", positions=[(FACES[0][0],)]) as ro:
-        panel.connect_to("autocollimator", ac.port, **FAST)
-        panel.connect_to("readout", ro.port, slot=1, **FAST)
-        readout = panel.links[1]
-        readout.column.setCurrentIndex(readout.column.findData("encoder_deg"))
-        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=5000)
-        _auto(panel)
-        qtbot.waitUntil(lambda: len(_rows(bench)) == 1, timeout=5000)
+        _first_take(panel, bench, qtbot, ac, ro)
         statuses: list[str] = []
         for i in range(1, len(FACES)):
             # the second turn is slow (1.5 s out of view: three times the link's silence)
@@ -160,13 +167,7 @@ def test_with_the_encoder_the_move_is_the_encoders_not_the_autocollimators(bench
     panel = window.capture_panel
     with AutocollimatorSimulator("pty", positions=[(0.10, -3.2)], rate_hz=50.0) as ac, \
             ReadoutSimulator("pty", positions=[(10.0,)]) as ro:
-        panel.connect_to("autocollimator", ac.port, **FAST)
-        panel.connect_to("readout", ro.port, slot=1, **FAST)
-        readout = panel.links[1]
-        readout.column.setCurrentIndex(readout.column.findData("encoder_deg"))
-        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=5000)
-        _auto(panel)
-        qtbot.waitUntil(lambda: len(_rows(bench)) == 1, timeout=5000)
+        _first_take(panel, bench, qtbot, ac, ro)
         ac.positions[0], ro.positions[0] = (2.10, -3.2), (10.01,)  # re-nulled, nudged
         qtbot.wait(1000)
         assert len(_rows(bench)) == 1, _rows(bench)
@@ -259,14 +260,7 @@ def test_the_next_set_starting_at_the_closure_face_is_read_there_without_a_move(
             (1, 10.0, 0.20), (1, 10.0, 0.15), (4, 280.0, 0.35)]
     with AutocollimatorSimulator("pty", positions=[(0.10, -3.2)], rate_hz=50.0) as ac, \
             ReadoutSimulator("pty", positions=[(10.0,)]) as ro:
-        panel.connect_to("autocollimator", ac.port, **FAST)
-        if with_encoder:
-            panel.connect_to("readout", ro.port, slot=1, **FAST)
-            readout = panel.links[1]
-            readout.column.setCurrentIndex(readout.column.findData("encoder_deg"))
-        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=5000)
-        _auto(panel)
-        qtbot.waitUntil(lambda: len(_rows(bench)) == 1, timeout=5000)
+        _first_take(panel, bench, qtbot, ac, ro if with_encoder else None)
         for i in range(1, len(plan)):
             if plan[i][1] != plan[i - 1][1]:  # the table turns: the mirror out of view
                 _turn(qtbot, ac, ro, plan[i - 1][1], plan[i][1], plan[i][2])
