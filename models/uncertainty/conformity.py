@@ -74,6 +74,7 @@ __all__ = [
     "compared_with_limit",
     "REFERENCE_POINT_TEXT",
     "decide_conformity",
+    "verdict_sentences",
     "expanded_text",
     "gum_rounded",
     "half_range_monte_carlo",
@@ -847,6 +848,36 @@ _SENTENCE = {
                                    "the stated coverage probability."),
     "fail": QT_TR_NOOP("The item does not conform to the specification ±{t} (fail)."),
 }
+#: a rule's own sentences where the general ones above would not be true beside the
+#: probability printed after them (assessment 76 L4: a guarded binary "fail" said "The item
+#: does not conform" beside an 84.75 % probability that it conforms). Simple acceptance
+#: (ILAC-G8 4.2.1) accepts or rejects on the result alone, with up to 50 % probability of a
+#: wrong decision either way; the binary rule with a guard band (4.2.2) rejects within the
+#: guard band too, where conformity is only not proven. Each says where the result lies
+#: and what the rule does with it, nothing the probability beside it contradicts; the
+#: guarded rule's pass and fail lie beyond the guard band on their side, so conformity
+#: and non-conformity are proven at the stated coverage probability, as the general
+#: sentences say.
+_RULE_SENTENCE = {
+    "simple": {
+        "pass": QT_TR_NOOP("Accepted under simple acceptance (no guard band): the result lies "
+                           "within ±{t} (pass)."),
+        "fail": QT_TR_NOOP("Not accepted under simple acceptance (no guard band): the result "
+                           "lies beyond ±{t} (fail)."),
+    },
+    "guarded_binary": {
+        "fail": QT_TR_NOOP("Not accepted (fail): the result lies beyond the acceptance limit, "
+                           "T less the guard band, in the rejection zone of the binary rule, "
+                           "which includes the guard band; conformity to the specification "
+                           "±{t} is not proven at the stated coverage probability."),
+    },
+}
+
+
+def verdict_sentences(rule: str) -> dict[str, str]:
+    """Each verdict's sentence (a template of ``{t}``, the tolerance as stated) under the
+    decision ``rule``: the rule's own where it has one (:data:`_RULE_SENTENCE`)."""
+    return {**_SENTENCE, **_RULE_SENTENCE.get(rule, {})}
 
 
 def _too_uncertain(u: PrintedFigure, t: float, q: str) -> str:
@@ -978,7 +1009,7 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
         # (assessment 76 L5)
         rule_text = separated([rule_text, message(RULE_AGREEMENT[bool(rule_agreed)])], "; ")
     sentence = {v: message(template, t=tolerance_figure(tolerance or 0.0, q))
-                for v, template in _SENTENCE.items()}
+                for v, template in verdict_sentences(rule).items()}
     if quantity not in DECISION_QUANTITIES:
         raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
     common = {"rule_key": rule, "probability": budget.probability, "unit": budget.unit.key,
