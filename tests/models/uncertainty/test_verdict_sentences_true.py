@@ -114,3 +114,26 @@ def test_every_point_under_the_binary_rule_rejects_without_saying_non_conformity
     which, figure = _risk(c.statement)
     assert which == "rejection" and 50.0 < figure < 80.0
     assert "does not conform" not in c.statement and "Not accepted (fail)" in c.statement
+
+
+@pytest.mark.parametrize("rule", ["simple", "guarded_binary"])
+def test_a_fail_its_interval_proves_says_the_item_does_not_conform_under_any_rule(rule):
+    """A result whose whole interval lies beyond T (1.6″ ± 0.5″ against 1.0″; the sample
+    axis' target 60° ↓ at 10.3″ ± 1.5″ against ±5″) does not conform at the stated coverage
+    probability whatever the rule: said so, not merely "not accepted"; and a pass within
+    T − U₊ under simple acceptance conforms."""
+    c = _half_range(1.6, 0.5, 0.5, 1.0, rule)
+    assert c.verdict == "fail"
+    which, figure = _risk(c.statement)
+    assert which == "rejection" and figure <= 100 * (1 - P) / 2
+    assert "The item does not conform to the specification ±1\" (fail)." in c.statement
+    assert "Not accepted" not in c.statement
+    c = _half_range(0.3, 0.5, 0.5, 1.0, rule)
+    assert c.verdict == "pass" and "The item conforms to the specification ±1\" (pass)." in (
+        c.statement)
+    e = np.array([0.1, -0.2, 10.3, 0.3])
+    budget = UncertaintyBudget((BudgetComponent("noise", "B", "normal", 0.75, 1.0, 1.0,
+                                                math.inf),), e.size, P)
+    c = decide_conformity(e, budget, 5.0, rule, "points")
+    assert c.verdict == "fail" and "The item does not conform to the specification ±5\" (fail)." \
+        in c.statement, c.statement
