@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import functools
 import re
+import string
 from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
@@ -148,7 +149,43 @@ def rendered(text: str, translate: Callable[[str], str]) -> str:
     figures = {key: rendered(value, translate) if isinstance(value, str) else value
                for key, value in text.figures.items()}
     words = translate(template)
-    return words.format(**figures) if figures else words
+    return _filled(words, figures) if figures else words
+
+
+#: a character of Chinese text: an ideograph, or CJK or full-width punctuation ("。", "（")
+_CJK = re.compile(r"[\u3000-\u303f\u3400-\u4dbf\u4e00-\u9fff\uff00-\uffef]")
+
+
+def _filled(words: str, figures: dict[str, Any]) -> str:
+    """``words.format(**figures)``, but with no space between two runs of Chinese where a
+    space of the template meets a figure: a translation spaces a Chinese word from a figure
+    that may be in Latin ("起决定作用的点为 {point}": "为 θ = −5°"), which between Chinese runs
+    is a stray ("为 目标位置 90°", assessment 76 L3). Only a space between the template's own
+    Chinese and a figure that begins (ends) in Chinese goes; a space between two figures,
+    the figures and the template's other spaces stay as they are, and an English text is
+    never changed (its template has no Chinese)."""
+    if " " not in words or not _CJK.search(words):
+        return words.format(**figures)
+    pieces: list[tuple[str, bool]] = []  # (text, whether it is a figure)
+    formatter = string.Formatter()
+    for literal, field, spec, conversion in formatter.parse(words):
+        if literal:
+            pieces.append((literal, False))
+        if field is not None:
+            value = formatter.convert_field(formatter.get_field(field, (), figures)[0],
+                                            conversion)
+            pieces.append((formatter.format_field(value, spec or ""), True))
+    for i, (text, figure) in enumerate(pieces):
+        if figure or " " not in (text[:1], text[-1:]):
+            continue
+        before = pieces[i - 1] if i else ("", False)
+        after = pieces[i + 1] if i + 1 < len(pieces) else ("", False)
+        if text[:1] == " " and before[1] and _CJK.match(before[0][-1:]) and _CJK.match(text[1:2]):
+            text = text[1:]
+        if text[-1:] == " " and after[1] and _CJK.match(after[0][:1]) and _CJK.match(text[-2:-1]):
+            text = text[:-1]
+        pieces[i] = (text, figure)
+    return "".join(text for text, _ in pieces)
 
 
 _UNIT_TAIL = re.compile(r"^(.*?)(\s*\((?:\"|″|µrad|mdeg|arcsec|deg|°|V|mV|nm|µm|mm|%|°C|V, log10|"

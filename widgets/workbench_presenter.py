@@ -221,18 +221,25 @@ def conformity_text(conformity: Any) -> str:
     shown = printed_decided_figures(conformity, "", conformity.unit)
     if shown is not None:
         written = unit(conformity.unit).written()
-        text += " " + tr("Decided value {value}, interval [{low}, {high}]{unit}.").format(
+        text = _then(text, tr("Decided value {value}, interval [{low}, {high}]{unit}.").format(
             value=f"{shown['value']}{written}", low=shown["low"], high=shown["high"],
-            unit=written)
+            unit=written))
     elif np.isfinite(value) and np.isfinite(upper) and np.isfinite(lower):
         low, high = value - lower, value + upper
         d = interval_decimals(low, high)
         written = unit(conformity.unit).written()
-        text += " " + tr("Decided value {value}, interval [{low}, {high}]{unit}.").format(
+        text = _then(text, tr("Decided value {value}, interval [{low}, {high}]{unit}.").format(
             value=f"{fixed_places(value, d)}{written}", low=fixed_places(low, d),
             high=fixed_places(high, d),
-            unit=written)
+            unit=written))
     return text
+
+
+def _then(first: str, second: str) -> str:
+    """Two sentences one after the other as the window's language joins them (the models'
+    join, models.messages.JOINS: in Chinese no space after "。"; a plain " " left
+    "符合性：合格（…）。 判定值 …", cert77)."""
+    return tr("{first} {second}").format(first=first, second=second)
 
 
 def conformity_statement(conformity: Any) -> str:

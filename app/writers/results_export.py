@@ -45,6 +45,7 @@ from models.quantity import UNITS
 from models.register.wording import revision_words
 from models.uncertainty.conformity import RISK_BOUND_NOTE
 from models.uncertainty.printed_figure import PrintedFigure, printed
+from models.uncertainty.probability_text import percent_text
 from models.uncertainty.rounding import written_places
 
 if TYPE_CHECKING:
@@ -315,6 +316,16 @@ def _revision(issued: CertificateRecord) -> Message:
     return revision
 
 
+def percent_cell(probability: float) -> float:
+    """A coverage probability (0…1) as the sheet gives it, in percent: the number the
+    certificate prints (:func:`models.uncertainty.probability_text.percent_text`: 95.45, 92.5),
+    not the computed one's every digit (0.8.25: 95.44997361036415 beside the PDF's
+    "95.45 %"); not a number: as it is."""
+    if probability is None or not math.isfinite(probability):
+        return probability
+    return float(percent_text(probability))
+
+
 def probability_cell(probability: float, bound: str = "") -> float | str | None:
     """A probability of conformity or of a wrong decision as the sheet gives it, in percent,
     by the certificate's rule (assessment 70 L1: "100" and "0" beside the PDF's "< 0.01 %"):
@@ -394,7 +405,7 @@ def _metadata_rows(document: CertificateDocument,
         ("No U stated because", document.uncertainty_withheld),
         ("Coverage factor k there",
          math.nan if document.uncertainty_withheld else document.budget.coverage_factor),
-        ("Coverage probability (%)", 100.0 * document.budget.probability),
+        ("Coverage probability (%)", percent_cell(document.budget.probability)),
         (f"Tolerance ± ({q})", document.tolerance),
         ("Decided quantity", document.conformity.quantity),
         (f"Decided value ({q})", decided.get("value", document.conformity.value)),
@@ -408,7 +419,7 @@ def _metadata_rows(document: CertificateDocument,
          decided.get("low", document.conformity.interval_low)),
         (f"Decided value: interval high ({q})",
          decided.get("high", document.conformity.interval_high)),
-        ("Decided value: coverage probability (%)", 100.0 * document.conformity.probability),
+        ("Decided value: coverage probability (%)", percent_cell(document.conformity.probability)),
         # only with a statement of conformity, as the JSON (null) and the PDF: where none is
         # made (the error not traceable, U incomplete, U ≥ T) a probability would rest on
         # that U (audit 69 finding 3: "100" beside "not assessed")

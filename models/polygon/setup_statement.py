@@ -4,7 +4,7 @@ builder so that a plain analysis does not load it."""
 
 from __future__ import annotations
 
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, message, separated
 from models.polygon.model import PolygonResult
 
 __all__ = ["setup_statement"]
@@ -38,4 +38,6 @@ def setup_statement(result: PolygonResult) -> str:
         "the horizontal reading: on a levelled bench "
         "it moves by less than the roll bound times Δy; if it moves more, measure that ratio "
         "(the roll) and enter it."))
-    return joined((frame, " ", roll, " ", tell))
+    # sentence after sentence through the join a translation punctuates (Chinese: none after
+    # "。"; a plain " " left "。 " between its sentences, cert77)
+    return separated((frame, roll, tell), " ")

@@ -74,6 +74,7 @@ __all__ = [
     "compared_with_limit",
     "REFERENCE_POINT_TEXT",
     "decide_conformity",
+    "verdict_sentences",
     "expanded_text",
     "gum_rounded",
     "half_range_monte_carlo",
@@ -847,6 +848,53 @@ _SENTENCE = {
                                    "the stated coverage probability."),
     "fail": QT_TR_NOOP("The item does not conform to the specification ±{t} (fail)."),
 }
+#: a rule's own sentences where the general ones above would not be true beside the
+#: probability printed after them (assessment 76 L4: a guarded binary "fail" said "The item
+#: does not conform" beside an 84.75 % probability that it conforms). Simple acceptance
+#: (ILAC-G8 4.2.1) accepts or rejects on the result alone, with up to 50 % probability of a
+#: wrong decision either way; the binary rule with a guard band (4.2.2) rejects within the
+#: guard band too, where conformity is only not proven. Each says where the result lies
+#: and what the rule does with it, nothing the probability beside it contradicts. They are
+#: said of a result within the guard band only: a pass or fail beyond it, the guarded
+#: rule's, is proven at the stated coverage probability under any rule and said as the
+#: general sentences say it (:func:`_sentence_key`).
+_RULE_SENTENCE = {
+    "simple": {
+        "pass": QT_TR_NOOP("Accepted under simple acceptance (no guard band): the result lies "
+                           "within ±{t} (pass)."),
+        "fail": QT_TR_NOOP("Not accepted under simple acceptance (no guard band): the result "
+                           "lies beyond ±{t} (fail)."),
+    },
+    "guarded_binary": {
+        "fail": QT_TR_NOOP("Not accepted (fail): the result lies beyond the acceptance limit, "
+                           "T less the guard band, in the rejection zone of the binary rule, "
+                           "which includes the guard band; conformity to the specification "
+                           "±{t} is not proven at the stated coverage probability."),
+    },
+}
+
+
+def verdict_sentences(rule: str) -> dict[str, str]:
+    """Each verdict's sentence (a template of ``{t}``, the tolerance as stated) under the
+    decision ``rule``: the rule's own where it has one (:data:`_RULE_SENTENCE`), and under
+    the key ``proven`` + verdict the general one, for a pass or fail its interval proves
+    (:func:`_sentence_key`)."""
+    return {**_SENTENCE, **_RULE_SENTENCE.get(rule, {}),
+            **{_PROVEN + v: _SENTENCE[v] for v in ("pass", "fail")}}
+
+
+_PROVEN = "proven "
+
+
+def _sentence_key(verdict: str, guarded: str) -> str:
+    """The sentence of ``verdict`` (:func:`verdict_sentences`), where the guarded rule's
+    verdict on the same printed figures is ``guarded``: a pass (fail) whose interval lies
+    wholly within (beyond) T is proven at the stated coverage probability under any rule,
+    so said as the guarded rule says it ("The item conforms", "does not conform"); only a
+    result within the guard band, which simple acceptance and the binary rule still accept
+    or reject, takes the rule's own sentence (a guarded binary fail at 10.3″ ± 1.5″ against
+    ±5″ does not conform; at 0.95″ +0.50″ against 1.2″ it is not accepted)."""
+    return _PROVEN + verdict if verdict in ("pass", "fail") and verdict == guarded else verdict
 
 
 def _too_uncertain(u: PrintedFigure, t: float, q: str) -> str:
@@ -978,7 +1026,7 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
         # (assessment 76 L5)
         rule_text = separated([rule_text, message(RULE_AGREEMENT[bool(rule_agreed)])], "; ")
     sentence = {v: message(template, t=tolerance_figure(tolerance or 0.0, q))
-                for v, template in _SENTENCE.items()}
+                for v, template in verdict_sentences(rule).items()}
     if quantity not in DECISION_QUANTITIES:
         raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
     common = {"rule_key": rule, "probability": budget.probability, "unit": budget.unit.key,
@@ -1044,6 +1092,10 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
     x, w = abs(float(e[worst])), float(u[worst])
     d = pairs[worst][2]
     verdict = verdicts[worst]
+    # the guarded rule's verdict on the deciding point: whether its pass or fail is proven
+    xp, wp, dp = pairs[worst]
+    guarded = (printed_verdict(xp, wp, wp, t, "guarded", dp, compared=compared[worst])
+               if math.isfinite(wp) and wp > 0 else _verdict(xp, t, wp, "guarded"))
     point = (point_names[worst] if point_names is not None else
              message(QT_TR_NOOP("point {n}"), n=worst + 1))
     quantity_text = message(DECISION_QUANTITIES["points"])
@@ -1086,8 +1138,8 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
                               "the deciding point is {point}: |e| = {e}, U = {u}. "
                               "{sentence}"),
                    what=what, t=tolerance_figure(t, q), point=point, **figures,
-                   sentence=_with_compared(sentence[verdict], compared[worst], rule,
-                                           verdict))
+                   sentence=_with_compared(sentence[_sentence_key(verdict, guarded)],
+                                           compared[worst], rule, verdict))
     band = figures["u"] if rule != "simple" and w > 0 else None
     zones = message(QT_TR_NOOP("per point, with w = U of that point: {zones}"),
                     zones=_zones(t, band, band, rule, d, q))
@@ -1149,6 +1201,9 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     compared = compared_with_limit(x, shown["value"].shown, places, t, budget.unit.key)
     verdict = printed_verdict(shown["value"].shown, shown["lower"].shown, shown["upper"].shown,
                               t, rule, places, low=shown["low"].shown, compared=compared)
+    # the guarded rule's verdict on the same figures: whether a pass or fail is proven
+    guarded = printed_verdict(shown["value"].shown, shown["lower"].shown, shown["upper"].shown,
+                              t, "guarded", places, low=shown["low"].shown, compared=compared)
     interval = separated([asymmetric_figures(shown), held_at_zero_note(
         x, lower, d, q, float(budget.floor), bool(raised and raised[0]))], "; ")
     conforming = probability_conforming(x, lower, upper, t, mc.probability)
@@ -1181,7 +1236,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     low, high = shown["low"], shown["high"]
     figures = dict(what=what, value=shown["value"], low=low, high=high, u=interval,
                    p=percent_text(mc.probability),
-                   sentence=_with_compared(sentence[verdict], compared, rule, verdict))
+                   sentence=_with_compared(sentence[_sentence_key(verdict, guarded)],
+                                           compared, rule, verdict))
     # the noise's median excess as the printed figures give it, so that "value, the measured
     # m less e" adds up as printed (0.45″ = 0.49″ − 0.04″, not "less 0.05″": the
     # excess 0.0460″ of 0.4918″ − 0.4457″); none, as measured (positioning's E/2)

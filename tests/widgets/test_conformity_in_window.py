@@ -75,3 +75,22 @@ def test_the_window_prints_the_decided_interval_as_the_certificate_in_nm(tmp_pat
         "770 nm … 1230 nm" in str(cell) for row in document.statistics.rows for cell in row)
     assert conformity_text(document.conformity).endswith(
         "Decided value 1000 nm, interval [770, 1230] nm.")
+
+
+def test_the_windows_verdict_line_joins_its_chinese_sentences_without_a_space(tmp_path, qapp):
+    """In Chinese the verdict and the decided value are two sentences joined as the
+    language joins them: "…（…）。判定值 …", not "。 判定值" (cert77); in English with a
+    space, as before."""
+    from widgets.i18n import install_language
+    from widgets.workbench_presenter import conformity_text
+
+    _, document = nm_axis(tmp_path)
+    english = conformity_text(document.conformity)
+    assert ". Decided value 1000 nm, interval [770, 1230] nm." in english, english
+    install_language("zh_CN")
+    try:
+        chinese = str(conformity_text(document.conformity))
+    finally:
+        install_language("en")
+    assert chinese.startswith("符合性：") and "。判定值 1000 nm" in chinese, chinese
+    assert "。 " not in chinese, chinese

@@ -5,8 +5,9 @@ watermark."""
 from __future__ import annotations
 
 from app.writers.certificate_pdf.fonts import _needs_fallback
+from app.writers.certificate_pdf.page import INK
 from app.writers.certificate_pdf.report_pdf import ReportPdf
-from app.writers.certificate_pdf.wording import _say
+from app.writers.certificate_pdf.wording import _in_both, _say
 from models.certificate.document import CertificateDocument
 from models.messages import QT_TR_NOOP, message
 from models.software import software_identity
@@ -37,6 +38,16 @@ class _CertificatePdf(ReportPdf):
             language=meta.language)
         self.say = say  # and names its item in its own terms (被检测对象, not 被校对象)
         self.document = document
+
+    def paragraph_in_both(self, text, size: float = 9, color=INK) -> None:
+        """``text`` as a paragraph: on a bilingual certificate in Chinese and then in English
+        (:func:`~app.writers.certificate_pdf.wording._in_both`: from the one message, so with
+        the same figures; once where it has no Chinese), else once in the certificate's
+        language."""
+        for i, said in enumerate(_in_both(self.document, text)):
+            if i:
+                self.ln(1)
+            self.paragraph(said, size, color)
 
     def header(self) -> None:
         super().header()

@@ -13,18 +13,20 @@ from models.software import software_identity
 
 def draw_method(pdf: _CertificatePdf, document: CertificateDocument) -> None:
     pdf.heading(label(document, "Method"))
-    pdf.paragraph(document.method)
+    # the method and what validates it in Chinese, then in English on a bilingual certificate
+    # (assessment 76 L1: English only); the published reference as written
+    pdf.paragraph_in_both(_translatable(document.method))
     if document.method_reference:
         pdf.paragraph(message(QT_TR_NOOP("Reference: {reference}."),
                               reference=document.method_reference), 8, GREY)
     if document.standard:
-        pdf.paragraph(message(QT_TR_NOOP(
+        pdf.paragraph_in_both(message(QT_TR_NOOP(
             "The evaluation follows {standard}, implemented in AngleBench {version}; its "
             "verification is the validation report of that version (anglebench validate): "
             "simulations with known truth and hand-computed examples, each with its result."),
             standard=document.standard, version=software_identity().printed), 8, GREY)
     else:
-        pdf.paragraph(message(QT_TR_NOOP(
+        pdf.paragraph_in_both(message(QT_TR_NOOP(
             "This is a non-standard method, published in the reference above and implemented "
             "in AngleBench {version}. Its validation record (ISO/IEC 17025 7.2.2) is the "
             "validation report of that version (anglebench validate): the reference figures of "

@@ -19,10 +19,7 @@ def draw_conformity(pdf: _CertificatePdf, document: CertificateDocument) -> None
     the zones in Chinese, then in English."""
     pdf.heading(label(document, "Statement of conformity"))
     conformity = document.conformity
-    for i, said in enumerate(_in_both(document, conformity.statement)):
-        if i:
-            pdf.ln(1)
-        pdf.paragraph(said)
+    pdf.paragraph_in_both(conformity.statement)
     details = []
     if conformity.quantity:
         details.append(message(QT_TR_NOOP("Decided quantity: {quantity}."),

@@ -16,7 +16,8 @@ from models.uncertainty.printed_figure import printed
 def draw_traceability(pdf: _CertificatePdf, document: CertificateDocument) -> None:
     pdf.heading(label(document, "Reference standards and traceability"))
     pdf.data_table(_standards_table(document), (50, 26, 34, 42, 22), ("LEFT",) * 5)
-    pdf.paragraph(_traceability(document), 8.5)
+    # in Chinese, then in English on a bilingual certificate (assessment 76 L1: English only)
+    pdf.paragraph_in_both(_traceability(document), 8.5)
 
 
 def _standards_table(document: CertificateDocument) -> Table:

@@ -13,11 +13,13 @@ from models.uncertainty.printed_figure import printed
 
 def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> None:
     pdf.heading(label(document, "Measurement uncertainty"))
+    # U, k, p and the GUM in Chinese, then in English on a bilingual certificate (assessment
+    # 76 L1: English only; CNAS assessors read the k and p statement in Chinese)
     big_u = document.expanded_uncertainty
     budget_ = document.budget
     if document.uncertainty_withheld:
         evaluated = budget_.max_expanded
-        pdf.paragraph(message(QT_TR_NOOP(
+        pdf.paragraph_in_both(message(QT_TR_NOOP(
             "No expanded uncertainty is stated for the results: {reason}. The budget below "
             "holds only the inputs that could be evaluated; they alone give {u} at most (k = "
             "{k}, {p} %), a lower bound of U, not U."),
@@ -25,7 +27,7 @@ def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> Non
             u=printed(evaluated, document.unit, rounding="up"),
             p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
     else:
-        pdf.paragraph(message(QT_TR_NOOP(
+        pdf.paragraph_in_both(message(QT_TR_NOOP(
             "The expanded uncertainty of the error is U = {u} (the largest over the points; each "
             "point's U is in the results table). At each point it is the combined standard "
             "uncertainty multiplied by the coverage factor k of Student's t for that point's "
@@ -34,7 +36,7 @@ def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> Non
             "(JCGM 100:2008)."), u=printed(big_u, document.unit, rounding="up"),
             p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
         if budget_.points and bool(budget_.below_floor.any()):
-            pdf.paragraph(message(QT_TR_NOOP(
+            pdf.paragraph_in_both(message(QT_TR_NOOP(
                 "Where that product is below the laboratory's CMC, U = {cmc}, the U stated is "
                 "the CMC (ILAC-P14 5.4), with the same k; the budget's last line gives it."),
                 cmc=f"{budget_.floor:g}{document.unit}"))
@@ -47,4 +49,4 @@ def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> Non
     for note in notes:
         pdf.paragraph(note, 7.5, GREY)
     if document.not_in_u_statement:  # what U lacks, with the budget (GUM 7.2.7)
-        pdf.paragraph(document.not_in_u_statement, 8.5)
+        pdf.paragraph_in_both(document.not_in_u_statement, 8.5)

@@ -161,7 +161,8 @@ def _in_both(document: CertificateDocument, text) -> list[str]:
     a lab's own words); else once, in the certificate's language (the page translates a
     Chinese one). For the texts a bilingual certificate gives in both languages: the
     statement of conformity with its rule, decided quantity and zones, the statements and
-    the remarks (not the tables, whose headers are already in both)."""
+    the remarks, the traceability statement, the method and the uncertainty's statement of
+    U, k and p (not the tables, whose headers are already in both)."""
     if document.metadata.language != "zh+en" or not text:
         return [text]
     chinese, english = _say("zh", document.is_test_report)(text), str(text)

@@ -95,3 +95,37 @@ def test_a_chinese_statement_of_conformity_has_no_ascii_separator_between_chines
     figures = re.compile(r"\d+\.\d+\"")
     assert figures.findall(section) == figures.findall(
         _section(english, "Statementofconformity", "Statements"))
+
+
+def test_traceability_method_and_uncertainty_in_chinese_then_english(theodolite):
+    """The traceability statement, the method (and what validates it) and the measurement
+    uncertainty's paragraph (U, k, p, the GUM) of a bilingual certificate in Chinese, then
+    in English, from the one message with the same figures (assessment 76 L1: English only,
+    where CNAS assessors read them in Chinese); the Chinese the catalogue's, as on a Chinese
+    certificate."""
+    from app.writers.certificate_pdf.traceability import _traceability
+
+    printed = _printed(theodolite, "zh+en")
+    chinese_only = _printed(theodolite, "zh")
+    traced = _traceability(theodolite)
+    sections = (
+        ("计量标准及计量溯源性Referencestandardsandtraceability", "校准方法Method", [traced]),
+        ("校准方法Method", "符号约定Signconvention", [theodolite.method]),
+        ("测量不确定度Measurementuncertainty", "输入量Input", []),
+    )
+    for start, end, texts in sections:
+        section = _section(printed, start, end)
+        for text in texts:
+            chinese, english = _flat(in_language(text, ZH)), _flat(text)
+            assert chinese != english and chinese in section and english in section, text
+            assert section.index(chinese) < section.index(english)
+            assert chinese in chinese_only  # the Chinese certificate's own words
+    uncertainty = _section(printed, "测量不确定度Measurementuncertainty", "输入量Input")
+    english = re.search(r"TheexpandeduncertaintyoftheerrorisU=([\d.]+)\".*?k=([\d.]+)\..*?"
+                        r"GUM\(JCGM100:2008\)\.", uncertainty)
+    assert english, uncertainty
+    chinese = uncertainty[:english.start()]
+    assert "包含因子" in chinese and "包含概率" in chinese and "95.45%" in chinese, chinese
+    # the same U and k in both
+    assert f"U={english[1]}\"" in chinese and f"k={english[2]}" in chinese, chinese
+    assert "按GUM（JCGM100:2008）评定" in chinese

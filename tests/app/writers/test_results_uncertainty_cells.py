@@ -73,3 +73,22 @@ def test_the_certificate_sheet_read_in_urad_rounds_there_as_the_certificate_does
         "Decided value: interval high (µrad)")}
     assert list(figures.values()) == [(7.2, "0.0"), (4.6, "0.0"), (4.6, "0.0"), (2.5, "0.0"),
                                       (0, "0.0"), (7.1, "0.0")]
+
+
+@pytest.mark.parametrize("key", ["theodolite", "positioning"])
+def test_the_certificate_sheet_gives_the_coverage_probability_the_certificate_prints(key):
+    """The *Certificate* sheet's coverage probabilities are the figures the certificate
+    prints ("95.45 %"), not the computed probability's every digit (0.8.25: 95.44997361036415
+    twice on the sheet of the certificate it records, cert77)."""
+    from models.uncertainty.probability_text import percent_text
+
+    kind, result = _analysed(key)
+    doc = kind.certificate_document(result, META)
+    book = load_workbook(io.BytesIO(results_xlsx_bytes(doc)))
+    sheet = book["Report" if doc.is_test_report else "Certificate"]  # (positioning's sample)
+    certificate = {r[0]: r[1] for r in sheet.iter_rows(values_only=True)}
+    assert doc.budget.probability != 0.9545  # the computed one, 2Φ(2) − 1
+    assert certificate["Coverage probability (%)"] == 95.45
+    assert certificate["Decided value: coverage probability (%)"] == float(
+        percent_text(doc.conformity.probability))
+    assert len(repr(certificate["Decided value: coverage probability (%)"])) <= 5  # 95.45, 92.5

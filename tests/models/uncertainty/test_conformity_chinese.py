@@ -81,3 +81,37 @@ def test_the_reasons_for_no_statement_are_listed_in_chinese_punctuation():
     assert not ASCII_BESIDE_CHINESE.search(in_language(c.statement, ZH))
     assert c.reason == ("corrected error; U is incomplete: inputs not stated, so not in U: "
                         "Item resolution, Reading error (pointing)")
+
+
+def test_no_space_between_chinese_runs_where_a_point_is_named():
+    """The deciding point named in Chinese follows the Chinese words without a space
+    (assessment 76 L3: "起决定作用的点为 目标位置 90°"); a point named in Latin letters
+    (the theodolite's θ) keeps the space that sets it off, and the English is as it was."""
+    e = np.array([0.5, -1.0, 2.6, 0.2])
+    budget = _budget(0.25, e.size)
+    names = [message("target {target} ({arrow})", target=f"{t}°", arrow="↑")
+             for t in (0, 30, 60, 90)]
+    c = decide_conformity(e, budget, 3.0, "guarded", "points", point_names=names)
+    assert "the deciding point is target 60° (↑): |e|" in c.statement
+    statement = in_language(c.statement, ZH)
+    assert "起决定作用的点为目标位置 60°（↑）：" in statement, statement
+    assert not re.search(r"[\u4e00-\u9fff] [\u4e00-\u9fff]", statement), statement
+    theta = ["θ = 0.0000°", "θ = 30.0000°", "θ = 60.0000°", "θ = 90.0000°"]
+    c = decide_conformity(e, budget, 3.0, "guarded", "points", point_names=theta)
+    assert "起决定作用的点为 θ = 60.0000°：" in in_language(c.statement, ZH)
+    # U ≥ T at a point: "(at {point})", in Chinese "（在 {point}）"
+    c = decide_conformity(e, _budget(2.0, e.size), 3.0, "guarded", "points", point_names=names)
+    assert c.verdict == "not assessed" and "(at target" in c.statement
+    assert "（在目标位置 " in in_language(c.statement, ZH), in_language(c.statement, ZH)
+
+
+def test_a_template_space_goes_only_between_its_chinese_and_a_chinese_figure():
+    from models.messages import rendered
+
+    words = {"为 {x}。": "为 {x}。", "{a} {b}": "{a} {b}", "第 {n} 点，{x} 的": "第 {n} 点，{x} 的"}
+    say = words.__getitem__
+    assert rendered(message("为 {x}。", x="目标"), say) == "为目标。"
+    assert rendered(message("为 {x}。", x="θ = 1°"), say) == "为 θ = 1°。"
+    assert rendered(message("{a} {b}", a="甲", b="乙"), say) == "甲 乙"  # two figures: as typed
+    assert rendered(message("第 {n} 点，{x} 的", n=3, x="边"), say) == "第 3 点，边的"
+    assert message("for {x} the", x="目标") == "for 目标 the"  # English: never touched
