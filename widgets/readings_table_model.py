@@ -21,6 +21,10 @@ from widgets.table_commands import (
 
 INVALID_BRUSH = QBrush(QColor(255, 205, 205))
 MUTED_BRUSH = QBrush(QColor(235, 240, 250))
+#: a row the analysis left out (positioning's reading of another position): a shade that
+#: stands apart from the alternate rows' and the closures' at any scale, black text on it
+#: still readable (gui77: the muted shade of a closure row was barely seen at 1280 × 720)
+LEFT_OUT_BRUSH = QBrush(QColor(196, 204, 220))
 EDITED_BRUSH = QBrush(QColor(255, 226, 160))  # a captured reading edited since
 #: a take's reading that does not match its row's point (another face, another target)
 WARNED_BRUSH = QBrush(QColor(255, 190, 120))
@@ -51,6 +55,9 @@ class ReadingsTableModel(QAbstractTableModel):
         self.sheet = sheet
         self.undo_stack = undo_stack
         self.highlight_rows: set[int] = set()  # rows drawn apart (e.g. the closure row)
+        #: rows the analysis left out (its warnings say why): shaded clearly, and said so
+        #: in their cells' tooltip
+        self.left_out_rows: set[int] = set()
         #: cells whose captured reading was edited since, with what to say of each
         #: (models/capture/edits.py): drawn apart, the text in their tooltip
         self.edited_cells: dict[tuple[int, int], str] = {}
@@ -161,6 +168,8 @@ class ReadingsTableModel(QAbstractTableModel):
                 return EDITED_BRUSH
             if self.take_warning(r, c) is not None:
                 return WARNED_BRUSH
+            if r in self.left_out_rows:
+                return LEFT_OUT_BRUSH
             if r in self.highlight_rows:
                 return MUTED_BRUSH
             return None
@@ -180,6 +189,9 @@ class ReadingsTableModel(QAbstractTableModel):
             if edited is not None and self.cleared_after_capture(r, c):
                 # a cleared reading: what was captured, and why its row is left out
                 return f"{translated(edited)}\n{why}"
+            if why is None and r in self.left_out_rows:
+                return tr("Row {row} is left out of the analysis; the warnings above the "
+                          "result say why").format(row=r + 1)
             return why
         return None
 
@@ -256,6 +268,19 @@ class ReadingsTableModel(QAbstractTableModel):
                 self.dataChanged.emit(self.index(0, 0), self.index(self.sheet.row_count - 1,
                                                                    self.sheet.column_count - 1),
                                       [Qt.ItemDataRole.BackgroundRole])
+
+    def set_left_out_rows(self, rows: set[int]) -> None:
+        """Shade the rows the analysis left out; repaints only on a change."""
+        if rows != self.left_out_rows:
+            changed = rows ^ self.left_out_rows
+            self.left_out_rows = set(rows)
+            last = self.sheet.row_count - 1
+            for r in sorted(changed):
+                if r <= last:
+                    self.dataChanged.emit(self.index(r, 0),
+                                          self.index(r, self.sheet.column_count - 1),
+                                          [Qt.ItemDataRole.BackgroundRole,
+                                           Qt.ItemDataRole.ToolTipRole])
 
     def set_edited_cells(self, cells: dict[tuple[int, int], str]) -> None:
         """Mark the cells of captured readings edited since (repaints only on a change)."""

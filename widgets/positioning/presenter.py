@@ -39,7 +39,7 @@ class PositioningPresenter(WorkbenchPresenter):
     def show_result(self, result: PositioningResult) -> None:
         # a reading left out for a deviation beyond the limit, drawn apart in the table (its
         # warning names it: day review live76 F7)
-        self.table_model.set_highlight_rows(set(result.left_out))
+        self.table_model.set_left_out_rows(set(result.left_out))
         self.view.show_figures(*self.in_unit(self._with_tolerance(plots.deviation_figure(result),
                                                                   result),
                                              plots.reversal_figure(result),
@@ -72,7 +72,7 @@ class PositioningPresenter(WorkbenchPresenter):
         return with_tolerance(figure, tolerance, curves, quantity)
 
     def clear_result(self) -> None:
-        self.table_model.set_highlight_rows(set())
+        self.table_model.set_left_out_rows(set())
         self.view.clear_result()
 
     def export_compensation_dialog(self) -> None:
