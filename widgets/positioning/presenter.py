@@ -14,7 +14,7 @@ from models.positioning.controllers.common import parse_options
 from models.positioning.model import PositioningResult
 from models.positioning.report import positioning_budget, printed_per_target
 from models.tolerance_band import with_tolerance
-from widgets.i18n import explained, tr, translated
+from widgets.i18n import Said, explained, tr, translated
 from widgets.positioning.before_after import AfterCompensation
 from widgets.positioning.view import PositioningView
 from widgets.workbench_presenter import WorkbenchPresenter
@@ -130,6 +130,11 @@ class PositioningPresenter(WorkbenchPresenter):
                            tr("{path}: {reason}. Nothing else was changed.").format(
                                path=path, reason=exc.strerror or exc))
             return ""
-        said, *notes = translated(what).split("\n")  # what was written, then what to know of it
-        self.view.show_status("; ".join([tr("{what} written").format(what=said), *notes]))
+        def status() -> Said:
+            """Composed again in the language chosen later, each time (View › Language;
+            gui77: the lines' plain join stayed in the language it was shown in)."""
+            said, *notes = translated(what).split("\n")  # what was written, then what to know
+            return Said("; ".join([tr("{what} written").format(what=said), *notes]), status)
+
+        self.view.show_status(status())
         return what
