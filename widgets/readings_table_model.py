@@ -26,6 +26,9 @@ MUTED_BRUSH = QBrush(QColor(235, 240, 250))
 #: still readable (gui77: the muted shade of a closure row was barely seen at 1280 × 720)
 LEFT_OUT_BRUSH = QBrush(QColor(196, 204, 220))
 EDITED_BRUSH = QBrush(QColor(255, 226, 160))  # a captured reading edited since
+#: the text of a figure shown in a blank cell and worked out from its row (positioning's
+#: measured − target): greyed, as no one typed it; still readable on every background
+SHOWN_FOREGROUND = QBrush(QColor(96, 96, 96))
 #: a take's reading that does not match its row's point (another face, another target)
 WARNED_BRUSH = QBrush(QColor(255, 190, 120))
 
@@ -34,7 +37,8 @@ _Index = QModelIndex | QPersistentModelIndex
 #: paint and column fit, and the others are turned away before any work (a capture's take
 #: re-measures the columns, and this is most of its cost)
 _ROLES = frozenset((Qt.ItemDataRole.DisplayRole, Qt.ItemDataRole.EditRole,
-                    Qt.ItemDataRole.BackgroundRole, Qt.ItemDataRole.ToolTipRole))
+                    Qt.ItemDataRole.BackgroundRole, Qt.ItemDataRole.ToolTipRole,
+                    Qt.ItemDataRole.ForegroundRole))
 
 
 class ReadingsTableModel(QAbstractTableModel):
@@ -95,10 +99,17 @@ class ReadingsTableModel(QAbstractTableModel):
         #: is: one in the middle whose reading was cleared waits for it too, its blank cells
         #: not red (None: a new row, or no plan)
         self.planned_row: Callable[[], int | None] = lambda: None
+        #: the figure a blank cell (row, column) shows, worked out from its row, with what
+        #: to say of it (the presenter's: Workbench.shown_in_blank), or None: shown, greyed,
+        #: never written into the sheet (the editor opens on the sheet's blank text)
+        self.shown_in_blank: Callable[[int, int], tuple[str, str] | None] = lambda r, c: None
+        #: the columns whose blank cells may show such a figure (repainted with every change)
+        self.shown_columns: tuple[int, ...] = ()
         self._waiting_from: int | None = None  # the first of them (None: none)
         self._planned: int | None = None
         self._waiting_known = False
         self.sheet_changed.connect(self.forget_waiting)
+        self.sheet_changed.connect(self.shown_changed)
         on_language_change(self, self._on_language_changed)
 
     def forget_waiting(self) -> None:
@@ -155,9 +166,21 @@ class ReadingsTableModel(QAbstractTableModel):
             return None
         r, c = index.row(), index.column()
         inside = r < self.sheet.row_count
-        if role in (Qt.ItemDataRole.DisplayRole, Qt.ItemDataRole.EditRole):
+        if role == Qt.ItemDataRole.EditRole:
             return self.sheet.text(r, c) if inside else ""
+        if role == Qt.ItemDataRole.DisplayRole:
+            text = self.sheet.text(r, c) if inside else ""
+            if inside and c in self.shown_columns and not text.strip():
+                shown = self.shown_in_blank(r, c)
+                if shown is not None:
+                    return shown[0]
+            return text
         if not inside:
+            return None
+        if role == Qt.ItemDataRole.ForegroundRole:
+            if c in self.shown_columns and not self.sheet.text(r, c).strip() \
+                    and self.shown_in_blank(r, c) is not None:
+                return SHOWN_FOREGROUND
             return None
         if role == Qt.ItemDataRole.BackgroundRole:
             if self.cleared_after_capture(r, c):
@@ -189,6 +212,10 @@ class ReadingsTableModel(QAbstractTableModel):
             if edited is not None and self.cleared_after_capture(r, c):
                 # a cleared reading: what was captured, and why its row is left out
                 return f"{translated(edited)}\n{why}"
+            if why is None and c in self.shown_columns and not self.sheet.text(r, c).strip():
+                shown = self.shown_in_blank(r, c)
+                if shown is not None:
+                    return declared(shown[1])
             if why is None and r in self.left_out_rows:
                 return tr("Row {row} is left out of the analysis; the warnings above the "
                           "result say why").format(row=r + 1)
@@ -268,6 +295,16 @@ class ReadingsTableModel(QAbstractTableModel):
                 self.dataChanged.emit(self.index(0, 0), self.index(self.sheet.row_count - 1,
                                                                    self.sheet.column_count - 1),
                                       [Qt.ItemDataRole.BackgroundRole])
+
+    def shown_changed(self) -> None:
+        """The figures shown in blank cells repainted (the cells, or the settings they are
+        worked out with, changed)."""
+        if self.shown_columns and self.sheet.row_count:
+            last = self.sheet.row_count - 1
+            self.dataChanged.emit(self.index(0, min(self.shown_columns)),
+                                  self.index(last, max(self.shown_columns)),
+                                  [Qt.ItemDataRole.DisplayRole, Qt.ItemDataRole.ForegroundRole,
+                                   Qt.ItemDataRole.ToolTipRole])
 
     def set_left_out_rows(self, rows: set[int]) -> None:
         """Shade the rows the analysis left out; repaints only on a change."""
