@@ -9,6 +9,7 @@ from PySide6.QtGui import QBrush, QColor, QUndoCommand, QUndoStack
 
 from models.capture.take_cells import waiting_row
 from models.certificate.readings_origin import SheetOrigin
+from models.project.cell_marks import mark_to_json, marks_from_json
 from models.readings.sheet import NumericRows, ReadingsSheet
 from widgets.i18n import declared, on_language_change, tr, translated
 from widgets.table_commands import (
@@ -235,6 +236,27 @@ class ReadingsTableModel(QAbstractTableModel):
         index = self.index(r, c)
         self.dataChanged.emit(index, index, [Qt.ItemDataRole.BackgroundRole,
                                              Qt.ItemDataRole.ToolTipRole])
+
+    def mark_records(self) -> list[dict]:
+        """The cells' marks that hold (a take's reading at another face or target, its
+        cell still holding that text), as a project file keeps them
+        (models/project/cell_marks.py)."""
+        keys = [c.key for c in self.sheet.columns]
+        return [mark_to_json(r, keys[c], text, note)
+                for (r, c), (text, note) in sorted(self.take_warnings.items())
+                if r < self.sheet.row_count and c < len(keys) and self.sheet.text(r, c) == text]
+
+    def set_mark_records(self, records: list[dict]) -> None:
+        """The marks a project file kept (a project opened), on the cells they name
+        (gui77: save, reopen, and the marks were gone)."""
+        keys = [c.key for c in self.sheet.columns]
+        self.take_warnings = {(r, keys.index(column)): (text, note)
+                              for r, column, text, note in marks_from_json(records)
+                              if column in keys}
+        if self.sheet.row_count:
+            self.dataChanged.emit(self.index(0, 0), self.index(self.sheet.row_count - 1,
+                                                               self.sheet.column_count - 1),
+                                  [Qt.ItemDataRole.BackgroundRole, Qt.ItemDataRole.ToolTipRole])
 
     def _move_warnings(self, at: int, count: int) -> None:
         """Rows inserted (``count`` > 0) or removed (< 0) at ``at``: the marks below move."""

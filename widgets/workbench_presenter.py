@@ -700,6 +700,7 @@ class WorkbenchPresenter(QObject):
         ReadingsSheet.snapshot)."""
         state = _sheet_state(self.sheet, self._settings, deep)
         state.origin = origin_record(*self.table_model.origin_since())
+        state.marks = self.table_model.mark_records()  # the cells' marks (gui77)
         return state
 
     def result_state(self) -> WorkbenchState:
@@ -716,6 +717,7 @@ class WorkbenchPresenter(QObject):
         self._settings = self.kind.settings_with_defaults(state.settings)
         self.view.set_settings(self._settings)
         self.table_model.apply_replace(state.rows)
+        self.table_model.set_mark_records(state.marks)  # the cells' marks it kept
         self.table_model.forget_origin()
         if state.origin is not None or state.rows:
             opened = stored_origin(state.origin, project)
