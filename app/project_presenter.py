@@ -540,7 +540,8 @@ class ProjectPresenter(QObject):
                 cells += [""] * (column + 1 - len(cells))
                 cells[column] = text
                 state.rows.edited[row] = cells
-                project.workbenches[key] = WorkbenchState(state.rows, state.settings, origin)
+                project.workbenches[key] = WorkbenchState(state.rows, state.settings, origin,
+                                                          state.marks)
                 continue
             rows = list(state.rows)
             while len(rows) <= row:
@@ -549,7 +550,7 @@ class ProjectPresenter(QObject):
             cells += [""] * (column + 1 - len(cells))
             cells[column] = text
             rows[row] = cells
-            project.workbenches[key] = WorkbenchState(rows, state.settings, origin)
+            project.workbenches[key] = WorkbenchState(rows, state.settings, origin, state.marks)
         if pending:
             project.metadata = {**project.metadata, "pending_edits": {
                 key: {"row": row + 1, "column": column + 1, "text": text,

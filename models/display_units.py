@@ -29,6 +29,7 @@ import numpy as np
 from models.messages import QT_TR_NOOP, Message, message
 from models.quantity import Quantity
 from models.uncertainty.printed_figure import PrintedFigure, PrintedRange, StatedTolerance
+from models.uncertainty.rounding import fixed_places
 
 if TYPE_CHECKING:  # a plot's module is loaded by whoever draws one
     from models.plots import PlotFigure
@@ -233,7 +234,7 @@ def _cell_in_unit(cell: Any, factor: float, unit: AngleUnit,
         return f"{value * factor:.6g}"
     sign = "+" if text.startswith("+") else ""
     places = _places(value * factor, decimals, factor, resolution_only)
-    return f"{value * factor:{sign}.{places}f}"
+    return fixed_places(value * factor, places, sign)  # a zero unsigned, as printed
 
 
 def table_in_unit(header: Sequence[str], rows: Sequence[Sequence[Any]],

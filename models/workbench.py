@@ -124,6 +124,15 @@ class Workbench(ABC, Generic[ResultT]):
         as sent, none checked against a target."""
         return {}
 
+    def shown_in_blank(self, settings: Mapping[str, Any]
+                       ) -> Mapping[str, tuple[Callable[[Callable[[str], str]], str | None], str]]:
+        """{column key: (the figure a blank cell of that column shows, worked out from its
+        row's cells — ``text(key)`` a cell's text — or None; what to say of it
+        (QT_TR_NOOP))}: positioning's deviation from the measured position, as the analysis
+        takes it. Shown in the readings table, never written into the sheet. Empty by
+        default."""
+        return {}
+
     def split_incomplete(self, parsed: ParsedReadings, settings: Mapping[str, Any]
                          ) -> tuple[ParsedReadings, IncompleteUnit | None]:
         """The readings of the complete units, and the last unit when it is in progress

@@ -18,7 +18,7 @@ from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 from models.plot_style import ROLE_STYLES
 from models.plots import PlotFigure, PlotSeries
 from models.tolerance_band import TOLERANCE_ROLE, UNCERTAINTY_ROLE
-from models.uncertainty.rounding import significant_decimals
+from models.uncertainty.rounding import fixed_places, significant_decimals
 from widgets.figure_plot import FigureRenderer
 from widgets.i18n import declared, on_language_change
 from widgets.lazy_menu_view_box import LazyMenuViewBox
@@ -284,5 +284,6 @@ class ErrorPlot(QWidget):
                 continue
             i = int(np.argmin(np.abs(xs - point.x())))
             gap = "" if self.unit == "\"" else " "
-            parts.append(f"{curve.opts['name']} {ys[i]:+.{decimals}f}{gap}{self.unit} @ {xs[i]:.4g}")
+            value = fixed_places(float(ys[i]), decimals, "+")  # a zero unsigned, as printed
+            parts.append(f"{curve.opts['name']} {value}{gap}{self.unit} @ {xs[i]:.4g}")
         self.readout.setText("   ".join(parts))

@@ -74,10 +74,16 @@ class Tr(_SaidAgain):
         # an exception is kept as its text (its traceback would hold its frames alive)
         args = tuple(str(a) if isinstance(a, BaseException) else a for a in args)
         kwargs = {k: str(v) if isinstance(v, BaseException) else v for k, v in kwargs.items()}
-        return Said(str.format(self, *args, **kwargs),
+        said = Said(str.format(self, *args, **kwargs),
                     lambda: said_again(self).format(*(said_again(a) for a in args),
                                                     **{k: said_again(v) for k, v in
                                                        kwargs.items()}))
+        if not args:  # its English source and figures, as a project file keeps a cell's
+            # mark (models/project/cell_marks.py): a figure that is a text of the window
+            # or the models by its source
+            said.spelt = (self.source, {k: v.source if isinstance(v, Tr) else str(v)
+                                        for k, v in kwargs.items()})
+        return said
 
 
 class Said(_SaidAgain):
@@ -86,10 +92,13 @@ class Said(_SaidAgain):
     installed (:func:`said_again`)."""
 
     again: Callable[[], str]
+    #: (English source, figures) of a ``tr(…).format(…)``; None otherwise
+    spelt: tuple[str, dict[str, str]] | None
 
     def __new__(cls, text: str, again: Callable[[], str]) -> Said:
         obj = super().__new__(cls, text)
         obj.again = again
+        obj.spelt = None
         return obj
 
     def __reduce__(self):  # a copy (a pickle) is the text alone, said again no more

@@ -9,6 +9,7 @@ from PySide6.QtGui import QBrush, QColor, QUndoCommand, QUndoStack
 
 from models.capture.take_cells import waiting_row
 from models.certificate.readings_origin import SheetOrigin
+from models.project.cell_marks import mark_to_json, marks_from_json
 from models.readings.sheet import NumericRows, ReadingsSheet
 from widgets.i18n import declared, on_language_change, tr, translated
 from widgets.table_commands import (
@@ -21,7 +22,14 @@ from widgets.table_commands import (
 
 INVALID_BRUSH = QBrush(QColor(255, 205, 205))
 MUTED_BRUSH = QBrush(QColor(235, 240, 250))
+#: a row the analysis left out (positioning's reading of another position): a shade that
+#: stands apart from the alternate rows' and the closures' at any scale, black text on it
+#: still readable (gui77: the muted shade of a closure row was barely seen at 1280 × 720)
+LEFT_OUT_BRUSH = QBrush(QColor(196, 204, 220))
 EDITED_BRUSH = QBrush(QColor(255, 226, 160))  # a captured reading edited since
+#: the text of a figure shown in a blank cell and worked out from its row (positioning's
+#: measured − target): greyed, as no one typed it; still readable on every background
+SHOWN_FOREGROUND = QBrush(QColor(96, 96, 96))
 #: a take's reading that does not match its row's point (another face, another target)
 WARNED_BRUSH = QBrush(QColor(255, 190, 120))
 
@@ -30,7 +38,8 @@ _Index = QModelIndex | QPersistentModelIndex
 #: paint and column fit, and the others are turned away before any work (a capture's take
 #: re-measures the columns, and this is most of its cost)
 _ROLES = frozenset((Qt.ItemDataRole.DisplayRole, Qt.ItemDataRole.EditRole,
-                    Qt.ItemDataRole.BackgroundRole, Qt.ItemDataRole.ToolTipRole))
+                    Qt.ItemDataRole.BackgroundRole, Qt.ItemDataRole.ToolTipRole,
+                    Qt.ItemDataRole.ForegroundRole))
 
 
 class ReadingsTableModel(QAbstractTableModel):
@@ -51,6 +60,9 @@ class ReadingsTableModel(QAbstractTableModel):
         self.sheet = sheet
         self.undo_stack = undo_stack
         self.highlight_rows: set[int] = set()  # rows drawn apart (e.g. the closure row)
+        #: rows the analysis left out (its warnings say why): shaded clearly, and said so
+        #: in their cells' tooltip
+        self.left_out_rows: set[int] = set()
         #: cells whose captured reading was edited since, with what to say of each
         #: (models/capture/edits.py): drawn apart, the text in their tooltip
         self.edited_cells: dict[tuple[int, int], str] = {}
@@ -88,10 +100,17 @@ class ReadingsTableModel(QAbstractTableModel):
         #: is: one in the middle whose reading was cleared waits for it too, its blank cells
         #: not red (None: a new row, or no plan)
         self.planned_row: Callable[[], int | None] = lambda: None
+        #: the figure a blank cell (row, column) shows, worked out from its row, with what
+        #: to say of it (the presenter's: Workbench.shown_in_blank), or None: shown, greyed,
+        #: never written into the sheet (the editor opens on the sheet's blank text)
+        self.shown_in_blank: Callable[[int, int], tuple[str, str] | None] = lambda r, c: None
+        #: the columns whose blank cells may show such a figure (repainted with every change)
+        self.shown_columns: tuple[int, ...] = ()
         self._waiting_from: int | None = None  # the first of them (None: none)
         self._planned: int | None = None
         self._waiting_known = False
         self.sheet_changed.connect(self.forget_waiting)
+        self.sheet_changed.connect(self.shown_changed)
         on_language_change(self, self._on_language_changed)
 
     def forget_waiting(self) -> None:
@@ -148,9 +167,21 @@ class ReadingsTableModel(QAbstractTableModel):
             return None
         r, c = index.row(), index.column()
         inside = r < self.sheet.row_count
-        if role in (Qt.ItemDataRole.DisplayRole, Qt.ItemDataRole.EditRole):
+        if role == Qt.ItemDataRole.EditRole:
             return self.sheet.text(r, c) if inside else ""
+        if role == Qt.ItemDataRole.DisplayRole:
+            text = self.sheet.text(r, c) if inside else ""
+            if inside and c in self.shown_columns and not text.strip():
+                shown = self.shown_in_blank(r, c)
+                if shown is not None:
+                    return shown[0]
+            return text
         if not inside:
+            return None
+        if role == Qt.ItemDataRole.ForegroundRole:
+            if c in self.shown_columns and not self.sheet.text(r, c).strip() \
+                    and self.shown_in_blank(r, c) is not None:
+                return SHOWN_FOREGROUND
             return None
         if role == Qt.ItemDataRole.BackgroundRole:
             if self.cleared_after_capture(r, c):
@@ -161,6 +192,8 @@ class ReadingsTableModel(QAbstractTableModel):
                 return EDITED_BRUSH
             if self.take_warning(r, c) is not None:
                 return WARNED_BRUSH
+            if r in self.left_out_rows:
+                return LEFT_OUT_BRUSH
             if r in self.highlight_rows:
                 return MUTED_BRUSH
             return None
@@ -180,6 +213,13 @@ class ReadingsTableModel(QAbstractTableModel):
             if edited is not None and self.cleared_after_capture(r, c):
                 # a cleared reading: what was captured, and why its row is left out
                 return f"{translated(edited)}\n{why}"
+            if why is None and c in self.shown_columns and not self.sheet.text(r, c).strip():
+                shown = self.shown_in_blank(r, c)
+                if shown is not None:
+                    return declared(shown[1])
+            if why is None and r in self.left_out_rows:
+                return tr("Row {row} is left out of the analysis; the warnings above the "
+                          "result say why").format(row=r + 1)
             return why
         return None
 
@@ -196,6 +236,27 @@ class ReadingsTableModel(QAbstractTableModel):
         index = self.index(r, c)
         self.dataChanged.emit(index, index, [Qt.ItemDataRole.BackgroundRole,
                                              Qt.ItemDataRole.ToolTipRole])
+
+    def mark_records(self) -> list[dict]:
+        """The cells' marks that hold (a take's reading at another face or target, its
+        cell still holding that text), as a project file keeps them
+        (models/project/cell_marks.py)."""
+        keys = [c.key for c in self.sheet.columns]
+        return [mark_to_json(r, keys[c], text, note)
+                for (r, c), (text, note) in sorted(self.take_warnings.items())
+                if r < self.sheet.row_count and c < len(keys) and self.sheet.text(r, c) == text]
+
+    def set_mark_records(self, records: list[dict]) -> None:
+        """The marks a project file kept (a project opened), on the cells they name
+        (gui77: save, reopen, and the marks were gone)."""
+        keys = [c.key for c in self.sheet.columns]
+        self.take_warnings = {(r, keys.index(column)): (text, note)
+                              for r, column, text, note in marks_from_json(records)
+                              if column in keys}
+        if self.sheet.row_count:
+            self.dataChanged.emit(self.index(0, 0), self.index(self.sheet.row_count - 1,
+                                                               self.sheet.column_count - 1),
+                                  [Qt.ItemDataRole.BackgroundRole, Qt.ItemDataRole.ToolTipRole])
 
     def _move_warnings(self, at: int, count: int) -> None:
         """Rows inserted (``count`` > 0) or removed (< 0) at ``at``: the marks below move."""
@@ -256,6 +317,29 @@ class ReadingsTableModel(QAbstractTableModel):
                 self.dataChanged.emit(self.index(0, 0), self.index(self.sheet.row_count - 1,
                                                                    self.sheet.column_count - 1),
                                       [Qt.ItemDataRole.BackgroundRole])
+
+    def shown_changed(self) -> None:
+        """The figures shown in blank cells repainted (the cells, or the settings they are
+        worked out with, changed)."""
+        if self.shown_columns and self.sheet.row_count:
+            last = self.sheet.row_count - 1
+            self.dataChanged.emit(self.index(0, min(self.shown_columns)),
+                                  self.index(last, max(self.shown_columns)),
+                                  [Qt.ItemDataRole.DisplayRole, Qt.ItemDataRole.ForegroundRole,
+                                   Qt.ItemDataRole.ToolTipRole])
+
+    def set_left_out_rows(self, rows: set[int]) -> None:
+        """Shade the rows the analysis left out; repaints only on a change."""
+        if rows != self.left_out_rows:
+            changed = rows ^ self.left_out_rows
+            self.left_out_rows = set(rows)
+            last = self.sheet.row_count - 1
+            for r in sorted(changed):
+                if r <= last:
+                    self.dataChanged.emit(self.index(r, 0),
+                                          self.index(r, self.sheet.column_count - 1),
+                                          [Qt.ItemDataRole.BackgroundRole,
+                                           Qt.ItemDataRole.ToolTipRole])
 
     def set_edited_cells(self, cells: dict[tuple[int, int], str]) -> None:
         """Mark the cells of captured readings edited since (repaints only on a change)."""

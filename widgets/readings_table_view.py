@@ -350,7 +350,10 @@ class ReadingsTableView(QTableView):
         model = self.readings_model()
         lines = []
         for r in rows:
-            cells = [model.data(model.index(r, c)) or "" if (r, c) in chosen else "" for c in cols]
+            # the sheet's text: a figure only shown in a blank cell (positioning's measured −
+            # target) is not copied, a paste back never gives a row both, disagreeing
+            cells = [model.data(model.index(r, c), Qt.ItemDataRole.EditRole) or ""
+                     if (r, c) in chosen else "" for c in cols]
             lines.append("\t".join(cells))
         return "\n".join(lines)
 

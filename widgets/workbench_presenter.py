@@ -390,6 +390,12 @@ class WorkbenchPresenter(QObject):
             self.view.table.plan_paste = self.plan_paste
         self._settings: dict[str, Any] = kind.settings_with_defaults(None)
         self._settings_modified = False
+        #: by column index: the figure its blank cells show (Workbench.shown_in_blank, with
+        #: the settings of now) and what to say of it
+        self._shown_in_blank: dict[int, tuple[Callable[[Callable[[str], str]], str | None],
+                                              str]] = {}
+        self.table_model.shown_in_blank = self._blank_cell_shown
+        self._settings_shown_in_blank()
         #: the rows were changed in a window after the project file was last saved, before
         #: this one took them (recovered from its autosave: :meth:`readings_unsaved`)
         self.recovered_unsaved = False
@@ -596,6 +602,7 @@ class WorkbenchPresenter(QObject):
         self._settings = self.kind.settings_with_defaults(settings)
         self.view.set_settings(self._settings)
         self._readings_per_point()
+        self._settings_shown_in_blank()
         self.table_model.forget_waiting()  # the plan's row waiting may be another
         self._settings_modified = True
         self._emit_modified()
@@ -622,10 +629,31 @@ class WorkbenchPresenter(QObject):
             self.view.set_settings(settings)
         self._settings = dict(settings)
         self._readings_per_point()
+        self._settings_shown_in_blank()
         self.table_model.forget_waiting()  # the plan's row waiting may be another
         self._settings_modified = True
         self._emit_modified()
         self.schedule_refresh()
+
+    def _settings_shown_in_blank(self) -> None:
+        """The figures blank cells show (positioning's deviation from the measured
+        position: gui77, the deviation column stayed empty while a live run's measured
+        filled), worked out with the settings of now, and the table repainted."""
+        keys = [c.key for c in self.kind.columns]
+        self._shown_in_blank = {keys.index(key): shown for key, shown in
+                                self.kind.shown_in_blank(self._settings).items() if key in keys}
+        self.table_model.shown_columns = tuple(sorted(self._shown_in_blank))
+        self.table_model.shown_changed()
+
+    def _blank_cell_shown(self, r: int, c: int) -> tuple[str, str] | None:
+        """The figure blank cell (r, c) shows and what to say of it (None: none)."""
+        shown = self._shown_in_blank.get(c)
+        if shown is None:
+            return None
+        sheet = self.sheet
+        columns = {col.key: i for i, col in enumerate(sheet.columns)}
+        figure = shown[0](lambda key: sheet.text(r, columns[key]) if key in columns else "")
+        return None if figure is None else (figure, shown[1])
 
     def _readings_per_point(self) -> None:
         """Typed entry fills a point's nominal n times when n readings make a point."""
@@ -679,6 +707,7 @@ class WorkbenchPresenter(QObject):
         ReadingsSheet.snapshot)."""
         state = _sheet_state(self.sheet, self._settings, deep)
         state.origin = origin_record(*self.table_model.origin_since())
+        state.marks = self.table_model.mark_records()  # the cells' marks (gui77)
         return state
 
     def result_state(self) -> WorkbenchState:
@@ -695,6 +724,7 @@ class WorkbenchPresenter(QObject):
         self._settings = self.kind.settings_with_defaults(state.settings)
         self.view.set_settings(self._settings)
         self.table_model.apply_replace(state.rows)
+        self.table_model.set_mark_records(state.marks)  # the cells' marks it kept
         self.table_model.forget_origin()
         if state.origin is not None or state.rows:
             opened = stored_origin(state.origin, project)

@@ -6,6 +6,14 @@ went), its closure back at face j + 1, then the next mounting (models/capture/gu
 n is the *faces* setting, or the faces of the first mounting once it has closed; without it
 the face alone is said and no encoder figure is guessed. The encoder start is the first
 mounting's first encoder reading; without one, none is said.
+
+The face (and mounting) the row the reading goes to already names — the entry plan's, or
+one typed — is the face said, with the encoder at it, as the polygon's guidance does
+(models/polygon/acquisition.py, live76 F2): a mounting read the other way round (j + 1,
+j, j − 1, …) is guided face by face, and where no row names a face, the mounting's own
+first two faces say which way it goes round. A face's encoder reading does not depend on
+the way it is read: start + k·360°/n, k its steps from face j + 1 the way the encoder
+counts (the first mounting's first step, read either way round).
 """
 
 from __future__ import annotations
@@ -59,10 +67,19 @@ def crosscal_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str]
     n = int(settings.get("faces", 0) or 0)
     if not n and len(groups) > 1 and len(first_faces) > 2 and first_faces[-1] == first_faces[0]:
         n = len(set(first_faces))  # the first mounting closed: its faces
+
+    def order_of(faces: list[int]) -> int:
+        """+1: a mounting read j + 1, j + 2, …; −1: read the other way round, j + 1, j, …
+        (its first two faces)."""
+        return -1 if n and len(faces) > 1 and (faces[1] - faces[0]) % n == n - 1 else 1
+
     start = first_enc[0]
+    # which way the encoder counts from a face to the next (j + 1 to j + 2): the first
+    # mounting's first step, read either way round
     sense = 1.0
     if len(first_enc) > 1 and start is not None and first_enc[1] is not None:
-        sense = 1.0 if (first_enc[1] - start + 180.0) % 360.0 - 180.0 >= 0 else -1.0
+        sense = (1.0 if (first_enc[1] - start + 180.0) % 360.0 - 180.0 >= 0 else -1.0) \
+            * order_of(first_faces)
     j, faces, _ = groups[-1]
 
     def said(text, mounting: int, face: int, k: int | None = None) -> NextReading:
@@ -80,21 +97,46 @@ def crosscal_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str]
         return NextReading(message(QT_TR_NOOP("mounting {mounting}: go to the next face, or back "
                                               "to face {face} for its closure"),
                                    mounting=j, face=faces[0]), {"mounting": str(j)})
+    # the face (and mounting) the row the reading goes to already names (the entry plan's,
+    # or one typed): the guidance says that face, with the encoder at it, never another —
+    # the polygon's rule (live76 F2: a reversed set was guided by the first set's direction)
+    planned = _int(current.get("position", ""))
+    if planned is not None and not 1 <= planned <= n:
+        planned = None
+    planned_mounting = _int(current.get("mounting", ""))
+    if planned is None or planned_mounting is None or planned_mounting < 0:
+        planned_mounting = None
     k = len(faces)
     home = j % n + 1
-    if k < n:
-        face = (j + k) % n + 1
+    order = order_of(faces)
+    if planned_mounting is not None and planned_mounting != j:
+        k = n + 1  # the row is another mounting's: the polygon turned on the shaft first
+    if k < n or (k == n and planned is not None and planned != home):
+        face = (home - 1 + order * k) % n + 1 if planned is None else planned
+        at = (face - home) % n  # a face's place does not depend on the way it is read
+        if face == home:
+            return said(message(QT_TR_NOOP("mounting {mounting}: go back to face {face} for "
+                                           "its closure"), mounting=j, face=home), j, home, n)
         if start is None:
             return said(message(QT_TR_NOOP("mounting {mounting}: go to face {face}"),
                                 mounting=j, face=face), j, face)
         return said(message(QT_TR_NOOP("mounting {mounting}: go to face {face} (encoder ≈ "
-                                       "{encoder}°)"), mounting=j, face=face, encoder=encoder(k)),
-                    j, face, k)
+                                       "{encoder}°)"), mounting=j, face=face, encoder=encoder(at)),
+                    j, face, at)
     if k == n:
         return said(message(QT_TR_NOOP("mounting {mounting}: go back to face {face} for its "
                                        "closure"), mounting=j, face=home), j, home, n)  # a full turn on
-    nxt = j + 1
-    face = nxt % n + 1
+    nxt = j + 1 if planned_mounting is None else planned_mounting
+    first = nxt % n + 1  # the face the mounting brings to the encoder's start
+    face = first if planned is None else planned
+    if face != first:  # the row names another face of that mounting: that face, its encoder
+        at = (face - first) % n
+        if start is None:
+            return said(message(QT_TR_NOOP("mounting {mounting}: go to face {face}"),
+                                mounting=nxt, face=face), nxt, face)
+        return said(message(QT_TR_NOOP("mounting {mounting}: go to face {face} (encoder ≈ "
+                                       "{encoder}°)"), mounting=nxt, face=face,
+                            encoder=encoder(at)), nxt, face, at)
     if start is None:
         return said(message(QT_TR_NOOP("turn the polygon on the shaft by one face: mounting "
                                        "{mounting}, face {face} at the encoder's start"),

@@ -9,10 +9,16 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP
 from models.plots import PlotFigure, PlotSeries
-from models.polygon.model import PolygonResult, frame_readings_arcsec, split_sets
+from models.polygon.model import (
+    PolygonResult,
+    counting_residuals_deg,
+    face_errors_arcsec,
+    frame_readings_arcsec,
+    split_sets,
+)
 
-__all__ = ["corrected_with_uncertainty", "error_figure", "harmonics_figure", "in_progress_errors",
-           "residual_figure", "sets_figure", "tilt_figure"]
+__all__ = ["corrected_with_uncertainty", "error_figure", "faces_read_figure", "harmonics_figure",
+           "in_progress_errors", "residual_figure", "sets_figure", "tilt_figure"]
 
 BLUE, ORANGE, GREEN, PURPLE, RED = ((31, 119, 180), (255, 127, 14), (44, 160, 44),
                                     (148, 103, 189), (192, 57, 43))
@@ -134,3 +140,42 @@ def sets_figure(result: PolygonResult, parsed: Any = None,
                                  width=1))
     return PlotFigure(QT_TR_NOOP("Corrected error of each set (set number, direction)"), ANGLE,
                       QT_TR_NOOP("error (\")"), tuple(series))
+
+
+def faces_read_figure(parsed: Any, settings: Any) -> PlotFigure | None:
+    """While set 1 is read (no set complete: no result yet), what the faces read so far
+    show, so the set-up is judged from the first faces (gui77; the plot said "No data"
+    until the closure): with the number of faces known (the *faces* setting), each face's
+    raw error e against the first reading of the set — the encoder's step less the face's
+    nominal angle and deviation, less the autocollimator's change (eq 1, as the analysis
+    takes it, the encoder counting the way the setting says or, on auto, the way the
+    readings fit best); without it, the autocollimator's x reading at each encoder reading.
+    None when no reading of set 1 can be read, or set 1 is no longer in progress (closed,
+    or a later set begun: a result, or a reason there is none, stands for it)."""
+    if parsed is None or parsed.n == 0:
+        return None
+    sets = split_sets(parsed)
+    _, rows, closure = sets[0]
+    if closure is not None or len(sets) > 1 or rows.size == 0:
+        return None
+    a = np.asarray(parsed["encoder_deg"], dtype=float)[rows]
+    x = np.asarray(parsed["ac_x_arcsec"], dtype=float)[rows]
+    faces = int(settings.get("faces", 0) or 0)
+    if not faces:
+        return PlotFigure(QT_TR_NOOP("Faces read so far (set 1 in progress)"),
+                          QT_TR_NOOP("encoder reading a (°)"), QT_TR_NOOP("AC x (\")"), (
+            PlotSeries(QT_TR_NOOP("autocollimator x (set the number of faces for the error)"),
+                       a % 360.0, x, GREY, True, width=0, marker_size=8, role="raw"),))
+    position = np.asarray(parsed["position"], dtype=float)[rows]
+    nominal = (position - 1.0) * 360.0 / faces
+    deviation = np.nan_to_num(np.asarray(parsed["polygon_dev_arcsec"], dtype=float)[rows])
+    counting = {"with": 1, "against": -1}.get(str(settings.get("counting", "auto")))
+    if counting is None:  # auto: the way the encoder's readings fit the faces best
+        counting = min((1, -1), key=lambda c: float(np.max(np.abs(
+            counting_residuals_deg(a, nominal, c)))))
+    zero = (a[0], nominal[0], deviation[0], x[0])
+    error = face_errors_arcsec(a, deviation, x, nominal, zero, counting)
+    return PlotFigure(QT_TR_NOOP("Faces read so far (set 1 in progress)"), ANGLE,
+                      QT_TR_NOOP("error (\")"), (
+        PlotSeries(QT_TR_NOOP("raw error e (faces read so far)"), nominal % 360.0, error, GREY,
+                   True, width=0, marker_size=8, role="raw"),))

@@ -759,6 +759,13 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         unit = "mm" if settings.get("target_unit", "deg") == "mm" else "deg"
         return {"measured": ("target", unit)}
 
+    def shown_in_blank(self, settings):
+        # the deviation of a reading taken (or typed) as a measured position: measured −
+        # target, shown in its blank deviation cell as the typed path shows the deviation
+        from models.positioning.deviation_shown import DEVIATION_SHOWN_NOTE, shown_deviation
+
+        return {"deviation": (shown_deviation(settings), DEVIATION_SHOWN_NOTE)}
+
     def entry_plan(self, settings):
         runs = int(settings.get("plan_runs", 0) or 0)
         if not runs:

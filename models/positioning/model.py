@@ -211,8 +211,9 @@ class PositioningResult:
             header += [f"B_i ({sym})", f"M_i ({sym})", f"R_i ({sym})"]
 
         def cell(value: float, signed: bool = True) -> str:
-            return "—" if not np.isfinite(value) else (f"{value:+.3f}" if signed
-                                                       else f"{value:.3f}")
+            # a zero unsigned, as the certificate prints it (models/uncertainty/rounding.py)
+            return "—" if not np.isfinite(value) else fixed_places(float(value), 3,
+                                                                    "+" if signed else "")
         rows = []
         def shown(key: str, i: int, value: float, signed: bool = True) -> str:
             cells = printed.get(key)

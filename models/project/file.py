@@ -15,6 +15,11 @@ models/capture/raw_record.py; ``sha256`` is the digest of ``sessions`` as stored
 file whose sessions no longer give it, or with a session recorded on another workbench
 (its ``workbench``), is refused.
 
+``cell_marks`` (optional in schema 2: absent where the table has no marks, and in files
+written before they were kept) are the readings table's marks of cells — a take's reading
+at another face or target than its row's — with what is said of each
+(models/project/cell_marks.py).
+
 ``readings_origin`` (optional in schema 2: absent in files written before it existed) is
 where the workbench's readings came from, as its certificate names them: typed, a file
 imported (with its SHA-256), the bundled sample, pasted, sent from another workbench, with
@@ -88,6 +93,9 @@ class WorkbenchState:
     #: where the rows came from, as the file keeps it (``readings_origin``: see the module's
     #: note; None: not recorded, a file written before it was)
     origin: dict[str, Any] | None = None
+    #: the readings table's cell marks as the file keeps them (``cell_marks``:
+    #: models/project/cell_marks.py; empty: none, or a file written before they were kept)
+    marks: list[dict[str, Any]] = field(default_factory=list)
 
 
 @dataclass
@@ -144,6 +152,8 @@ def project_json_parts(project: Project, between_blocks: Callable[[], None] | No
         yield f'],"settings":{dumps(state.settings)}'
         if state.origin is not None:
             yield f',"readings_origin":{dumps(state.origin)}'
+        if state.marks:
+            yield f',"cell_marks":{dumps(state.marks)}'
         yield "}"
     yield "}"
     raw = {str(k): v for k, v in project.raw_capture.items() if v}
@@ -268,8 +278,12 @@ def project_from_json(text: str, source: str = "project",
         # where the rows came from: read as it is (models/certificate/stored_origin.py
         # judges it; one it cannot read is an origin not known, never a refused project)
         origin = state.get("readings_origin")
+        # the table's cell marks (optional; one that cannot be read is left out, never a
+        # refused project: models/project/cell_marks.py)
+        marks = state.get("cell_marks", [])
         project.workbenches[str(key)] = WorkbenchState(
-            clean_rows, dict(settings), dict(origin) if isinstance(origin, dict) else None)
+            clean_rows, dict(settings), dict(origin) if isinstance(origin, dict) else None,
+            [dict(m) for m in marks if isinstance(m, dict)] if isinstance(marks, list) else [])
     project.raw_capture = _raw_capture(document.get("raw_capture", {}), source)
     project.repairs = repairs
     return project

@@ -188,3 +188,27 @@ def test_words_joined_are_said_again_each(switched_back):
     chinese = window.statusBar().currentMessage()
     assert chinese.endswith("; /tmp/a.pdf") and "Printed" not in chinese and HAN.search(chinese), \
         chinese
+
+
+def test_the_compensation_tables_message_follows_the_language(switched_back, samples_dir,
+                                                              tmp_path):
+    """After Export compensation table… (the model's message split into lines, joined as
+    plain text) the status line stayed English in the Chinese window (gui77 item 3)."""
+    window = switched_back
+    presenter = window.presenter("positioning")
+    window.tabs.setCurrentIndex(window.presenters.index(presenter))
+    presenter.import_file(samples_dir / "positioning_sample.csv")
+    presenter.refresh()
+    assert presenter.result is not None, presenter.problem
+    path = tmp_path / "compensation.csv"
+    assert presenter.export_compensation(str(path))
+    assert path.exists()
+    english = window.statusBar().currentMessage()
+    assert english.startswith("Compensation table") and " written" in english, english
+    choose_language(window, "zh_CN")
+    chinese = window.statusBar().currentMessage()
+    assert HAN.search(chinese), chinese
+    assert "written" not in chinese and "Compensation" not in chinese, chinese
+    assert not re.search(r"[A-Za-z]{5,}", chinese), chinese
+    choose_language(window, "en")
+    assert window.statusBar().currentMessage() == english  # and back, the same text

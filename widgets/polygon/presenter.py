@@ -196,3 +196,10 @@ class PolygonPresenter(WorkbenchPresenter):
     def clear_result(self) -> None:
         self.table_model.set_highlight_rows(set())
         self.view.clear_result()
+        # no set complete yet (set 1 in progress): the faces read so far, not "No data"
+        # (gui77: a technician judges the set-up from the first faces)
+        if self.parsed is not None:
+            (faces_read,) = self.in_unit(plots.faces_read_figure(self.parsed,
+                                                                 self.result_settings))
+            if faces_read is not None:
+                self.view.show_faces_read(faces_read)

@@ -122,6 +122,12 @@ class PolygonView(WorkbenchView):
         self.tilt_plot.show_figure(tilt)
         self.harmonics.show_figure(harmonics)
 
+    def show_faces_read(self, figure) -> None:
+        """The faces of set 1 read so far (no result yet): their raw error on the error
+        plot and beside the sets (models/polygon/plots.faces_read_figure)."""
+        self.error_plot.show_figure(figure)
+        self.sets_plot.show_figure(figure)
+
     def clear_result(self) -> None:
         self.error_plot.clear()
         self.sets_plot.clear()

@@ -14,7 +14,7 @@ from models.positioning.controllers.common import parse_options
 from models.positioning.model import PositioningResult
 from models.positioning.report import positioning_budget, printed_per_target
 from models.tolerance_band import with_tolerance
-from widgets.i18n import explained, tr, translated
+from widgets.i18n import Said, explained, tr, translated
 from widgets.positioning.before_after import AfterCompensation
 from widgets.positioning.view import PositioningView
 from widgets.workbench_presenter import WorkbenchPresenter
@@ -39,7 +39,7 @@ class PositioningPresenter(WorkbenchPresenter):
     def show_result(self, result: PositioningResult) -> None:
         # a reading left out for a deviation beyond the limit, drawn apart in the table (its
         # warning names it: day review live76 F7)
-        self.table_model.set_highlight_rows(set(result.left_out))
+        self.table_model.set_left_out_rows(set(result.left_out))
         self.view.show_figures(*self.in_unit(self._with_tolerance(plots.deviation_figure(result),
                                                                   result),
                                              plots.reversal_figure(result),
@@ -72,7 +72,7 @@ class PositioningPresenter(WorkbenchPresenter):
         return with_tolerance(figure, tolerance, curves, quantity)
 
     def clear_result(self) -> None:
-        self.table_model.set_highlight_rows(set())
+        self.table_model.set_left_out_rows(set())
         self.view.clear_result()
 
     def export_compensation_dialog(self) -> None:
@@ -130,6 +130,11 @@ class PositioningPresenter(WorkbenchPresenter):
                            tr("{path}: {reason}. Nothing else was changed.").format(
                                path=path, reason=exc.strerror or exc))
             return ""
-        said, *notes = translated(what).split("\n")  # what was written, then what to know of it
-        self.view.show_status("; ".join([tr("{what} written").format(what=said), *notes]))
+        def status() -> Said:
+            """Composed again in the language chosen later, each time (View › Language;
+            gui77: the lines' plain join stayed in the language it was shown in)."""
+            said, *notes = translated(what).split("\n")  # what was written, then what to know
+            return Said("; ".join([tr("{what} written").format(what=said), *notes]), status)
+
+        self.view.show_status(status())
         return what

@@ -118,3 +118,43 @@ def test_a_readouts_reading_is_written_in_its_targets_turn_either_form(window, q
                           presenter.result.deviations, strict=True))
     assert [deviations[r] for r in range(10)] == pytest.approx(
         [-1.8, 1.08, 0.72, 1.08, 1.44, -1.44, 0.36, 0.72, 1.08, 0.36], abs=1e-6)
+
+
+def test_the_deviation_column_shows_measured_minus_target_as_each_reading_arrives(window,
+                                                                                    qtbot):
+    """gui77 (live76 F11): in a live run the *measured* cells filled and the *deviation*
+    column stayed empty. Each take's row shows measured − target in its deviation cell
+    (greyed, said in its tooltip), the figure the analysis takes; the sheet keeps the
+    cell blank (nothing is written that an edit of the measured position would contradict),
+    and a copy of the row is the sheet's text."""
+    from PySide6.QtCore import Qt
+
+    presenter = _plan(window, "0:15:2")
+    model = presenter.table_model
+    panel = window.capture_panel
+    column = [c.key for c in model.sheet.columns].index("deviation")
+    with ReadoutSimulator("tcp", positions=[(0.0,)]) as readout:
+        panel.connect_to("readout", readout.port, **FAST)
+        link = panel.links[0]
+        link.column.setCurrentIndex(link.column.findData("measured"))
+        for row, (value, shown) in enumerate(((0.0003, "1.08"), (15.0, "0"),
+                                              (14.9995, "-1.80"))):
+            assert _take(panel, readout, value, qtbot) == f"row {row + 1}"
+            index = model.index(row, column)
+            assert index.data() == shown, (row, index.data())
+            assert index.data(Qt.ItemDataRole.EditRole) == ""
+            assert _text(model, row, "deviation") == ""
+            assert index.data(Qt.ItemDataRole.ForegroundRole) is not None
+            assert index.data(Qt.ItemDataRole.ToolTipRole).startswith("measured − target")
+        panel.disconnect_instrument()
+    # the row waiting for the next reading shows nothing
+    assert model.index(3, column).data() == ""
+    # an edit of the measured position: the figure shown follows it
+    model.setData(model.index(0, column + 1), "0.0006")
+    assert model.index(0, column).data() == "2.16"
+    # the deviation unit changed: shown in it
+    presenter.set_settings({**presenter.settings, "deviation_unit": "urad"})
+    assert model.index(0, column).data() == "10.5"
+    view = presenter.view.table
+    view.selectRow(0)
+    assert view.selected_text().split("\t")[column] == ""

@@ -155,6 +155,44 @@ def test_the_crosscal_nominal_encoder_is_the_start_plus_the_steps(sense):
     assert guide(rows[:2], {}, {"faces": 0}).nominal == {}
 
 
+def test_a_reversed_mounting_is_guided_to_the_face_its_row_names_with_that_faces_encoder():
+    """The polygon's rule (live76 F2) in the cross-calibration: 4 faces, mounting 0 read
+    1→2→3→4 (encoder 10°, 100°, 190°, 280°), mounting 1 read the other way round from face
+    2 at the start (2, 1, 4, 3). After its first face the guidance said "go to face 3
+    (encoder ≈ 100°)" whatever the row named; the row's face is said, with the encoder at
+    it (face 1 is 90° before face 2), and on, the mounting's own direction."""
+    guide = KINDS["crosscal"].acquisition_guide
+    settings_ = {"faces": 4}
+    rows = [_crosscal_row(0, f, 10.0 + (f - 1) * 90.0) for f in (1, 2, 3, 4)]
+    rows.append(_crosscal_row(1, 2, 10.0))
+    got = guide(rows, {"mounting": "1", "position": "1"}, settings_)
+    assert got.text == "mounting 1: go to face 1 (encoder ≈ 280°)"
+    assert got.fill == {"mounting": "1", "position": "1"}
+    assert got.nominal == {"encoder_deg": pytest.approx(280.0)}
+    # no face named: the way this mounting goes round (2, 1, then 4 at 190°)
+    got = guide(rows + [_crosscal_row(1, 1, 280.0)], {}, settings_)
+    assert got.text == "mounting 1: go to face 4 (encoder ≈ 190°)"
+    assert got.nominal == {"encoder_deg": pytest.approx(190.0)}
+    # the plan's row after a mounting without closure is the next mounting's first face
+    got = guide(rows[:4], {"mounting": "1", "position": "2"}, settings_)
+    assert got.fill == {"mounting": "1", "position": "2"}
+    assert got.text.startswith("turn the polygon on the shaft by one face: mounting 1, face 2")
+    assert got.nominal == {"encoder_deg": pytest.approx(10.0)}
+
+
+def test_a_first_mounting_read_the_other_way_round_counts_the_encoder_its_way():
+    """6 faces, mounting 0 read 1, 6 (encoder 10°, 310°): face 5 is next, at 250°; the
+    encoder's sense taken from the faces' order, not assumed forward."""
+    guide = KINDS["crosscal"].acquisition_guide
+    rows = [_crosscal_row(0, 1, 10.0), _crosscal_row(0, 6, 310.0)]
+    got = guide(rows, {}, {"faces": 6})
+    assert got.text == "mounting 0: go to face 5 (encoder ≈ 250°)"
+    assert got.fill == {"mounting": "0", "position": "5"}
+    # and face 2, named by its row, 60° on from face 1
+    got = guide(rows, {"mounting": "0", "position": "2"}, {"faces": 6})
+    assert got.nominal == {"encoder_deg": pytest.approx(70.0)}
+
+
 def test_a_reversed_set_is_guided_to_the_face_its_row_names_with_that_faces_encoder():
     """live76 F2: 4 faces, set 1 read 1→2→3→4→1 (encoder 10°, 100°, 190°, 280°), set 2 goes
     the other way round (the plan pre-fills its next row with face 4). After set 2's first
