@@ -1116,26 +1116,29 @@ def reversal_budget(result: PolygonResult, metadata: CertificateMetadata,
         raise UncertaintyWithheld(message(REVERSAL_SETS_ALIKE))
     n = result.faces
     zero = _zero_index(result)
-    stated = settings or {}
-    noise_components, noise = _noise_components(
-        result, n, zero, float(stated.get("reading_noise_arcsec",
-                                          result.reading_noise_stated_arcsec) or 0.0))
-    own = noise_components[0]  # the noise of the mean: its evaluation and degrees of freedom
+    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
+    # the noise as the mean's budget takes it (:func:`_noise_components`), each set's offset
+    # and steady drift out where the reading order is known (its offsets an input below)
+    within = within_set_noise(corrected, directions, _reading_indices(result))
+    if within is not None:
+        noise, dof = within
+    else:
+        s_i, sets_dof = pooled_repeatability(corrected, directions) or (np.zeros(1), 0)
+        noise, dof = float(np.sqrt(np.mean(s_i**2))), sets_dof * n
     factor = math.sqrt(1.0 / up + 1.0 / down)
     components = [BudgetComponent(
-        QT_TR_NOOP("Reading noise of the two directions' means"), own.evaluation, "normal",
-        noise * factor, 1.0, 1.0, own.dof,
+        QT_TR_NOOP("Reading noise of the two directions' means"), "A", "normal",
+        noise * factor, 1.0, 1.0, float(dof),
         message(QT_TR_NOOP("σ = {s} of one error from the sets' scatter ({dof} degrees of "
                            "freedom), times √(1/{up} + 1/{down})"),
-                s=f"{noise:.3f}\"", dof=f"{own.dof:g}", up=up, down=down),
+                s=f"{noise:.3f}\"", dof=dof, up=up, down=down),
         dof_group="repeatability")]
-    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
     steady = _steady_drift_estimate(result, noise)
     carried = covariance = None
     if steady is not None:  # as :func:`_zero_offsets_component` takes the offsets apart
         before = -np.arange(len(result.sets), dtype=float)
         carried, covariance = before * steady[0], np.outer(before, before) * steady[1]
-    if within_set_noise(corrected, directions, _reading_indices(result)) is not None:
+    if within is not None:
         spread = set_offsets_spread(corrected, directions, carried, covariance,
                                     noise / math.sqrt(n))
         if spread is not None and spread[0] > 0:
