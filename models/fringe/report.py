@@ -722,7 +722,12 @@ def parameters_json(result, probability: float) -> dict[str, Any]:
             params[f"expanded_uncertainty_{name}"] = figure
         out[f"{label}_params"] = params
     sin_u, cos_u = (stated.channels.get(c, {}).get("A0") for c in ("sin", "cos"))
-    out["expanded_uncertainty_offsets_v"] = [expanded(sin_u), expanded(cos_u)]
+    offsets = [expanded(sin_u), expanded(cos_u)]
+    out["expanded_uncertainty_offsets_v"] = offsets
+    # its k beside it (issue 39: every U array's coverage_factor_<name>), one number as the
+    # table's; null where both U are (parameters_coverage_factor stays, the same k)
+    out["coverage_factor_offsets_v"] = (k if not stated.withheld
+                                        and any(u is not None for u in offsets) else None)
     out["expanded_uncertainty_amplitude_ratio"] = expanded(stated.ratio)
     out["expanded_uncertainty_quadrature_error_deg"] = expanded(
         math.degrees(stated.quadrature_rad))

@@ -1085,6 +1085,17 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
         return dict.fromkeys(("error_arcsec", "pyramidal_error_arcsec",
                               "corrected_error_arcsec"), order)
 
+    def certified_json(self, result, metadata, settings=None):
+        """U beside ``reversal_arcsec`` (issue 39), from its own budget: the difference of
+        the two directions' means, in which what every set shares drops out
+        (:func:`models.polygon.report.reversal_budget`); null with its reason where a
+        direction has one set only, as B and B̄ (``reversal_uncertainty_reason``)."""
+        from models.certificate.uncertainty_json import laboratory_cmcs
+        from models.polygon.report import reversal_uncertainty_json
+
+        return reversal_uncertainty_json(result, metadata, settings,
+                                         bool(laboratory_cmcs(self, {}, settings)))
+
     def inputs_not_stated(self, result, metadata):
         from models.polygon.report import not_stated
 

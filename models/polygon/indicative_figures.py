@@ -39,11 +39,13 @@ __all__ = ["HARMONICS_NO_INTERVAL", "ISO230_NO_INTERVAL", "REVERSAL_CONFOUNDED",
 REVERSAL_CONFOUNDED = QT_TR_NOOP(
     "one set per direction: the reversal cannot be told from the zero drift carried between "
     "the sets and their reading noise; indicative, not a calibration result")
-#: sets repeated in a direction: the drift carried and the noise could be told apart, but this
-#: version evaluates no uncertainty of the reversal
+#: sets repeated in a direction: each face's reversal has its U (the JSON's
+#: ``expanded_uncertainty_reversal_arcsec``, models.polygon.report.reversal_budget), but B, the
+#: largest over the faces, and B̄, their mean, have no interval evaluated
 REVERSAL_NOT_EVALUATED = QT_TR_NOOP(
-    "the uncertainty of the reversal (the zero drift carried between the sets and their "
-    "reading noise enter it) is not evaluated; indicative, not a calibration result")
+    "no coverage interval is evaluated for the largest and the mean reversal over the faces "
+    "(the zero drift carried between the sets and their reading noise enter them); "
+    "indicative, not a calibration result")
 #: an amplitude √(a² + b²) of noisy Fourier coefficients is biased high, as a range is: pure
 #: noise of σ per position gives σ·√(π/n) on average over n positions
 HARMONICS_NO_INTERVAL = QT_TR_NOOP(

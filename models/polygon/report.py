@@ -100,6 +100,7 @@ from models.polygon.budget_inputs import (
     is_set_up_input,
 )
 from models.polygon.indicative_figures import (
+    REVERSAL_CONFOUNDED,
     ZERO_MOVED,
     harmonics_reason,
     no_interval,
@@ -137,7 +138,8 @@ from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
 __all__ = ["OTHER_SET", "ZERO_READING", "ZeroFaceShare", "mean_zero_share", "polygon_budget",
            "polygon_certificate", "polygon_json_budgets", "polygon_tolerance_arcsec",
-           "repeated_readings_components", "setup_statement", "zero_reading_statement"]
+           "repeated_readings_components", "reversal_budget", "reversal_uncertainty_json",
+           "setup_statement", "zero_reading_statement"]
 
 METHOD = QT_TR_NOOP(
     "A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on "
@@ -1068,6 +1070,126 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
             "pyramidal_error_arcsec": sets(lambda pyr: pyr, 0.0),
             "corrected_error_arcsec": sets(lambda pyr: True, full.floor),
             "mean_corrected_error_arcsec": full}
+
+
+#: the repeated sets read alike at every face: no scatter to take the reversal's U from
+REVERSAL_SETS_ALIKE = QT_TR_NOOP(
+    "the sets of a direction read alike at every face: their scatter, which the reversal's "
+    "uncertainty is taken from, cannot be told")
+
+
+def reversal_budget(result: PolygonResult, metadata: CertificateMetadata,
+                    settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
+    """The budget of the reversal per face, ``reversal_arcsec`` = ē↑ − ē↓ (the forward sets'
+    mean less the reverse sets'), for sets repeated in each direction.
+
+    The reversal is Σ w_s e_s with w_s = 1/m↑ for a forward set and −1/m↓ for a reverse
+    one (Σ w_s = 0): what is the same in every set drops out of it — each face's standard
+    and the zero face's, the zero reading, the autocollimator's roll (its cross-talk
+    ρ·(y − y_z) is the same at a face in every set), a tilt not identified, the laboratory's
+    CMC (a floor on an encoder error's U, not on a difference of two). Left:
+
+    * the reading noise, σ of one error from the sets' scatter (as the mean's budget takes
+      it, :func:`_noise_components`), times √(1/m↑ + 1/m↓); each set's own tilt fit and
+      the readings' rounding are in that scatter;
+    * the sets' zero offsets (standard deviation τ of one set's, :func:`set_offsets_spread`)
+      times √(1/m↑ + 1/m↓), the same at every face;
+    * a steady zero drift carried from set to set (:func:`_carried_drift_input`), the
+      closures' estimate through the reversal's weights: a known bias in quadrature;
+      where the drift is spread, or no chain of closures shows it, each set's own drift
+      left within it (rectangular, half-width d, d/2 when spread) times √(1/m↑ + 1/m↓).
+
+    UncertaintyWithheld (its reason) where a direction has one set only
+    (:data:`~models.polygon.indicative_figures.REVERSAL_CONFOUNDED`: its offset is the
+    reversal's own, nothing tells them apart), the zero moved between the sets
+    (:data:`~models.polygon.indicative_figures.ZERO_MOVED`), or the sets of a direction read
+    alike (:data:`REVERSAL_SETS_ALIKE`); ValueError with one direction only."""
+    directions = np.array([s.direction for s in result.sets])
+    up, down = int(np.sum(directions > 0)), int(np.sum(directions < 0))
+    if not (up and down):
+        raise ValueError(message(QT_TR_NOOP("no reversal: one direction only was measured")))
+    if min(up, down) < 2:
+        raise UncertaintyWithheld(message(REVERSAL_CONFOUNDED))
+    if zero_moved(result):
+        raise UncertaintyWithheld(message(ZERO_MOVED))
+    if not _noise_from_sets(result):
+        raise UncertaintyWithheld(message(REVERSAL_SETS_ALIKE))
+    n = result.faces
+    zero = _zero_index(result)
+    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
+    # the noise as the mean's budget takes it (:func:`_noise_components`), each set's offset
+    # and steady drift out where the reading order is known (its offsets an input below)
+    within = within_set_noise(corrected, directions, _reading_indices(result))
+    if within is not None:
+        noise, dof = within
+    else:
+        s_i, sets_dof = pooled_repeatability(corrected, directions) or (np.zeros(1), 0)
+        noise, dof = float(np.sqrt(np.mean(s_i**2))), sets_dof * n
+    factor = math.sqrt(1.0 / up + 1.0 / down)
+    components = [BudgetComponent(
+        QT_TR_NOOP("Reading noise of the two directions' means"), "A", "normal",
+        noise * factor, 1.0, 1.0, float(dof),
+        message(QT_TR_NOOP("σ = {s} of one error from the sets' scatter ({dof} degrees of "
+                           "freedom), times √(1/{up} + 1/{down})"),
+                s=f"{noise:.3f}\"", dof=dof, up=up, down=down),
+        dof_group="repeatability")]
+    steady = _steady_drift_estimate(result, noise)
+    carried = covariance = None
+    if steady is not None:  # as :func:`_zero_offsets_component` takes the offsets apart
+        before = -np.arange(len(result.sets), dtype=float)
+        carried, covariance = before * steady[0], np.outer(before, before) * steady[1]
+    if within is not None:
+        spread = set_offsets_spread(corrected, directions, carried, covariance,
+                                    noise / math.sqrt(n))
+        if spread is not None and spread[0] > 0:
+            tau, dof = spread
+            components.append(BudgetComponent(
+                ZERO_OFFSETS_INPUT, "A", "normal", tau * factor, 1.0, 1.0, float(dof),
+                message(QT_TR_NOOP("one unknown offset per set (standard deviation {s} of "
+                                   "a set's, {dof} degrees of freedom), times "
+                                   "√(1/{up} + 1/{down}): the same at every face"),
+                        s=f"{tau:.3f}\"", dof=dof, up=up, down=down), common=True))
+    multipliers = _carried_drift_multipliers(result, zero)
+    if multipliers is not None:
+        weights = np.where(directions > 0, 1.0 / up, -1.0 / down)
+        components += _carried_drift_input(result, weights @ multipliers,
+                                           _kept_steady_drift(result, noise))
+    if multipliers is None or result.spread_drift:
+        drifts = np.array([s.closure_drift_arcsec for s in result.sets
+                           if s.closure_drift_arcsec is not None])
+        if drifts.size:
+            excess = max(0.0, float(np.mean(drifts**2)) - 2.0 * noise**2)
+            half_width = math.sqrt(excess) / (2.0 if result.spread_drift else 1.0)
+            if half_width > 0:
+                components.append(BudgetComponent(
+                    QT_TR_NOOP("Closure drift"), "B", "rectangular", half_width * factor,
+                    math.sqrt(3.0), 1.0, math.inf,
+                    message(QT_TR_NOOP("each set's own drift left within it, up to {d}, "
+                                       "times √(1/{up} + 1/{down})"),
+                            d=f"{half_width:.3f}\"", up=up, down=down)))
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+
+
+def reversal_uncertainty_json(result: PolygonResult, metadata: CertificateMetadata,
+                              settings: Mapping[str, Any] | None = None,
+                              cmc_set: bool = False) -> dict[str, Any]:
+    """The JSON's U beside ``reversal_arcsec`` (issue 39): ``expanded_uncertainty_reversal_
+    arcsec`` and ``coverage_factor_reversal_arcsec`` from :func:`reversal_budget` (with
+    ``cmc_set`` ``uncertainty_raised_to_cmc_reversal_arcsec``, all false: no CMC holds a
+    reversal), null where it is not determined, ``reversal_uncertainty_reason`` then saying
+    why (null where U is given; and where there is no reversal, one direction measured)."""
+    from models.certificate.uncertainty_json import budget_arrays
+
+    budget: UncertaintyBudget | None = None
+    reason: str | None = None
+    try:
+        budget = reversal_budget(result, metadata, settings)
+    except UncertaintyWithheld as exc:
+        reason = str(reason_of(exc))
+    except (ValueError, ArithmeticError, IndexError) as exc:
+        reason = None if result.reversal_arcsec is None else str(reason_of(exc))
+    return {**budget_arrays("reversal_arcsec", budget, cmc_set),
+            "reversal_uncertainty_reason": reason}
 
 
 def _one_set(budget: UncertaintyBudget, result: PolygonResult) -> UncertaintyBudget:

@@ -201,3 +201,26 @@ def test_u_not_determined_is_null_with_the_reason(capsys, tmp_path):
     data = json.loads(capsys.readouterr().out)
     assert data["per_target"]["expanded_uncertainty_mean_up"] is None
     assert "approached fewer than twice" in data["uncertainty_withheld"]
+
+
+@pytest.mark.parametrize("kind", ["polygon", "fringe"])
+def test_every_u_array_has_its_k_beside_it(kind, capsys, samples_dir, tmp_path):
+    """Beside every expanded_uncertainty_<name> its coverage_factor_<name> (audit cov76: the
+    fringe's offsets_v had its k only as parameters_coverage_factor, which stays), and the
+    polygon's reversal_arcsec its U: null with the reason where a direction has one set
+    (the sample: one set each way), as B and B̄."""
+    data = _analyze(capsys, samples_dir, kind, _details(samples_dir, kind), tmp_path)
+    # the arrays' (a single parameter's U, the amplitude ratio's, has the table's k)
+    names = [key[len("expanded_uncertainty_"):] for key in data
+             if key.startswith("expanded_uncertainty_")
+             and isinstance(data.get(key[len("expanded_uncertainty_"):]), list)]
+    assert names
+    for name in names:
+        assert f"coverage_factor_{name}" in data, name
+    if kind == "fringe":
+        assert data["coverage_factor_offsets_v"] == data["parameters_coverage_factor"]
+    else:
+        assert "reversal_arcsec" in names and data["reversal_arcsec"] is not None
+        assert data["expanded_uncertainty_reversal_arcsec"] is None
+        assert data["coverage_factor_reversal_arcsec"] is None
+        assert data["reversal_uncertainty_reason"].startswith("one set per direction")

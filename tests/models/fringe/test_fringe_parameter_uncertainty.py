@@ -160,6 +160,10 @@ def test_json_states_the_u_the_certificate_prints():
             assert exact * (1 - 1e-12) <= expanded < exact + step * (1 + 1e-9)
     assert data["expanded_uncertainty_offsets_v"] == [data["sin_params"]["expanded_uncertainty_A0"],
                                                       data["cos_params"]["expanded_uncertainty_A0"]]
+    # its k beside it, as every U array's (issue 39; audit cov76: only under
+    # parameters_coverage_factor, which stays): the table's k
+    assert data["coverage_factor_offsets_v"] == data["parameters_coverage_factor"]
+    assert 1.9 < data["coverage_factor_offsets_v"] < 3.0
 
 
 def test_no_u_with_the_phase_estimated_and_the_fits_own_would_not_cover():
@@ -179,6 +183,8 @@ def test_no_u_with_the_phase_estimated_and_the_fits_own_would_not_cover():
         assert printed and all(u is None for _, u in printed.values())
         data = FRINGE.certified_json(result, metadata)
         assert data["expanded_uncertainty_quadrature_error_deg"] is None
+        assert data["expanded_uncertainty_offsets_v"] == [None, None]
+        assert data["coverage_factor_offsets_v"] is None  # the key there, null as its U
         assert all(data["sin_params"][f"expanded_uncertainty_{key}"] is None
                    for key in ("A0", "A1", "c1"))
         assert "phase was estimated from the signals" in data["parameters_uncertainty_withheld"]
