@@ -258,7 +258,7 @@
     <message>
         <source>positional deviation x = actual position − target (ISO 230-2), i.e. reference − indicated: the negative of an error of indication; compensation = −x</source>
         <extracomment>ISO 230-2&apos;s sign: x = actual − target. The axis&apos;s own scale indicates the target when it stops and the reference reads the actual position, so x = reference − indicated: the negative of an error of indication (the other workbenches&apos; sign).</extracomment>
-        <translation>位置偏差 x = 实际位置 − 目标位置（ISO 230-2），即 参考值 − 示值：为示值误差的负值；补偿值 = −x</translation>
+        <translation>位置偏差 x = 实际位置 − 目标位置（ISO 230-2），即“参考值 − 示值”：为示值误差的负值；补偿值 = −x</translation>
     </message>
     <message>
         <source>GB/T 17421.2-2016 (identical to ISO 230-2:2014)</source>
@@ -1054,9 +1054,9 @@
         <translation>每个方向仅测一组：反向差无法与各组之间传递的零点漂移及其读数噪声区分开；仅供参考，不是校准结果</translation>
     </message>
     <message>
-        <source>the uncertainty of the reversal (the zero drift carried between the sets and their reading noise enter it) is not evaluated; indicative, not a calibration result</source>
-        <extracomment>sets repeated in a direction: the drift carried and the noise could be told apart, but this version evaluates no uncertainty of the reversal</extracomment>
-        <translation>未评定反向差的不确定度（各组之间传递的零点漂移及其读数噪声计入其中）；仅供参考，不是校准结果</translation>
+        <source>no coverage interval is evaluated for the largest and the mean reversal over the faces (the zero drift carried between the sets and their reading noise enter them); indicative, not a calibration result</source>
+        <extracomment>sets repeated in a direction: each face&apos;s reversal has its U (the JSON&apos;s ``expanded_uncertainty_reversal_arcsec``, models.polygon.report.reversal_budget), but B, the largest over the faces, and B̄, their mean, have no interval evaluated</extracomment>
+        <translation>未对各面中最大反向差和平均反向差评定包含区间（测回间累积的零位漂移及其读数噪声计入其中）；仅供参考，不是校准结果</translation>
     </message>
     <message>
         <source>an amplitude is biased high by the readings&apos; noise, as a range is, and its uncertainty is not evaluated; indicative, not a calibration result</source>
@@ -1643,6 +1643,26 @@
     <message>
         <source>Corrected error of each set (set number, direction)</source>
         <translation>各测回的修正后误差（测回序号，方向）</translation>
+    </message>
+    <message>
+        <source>Faces read so far (set 1 in progress)</source>
+        <translation>已读取的面（第 1 测回进行中）</translation>
+    </message>
+    <message>
+        <source>encoder reading a (°)</source>
+        <translation>编码器读数 a（°）</translation>
+    </message>
+    <message>
+        <source>AC x (&quot;)</source>
+        <translation>自准直仪 x（&quot;）</translation>
+    </message>
+    <message>
+        <source>autocollimator x (set the number of faces for the error)</source>
+        <translation>自准直仪 x（设置面数后显示误差）</translation>
+    </message>
+    <message>
+        <source>raw error e (faces read so far)</source>
+        <translation>原始误差 e（已读取的面）</translation>
     </message>
     <message>
         <source>residual (&quot;)</source>
@@ -4431,7 +4451,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Cannot save the image</source>
-        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) the rows were changed in a window after the project file was last saved, before this one took them (recovered from its autosave: :meth:`readings_unsaved`) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41) the row the capture sends the next take to (the capture panel&apos;s, while its instruments are connected to this workbench; None: none): without an entry plan, it waits for its reading as the plan&apos;s row does (day review 64 P4)</extracomment>
+        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) by column index: the figure its blank cells show (Workbench.shown_in_blank, with the settings of now) and what to say of it the rows were changed in a window after the project file was last saved, before this one took them (recovered from its autosave: :meth:`readings_unsaved`) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41) the row the capture sends the next take to (the capture panel&apos;s, while its instruments are connected to this workbench; None: none): without an entry plan, it waits for its reading as the plan&apos;s row does (day review 64 P4)</extracomment>
         <translation>无法保存图像</translation>
     </message>
     <message>
@@ -4564,8 +4584,12 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>a take&apos;s reading that does not match its row&apos;s point (another face, another target) the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip cells a take filled with a reading that does not match its row&apos;s point (the table at another face, the axis at another target: live76 F1), with the text the take wrote and what to say of it: drawn apart, the words in their tooltip, while the cell holds that text (undone, retyped or taken again, the mark goes). Rows inserted or removed above move them the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) with no :attr:`origin_step` (the origin is the sheet&apos;s as it was opened: a project&apos;s record of it, models/certificate/stored_origin.py), whether the rows were edited before, and the rows pasted before (0-based, as opened) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan)</extracomment>
+        <extracomment>a row the analysis left out (positioning&apos;s reading of another position): a shade that stands apart from the alternate rows&apos; and the closures&apos; at any scale, black text on it still readable (gui77: the muted shade of a closure row was barely seen at 1280 × 720) the text of a figure shown in a blank cell and worked out from its row (positioning&apos;s measured − target): greyed, as no one typed it; still readable on every background a take&apos;s reading that does not match its row&apos;s point (another face, another target) the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) rows the analysis left out (its warnings say why): shaded clearly, and said so in their cells&apos; tooltip cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip cells a take filled with a reading that does not match its row&apos;s point (the table at another face, the axis at another target: live76 F1), with the text the take wrote and what to say of it: drawn apart, the words in their tooltip, while the cell holds that text (undone, retyped or taken again, the mark goes). Rows inserted or removed above move them the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) with no :attr:`origin_step` (the origin is the sheet&apos;s as it was opened: a project&apos;s record of it, models/certificate/stored_origin.py), whether the rows were edited before, and the rows pasted before (0-based, as opened) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan) the figure a blank cell (row, column) shows, worked out from its row, with what to say of it (the presenter&apos;s: Workbench.shown_in_blank), or None: shown, greyed, never written into the sheet (the editor opens on the sheet&apos;s blank text) the columns whose blank cells may show such a figure (repainted with every change)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
+    </message>
+    <message>
+        <source>Row {row} is left out of the analysis; the warnings above the result say why</source>
+        <translation>第 {row} 行不参与分析；原因见结果上方的警告</translation>
     </message>
     <message>
         <source>Edit row {row}</source>
@@ -6839,6 +6863,19 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>与 T 比较：{value}，即结果修约到 T 所述的最后一位与 U 的最后一位中较细的一位（ASTM E29 §6.4 修约到 T 的最后一位；U 较细的一位予以保留）。</translation>
     </message>
     <message>
+        <source>Accepted under simple acceptance (no guard band): the result lies within ±{t} (pass).</source>
+        <extracomment>a rule&apos;s own sentences where the general ones above would not be true beside the probability printed after them (assessment 76 L4: a guarded binary &quot;fail&quot; said &quot;The item does not conform&quot; beside an 84.75 % probability that it conforms). Simple acceptance (ILAC-G8 4.2.1) accepts or rejects on the result alone, with up to 50 % probability of a wrong decision either way; the binary rule with a guard band (4.2.2) rejects within the guard band too, where conformity is only not proven. Each says where the result lies and what the rule does with it, nothing the probability beside it contradicts. They are said of a result within the guard band only: a pass or fail beyond it, the guarded rule&apos;s, is proven at the stated coverage probability under any rule and said as the general sentences say it (:func:`_sentence_key`).</extracomment>
+        <translation>按简单接受规则（无保护带）接受：结果在 ±{t} 以内（合格）。</translation>
+    </message>
+    <message>
+        <source>Not accepted under simple acceptance (no guard band): the result lies beyond ±{t} (fail).</source>
+        <translation>按简单接受规则（无保护带）不接受：结果超出 ±{t}（不合格）。</translation>
+    </message>
+    <message>
+        <source>Not accepted (fail): the result lies beyond the acceptance limit, T less the guard band, in the rejection zone of the binary rule, which includes the guard band; conformity to the specification ±{t} is not proven at the stated coverage probability.</source>
+        <translation>不接受（不合格）：结果超出接受限（T 减去保护带），位于二元规则的拒绝区内，该区包含保护带；在所述包含概率下未能证明符合技术要求 ±{t}。</translation>
+    </message>
+    <message>
         <source>No statement of conformity is possible: the interval&apos;s upper half-width U₊ = {u}, which guards acceptance, is not smaller than the tolerance T = {t}, so no result could be shown to lie within it.</source>
         <translation>无法作符合性声明：用于保护接受判定的区间上半宽 U₊ = {u} 不小于允差 T = {t}，任何结果都不能证明在其范围以内。</translation>
     </message>
@@ -7215,7 +7252,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>{source}: damaged project file (line {lineno}, column {colno}: {msg}); nothing was changed</source>
-        <extracomment>the metadata key of a certificate&apos;s project state (the register&apos;s record) that holds where its readings came from, as the certificate names them (&quot;Readings: …&quot;): an amendment opened from the register names the same source (rev62 F4) where the rows came from, as the file keeps it (``readings_origin``: see the module&apos;s note; None: not recorded, a file written before it was) workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional what was repaired as the file was read (each a sentence naming the place), not saved SHA-256 (hex) of the file&apos;s bytes as read by :func:`load_project` (&quot;&quot; otherwise): the version a save must not replace unasked when it was changed since</extracomment>
+        <extracomment>the metadata key of a certificate&apos;s project state (the register&apos;s record) that holds where its readings came from, as the certificate names them (&quot;Readings: …&quot;): an amendment opened from the register names the same source (rev62 F4) where the rows came from, as the file keeps it (``readings_origin``: see the module&apos;s note; None: not recorded, a file written before it was) the readings table&apos;s cell marks as the file keeps them (``cell_marks``: models/project/cell_marks.py; empty: none, or a file written before they were kept) workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional what was repaired as the file was read (each a sentence naming the place), not saved SHA-256 (hex) of the file&apos;s bytes as read by :func:`load_project` (&quot;&quot; otherwise): the version a save must not replace unasked when it was changed since</extracomment>
         <translation>{source}：项目文件已损坏（第 {lineno} 行，第 {colno} 列：{msg}）；未作任何更改</translation>
     </message>
     <message>
@@ -7727,7 +7764,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>Coverage study of the positioning figures (ISO 230-2 / GB/T 17421.2 A, E, M, R, B, B̄ and their one-direction forms; VDI/DGQ 3441 P, Ps, Pa, U): simulated axes (models/validation/axis_figures_rig.py) with a known systematic deviation curve (smooth pitch error, every harmonic the targets resolve, one spike, the bundled sample&apos;s curve), a known reversal and a known repeatability (constant, or ±50 % along the axis; the backward 10 % larger) of 0.1, 0.5 and 2 × the signal, 12 and 72 targets, 5 runs each way by the standard test cycle, each test through the whole analysis. A figure&apos;s truth is the figure of the true distribution as the standard defines it. It passes when no more tests missed than a correct interval at the probability printed beside the figure would miss in 99 studies of 100 (binomial test); the probability printed is the one the full study reached where that is below the one asked for. Its mean width is stated as a multiple of the width a correct interval needs (2z × the spread of measured − truth over the same tests); 1.6 × is the aim.</source>
-        <translation>定位指标的包含研究（ISO 230-2 / GB/T 17421.2 的 A、E、M、R、B、B̄ 及其单向形式；VDI/DGQ 3441 的 P、Ps、Pa、U）：仿真轴（models/validation/axis_figures_rig.py）具有已知的系统偏差曲线（平滑的螺距误差、目标位置可分辨的全部谐波、一个尖峰、随附样例的曲线）、已知的反向差值和已知的重复性（恒定，或沿轴变化 ±50 %；反向大 10 %），为信号的 0.1、0.5 和 2 倍，12 和 72 个目标位置，按标准检验循环每个方向 5 次，每次检验都经完整分析。指标的真值是按标准定义、由真实分布计算的指标。当未包含真值的检验次数不多于按指标旁所印概率的正确区间在 100 次研究中 99 次不会超过的次数（二项检验）时判为通过；当研究达到的概率低于要求的概率时，所印的是全面研究达到的概率。其平均宽度以正确区间所需宽度的倍数给出（同一批检验中 测得值 − 真值 分散性的 2z 倍）；目标为 1.6 倍。</translation>
+        <translation>定位指标的包含研究（ISO 230-2 / GB/T 17421.2 的 A、E、M、R、B、B̄ 及其单向形式；VDI/DGQ 3441 的 P、Ps、Pa、U）：仿真轴（models/validation/axis_figures_rig.py）具有已知的系统偏差曲线（平滑的螺距误差、目标位置可分辨的全部谐波、一个尖峰、随附样例的曲线）、已知的反向差值和已知的重复性（恒定，或沿轴变化 ±50 %；反向大 10 %），为信号的 0.1、0.5 和 2 倍，12 和 72 个目标位置，按标准检验循环每个方向 5 次，每次检验都经完整分析。指标的真值是按标准定义、由真实分布计算的指标。当未包含真值的检验次数不多于按指标旁所印概率的正确区间在 100 次研究中 99 次不会超过的次数（二项检验）时判为通过；当研究达到的概率低于要求的概率时，所印的是全面研究达到的概率。其平均宽度以正确区间所需宽度的倍数给出（同一批检验中“测得值 − 真值”分散性的 2z 倍）；目标为 1.6 倍。</translation>
     </message>
     <message>
         <source>pass</source>
@@ -8504,8 +8541,32 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{quantity}：对除倾角外的全部输入量作蒙特卡罗，{trials} 次试验，种子 {seed}</translation>
     </message>
     <message>
+        <source>the sets of a direction read alike at every face: their scatter, which the reversal&apos;s uncertainty is taken from, cannot be told</source>
+        <extracomment>the inputs of the mean over the sets that one set carries √m-fold (their templates) the repeated sets read alike at every face: no scatter to take the reversal&apos;s U from</extracomment>
+        <translation>同一方向的各测回在每个面上读数相同：无法得出其离散，而反向差的不确定度正是由该离散求得</translation>
+    </message>
+    <message>
+        <source>no reversal: one direction only was measured</source>
+        <translation>无反向差：只测量了一个方向</translation>
+    </message>
+    <message>
+        <source>Reading noise of the two directions&apos; means</source>
+        <translation>两个方向平均值的读数噪声</translation>
+    </message>
+    <message>
+        <source>σ = {s} of one error from the sets&apos; scatter ({dof} degrees of freedom), times √(1/{up} + 1/{down})</source>
+        <translation>由各测回离散求得的单个误差 σ = {s}（自由度 {dof}），乘以 √(1/{up} + 1/{down})</translation>
+    </message>
+    <message>
+        <source>one unknown offset per set (standard deviation {s} of a set&apos;s, {dof} degrees of freedom), times √(1/{up} + 1/{down}): the same at every face</source>
+        <translation>每个测回一个未知偏移（单个测回偏移的标准偏差 {s}，自由度 {dof}），乘以 √(1/{up} + 1/{down})：在每个面上都相同</translation>
+    </message>
+    <message>
+        <source>each set&apos;s own drift left within it, up to {d}, times √(1/{up} + 1/{down})</source>
+        <translation>每个测回内残留的自身漂移，至多 {d}，乘以 √(1/{up} + 1/{down})</translation>
+    </message>
+    <message>
         <source>no direction was measured twice; in U the forward set&apos;s errors minus the reverse set&apos;s, about their mean reversal, stand for it (the encoder&apos;s and the autocollimator&apos;s reading noise together)</source>
-        <extracomment>the inputs of the mean over the sets that one set carries √m-fold (their templates)</extracomment>
         <translation>没有方向被测量两次；U 中以正向测回误差减反向测回误差对其平均反向差的离散代替（编码器与自准直仪读数噪声合计）</translation>
     </message>
     <message>
@@ -10811,7 +10872,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>face deviation d_i = the face&apos;s angle − its nominal (actual − nominal), i.e. reference − indicated, as a material measure indicates its nominal value (VIM 3.6): the negative of an error of indication; the face&apos;s angle = nominal + d_i</source>
         <extracomment>the largest tilt of the polygon on the shaft the budget takes for a mounting without vertical readings when none is stated (the setting ``tilt_bound_arcsec``, ″): printed as the program&apos;s default, not as the laboratory&apos;s figure The polygon&apos;s face deviation is signed actual − nominal, the sign its certificate feeds the polygon workbench with (dev_i in b_i = (i−1)·360°/n + dev_i). A material measure indicates its nominal value (VIM 3.6), so d_i = actual − indicated: the negative of an error of indication, an exception to the other workbenches&apos; sign stated as positioning states its own. The encoder&apos;s error of the same run keeps error = indicated − reference.</extracomment>
-        <translation>面偏差 d_i = 工作面的角度 − 其标称值（实际值 − 标称值），即 参考值 − 示值，因实物量具的示值即其标称值（VIM 3.6）：为示值误差的负值；工作面的角度 = 标称值 + d_i</translation>
+        <translation>面偏差 d_i = 工作面的角度 − 其标称值（实际值 − 标称值），即“参考值 − 示值”，因实物量具的示值即其标称值（VIM 3.6）：为示值误差的负值；工作面的角度 = 标称值 + d_i</translation>
     </message>
     <message>
         <source>full rosette, 24 faces, σ = 0.02&quot;: u = σ√(n − 1)/n (Estler)</source>
@@ -13536,6 +13597,11 @@ Replace it?</source>
     <message>
         <source>{flag}{path} cannot be written ({reason}); nothing was written there</source>
         <translation>{flag}{path} 无法写入（{reason}）；未在该处写入任何内容</translation>
+    </message>
+    <message>
+        <source>measured − target in the deviation unit, as the analysis takes it (shown, not typed: typing a deviation replaces it)</source>
+        <extracomment>what the table says of a deviation it shows and no one typed (its tooltip)</extracomment>
+        <translation>以偏差单位表示的“测量值 − 目标值”，即分析所采用的值（仅显示，未录入：录入偏差将替换它）</translation>
     </message>
 </context>
 </TS>
