@@ -1,0 +1,125 @@
+"""hostile77 F1, F2: no output replaces readings kept in a file that is neither an input nor
+the open project — an AngleBench project (readings as typed, details) or a capture's journal
+(the readings of a capture that did not end, which the next capture into its output
+recovers). ``analyze --table``/``--results`` and ``register export --overwrite`` named over
+one replaced it, exit 0, no word; the kind check judges no output that writes text."""
+
+from __future__ import annotations
+
+import hashlib
+
+import pytest
+
+from app.main import main
+from models.capture.journal import CaptureJournal, journal_path, read_journal
+from models.project.atomic_write import write_bytes_atomic
+from models.project.output_guard import OutputRefused, check_output
+from models.register.store import Register
+
+
+def _digest(path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+@pytest.fixture
+def register(tmp_path, monkeypatch):
+    """An empty register of the test's own, the one the commands use."""
+    path = tmp_path / "reg" / "register.sqlite"
+    path.parent.mkdir()
+    monkeypatch.setenv("ANGLEBENCH_REGISTER", str(path))
+    Register(f"sqlite:///{path}").close()
+    return path
+
+
+@pytest.fixture
+def project(tmp_path):
+    """A project file of typed readings, open nowhere (as an older version wrote it too:
+    its first key on a line of its own)."""
+    path = tmp_path / "Tuesday.anglebench.json"
+    path.write_text('{\n "format": "anglebench-project",\n "schema_version": 2,\n'
+                    ' "workbenches": {"positioning": {"rows": [["0", "0.0012"]]}}\n}\n',
+                    encoding="utf-8")
+    return path
+
+
+@pytest.fixture
+def journal(tmp_path):
+    """The journal a capture into ac.csv left when it was killed: 3 readings in it."""
+    path = journal_path(tmp_path / "ac.csv")
+    kept = CaptureJournal(path, ("time_s", "ac_x_arcsec", "ac_y_arcsec"),
+                          {"instrument": "autocollimator", "out": str(tmp_path / "ac.csv")})
+    for i in range(3):
+        kept.frame(0.1 * i, b"3 003 12.5 -3.2", True)
+        kept.reading([0.1 * i, 12.5, -3.2])
+    kept.close()  # killed: never removed
+    return path
+
+
+@pytest.mark.parametrize("flag", ["--table", "--results"])
+def test_analyze_refuses_a_table_or_results_over_a_project(register, project, samples_dir,
+                                                           flag, capsys):
+    before = _digest(project)
+    sample = str(samples_dir / "positioning_sample.csv")
+    assert main(["analyze", "positioning", sample, flag, str(project)]) == 2
+    err = capsys.readouterr().err
+    assert f"{flag} {project} is an AngleBench project" in err, err
+    assert "nothing was written" in err
+    assert _digest(project) == before
+
+
+@pytest.mark.parametrize("flag", ["--table", "--results"])
+def test_analyze_refuses_a_table_or_results_over_a_capture_journal(register, journal, samples_dir,
+                                                                   flag, capsys):
+    before = _digest(journal)
+    sample = str(samples_dir / "positioning_sample.csv")
+    assert main(["analyze", "positioning", sample, flag, str(journal)]) == 2
+    err = capsys.readouterr().err
+    assert f"{flag} {journal} is a capture's journal" in err, err
+    assert _digest(journal) == before
+    assert len(read_journal(journal).readings) == 3  # still there for the next capture
+
+
+def test_export_overwrite_spares_a_project_and_a_journal(register, project, journal, capsys):
+    for target in (project, journal):
+        before = _digest(target)
+        assert main(["register", "export", str(target), "--overwrite"]) == 2
+        err = capsys.readouterr().err
+        assert "nothing was written" in err, err
+        assert _digest(target) == before
+
+
+def test_a_project_is_replaced_by_a_project_only(project, tmp_path):
+    # register show --project writes a project: over a project, as the window's Save as
+    check_output(project, [], "--project")
+    for flag in ("--table", "--results", "--certificate", "OUT.zip", ""):
+        with pytest.raises(OutputRefused, match="is an AngleBench project"):
+            check_output(project, [], flag)
+    # a project through a symbolic link is found too
+    link = tmp_path / "link.csv"
+    link.symlink_to(project)
+    with pytest.raises(OutputRefused, match="is an AngleBench project"):
+        check_output(link, [], "--table")
+    # the window's Save writes a project over its file: the last line lets it
+    write_bytes_atomic(project, b'{"format": "anglebench-project", "schema_version": 2}')
+    assert project.read_bytes().startswith(b'{"format"')
+
+
+def test_no_write_replaces_a_capture_journal_whoever_asks(journal):
+    before = _digest(journal)
+    for flag in ("--project", "--table", ""):
+        with pytest.raises(OutputRefused, match="is a capture's journal"):
+            check_output(journal, [], flag)
+    with pytest.raises(OutputRefused, match="is a capture's journal"):
+        write_bytes_atomic(journal, b"x\n")  # the last line, for a writer not told of it
+    assert _digest(journal) == before
+
+
+def test_other_text_is_replaced_as_before(tmp_path):
+    # a CSV of an earlier table, a JSON that is no project: replaced as before
+    for name, text in (("t.csv", "target,compensation\n0,1\n"),
+                       ("p.json", '{"format": "other", "anglebench-project": 1}\n')):
+        path = tmp_path / name
+        path.write_text(text, encoding="utf-8")
+        check_output(path, [], "--table")
+        write_bytes_atomic(path, b"new\n")
+        assert path.read_bytes() == b"new\n"
