@@ -435,6 +435,8 @@ class Register:
                 if path and path != ":memory:":
                     self._sqlite_path = path
                     file = Path(path)
+                    if _emptied(file):
+                        raise RegisterTampered(self._emptied())
                     if file.exists() and not (os.access(file, os.W_OK)
                                               and os.access(file.parent, os.W_OK)):
                         self.read_only = True
@@ -481,6 +483,16 @@ class Register:
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {exc}"),
                 display_url=self.display_url, exc=reason_of(exc))) from None
+
+    def _emptied(self) -> Message:
+        return message(QT_TR_NOOP(
+            "register {display_url}: the file is empty (0 bytes), but a register holds its "
+            "tables from the moment it is made: its records were lost (the file emptied or "
+            "truncated: a crash, a disk fault, a command that wrote over it); nothing is read "
+            "from it or issued into it, as numbers already issued would be issued again: "
+            "restore the register from a backup, then record the loss with 'anglebench "
+            "register acknowledge-loss'; if no certificate was ever issued into it, delete "
+            "the file"), display_url=self.display_url)
 
     def _read_only_uri(self, file: Path) -> str:
         """The URI a register this user cannot write is opened by (rev65 F2). SQLite keeps
@@ -3301,6 +3313,28 @@ def _is_busy(error: object) -> bool:
 def _reason(exc: Exception) -> str:
     text = str(getattr(exc, "orig", None) or exc).strip().splitlines()
     return text[0] if text else type(exc).__name__
+
+
+def _emptied(file: Path) -> bool:
+    """Whether the SQLite register ``file`` exists and is empty (0 bytes), with nothing in
+    its ``-wal`` journal either: records lost, never a register AngleBench made, which has
+    its header (4096 bytes) as soon as it is opened (``PRAGMA journal_mode=WAL`` writes it)
+    and its tables in the transaction that made it. SQLite reads such a file as a new,
+    empty database: "hash chain intact over 0 record(s)", and the next certificate numbered
+    1 again (hostile77 F3)."""
+    import os
+    import stat
+
+    try:
+        st = os.stat(file)
+    except (OSError, ValueError):
+        return False  # not there: made by the first certificate (or refused as missing)
+    if not stat.S_ISREG(st.st_mode) or st.st_size:
+        return False
+    try:
+        return os.stat(f"{file}-wal").st_size == 0
+    except (OSError, ValueError):
+        return True
 
 
 def _sqlite_connect(dbapi_connection, _record) -> None:
