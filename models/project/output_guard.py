@@ -30,7 +30,7 @@ from models.project.file_kind import file_kind
 
 __all__ = ["OutputRefused", "Protected", "check_output", "check_outputs", "input_files",
            "open_project", "refuse_capture_journal", "refuse_database", "refuse_kept_readings",
-           "refuse_other_kind", "refuse_other_kinds", "refuse_unwritable",
+           "refuse_other_kind", "refuse_other_kinds", "refuse_pem", "refuse_unwritable",
            "register_files", "same_file", "sqlite_path_of_url"]
 
 #: the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal),
@@ -57,6 +57,12 @@ _CAPTURE_JOURNAL_MAGIC = b"# anglebench capture journal"
 #: an AngleBench project (models/project/file.py's FORMAT_NAME), as every version writes its
 #: first key; an autosave is one too
 _PROJECT_FORMAT = re.compile(rb'\A\s*\{\s*"format"\s*:\s*"anglebench-project"')
+#: the variable naming the laboratory's register key (models/register/signing.py's
+#: KEY_ENV_VAR; not imported: the register's modules import this one)
+REGISTER_KEY_ENV_VAR = "ANGLEBENCH_REGISTER_KEY"
+#: how a PEM file starts (a private key, a certificate: the DCC's signing key and
+#: certificates, a lab's TLS files): no output of AngleBench is one
+_PEM_BEGIN = re.compile(rb"\A\s*-----BEGIN [A-Z0-9 ]+-----")
 #: the outputs that write a project (``register show --project``): a project they name is
 #: replaced by a project, as the window's Save as does
 PROJECT_FLAGS = frozenset(("--project",))
@@ -262,6 +268,7 @@ def check_output(path: str | os.PathLike[str] | None, protected: Sequence[Protec
     refuse_database(path)
     refuse_kept_readings(path, flag)
     refuse_register_key(path, flag)
+    refuse_pem(path, flag)
     refuse_unwritable(path, flag)
 
 
@@ -317,12 +324,28 @@ def refuse_register_key(path: str | os.PathLike[str], flag: str = "") -> None:
     mark = folder.name.endswith(HIGH_WATER_SUFFIX) and \
         os.path.isfile(folder.parent / folder.name[: -len(HIGH_WATER_SUFFIX)])
     key = os.path.isdir(resolved.parent / f"{resolved.name}{HIGH_WATER_SUFFIX}")
+    # the key named, before its first signed write made the folder beside it (hostile77 F4:
+    # `--results lab.key` replaced a new key with a CSV, which then signed as the key)
+    named = os.environ.get(REGISTER_KEY_ENV_VAR, "").strip()
+    key = key or bool(named and same_file(path, named))
     if mark or key:
         raise OutputRefused(message(QT_TR_NOOP(
             "{flag}{out} is the certificate register's {what}; nothing was written: choose "
             "another name"), flag=f"{flag} " if flag else "", out=os.fspath(path),
             what=message(QT_TR_NOOP("high-water mark")) if mark else message(
                 QT_TR_NOOP("laboratory key"))))
+
+
+def refuse_pem(path: str | os.PathLike[str], flag: str = "") -> None:
+    """Raise OutputRefused when ``path`` (after links) holds a PEM file — the DCC's signing
+    key, its certificate, a trusted certificate, wherever they are named (the environment,
+    the window's settings) —: no output of AngleBench is one, and a private key replaced is
+    lost for good (hostile77 F4: ``--results`` and ``--table`` replaced the DCC signing key
+    named by ANGLEBENCH_DCC_SIGNING_KEY)."""
+    if _PEM_BEGIN.match(_head(path, 256)):
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out} is a key or a certificate (PEM); nothing was written: choose "
+            "another name"), flag=f"{flag} " if flag else "", out=os.fspath(path)))
 
 
 def refuse_unwritable(path: str | os.PathLike[str], flag: str = "") -> None:
