@@ -476,6 +476,9 @@ class Register:
                 raise RegisterError(self._unread_journal()) from None
             if self._full(exc):  # reg72 #7: on opening, its WAL index could not be made
                 raise RegisterError(self._disk_full()) from None
+            damaged = self._damaged(exc)
+            if damaged is not None:
+                raise RegisterError(damaged) from None
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -483,6 +486,29 @@ class Register:
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {exc}"),
                 display_url=self.display_url, exc=reason_of(exc))) from None
+
+    def _damaged(self, exc: Exception) -> Message | None:
+        """What to do with a SQLite register file that is a folder, or that SQLite finds
+        damaged or no database at all (hostile77 M1: only SQLite's words were said, "database
+        disk image is malformed", "unable to open database file"); None for any other
+        failure."""
+        import os
+
+        code = getattr(getattr(exc, "orig", None), "sqlite_errorcode", None)
+        if not self.is_sqlite or not self._sqlite_path:
+            return None
+        if os.path.isdir(self._sqlite_path):
+            return message(QT_TR_NOOP(
+                "register {display_url} is a folder, not a register file: nothing was read "
+                "or recorded; name the register's file (--register or ANGLEBENCH_REGISTER)"),
+                display_url=self.display_url)
+        if code not in (_SQLITE_CORRUPT, _SQLITE_NOTADB):
+            return None
+        return message(QT_TR_NOOP(
+            "register {display_url}: the file is damaged or is not a register ({reason}); "
+            "nothing is read from it or issued into it: keep it as it is, restore the "
+            "register from a backup, then record the loss with 'anglebench register "
+            "acknowledge-loss'"), display_url=self.display_url, reason=_reason(exc))
 
     def _emptied(self) -> Message:
         return message(QT_TR_NOOP(
@@ -647,7 +673,7 @@ class Register:
         except self._sa.exc.SQLAlchemyError as exc:
             if self._full(exc):  # a new connection's WAL index could not be made (reg72 #7)
                 raise RegisterError(self._disk_full()) from None
-            raise RegisterError(message(
+            raise RegisterError(self._damaged(exc) or message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
 
@@ -3308,6 +3334,10 @@ def _is_busy(error: object) -> bool:
     """SQLite's SQLITE_BUSY ("database is locked"): another connection holds the lock."""
     return getattr(error, "sqlite_errorname", "").startswith("SQLITE_BUSY") or (
         "database is locked" in str(error or ""))
+
+
+#: SQLite's result codes of a file it finds damaged, or that is no database
+_SQLITE_CORRUPT, _SQLITE_NOTADB = 11, 26
 
 
 def _reason(exc: Exception) -> str:
