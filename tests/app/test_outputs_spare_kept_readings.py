@@ -123,3 +123,24 @@ def test_other_text_is_replaced_as_before(tmp_path):
         check_output(path, [], "--table")
         write_bytes_atomic(path, b"new\n")
         assert path.read_bytes() == b"new\n"
+
+
+def test_a_raw_named_as_the_captures_own_journal_is_kept_beside_it(tmp_path, capsys):
+    # `capture --out a.csv --raw a.csv.capture-journal.csv --overwrite`: the raw lines were
+    # written over the journal, which was then removed as done: the instrument's output
+    # gone, exit 0, "3 readings written"
+    from tests.instrument_simulators import AutocollimatorSimulator
+
+    out = tmp_path / "a.csv"
+    raw = journal_path(out)
+    with AutocollimatorSimulator("pty", positions=[(12.5, -3.25)]) as sim:
+        assert main(["capture", "autocollimator", sim.port, "--readings", "3", "--out",
+                     str(out), "--raw", str(raw), "--overwrite", "--silence", "0.2",
+                     "--retries", "1", "--language", "en"]) == 0
+    err = capsys.readouterr().err
+    assert f"{raw} is a capture's journal" in err, err
+    kept = [p for p in tmp_path.iterdir() if ".captured-" in p.name]
+    assert len(kept) == 1 and f"written to {kept[0]} instead" in err
+    lines = kept[0].read_text(encoding="utf-8").splitlines()
+    assert lines[0].startswith("time_s") and len(lines) >= 4  # the header and its frames
+    assert not raw.exists()  # the journal removed once the outputs were written
