@@ -63,6 +63,12 @@ REGISTER_KEY_ENV_VAR = "ANGLEBENCH_REGISTER_KEY"
 #: how a PEM file starts (a private key, a certificate: the DCC's signing key and
 #: certificates, a lab's TLS files): no output of AngleBench is one
 _PEM_BEGIN = re.compile(rb"\A\s*-----BEGIN [A-Z0-9 ]+-----")
+#: how the readings and the raw lines `anglebench capture` writes start (app/capture/cli.py:
+#: their header's first column); no other output of AngleBench starts so
+_CAPTURE_OUTPUT = re.compile(rb"\A(?:\xef\xbb\xbf)?time_s,")
+#: the outputs that write a capture's readings or raw lines (``capture --out/--raw``, which
+#: replace an earlier capture's only with --overwrite)
+CAPTURE_FLAGS = frozenset(("--out", "--raw"))
 #: the outputs that write a project (``register show --project``): a project they name is
 #: replaced by a project, as the window's Save as does
 PROJECT_FLAGS = frozenset(("--project",))
@@ -298,15 +304,22 @@ def refuse_capture_journal(path: str | os.PathLike[str], flag: str = "") -> None
 
 def refuse_kept_readings(path: str | os.PathLike[str], flag: str = "") -> None:
     """Raise OutputRefused when ``path`` (after links) holds readings that an output would
-    replace with no way back: a capture's journal (:func:`refuse_capture_journal`), or an
-    AngleBench project — readings as typed, details — unless ``flag`` writes a project
+    replace with no way back: a capture's journal (:func:`refuse_capture_journal`), the
+    readings or raw lines a capture wrote unless ``flag`` writes them (:data:`CAPTURE_FLAGS`),
+    or an AngleBench project — readings as typed, details — unless ``flag`` writes a project
     (:data:`PROJECT_FLAGS`). hostile77 F1: ``analyze --table p.anglebench.json`` replaced a
     project (not open anywhere) with a compensation table, exit 0, no word; the kind check
     (:func:`refuse_other_kind`) judges no output that writes text."""
     refuse_capture_journal(path, flag)
+    head = _head(path)
+    if flag not in CAPTURE_FLAGS and _CAPTURE_OUTPUT.match(head):
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out} holds readings captured from an instrument ('anglebench capture'): "
+            "they would be replaced with no way back; nothing was written: choose another "
+            "name"), flag=f"{flag} " if flag else "", out=os.fspath(path)))
     if flag in PROJECT_FLAGS:
         return
-    if _PROJECT_FORMAT.match(_head(path).lstrip(b"\xef\xbb\xbf")):
+    if _PROJECT_FORMAT.match(head.lstrip(b"\xef\xbb\xbf")):
         raise OutputRefused(message(QT_TR_NOOP(
             "{flag}{out} is an AngleBench project: its readings and details would be "
             "replaced with no way back; nothing was written: choose another name"),

@@ -144,3 +144,25 @@ def test_a_raw_named_as_the_captures_own_journal_is_kept_beside_it(tmp_path, cap
     lines = kept[0].read_text(encoding="utf-8").splitlines()
     assert lines[0].startswith("time_s") and len(lines) >= 4  # the header and its frames
     assert not raw.exists()  # the journal removed once the outputs were written
+
+
+def test_results_spare_a_captures_readings_which_a_capture_replaces_with_overwrite(
+        register, tmp_path, samples_dir, capsys):
+    # Monday's capture, no input of this run: `--results monday.csv` replaced it, exit 0
+    monday, raw = tmp_path / "monday.csv", tmp_path / "monday.raw.csv"
+    monday.write_text("time_s,ac_x_arcsec,ac_y_arcsec\n0.5,12.5,-3.25\n", encoding="utf-8")
+    raw.write_text("\ufefftime_s,reading,line\n0.5,1,3 003 12.5 -3.25\n", encoding="utf-8")
+    sample = str(samples_dir / "positioning_sample.csv")
+    for target in (monday, raw):
+        before = _digest(target)
+        assert main(["analyze", "positioning", sample, "--results", str(target)]) == 2
+        err = capsys.readouterr().err
+        assert f"--results {target} holds readings captured from an instrument" in err, err
+        assert _digest(target) == before
+    # the capture's own outputs replace them (with --overwrite: its own rule)
+    check_output(monday, [], "--out")
+    check_output(raw, [], "--raw")
+    # an earlier results file is replaced as before
+    earlier = tmp_path / "r.csv"
+    assert main(["analyze", "positioning", sample, "--results", str(earlier)]) == 0
+    assert main(["analyze", "positioning", sample, "--results", str(earlier)]) == 0
