@@ -30,7 +30,8 @@ from models.project.file_kind import file_kind
 
 __all__ = ["OutputRefused", "Protected", "check_output", "check_outputs", "input_files",
            "open_project", "refuse_capture_journal", "refuse_database", "refuse_kept_readings",
-           "refuse_other_kind", "refuse_other_kinds", "refuse_pem", "refuse_unwritable",
+           "refuse_other_kind", "refuse_other_kinds", "refuse_other_project", "refuse_pem",
+           "refuse_unwritable",
            "register_files", "same_file", "sqlite_path_of_url"]
 
 #: the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal),
@@ -320,10 +321,32 @@ def refuse_kept_readings(path: str | os.PathLike[str], flag: str = "") -> None:
     if flag in PROJECT_FLAGS:
         return
     if _PROJECT_FORMAT.match(head.lstrip(b"\xef\xbb\xbf")):
-        raise OutputRefused(message(QT_TR_NOOP(
-            "{flag}{out} is an AngleBench project: its readings and details would be "
-            "replaced with no way back; nothing was written: choose another name"),
-            flag=f"{flag} " if flag else "", out=os.fspath(path)))
+        raise _project_refused(path, flag)
+
+
+def _project_refused(path: str | os.PathLike[str], flag: str) -> OutputRefused:
+    return OutputRefused(message(QT_TR_NOOP(
+        "{flag}{out} is an AngleBench project: its readings and details would be "
+        "replaced with no way back; nothing was written: choose another name"),
+        flag=f"{flag} " if flag else "", out=os.fspath(path)))
+
+
+def refuse_other_project(path: str | os.PathLike[str], data: bytes,
+                         flag: str = "--project") -> None:
+    """Raise OutputRefused when ``path`` (after links) holds an AngleBench project other
+    than ``data``, the project a command-line output would write there: the command line
+    asks nothing, as the window's Save as does (hostile77: ``register show N --project
+    tuesday.anglebench.json`` replaced a day's typed project, exit 0). The same project
+    written again over itself changes nothing and is let be."""
+    if not _PROJECT_FORMAT.match(_head(path).lstrip(b"\xef\xbb\xbf")):
+        return
+    try:
+        with open(path, "rb") as handle:
+            same = handle.read() == data
+    except OSError:
+        return
+    if not same:
+        raise _project_refused(path, flag)
 
 
 def refuse_register_key(path: str | os.PathLike[str], flag: str = "") -> None:

@@ -166,3 +166,24 @@ def test_results_spare_a_captures_readings_which_a_capture_replaces_with_overwri
     earlier = tmp_path / "r.csv"
     assert main(["analyze", "positioning", sample, "--results", str(earlier)]) == 0
     assert main(["analyze", "positioning", sample, "--results", str(earlier)]) == 0
+
+
+@pytest.mark.usefixtures("pdf_stand_in")
+def test_show_project_spares_another_project_and_writes_its_own_again(
+        register, project, tmp_path, samples_dir, capsys):
+    meta = tmp_path / "meta.json"
+    meta.write_text((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8")
+                    .replace('"example": true', '"example": false'), encoding="utf-8")
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--metadata",
+                 str(meta), "--certificate", str(tmp_path / "c.pdf")]) == 0
+    number = Register(f"sqlite:///{register}").list("")[0].number
+    capsys.readouterr()
+    before = _digest(project)  # Tuesday's typed readings, another project
+    assert main(["register", "show", number, "--project", str(project)]) == 2
+    err = capsys.readouterr().err
+    assert f"--project {project} is an AngleBench project" in err, err
+    assert _digest(project) == before
+    own = tmp_path / "own.anglebench.json"
+    assert main(["register", "show", number, "--project", str(own)]) == 0
+    assert main(["register", "show", number, "--project", str(own)]) == 0  # the same again
+    assert own.read_bytes().startswith(b'{"format"')
