@@ -71,12 +71,13 @@ def _write_results(register: Register, record: CertificateRecord, path: str,
     from pathlib import Path
 
     from models.project.atomic_write import _mode_for, _temp_prefix
-    from models.project.output_guard import refuse_database
+    from models.project.output_guard import refuse_capture_journal, refuse_database
     from models.register.store import RegisterError
 
     target = Path(path)
     try:
         refuse_database(target)
+        refuse_capture_journal(target)  # nor a killed capture's readings (hostile77 F2)
         if target.is_symlink():
             target = target.resolve()
         clear_stale_beside(register, target)  # a killed save's leftovers (reg72 #11)

@@ -267,10 +267,11 @@ def written_beside(path: str | os.PathLike[str], data: bytes) -> tuple[Path, str
     import tempfile
 
     from models.project.atomic_write import _mode_for, _temp_prefix
-    from models.project.output_guard import refuse_database
+    from models.project.output_guard import refuse_capture_journal, refuse_database
 
     target = Path(path)
     refuse_database(target)
+    refuse_capture_journal(target)  # nor a killed capture's readings (hostile77 F2)
     if target.is_symlink():
         target = target.resolve()
     fd, temp = tempfile.mkstemp(prefix=_temp_prefix(target), suffix=".tmp", dir=target.parent)

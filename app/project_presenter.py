@@ -488,6 +488,12 @@ class ProjectPresenter(QObject):
             self._unsaved_since = time.monotonic()
             self.autosave_timer.start(self._autosave_delay_ms())
 
+    def autosave_now(self) -> None:
+        """Autosave at once, not a few seconds from now: a reading taken from an instrument
+        (app/capture/panel.py), which cannot be typed again (hostile77 M2)."""
+        self.autosave_timer.stop()
+        self.autosave()
+
     def _autosave_delay_ms(self) -> int:
         return AUTOSAVE_DELAY_LARGE_MS if self._rows() > AUTOSAVE_THREAD_ROWS else AUTOSAVE_DELAY_MS
 

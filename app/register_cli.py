@@ -66,6 +66,7 @@ from models.project.output_guard import (
     OutputRefused,
     check_outputs,
     refuse_other_kinds,
+    refuse_other_project,
     register_files,
 )
 from models.register.location import register_url
@@ -834,6 +835,9 @@ def run_register(argv: list[str]) -> int:
                                 if path and not _holds(path, register, record, flag)]):
                             _say(f"anglebench register: {rendered(said, words)}")  # kept
                         refuse_other_kinds(outputs)  # nor a file of another kind
+                        if args.project:  # nor a project of other readings
+                            refuse_other_project(args.project,
+                                                 record.project_json.encode("utf-8"))
                     except OutputRefused as exc:
                         _say(f"anglebench register: {rendered(reason_of(exc), words)}")
                         return EXIT_BAD_INPUT

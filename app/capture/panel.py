@@ -2036,6 +2036,12 @@ class CapturePanel(QDockWidget):
         finally:
             model.undo_stack.endMacro()
         self.update_guide()
+        # a take is on disk at once, as `anglebench capture` syncs each reading to its
+        # journal: it cannot be typed again, the instrument has moved on (hostile77 M2: a
+        # window killed within the autosave's few seconds lost it)
+        projects = getattr(self.window_, "projects", None)
+        if projects is not None and hasattr(projects, "autosave_now"):
+            projects.autosave_now()
         return f"row {row + 1}"
 
     def _not_placed(self, link: InstrumentLink) -> str:

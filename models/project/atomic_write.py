@@ -13,7 +13,7 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from models.project.durable_rename import fsync_directory, replace_durably
-from models.project.output_guard import refuse_database
+from models.project.output_guard import refuse_capture_journal, refuse_database
 
 __all__ = ["fsync_directory", "is_temporary_name", "stale_temporaries", "write_bytes_atomic",
            "write_text_atomic"]
@@ -92,8 +92,9 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[byte
     it, or on Windows a write-through rename, so the new name survives a power loss;
     where the folder cannot be fsync'ed the file is written all the same). On any error before the
     rename the temporary file is removed and the old file is left untouched. A target that is a
-    SQLite database or one of its journals (a certificate register) is refused
-    (OutputRefused, an OSError) before anything is written.
+    SQLite database or one of its journals (a certificate register), or a capture's journal
+    (the readings of a capture that did not end), is refused (OutputRefused, an OSError)
+    before anything is written.
 
     The temporary file is always a new file (mkstemp: created exclusively, O_EXCL, so a
     link or file planted at its random name is never written through). ``through_link``: a
@@ -104,6 +105,7 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[byte
     """
     target = Path(path)
     refuse_database(target)  # a certificate register is never an output (output_guard.py)
+    refuse_capture_journal(target)  # nor the readings of a capture that did not end
     if through_link and target.is_symlink():  # write through the link: it stays a link
         target = target.resolve()
     _remove_stale_temps(target)

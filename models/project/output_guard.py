@@ -1,6 +1,8 @@
 """Outputs that may not land on a file we must keep: the certificate register (its SQLite
 database and the journal, WAL and shared-memory files beside it), the inputs of the run and
-the project open in the window.
+the project open in the window; and, found by what they hold, a capture's journal (the
+readings of a capture that did not end) and an AngleBench project (readings typed, details),
+which no table, results file, certificate or archive replaces.
 
 Two files are the same when they resolve to the same file: a symbolic link is followed, and
 a hard link (another name of the same inode) is found by comparing ``st_dev``/``st_ino``.
@@ -17,6 +19,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import stat
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -26,7 +29,8 @@ from models.messages import QT_TR_NOOP, message
 from models.project.file_kind import file_kind
 
 __all__ = ["OutputRefused", "Protected", "check_output", "check_outputs", "input_files",
-           "open_project", "refuse_database", "refuse_other_kind", "refuse_other_kinds",
+           "open_project", "refuse_capture_journal", "refuse_database", "refuse_kept_readings",
+           "refuse_other_kind", "refuse_other_kinds", "refuse_other_project", "refuse_pem",
            "refuse_unwritable",
            "register_files", "same_file", "sqlite_path_of_url"]
 
@@ -48,6 +52,27 @@ HIGH_WATER_SUFFIX = ".high-water"
 #: orders of its magic number); the -shm file has no magic and is found by its name
 _SQLITE_MAGIC = (b"SQLite format 3\x00", bytes.fromhex("d9d505f920a163d7"),
                  bytes.fromhex("377f0682"), bytes.fromhex("377f0683"))
+
+#: the first line of a capture journal (models/capture/journal.py's header, any version)
+_CAPTURE_JOURNAL_MAGIC = b"# anglebench capture journal"
+#: an AngleBench project (models/project/file.py's FORMAT_NAME), as every version writes its
+#: first key; an autosave is one too
+_PROJECT_FORMAT = re.compile(rb'\A\s*\{\s*"format"\s*:\s*"anglebench-project"')
+#: the variable naming the laboratory's register key (models/register/signing.py's
+#: KEY_ENV_VAR; not imported: the register's modules import this one)
+REGISTER_KEY_ENV_VAR = "ANGLEBENCH_REGISTER_KEY"
+#: how a PEM file starts (a private key, a certificate: the DCC's signing key and
+#: certificates, a lab's TLS files): no output of AngleBench is one
+_PEM_BEGIN = re.compile(rb"\A\s*-----BEGIN [A-Z0-9 ]+-----")
+#: how the readings and the raw lines `anglebench capture` writes start (app/capture/cli.py:
+#: their header's first column); no other output of AngleBench starts so
+_CAPTURE_OUTPUT = re.compile(rb"\A(?:\xef\xbb\xbf)?time_s,")
+#: the outputs that write a capture's readings or raw lines (``capture --out/--raw``, which
+#: replace an earlier capture's only with --overwrite)
+CAPTURE_FLAGS = frozenset(("--out", "--raw"))
+#: the outputs that write a project (``register show --project``): a project they name is
+#: replaced by a project, as the window's Save as does
+PROJECT_FLAGS = frozenset(("--project",))
 
 
 class OutputRefused(OSError):
@@ -248,8 +273,80 @@ def check_output(path: str | os.PathLike[str] | None, protected: Sequence[Protec
                 "{flag}{out} is {what}; nothing was written: choose another name"),
                 flag=f"{flag} " if flag else "", out=os.fspath(path), what=item.what))
     refuse_database(path)
+    refuse_kept_readings(path, flag)
     refuse_register_key(path, flag)
+    refuse_pem(path, flag)
     refuse_unwritable(path, flag)
+
+
+def _head(path: str | os.PathLike[str], size: int = 4096) -> bytes:
+    """The first ``size`` bytes of ``path`` (after links); b"" when it is not a regular file
+    or cannot be read (a FIFO is never opened: it would wait for a writer)."""
+    if not _regular_or_absent(path):
+        return b""
+    try:
+        with open(path, "rb") as handle:
+            return handle.read(size)
+    except (OSError, ValueError):
+        return b""
+
+
+def refuse_capture_journal(path: str | os.PathLike[str], flag: str = "") -> None:
+    """Raise OutputRefused when ``path`` (after links) is a capture's journal: the only copy
+    of the readings of a capture that did not end (killed, a power cut), which the next
+    capture into its output recovers. No write replaces one, whoever asks (hostile77 F2:
+    ``analyze --table`` or ``--results`` named over it replaced 94 captured readings)."""
+    if _head(path, len(_CAPTURE_JOURNAL_MAGIC)) == _CAPTURE_JOURNAL_MAGIC:
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out} is a capture's journal: the readings of a capture that did not end, "
+            "which the next capture into its output recovers; nothing was written: choose "
+            "another name"), flag=f"{flag} " if flag else "", out=os.fspath(path)))
+
+
+def refuse_kept_readings(path: str | os.PathLike[str], flag: str = "") -> None:
+    """Raise OutputRefused when ``path`` (after links) holds readings that an output would
+    replace with no way back: a capture's journal (:func:`refuse_capture_journal`), the
+    readings or raw lines a capture wrote unless ``flag`` writes them (:data:`CAPTURE_FLAGS`),
+    or an AngleBench project — readings as typed, details — unless ``flag`` writes a project
+    (:data:`PROJECT_FLAGS`). hostile77 F1: ``analyze --table p.anglebench.json`` replaced a
+    project (not open anywhere) with a compensation table, exit 0, no word; the kind check
+    (:func:`refuse_other_kind`) judges no output that writes text."""
+    refuse_capture_journal(path, flag)
+    head = _head(path)
+    if flag not in CAPTURE_FLAGS and _CAPTURE_OUTPUT.match(head):
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out} holds readings captured from an instrument ('anglebench capture'): "
+            "they would be replaced with no way back; nothing was written: choose another "
+            "name"), flag=f"{flag} " if flag else "", out=os.fspath(path)))
+    if flag in PROJECT_FLAGS:
+        return
+    if _PROJECT_FORMAT.match(head.lstrip(b"\xef\xbb\xbf")):
+        raise _project_refused(path, flag)
+
+
+def _project_refused(path: str | os.PathLike[str], flag: str) -> OutputRefused:
+    return OutputRefused(message(QT_TR_NOOP(
+        "{flag}{out} is an AngleBench project: its readings and details would be "
+        "replaced with no way back; nothing was written: choose another name"),
+        flag=f"{flag} " if flag else "", out=os.fspath(path)))
+
+
+def refuse_other_project(path: str | os.PathLike[str], data: bytes,
+                         flag: str = "--project") -> None:
+    """Raise OutputRefused when ``path`` (after links) holds an AngleBench project other
+    than ``data``, the project a command-line output would write there: the command line
+    asks nothing, as the window's Save as does (hostile77: ``register show N --project
+    tuesday.anglebench.json`` replaced a day's typed project, exit 0). The same project
+    written again over itself changes nothing and is let be."""
+    if not _PROJECT_FORMAT.match(_head(path).lstrip(b"\xef\xbb\xbf")):
+        return
+    try:
+        with open(path, "rb") as handle:
+            same = handle.read() == data
+    except OSError:
+        return
+    if not same:
+        raise _project_refused(path, flag)
 
 
 def refuse_register_key(path: str | os.PathLike[str], flag: str = "") -> None:
@@ -263,12 +360,28 @@ def refuse_register_key(path: str | os.PathLike[str], flag: str = "") -> None:
     mark = folder.name.endswith(HIGH_WATER_SUFFIX) and \
         os.path.isfile(folder.parent / folder.name[: -len(HIGH_WATER_SUFFIX)])
     key = os.path.isdir(resolved.parent / f"{resolved.name}{HIGH_WATER_SUFFIX}")
+    # the key named, before its first signed write made the folder beside it (hostile77 F4:
+    # `--results lab.key` replaced a new key with a CSV, which then signed as the key)
+    named = os.environ.get(REGISTER_KEY_ENV_VAR, "").strip()
+    key = key or bool(named and same_file(path, named))
     if mark or key:
         raise OutputRefused(message(QT_TR_NOOP(
             "{flag}{out} is the certificate register's {what}; nothing was written: choose "
             "another name"), flag=f"{flag} " if flag else "", out=os.fspath(path),
             what=message(QT_TR_NOOP("high-water mark")) if mark else message(
                 QT_TR_NOOP("laboratory key"))))
+
+
+def refuse_pem(path: str | os.PathLike[str], flag: str = "") -> None:
+    """Raise OutputRefused when ``path`` (after links) holds a PEM file — the DCC's signing
+    key, its certificate, a trusted certificate, wherever they are named (the environment,
+    the window's settings) —: no output of AngleBench is one, and a private key replaced is
+    lost for good (hostile77 F4: ``--results`` and ``--table`` replaced the DCC signing key
+    named by ANGLEBENCH_DCC_SIGNING_KEY)."""
+    if _PEM_BEGIN.match(_head(path, 256)):
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out} is a key or a certificate (PEM); nothing was written: choose "
+            "another name"), flag=f"{flag} " if flag else "", out=os.fspath(path)))
 
 
 def refuse_unwritable(path: str | os.PathLike[str], flag: str = "") -> None:

@@ -435,6 +435,8 @@ class Register:
                 if path and path != ":memory:":
                     self._sqlite_path = path
                     file = Path(path)
+                    if _emptied(file):
+                        raise RegisterTampered(self._emptied())
                     if file.exists() and not (os.access(file, os.W_OK)
                                               and os.access(file.parent, os.W_OK)):
                         self.read_only = True
@@ -474,6 +476,9 @@ class Register:
                 raise RegisterError(self._unread_journal()) from None
             if self._full(exc):  # reg72 #7: on opening, its WAL index could not be made
                 raise RegisterError(self._disk_full()) from None
+            damaged = self._damaged(exc)
+            if damaged is not None:
+                raise RegisterError(damaged) from None
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -481,6 +486,39 @@ class Register:
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {exc}"),
                 display_url=self.display_url, exc=reason_of(exc))) from None
+
+    def _damaged(self, exc: Exception) -> Message | None:
+        """What to do with a SQLite register file that is a folder, or that SQLite finds
+        damaged or no database at all (hostile77 M1: only SQLite's words were said, "database
+        disk image is malformed", "unable to open database file"); None for any other
+        failure."""
+        import os
+
+        code = getattr(getattr(exc, "orig", None), "sqlite_errorcode", None)
+        if not self.is_sqlite or not self._sqlite_path:
+            return None
+        if os.path.isdir(self._sqlite_path):
+            return message(QT_TR_NOOP(
+                "register {display_url} is a folder, not a register file: nothing was read "
+                "or recorded; name the register's file (--register or ANGLEBENCH_REGISTER)"),
+                display_url=self.display_url)
+        if code not in (_SQLITE_CORRUPT, _SQLITE_NOTADB):
+            return None
+        return message(QT_TR_NOOP(
+            "register {display_url}: the file is damaged or is not a register ({reason}); "
+            "nothing is read from it or issued into it: keep it as it is, restore the "
+            "register from a backup, then record the loss with 'anglebench register "
+            "acknowledge-loss'"), display_url=self.display_url, reason=_reason(exc))
+
+    def _emptied(self) -> Message:
+        return message(QT_TR_NOOP(
+            "register {display_url}: the file is empty (0 bytes), but a register holds its "
+            "tables from the moment it is made: its records were lost (the file emptied or "
+            "truncated: a crash, a disk fault, a command that wrote over it); nothing is read "
+            "from it or issued into it, as numbers already issued would be issued again: "
+            "restore the register from a backup, then record the loss with 'anglebench "
+            "register acknowledge-loss'; if no certificate was ever issued into it, delete "
+            "the file"), display_url=self.display_url)
 
     def _read_only_uri(self, file: Path) -> str:
         """The URI a register this user cannot write is opened by (rev65 F2). SQLite keeps
@@ -635,7 +673,7 @@ class Register:
         except self._sa.exc.SQLAlchemyError as exc:
             if self._full(exc):  # a new connection's WAL index could not be made (reg72 #7)
                 raise RegisterError(self._disk_full()) from None
-            raise RegisterError(message(
+            raise RegisterError(self._damaged(exc) or message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
 
@@ -3298,9 +3336,35 @@ def _is_busy(error: object) -> bool:
         "database is locked" in str(error or ""))
 
 
+#: SQLite's result codes of a file it finds damaged, or that is no database
+_SQLITE_CORRUPT, _SQLITE_NOTADB = 11, 26
+
+
 def _reason(exc: Exception) -> str:
     text = str(getattr(exc, "orig", None) or exc).strip().splitlines()
     return text[0] if text else type(exc).__name__
+
+
+def _emptied(file: Path) -> bool:
+    """Whether the SQLite register ``file`` exists and is empty (0 bytes), with nothing in
+    its ``-wal`` journal either: records lost, never a register AngleBench made, which has
+    its header (4096 bytes) as soon as it is opened (``PRAGMA journal_mode=WAL`` writes it)
+    and its tables in the transaction that made it. SQLite reads such a file as a new,
+    empty database: "hash chain intact over 0 record(s)", and the next certificate numbered
+    1 again (hostile77 F3)."""
+    import os
+    import stat
+
+    try:
+        st = os.stat(file)
+    except (OSError, ValueError):
+        return False  # not there: made by the first certificate (or refused as missing)
+    if not stat.S_ISREG(st.st_mode) or st.st_size:
+        return False
+    try:
+        return os.stat(f"{file}-wal").st_size == 0
+    except (OSError, ValueError):
+        return True
 
 
 def _sqlite_connect(dbapi_connection, _record) -> None:
