@@ -7550,6 +7550,18 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>证书 {number}：其 PDF（SHA-256 {sha}…）于 {date} 提交给 &apos;register verify&apos;，它是作为链中第 {place} 条记录签发的，但该记录现在是同一编号的另一份证书：该编号被签发了两次（登记册从较早的副本恢复，或较早的状态被复制回来）；在用 &apos;anglebench register acknowledge-loss --by NAME --reason TEXT&apos; 记录此次丢失之前，不再签发任何内容</translation>
     </message>
     <message>
+        <source>register {display_url} is a folder, not a register file: nothing was read or recorded; name the register&apos;s file (--register or ANGLEBENCH_REGISTER)</source>
+        <translation>登记册 {display_url} 是一个文件夹，不是登记册文件：未读取或记录任何内容；请指明登记册的文件（--register 或 ANGLEBENCH_REGISTER）</translation>
+    </message>
+    <message>
+        <source>register {display_url}: the file is damaged or is not a register ({reason}); nothing is read from it or issued into it: keep it as it is, restore the register from a backup, then record the loss with &apos;anglebench register acknowledge-loss&apos;</source>
+        <translation>登记册 {display_url}：文件已损坏或不是登记册（{reason}）；不从中读取、也不向其签发任何内容：请保持其原样，从备份恢复登记册，然后用 &apos;anglebench register acknowledge-loss&apos; 记录此次丢失</translation>
+    </message>
+    <message>
+        <source>register {display_url}: the file is empty (0 bytes), but a register holds its tables from the moment it is made: its records were lost (the file emptied or truncated: a crash, a disk fault, a command that wrote over it); nothing is read from it or issued into it, as numbers already issued would be issued again: restore the register from a backup, then record the loss with &apos;anglebench register acknowledge-loss&apos;; if no certificate was ever issued into it, delete the file</source>
+        <translation>登记册 {display_url}：文件为空（0 字节），而登记册自创建之时起即含有其数据表：其记录已丢失（文件被清空或截断：崩溃、磁盘故障或某条命令覆盖了它）；不从中读取、也不向其签发任何内容，否则已签发的编号会再次签发：请从备份恢复登记册，然后用 &apos;anglebench register acknowledge-loss&apos; 记录此次丢失；如果从未向其签发过任何证书，请删除该文件</translation>
+    </message>
+    <message>
         <source>{number} was issued on the {original} workbench: its amendment or replacement corrects that calibration and is issued on that workbench, not on {workbench} (ISO/IEC 17025 7.8.8); a calibration on another workbench is an original</source>
         <translation>{number} 在 {original} 工作台上签发：其修改或替代更正的是那一次校准，应在该工作台上签发，而不是在 {workbench} 上（ISO/IEC 17025 7.8.8）；在另一个工作台上的校准是原始证书</translation>
     </message>
@@ -11885,7 +11897,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the certificate register ({path})</source>
-        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the register&apos;s own file beside a SQLite register ``X``: ``X.issuing``, the issuers&apos; turn after a lost race (a file lock, models.register.store); an output written over it (a rename: a new file) would split the issuers between two locks the note beside a SQLite register naming the process that holds its write lock (models/register/writer_note.py) the folder beside the laboratory&apos;s key where the register&apos;s high-water marks are kept (``&lt;key file&gt;.high-water``: models/register/high_water.py) the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name</extracomment>
+        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the register&apos;s own file beside a SQLite register ``X``: ``X.issuing``, the issuers&apos; turn after a lost race (a file lock, models.register.store); an output written over it (a rename: a new file) would split the issuers between two locks the note beside a SQLite register naming the process that holds its write lock (models/register/writer_note.py) the folder beside the laboratory&apos;s key where the register&apos;s high-water marks are kept (``&lt;key file&gt;.high-water``: models/register/high_water.py) the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name the first line of a capture journal (models/capture/journal.py&apos;s header, any version) an AngleBench project (models/project/file.py&apos;s FORMAT_NAME), as every version writes its first key; an autosave is one too the variable naming the laboratory&apos;s register key (models/register/signing.py&apos;s KEY_ENV_VAR; not imported: the register&apos;s modules import this one) how a PEM file starts (a private key, a certificate: the DCC&apos;s signing key and certificates, a lab&apos;s TLS files): no output of AngleBench is one how the readings and the raw lines `anglebench capture` writes start (app/capture/cli.py: their header&apos;s first column); no other output of AngleBench starts so the outputs that write a capture&apos;s readings or raw lines (``capture --out/--raw``, which replace an earlier capture&apos;s only with --overwrite) the outputs that write a project (``register show --project``): a project they name is replaced by a project, as the window&apos;s Save as does</extracomment>
         <translation>证书登记册（{path}）</translation>
     </message>
     <message>
@@ -11938,6 +11950,18 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>{flag}{out} 是{what}；未写入任何内容：请换一个文件名</translation>
     </message>
     <message>
+        <source>{flag}{out} is a capture&apos;s journal: the readings of a capture that did not end, which the next capture into its output recovers; nothing was written: choose another name</source>
+        <translation>{flag}{out} 是一次采集的日志：即一次未结束的采集的读数，下一次向其输出文件采集时会恢复这些读数；未写入任何内容：请另选名称</translation>
+    </message>
+    <message>
+        <source>{flag}{out} holds readings captured from an instrument (&apos;anglebench capture&apos;): they would be replaced with no way back; nothing was written: choose another name</source>
+        <translation>{flag}{out} 存有从仪器采集的读数（&apos;anglebench capture&apos;）：它们将被替换且无法恢复；未写入任何内容：请另选名称</translation>
+    </message>
+    <message>
+        <source>{flag}{out} is an AngleBench project: its readings and details would be replaced with no way back; nothing was written: choose another name</source>
+        <translation>{flag}{out} 是一个 AngleBench 项目：其读数和证书信息将被替换且无法恢复；未写入任何内容：请另选名称</translation>
+    </message>
+    <message>
         <source>{flag}{out} is the certificate register&apos;s {what}; nothing was written: choose another name</source>
         <translation>{flag}{out} 是证书登记册的{what}；未写出任何内容：请另选名称</translation>
     </message>
@@ -11948,6 +11972,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>laboratory key</source>
         <translation>实验室密钥</translation>
+    </message>
+    <message>
+        <source>{flag}{out} is a key or a certificate (PEM); nothing was written: choose another name</source>
+        <translation>{flag}{out} 是一个密钥或证书（PEM）；未写入任何内容：请另选名称</translation>
     </message>
     <message>
         <source>{flag}{out} is not a regular file (a pipe, a device or a socket); nothing was written: name a file</source>
