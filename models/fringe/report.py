@@ -357,7 +357,7 @@ REFERENCE_IN_HALF_RANGE = QT_TR_NOOP(
 
 def _phase_reference_entered(result, metadata: CertificateMetadata) -> bool:
     return bool((result.inputs or {}).get("phase_reference_u")) or any(
-        std.uncertainty is not None for std in metadata.standards)
+        _may_be_phase_reference(std) for std in metadata.standards)
 
 
 #: a phase reference standard's u per sample from this share of a signal period up is taken
@@ -406,10 +406,11 @@ _STATED_NAMES = ("Phase reference", "ADC quantisation", "ADC offset", "ADC gain 
 
 
 def _phase_reference_stated(result, metadata: CertificateMetadata) -> bool:
-    """A U for the phase reference: in the settings, or a θ reference listed with its U."""
+    """A U for the phase reference: in the settings, or a θ reference listed with its U (not
+    the ADC's: :func:`_may_be_phase_reference`)."""
     return bool((result.inputs or {}).get("phase_reference_u")) or (
         result.phase_source == "theta_column"
-        and any(s.uncertainty is not None for s in metadata.standards))
+        and any(_may_be_phase_reference(s) for s in metadata.standards))
 
 
 def not_stated(result, metadata: CertificateMetadata) -> list[str]:
@@ -431,7 +432,7 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
     inputs = result.inputs or {}
     out = []
     theta_standard = result.phase_source == "theta_column" and any(
-        s.uncertainty is not None for s in metadata.standards)
+        _may_be_phase_reference(s) for s in metadata.standards)
     if result.phase_source == "estimated":
         # no phase reference at all, whatever U is stated for the estimation: what the
         # estimate cannot see is in no U (an audit with its own signals: 3rd and 5th
@@ -503,8 +504,9 @@ def _signal_noise(result, metadata: CertificateMetadata, standards: list[BudgetC
                               "converted to phase"), sin=f"{sin_b.sigma_v * 1e3:.3g}",
                    cos=f"{cos_b.sigma_v * 1e3:.3g}") if not held else message(QT_TR_NOOP(
         "σ = {sin} mV (sin), {cos} mV (cos), converted to phase: the fit residuals' {shown_sin} "
-        "and {shown_cos} mV beyond what {held} stated show there, which have their own rows "
-        "(counted once: the larger of the scatter and the stated figures, not their sum)"),
+        "and {shown_cos} mV less the share of the stated inputs they hold ({held}), each of "
+        "which has its own row (counted once: the larger of the scatter and the stated "
+        "figures, not their sum)"),
         sin=f"{sin_b.sigma_v * 1e3:.3g}", cos=f"{cos_b.sigma_v * 1e3:.3g}",
         shown_sin=f"{sin_b.shown_v * 1e3:.3g}", shown_cos=f"{cos_b.shown_v * 1e3:.3g}",
         held=listed(message(name) for name in held))

@@ -159,3 +159,26 @@ def test_a_dithered_lsb_is_no_pattern_of_the_decided_curve():
     for row in rows:  # σ = LSB/10 leaves most of the half LSB (2.5 mV) repeated
         half_mv = float(re.search(r"within ±([0-9.]+) mV", str(row.note)).group(1))
         assert 1.0 < half_mv <= 2.5, row.note
+
+
+def test_the_adcs_certificate_u_does_not_state_the_phase_reference(adc_record):
+    """A θ column with only the ADC listed with a U and no phase reference u set: the phase
+    reference's u is stated nowhere, so it is named not in U and the error not traceable
+    (before: the ADC's U was taken for the θ reference's, through the fit)."""
+    from models.fringe.report import not_stated, untraceable_inputs
+
+    only_adc = CertificateMetadata.from_dict({
+        "tolerance": 10.0, "tolerance_unit": "arcsec", "decision_rule": "guarded",
+        "standards": [{"description": "Data acquisition (16-bit ADC)", "certificate_no": "CAL-33",
+                       "uncertainty": 0.05, "uncertainty_unit": "arcsec", "role": "adc"}]})
+    assert "Phase reference" in not_stated(adc_record, only_adc)
+    assert any("phase reference" in str(w) for w in untraceable_inputs(adc_record, only_adc))
+    document = fringe_certificate(adc_record, only_adc, settings=ADC_TYPED)
+    from models.fringe.report import REFERENCE_IN_HALF_RANGE
+
+    assert REFERENCE_IN_HALF_RANGE not in [str(s) for s in document.statements]
+    # the phase reference listed: stated, and said how it enters
+    listed = _details(0.005, adc_u=0.05)
+    assert "Phase reference" not in not_stated(adc_record, listed)
+    assert REFERENCE_IN_HALF_RANGE in [str(s) for s in fringe_certificate(
+        adc_record, listed, settings=ADC_TYPED).statements]
