@@ -537,10 +537,13 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
     n − p degrees of freedom, or J − p from the phase means where the phases repeat and
     those scatter more, one estimate a channel), each channel's ADC offset and the
     channels' gain ratio are one unknown value for the whole record, carried to every phase
-    through their signed sensitivity; the ADC's quantisation and linearity are bounded
-    errors of each reading (rectangular, per phase); the reference standards' and the phase
-    reference's errors, independent from sample to sample, through the fit, each of its
-    independent directions one value for the record, the fit's own directions drawn with
+    through their signed sensitivity; the ADC's linearity one pattern for the record within
+    its figure, and its quantisation the part of the LSB the noise leaves repeated at a
+    phase (rectangular, one pattern, signed: the rest is each reading's own, in the
+    scatter); the phase reference's errors (a standard that may be it, or the settings'
+    u; not the ADC's certificate), independent from sample to sample, through the fit,
+    each of its independent directions one value for the record, the fit's own directions
+    drawn with
     the scatter beyond what those errors would show (counted once:
     :func:`models.fringe.reference_through_fit.scatter_beyond_reference`)."""
     to_unit = result.period_length / (2.0 * math.pi)
