@@ -1075,12 +1075,18 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
     def certified_json(self, result, metadata, settings=None):
         # each signal parameter's U beside it, at the certificate's probability, as the
         # certificate's parameters table prints it (issue 39; audit 69 finding 2)
-        from models.fringe.report import parameters_json, reference_unit_warnings
+        from models.fringe.report import (
+            adc_standard_warnings,
+            parameters_json,
+            reference_unit_warnings,
+        )
 
         out = parameters_json(result, float(metadata.coverage_probability))
-        # a phase reference standard's "°" read as shaft angle, said as the certificate
-        # says it (assessment 76 M3)
-        said = reference_unit_warnings(result, metadata)
+        # a phase reference standard's "°" read as shaft angle, and the ADC's U that is no
+        # input (its figures in the settings are), said as the certificate says them
+        # (assessment 76 M3)
+        said = [*reference_unit_warnings(result, metadata),
+                *adc_standard_warnings(result, metadata)]
         if said:
             out["warnings"] = [*result.warnings, *(str(w) for w in said)]
         return out

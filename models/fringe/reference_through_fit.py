@@ -70,7 +70,8 @@ from models.fringe.rounding_at_phases import phase_groups
 #: larger at this level (Draper & Smith 2.1: pooled where the lack of fit is not significant)
 LACK_OF_FIT_LEVEL = 0.95
 
-__all__ = ["ChannelScatter", "reference_curve_modes", "scatter_beyond_reference"]
+__all__ = ["ChannelScatter", "reading_scatter_beyond", "reference_curve_modes",
+           "scatter_beyond_reference"]
 
 
 def reference_curve_modes(result, theta_rad: np.ndarray, repeated: bool = False) -> np.ndarray:
@@ -140,6 +141,45 @@ def _shows(shown2: float, reference2: float, dof: int) -> bool:
     return shown2 >= reference2 * (1.0 - 2.0 * math.sqrt(2.0 / max(dof, 1)))
 
 
+def _reference_share2(theta: np.ndarray, fit, u_rad: float) -> float:
+    """What independent per-sample phase errors of ``u_rad`` add to a channel's residual
+    variance (V²): u²·Σ (1 − hᵢ)·S′ᵢ² / (n − p), hᵢ the leverage of sample i."""
+    n, p = theta.size, 1 + 2 * len(fit.orders)
+    if not (u_rad > 0.0 and math.isfinite(u_rad) and n > p):
+        return 0.0
+    x = fit_design(theta, fit.orders)
+    leverage = np.einsum("ij,jk,ik->i", x, np.linalg.pinv(x.T @ x), x)
+    return u_rad ** 2 * float(np.sum((1.0 - leverage) * model_slope(theta, fit) ** 2)) / (n - p)
+
+
+def reading_scatter_beyond(result, u_rad: float, quantisation_v: float = 0.0
+                           ) -> tuple[ChannelScatter, ChannelScatter]:
+    """(sin, cos): each channel's scatter of one reading (every reading about the fit, n − p
+    degrees of freedom) beyond what the stated inputs the readings hold show there, for a
+    sample's own U: the phase reference's independent per-sample errors of standard
+    uncertainty ``u_rad`` (rad of a signal period; 0: none stated, or not in the readings:
+    an estimated phase follows them), their share u²·m, and the ADC's quantisation of
+    standard uncertainty ``quantisation_v`` (V, LSB/√12: each reading's own rounding, in
+    its residual as in its error), each entered as an input of its own. The readings'
+    errors per sample are so the larger of what the scatter shows and what the stated
+    inputs imply, never the scatter and the stated inputs summed (an input in the readings
+    counted once, as :func:`scatter_beyond_reference` does for the decided half range; a
+    sample's U summed them: the phase reference's u 1.22 times over at a reference
+    dominating the noise, the LSB twice over where it dominates)."""
+    theta = np.asarray(result.theta_rad, dtype=float)
+    n = theta.size
+    out = []
+    for fit in (result.sin_fit, result.cos_fit):
+        p = 1 + 2 * len(fit.orders)
+        dof = max(n - p, 1)
+        shown2 = fit.residual_rms ** 2 * n / dof
+        reference2 = _reference_share2(theta, fit, u_rad)
+        beyond2 = shown2 - reference2 - quantisation_v ** 2
+        out.append(ChannelScatter(math.sqrt(max(beyond2, 0.0)), dof, math.sqrt(shown2),
+                                  math.sqrt(reference2)))
+    return out[0], out[1]
+
+
 def scatter_beyond_reference(result, u_rad: float) -> tuple[ChannelScatter, ChannelScatter]:
     """(sin, cos): each channel's scatter the fit's own directions are drawn with, the
     reference's independent per-sample errors of standard uncertainty ``u_rad`` (rad of a
@@ -156,12 +196,7 @@ def scatter_beyond_reference(result, u_rad: float) -> tuple[ChannelScatter, Chan
         dof = max(n - p, 1)
         shown2 = fit.residual_rms ** 2 * n / dof
         stated = u_rad > 0.0 and math.isfinite(u_rad) and n > p
-        reference2 = 0.0
-        if stated:
-            x = fit_design(theta, fit.orders)
-            leverage = np.einsum("ij,jk,ik->i", x, np.linalg.pinv(x.T @ x), x)
-            reference2 = u_rad ** 2 * float(np.sum((1.0 - leverage) * model_slope(theta, fit)
-                                                   ** 2)) / (n - p)
+        reference2 = _reference_share2(theta, fit, u_rad) if stated else 0.0
         # a reference stated: what repeats at its phases (no reference stated, the fit's
         # scatter as before: the readings' rounding and the ADC's linearity, which repeat at
         # a phase too, have their own inputs, models.fringe.rounding_at_phases)

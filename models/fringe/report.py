@@ -5,11 +5,19 @@ The compensated interpolation error of a sample is its measured phase
 inputs, per sample, with ``S, C`` the modelled signals:
 
 * the signal noise: u(φ) = √(C² σ_s² + S² σ_c²) / (S² + C²), σ from each
-  channel's fit residuals (Type A, n − p degrees of freedom);
+  channel's fit residuals (Type A, n − p degrees of freedom) beyond what the stated
+  inputs the readings hold show there — the phase reference's independent errors and
+  the ADC's quantisation, each a row of its own: counted once, the larger of the scatter
+  and the stated figures (a sample's U summed them: 1.23 and 1.31 times what its
+  deviations need, 98.5 % and 99.3 % covered, where the reference's 0.2″ or an LSB of
+  5 mV over 0.5 mV of noise dominates; models.fringe.reference_through_fit);
 * the fitted model: u²(S) = σ_s² xᵀ(XᵀX)⁻¹x and the same for C, through
   the same sensitivities (the correction table is the model's phase error);
-* each reference standard's figure, sensitivity 1 (for example the phase
-  reference when θ comes from a reference encoder).
+* each reference standard's figure that may be the phase reference, sensitivity 1 (for
+  example the phase reference when θ comes from a reference encoder); not the ADC's
+  (role "adc"), which enters through its figures in the settings (offset, gain ratio,
+  LSB, linearity), each as what it is: its certificate's U entered every sample as a
+  phase error and went through the fit as the phase reference's errors (fringeu77).
 
 The as-found interpolation error (before compensation) is the measured phase
 minus θ: its budget is the signal noise and the reference standards. The
@@ -62,7 +70,11 @@ from models.fringe.parameter_uncertainty import (
     parameter_uncertainty,
     phase_expanded,
 )
-from models.fringe.reference_through_fit import reference_curve_modes, scatter_beyond_reference
+from models.fringe.reference_through_fit import (
+    reading_scatter_beyond,
+    reference_curve_modes,
+    scatter_beyond_reference,
+)
 from models.fringe.rounding_at_phases import repeated_bound
 from models.messages import QT_TR_NOOP, joined, listed, message, separated
 from models.quantity import UNITS, Quantity, UnitError
@@ -76,7 +88,8 @@ from models.uncertainty.conformity import HalfRangeEstimate
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.printed_figure import printed
 
-__all__ = ["fringe_budget", "fringe_certificate", "model_error_curve", "model_error_budget"]
+__all__ = ["adc_standard_warnings", "fringe_budget", "fringe_certificate", "model_error_curve",
+           "model_error_budget"]
 
 #: the method, worded from the orders actually fitted ({orders}: "1, 3"; it said "odd
 #: harmonics (3rd, 5th)" whatever was fitted: day review 68 F2)
@@ -207,8 +220,9 @@ def _stated_inputs(result, ds: np.ndarray, dc: np.ndarray, to_unit: float) -> li
         out.append(BudgetComponent(
             QT_TR_NOOP("ADC quantisation"), "B", "rectangular", both * lsb * 1e-3 / 2.0,
             math.sqrt(3.0), 1.0, math.inf,
-            message(QT_TR_NOOP("LSB {lsb} mV: LSB/√12 in each channel (also in the residuals' "
-                               "scatter: counted twice, on the safe side)"), lsb=f"{lsb:g}")))
+            message(QT_TR_NOOP("LSB {lsb} mV: LSB/√12 in each channel (taken out of the "
+                               "residuals' scatter, the signal noise: counted once)"),
+                    lsb=f"{lsb:g}")))
     offset = inputs.get("adc_offset_u_mv", 0.0)
     if offset:
         out.append(BudgetComponent(
@@ -247,9 +261,54 @@ def _is_phase_reference(standard) -> bool:
 
 
 def _may_be_phase_reference(standard) -> bool:
-    """A listed standard with a U that is not stated to be the ADC: its u, per sample, is of
-    each sample's phase."""
-    return standard.uncertainty is not None and standard.role != "adc"
+    """A listed standard with a U stated to be the phase reference, or with no role stated
+    (not told from it): its u, per sample, is of each sample's phase. The ADC's (role
+    "adc") is not: the ADC enters through its figures in the settings, each as what it is
+    (:func:`adc_standard_warnings`), and a role the fringe does not use (an
+    autocollimator's) carries none of its inputs."""
+    return standard.uncertainty is not None and standard.role in ("reference", "")
+
+
+def _phase_references(metadata: CertificateMetadata) -> CertificateMetadata:
+    """The details with only the standards that may be the phase reference listed
+    (:func:`_may_be_phase_reference`), for the budgets' reference standard rows: the ADC's
+    certificate, listed with its U, entered every sample's U as a phase error and went
+    through the fit as a phase reference's independent errors (fringe76b's note)."""
+    return dataclasses.replace(metadata, standards=tuple(
+        std for std in metadata.standards
+        if std.uncertainty is None or _may_be_phase_reference(std)))
+
+
+#: the ADC listed with a U of its own: said, as it is not entered as a phase error
+ADC_STANDARD_WARNING = QT_TR_NOOP(
+    "Reference standard '{name}' is the ADC: its uncertainty {given} is not entered as an "
+    "error of each sample's phase. The ADC enters the budget through its figures in the "
+    "settings (LSB, offset u, gain ratio u, linearity), each as what it is ({figures}).")
+
+
+def adc_standard_warnings(result, metadata: CertificateMetadata) -> list[Any]:
+    """A warning for each standard listed as the ADC (role "adc") with a U: that U is no
+    input of the budget (it is the ADC's figures of the settings that are), said in the
+    certificate and the JSON where it would otherwise go unmentioned."""
+    inputs = result.inputs or {}
+    stated = [message(name) for key, name in _ADC_FIGURES.items() if inputs.get(key)]
+    figures = message(QT_TR_NOOP("stated here: {names}"), names=listed(stated)) if stated else \
+        message(QT_TR_NOOP("none is stated here, so none is in U"))
+    out = []
+    for std in metadata.standards:
+        if std.uncertainty is None or std.role != "adc":
+            continue
+        given = f"{std.uncertainty:g}{UNITS[std.uncertainty_unit].symbol}"
+        out.append(message(ADC_STANDARD_WARNING, name=std.description or "#", given=given,
+                           figures=figures))
+    return out
+
+
+#: the ADC's figures of the settings, by their budget names
+_ADC_FIGURES = {"adc_lsb_mv": QT_TR_NOOP("ADC quantisation"),
+                "adc_offset_u_mv": QT_TR_NOOP("ADC offset"),
+                "adc_gain_u_pct": QT_TR_NOOP("ADC gain ratio"),
+                "adc_linearity_mv": QT_TR_NOOP("ADC linearity")}
 
 
 def _reference_once(metadata: CertificateMetadata, standards: list[BudgetComponent],
@@ -298,7 +357,7 @@ REFERENCE_IN_HALF_RANGE = QT_TR_NOOP(
 
 def _phase_reference_entered(result, metadata: CertificateMetadata) -> bool:
     return bool((result.inputs or {}).get("phase_reference_u")) or any(
-        std.uncertainty is not None for std in metadata.standards)
+        _may_be_phase_reference(std) for std in metadata.standards)
 
 
 #: a phase reference standard's u per sample from this share of a signal period up is taken
@@ -347,10 +406,11 @@ _STATED_NAMES = ("Phase reference", "ADC quantisation", "ADC offset", "ADC gain 
 
 
 def _phase_reference_stated(result, metadata: CertificateMetadata) -> bool:
-    """A U for the phase reference: in the settings, or a θ reference listed with its U."""
+    """A U for the phase reference: in the settings, or a θ reference listed with its U (not
+    the ADC's: :func:`_may_be_phase_reference`)."""
     return bool((result.inputs or {}).get("phase_reference_u")) or (
         result.phase_source == "theta_column"
-        and any(s.uncertainty is not None for s in metadata.standards))
+        and any(_may_be_phase_reference(s) for s in metadata.standards))
 
 
 def not_stated(result, metadata: CertificateMetadata) -> list[str]:
@@ -372,7 +432,7 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
     inputs = result.inputs or {}
     out = []
     theta_standard = result.phase_source == "theta_column" and any(
-        s.uncertainty is not None for s in metadata.standards)
+        _may_be_phase_reference(s) for s in metadata.standards)
     if result.phase_source == "estimated":
         # no phase reference at all, whatever U is stated for the estimation: what the
         # estimate cannot see is in no U (an audit with its own signals: 3rd and 5th
@@ -404,19 +464,15 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
     dof = max(n - p, 1)
     sig_s = result.sin_fit.residual_rms * math.sqrt(n / dof)
     sig_c = result.cos_fit.residual_rms * math.sqrt(n / dof)
-    noise = np.hypot(ds * sig_s, dc * sig_c) * to_unit
     us = model_signal_std(result.theta_rad, sig_s, result.sin_fit.orders, result.theta_rad)
     uc = model_signal_std(result.theta_rad, sig_c, result.cos_fit.orders, result.theta_rad)
     model = np.hypot(ds * us, dc * uc) * to_unit
-    components = _reference_once(
-        metadata, reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
-                                                unit=result.unit, common=True),
-        _stated_inputs(result, ds, dc, to_unit), result.unit_symbol)
-    components.append(BudgetComponent(
-        QT_TR_NOOP("Signal noise"), "A", "normal", noise, 1.0, 1.0, dof,
-        message(QT_TR_NOOP("σ = {sin} mV (sin), {cos} mV (cos) from the fit residuals, "
-                           "converted to phase"), sin=f"{sig_s * 1e3:.3g}",
-                cos=f"{sig_c * 1e3:.3g}")))
+    phase_meta = _phase_references(metadata)  # the ADC's U is no phase error (its figures are)
+    standards = reference_standard_components(phase_meta, 1.0, QT_TR_NOOP("sample"),
+                                              unit=result.unit, common=True)
+    stated = _stated_inputs(result, ds, dc, to_unit)
+    components = _reference_once(phase_meta, standards, stated, result.unit_symbol)
+    components.append(_signal_noise(result, phase_meta, standards, stated, ds, dc, to_unit, dof))
     if not as_found:
         components.append(BudgetComponent(
             MODEL_INPUT, "A", "normal", model, 1.0, 1.0, dof,
@@ -424,6 +480,37 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
                        "error")))
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability, result.unit,
                              floor=cmc_of(settings, "cmc"))
+
+
+def _signal_noise(result, metadata: CertificateMetadata, standards: list[BudgetComponent],
+                  stated: list[BudgetComponent], ds: np.ndarray, dc: np.ndarray, to_unit: float,
+                  dof: int) -> BudgetComponent:
+    """A sample's "Signal noise": each channel's scatter about the fit, converted to phase,
+    beyond what the stated inputs the readings hold show there, each of those its own row
+    (counted once: :func:`models.fringe.reference_through_fit.reading_scatter_beyond`):
+    the phase reference's independent errors (none with an estimated phase, which follows
+    the readings) and the ADC's quantisation, LSB/√12 a reading."""
+    references = _reference_once(metadata, standards,
+                                 [c for c in stated if c.name == _SETTING_REFERENCE],
+                                 result.unit_symbol)
+    u_rad = 0.0 if result.phase_source == "estimated" else math.hypot(
+        *(float(np.max(c.standard_uncertainty(1))) for c in references)) / to_unit
+    lsb_v = 1e-3 * float((result.inputs or {}).get("adc_lsb_mv", 0.0) or 0.0)
+    sin_b, cos_b = reading_scatter_beyond(result, u_rad, lsb_v / math.sqrt(12.0))
+    noise = np.hypot(ds * sin_b.sigma_v, dc * cos_b.sigma_v) * to_unit
+    held = [name for name, figure in ((QT_TR_NOOP("the phase reference's errors"), u_rad),
+                                      (QT_TR_NOOP("the ADC's quantisation"), lsb_v)) if figure]
+    note = message(QT_TR_NOOP("σ = {sin} mV (sin), {cos} mV (cos) from the fit residuals, "
+                              "converted to phase"), sin=f"{sin_b.sigma_v * 1e3:.3g}",
+                   cos=f"{cos_b.sigma_v * 1e3:.3g}") if not held else message(QT_TR_NOOP(
+        "σ = {sin} mV (sin), {cos} mV (cos), converted to phase: the fit residuals' {shown_sin} "
+        "and {shown_cos} mV less the share of the stated inputs they hold ({held}), each of "
+        "which has its own row (counted once: the larger of the scatter and the stated "
+        "figures, not their sum)"),
+        sin=f"{sin_b.sigma_v * 1e3:.3g}", cos=f"{cos_b.sigma_v * 1e3:.3g}",
+        shown_sin=f"{sin_b.shown_v * 1e3:.3g}", shown_cos=f"{cos_b.shown_v * 1e3:.3g}",
+        held=listed(message(name) for name in held))
+    return BudgetComponent(QT_TR_NOOP("Signal noise"), "A", "normal", noise, 1.0, 1.0, dof, note)
 
 
 #: the points a period is judged on when the decided quantity is the half range of the
@@ -450,10 +537,13 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
     n − p degrees of freedom, or J − p from the phase means where the phases repeat and
     those scatter more, one estimate a channel), each channel's ADC offset and the
     channels' gain ratio are one unknown value for the whole record, carried to every phase
-    through their signed sensitivity; the ADC's quantisation and linearity are bounded
-    errors of each reading (rectangular, per phase); the reference standards' and the phase
-    reference's errors, independent from sample to sample, through the fit, each of its
-    independent directions one value for the record, the fit's own directions drawn with
+    through their signed sensitivity; the ADC's linearity one pattern for the record within
+    its figure, and its quantisation the part of the LSB the noise leaves repeated at a
+    phase (rectangular, one pattern, signed: the rest is each reading's own, in the
+    scatter); the phase reference's errors (a standard that may be it, or the settings'
+    u; not the ADC's certificate), independent from sample to sample, through the fit,
+    each of its independent directions one value for the record, the fit's own directions
+    drawn with
     the scatter beyond what those errors would show (counted once:
     :func:`models.fringe.reference_through_fit.scatter_beyond_reference`)."""
     to_unit = result.period_length / (2.0 * math.pi)
@@ -475,9 +565,10 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
     # 76 M3: a u of 0.001" to 2" per sample left the decided interval as it was); counted
     # once with the readings' scatter, which shows them where they are in the readings
     # (reference_through_fit.scatter_beyond_reference: the larger of the two, not the sum)
+    phase_meta = _phase_references(metadata)  # the ADC's U is no phase error (its figures are)
     references = _reference_once(
-        metadata, reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
-                                                unit=result.unit),
+        phase_meta, reference_standard_components(phase_meta, 1.0, QT_TR_NOOP("sample"),
+                                                  unit=result.unit),
         [c for c in _stated_inputs(result, np.zeros(1), np.zeros(1), to_unit)
          if c.name == _SETTING_REFERENCE], result.unit_symbol)
     u_references = [float(np.max(reference.standard_uncertainty(1))) for reference in references]
@@ -520,18 +611,33 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
     # for noise: the decided value was lowered by the median widening they would give a
     # measured range (an audit: an LSB of 0.61 mV stated moved it 0.005" down, a linearity
     # of 0.5 mV 0.009", and its interval missed in 23 of 60 and 15 of 15 records)
-    for key, name, half in (("adc_lsb_mv", QT_TR_NOOP("ADC quantisation, {channel} channel"),
-                             0.5),
-                            ("adc_linearity_mv", QT_TR_NOOP("ADC linearity, {channel} channel"),
-                             1.0)):
-        figure = inputs.get(key, 0.0)
-        if not figure:
+    linearity = inputs.get("adc_linearity_mv", 0.0)
+    for label, d in (("sin", ds), ("cos", dc)) if linearity else ():
+        components.append(signed(
+            d, message(QT_TR_NOOP("ADC linearity, {channel} channel"), channel=label),
+            linearity * 1e-3,
+            QT_TR_NOOP("one pattern for the whole record, within the figure stated"),
+            distribution="rectangular"))
+    # the quantisation's pattern is the rounding the noise leaves repeated at a phase (its
+    # bound, models.fringe.rounding_at_phases.repeated_bound: half the LSB undithered,
+    # nothing once the noise dithers it), as the typed step's (_readings_rounding): what
+    # the noise dithers is each reading's own error, in the scatter the fit's directions
+    # are drawn with. The whole half LSB in every case counted it twice where the noise
+    # dithers it (an LSB of 2 mV under 2 mV of noise: the interval 1.6 times as wide)
+    lsb = inputs.get("adc_lsb_mv", 0.0)
+    for label, rounding, d in zip(("sin", "cos"), result.rounding, (ds, dc), strict=True):
+        if not lsb:
+            break
+        half = repeated_bound(rounding.noise_v, lsb * 1e-3)
+        if not half > DITHERED * lsb * 1e-3:  # dithered through (σ ≳ LSB/2)
             continue
-        for label, d in (("sin", ds), ("cos", dc)):
-            components.append(signed(
-                d, message(name, channel=label), half * figure * 1e-3,
-                QT_TR_NOOP("one pattern for the whole record, within the figure stated"),
-                distribution="rectangular"))
+        components.append(signed(
+            d, message(QT_TR_NOOP("ADC quantisation, {channel} channel"), channel=label), half,
+            message(QT_TR_NOOP("one pattern for the whole record within ±{half} mV: the part "
+                               "of the LSB {lsb} mV the noise does not dither (the rest is in "
+                               "the readings' scatter)"), half=f"{half * 1e3:.3g}",
+                    lsb=f"{lsb:g}"),
+            distribution="rectangular"))
     if not inputs.get("adc_lsb_mv", 0.0):
         components += _readings_rounding(result, ds, dc)
     if references:
@@ -945,7 +1051,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         tolerance=tol, plots=(drawn["errors"],
                               fringe_plots.first_period_with_uncertainty(result, shown_u, per),
                               drawn["residuals"]),
-        warnings=(*result.warnings, *reference_unit_warnings(result, metadata)), unit=sym,
+        warnings=(*result.warnings, *reference_unit_warnings(result, metadata),
+                  *adc_standard_warnings(result, metadata)), unit=sym,
         untraceable=tuple(untraceable),
         not_in_u=tuple(not_stated(result, metadata)),
         stated_inputs=tuple(c.name for c in budget.components
