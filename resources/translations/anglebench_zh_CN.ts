@@ -9419,11 +9419,8 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>ADC quantisation</source>
+        <extracomment>the ADC&apos;s figures of the settings, by their budget names</extracomment>
         <translation>ADC 量化</translation>
-    </message>
-    <message>
-        <source>LSB {lsb} mV: LSB/√12 in each channel (also in the residuals&apos; scatter: counted twice, on the safe side)</source>
-        <translation>最低有效位 {lsb} mV：每通道 LSB/√12（也包含在残差的分散性中：重复计入，偏于安全）</translation>
     </message>
     <message>
         <source>ADC offset</source>
@@ -9490,7 +9487,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>{note}; the settings&apos; phase reference u ({u}) is of this reference and is not entered again</source>
-        <extracomment>the settings&apos; phase reference u&apos;s row (_stated_inputs)</extracomment>
         <translation>{note}；设置中的相位参考 u（{u}）属于此基准，不再重复计入</translation>
     </message>
     <message>
@@ -9532,8 +9528,41 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>ADC 线性度，{channel} 通道</translation>
     </message>
     <message>
+        <source>LSB {lsb} mV: LSB/√12 in each channel (taken out of the residuals&apos; scatter, the signal noise: counted once)</source>
+        <translation>LSB {lsb} mV：每个通道 LSB/√12（已从残差的离散即信号噪声中扣除：只计一次）</translation>
+    </message>
+    <message>
+        <source>Reference standard &apos;{name}&apos; is the ADC: its uncertainty {given} is not entered as an error of each sample&apos;s phase. The ADC enters the budget through its figures in the settings (LSB, offset u, gain ratio u, linearity), each as what it is ({figures}).</source>
+        <extracomment>the settings&apos; phase reference u&apos;s row (_stated_inputs) the ADC listed with a U of its own: said, as it is not entered as a phase error</extracomment>
+        <translation>参考标准“{name}”是 ADC：其不确定度 {given} 不作为每个采样点相位的误差计入。ADC 通过设置中的各项数值（LSB、偏置 u、增益比 u、线性度）计入不确定度预算，各按其性质计入（{figures}）。</translation>
+    </message>
+    <message>
+        <source>stated here: {names}</source>
+        <translation>此处已给出：{names}</translation>
+    </message>
+    <message>
+        <source>none is stated here, so none is in U</source>
+        <translation>此处均未给出，因此均不计入 U</translation>
+    </message>
+    <message>
+        <source>the phase reference&apos;s errors</source>
+        <translation>相位基准的误差</translation>
+    </message>
+    <message>
+        <source>the ADC&apos;s quantisation</source>
+        <translation>ADC 的量化</translation>
+    </message>
+    <message>
+        <source>σ = {sin} mV (sin), {cos} mV (cos), converted to phase: the fit residuals&apos; {shown_sin} and {shown_cos} mV less the share of the stated inputs they hold ({held}), each of which has its own row (counted once: the larger of the scatter and the stated figures, not their sum)</source>
+        <translation>σ = {sin} mV（sin）、{cos} mV（cos），换算为相位：拟合残差的 {shown_sin} 和 {shown_cos} mV 减去其中所含已给出输入的份额（{held}），这些输入各有其单独一行（只计一次：取离散与给出数值中的较大者，而非二者之和）</translation>
+    </message>
+    <message>
         <source>one pattern for the whole record, within the figure stated</source>
         <translation>整个记录为同一图样，在所述数值以内</translation>
+    </message>
+    <message>
+        <source>one pattern for the whole record within ±{half} mV: the part of the LSB {lsb} mV the noise does not dither (the rest is in the readings&apos; scatter)</source>
+        <translation>整个记录为同一图样，在 ±{half} mV 以内：LSB {lsb} mV 中噪声未使其抖动的部分（其余部分已在读数的离散中）</translation>
     </message>
     <message>
         <source>{name}, through the fit, direction {j}</source>
