@@ -7,11 +7,14 @@ from __future__ import annotations
 
 import json
 import re
+from dataclasses import replace
 from pathlib import Path
+from typing import Any
 
 import pypdfium2 as pdfium
 import pytest
 
+from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.certificate.metadata import CertificateMetadata
 from models.messages import in_language, translator
 from models.readings.sheet import ReadingsSheet
@@ -24,23 +27,36 @@ SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
 ZH = translator("zh_CN")
 
 
+#: the module's sample document and tests/conftest.py's ``sample_certificates`` (set by
+#: ``theodolite``): the sample's certificate is printed once a run in each language (the
+#: Chinese certificate's tests print the same ones; this module printed zh+en twice)
+_SAMPLE: dict[str, Any] = {}
+
+
 @pytest.fixture(scope="module")
-def theodolite():
+def theodolite(sample_certificates):
     kind = KINDS["theodolite"]
     rows = map_columns(read_table(SAMPLES / kind.sample_file), kind.columns)
     settings = kind.settings_with_defaults(None)
     result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), settings)
     details = json.loads((SAMPLES / "certificate_theodolite.json").read_text("utf-8"))
-    return kind.certificate_document(result, CertificateMetadata.from_dict(details),
-                                     kind.sample_file, settings)
+    document = kind.certificate_document(result, CertificateMetadata.from_dict(details),
+                                         kind.sample_file, settings)
+    _SAMPLE.update(document=document, printed=sample_certificates)
+    return document
 
 
-def _printed(sample_certificates, language: str) -> str:
-    """The text of the theodolite's sample certificate (``theodolite``'s document) printed in
-    ``language`` (once a run: tests/conftest.py's ``sample_certificates``), without its line
-    breaks and spaces (a line may break between two Chinese characters), and without each
-    page's foot and head."""
-    pdf = pdfium.PdfDocument(sample_certificates("theodolite", language)[0])
+def _printed(document, language: str) -> str:
+    """The PDF's text in ``language``, without its line breaks and spaces (a line may
+    break between two Chinese characters), and without each page's foot and head. The
+    sample's document (``theodolite``) is the sample certificate printed once a run (the
+    same document, :data:`_SAMPLE`); any other is printed here."""
+    if document is _SAMPLE.get("document"):
+        printed = _SAMPLE["printed"]("theodolite", language)[0]
+    else:
+        printed = certificate_pdf_bytes(replace(document, metadata=replace(
+            document.metadata, language=language)))
+    pdf = pdfium.PdfDocument(printed)
     try:
         pages = [pdf[i].get_textpage().get_text_range() for i in range(len(pdf))]
     finally:
@@ -58,12 +74,11 @@ def _section(text: str, start: str, end: str) -> str:
     return text[text.index(start) + len(start):text.index(end, text.index(start) + len(start))]
 
 
-def test_a_bilingual_certificate_states_conformity_in_chinese_then_english(
-        theodolite, sample_certificates):
+def test_a_bilingual_certificate_states_conformity_in_chinese_then_english(theodolite):
     """Fails on the old code: the bilingual certificate printed the statement in English
     only."""
     c = theodolite.conformity
-    section = _section(_printed(sample_certificates, "zh+en"), "符合性声明Statementofconformity",
+    section = _section(_printed(theodolite, "zh+en"), "符合性声明Statementofconformity",
                        "声明Statements")
     chinese, english = _flat(in_language(c.statement, ZH)), _flat(c.statement)
     assert chinese != english and chinese in section and english in section
@@ -79,18 +94,18 @@ def test_a_bilingual_certificate_states_conformity_in_chinese_then_english(
     for text in (c.rule, c.quantity, c.zones):
         assert _flat(in_language(text, ZH)) in section and _flat(text) in section
     # the statements in both languages; the results table not doubled
-    statements = _section(_printed(sample_certificates, "zh+en"), "声明Statements", "备注Remarks")
+    statements = _section(_printed(theodolite, "zh+en"), "声明Statements", "备注Remarks")
     fixed = "The results relate only to the item calibrated, as received, under the conditions stated."
     assert _flat(fixed) in statements and _flat(ZH(fixed)) in statements
 
 
 def test_a_chinese_statement_of_conformity_has_no_ascii_separator_between_chinese_parts(
-        sample_certificates):
+        theodolite):
     """Fails on the old code: "随机种子 928363538; 该区间…", "…（合格）。 本判定…"."""
-    section = _section(_printed(sample_certificates, "zh"), "符合性声明", "声明•")
+    section = _section(_printed(theodolite, "zh"), "符合性声明", "声明•")
     assert "随机种子" in section and "；该区间在验证中达到的包含概率" in section
     assert not re.search(r"[\u4e00-\u9fff（）\d][;,][\u4e00-\u9fff（]", section), section
-    english = _printed(sample_certificates, "en")
+    english = _printed(theodolite, "en")
     # every figure of the English statement, unchanged
     figures = re.compile(r"\d+\.\d+\"")
     assert figures.findall(section) == figures.findall(
