@@ -1,7 +1,10 @@
 """Opens the window on the screen Qt was started with, shows the capture panel docked at
 each side it can go (right, left, bottom) on every workbench, and prints, as JSON, the
 window's frame, the screen's free area and every control of the panel that is not wholly
-in sight (tests/app/capture/test_capture_panel_fits.py runs it on a 1280×720 screen)."""
+in sight, and at each step the set-up fields' room (tests/settings_fields_probe.py's
+records): ``{"panel": [...], "fields": [...]}``. tests/app/capture/test_capture_panel_fits.py
+and tests/widgets/test_settings_fields_fit.py read one run of it on a 1280×720 screen
+(:func:`docked_probed`)."""
 
 from __future__ import annotations
 
@@ -73,8 +76,21 @@ def each_docked_tab(prefix: str):
             yield app, window, panel, area_name, presenter
 
 
+def docked_probed(tmp_path_factory) -> dict:
+    """This probe's records on a 1280×720 screen, ``{"panel": [...], "fields": [...]}`` (the
+    second tests/settings_fields_probe.py's, made at the same steps), probed once a run for
+    the capture panel's test and the set-up fields' test (tests.conftest.once_a_run: one
+    process, one window on the samples and its 15 docked tabs, where each test made its own)."""
+    from tests.conftest import once_a_run
+
+    return once_a_run(tmp_path_factory, "docked-capture-panel-1280x720",
+                      lambda folder: run_at_1280x720("tests.capture_panel_probe", folder))
+
+
 def main() -> None:
-    found = []
+    from tests.settings_fields_probe import fields_at
+
+    found, fields = [], []
     for app, window, panel, area_name, presenter in each_docked_tab("anglebench-panel-"):
         frame = window.frameGeometry()
         screen = (window.screen() or app.primaryScreen()).availableGeometry()
@@ -101,7 +117,9 @@ def main() -> None:
                       "table": [table.width(), table.height()],
                       "panel": [panel.width(), panel.height()],
                       "plot": [plot.width(), plot.height()] if plot is not None else None})
-    print(json.dumps(found))  # noqa: T201 - the probe's output
+        # the set-up fields' room at the same step (they only read the window, as this does)
+        fields += fields_at(window, area_name, presenter)
+    print(json.dumps({"panel": found, "fields": fields}))  # noqa: T201 - the probe's output
 
 
 if __name__ == "__main__":

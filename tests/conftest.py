@@ -283,6 +283,65 @@ def issued_samples(tmp_path_factory):
     return once_a_run(tmp_path_factory, "issued-samples", issue_every_sample)
 
 
+def _sample_certificate(key: str, language: str, change: dict) -> tuple[bytes, list[str]]:
+    """``key``'s bundled sample analysed, its certificate made with the example's details
+    (resources/samples/certificate_<key>.json) updated by ``change`` and printed in
+    ``language``: (the PDF, fpdf2's warnings of a character no font has)."""
+    import json
+    import logging
+    from dataclasses import replace
+
+    from app.writers.certificate_pdf import certificate_pdf_bytes
+    from models.certificate.metadata import CertificateMetadata
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+
+    kind = KINDS[key]
+    rows = map_columns(read_table(SAMPLES / kind.sample_file), kind.columns)
+    settings = kind.settings_with_defaults(None)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), settings)
+    details = json.loads((SAMPLES / f"certificate_{key}.json").read_text("utf-8"))
+    document = kind.certificate_document(
+        result, CertificateMetadata.from_dict({**details, **change}), kind.sample_file, settings)
+    warnings: list[str] = []
+    handler = logging.Handler(logging.WARNING)
+    handler.emit = lambda record: warnings.append(record.getMessage())
+    logger = logging.getLogger("fpdf")
+    level = logger.level
+    logger.addHandler(handler)
+    logger.setLevel(logging.WARNING)
+    try:
+        pdf = certificate_pdf_bytes(replace(document, metadata=replace(
+            document.metadata, language=language)))
+    finally:
+        logger.removeHandler(handler)
+        logger.setLevel(level)
+    return pdf, [w for w in warnings if "missing" in w]
+
+
+@pytest.fixture(scope="session")
+def sample_certificates(tmp_path_factory):
+    """``sample_certificates(key, language, change=None)``: (the PDF, fpdf2's warnings of a
+    character no font has) of ``key``'s bundled sample certificate, the example's details
+    updated by ``change``, printed in ``language`` (:func:`_sample_certificate`). Each is
+    printed once a run for all the workers (:func:`once_a_run`): the Chinese certificate's
+    tests (tests/app/writers/test_certificate_chinese.py), the bilingual one's and the
+    manufacturer's term read the same sample certificates and never change them (a print
+    is 1–3 s of CPU; the theodolite's was printed in four modules)."""
+    import hashlib
+    import json
+
+    def printed(key: str, language: str, change: dict | None = None) -> tuple[bytes, list[str]]:
+        change = dict(change or {})
+        tag = hashlib.sha256(json.dumps(change, sort_keys=True).encode()).hexdigest()[:12]
+        name = f"sample-certificate-{key}-{language.replace('+', '_')}-{tag}"
+        return once_a_run(tmp_path_factory, name,
+                          lambda _folder: _sample_certificate(key, language, change))
+
+    return printed
+
+
 @pytest.fixture(scope="session")
 def validation_software_cases(tmp_path_factory):
     """``app.validation_report.software_cases()`` (a Chinese certificate printed and read

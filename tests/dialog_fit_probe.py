@@ -2,7 +2,9 @@
 each one's frame and the screen's available geometry (tests/widgets/test_dialogs_fit.py runs it
 in a process of its own per screen: an offscreen screen of a given size and scale), for each
 language of its arguments (``python -m tests.dialog_fit_probe en zh_CN``): a window of its own
-in each, one after another, ``{language: {dialog: ...}}``.
+in each, one after another, ``{language: {"dialogs": {dialog: ...}, "window and certificate
+dialog": ...}}``, the second tests/small_screen_probe.py's records of the same window, made
+before its dialogs are opened (tests/widgets/test_small_screens.py reads them).
 
 Each dialog is opened the way the user opens it (its menu action, its button), answered
 from a timer that records the modal window in front and closes it."""
@@ -15,6 +17,7 @@ import sys
 from PySide6.QtCore import QCoreApplication, QEvent, QPoint, QRect, QTimer
 from PySide6.QtWidgets import QApplication, QDialogButtonBox, QMessageBox, QWidget
 
+from tests import small_screen_probe
 from tests.screen_process import close_window, open_window
 
 found: dict[str, dict] = {}
@@ -67,20 +70,23 @@ def main() -> None:
     by_language = {}
     for language in sys.argv[1:] or ["en"]:
         found.clear()
-        probe(language)
-        by_language[language] = dict(found)
+        window = open_window("anglebench-fit-", language)
+        QApplication.processEvents()
+        record("main window", window)
+        # the window on each workbench and the certificate dialog as a small screen shows them
+        # (tests/small_screen_probe.py), in this window before its dialogs are opened: the
+        # records the same as that probe's own process gave (compared 2026-12-07)
+        small = small_screen_probe.measure(window)
+        probe(window)
+        by_language[language] = {"dialogs": dict(found), "window and certificate dialog": small}
     sys.stdout.write(json.dumps(by_language) + "\n")
 
 
-def probe(language: str) -> None:
-    """Every dialog of a window in ``language`` recorded in ``found``."""
+def probe(window) -> None:
+    """Every dialog of ``window`` (its "main window" recorded) recorded in ``found``; the
+    window closed."""
     from widgets.certificate_dialog import CertificateDialog
     from widgets.column_mapping_dialog import ColumnMappingDialog
-
-    app = QApplication.instance()
-    window = open_window("anglebench-fit-", language)
-    app.processEvents()
-    record("main window", window)
 
     # the certificate dialog as File › Export certificate opens it, with three standards
     meta = window.certificates.details("polygon")

@@ -36,6 +36,26 @@ def run_on_screen(probe: str, tmp_path: Path, width: int, height: int, scale: st
     return json.loads(run.stdout.strip().splitlines()[-1])
 
 
+#: every screen the fit tests probe (tests/widgets/test_dialogs_fit.py, test_small_screens.py):
+#: (width, height, QT_SCALE_FACTOR) → the languages asked of it
+PROBED_SCREENS = {(1280, 720, "1"): ("en",), (2560, 1600, "2"): ("zh_CN",),
+                  (1280, 720, "2"): ("en", "zh_CN")}
+
+
+def screen_probed(tmp_path_factory, width: int, height: int, scale: str) -> dict:
+    """What tests/dialog_fit_probe.py found on that screen (:data:`PROBED_SCREENS`), ``{language:
+    {"dialogs": ..., "window and certificate dialog": ...}}``: one process a screen, a window
+    in each language after another, probed once a run for every test and worker that reads it
+    (tests.conftest.once_a_run; a probe process is ~3.5 s of CPU, ~1.5 s of it starting, and
+    the window on the samples ~1 s)."""
+    from tests.conftest import once_a_run
+
+    languages = list(PROBED_SCREENS[width, height, scale])
+    name = f"screen-probe-{width}x{height}-{scale}-{'-'.join(languages)}"
+    return once_a_run(tmp_path_factory, name, lambda folder: run_on_screen(
+        "tests.dialog_fit_probe", folder, width, height, scale, languages))
+
+
 def open_window(prefix: str, language: str | None = None):
     """The main window on every bundled sample, shown, with its settings and recovery in a
     scratch folder of its own and in ``language`` (by default the probe's first argument, en

@@ -1,6 +1,7 @@
 """Opens the window on the screen Qt was started with, docks the capture panel (right, left,
 bottom) on every workbench, and prints, as JSON, every set-up field whose text does not fit
-in the field (tests/widgets/test_settings_fields_fit.py runs it on a 1280×720 screen)."""
+in the field (tests/widgets/test_settings_fields_fit.py reads :func:`fields_at`'s records,
+made in tests/capture_panel_probe.py's process on a 1280×720 screen at each of its steps)."""
 
 from __future__ import annotations
 
@@ -33,17 +34,27 @@ def room(field) -> tuple[str, int, int]:
     return text, edit.fontMetrics().horizontalAdvance(text), edit.contentsRect().width() - 4
 
 
+def fields_at(window, area_name: str, presenter) -> list[dict]:
+    """Every set-up field of ``presenter``'s tab in sight, its text, the width it needs and
+    the width it has (px), the capture panel docked at ``area_name``."""
+    found = []
+    form = presenter.view.settings
+    for key, field in form._fields.items():
+        if not field.isVisibleTo(form):
+            continue
+        text, needs, has = room(field)
+        found.append({"area": area_name, "workbench": presenter.kind.key,
+                      "key": key, "text": text, "needs": needs, "has": has,
+                      "window": window.frameGeometry().width()})
+    return found
+
+
 def main() -> None:
+    """The probe on its own (tests/capture_panel_probe.py makes these records in its own
+    process, at each of its steps)."""
     found = []
     for _app, window, _panel, area_name, presenter in each_docked_tab("anglebench-fields-"):
-        form = presenter.view.settings
-        for key, field in form._fields.items():
-            if not field.isVisibleTo(form):
-                continue
-            text, needs, has = room(field)
-            found.append({"area": area_name, "workbench": presenter.kind.key,
-                          "key": key, "text": text, "needs": needs, "has": has,
-                          "window": window.frameGeometry().width()})
+        found += fields_at(window, area_name, presenter)
     print(json.dumps(found))  # noqa: T201 - the probe's output
 
 

@@ -1,8 +1,9 @@
 """Opens the window (every workbench in turn) and the certificate dialog on the screen Qt was
 started with and prints, as JSON, what a technician on that screen would meet: each one's
 frame and least size against the screen's free area, and every text in the dialog shown
-narrower than it needs (tests/widgets/test_small_screens.py runs it in a process of its own
-per screen: an offscreen screen of a given size and scale)."""
+narrower than it needs. tests/widgets/test_small_screens.py reads :func:`measure`'s records
+from tests/dialog_fit_probe.py's process of each screen (an offscreen screen of a given size
+and scale), made in its window of each language before its dialogs are opened."""
 
 from __future__ import annotations
 
@@ -69,12 +70,14 @@ def record(widget: QWidget) -> dict:
             "minimum": [least.width(), least.height()]}
 
 
-def main() -> None:
-    app = QApplication.instance() or QApplication(["anglebench"])
+def measure(window) -> dict:
+    """What a technician meets on this screen in ``window`` (tests.screen_process.open_window's,
+    just opened): the window on each workbench, alone and with the instrument panel, and the
+    certificate dialog; the dialog closed, the panel hidden, the window left open."""
+    app = QApplication.instance()
     from app.screenshot import _example_metadata
     from widgets.certificate_dialog import CertificateDialog
 
-    window = open_window("anglebench-small-")
     found: dict[str, dict] = {}
     for index, presenter in enumerate(window.presenters):
         window.tabs.setCurrentIndex(index)
@@ -98,7 +101,14 @@ def main() -> None:
     found["certificate details"].update(
         cut=cut_texts(dialog), sideways=dialog.details_area.horizontalScrollBar().maximum())
     dialog.close()
-    close_window(window, found)
+    return found
+
+
+def main() -> None:
+    """The probe on its own: a window in the language of the first argument (en without one)."""
+    QApplication.instance() or QApplication(["anglebench"])
+    window = open_window("anglebench-small-")
+    close_window(window, measure(window))
 
 
 if __name__ == "__main__":

@@ -17,8 +17,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.conftest import once_a_run
-from tests.screen_process import run_on_screen
+from tests.screen_process import screen_probed
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
@@ -32,23 +31,15 @@ SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
 }
 
 
-def _languages_on(width: int, height: int, scale: str) -> list[str]:
-    """The languages the tests below ask of a screen (the register's test: both, on 640×360)."""
-    asked = {language for w, h, s, language in SCREENS.values() if (w, h, s) == (width, height, scale)}
-    return sorted(asked | ({"en", "zh_CN"} if (width, height, scale) == (1280, 720, "2") else set()))
-
-
 @pytest.fixture(scope="module")
 def probed(tmp_path_factory):
     """``probed(width, height, scale, language)``: what tests/dialog_fit_probe.py found on that
     screen in that language, each screen probed once a run in every language asked of it
-    (:func:`tests.conftest.once_a_run`: the workers share it); the tests only read it."""
+    (tests.screen_process.screen_probed: the workers and tests/widgets/test_small_screens.py
+    share it); the tests only read it."""
 
     def found(width: int, height: int, scale: str, language: str) -> dict:
-        languages = _languages_on(width, height, scale)
-        name = f"dialog-fit-{width}x{height}-{scale}-{'-'.join(languages)}"
-        return once_a_run(tmp_path_factory, name, lambda folder: run_on_screen(
-            "tests.dialog_fit_probe", folder, width, height, scale, languages))[language]
+        return screen_probed(tmp_path_factory, width, height, scale)[language]["dialogs"]
 
     return found
 

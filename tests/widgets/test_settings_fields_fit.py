@@ -6,14 +6,15 @@ from __future__ import annotations
 
 import pytest
 
-from tests.capture_panel_probe import run_at_1280x720
+from tests.capture_panel_probe import docked_probed
 
 pytestmark = pytest.mark.slow  # a window in a process of its own, on a screen of 1280×720
+# (the capture panel's test's: tests/capture_panel_probe.py docked_probed)
 
 
 
-def test_every_settings_field_shows_its_whole_text_at_1280x720_panel_docked(tmp_path):
-    found = run_at_1280x720("tests.settings_fields_probe", tmp_path)
+def test_every_settings_field_shows_its_whole_text_at_1280x720_panel_docked(tmp_path_factory):
+    found = docked_probed(tmp_path_factory)["fields"]
     assert {f["area"] for f in found} == {"right", "left", "bottom"}
     assert {f["workbench"] for f in found} == {"theodolite", "polygon", "fringe",
                                                "positioning", "crosscal"}

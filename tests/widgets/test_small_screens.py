@@ -1,7 +1,9 @@
 """The window and the certificate dialog on a technician's screen: a 1280×720 laptop,
 and the same screen at 200 % (640×360 logical pixels), in English and in Chinese. Each
 screen is an offscreen screen of that size in a process of its own (tests/small_screen_probe.py
-opens the window on every workbench and the dialog with the screenshot's details).
+measures the window on every workbench and the dialog with the screenshot's details, in the
+process tests/widgets/test_dialogs_fit.py's dialogs are opened in: one a screen, once a run,
+tests.screen_process.screen_probed; three processes of ~2.7 s of CPU each before).
 
 Before, the window could not be narrower than 780 px (the positioning workbench's 892:
 the readings pane held every column and the set-up's widest field, the figures' table
@@ -11,13 +13,11 @@ and three of the DCC fields' hints were cut ("…TRUSTED_CERTIFICATE, else the�
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
-from tests.screen_process import run_on_screen
+from tests.screen_process import screen_probed
 
-pytestmark = pytest.mark.slow  # a program of its own per screen
+pytestmark = pytest.mark.slow  # a program of its own per screen (shared with the dialogs' test)
 
 SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
     "1280x720": (1280, 720, "1", "en"),
@@ -26,14 +26,11 @@ SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
 }
 
 
-def _probe(tmp_path: Path, width: int, height: int, scale: str, language: str) -> dict:
-    return run_on_screen("tests.small_screen_probe", tmp_path, width, height, scale, language)
-
-
 @pytest.mark.parametrize("screen", SCREENS)
-def test_the_window_and_the_certificate_dialog_fit_the_screen(screen, tmp_path):
+def test_the_window_and_the_certificate_dialog_fit_the_screen(screen, tmp_path_factory):
     width, height, scale, language = SCREENS[screen]
-    found = _probe(tmp_path, width, height, scale, language)
+    found = screen_probed(tmp_path_factory, width, height, scale)[language][
+        "window and certificate dialog"]
     # five workbenches, alone and with the instrument panel open, and the dialog
     assert len(found) == 11
     too_big = []

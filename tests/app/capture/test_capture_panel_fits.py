@@ -7,14 +7,14 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import QSettings, Qt
 
-from tests.capture_panel_probe import run_at_1280x720
+from tests.capture_panel_probe import docked_probed
 
 pytestmark = pytest.mark.slow  # a window in a process of its own, on a screen of 1280×720
 
 
 
-def test_every_control_in_sight_at_1280x720_docked_anywhere(tmp_path):
-    found = run_at_1280x720("tests.capture_panel_probe", tmp_path)
+def test_every_control_in_sight_at_1280x720_docked_anywhere(tmp_path_factory):
+    found = docked_probed(tmp_path_factory)["panel"]
     assert {f["area"] for f in found} == {"right", "left", "bottom"}
     assert len(found) == 3 * 5  # every workbench at every side
     for seen in found:

@@ -13,12 +13,12 @@ from __future__ import annotations
 import collections
 import json
 import re
-from dataclasses import replace
+from collections.abc import Callable
 from pathlib import Path
+from typing import NamedTuple
 
 import pytest
 
-from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.certificate.metadata import CertificateMetadata
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
@@ -52,55 +52,43 @@ WORD = re.compile(r"(?<![\w.])[A-Za-z]{3,}(?![\w])")  # "down" of A_down is a sy
 FIGURE = re.compile(r"[+-]?\d+\.\d+(?:\"|°| mV| V| %| rad)")
 
 
+class Samples(NamedTuple):
+    """Every sample analysed (workbench → (kind, result, settings, its example's details)),
+    and ``printed``: tests/conftest.py's ``sample_certificates``."""
+
+    analysed: dict[str, tuple]
+    printed: Callable[..., tuple[bytes, list[str]]]
+
+
 @pytest.fixture(scope="module")
-def analysed():
+def analysed(sample_certificates):
     out = {}
     for key, kind in KINDS.items():
         rows = map_columns(read_table(SAMPLES / kind.sample_file), kind.columns)
         settings = kind.settings_with_defaults(None)
         out[key] = (kind, kind.analyze(ReadingsSheet(kind.columns, rows).parse(), settings),
                     settings, json.loads((SAMPLES / f"certificate_{key}.json").read_text("utf-8")))
-    return out
+    return Samples(out, sample_certificates)
 
 
 def _document(analysed, key: str, change: dict):
-    kind, result, settings, details = analysed[key]
+    kind, result, settings, details = analysed.analysed[key]
     metadata = CertificateMetadata.from_dict({**details, **change})
     return kind.certificate_document(result, metadata, kind.sample_file, settings)
 
 
 #: (workbench, variant, language) → the printed text and fpdf2's missing-glyph warnings: a
-#: sample's certificate is printed once a process (each takes ~1–3 s; the glyph check reads
-#: the ones the figures check printed)
+#: sample's certificate is printed once a run (tests/conftest.py's ``sample_certificates``:
+#: each takes ~1–3 s; the glyph check reads the ones the figures check printed, and the
+#: bilingual and manufacturer's term tests some of them) and read once a process
 _PRINTS: dict[tuple[str, str, str], tuple[str, list[str]]] = {}
-
-
-def _print_and_missing(document, language: str) -> tuple[str, list[str]]:
-    """``document`` printed in ``language``: its text and fpdf2's warnings of a character no
-    font has."""
-    import logging
-
-    warnings: list[str] = []
-    handler = logging.Handler(logging.WARNING)
-    handler.emit = lambda record: warnings.append(record.getMessage())
-    logger = logging.getLogger("fpdf")
-    level = logger.level
-    logger.addHandler(handler)
-    logger.setLevel(logging.WARNING)
-    try:
-        text = _text(certificate_pdf_bytes(replace(document, metadata=replace(
-            document.metadata, language=language))))
-    finally:
-        logger.removeHandler(handler)
-        logger.setLevel(level)
-    return text, [w for w in warnings if "missing" in w]
 
 
 def _sample_printed(analysed, key: str, variant: str, language: str) -> tuple[str, list[str]]:
     """The sample certificate of ``key`` in ``variant``, printed in ``language`` (once)."""
     if (key, variant, language) not in _PRINTS:
-        _PRINTS[key, variant, language] = _print_and_missing(
-            _document(analysed, key, VARIANTS[variant]), language)
+        pdf, missing = analysed.printed(key, language, VARIANTS[variant])
+        _PRINTS[key, variant, language] = (_text(pdf), missing)
     return _PRINTS[key, variant, language]
 
 
