@@ -38,6 +38,37 @@ def test_rig_truth_is_the_standards_figures_of_the_true_distribution(shape):
         assert ours[key] == pytest.approx(value, abs=1e-12), key
 
 
+def test_the_study_holds_axes_whose_sigma_changes_along_the_axis():
+    """The rig's σ along the axis (AxisCase's ``along``): at random in 1–2 × for each target
+    and direction, rising 1 → 3 ×, one target's × 3; the study holds each of them for every
+    shape at 12 and 36 targets (24 axes appended: the first 96 keep their truths and
+    streams), and ``anglebench validate`` runs two of them."""
+    from models.positioning.figure_coverage import STUDY_CASES, VALIDATE_CASES
+
+    plain = AxisCase("rough", 12, 1.0, seed=5)
+    base = plain.sigma["up"][0]
+    random = AxisCase("rough", 12, 1.0, seed=5, along="random")
+    assert np.array_equal(random.mu["up"], plain.mu["up"])  # the same curve
+    for d, factor in (("up", 1.0), ("down", 1.1)):
+        ratio = random.sigma[d] / (factor * base)
+        assert np.all((ratio >= 1.0) & (ratio <= 2.0)) and np.ptp(ratio) > 0.5, d
+    ramp = AxisCase("smooth", 12, 1.0, along="ramp")
+    assert ramp.sigma["up"] / ramp.sigma["up"][0] == pytest.approx(np.linspace(1.0, 3.0, 12))
+    one = AxisCase("spike", 36, 1.0, along="one")
+    assert np.flatnonzero(one.sigma["up"] != one.sigma["up"][0]).tolist() == [12]
+    assert one.truth()["R_up"] == pytest.approx(12.0 * one.sigma["up"][0])
+    with pytest.raises(ValueError):
+        AxisCase("smooth", 12, 1.0, along="sideways")
+    along = [c for c in STUDY_CASES if c.along]
+    assert len(STUDY_CASES) == 120 and STUDY_CASES[96:] == tuple(along)
+    assert {(c.shape, c.targets, c.along) for c in along} == {
+        (s, m, a) for s in SHAPES for m in (12, 36) for a in ("random", "ramp", "one")}
+    assert all(c.truth() == AxisCase(c.shape, c.targets, c.noise_ratio, c.varying,
+                                     seed=c.seed).truth() for c in STUDY_CASES[:96])
+    assert [(c.shape, c.along) for c in VALIDATE_CASES if c.along] == [
+        ("smooth", "ramp"), ("rough", "random")]
+
+
 def test_same_readings_same_intervals_and_r_bias_handled():
     """A flat axis with σ = 1 everywhere: R↑ = 4 max s over 12 targets is biased high (the
     measured R↑ is above the truth 4σ in most tests); the interval, seeded from the readings,
