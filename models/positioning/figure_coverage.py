@@ -24,7 +24,7 @@ from models.positioning.analysis import POSITIONING
 from models.positioning.report import figure_uncertainties
 from models.readings.sheet import ReadingsSheet
 from models.uncertainty.probability_text import percent_text
-from models.validation.axis_figures_rig import AxisCase
+from models.validation.axis_figures_rig import SIGMA_ALONG, AxisCase
 
 __all__ = ["FIGURES", "PROBABILITY_STEPS", "STUDY_CASES", "TRUTHS", "VALIDATE_CASES",
            "FigureCoverage", "achieved_probability", "axis_hits", "coverage_study",
@@ -37,19 +37,29 @@ FIGURES = ("A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_do
 #: varying along the axis (96 axes): the 48 of 12 and 72 targets at 0.1, 0.5 and 2 first, then
 #: those of 36 targets and of repeatability 1 × (added in 0.8.2 to match the width study's
 #: grid: it and an audit found E↑ and E↓ weakest there; appended, so that the first axes keep
-#: their truths and random streams)
-STUDY_CASES = tuple(AxisCase(shape, targets, ratio, varying, seed=k)
-                    for k, (shape, targets, ratio, varying) in enumerate(
-                        [(s, m, r, v) for s in ("smooth", "rough", "spike", "sample")
+#: their truths and random streams); then (0.8.26, pos77) the 24 axes whose σ changes along the
+#: axis beyond ±50 %: shapes × 12 and 36 targets × σ at random in 1–2 × per target and
+#: direction, rising 1 → 3 × along the axis, or one target's × 3 (AxisCase's ``along``), at
+#: repeatability 1 × (an audit through the command line found M short there: 25 targets, σ
+#: at random, a rough curve whose crest and trough stood alone)
+STUDY_CASES = tuple(AxisCase(shape, targets, ratio, varying, seed=k, along=along)
+                    for k, (shape, targets, ratio, varying, along) in enumerate(
+                        [(s, m, r, v, "") for s in ("smooth", "rough", "spike", "sample")
                          for m in (12, 72) for r in (0.1, 0.5, 2.0) for v in (False, True)]
-                        + [(s, 36, r, v) for s in ("smooth", "rough", "spike", "sample")
+                        + [(s, 36, r, v, "") for s in ("smooth", "rough", "spike", "sample")
                            for r in (0.1, 0.5, 2.0) for v in (False, True)]
-                        + [(s, m, 1.0, v) for s in ("smooth", "rough", "spike", "sample")
-                           for m in (12, 36, 72) for v in (False, True)]))
+                        + [(s, m, 1.0, v, "") for s in ("smooth", "rough", "spike", "sample")
+                           for m in (12, 36, 72) for v in (False, True)]
+                        + [(s, m, 1.0, False, a) for s in ("smooth", "rough", "spike", "sample")
+                           for m in (12, 36) for a in SIGMA_ALONG]))
 
 #: the cases ``anglebench validate`` runs (12 targets: the study's quick half; the benchmark
-#: runs every case)
-VALIDATE_CASES = tuple(c for c in STUDY_CASES if c.targets == 12 and c.noise_ratio in (0.1, 2.0))
+#: runs every case): σ constant or varying ±50 % at repeatability 0.1 and 2 ×, and two axes
+#: whose σ changes along the axis beyond that (a rough curve with σ at random per target, a
+#: smooth one with σ rising 1 → 3 ×: 18 axes, 2 more tests' analyses than the 16 before each)
+VALIDATE_CASES = tuple(c for c in STUDY_CASES if c.targets == 12 and (
+    (not c.along and c.noise_ratio in (0.1, 2.0))
+    or (c.shape, c.along) in (("rough", "random"), ("smooth", "ramp"))))
 
 #: the miss rate allowed by the binomial test (one-sided)
 ALPHA = 0.01

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["SAMPLE_DOWN", "SAMPLE_UP", "SHAPES", "AxisCase", "true_figures"]
+__all__ = ["SAMPLE_DOWN", "SAMPLE_UP", "SHAPES", "SIGMA_ALONG", "AxisCase", "true_figures"]
 
 #: the bundled sample's mean deviations (″, 13 targets 0…360°, forward and backward): a real
 #: axis's curve
@@ -38,6 +38,11 @@ SAMPLE_DOWN = (4.55, 8.36, 10.33, 9.98, 6.73, 1.52, -1.71, -1.75, -1.54, -1.11, 
                4.70)
 
 SHAPES = ("smooth", "rough", "spike", "sample")
+
+#: how σ may change along the axis beside ``varying`` (:class:`AxisCase`'s ``along``):
+#: at random in 1–2 × for each target and direction, rising linearly 1 → 3 × from the first
+#: target to the last, or one target (the third of the way along) at 3 ×
+SIGMA_ALONG = ("random", "ramp", "one")
 
 
 def _periodic(values: tuple[float, ...], angle_deg: np.ndarray) -> np.ndarray:
@@ -76,7 +81,10 @@ class AxisCase:
     """One axis: ``shape`` of f, ``targets`` equally spaced over a turn, repeatability
     ``noise_ratio`` × the signal (σ = ratio × half the peak-to-peak of f), constant over the
     targets or (``varying``) changing by ±50 % along the axis, the backward direction's
-    10 % larger; ``runs`` runs each way."""
+    10 % larger; ``runs`` runs each way. ``along`` (one of :data:`SIGMA_ALONG`, "" for none)
+    multiplies σ further along the axis: "random" by a factor drawn in 1–2 for each target
+    and direction (from the case's seed, after the curve), "ramp" by 1 → 3 linearly over the
+    targets, "one" the target a third of the way along by 3."""
 
     shape: str
     targets: int
@@ -84,6 +92,7 @@ class AxisCase:
     varying: bool = False
     runs: int = 5
     seed: int = 0
+    along: str = ""
 
     def __post_init__(self) -> None:
         rng = np.random.default_rng(self.seed)
@@ -92,7 +101,20 @@ class AxisCase:
         sigma = self.noise_ratio * 0.5 * float(np.ptp(self.f)) * np.ones(self.targets)
         if self.varying:
             sigma = sigma * (1.0 + 0.5 * np.sin(np.radians(self.angles) + 0.7))
-        self.sigma = {"up": sigma, "down": 1.1 * sigma}
+        up, down = sigma, 1.1 * sigma
+        if self.along == "random":
+            up, down = up * rng.uniform(1.0, 2.0, self.targets), \
+                down * rng.uniform(1.0, 2.0, self.targets)
+        elif self.along == "ramp":
+            ramp = np.linspace(1.0, 3.0, self.targets)
+            up, down = up * ramp, down * ramp
+        elif self.along == "one":
+            one = np.ones(self.targets)
+            one[self.targets // 3] = 3.0
+            up, down = up * one, down * one
+        elif self.along:
+            raise ValueError(f"unknown σ along the axis {self.along}")
+        self.sigma = {"up": up, "down": down}
         self.mu = {"up": self.f + 0.5 * self.b, "down": self.f - 0.5 * self.b}
 
     def readings(self, rng: np.random.Generator) -> list[tuple[float, int, str, float]]:

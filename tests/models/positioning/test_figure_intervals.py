@@ -38,6 +38,37 @@ def test_rig_truth_is_the_standards_figures_of_the_true_distribution(shape):
         assert ours[key] == pytest.approx(value, abs=1e-12), key
 
 
+def test_the_study_holds_axes_whose_sigma_changes_along_the_axis():
+    """The rig's σ along the axis (AxisCase's ``along``): at random in 1–2 × for each target
+    and direction, rising 1 → 3 ×, one target's × 3; the study holds each of them for every
+    shape at 12 and 36 targets (24 axes appended: the first 96 keep their truths and
+    streams), and ``anglebench validate`` runs two of them."""
+    from models.positioning.figure_coverage import STUDY_CASES, VALIDATE_CASES
+
+    plain = AxisCase("rough", 12, 1.0, seed=5)
+    base = plain.sigma["up"][0]
+    random = AxisCase("rough", 12, 1.0, seed=5, along="random")
+    assert np.array_equal(random.mu["up"], plain.mu["up"])  # the same curve
+    for d, factor in (("up", 1.0), ("down", 1.1)):
+        ratio = random.sigma[d] / (factor * base)
+        assert np.all((ratio >= 1.0) & (ratio <= 2.0)) and np.ptp(ratio) > 0.5, d
+    ramp = AxisCase("smooth", 12, 1.0, along="ramp")
+    assert ramp.sigma["up"] / ramp.sigma["up"][0] == pytest.approx(np.linspace(1.0, 3.0, 12))
+    one = AxisCase("spike", 36, 1.0, along="one")
+    assert np.flatnonzero(one.sigma["up"] != one.sigma["up"][0]).tolist() == [12]
+    assert one.truth()["R_up"] == pytest.approx(12.0 * one.sigma["up"][0])
+    with pytest.raises(ValueError):
+        AxisCase("smooth", 12, 1.0, along="sideways")
+    along = [c for c in STUDY_CASES if c.along]
+    assert len(STUDY_CASES) == 120 and STUDY_CASES[96:] == tuple(along)
+    assert {(c.shape, c.targets, c.along) for c in along} == {
+        (s, m, a) for s in SHAPES for m in (12, 36) for a in ("random", "ramp", "one")}
+    assert all(c.truth() == AxisCase(c.shape, c.targets, c.noise_ratio, c.varying,
+                                     seed=c.seed).truth() for c in STUDY_CASES[:96])
+    assert [(c.shape, c.along) for c in VALIDATE_CASES if c.along] == [
+        ("smooth", "ramp"), ("rough", "random")]
+
+
 def test_same_readings_same_intervals_and_r_bias_handled():
     """A flat axis with σ = 1 everywhere: R↑ = 4 max s over 12 targets is biased high (the
     measured R↑ is above the truth 4σ in most tests); the interval, seeded from the readings,
@@ -408,4 +439,58 @@ def test_e_upper_end_holds_a_spike_whose_mean_came_out_low(draw, keys):
         q_low, q_high = np.quantile(true_errors[key] - truth[key], (TAIL, 1.0 - TAIL))
         error = intervals[key].value - truth[key]
         assert q_low <= error <= q_high, key  # a correct interval covers this test
+        assert intervals[key].low <= truth[key] <= intervals[key].high, key
+
+
+def _lone_crests_sigma_at_random() -> AxisCase:
+    """pos77's axis: 25 targets over 0…360°, a rough curve (every harmonic to the 12th,
+    amplitudes 1/k, random phases, and a random part of 0.4) scaled to 4″ peak to peak whose
+    crest and trough each stand alone (the bidirectional mean 1.99″ at the crest, the next
+    target 1.44″; −2.01″ and −1.48″ at the trough), a reversal about 0.4″, σ drawn at random in
+    1–2″ for each target and direction, 5 runs; drawn as pos77's rig draws it (its seed 7713)."""
+    r = np.random.default_rng(7713)
+    t = np.radians(np.linspace(0.0, 360.0, 25))
+    k = np.arange(1, 13)
+    curve = np.sum(np.sin(np.outer(t, k) + r.uniform(0.0, 2 * np.pi, k.size)) / k, axis=1)
+    curve = curve + 0.4 * r.standard_normal(25)
+    reversal = 0.8 + 0.25 * r.standard_normal(25)
+    scale = 4.0 / np.ptp(curve)
+    curve, reversal = curve * scale, 0.5 * reversal * scale
+    case = AxisCase("rough", 25, 1.0)
+    case.mu = {"up": curve + 0.5 * reversal, "down": curve - 0.5 * reversal}
+    case.sigma = {"up": r.uniform(1.0, 2.0, 25), "down": r.uniform(1.0, 2.0, 25)}
+    return case
+
+
+@pytest.mark.parametrize("draw", [14, 49, 83])
+def test_m_upper_end_holds_a_lone_crest_read_low_where_sigma_changes_at_random(draw):
+    """pos77's axis (:func:`_lone_crests_sigma_at_random`), three tests of a seeded stream in
+    which M (the range of the bidirectional means) came out 0.45–0.6″ below its truth, 4.00″.
+    In each, M's error is inside the central 95.45 % of its own distribution (20 000 draws
+    from the true axis), so a correct interval covers the truth; M's and Pa's must too. Until
+    0.8.26 their upper end was the calibrated bootstrap's alone, whose worlds took the lone
+    crest and trough read low for ones among a crowd, and the truth lay above them (pos77,
+    through the command line: M 125 and 130 of 150 tests of two streams against 92.5 %
+    printed, every miss above). Their upper end now also reaches the unshrunk world's pivot at
+    an eighth of the tail, as E's (figure_intervals.UPPER_REACH_FIGURES): of the stream's
+    first 150 tests the truth lay above M's interval in 18, now in 10 (4 of them beyond M's
+    true central 95.45 %, where a correct interval misses too). Seeded: the same readings and
+    bootstrap every run."""
+    case = _lone_crests_sigma_at_random()
+    truth = case.truth()
+    assert truth["M"] == pytest.approx(4.0)
+    rng = np.random.default_rng(5)
+    for _ in range(draw):
+        _stats(case, rng)
+    means, sds, runs = _stats(case, rng)
+    draws = np.random.default_rng(1).standard_normal((2, 20000, 25))
+    true_stats = {d: (case.mu[d] + case.sigma[d] / math.sqrt(case.runs) * draws[j],
+                      np.broadcast_to(case.sigma[d], (20000, 25)))
+                  for j, d in enumerate(("up", "down"))}
+    q_low, q_high = np.quantile(axis_figures(true_stats)["M"] - truth["M"], (TAIL, 1.0 - TAIL))
+    intervals = figure_intervals(means, sds, runs, 0.9545, seed=draw)
+    error = intervals["M"].value - truth["M"]
+    assert -0.7 < error < -0.4  # M came out low
+    assert q_low <= error <= q_high  # a correct interval covers this test
+    for key in ("M", "Pa"):
         assert intervals[key].low <= truth[key] <= intervals[key].high, key
