@@ -656,15 +656,46 @@ def _with_unmodelled_harmonics(theta, u_sin, u_cos, fits, orders, phase_index, p
     return wider, (refit[0], refit[1]), ()
 
 
+#: the degrees of freedom the noise of the readings needs beyond the unknowns of a channel:
+#: one, for its variance to be estimated at all (the coverage factor of the budget's Type A
+#: rows, Student's t of n − p degrees of freedom, carries how little one tells)
+NOISE_DOF = 1
+
+
+def least_samples(orders: tuple[int, ...]) -> int:
+    """The fewest samples a record of the harmonic ``orders`` needs: the unknowns of each
+    channel (its offset, and a sine and a cosine an order) and :data:`NOISE_DOF` degrees of
+    freedom for the noise. (Four times the unknowns were asked for before: 16 samples of
+    two periods at N = 8, orders 1 and 3, five unknowns a channel, were refused for 20,
+    cov76 F9.) A record must also cover a whole period
+    (:func:`check_record_covers_a_period`), and the phases tell the orders apart
+    (:func:`check_orders_not_aliased`)."""
+    return 1 + 2 * len(orders) + NOISE_DOF
+
+
+def check_enough_samples(count: int, orders: tuple[int, ...], per_period: int = 0) -> None:
+    """Refuse a record of fewer than :func:`least_samples`; with N samples a period, orders
+    that alias at N are named first, the refusal's real reason (N = 8 and orders 1, 3, 5 over
+    three periods was refused as "24 samples; at least 28", cov76 F9)."""
+    least = least_samples(orders)
+    if count >= least:
+        return
+    if per_period:
+        check_orders_not_aliased(np.arange(per_period) * (TWO_PI / per_period), orders,
+                                 per_period)
+    raise ValueError(message(QT_TR_NOOP(
+        "{size} samples; at least {value} are needed: {params} unknowns for each channel "
+        "(the offset and harmonics {orders}) and one degree of freedom for the noise"),
+        size=count, value=least, params=least - NOISE_DOF,
+        orders=", ".join(str(k) for k in orders)))
+
+
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult:
     s = _settings(settings)
     lines, per_period = int(s["lines_per_rev"]), int(s["samples_per_period"])
     orders = harmonic_orders(int(s["max_order"]), str(s["harmonics"]))
     u_sin, u_cos = parsed["u_sin"], parsed["u_cos"]
-    if u_sin.size < 4 * (1 + 2 * len(orders)):
-        raise ValueError(message(
-            QT_TR_NOOP("{size} samples; at least {value} are needed"),
-            size=u_sin.size, value=4 * (1 + 2 * len(orders))))
+    check_enough_samples(u_sin.size, orders, per_period)
     warnings: list[str] = []
     _check_signals(parsed, u_sin, u_cos)
     checkpoint()

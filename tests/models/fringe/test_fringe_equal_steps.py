@@ -71,7 +71,7 @@ def test_equal_steps_are_not_refused_over_the_designs_the_threshold_was_chosen_o
 
     for noise in (0.001, 0.02):
         for periods in (1, 1.5, 3, 8):
-            for n in (64, 256) if periods < 3 else (16, 64, 256):
+            for n in (8, 16, 64, 256):
                 head = JitteredHead(n, periods, noise)
                 settings = {"max_order": 3} if n < 12 else {}
                 result = _steps(head, int(1000 * noise) + n + int(10 * periods), **settings)
