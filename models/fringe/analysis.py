@@ -48,6 +48,7 @@ from models.fringe.phase_consistency import (
 from models.fringe.result import FringeResult
 from models.fringe.sampling_phase_noise import phase_noise_rad
 from models.fringe.signal_quality import default_window, signal_quality
+from models.fringe.unmodelled_harmonics import SIGNIFICANCE as HARMONICS_SIGNIFICANCE
 from models.fringe.unmodelled_harmonics import unmodelled_harmonics
 from models.messages import (
     QT_TR_NOOP,
@@ -647,12 +648,14 @@ def _with_unmodelled_harmonics(theta, u_sin, u_cos, fits, orders, phase_index, p
              if phase_index is not None else fit_channels(theta, [u_sin, u_cos], wider))
     warnings.append(message(QT_TR_NOOP(
         "The signals hold harmonics of order {orders} beyond the orders asked for ({asked}): "
-        "their residuals show {heard}, each beyond the scatter at a risk of 0.1 %. "
+        "their residuals show {heard}, beyond the scatter (of {tested} orders looked at on "
+        "the two channels, signals that hold none have one named at a risk of {risk} %). "
         "They are fitted as well, so that the error between the samples (and its "
         "half range over the whole period) is the signals' and not a model's that "
         "leaves them out. Ask for them (harmonics: all, or a higher highest "
         "harmonic) to fit them by choice."),
-        orders=", ".join(map(str, more)), asked=", ".join(map(str, orders)), heard=heard))
+        orders=", ".join(map(str, more)), asked=", ".join(map(str, orders)), heard=heard,
+        tested=found[0].tested, risk=f"{100 * HARMONICS_SIGNIFICANCE:g}"))
     return wider, (refit[0], refit[1]), ()
 
 
