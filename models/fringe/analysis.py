@@ -11,6 +11,8 @@ import numpy as np
 from models.cancellation import checkpoint
 from models.fringe import KEY, MEASURAND_STANDARDS, TITLE
 from models.fringe.compensation_at_samples import compensation_caveat
+from models.fringe.equal_steps import SIGNIFICANCE as EQUAL_STEPS_SIGNIFICANCE
+from models.fringe.equal_steps import step_scatter, unequal_steps
 from models.fringe.folded_orders import FoldedOrder, folded_orders
 from models.fringe.model import (
     MODEL_INPUT,
@@ -46,6 +48,7 @@ from models.fringe.phase_consistency import (
 from models.fringe.result import FringeResult
 from models.fringe.sampling_phase_noise import phase_noise_rad
 from models.fringe.signal_quality import default_window, signal_quality
+from models.fringe.unmodelled_harmonics import SIGNIFICANCE as HARMONICS_SIGNIFICANCE
 from models.fringe.unmodelled_harmonics import unmodelled_harmonics
 from models.messages import (
     QT_TR_NOOP,
@@ -273,17 +276,21 @@ def _ellipse(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray) -> El
 THETA_FITS_BETTER = 0.5
 
 
-def _theta_fits_better(parsed: ParsedReadings, per_period: int, warnings: list[str]) -> bool:
+def _theta_fits_better(parsed: ParsedReadings, per_period: int, warnings: list[str],
+                       asked: tuple[int, ...] = (1, 3, 5)) -> bool:
     """Whether a complete θ column given with N is where the samples were and N's equal steps
     are not (cov76 F4: sampling jittered by 2° of phase, its θ column dropped for N gave a
     half range of 1.3–1.8″ for a true 0.71″): the signals say so — fitted at the θ column's
     phases they leave at most :data:`THETA_FITS_BETTER` of the residual they leave at N
-    equal steps. A θ column that is only noisier than N's steps fits worse and is not used."""
+    equal steps. A θ column that is only noisier than N's steps fits worse and is not used.
+    Both fits are of the orders ``asked`` that N's steps resolve (below N/2): with the
+    fundamental alone at N below 12, a 3rd harmonic of 2 % left in both residuals hid 1° of
+    jitter (the θ column's fit left 0.58 of the steps', not used)."""
     theta_col = parsed["theta_deg"]
     if not np.all(np.isfinite(theta_col)) or np.any(np.abs(theta_col) > THETA_LIMIT_DEG):
         return False
     place = parsed.row_index - parsed.row_index[0]
-    orders = (1, 3, 5) if per_period >= 12 else (1,)
+    orders = tuple(k for k in asked if 2 * k < per_period) or (1,)
     channels = [parsed["u_sin"], parsed["u_cos"]]
     if not all(np.all(np.isfinite(c)) for c in channels):
         return False
@@ -304,12 +311,12 @@ def _theta_fits_better(parsed: ParsedReadings, per_period: int, warnings: list[s
     return True
 
 
-def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str]
-                  ) -> tuple[str, np.ndarray | None]:
+def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str],
+                  orders: tuple[int, ...] = (1, 3, 5)) -> tuple[str, np.ndarray | None]:
     """The mode and, for a fixed sampling or a θ column, each sample's phase (rad)."""
     theta_col = parsed["theta_deg"]
     has_theta = bool(np.any(np.isfinite(theta_col)))
-    if per_period and has_theta and _theta_fits_better(parsed, per_period, warnings):
+    if per_period and has_theta and _theta_fits_better(parsed, per_period, warnings, orders):
         per_period = 0  # the θ column's phases are where the samples were
     if per_period:
         if has_theta:
@@ -578,6 +585,42 @@ def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
     return turns
 
 
+def check_steps_equal(theta: np.ndarray, u_sin: np.ndarray, u_cos: np.ndarray,
+                      fits: tuple[ChannelFit, ChannelFit], per_period: int,
+                      stated_u_rad: float = 0.0,
+                      theta_given: bool = False) -> None:
+    """Refuse N equal steps that the samples were not at: they scatter along the fitted
+    Lissajous figure far more than across it (models.fringe.equal_steps), the excess a
+    random error of each sample's phase (sampling jitter) beyond the phase reference u
+    stated. The whole analysis is refused, not only the decided figure: every error it
+    would print (each sample's, their peak-to-peak, the half range, the fit's parameters
+    and their U) is taken against phases the samples were not at, and carries the jitter as
+    if it were interpolation error; the phases measured (a θ column) remove it
+    (``theta_given``: a θ column was given, and fitted the signals no better than the
+    steps, so it was not used: said)."""
+    scatter = step_scatter(theta, u_sin, u_cos, fits, per_period, stated_u_rad)
+    if not unequal_steps(scatter):
+        return
+    assert scatter is not None
+    stated = (message(QT_TR_NOOP(", beyond the phase reference u of {u}° stated"),
+                      u=f"{math.degrees(stated_u_rad):.3g}") if stated_u_rad > 0 else "")
+    raise ValueError(message(QT_TR_NOOP(
+        "the samples are not at N = {n} equal steps: about the fitted signals they scatter "
+        "{tangential} mV rms along the Lissajous figure and {radial} mV rms across it, where "
+        "the signals' noise moves them alike ({dof} degrees of freedom each; a chance below "
+        "{risk} at equal steps). The excess is a random error of {jitter}° rms in each "
+        "sample's phase (sampling jitter){stated}, which the analysis at equal steps would "
+        "print as interpolation error. Give the phases measured for the samples (a θ "
+        "column){theta}"),
+        n=per_period, tangential=f"{1e3 * scatter.tangential_v:.3g}",
+        radial=f"{1e3 * scatter.radial_v:.3g}", dof=scatter.dof,
+        risk=f"{EQUAL_STEPS_SIGNIFICANCE:g}", jitter=f"{math.degrees(scatter.jitter_rad):.2g}",
+        stated=stated,
+        theta=message(QT_TR_NOOP("; the θ column given fits the signals no better than the "
+                                 "equal steps, and is not those phases either"))
+        if theta_given else ""))
+
+
 def _with_unmodelled_harmonics(theta, u_sin, u_cos, fits, orders, phase_index, per_period,
                                stated_step, method, warnings, phase_u=0.0):
     """(orders, fits, orders left out): the fits again with the orders the signals hold
@@ -605,13 +648,49 @@ def _with_unmodelled_harmonics(theta, u_sin, u_cos, fits, orders, phase_index, p
              if phase_index is not None else fit_channels(theta, [u_sin, u_cos], wider))
     warnings.append(message(QT_TR_NOOP(
         "The signals hold harmonics of order {orders} beyond the orders asked for ({asked}): "
-        "their residuals show {heard}, each beyond the scatter at a risk of 0.1 %. "
+        "their residuals show {heard}, beyond the scatter (of {tested} orders looked at on "
+        "the two channels, signals that hold none have one named at a risk of {risk} %). "
         "They are fitted as well, so that the error between the samples (and its "
         "half range over the whole period) is the signals' and not a model's that "
         "leaves them out. Ask for them (harmonics: all, or a higher highest "
         "harmonic) to fit them by choice."),
-        orders=", ".join(map(str, more)), asked=", ".join(map(str, orders)), heard=heard))
+        orders=", ".join(map(str, more)), asked=", ".join(map(str, orders)), heard=heard,
+        tested=found[0].tested, risk=f"{100 * HARMONICS_SIGNIFICANCE:g}"))
     return wider, (refit[0], refit[1]), ()
+
+
+#: the degrees of freedom the noise of the readings needs beyond the unknowns of a channel:
+#: one, for its variance to be estimated at all (the coverage factor of the budget's Type A
+#: rows, Student's t of n − p degrees of freedom, carries how little one tells)
+NOISE_DOF = 1
+
+
+def least_samples(orders: tuple[int, ...]) -> int:
+    """The fewest samples a record of the harmonic ``orders`` needs: the unknowns of each
+    channel (its offset, and a sine and a cosine an order) and :data:`NOISE_DOF` degrees of
+    freedom for the noise. (Four times the unknowns were asked for before: 16 samples of
+    two periods at N = 8, orders 1 and 3, five unknowns a channel, were refused for 20,
+    cov76 F9.) A record must also cover a whole period
+    (:func:`check_record_covers_a_period`), and the phases tell the orders apart
+    (:func:`check_orders_not_aliased`)."""
+    return 1 + 2 * len(orders) + NOISE_DOF
+
+
+def check_enough_samples(count: int, orders: tuple[int, ...], per_period: int = 0) -> None:
+    """Refuse a record of fewer than :func:`least_samples`; with N samples a period, orders
+    that alias at N are named first, the refusal's real reason (N = 8 and orders 1, 3, 5 over
+    three periods was refused as "24 samples; at least 28", cov76 F9)."""
+    least = least_samples(orders)
+    if count >= least:
+        return
+    if per_period:
+        check_orders_not_aliased(np.arange(per_period) * (TWO_PI / per_period), orders,
+                                 per_period)
+    raise ValueError(message(QT_TR_NOOP(
+        "{size} samples; at least {value} are needed: {params} unknowns for each channel "
+        "(the offset and harmonics {orders}) and one degree of freedom for the noise"),
+        size=count, value=least, params=least - NOISE_DOF,
+        orders=", ".join(str(k) for k in orders)))
 
 
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult:
@@ -619,16 +698,13 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     lines, per_period = int(s["lines_per_rev"]), int(s["samples_per_period"])
     orders = harmonic_orders(int(s["max_order"]), str(s["harmonics"]))
     u_sin, u_cos = parsed["u_sin"], parsed["u_cos"]
-    if u_sin.size < 4 * (1 + 2 * len(orders)):
-        raise ValueError(message(
-            QT_TR_NOOP("{size} samples; at least {value} are needed"),
-            size=u_sin.size, value=4 * (1 + 2 * len(orders))))
+    check_enough_samples(u_sin.size, orders, per_period)
     warnings: list[str] = []
     _check_signals(parsed, u_sin, u_cos)
     checkpoint()
     ellipse = _ellipse(parsed, u_sin, u_cos)
     checkpoint()
-    source, given_theta = _phase_source(parsed, per_period, warnings)
+    source, given_theta = _phase_source(parsed, per_period, warnings, orders)
     if source == "theta_column":  # N given and the θ column taken in its place: N is unused
         per_period = 0
     stated_ellipse: EllipseFit | None = ellipse
@@ -756,6 +832,10 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         folds = folded_orders(phases, orders, counts, phase_u)
         if folds:
             warnings.append(folded_orders_warning(theta, folds, given_n))
+    if phase_index is not None:  # N equal steps that the samples were not at (cov76 F4)
+        check_steps_equal(theta, u_sin, u_cos, (sin_fit, cos_fit), per_period,
+                          math.radians(float(s["phase_reference_u"])),
+                          bool(np.any(np.isfinite(parsed["theta_deg"]))))
     checkpoint()
     if s["period_nm"]:
         unit, period = "nm", float(s["period_nm"])

@@ -224,3 +224,24 @@ def test_the_f_test_s_closed_form_is_scipy_s_f_distribution(dof):
     np.testing.assert_allclose(ours, theirs, rtol=1e-12, atol=1e-300)
     assert f_survival_2(0.0, dof) == 1.0 and math.isnan(f_survival_2(math.nan, dof))
     assert f_survival_2(math.inf, dof) == 0.0
+
+
+def test_the_risk_of_a_false_order_is_stated_a_record_over_the_orders_looked_at():
+    """cov76 F7: "order 13, cos 30.7 mV (u 5.3 mV)" on signals of orders 1, 3, 5 only. The u
+    is the coefficients' (their scatter over 400 null records of that design, 32 a period,
+    2 periods, 56 mV: 0.99–1.05 of the median u); that record's scatter came out at 0.53 of
+    the noise, and the F test of 27 degrees of freedom carried it (p 1.7e-5). But the level
+    was 0.1 % / m a channel, so a record had twice the 0.1 % the warning said ("each"): in
+    3000 records of the audit's head (64 a period, 4 periods, 5 mV) 15 had an order named,
+    8 with the level 1 − (1 − 0.1 %)^(1/m) over both channels' m orders. Seed 436: order 15
+    of the sine channel at p = 5.0e-5, under 0.1 %/13 = 7.7e-5, over 3.8e-5 of the 26."""
+    from tests.fringe_jitter_rig import JitteredHead
+
+    u_sin, u_cos, _ = JitteredHead(64, 4, 0.005).record(np.random.default_rng(436))
+    result = FRINGE.analyze(_parsed(u_sin, u_cos), {"samples_per_period": 64})
+    assert result.sin_fit.orders == (1, 3, 5)
+    assert not [w for w in result.warnings if "harmonics of order" in w]
+    from models.fringe.unmodelled_harmonics import order_level
+
+    assert order_level(26) == pytest.approx(1 - (1 - 1e-3) ** (1 / 26), rel=1e-12)
+    assert 1 - (1 - order_level(26)) ** 26 == pytest.approx(1e-3, rel=1e-9)
