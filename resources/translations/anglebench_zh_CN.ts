@@ -5435,10 +5435,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{count} 个不同相位无法确定每路信号的 {params} 个参数（直流偏置及 {orders} 次谐波）；请降低最高谐波次数或加密采样</translation>
     </message>
     <message>
-        <source>{size} samples; at least {value} are needed</source>
-        <translation>{size} 个采样点；至少需要 {value} 个</translation>
-    </message>
-    <message>
         <source>The Lissajous figure holds {count} distinct phases: the ellipse (Heydemann: offsets, amplitudes, quadrature) is not determined by fewer than {least} and is not stated; the fit against the phases is.</source>
         <translation>李萨如图只含 {count} 个不同的相位：少于 {least} 个相位不能确定椭圆（海德曼法：偏置、幅值、正交误差），故不予给出；按相位的拟合照常给出。</translation>
     </message>
@@ -5508,12 +5504,20 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>拟合所略去的谐波在这些相位上折叠进所拟合的次数：{named}。在采样相位上，这样的谐波看起来与所拟合的谐波完全相同，因此所指明的每个幅值都是二者合在一起（按相量相加），而不只是所拟合次数的幅值，其 U 也不包含另一者；采样之间的细分误差及其在整个周期上的半范围不能确定（对半范围的判定不予给出）。请加密采样以区分二者。</translation>
     </message>
     <message>
-        <source>The signals hold harmonics of order {orders} that the particle swarm (orders 1, 3, 5) leaves out ({heard}): the error between the samples is not determined, and the half range over the whole period is withheld; use least squares</source>
-        <translation>信号含有粒子群法（1、3、5 次）未计入的 {orders} 次谐波（{heard}）：采样点之间的误差无法确定，整个周期上的半峰峰值不予给出；请使用最小二乘法</translation>
+        <source>, beyond the phase reference u of {u}° stated</source>
+        <translation>，超出所给出的相位基准 u {u}°</translation>
     </message>
     <message>
-        <source>The signals hold harmonics of order {orders} beyond the orders asked for ({asked}): their residuals show {heard}, each beyond the scatter at a risk of 0.1 %. They are fitted as well, so that the error between the samples (and its half range over the whole period) is the signals&apos; and not a model&apos;s that leaves them out. Ask for them (harmonics: all, or a higher highest harmonic) to fit them by choice.</source>
-        <translation>信号含有所设阶次（{asked}）以外的 {orders} 次谐波：残差显示 {heard}，均在 0.1 % 风险下超出分散性。这些谐波也一并拟合，使采样点之间的误差（及其在整个周期上的半峰峰值）属于信号本身，而不是遗漏它们的模型。如需主动拟合，请设置（谐波：全部，或提高最高次谐波）。</translation>
+        <source>the samples are not at N = {n} equal steps: about the fitted signals they scatter {tangential} mV rms along the Lissajous figure and {radial} mV rms across it, where the signals&apos; noise moves them alike ({dof} degrees of freedom each; a chance below {risk} at equal steps). The excess is a random error of {jitter}° rms in each sample&apos;s phase (sampling jitter){stated}, which the analysis at equal steps would print as interpolation error. Give the phases measured for the samples (a θ column){theta}</source>
+        <translation>采样点不在 N = {n} 的等间隔相位上：相对于拟合信号，它们沿李萨如图形的离散为 {tangential} mV rms，垂直于图形的离散为 {radial} mV rms，而信号噪声使二者相同（各 {dof} 个自由度；等间隔时出现的概率低于 {risk}）。超出部分为每个采样点相位 {jitter}° rms 的随机误差（采样抖动）{stated}，按等间隔分析会将其作为细分误差印出。请给出为采样点测得的相位（θ 列）{theta}</translation>
+    </message>
+    <message>
+        <source>; the θ column given fits the signals no better than the equal steps, and is not those phases either</source>
+        <translation>；所给 θ 列与信号的拟合并不比等间隔更好，也不是这些相位</translation>
+    </message>
+    <message>
+        <source>The signals hold harmonics of order {orders} that the particle swarm (orders 1, 3, 5) leaves out ({heard}): the error between the samples is not determined, and the half range over the whole period is withheld; use least squares</source>
+        <translation>信号含有粒子群法（1、3、5 次）未计入的 {orders} 次谐波（{heard}）：采样点之间的误差无法确定，整个周期上的半峰峰值不予给出；请使用最小二乘法</translation>
     </message>
     <message>
         <source>against this phase the cos channel leads the sin channel by {lead}°, not about 90°: the channels are in the wrong order or one is inverted (check the columns, or the sense of θ)</source>
@@ -9850,6 +9854,15 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>{k} 次谐波不能确定{modulo}：在所采样的相位上，其正弦与余弦仅因相位的离散而不同（差别为相位在周期上均匀分布时的 {separation} %；须至少 {required} %；N/2 次或 N 的倍数次）；请降低最高谐波次数或加密采样</translation>
     </message>
     <message>
+        <source>The signals hold harmonics of order {orders} beyond the orders asked for ({asked}): their residuals show {heard}, beyond the scatter (of {tested} orders looked at on the two channels, signals that hold none have one named at a risk of {risk} %). They are fitted as well, so that the error between the samples (and its half range over the whole period) is the signals&apos; and not a model&apos;s that leaves them out. Ask for them (harmonics: all, or a higher highest harmonic) to fit them by choice.</source>
+        <translation>信号含有所设阶次（{asked}）以外的 {orders} 次谐波：残差显示 {heard}，超出分散性（在两个通道上检查了 {tested} 个阶次，不含此类谐波的信号被指出含有一个的风险为 {risk} %）。这些谐波也一并拟合，使采样点之间的误差（及其在整个周期上的半峰峰值）属于信号本身，而不是遗漏它们的模型。如需主动拟合，请设置（谐波：全部，或提高最高次谐波）。</translation>
+    </message>
+    <message>
+        <source>{size} samples; at least {value} are needed: {params} unknowns for each channel (the offset and harmonics {orders}) and one degree of freedom for the noise</source>
+        <extracomment>the degrees of freedom the noise of the readings needs beyond the unknowns of a channel: one, for its variance to be estimated at all (the coverage factor of the budget&apos;s Type A rows, Student&apos;s t of n − p degrees of freedom, carries how little one tells)</extracomment>
+        <translation>{size} 个采样点；至少需要 {value} 个：每个通道 {params} 个未知量（偏置和 {orders} 次谐波），另加噪声的一个自由度</translation>
+    </message>
+    <message>
         <source>the particle swarm (the method of Gao et al. 2013) fits orders 1, 3, 5 only</source>
         <translation>粒子群法（高旭等 2013 年论文的方法）只拟合 1、3、5 次</translation>
     </message>
@@ -12322,7 +12335,7 @@ what a name or description may hold that prints as no character of its own: a li
     </message>
     <message>
         <source>max(μ + 2σ) − min(μ − 2σ) over both directions</source>
-        <extracomment>shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1 and 2 × the signal × constant or varying along the axis (96 axes): the 48 of 12 and 72 targets at 0.1, 0.5 and 2 first, then those of 36 targets and of repeatability 1 × (added in 0.8.2 to match the width study&apos;s grid: it and an audit found E↑ and E↓ weakest there; appended, so that the first axes keep their truths and random streams) the cases ``anglebench validate`` runs (12 targets: the study&apos;s quick half; the benchmark runs every case) the miss rate allowed by the binomial test (one-sided) the widest interval, as a multiple of what a correct one needs, that is still honest the probabilities an interval may state: the one asked for, else a multiple of 0.5 % what each figure&apos;s truth is (the record states it beside the figure)</extracomment>
+        <extracomment>shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1 and 2 × the signal × constant or varying along the axis (96 axes): the 48 of 12 and 72 targets at 0.1, 0.5 and 2 first, then those of 36 targets and of repeatability 1 × (added in 0.8.2 to match the width study&apos;s grid: it and an audit found E↑ and E↓ weakest there; appended, so that the first axes keep their truths and random streams); then (0.8.26, pos77) the 24 axes whose σ changes along the axis beyond ±50 %: shapes × 12 and 36 targets × σ at random in 1–2 × per target and direction, rising 1 → 3 × along the axis, or one target&apos;s × 3 (AxisCase&apos;s ``along``), at repeatability 1 × (an audit through the command line found M short there: 25 targets, σ at random, a rough curve whose crest and trough stood alone) the cases ``anglebench validate`` runs (12 targets: the study&apos;s quick half; the benchmark runs every case): σ constant or varying ±50 % at repeatability 0.1 and 2 ×, and two axes whose σ changes along the axis beyond that (a rough curve with σ at random per target, a smooth one with σ rising 1 → 3 ×: 18 axes, 2 more tests&apos; analyses than the 16 before each) the miss rate allowed by the binomial test (one-sided) the widest interval, as a multiple of what a correct one needs, that is still honest the probabilities an interval may state: the one asked for, else a multiple of 0.5 % what each figure&apos;s truth is (the record states it beside the figure)</extracomment>
         <translation>两个方向上 max(μ + 2σ) − min(μ − 2σ)</translation>
     </message>
     <message>
