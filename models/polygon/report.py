@@ -54,8 +54,10 @@ reading, not reduced by repeating sets, so not the sets' scatter); the drift, wh
 closures show beyond 2u² of their two readings' noise. None of these is the same error as
 another, and each is drawn with its nature: the budget's per-point u agrees with the spread
 of simulated runs (``polygon_budget_trials``: 0.94–1.05 with one set or one direction; with
-2 sets each way 0.81–0.89, the carried drift's input holding a drift the noisy closures cannot
-rule out, tests/models/uncertainty/test_uncertainty_monte_carlo.py). Unlike the theodolite, whose
+2 sets each way 0.93 at 200 trials and 0.96 at 1000, the carried drift's input holding a
+drift the noisy closures cannot rule out, tests/models/uncertainty/
+test_uncertainty_monte_carlo.py; 0.81–0.89 while the offsets' inputs held that drift's
+estimate again, tests/models/polygon/test_polygon_zero_moves_once.py). Unlike the theodolite, whose
 stated figure is the per-reading error of the instrument that makes the readings, the
 standards here cannot be told apart by their statement (a polygon's per-face figure may be
 stated per "reading"), so none is merged with the noise.
@@ -457,13 +459,17 @@ def _zero_offsets_component(result: PolygonResult, noise: float, n: int,
     the half range, and the errors about their mean, do not see it).
 
     Within a direction the sets' means show their offsets from the direction's first set f_d,
-    D_s = x̄_s − x̄_{f_d} (to their readings' noise σ√(2/n)); between the directions they do
-    not (the mean reversal holds the same). So c = Σ w_s D_s + W·(ζ_f − ζ_1), W the other
+    D_s = x̄_s − x̄_{f_d} (to their readings' noise σ√(2/n)), and with them the drift carried
+    on between those sets, whatever moved the zero (:func:`_seen_in_means`; the carried
+    drift's input holds only the rest); between the directions they do not (the mean
+    reversal holds the same). So c = Σ w_s D_s + W·(ζ_f − ζ_1), W the other
     direction's share of the mean and ζ_f its first set's offset: the first part is seen,
     left in the errors, and enters as a known bias |Σ w_s D_s| in quadrature (as the carried
-    drift's; RSS_u), with no degrees of freedom to lose; only the second is unknown, of
-    variance W²·2τ² (the offset between two sets, τ the standard deviation of one set's from
-    the scatter of the sets' means within each direction). With 2 sets each way, W = ½: u =
+    drift's; RSS_u), beyond the share of it the means' own noise gives (positive part: the
+    repeatability's input holds that noise), with no degrees of freedom to lose; only the
+    second is unknown, of variance W²·2τ² (the offset between two sets, τ the standard
+    deviation of one set's from the scatter of the sets' means within each direction beyond
+    their own noise σ²/n, positive part). With 2 sets each way, W = ½: u =
     τ/√2 with 2 degrees of freedom, where all of c was counted unknown (0.866τ, 2 degrees of
     freedom: U 2.7–2.9 times what its scatter needs, tests/models/polygon/
     test_polygon_zero_offsets_seen.py); one direction only: all of c is seen. For one set's
