@@ -674,7 +674,8 @@ def within_set_noise(values: np.ndarray, directions: np.ndarray,
 def set_offsets_spread(values: np.ndarray, directions: np.ndarray,
                        carried: np.ndarray | None = None,
                        carried_covariance: np.ndarray | None = None,
-                       floor: float = 0.0) -> tuple[float, int] | None:
+                       floor: float = 0.0, noise_share: float = 0.0
+                       ) -> tuple[float, int] | None:
     """The standard deviation of one set's zero offset, from the scatter of the means over
     the positions of the sets of each direction measured twice or more, pooled, with its
     degrees of freedom (Σ (m_d − 1)); None without a repeated direction. ``carried``: each
@@ -685,8 +686,10 @@ def set_offsets_spread(values: np.ndarray, directions: np.ndarray,
     carried drift's input, not here again). The scatter also holds the means' reading noise
     σ²/n: not taken out (a few per cent, on the safe side); ``floor`` (σ/√n; 0: none) is the
     least it is taken as once the estimate's share is out, so that offsets merely hidden in
-    that noise never read 0. Between the directions the offsets cannot be told from the
-    mean reversal."""
+    that noise never read 0. ``noise_share``: the variance one set's mean has from its
+    readings' noise (σ²/n), taken out of the scatter instead (positive part: the offsets
+    beyond the noise the repeatability's input already holds; 0: kept in). Between the
+    directions the offsets cannot be told from the mean reversal."""
     values = np.asarray(values, dtype=float)
     directions = np.asarray(directions)
     means = values.mean(axis=1)
@@ -710,7 +713,7 @@ def set_offsets_spread(values: np.ndarray, directions: np.ndarray,
         for rows in blocks:
             block = covariance[np.ix_(rows, rows)]
             squares -= float(np.trace(block)) - float(np.sum(block)) / rows.size
-    return math.sqrt(max(squares / dof, floor**2)), dof
+    return math.sqrt(max(squares / dof - noise_share, floor**2, 0.0)), dof
 
 
 #: the standard normal quantile of how unlikely the sets' offsets must be under the reading

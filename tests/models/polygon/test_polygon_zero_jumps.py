@@ -111,8 +111,11 @@ def test_study_smoke_zero_jumps_24_faces():
     assert abs(c["median_offset"]) < 0.08, c
     assert c["false_pass"] <= 1, c
     # per point: the points of a run share its offsets, so 16 runs count as a few more than
-    # 16 (±5 %); 96.8 % over 150 runs (tests/models/polygon/test_polygon_zero_offsets_seen.py)
-    assert c["point_coverage"] >= 0.90, c
+    # 16 (±5 % and more); 96.8 % over 150 runs (tests/models/polygon/
+    # test_polygon_zero_offsets_seen.py). These 16: 91.3 % while the closures' noisy drift
+    # estimate was counted again in the offsets' inputs, 88.3 % now; the same cell over 150
+    # runs 96.5 % then, 95.7 % now (val77, /work/s77/val77/cells.py)
+    assert c["point_coverage"] >= 0.875, c
 
 
 def test_study_smoke_zero_drift_24_faces():
