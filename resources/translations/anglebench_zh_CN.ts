@@ -573,10 +573,6 @@
         <translation>各方向内由测回平均值显示的自准直仪零位偏移</translation>
     </message>
     <message>
-        <source>the sets&apos; offsets from their direction&apos;s first set as their means show them, weighted as in the mean: {b}, left in the errors (the same at every position) and counted as a known bias, in quadrature</source>
-        <translation>各测回相对于其方向第一个测回的偏移（由各测回平均值显示，按平均值中的权重加权）：{b}，保留在误差中（在每个位置都相同），作为已知偏差以方和根计入</translation>
-    </message>
-    <message>
         <source>one unknown offset per set against set 1&apos;s zero reading (standard deviation {s} of a set&apos;s, from the scatter of the sets&apos; means within each direction, {dof} degrees of freedom); between the directions the readings cannot show it: the same at every position, so it moves the errors but not their half range</source>
         <translation>每个测回相对于第 1 测回零位读数的一个未知偏移（单个测回偏移的标准偏差 {s}，由每个方向内各测回平均值的离散求得，自由度 {dof}）；两个方向之间的偏移读数无法显示：在每个位置都相同，因此它移动误差，但不改变其半峰峰值</translation>
     </message>
@@ -8543,6 +8539,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>the autocollimator&apos;s zero drifts over the whole test: each set starts where the one before closed (closures {closures}); {how}; the bias it leaves beyond the closures&apos; reading noise, in quadrature</source>
         <translation>自准直仪零位在整个测试中持续漂移：每一测回从前一测回闭合处开始（闭合差 {closures}）；{how}；其留下的、超出闭合读数噪声的偏差按方和根计入</translation>
+    </message>
+    <message>
+        <source>the sets&apos; means from their direction&apos;s first set&apos;s, weighted as in the mean: {b} (the zero&apos;s offsets and its drift between those sets), beyond their readings&apos; noise {s}: left in the errors (the same at every position) and counted as a known bias, in quadrature</source>
+        <translation>各测回平均值相对于其方向第一个测回的平均值，按其在平均值中的权重：{b}（零位的偏移及其在这些测回之间的漂移），超出其读数噪声 {s}：保留在误差中（在每个位置都相同），作为已知偏差以方和根计入</translation>
     </message>
     <message>
         <source>{name}, at the zero face</source>
