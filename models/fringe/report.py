@@ -614,7 +614,7 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
         [c for c in _stated_inputs(result, np.zeros(1), np.zeros(1), to_unit)
          if c.name == _SETTING_REFERENCE], result.unit_symbol)
     references = _per_sample_references(result, references, to_unit)
-    shown = references and references[0].name == REFERENCE_SHOWN  # (in the stated's place)
+    shown = bool(references) and references[0].name == REFERENCE_SHOWN  # (in the stated's place)
     u_references = [float(np.max(reference.standard_uncertainty(1))) for reference in references]
     scatter = scatter_beyond_reference(result, math.hypot(*u_references) / to_unit)
     components = []
