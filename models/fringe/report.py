@@ -6,8 +6,11 @@ inputs, per sample, with ``S, C`` the modelled signals:
 
 * the signal noise: u(φ) = √(C² σ_s² + S² σ_c²) / (S² + C²), σ from each
   channel's fit residuals (Type A, n − p degrees of freedom) beyond what the stated
-  inputs the readings hold show there — the phase reference's independent errors and
-  the ADC's quantisation, each a row of its own: counted once, the larger of the scatter
+  inputs the readings hold show there — the phase reference's independent errors (as
+  stated, or, with a θ column, as the readings show them along the Lissajous figure where
+  that is larger beyond chance: a phase error's whole variance, of which each channel's
+  scatter holds half; models.fringe.phase_error_shown) and the ADC's quantisation, each a
+  row of its own: counted once, the larger of the scatter
   and the stated figures (a sample's U summed them: 1.23 and 1.31 times what its
   deviations need, 98.5 % and 99.3 % covered, where the reference's 0.2″ or an LSB of
   5 mV over 0.5 mV of noise dominates; models.fringe.reference_through_fit);
