@@ -59,8 +59,8 @@ import numpy as np
 
 from models.fringe.model import ChannelFit, model_signal, model_slope
 
-__all__ = ["JITTER_FLOOR_PERIOD", "SIGNIFICANCE", "StepScatter", "step_scatter",
-           "unequal_steps"]
+__all__ = ["JITTER_FLOOR_PERIOD", "SIGNIFICANCE", "StepScatter", "along_and_across",
+           "f_survival", "step_scatter", "unequal_steps"]
 
 TWO_PI = 2.0 * math.pi
 #: the chance, at equal steps, that the tangential scatter passes the test by the noise alone
@@ -86,7 +86,7 @@ class StepScatter:
     within_phases: bool
 
 
-def _f_survival(x: float, dof: float) -> float:
+def f_survival(x: float, dof: float) -> float:
     """P(F > ``x``) for Fisher's F with ``dof`` and ``dof`` degrees of freedom."""
     from scipy.special import fdtrc  # imported late, as start-up pays it
 
@@ -111,6 +111,34 @@ def _whole_periods(place: np.ndarray, per_period: int, channels: list[np.ndarray
         grid[rows, slot[keep]] = c[keep]
         out.append(grid)
     return out
+
+
+def along_and_across(at: np.ndarray, r_s: np.ndarray, r_c: np.ndarray,
+                     fits: tuple[ChannelFit, ChannelFit], dof: int
+                     ) -> tuple[float, float, float, float] | None:
+    """(tangential, radial, effective degrees of freedom, mean squared speed): the mean
+    squares (V², over ``dof``) of the residuals (``r_s``, ``r_c``) at the phases ``at``
+    along and across the fitted Lissajous figure, the degrees of freedom the samples share
+    out, and mean(|dU/dθ|²) (V² a rad² of phase); None where the figure stands still or
+    nothing scatters across it."""
+    d_s, d_c = model_slope(at, fits[0]), model_slope(at, fits[1])
+    speed = np.hypot(d_s, d_c)
+    if not np.all(speed > 0.0):
+        return None
+    along2 = ((r_s * d_s + r_c * d_c) / speed) ** 2
+    across2 = ((r_s * d_c - r_c * d_s) / speed) ** 2
+    tangential = float(np.sum(along2)) / dof
+    radial = float(np.sum(across2)) / dof
+    if not radial > 0.0:
+        return None
+    # the degrees of freedom the samples share out: a few samples that scatter unlike the
+    # rest (one typed 0.5 V off in a record without noise; an ADC's rounding flipping by a
+    # step at a few phases, the noise below the step) decide both sums, whatever their
+    # count; normal noise, along and across together: 2 (Σs)² / (m Σs²) = 1
+    share = (along2 + across2).ravel()
+    effective = min(float(dof), 2.0 * dof * float(np.sum(share)) ** 2
+                    / (share.size * float(share @ share)))
+    return tangential, radial, effective, float(np.mean(speed * speed))
 
 
 def step_scatter(theta_rad: np.ndarray, u_sin: np.ndarray, u_cos: np.ndarray,
@@ -143,30 +171,16 @@ def step_scatter(theta_rad: np.ndarray, u_sin: np.ndarray, u_cos: np.ndarray,
         dof = theta.size - params
     if dof < 1:
         return None
-    d_s, d_c = model_slope(at, fits[0]), model_slope(at, fits[1])
-    speed = np.hypot(d_s, d_c)
-    if not np.all(speed > 0.0):
+    split = along_and_across(at, r_s, r_c, fits, dof)
+    if split is None:
         return None
-    along2 = ((r_s * d_s + r_c * d_c) / speed) ** 2
-    across2 = ((r_s * d_c - r_c * d_s) / speed) ** 2
-    tangential = float(np.sum(along2)) / dof
-    radial = float(np.sum(across2)) / dof
-    if not radial > 0.0:
-        return None
-    # the degrees of freedom the samples share out: a few samples that scatter unlike the
-    # rest (one typed 0.5 V off in a record without noise; an ADC's rounding flipping by a
-    # step at a few phases, the noise below the step) decide both sums, whatever their
-    # count; normal noise, along and across together: 2 (Σs)² / (m Σs²) = 1
-    share = (along2 + across2).ravel()
-    effective = min(float(dof), 2.0 * dof * float(np.sum(share)) ** 2
-                    / (share.size * float(share @ share)))
+    tangential, radial, effective, speed2 = split
     if within:  # differences: twice a reading's variance, along and across alike
         tangential, radial = 0.5 * tangential, 0.5 * radial
-    speed2 = float(np.mean(speed * speed))  # V² a rad² of phase
     expected = radial + stated_u_rad ** 2 * speed2
     jitter = math.sqrt(max(tangential - radial, 0.0) / speed2)
     return StepScatter(math.sqrt(tangential), math.sqrt(radial), max(int(effective), 1),
-                       jitter, _f_survival(tangential / expected, max(effective, 1.0)), within)
+                       jitter, f_survival(tangential / expected, max(effective, 1.0)), within)
 
 
 def unequal_steps(scatter: StepScatter | None) -> bool:

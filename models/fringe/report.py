@@ -6,8 +6,11 @@ inputs, per sample, with ``S, C`` the modelled signals:
 
 * the signal noise: u(φ) = √(C² σ_s² + S² σ_c²) / (S² + C²), σ from each
   channel's fit residuals (Type A, n − p degrees of freedom) beyond what the stated
-  inputs the readings hold show there — the phase reference's independent errors and
-  the ADC's quantisation, each a row of its own: counted once, the larger of the scatter
+  inputs the readings hold show there — the phase reference's independent errors (as
+  stated, or, with a θ column, as the readings show them along the Lissajous figure where
+  that is larger beyond chance: a phase error's whole variance, of which each channel's
+  scatter holds half; models.fringe.phase_error_shown) and the ADC's quantisation, each a
+  row of its own: counted once, the larger of the scatter
   and the stated figures (a sample's U summed them: 1.23 and 1.31 times what its
   deviations need, 98.5 % and 99.3 % covered, where the reference's 0.2″ or an LSB of
   5 mV over 0.5 mV of noise dominates; models.fringe.reference_through_fit);
@@ -70,6 +73,7 @@ from models.fringe.parameter_uncertainty import (
     parameter_uncertainty,
     phase_expanded,
 )
+from models.fringe.phase_error_shown import phase_error_shown
 from models.fringe.reference_through_fit import (
     reading_scatter_beyond,
     reference_curve_modes,
@@ -471,8 +475,11 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
     standards = reference_standard_components(phase_meta, 1.0, QT_TR_NOOP("sample"),
                                               unit=result.unit, common=True)
     stated = _stated_inputs(result, ds, dc, to_unit)
-    components = _reference_once(phase_meta, standards, stated, result.unit_symbol)
-    components.append(_signal_noise(result, phase_meta, standards, stated, ds, dc, to_unit, dof))
+    references = _per_sample_references(result, _reference_once(
+        phase_meta, standards, [c for c in stated if c.name == _SETTING_REFERENCE],
+        result.unit_symbol), to_unit)
+    components = [*references, *(c for c in stated if c.name != _SETTING_REFERENCE)]
+    components.append(_signal_noise(result, references, ds, dc, to_unit, dof))
     if not as_found:
         components.append(BudgetComponent(
             MODEL_INPUT, "A", "normal", model, 1.0, 1.0, dof,
@@ -482,19 +489,57 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
                              floor=cmc_of(settings, "cmc"))
 
 
-def _signal_noise(result, metadata: CertificateMetadata, standards: list[BudgetComponent],
-                  stated: list[BudgetComponent], ds: np.ndarray, dc: np.ndarray, to_unit: float,
-                  dof: int) -> BudgetComponent:
+#: the phase reference's row where the readings show more phase error per sample than the
+#: stated u (or none is stated): the estimate, Type A (models.fringe.phase_error_shown)
+REFERENCE_SHOWN = QT_TR_NOOP("Phase reference (shown by the readings)")
+
+
+def _per_sample_references(result, references: list[BudgetComponent], to_unit: float
+                           ) -> list[BudgetComponent]:
+    """The phase reference's rows of a sample's U (``references``: the listed standards that
+    may be it and the settings' u, entered once), or, where the readings show a larger
+    per-sample phase error against their θ column (their scatter along the Lissajous figure
+    beyond that across it, more than the stated u beyond chance:
+    :func:`models.fringe.phase_error_shown.phase_error_shown`), one row of that estimate in
+    their place, Type A with its own degrees of freedom: the
+    readings' phase error counted once and whole (the larger of the stated u and what the
+    readings show), not half of it left in the "Signal noise" row (covf77 F1)."""
+    stated_rad = math.hypot(*(float(np.max(c.standard_uncertainty(1))) for c in references)
+                            ) / to_unit if references else 0.0
+    shown = phase_error_shown(result, stated_rad)
+    if shown is None or not (shown.beyond_stated and shown.u_rad > stated_rad):
+        return references
+    u = shown.u_rad * to_unit
+    scatter = {"tangential": f"{shown.tangential_v * 1e3:.3g}",
+               "radial": f"{shown.radial_v * 1e3:.3g}", "u": f"{u:.2g}{result.unit_symbol}"}
+    if references:
+        note = message(QT_TR_NOOP(
+            "the readings scatter {tangential} mV rms along the Lissajous figure and {radial} "
+            "mV across it: the excess is a phase error of u = {u} per sample against the θ "
+            "column, more than the u stated ({stated}: {names}), and is entered in its place "
+            "(Type A; counted once, the larger)"), **scatter,
+            stated=f"{stated_rad * to_unit:.2g}{result.unit_symbol}",
+            names=listed_names(references))
+    else:
+        note = message(QT_TR_NOOP(
+            "no u is stated for the phase reference: the readings scatter {tangential} mV rms "
+            "along the Lissajous figure and {radial} mV across it, the excess a phase error of "
+            "u = {u} per sample against the θ column, entered (Type A); the reference's own "
+            "uncertainty is still not stated"), **scatter)
+    return [BudgetComponent(REFERENCE_SHOWN, "A", "normal", u, 1.0, 1.0, shown.dof, note)]
+
+
+def _signal_noise(result, references: list[BudgetComponent], ds: np.ndarray, dc: np.ndarray,
+                  to_unit: float, dof: int) -> BudgetComponent:
     """A sample's "Signal noise": each channel's scatter about the fit, converted to phase,
-    beyond what the stated inputs the readings hold show there, each of those its own row
+    beyond what the inputs the readings hold show there, each of those its own row
     (counted once: :func:`models.fringe.reference_through_fit.reading_scatter_beyond`):
-    the phase reference's independent errors (none with an estimated phase, which follows
-    the readings) and the ADC's quantisation, LSB/√12 a reading."""
-    references = _reference_once(metadata, standards,
-                                 [c for c in stated if c.name == _SETTING_REFERENCE],
-                                 result.unit_symbol)
+    the phase reference's independent errors (``references``: stated, or what the readings
+    show where larger; none with an estimated phase, which follows the readings) and the
+    ADC's quantisation, LSB/√12 a reading."""
     u_rad = 0.0 if result.phase_source == "estimated" else math.hypot(
-        *(float(np.max(c.standard_uncertainty(1))) for c in references)) / to_unit
+        *(float(np.max(c.standard_uncertainty(1))) for c in references)) / to_unit \
+        if references else 0.0
     lsb_v = 1e-3 * float((result.inputs or {}).get("adc_lsb_mv", 0.0) or 0.0)
     sin_b, cos_b = reading_scatter_beyond(result, u_rad, lsb_v / math.sqrt(12.0))
     noise = np.hypot(ds * sin_b.sigma_v, dc * cos_b.sigma_v) * to_unit
@@ -571,6 +616,8 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
                                                   unit=result.unit),
         [c for c in _stated_inputs(result, np.zeros(1), np.zeros(1), to_unit)
          if c.name == _SETTING_REFERENCE], result.unit_symbol)
+    references = _per_sample_references(result, references, to_unit)
+    shown = bool(references) and references[0].name == REFERENCE_SHOWN  # (in the stated's place)
     u_references = [float(np.max(reference.standard_uncertainty(1))) for reference in references]
     scatter = scatter_beyond_reference(result, math.hypot(*u_references) / to_unit)
     components = []
@@ -655,7 +702,8 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
                                        "fit to the fitted curve, as the signals' noise is (a "
                                        "shift common to every sample would cancel in the "
                                        "half range; these do not)"),
-                            u=f"{u:.2g}{result.unit_symbol}"), "A" if held else "B",
+                            u=f"{u:.2g}{result.unit_symbol}"), "A" if held or shown else "B",
+                    reference.dof if shown else math.inf, "reference shown" if shown else "",
                     in_readings=not held))
     # held to the laboratory's CMC of the ``settings`` (None: none), as the samples' budget:
     # the decided half range's interval is held to it (models.uncertainty.conformity)
