@@ -9549,6 +9549,19 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>此处均未给出，因此均不计入 U</translation>
     </message>
     <message>
+        <source>Phase reference (shown by the readings)</source>
+        <extracomment>the phase reference&apos;s row where the readings show more phase error per sample than the stated u (or none is stated): the estimate, Type A (models.fringe.phase_error_shown)</extracomment>
+        <translation>相位基准（由读数显示）</translation>
+    </message>
+    <message>
+        <source>the readings scatter {tangential} mV rms along the Lissajous figure and {radial} mV across it: the excess is a phase error of u = {u} per sample against the θ column, more than the u stated ({stated}: {names}), and is entered in its place (Type A; counted once, the larger)</source>
+        <translation>读数沿李萨如图形的离散为 {tangential} mV rms，垂直于图形为 {radial} mV：超出部分是相对于 θ 列每个采样点 u = {u} 的相位误差，大于所给出的 u（{stated}：{names}），以其代替计入（A 类；只计一次，取较大者）</translation>
+    </message>
+    <message>
+        <source>no u is stated for the phase reference: the readings scatter {tangential} mV rms along the Lissajous figure and {radial} mV across it, the excess a phase error of u = {u} per sample against the θ column, entered (Type A); the reference&apos;s own uncertainty is still not stated</source>
+        <translation>未给出相位基准的 u：读数沿李萨如图形的离散为 {tangential} mV rms，垂直于图形为 {radial} mV，超出部分是相对于 θ 列每个采样点 u = {u} 的相位误差，予以计入（A 类）；参考自身的不确定度仍未给出</translation>
+    </message>
+    <message>
         <source>the phase reference&apos;s errors</source>
         <translation>相位基准的误差</translation>
     </message>
