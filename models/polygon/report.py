@@ -491,8 +491,7 @@ def _zero_offsets_component(result: PolygonResult, noise: float, n: int,
     # direction is in their means as it is: seen, or in τ (on the safe side). The means' own
     # noise σ²/n is out as well (positive part): the repeatability's input holds it
     per_mean = _set_mean_noise_variance(result, noise)
-    spread = set_offsets_spread(corrected, directions, noise_share=per_mean)
-    tau, dof = spread if spread is not None and spread[0] > 0 else (0.0, 0)
+    tau, dof = _offsets_spread(result, noise)
     if share == OTHER_SET:
         return [_unseen_offsets(math.sqrt(2.0) * tau, tau, dof)] if tau > 0 else []
     out = []
@@ -533,6 +532,22 @@ class SeenInMeans:
     value: float
     steps: float
     variance: float
+
+
+def _offsets_spread(result: PolygonResult, noise: float) -> tuple[float, int]:
+    """τ, the standard deviation of one set's zero offset, with its degrees of freedom, for
+    the mean's budget and the reversal's alike: the scatter of the sets' means within each
+    direction as they are (:func:`set_offsets_spread`; the closures' steady drift not taken
+    out of them first: its estimate's noise would be put between the sets as a trend they do
+    not have), beyond their own reading noise σ²/n (:func:`_set_mean_noise_variance`,
+    positive part, no floor: the repeatability's input holds that noise). A real drift
+    between the sets of a direction is in their means as it is: in τ, on the safe side.
+    (0.0, 0) where the means scatter no more than their noise, or no direction is repeated."""
+    directions = np.array([s.direction for s in result.sets])
+    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
+    spread = set_offsets_spread(corrected, directions,
+                                noise_share=_set_mean_noise_variance(result, noise))
+    return spread if spread is not None and spread[0] > 0 else (0.0, 0)
 
 
 def _set_mean_noise_variance(result: PolygonResult, noise: float) -> float:
@@ -1150,10 +1165,16 @@ def reversal_budget(result: PolygonResult, metadata: CertificateMetadata,
     * the reading noise, σ of one error from the sets' scatter (as the mean's budget takes
       it, :func:`_noise_components`), times √(1/m↑ + 1/m↓); each set's own tilt fit and
       the readings' rounding are in that scatter;
-    * the sets' zero offsets (standard deviation τ of one set's, :func:`set_offsets_spread`)
+    * the sets' zero offsets (standard deviation τ of one set's, :func:`_offsets_spread` as
+      the mean's budget takes it: the sets' means as they are, beyond their noise σ²/n)
       times √(1/m↑ + 1/m↓), the same at every face;
     * a steady zero drift carried from set to set (:func:`_carried_drift_input`), the
-      closures' estimate through the reversal's weights: a known bias in quadrature;
+      closures' estimate through the reversal's weights, all of it: a known bias in
+      quadrature. Not less the steps the sets' means show within each direction, as the
+      mean's budget takes them (:func:`_seen_in_means`, its seen input): the reversal has no
+      seen input, and with the sets alternating (+ − + −) its weights give those steps 0;
+      with + − − + they cancel the steps between the directions, which the split would lose
+      (a drift of 2σ/√n a set: U/(2·scatter) 1.54 split, 1.33 whole, both covering 98.8 %);
       where the drift is spread, or no chain of closures shows it, each set's own drift
       left within it (rectangular, half-width d, d/2 when spread) times √(1/m↑ + 1/m↓).
 
@@ -1191,22 +1212,20 @@ def reversal_budget(result: PolygonResult, metadata: CertificateMetadata,
                            "freedom), times √(1/{up} + 1/{down})"),
                 s=f"{noise:.3f}\"", dof=dof, up=up, down=down),
         dof_group="repeatability")]
-    steady = _steady_drift_estimate(result, noise)
-    carried = covariance = None
-    if steady is not None:  # as :func:`_zero_offsets_component` takes the offsets apart
-        before = -np.arange(len(result.sets), dtype=float)
-        carried, covariance = before * steady[0], np.outer(before, before) * steady[1]
-    if within is not None:
-        spread = set_offsets_spread(corrected, directions, carried, covariance,
-                                    noise / math.sqrt(n))
-        if spread is not None and spread[0] > 0:
-            tau, dof = spread
-            components.append(BudgetComponent(
-                ZERO_OFFSETS_INPUT, "A", "normal", tau * factor, 1.0, 1.0, float(dof),
-                message(QT_TR_NOOP("one unknown offset per set (standard deviation {s} of "
-                                   "a set's, {dof} degrees of freedom), times "
-                                   "√(1/{up} + 1/{down}): the same at every face"),
-                        s=f"{tau:.3f}\"", dof=dof, up=up, down=down), common=True))
+    # each move of the zero once, as in the mean's budget (val77): the sets' means as they
+    # are, not less the closures' kept drift (with no drift its chance estimate was put
+    # between the sets as a trend, in τ as well as in the carried drift's input), τ beyond
+    # the means' own noise σ²/n (the noise input holds it; no σ/√n floor)
+    tau, tau_dof = _offsets_spread(result, noise) if within is not None else (0.0, 0)
+    if tau > 0:
+        components.append(BudgetComponent(
+            ZERO_OFFSETS_INPUT, "A", "normal", tau * factor, 1.0, 1.0, float(tau_dof),
+            message(QT_TR_NOOP("one unknown offset per set (standard deviation {s} of a "
+                               "set's, from the scatter of the sets' means within each "
+                               "direction beyond their readings' noise, {dof} degrees of "
+                               "freedom), times √(1/{up} + 1/{down}): the same at every "
+                               "face"),
+                    s=f"{tau:.3f}\"", dof=tau_dof, up=up, down=down), common=True))
     multipliers = _carried_drift_multipliers(result, zero)
     if multipliers is not None:
         weights = np.where(directions > 0, 1.0 / up, -1.0 / down)
