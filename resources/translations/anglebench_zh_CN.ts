@@ -577,6 +577,10 @@
         <translation>每个测回相对于第 1 测回零位读数的一个未知偏移（单个测回偏移的标准偏差 {s}，由每个方向内各测回平均值的离散求得，自由度 {dof}）；两个方向之间的偏移读数无法显示：在每个位置都相同，因此它移动误差，但不改变其半峰峰值</translation>
     </message>
     <message>
+        <source>one unknown offset per set (standard deviation {s} of a set&apos;s, from the scatter of the sets&apos; means within each direction beyond their readings&apos; noise, {dof} degrees of freedom), times √(1/{up} + 1/{down}): the same at every face</source>
+        <translation>每个测回一个未知偏移（单个测回偏移的标准偏差 {s}，由每个方向内各测回平均值超出其读数噪声的离散求得，自由度 {dof}），乘以 √(1/{up} + 1/{down})：在每个面上都相同</translation>
+    </message>
+    <message>
         <source>eccentricity / ellipticity</source>
         <translation>偏心 / 椭圆度</translation>
     </message>
@@ -8572,10 +8576,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>σ = {s} of one error from the sets&apos; scatter ({dof} degrees of freedom), times √(1/{up} + 1/{down})</source>
         <translation>由各测回离散求得的单个误差 σ = {s}（自由度 {dof}），乘以 √(1/{up} + 1/{down})</translation>
-    </message>
-    <message>
-        <source>one unknown offset per set (standard deviation {s} of a set&apos;s, {dof} degrees of freedom), times √(1/{up} + 1/{down}): the same at every face</source>
-        <translation>每个测回一个未知偏移（单个测回偏移的标准偏差 {s}，自由度 {dof}），乘以 √(1/{up} + 1/{down})：在每个面上都相同</translation>
     </message>
     <message>
         <source>each set&apos;s own drift left within it, up to {d}, times √(1/{up} + 1/{down})</source>
