@@ -64,6 +64,19 @@ def _register_in_tmp(tmp_path, monkeypatch):
     monkeypatch.setenv("ANGLEBENCH_REGISTER", str(tmp_path / "register.sqlite"))
 
 
+@pytest.fixture
+def register(tmp_path, monkeypatch) -> Path:
+    """An empty register made in a folder of its own (``reg/register.sqlite``), the one the
+    commands use: for tests of what lands beside it or what is done to its file."""
+    from models.register.store import Register
+
+    path = tmp_path / "reg" / "register.sqlite"
+    path.parent.mkdir()
+    monkeypatch.setenv("ANGLEBENCH_REGISTER", str(path))
+    Register(f"sqlite:///{path}").close()
+    return path
+
+
 @pytest.fixture(scope="session")
 def postgres_server():
     """A throw-away PostgreSQL cluster on a Unix socket for the session (see

@@ -22,16 +22,6 @@ def _digest(path) -> str:
 
 
 @pytest.fixture
-def register(tmp_path, monkeypatch):
-    """An empty register of the test's own, the one the commands use."""
-    path = tmp_path / "reg" / "register.sqlite"
-    path.parent.mkdir()
-    monkeypatch.setenv("ANGLEBENCH_REGISTER", str(path))
-    Register(f"sqlite:///{path}").close()
-    return path
-
-
-@pytest.fixture
 def project(tmp_path):
     """A project file of typed readings, open nowhere (as an older version wrote it too:
     its first key on a line of its own)."""

@@ -11,7 +11,7 @@ import os
 
 import pytest
 
-from tests.app.capture.window_steps import show_workbench as _show
+from tests.app.capture.window_steps import planned_positioning
 from tests.instrument_simulators import ReadoutSimulator
 
 pytestmark = pytest.mark.slow  # two windows and an instrument
@@ -25,11 +25,7 @@ def test_typing_over_a_captured_reading_is_recovered_as_an_edit_that_undo_takes_
         recovering_window, qtbot):
     window = recovering_window()
     window.show()
-    bench = _show(window, "positioning")
-    bench.table_model.replace_all([], "empty")
-    bench.set_settings({**bench.settings, "plan_runs": 1, "plan_targets": "0:15:3",
-                        "plan_directions": "up", "target_unit": "deg",
-                        "deviation_unit": "arcsec"})
+    bench = planned_positioning(window)
     keys = [c.key for c in bench.sheet.columns]
     measured = keys.index("measured")
     panel = window.capture_panel

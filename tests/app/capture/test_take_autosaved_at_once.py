@@ -10,7 +10,7 @@ import os
 
 import pytest
 
-from tests.app.capture.window_steps import show_workbench as _show
+from tests.app.capture.window_steps import planned_positioning
 from tests.instrument_simulators import ReadoutSimulator
 
 pytestmark = pytest.mark.slow  # two windows and an instrument
@@ -22,11 +22,7 @@ CAPTURED = 15.01401  # where the readout stands at the take (degrees)
 def test_a_take_survives_a_kill_right_after_it(recovering_window, qtbot):
     window = recovering_window()
     window.show()
-    bench = _show(window, "positioning")
-    bench.table_model.replace_all([], "empty")
-    bench.set_settings({**bench.settings, "plan_runs": 1, "plan_targets": "0:15:3",
-                        "plan_directions": "up", "target_unit": "deg",
-                        "deviation_unit": "arcsec"})
+    bench = planned_positioning(window)
     measured = [c.key for c in bench.sheet.columns].index("measured")
     projects = window.projects
     projects.autosave()  # the empty sheet, as an earlier autosave left it

@@ -11,15 +11,6 @@ from app.main import main
 from models.register.store import Register, RegisterError
 
 
-@pytest.fixture
-def register(tmp_path, monkeypatch):
-    path = tmp_path / "reg" / "register.sqlite"
-    path.parent.mkdir()
-    monkeypatch.setenv("ANGLEBENCH_REGISTER", str(path))
-    Register(f"sqlite:///{path}").close()
-    return path
-
-
 @pytest.mark.parametrize("damage", ["cut", "garbage"])
 def test_a_damaged_register_says_restore_it(register, damage, capsys):
     data = register.read_bytes()
