@@ -735,14 +735,25 @@ def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[B
         common=True)]
 
 
-def _drift_component(result: PolygonResult, noise: float, n: int, zero: int,
-                     share: ZeroFaceShare | None = None) -> list[BudgetComponent]:
+def _closure_drift_half_width(result: PolygonResult, noise: float
+                              ) -> tuple[np.ndarray, float] | None:
+    """The sets' closures and the half-width of the drift a set leaves within itself: their
+    root mean square beyond their reading noise (2σ², positive part), halved when the drift
+    is spread over the set; None when no set has a closure."""
     drifts = np.array([s.closure_drift_arcsec for s in result.sets
                        if s.closure_drift_arcsec is not None])
     if drifts.size == 0:
-        return []
+        return None
     excess = max(0.0, float(np.mean(drifts**2)) - 2.0 * noise**2)
-    half_width = math.sqrt(excess) / (2.0 if result.spread_drift else 1.0)
+    return drifts, math.sqrt(excess) / (2.0 if result.spread_drift else 1.0)
+
+
+def _drift_component(result: PolygonResult, noise: float, n: int, zero: int,
+                     share: ZeroFaceShare | None = None) -> list[BudgetComponent]:
+    closures = _closure_drift_half_width(result, noise)
+    if closures is None:
+        return []
+    drifts, half_width = closures
     share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
     sensitivity = _at_zero(zero, n, share.drift)
     # d/√m, not d·√(Σ w_s²) of the mean's own weights: with unequal sets per direction an
@@ -1232,18 +1243,15 @@ def reversal_budget(result: PolygonResult, metadata: CertificateMetadata,
         components += _carried_drift_input(result, weights @ multipliers,
                                            _kept_steady_drift(result, noise))
     if multipliers is None or result.spread_drift:
-        drifts = np.array([s.closure_drift_arcsec for s in result.sets
-                           if s.closure_drift_arcsec is not None])
-        if drifts.size:
-            excess = max(0.0, float(np.mean(drifts**2)) - 2.0 * noise**2)
-            half_width = math.sqrt(excess) / (2.0 if result.spread_drift else 1.0)
-            if half_width > 0:
-                components.append(BudgetComponent(
-                    QT_TR_NOOP("Closure drift"), "B", "rectangular", half_width * factor,
-                    math.sqrt(3.0), 1.0, math.inf,
-                    message(QT_TR_NOOP("each set's own drift left within it, up to {d}, "
-                                       "times √(1/{up} + 1/{down})"),
-                            d=f"{half_width:.3f}\"", up=up, down=down)))
+        closures = _closure_drift_half_width(result, noise)
+        half_width = closures[1] if closures else 0.0
+        if half_width > 0:
+            components.append(BudgetComponent(
+                QT_TR_NOOP("Closure drift"), "B", "rectangular", half_width * factor,
+                math.sqrt(3.0), 1.0, math.inf,
+                message(QT_TR_NOOP("each set's own drift left within it, up to {d}, "
+                                   "times √(1/{up} + 1/{down})"),
+                        d=f"{half_width:.3f}\"", up=up, down=down)))
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
 
 
