@@ -254,7 +254,7 @@ class Workbench(ABC, Generic[ResultT]):
         if basis and not document.traceability_basis:
             document = dataclasses.replace(document, traceability_basis=basis)
         gaps = traceability_gaps(document.metadata, self.measurand_standards,
-                                 document.stated_inputs)
+                                 document.stated_inputs, self.roles_stated_only)
         if gaps:
             document = dataclasses.replace(document, traceability_gaps=tuple(gaps))
         why = test_report_statement(document)
@@ -304,6 +304,10 @@ class IssuesCertificates(ABC, Generic[ResultT]):
     #: traceability only when each is listed with a certificate and a stated U; otherwise the
     #: document is a test report and says why, naming the ones not listed
     measurand_standards: ClassVar[tuple[tuple[str, str], ...]] = ()
+    #: the roles of ``measurand_standards`` that only a standard stating its role carries (a
+    #: standard listed with no role fills none of them: the fringe's phase or angle reference,
+    #: assessment 78 H1); the others are told from a standard's fields, or filled as before
+    roles_stated_only: ClassVar[tuple[str, ...]] = ()
     #: a standard listed with its certificate and no U stands behind inputs stated in its
     #: settings (the fringe's ADC figures), which it names as not stated itself; otherwise a
     #: standard listed with no stated U is an input not stated (the JSON's

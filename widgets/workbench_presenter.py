@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
 
 from models.cancellation import AnalysisCancelled, cancellable, checkpoint
@@ -40,7 +40,16 @@ from models.readings.tabular_import import (
     read_table,
 )
 from models.workbench import IssuesCertificates, ShowsHeadline, Workbench
-from widgets.i18n import declared, explained, joined, on_language_change, tr, translated
+from widgets.i18n import (
+    Said,
+    application_language,
+    declared,
+    explained,
+    joined,
+    on_language_change,
+    tr,
+    translated,
+)
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.table_commands import SettingsCommand
 from widgets.workbench_view import WorkbenchView
@@ -196,7 +205,7 @@ def conformity_text(conformity: Any) -> str:
     "no statement" and why (the certificate's full statement: :func:`conformity_statement`)."""
     from models.certificate.document import printed_decided_figures
     from models.quantity import unit
-    from models.uncertainty.conformity import DECISION_RULE_NAMES
+    from models.uncertainty.conformity import DECISION_RULE_NAMES, VERDICT_WORDS
     from models.uncertainty.rounding import fixed_places, interval_decimals
 
     if conformity is None:
@@ -205,14 +214,12 @@ def conformity_text(conformity: Any) -> str:
         return tr("No statement of conformity: {reason}.").format(reason=translated(conformity))
     name = DECISION_RULE_NAMES.get(conformity.rule_key, "")
     rule = tr(name) if name else translated(conformity.rule)
-    words = {"pass": tr("pass"), "conditional pass": tr("conditional pass"),
-             "conditional fail": tr("conditional fail"), "fail": tr("fail")}
-    if conformity.verdict not in words:
+    if conformity.verdict not in VERDICT_WORDS["en"]:
         text = tr("Conformity: no statement ({rule}): {reason}.").format(
             rule=rule, reason=translated(conformity.reason or conformity.statement))
     else:
-        text = tr("Conformity: {verdict} ({rule}).").format(verdict=words[conformity.verdict],
-                                                           rule=rule)
+        text = tr("Conformity: {verdict} ({rule}).").format(
+            verdict=certificate_verdict(conformity.verdict), rule=rule)
     value, upper, lower = conformity.value, conformity.expanded, conformity.expanded_lower
     lower = lower if np.isfinite(lower) else upper
     # the figures the certificate prints (the value ± its printed U the interval's ends:
@@ -233,6 +240,22 @@ def conformity_text(conformity: Any) -> str:
             high=fixed_places(high, d),
             unit=written))
     return text
+
+
+def certificate_verdict(verdict: str) -> Said:
+    """``verdict`` ("pass", "conditional pass" …) in the window's language as the
+    certificate's statement of conformity words it (models.uncertainty.conformity
+    .VERDICT_WORDS: 合格 in Chinese, as the certificate, its XLSX and its DCC say it, not the
+    validation report's 通过 of a check passed: assessment 78 M1), said again in the language
+    then installed."""
+    from models.uncertainty.conformity import VERDICT_WORDS
+
+    def now() -> str:
+        chinese = (QCoreApplication.instance() is not None
+                   and application_language().code == "zh_CN")
+        return VERDICT_WORDS["zh" if chinese else "en"][verdict]
+
+    return Said(now(), now)
 
 
 def _then(first: str, second: str) -> str:

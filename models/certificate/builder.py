@@ -233,7 +233,8 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
                       statements: Sequence[str], point_columns: Sequence[tuple[str, Any]],
                       tolerance: float | None | _FromDetails = FROM_DETAILS,
                       unit: str = "\"", measurand_standards: Sequence[tuple[str, str]] = (),
-                      standards_in_settings: bool = False, **more: Any) -> CertificateDocument:
+                      standards_in_settings: bool = False, roles_stated_only: Sequence[str] = (),
+                      **more: Any) -> CertificateDocument:
     """The certificate of a workbench's result: the results table from its columns, the
     conformity decided on ``decision`` against ``tolerance`` (the details' by default) with
     the details' decision rule and quantity, the statistics with the decision rows, the
@@ -259,7 +260,8 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
     # certificate and a stated U): said as the reason where the workbench names no other
     # reason the results are not traceable (its untraceable inputs, an input not stated)
     untraced = "" if more.get("untraceable") or not_stated else traceability_withheld(
-        metadata, tuple(measurand_standards), tuple(more.get("stated_inputs", ())))
+        metadata, tuple(measurand_standards), tuple(more.get("stated_inputs", ())),
+        tuple(roles_stated_only))
     withheld = separated([decision.withheld, untraced, expired], "; ")
     # the details' tolerance as the customer stated it, for the texts (assessment 70 M4),
     # where the workbench gives its own that is the details' too (the fringe's, the

@@ -61,15 +61,18 @@ def standards_not_stated(metadata: CertificateMetadata, stated_inputs: tuple[str
 
 
 def traceability_withheld(metadata: CertificateMetadata, roles: tuple[tuple[str, str], ...],
-                          stated_inputs: tuple[str, ...] = ()) -> str:
+                          stated_inputs: tuple[str, ...] = (),
+                          roles_stated_only: tuple[str, ...] = ()) -> str:
     """Why no statement of conformity may be made while traceability is not established
     ("" when it is): a decision rule rests on the result's uncertainty (ISO/IEC 17025 7.1.3,
     7.8.6.1; ILAC-G8:09/2019), and a result not traceable to the reference has no U that
     relates it to the specification. With no standard listed at all and ``roles`` named, U
     holds no standard's calibration, whatever inputs are typed in the settings: no statement
     either (audit 71 finding 2; the cross-calibration names no roles and keeps its verdicts). An expired
-    standard is left to :func:`expired_withheld` (its own reason)."""
-    gaps = _gaps(metadata, roles, stated_inputs, expired=False)
+    standard is left to :func:`expired_withheld` (its own reason). ``roles_stated_only``:
+    as :func:`traceability_gaps`."""
+    gaps = _gaps(metadata, roles, stated_inputs, expired=False,
+                 roles_stated_only=roles_stated_only)
     if not gaps:
         return ""
     return message(QT_TR_NOOP("metrological traceability of the results is not established: "
@@ -77,7 +80,8 @@ def traceability_withheld(metadata: CertificateMetadata, roles: tuple[tuple[str,
 
 
 def traceability_gaps(metadata: CertificateMetadata, roles: tuple[tuple[str, str], ...],
-                      stated_inputs: tuple[str, ...] = ()) -> list[str]:
+                      stated_inputs: tuple[str, ...] = (),
+                      roles_stated_only: tuple[str, ...] = ()) -> list[str]:
     """Why the standards listed do not make the results traceable (empty: they do; none
     listed where ``roles`` are named is a gap too: assessment 72 M3). ``roles``: the
     standards that carry the measurand, each (its role, its name: a QT_TR_NOOP text, e.g.
@@ -89,8 +93,15 @@ def traceability_gaps(metadata: CertificateMetadata, roles: tuple[tuple[str, str
     traceable through it;
     and a standard whose calibration was due before the date of calibration (its due date
     stated) had expired: the results are not traceable through it either (the same rule as
-    a missing certificate: the document is a test report naming it)."""
-    return _gaps(metadata, roles, stated_inputs, expired=True)
+    a missing certificate: the document is a test report naming it).
+
+    ``roles_stated_only``: the roles only a standard stating its role carries (the fringe's
+    phase or angle reference: a standard listed with a U and no role may be another
+    instrument's certificate, such as the ADC's, and was taken as the phase reference, the
+    document a traceable calibration certificate: assessment 78 H1); one whose role is not
+    told fills none of them, and the reason names the role to state."""
+    return _gaps(metadata, roles, stated_inputs, expired=True,
+                 roles_stated_only=roles_stated_only)
 
 
 def _told_role(standard, roles: dict[str, str], families: set[str]) -> str:
@@ -113,8 +124,19 @@ def _names(standards) -> object:
     return listed(s.description or message(QT_TR_NOOP("standard")) for s in standards)
 
 
+#: a role only a standard stating it carries, not filled by a standard of no role stated
+#: (:func:`traceability_gaps`' ``roles_stated_only``): what is missing and the role to state
+ROLE_TO_STATE = QT_TR_NOOP(
+    "the standards that carry the measurand are {roles}, each to be listed with a calibration "
+    "certificate and a stated uncertainty; {count} listed so ({listed}): none is listed for "
+    "{missing}, as no role is stated for {unnamed} and only a standard whose role says so is "
+    "taken as {missing} (one with no role may be another instrument's, such as the ADC's): "
+    "state the role {role} of the one that is")
+
+
 def _gaps(metadata: CertificateMetadata, roles: tuple[tuple[str, str], ...],
-          stated_inputs: tuple[str, ...], expired: bool) -> list[str]:
+          stated_inputs: tuple[str, ...], expired: bool,
+          roles_stated_only: tuple[str, ...] = ()) -> list[str]:
     """:func:`traceability_gaps`, an expired standard among them or not (``expired``)."""
     standards = metadata.standards
     if not standards:
@@ -150,13 +172,24 @@ def _gaps(metadata: CertificateMetadata, roles: tuple[tuple[str, str], ...],
         # a role this measurand does not use (an autocollimator listed for a fringe): it
         # carries none of its standards
     free = [role for role in names if role not in known]
+    listed_ones = [*known.values(), *unknown]
+    # a role only a standard stating it carries (the fringe's phase or angle reference): a
+    # standard of no role stated does not fill it (assessment 78 H1); said, with the role to
+    # state, and the other roles judged as before
+    to_state = [role for role in free if role in roles_stated_only] if unknown else []
+    if to_state:
+        gaps.append(message(
+            ROLE_TO_STATE, roles=separated((message(name) for _, name in roles), "; "),
+            count=len(listed_ones), listed=_names(listed_ones), unnamed=_names(unknown),
+            missing=listed(message(names[r]) for r in to_state),
+            role=listed(f'"{r}"' for r in to_state)))
+        free = [role for role in free if role not in to_state]
     missing = len(free) - min(len(unknown), len(free))
     if missing:
         # a list of none is not printed as "0 listed so" (day review 69 F6); some: the ones
         # listed named, and the ones not listed named by their role where the roles of those
         # listed are told (assessment 72 L2: "the standard for the other one is not listed");
         # where they are not, which one is missing is said to be unknown, and how to tell it
-        listed_ones = [*known.values(), *unknown]
         template = (QT_TR_NOOP(
             "the standards that carry the measurand are {roles}, each to be listed with a "
             "calibration certificate and a stated uncertainty; none of them is listed so")

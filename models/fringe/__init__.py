@@ -15,3 +15,8 @@ TITLE = QT_TR_NOOP("Fringe signal analysis")
 #: its role (models.certificate.metadata.STANDARD_ROLES) and name
 MEASURAND_STANDARDS = (("reference", QT_TR_NOOP("a phase or angle reference")),
                        ("adc", QT_TR_NOOP("the ADC (its figures stated in the settings)")))
+#: the roles only a standard stating its role carries: a standard listed with a U and no role
+#: may be the ADC's certificate (or any other), so it is never taken as the phase or angle
+#: reference (assessment 78 H1: such a standard made the document a traceable calibration
+#: certificate); the reason names the role to state
+ROLES_STATED_ONLY = ("reference",)

@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from models.cancellation import checkpoint
-from models.fringe import KEY, MEASURAND_STANDARDS, TITLE
+from models.fringe import KEY, MEASURAND_STANDARDS, ROLES_STATED_ONLY, TITLE
 from models.fringe.compensation_at_samples import compensation_caveat
 from models.fringe.equal_steps import SIGNIFICANCE as EQUAL_STEPS_SIGNIFICANCE
 from models.fringe.equal_steps import step_scatter, unequal_steps
@@ -1099,6 +1099,7 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
     parameters = PARAMETERS
     sample_file = "fringe_sample.csv"
     measurand_standards = MEASURAND_STANDARDS
+    roles_stated_only = ROLES_STATED_ONLY
     standards_in_settings = True  # the ADC's figures (its report's build_certificate too)
     # each error's U column (the certificate's "U as found" is the raw error's)
     dcc_uncertainty_columns = {"raw_error": "raw_error_",

@@ -58,7 +58,7 @@ from models.certificate.document import (
     reference_standard_components,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.fringe import KEY, MEASURAND_STANDARDS, TITLE
+from models.fringe import KEY, MEASURAND_STANDARDS, ROLES_STATED_ONLY, TITLE
 from models.fringe import plots as fringe_plots
 from models.fringe.compensation_at_samples import FOUND_AT_SAMPLES, compensation_caveat
 from models.fringe.model import (  # MODEL_INPUT: the compensation's own input
@@ -1090,7 +1090,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         "The compensated error is the error the correction table is expected to leave, if the "
         "signals stay as they were measured.")),)
     return build_certificate(
-        measurand_standards=MEASURAND_STANDARDS, standards_in_settings=True,
+        measurand_standards=MEASURAND_STANDARDS, roles_stated_only=ROLES_STATED_ONLY,
+        standards_in_settings=True,
         kind_key=KEY, kind_title=TITLE, method=method_text(result), metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,
         parameters=parameters, results=results, decision=decision,

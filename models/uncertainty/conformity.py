@@ -67,6 +67,7 @@ __all__ = [
     "DECISION_QUANTITIES",
     "RISK_BOUND_NOTE",
     "DECISION_RULES",
+    "VERDICT_WORDS",
     "ComparedValue",
     "Conformity",
     "HalfRangeEstimate",
@@ -115,6 +116,17 @@ DECISION_RULE_NAMES = {
     "guarded": QT_TR_NOOP("Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)"),
     "guarded_binary": QT_TR_NOOP("Guard band w = U: pass / fail (ILAC-G8 4.2.2)"),
     "simple": QT_TR_NOOP("Simple acceptance (ILAC-G8 4.2.1)"),
+}
+
+#: each verdict as the statement of conformity words it, by the certificate's language: in
+#: Chinese 合格, 有条件合格 … (JJF 1059.1), not the catalogue's 通过 of a check passed, the
+#: validation report's "pass". The XLSX's *Verdict* row (assessment 72 L1) and the window's
+#: verdict line (assessment 78 M1: 符合性：通过 beside the certificate's 合格) say them so.
+VERDICT_WORDS = {
+    "en": {"pass": "pass", "conditional pass": "conditional pass",
+           "conditional fail": "conditional fail", "fail": "fail"},
+    "zh": {"pass": "合格", "conditional pass": "有条件合格", "conditional fail": "有条件不合格",
+           "fail": "不合格"},
 }
 
 DECISION_QUANTITIES = {

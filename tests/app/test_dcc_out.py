@@ -275,7 +275,7 @@ def test_a_fringe_record_with_a_traceable_phase_reference_is_a_calibration(tmp_p
     details["standards"] = [
         {"description": "Rotary table (θ reference)", "serial": "RT-1",
          "certificate_no": "NIM-2026-0900", "uncertainty": 0.05, "uncertainty_unit": "arcsec",
-         "basis": "U95"},
+         "basis": "U95", "role": "reference"},
         {"description": "Data acquisition (16-bit ADC)", "serial": "DAQ-5",
          "certificate_no": "CAL-2026-33", "uncertainty": None}]
     # real details: a specimen declares itself a specimen, not a calibration (assessment 70 M6)

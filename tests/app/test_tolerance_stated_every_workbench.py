@@ -68,7 +68,7 @@ def _printed_verdict(text: str) -> str:
 
 PHASE = {"description": "Phase reference (sampling clock)", "serial": "PR-1",
          "certificate_no": "CAL-2026-31", "uncertainty": 0.01, "uncertainty_unit": "arcsec",
-         "basis": "U95"}
+         "basis": "U95", "role": "reference"}
 ADC = {"description": "Data acquisition (16-bit ADC)", "serial": "DAQ-5",
        "certificate_no": "CAL-2026-33", "uncertainty": 0.02, "uncertainty_unit": "arcsec",
        "basis": "U95"}

@@ -94,3 +94,42 @@ def test_the_windows_verdict_line_joins_its_chinese_sentences_without_a_space(tm
         install_language("en")
     assert chinese.startswith("符合性：") and "。判定值 1000 nm" in chinese, chinese
     assert "。 " not in chinese, chinese
+
+
+@pytest.mark.parametrize("tolerance, rule, verdict, chinese", [
+    (3.0, "guarded", "pass", "合格"),
+    (1.2, "simple", "pass", "合格"),
+    (1.2, "guarded", "conditional pass", "有条件合格"),
+    (1.2, "guarded_binary", "fail", "不合格")])
+def test_the_windows_verdict_is_the_certificates_word_in_both_languages(
+        window, tolerance, rule, verdict, chinese):
+    """Assessment 78 M1: the Chinese window said 符合性：通过 where the certificate, its XLSX
+    and its DCC say 合格 for the same verdict (tr("pass") is the validation report's 通过, a
+    check passed); its line named the zones 合格 / 有条件 / 不合格 beside it. The window now
+    says the word the certificate's statement says, in English and in Chinese, and again
+    after a change of language."""
+    from app.writers.certificate_pdf.wording import VERDICT_CHINESE
+    from models.messages import in_language, translator
+
+    presenter = window.presenter("theodolite")
+    presenter.load_sample()
+    details = dataclasses.replace(DETAILS, tolerance=tolerance, decision_rule=rule)
+    window.certificates.store_details("theodolite", details)
+    presenter.refresh()
+    printed = presenter.kind.certificate_document(presenter.result, details, "",
+                                                  presenter.result_settings).conformity
+    assert printed.verdict == verdict
+    # the certificate's own sentence, in Chinese, holds the word (its XLSX's Verdict row too)
+    assert chinese in in_language(printed.statement, translator("zh_CN")), printed.statement
+    assert VERDICT_CHINESE[verdict] == chinese
+    assert presenter.view.verdict.text().splitlines()[-1].startswith(f"Conformity: {verdict} (")
+    window.set_language("zh_CN")
+    try:
+        shown = presenter.view.verdict.text().splitlines()[-1]
+        assert shown.startswith(f"符合性：{chinese}（"), shown
+        assert "通过" not in shown, shown
+        presenter.refresh()
+        assert presenter.view.verdict.text().splitlines()[-1].startswith(f"符合性：{chinese}（")
+    finally:
+        window.set_language("en")
+    assert presenter.view.verdict.text().splitlines()[-1].startswith(f"Conformity: {verdict} (")

@@ -28,7 +28,9 @@ def _standards_table(document: CertificateDocument) -> Table:
             u = message(QT_TR_NOOP("as stated in the settings: {inputs}"),
                         inputs=joined(_between(", ", document.stated_inputs)))
         name = s.description or "—"
-        if document.traceability_basis:  # no reference standard: a comparator
+        # no reference standard: a comparator, said once (assessment 78 L7: "Photoelectric
+        # autocollimator (comparator) (comparator)" where the description already says so)
+        if document.traceability_basis and not name.rstrip().casefold().endswith("(comparator)"):
             name = message(QT_TR_NOOP("{standard} (comparator)"), standard=name)
         rows.append((name, s.serial or "—", s.certificate_no or "—", u, s.due_date or "—"))
     if not rows:

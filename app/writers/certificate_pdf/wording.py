@@ -10,6 +10,7 @@ from collections.abc import Callable
 from models.certificate.document import CertificateDocument
 from models.certificate.report_terms import report_translator
 from models.messages import JOINS, Message, in_language, joined, message, separated, translator
+from models.uncertainty.conformity import VERDICT_WORDS
 
 #: the certificate's fixed words in Chinese, metrology terms as JJF 1001-2011 names them;
 #: other words as the window and the register say them (day review 67 F9: the register
@@ -96,9 +97,8 @@ REPORT_CHINESE = {"Laboratory": "检测机构", "Item under test": "被检测对
 #: (app/writers/results_export.py SHEET_TEST)
 SHEET_WORDS = {"Test (the test performed)": "Test"}
 #: a verdict in Chinese as the statement of conformity words it (合格, not the catalogue's
-#: 通过 of a check passed: assessment 72 L1)
-VERDICT_CHINESE = {"pass": "合格", "conditional pass": "有条件合格",
-                   "conditional fail": "有条件不合格", "fail": "不合格"}
+#: 通过 of a check passed: assessment 72 L1); the window's verdict line says the same
+VERDICT_CHINESE = VERDICT_WORDS["zh"]
 SHEET_CHINESE = {"Test (the test performed)": "校准项目"}
 REPORT_SHEET_CHINESE = {"Test (the test performed)": "检测项目"}
 

@@ -113,7 +113,7 @@ STATEMENT_STANDARDS = {
     "polygon": ({"description": "Polygon", "certificate_no": "NIM-2026-0871",
                  "uncertainty": 0.2, "applies_to": "from face 1"},),
     "fringe": ({"description": "Reference angle encoder", "certificate_no": "NIM-2026-0999",
-                "uncertainty": 0.05},
+                "uncertainty": 0.05, "role": "reference"},
                {"description": "Data acquisition", "certificate_no": "CAL-2026-33"})}
 #: workbenches whose errors are taken from one of their own readings (zero there)
 ZEROED_AT_ONE_OF_ITS_READINGS = ("theodolite", "polygon")

@@ -35,7 +35,7 @@ META = CertificateMetadata.from_dict({
                    "uncertainty": 0.5, "basis": "u"}]})
 #: the fringe's phase reference: its certificate listed, its u stated in the settings
 PHASE_REFERENCE = ReferenceStandard("Reference angle encoder (phase of each sample)", "RE-2",
-                                    "NIM-2026-0999")
+                                    "NIM-2026-0999", role="reference")
 
 
 def _line(table, label: str) -> list[str]:

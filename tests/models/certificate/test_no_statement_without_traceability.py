@@ -88,7 +88,7 @@ def _fringe_meta(*standards: ReferenceStandard) -> CertificateMetadata:
 #: phase reference; and the phase reference that completes it (its u stated in the settings)
 ADC = ReferenceStandard("Data acquisition (16-bit ADC)", "DAQ-5", "CAL-2026-33", 0.3)
 PHASE_REFERENCE = ReferenceStandard("Reference angle encoder (phase of each sample)", "RE-2",
-                                    "NIM-2026-0999")
+                                    "NIM-2026-0999", role="reference")
 
 
 def test_a_fringe_record_with_no_phase_reference_listed_makes_no_statement():
@@ -103,12 +103,12 @@ def test_a_fringe_record_with_no_phase_reference_listed_makes_no_statement():
     assert document.conformity.verdict == "not assessed"
     reason = str(document.conformity.reason)
     assert "traceability of the results is not established" in reason
-    # "1 listed so" names the standard listed and what is not: with no role stated, that
-    # the details do not say which of the two it is (assessment 72 L2: "the standard for the
-    # other one"; tests/models/certificate/test_traceability_roles.py names it by its role)
-    assert ("1 listed so (Data acquisition (16-bit ADC)), no role stated for Data "
-            "acquisition (16-bit ADC): the standard for a phase or angle reference or the ADC "
-            "(its figures stated in the settings) is not listed") in reason
+    # "1 listed so" names the standard listed and what is not: with no role stated, not the
+    # phase or angle reference, and the role to state (assessment 72 L2: "the standard for the
+    # other one"; assessment 78 H1; tests/models/certificate/test_traceability_roles.py)
+    assert ("1 listed so (Data acquisition (16-bit ADC)): none is listed for a phase or angle "
+            "reference, as no role is stated for Data acquisition (16-bit ADC)") in reason
+    assert 'state the role "reference"' in reason
     assert any("1 listed so (Data acquisition (16-bit ADC))" in str(g)
                for g in document.traceability_gaps)
     decided = workbench_uncertainty_json(kind, result, meta, None)["decided_quantity"]

@@ -20,6 +20,7 @@ import pytest
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.traceability import traceability_gaps
 from models.fringe import MEASURAND_STANDARDS as FRINGE
+from models.fringe import ROLES_STATED_ONLY as FRINGE_STATED_ONLY
 from models.polygon import MEASURAND_STANDARDS as POLYGON
 
 #: the fringe's inputs stated in the settings (its budget's names), every one
@@ -33,7 +34,10 @@ def _meta(*standards: dict) -> CertificateMetadata:
 
 
 def _gaps(meta, roles, inputs=ALL_INPUTS) -> str:
-    return "; ".join(str(g) for g in traceability_gaps(meta, roles, inputs))
+    """The reason as the workbench of ``roles`` gives it (the fringe: its phase or angle
+    reference only a standard stating its role carries)."""
+    stated_only = FRINGE_STATED_ONLY if roles is FRINGE else ()
+    return "; ".join(str(g) for g in traceability_gaps(meta, roles, inputs, stated_only))
 
 
 #: the assessor's ADC: listed with its certificate and a U
@@ -70,17 +74,27 @@ def test_a_role_told_by_the_fields_names_the_other():
 
 
 def test_with_no_role_told_the_reason_says_the_details_do_not_say_which():
+    # the polygon's standards: the one of no role told may be either
+    collimator = {"description": "autocollimator", "certificate_no": "N-2", "uncertainty": 0.1}
+    text = _gaps(_meta(collimator), POLYGON)
+    assert "other one" not in text
+    assert ("no role stated for autocollimator: the standard for the polygon (its face "
+            "deviations) or the autocollimator is not listed, and the details do not say "
+            "which (state each standard's role)") in text, text
+    # the fringe's ADC listed with a U and no role: not the phase reference (assessment 78 H1)
     text = _gaps(_meta(ADC), FRINGE)
     assert "other one" not in text
-    assert ("no role stated for Data acquisition (16-bit ADC): the standard for a phase or "
-            "angle reference or the ADC (its figures stated in the settings) is not listed, "
-            "and the details do not say which (state each standard's role)") in text, text
+    assert ("none is listed for a phase or angle reference, as no role is stated for Data "
+            "acquisition (16-bit ADC) and only a standard whose role says so is taken as a "
+            "phase or angle reference") in text, text
 
 
 def test_files_without_roles_are_judged_as_before():
     # two standards with no role: the two standards the measurand needs (traceable, as
-    # until 0.8.21), as for a polygon with both listed
-    assert _gaps(_meta(ADC, PHASE), FRINGE) == ""
+    # until 0.8.21), as for a polygon with both listed — but not the fringe's phase or angle
+    # reference, which only a standard stating its role is (assessment 78 H1)
+    # without the fringe's rule, as before
+    assert traceability_gaps(_meta(ADC, PHASE), FRINGE, ALL_INPUTS) == []
     polygon = {"description": "polygon", "certificate_no": "N-1", "uncertainty": 0.2}
     collimator = {"description": "autocollimator", "certificate_no": "N-2", "uncertainty": 0.1}
     assert _gaps(_meta(polygon, collimator), POLYGON) == ""
@@ -97,3 +111,32 @@ def test_the_role_is_read_checked_and_written_back():
     assert CertificateMetadata.from_dict(meta.to_dict()) == meta
     with pytest.raises(MetadataError, match=r"standards\[1\]\.role"):
         _meta({**ADC, "role": "ADC of the rig"})
+
+
+def test_a_fringe_standard_of_no_role_is_not_taken_as_the_phase_reference():
+    """Assessment 78 H1: the fringe's "Angle reference" listed with its certificate and a U
+    but no role, beside the ADC (role adc), was taken as the phase reference: the document a
+    calibration certificate, "traceable … through the reference standards listed", and a
+    verdict. A standard with a U and no role may be any instrument's (the sample's ADC
+    certificate listed without its role is one): the reason names the phase reference as not
+    listed and the role to state; stated, it is traceable."""
+    adc = {**ADC, "role": "adc"}
+    text = _gaps(_meta(PHASE, adc), FRINGE)
+    assert text == (
+        "the standards that carry the measurand are a phase or angle reference; the ADC (its "
+        "figures stated in the settings), each to be listed with a calibration certificate and "
+        "a stated uncertainty; 2 listed so (Data acquisition (16-bit ADC), Reference angle "
+        "encoder): none is listed for a phase or angle reference, as no role is stated for "
+        "Reference angle encoder and only a standard whose role says so is taken as a phase or "
+        "angle reference (one with no role may be another instrument's, such as the ADC's): "
+        "state the role \"reference\" of the one that is"), text
+    assert _gaps(_meta({**PHASE, "role": "reference"}, adc), FRINGE) == ""
+    # both of no role: the phase reference named as not listed, the ADC's role filled as before
+    text = _gaps(_meta(ADC, PHASE), FRINGE)
+    assert "none is listed for a phase or angle reference, as no role is stated for Data " \
+        "acquisition (16-bit ADC), Reference angle encoder" in text, text
+    assert "the details do not say which" not in text, text
+    # the polygon's and the theodolite's roles are told as before (one standard, or from face 1)
+    polygon = {"description": "polygon", "certificate_no": "N-1", "uncertainty": 0.2}
+    collimator = {"description": "autocollimator", "certificate_no": "N-2", "uncertainty": 0.1}
+    assert _gaps(_meta(polygon, collimator), POLYGON) == ""
