@@ -268,6 +268,12 @@ def _print_record(record, register, words) -> None:
     if record.change_note:
         lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(
             QT_TR_NOOP("change_note")), value=record.change_note))
+    # an original in place of a withdrawn certificate of its calibration (hostile78 F3)
+    for key in (QT_TR_NOOP("replaces_withdrawn"), QT_TR_NOOP("withdrawn_note")):
+        value = _detail(record, key)
+        if value:
+            lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(key),
+                                 value=value))
     lines.append(message(QT_TR_NOOP("  chain head before it (printed on it): {head}"),
                          head=register.chain_before(record.number)))
     lines.append(_digest_form_line(record))

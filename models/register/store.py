@@ -42,6 +42,7 @@ from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
 from models.messages import QT_TR_NOOP, Message, listed, message, reason_of, separated
 from models.project.output_guard import TURN_FILE_SUFFIX
+from models.register.basis_changes import basis_changes, same_readings
 from models.register.chain import (
     CHAINED,
     CHAINED_V2,
@@ -83,6 +84,16 @@ class SameCalibrationIssued(RegisterError):
     reports (``numbers``): a corrected one is its amendment or replacement, a calibration of
     its own is issued as separate, saying why (ISO/IEC 17025 7.8.8: no second original of one
     calibration — a reading changed and issued again gave two, neither naming the other)."""
+
+    def __init__(self, text, numbers: tuple[str, ...]) -> None:
+        super().__init__(text)
+        self.numbers = numbers
+
+
+class NotASeparateCalibration(RegisterError):
+    """An original issued as a calibration of its own beside current certificates of the
+    same item and date (``numbers``) whose readings are its own: the same readings with
+    other details are a correction, its amendment or replacement (hostile78 F2)."""
 
     def __init__(self, text, numbers: tuple[str, ...]) -> None:
         super().__init__(text)
@@ -1302,6 +1313,15 @@ class Register:
                                       confirmed_date)
                     same = () if supersedes or separate_calibration is None else \
                         self._same_calibration(conn, request.workbench, meta)
+                    # a calibration of its own has readings of its own (hostile78 F2: the
+                    # same readings, ±3″ for ±1″, issued "separate" read "pass")
+                    repeated = tuple(n for n in same if same_readings(
+                        self._get(conn, n).project_json, request.project_json,
+                        request.workbench))
+                    # an original of the calibration of a withdrawn certificate names it, and
+                    # what it changes (hostile78 F3: a fail withdrawn, then a pass issued)
+                    withdrawn = () if supersedes or separate_calibration is None else \
+                        self._in_place_of_withdrawn(conn, request, meta)
                     # an amendment's corrected maker is confirmed and stated on it
                     # (_corrections); an original naming another maker is asked (rev65 F1)
                     others = () if supersedes or separate_calibration is None else \
@@ -1314,6 +1334,14 @@ class Register:
                         self._serial_left_out(conn, request.workbench, meta)
                     corrected = () if plan.original is None else self._corrections(
                         conn, plan.original, request.workbench, meta, correction_confirmed)
+                    if plan.original is not None:
+                        # what decides the result, changed, is said too: the tolerance, the
+                        # rule, the readings … (hostile78 F1: a "conditional pass" amended to
+                        # "pass" read "Changed: typo in the address")
+                        corrected = (*corrected, *basis_changes(
+                            plan.original.project_json,
+                            _with_metadata(request.project_json, request.workbench, meta),
+                            request.workbench, plan.original.number))
                     # an amendment or replacement that corrects the item is asked as an
                     # original is, its own certificates aside (stop 67: one corrected to
                     # "1ra-0815" made a second current certificate of LRA-0815's calibration)
@@ -1333,6 +1361,17 @@ class Register:
                         numbers=", ".join(same), serial=meta.item_serial or "—",
                         date=meta.calibration_date or "—"),
                         same)
+                if same and separate and repeated:
+                    raise NotASeparateCalibration(message(QT_TR_NOOP(
+                        "the readings are those of {numbers} (serial {serial}, calibrated "
+                        "{date}), so this is no calibration of its own: a calibration of its "
+                        "own (e.g. as left after an adjustment) has readings of its own; the "
+                        "same readings with other details (a tolerance, a decision rule, a "
+                        "standard) are a correction of {numbers}: its amendment or replacement "
+                        "(File › Certificate register, Amend… or Replace…), which states what "
+                        "changed (ISO/IEC 17025 7.8.8)"),
+                        numbers=", ".join(repeated), serial=meta.item_serial or "—",
+                        date=meta.calibration_date or "—"), repeated)
                 if others and not another_makers_item:
                     raise _another_makers_item(meta, others)
                 if lookalikes and not another_lookalike_item:
@@ -1346,8 +1385,10 @@ class Register:
                     supersedes=original.number if original else "",
                     revision="" if plan.revision == "original" else plan.revision,
                     change_note=separate if same else
-                    separated([*corrected, change_note]) if corrected else change_note,
-                    separate_from=", ".join(same))
+                    _bounded(separated([*corrected, change_note])) if corrected else change_note,
+                    separate_from=", ".join(same),
+                    replaces_withdrawn=", ".join(n for n, _ in withdrawn),
+                    withdrawn_note=_bounded(separated([said for _, said in withdrawn])))
                 record = CertificateRecord(
                     number=plan.number,
                     issued_at=now.isoformat(),
@@ -1501,18 +1542,48 @@ class Register:
         with self._read() as conn:
             return self._same_calibration(conn, workbench, meta)
 
-    def _current_of_the_day(self, workbench: str, meta: CertificateMetadata):
+    def _current_of_the_day(self, workbench: str, meta: CertificateMetadata,
+                            status: str = "issued"):
         """The query of the current certificates (issued, not superseded or withdrawn) of
         ``workbench`` and the date of calibration of ``meta``: their number and item (the
         one-calibration check and its another-maker and serial-left-out questions)."""
         c = self._schema.CERTIFICATES.c
         return self._sa.select(c.number, c.item_serial, c.item_description,
                                c.item_manufacturer).where(
-            c.workbench == workbench, c.status == "issued",
+            c.workbench == workbench, c.status == status,
             c.calibration_date == meta.calibration_date)
 
-    def _same_calibration(self, conn, workbench: str, meta: CertificateMetadata
-                          ) -> tuple[str, ...]:
+    def _in_place_of_withdrawn(self, conn, request: IssueRequest, meta: CertificateMetadata
+                               ) -> tuple[tuple[str, Any], ...]:
+        """The withdrawn certificates of the item and date of calibration of ``meta`` on
+        ``request``'s workbench, each with what to say of it: when and why it was withdrawn,
+        and what this certificate changes of what decides the result against it
+        (:func:`models.register.basis_changes.basis_changes`)."""
+        out = []
+        project = _with_metadata(request.project_json, request.workbench, meta)
+        for number in self._same_calibration(conn, request.workbench, meta, "withdrawn"):
+            record = self._get(conn, number)
+            when = self._withdrawn_on(conn, number)
+            changes = basis_changes(record.project_json, project, request.workbench, number)
+            said = message(QT_TR_NOOP("{number} withdrawn {date} ({reason})"), number=number,
+                           date=when or "—", reason=record.withdrawn_reason or "—")
+            if changes:
+                said = message(QT_TR_NOOP("{withdrawn}; changed: {changes}"), withdrawn=said,
+                               changes=separated(changes))
+            out.append((number, said))
+        return tuple(out)
+
+    def _withdrawn_on(self, conn, number: str) -> str:
+        """The date (UTC, as recorded) of ``number``'s withdrawal entry; "" when the register
+        holds none (a withdrawal of an older register)."""
+        entries = self._schema.ENTRIES
+        row = conn.execute(self._sa.select(entries.c.recorded_at).where(
+            entries.c.kind == "withdrawal", entries.c.subject == number).order_by(
+            entries.c.seq.desc())).first()
+        return str(row.recorded_at)[:10] if row is not None and row.recorded_at else ""
+
+    def _same_calibration(self, conn, workbench: str, meta: CertificateMetadata,
+                          status: str = "issued") -> tuple[str, ...]:
         """The current certificates (issued, not superseded or withdrawn) of ``workbench``
         reporting the item and date of calibration of ``meta``: a serial number that prints
         alike or differs by case, separators aside (same_serial), of a manufacturer that
@@ -1525,7 +1596,7 @@ class Register:
         from models.register.identifiers import no_serial, same_identifier, same_serial
 
         c = self._schema.CERTIFICATES.c
-        query = self._current_of_the_day(workbench, meta)
+        query = self._current_of_the_day(workbench, meta, status)
         if no_serial(meta.item_serial):
             return tuple(row.number for row in conn.execute(query.order_by(c.id))
                          if no_serial(row.item_serial) and same_identifier(
@@ -3290,6 +3361,18 @@ def _amendment_count(conn, register: Register, record: CertificateRecord) -> int
         certificates.c.revision.like("amendment%"))).all()
     return max((int(m.group(1)) for row in rows if (m := form.fullmatch(row.number))),
                default=0)
+
+
+def _bounded(note: Any) -> Any:
+    """A note stated on a certificate, within what its details hold (MAX_NOTES_CHARS: the
+    project recorded with it must read again); longer, the changes are named, not listed
+    (the register's record of each certificate holds its readings and details)."""
+    from models.certificate.metadata import MAX_NOTES_CHARS
+
+    if len(str(note)) <= MAX_NOTES_CHARS:
+        return note
+    return str(note)[:MAX_NOTES_CHARS - 80].rsplit(";", 1)[0] + "; " + str(message(QT_TR_NOOP(
+        "and more: see the register's records")))
 
 
 def _with_metadata(project_json: str, workbench: str, meta: CertificateMetadata) -> str:
