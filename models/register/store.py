@@ -1313,11 +1313,10 @@ class Register:
                                       confirmed_date)
                     same = () if supersedes or separate_calibration is None else \
                         self._same_calibration(conn, request.workbench, meta)
-                    # a calibration of its own has readings of its own (hostile78 F2: the
-                    # same readings, ±3″ for ±1″, issued "separate" read "pass")
-                    repeated = tuple(n for n in same if same_readings(
-                        self._get(conn, n).project_json, request.project_json,
-                        request.workbench))
+                    # a calibration of its own has readings of its own: the same readings
+                    # judged otherwise are a correction (hostile78 F2: the same readings,
+                    # ±3″ for ±1″, issued "separate" read "pass")
+                    repeated = self._judged_again(conn, same, request, meta)
                     # an original of the calibration of a withdrawn certificate names it, and
                     # what it changes (hostile78 F3: a fail withdrawn, then a pass issued)
                     withdrawn = () if supersedes or separate_calibration is None else \
@@ -1362,16 +1361,18 @@ class Register:
                         date=meta.calibration_date or "—"),
                         same)
                 if same and separate and repeated:
+                    numbers = ", ".join(n for n, _ in repeated)
                     raise NotASeparateCalibration(message(QT_TR_NOOP(
                         "the readings are those of {numbers} (serial {serial}, calibrated "
-                        "{date}), so this is no calibration of its own: a calibration of its "
-                        "own (e.g. as left after an adjustment) has readings of its own; the "
-                        "same readings with other details (a tolerance, a decision rule, a "
-                        "standard) are a correction of {numbers}: its amendment or replacement "
-                        "(File › Certificate register, Amend… or Replace…), which states what "
-                        "changed (ISO/IEC 17025 7.8.8)"),
-                        numbers=", ".join(repeated), serial=meta.item_serial or "—",
-                        date=meta.calibration_date or "—"), repeated)
+                        "{date}), judged otherwise: {changes}. That is no calibration of its "
+                        "own, which has readings of its own (e.g. as left after an "
+                        "adjustment): it is a correction of {numbers}, its amendment or "
+                        "replacement (File › Certificate register, Amend… or Replace…), which "
+                        "states what changed (ISO/IEC 17025 7.8.8)"),
+                        numbers=numbers, serial=meta.item_serial or "—",
+                        date=meta.calibration_date or "—",
+                        changes=separated([c for _, said in repeated for c in said])),
+                        tuple(n for n, _ in repeated))
                 if others and not another_makers_item:
                     raise _another_makers_item(meta, others)
                 if lookalikes and not another_lookalike_item:
@@ -1552,6 +1553,22 @@ class Register:
                                c.item_manufacturer).where(
             c.workbench == workbench, c.status == status,
             c.calibration_date == meta.calibration_date)
+
+    def _judged_again(self, conn, same: tuple[str, ...], request: IssueRequest,
+                      meta: CertificateMetadata) -> tuple[tuple[str, tuple], ...]:
+        """Of the current certificates ``same`` of this calibration, those whose readings
+        ``request`` holds too, as typed, and judges otherwise (another tolerance, rule,
+        standard or setting): each with what it changes (hostile78 F2)."""
+        project = _with_metadata(request.project_json, request.workbench, meta)
+        out = []
+        for number in same:
+            record = self._get(conn, number)
+            if not same_readings(record.project_json, project, request.workbench):
+                continue
+            changes = basis_changes(record.project_json, project, request.workbench, number)
+            if changes:
+                out.append((number, changes))
+        return tuple(out)
 
     def _in_place_of_withdrawn(self, conn, request: IssueRequest, meta: CertificateMetadata
                                ) -> tuple[tuple[str, Any], ...]:

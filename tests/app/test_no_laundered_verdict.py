@@ -96,6 +96,10 @@ def test_a_separate_calibration_of_the_same_readings_is_refused(tmp_path, bench)
             _issue(register, bench, tmp_path / "s.pdf", details={"tolerance": 3},
                    separate_calibration="as left after adjustment")
         assert refused.value.numbers == (first.number,)
+        assert str(refused.value).startswith(
+            f"the readings are those of {first.number} (serial LRA-0815, calibrated "
+            f'2026-11-20), judged otherwise: tolerance changed from ±1" (on {first.number}) '
+            'to ±3". That is no calibration of its own')
         assert [r.number for r in register.list()] == [first.number]  # nothing issued
         # readings of its own: issued, separate, as before
         other = [list(r) for r in rows]
