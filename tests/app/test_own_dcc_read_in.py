@@ -1,0 +1,144 @@
+"""A DCC this register issued is read in as a standard's certificate only byte for byte as
+issued and while its certificate is current (hostile78 F4): a polygon cross-calibrated here,
+its DCC's face 2 edited from 0.23″ to 3.23″ (its U made smaller), was read by ``analyze
+polygon --reference-dcc`` and a certificate issued citing the lab's own certificate for
+figures it never stated; the DCC of a withdrawn certificate was read the same. Another
+laboratory's DCC is read as before."""
+
+from __future__ import annotations
+
+import json
+import random
+import re
+from pathlib import Path
+
+import pytest
+
+from app.main import main
+from models.certificate.metadata import CertificateMetadata
+from models.dcc.reader import DccError
+from models.register.location import register_url
+from models.register.store import Register
+
+pytestmark = pytest.mark.slow  # a cross-calibration issued with its DCC, polygon runs
+
+
+@pytest.fixture(scope="module")
+def _own_dcc(tmp_path_factory):
+    """The crosscal sample issued with its DCC into a register of its own: the folder."""
+    folder = tmp_path_factory.mktemp("own_dcc")
+    samples = Path(__file__).resolve().parents[2] / "resources" / "samples"
+    meta = json.loads((samples / "certificate_crosscal.json").read_text(encoding="utf-8"))
+    meta.pop("issue_date", None)
+    meta.update(example=False, certificate_number="", calibration_date="2026-11-20")
+    (folder / "cc.json").write_text(json.dumps(meta), encoding="utf-8")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setenv("ANGLEBENCH_REGISTER", str(folder / "register.sqlite"))
+        assert main(["analyze", "crosscal", str(samples / "crosscal_sample.csv"),
+                     "--metadata", str(folder / "cc.json"), "--certificate",
+                     str(folder / "cc.pdf"), "--dcc", str(folder / "cc.xml")]) == 0
+    random.seed(1)
+    lines = ["position,encoder_deg,polygon_dev_arcsec,ac_x_arcsec,ac_y_arcsec,set,direction"]
+    for i in [*range(1, 13), 1]:
+        lines.append(f"{i},{(i - 1) * 30 + 10:.6f},0,{random.gauss(0, 0.3):.2f},"
+                     f"{random.gauss(0, 0.3):.2f},1,+")
+    (folder / "p12.csv").write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return folder
+
+
+@pytest.fixture
+def own(_own_dcc, tmp_path, samples_dir):
+    """The module's register, DCC and 12-face run copied into the test's folder, and the
+    polygon run's details citing the cross-calibration's certificate; its number."""
+    for name in ("register.sqlite", "cc.xml", "p12.csv"):
+        (tmp_path / name).write_bytes((_own_dcc / name).read_bytes())
+    assert register_url().endswith(str(tmp_path / "register.sqlite"))
+    with Register(register_url()) as register:
+        number = register.list()[0].number
+    meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    meta.pop("issue_date", None)
+    meta.update(example=False, certificate_number="", item_serial="RX-12-0001",
+                calibration_date="2026-11-21")
+    meta["standards"][0].update(description="12-face polygon", serial="P12-7",
+                                certificate_no=number)
+    (tmp_path / "p.json").write_text(json.dumps(meta), encoding="utf-8")
+    return number
+
+
+def _read_in(tmp_path, dcc: Path, capsys) -> tuple[int, str]:
+    capsys.readouterr()
+    code = main(["analyze", "polygon", str(tmp_path / "p12.csv"), "--reference-dcc", str(dcc),
+                 "--metadata", str(tmp_path / "p.json"), "--certificate",
+                 str(tmp_path / "p.pdf"), "--reading-noise-arcsec", "0.3"])
+    return code, capsys.readouterr().err
+
+
+def _edited(tmp_path) -> Path:
+    xml = (tmp_path / "cc.xml").read_text(encoding="utf-8")
+    deviations = re.search(r"<si:valueXMLList>0 (-?[0-9.]+) ", xml)
+    assert deviations is not None  # face 2's deviation, as the DCC lists the faces
+    edited = xml.replace(f"<si:valueXMLList>0 {deviations.group(1)} ",
+                         f"<si:valueXMLList>0 {float(deviations.group(1)) + 3:.12g} ")
+    assert edited != xml
+    (tmp_path / "edited.xml").write_text(edited, encoding="utf-8")
+    return tmp_path / "edited.xml"
+
+
+def test_an_edited_copy_of_the_labs_own_dcc_is_not_read(own, tmp_path, capsys):
+    code, err = _read_in(tmp_path, _edited(tmp_path), capsys)
+    assert code == 2
+    assert (f"edited.xml is a DCC of certificate {own}, which this register issued, but it is "
+            "not the DCC it issued") in err
+    assert f"anglebench register show {own} --dcc OUT.xml" in err
+    assert not (tmp_path / "p.pdf").exists()
+    with Register(register_url()) as register:
+        assert [r.number for r in register.list()] == [own]  # nothing issued
+    # as issued, it is read and the certificate issued citing it
+    code, err = _read_in(tmp_path, tmp_path / "cc.xml", capsys)
+    assert code == 0, err
+    assert (tmp_path / "p.pdf").exists()
+
+
+def test_the_dcc_of_a_withdrawn_certificate_is_not_read(own, tmp_path, capsys):
+    assert main(["register", "withdraw", own, "--reason", "values wrong"]) == 0
+    code, err = _read_in(tmp_path, tmp_path / "cc.xml", capsys)
+    assert code == 2
+    assert (f"cc.xml is the DCC of certificate {own}, which was withdrawn (values wrong): a "
+            "withdrawn certificate calibrates nothing") in err
+    assert not (tmp_path / "p.pdf").exists()
+
+
+def test_another_registers_dcc_of_the_same_number_is_read(own, tmp_path, capsys):
+    """Another laboratory numbering as this one (AngleBench's default scheme): its DCC
+    names a number this register issued, under another laboratory's name, embedding a PDF
+    this register never issued; it is read as any supplier's."""
+    xml = (tmp_path / "cc.xml").read_text(encoding="utf-8")
+    # the same number, another lab's name, the PDF inside another one's (any bytes)
+    other = re.sub(r"<dcc:dataBase64>[^<]*</dcc:dataBase64>",
+                   "<dcc:dataBase64>JVBERi0xLjQKJW90aGVyIGxhYgo=</dcc:dataBase64>", xml, count=1)
+    lab = json.loads((tmp_path / "p.json").read_text(encoding="utf-8"))["lab_name"]
+    other = other.replace(lab, "Another Angle Lab")
+    assert "Another Angle Lab" in other
+    (tmp_path / "theirs.xml").write_text(other, encoding="utf-8")
+    code, err = _read_in(tmp_path, tmp_path / "theirs.xml", capsys)
+    assert "which this register issued" not in err
+    assert code == 0, err
+
+
+def test_the_window_refuses_an_edited_copy_in_both_readers(own, tmp_path, qtbot):
+    """*Load polygon certificate…* (the polygon workbench) and *Read from DCC…* (the details'
+    standards) refuse it the same, naming the command that writes the DCC as issued."""
+    from widgets.certificate_dialog import CertificateDialog
+    from widgets.polygon.presenter import PolygonPresenter
+
+    edited = str(_edited(tmp_path))
+    presenter = PolygonPresenter()
+    presenter.dcc_register_url = register_url
+    with pytest.raises(DccError, match=f"is a DCC of certificate {own}, which this register "
+                                       "issued, but it is not the DCC it issued"):
+        presenter.load_certificate(edited)
+    dialog = CertificateDialog(CertificateMetadata())
+    qtbot.addWidget(dialog)
+    dialog.dcc_register_url = register_url
+    assert not dialog.read_standard_dcc(edited)
+    assert "is not the DCC it issued" in dialog.error_label.text()
