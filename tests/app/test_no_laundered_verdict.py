@@ -22,7 +22,8 @@ from models.certificate.metadata import CertificateMetadata
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.register.location import register_url
-from models.register.store import NotASeparateCalibration, Register
+from models.register.register_error import RegisterError
+from models.register.store import Register
 from models.registry import KINDS
 
 
@@ -92,9 +93,10 @@ def test_a_separate_calibration_of_the_same_readings_is_refused(tmp_path, bench)
     kind, rows, *_ = bench
     with Register(register_url()) as register:
         first = _issue(register, bench, tmp_path / "o.pdf")
-        with pytest.raises(NotASeparateCalibration) as refused:
+        with pytest.raises(RegisterError) as refused:
             _issue(register, bench, tmp_path / "s.pdf", details={"tolerance": 3},
                    separate_calibration="as left after adjustment")
+        assert type(refused.value).__name__ == "NotASeparateCalibration"
         assert refused.value.numbers == (first.number,)
         assert str(refused.value).startswith(
             f"the readings are those of {first.number} (serial LRA-0815, calibrated "
