@@ -486,7 +486,7 @@ class Register:
             if self.read_only and journal.exists() and journal.stat().st_size > 0:
                 raise RegisterError(self._unread_journal()) from None
             if self._full(exc):  # reg72 #7: on opening, its WAL index could not be made
-                raise RegisterError(self._disk_full()) from None
+                raise RegisterError(self._disk_full(reading=True)) from None
             damaged = self._damaged(exc)
             if damaged is not None:
                 raise RegisterError(damaged) from None
@@ -683,7 +683,7 @@ class Register:
                 yield conn
         except self._sa.exc.SQLAlchemyError as exc:
             if self._full(exc):  # a new connection's WAL index could not be made (reg72 #7)
-                raise RegisterError(self._disk_full()) from None
+                raise RegisterError(self._disk_full(reading=True)) from None
             raise RegisterError(self._damaged(exc) or message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -786,12 +786,20 @@ class Register:
         with contextlib.suppress(Exception):  # a view that cannot show it stops no issue
             self.on_wait(said)
 
-    def _disk_full(self, path: str | None = None) -> Message:
+    def _disk_full(self, path: str | None = None, reading: bool = False) -> Message:
         """What a write that found the disk full says: where (the file the system named, or
         the register's file; a server's register by its URL), and that the transaction was
         rolled back: nothing recorded, the register as it was (it said "[Errno 28] No space
-        left on device", stop 63)."""
+        left on device", stop 63). ``reading``: the register was being opened or read (a
+        connection whose journal index could not be made), which any command does, `list`
+        and `verify` too: said without a recording that none of them attempted (hostile77
+        L1: "nothing was recorded" for a command that only reads)."""
         where = str(path or self._sqlite_path or self.display_url)
+        if reading:
+            return message(QT_TR_NOOP(
+                "the disk is full at {path}: the register cannot be opened there (SQLite needs "
+                "room beside it for its journal's index); it was not changed (free some space "
+                "and try again)"), path=where)
         return message(QT_TR_NOOP(
             "the disk is full at {path}: nothing was recorded; the register is unchanged "
             "(free some space and try again)"), path=where)
