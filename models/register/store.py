@@ -1590,6 +1590,11 @@ class Register:
             record = self._get(conn, number)
             when = self._withdrawn_on(conn, number)
             changes = basis_changes(record.project_json, project, request.workbench, number)
+            if _printed(record.customer) != _printed(meta.customer_name):  # whose it is
+                changes = (message(QT_TR_NOOP(
+                    "customer changed from {old} (on {number}) to {new}"),
+                    old=_printed(record.customer) or "—", number=number,
+                    new=_printed(meta.customer_name) or "—"), *changes)
             said = message(QT_TR_NOOP("{number} withdrawn {date} ({reason})"), number=number,
                            date=when or "—", reason=record.withdrawn_reason or "—")
             if changes:

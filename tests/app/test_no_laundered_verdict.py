@@ -148,3 +148,17 @@ def test_an_original_after_a_withdrawal_names_the_withdrawn_one_and_its_changes(
             f"calibration: {n} withdrawn") in text
     assert "(typo); changed: tolerance changed from ±1\"" in text
     assert "withdrawn" not in _text(tmp_path / "o.pdf").split("Certificate number")[0]
+
+
+def test_an_original_after_a_withdrawal_for_another_customer_says_so(tmp_path, bench):
+    with Register(register_url()) as register:
+        first = _issue(register, bench, tmp_path / "o.pdf")
+        register.withdraw(first.number, "wrong customer")
+        again = _issue(register, bench, tmp_path / "n.pdf",
+                       details={"customer_name": "Acme Optics GmbH"})
+        details = json.loads(register.get(again.number).project_json)[
+            "metadata"]["certificates"]["theodolite"]
+    assert details["replaces_withdrawn"] == first.number
+    assert details["withdrawn_note"].endswith(
+        f"(wrong customer); changed: customer changed from 长春光电有限公司 Changchun Photonics "
+        f"Ltd. (on {first.number}) to Acme Optics GmbH")
