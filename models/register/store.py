@@ -1325,6 +1325,13 @@ class Register:
                     # judged otherwise are a correction (hostile78 F2: the same readings,
                     # ±3″ for ±1″, issued "separate" read "pass")
                     repeated = self._judged_again(conn, same, request, meta)
+                    # and what one with readings of its own changes against them is said
+                    # beside why it is separate (one reading of 41 edited, "as left")
+                    against = tuple(
+                        c for n in same for c in basis_changes(
+                            self._get(conn, n).project_json,
+                            _with_metadata(request.project_json, request.workbench, meta),
+                            request.workbench, n)) if separate_calibration else ()
                     # an original of the calibration of a withdrawn certificate names it, and
                     # what it changes (hostile78 F3: a fail withdrawn, then a pass issued)
                     withdrawn = () if supersedes or separate_calibration is None else \
@@ -1393,7 +1400,7 @@ class Register:
                     created=now.isoformat(),
                     supersedes=original.number if original else "",
                     revision="" if plan.revision == "original" else plan.revision,
-                    change_note=separate if same else
+                    change_note=_bounded(separated([separate, *against])) if same else
                     _bounded(separated([*corrected, change_note])) if corrected else change_note,
                     separate_from=", ".join(same),
                     replaces_withdrawn=", ".join(n for n, _ in withdrawn),

@@ -110,6 +110,13 @@ def test_a_separate_calibration_of_the_same_readings_is_refused(tmp_path, bench)
                           separate_calibration="as left after adjustment")
     assert separate.status == "issued"
     assert not (tmp_path / "s.pdf").exists()
+    # what it changes against the other is said beside why it is separate: one reading of
+    # 41 "as left after adjustment" is seen as such
+    assert separate.change_note == (
+        f"as left after adjustment; readings changed from those of {first.number}: row(s) 1 "
+        f"({len(rows)} rows there, {len(rows)} here)")
+    assert ("which stays valid: as left after adjustment; readings changed from those of "
+            f"{first.number}: row(s) 1") in _text(tmp_path / "s2.pdf")
 
 
 def test_the_command_line_refuses_a_separate_calibration_of_the_same_readings(
