@@ -29,6 +29,8 @@ _DECIDING: tuple[tuple[str, str], ...] = (
                                             "{number}) to {new} %")),
     ("item_grade", QT_TR_NOOP("grade / specification changed from {old} (on {number}) to "
                               "{new}")),
+    ("document_type", QT_TR_NOOP("document asked for changed from {old} (on {number}) to "
+                                 "{new}")),
 )
 
 

@@ -23,9 +23,10 @@ from models.messages import QT_TR_NOOP, Message, message
 __all__ = ["own_dcc_refusal", "own_dcc_refusal_at"]
 
 
-def _named(data: bytes) -> tuple[str, str, list[bytes]]:
-    """The DCC's certificate number, its laboratory's name and the PDFs it embeds ("", "", []
-    for a document that cannot be read: the reader says why)."""
+def _named(data: bytes) -> tuple[str, str, list[bytes], list[str]]:
+    """The DCC's certificate number, its laboratory's name, the PDFs it embeds and its
+    item's identifications ("", "", [], [] for a document that cannot be read: the reader
+    says why)."""
     from models.dcc.reader import DccError, embedded_pdfs, parse_dcc
     from models.dcc.vocabulary import DCC_NAMESPACE
 
@@ -34,12 +35,29 @@ def _named(data: bytes) -> tuple[str, str, list[bytes]]:
         root = parse_dcc(data, "DCC")
         pdfs = embedded_pdfs(data)
     except DccError:
-        return "", "", []
+        return "", "", [], []
     number = (root.findtext(f".//{d}coreData/{d}uniqueIdentifier") or "").strip()
     lab = root.find(f".//{d}calibrationLaboratory/{d}contact")
     names = [] if lab is None else [
         (c.text or "").strip() for c in lab.iterfind(f"{d}name/{d}content")]
-    return number, next((n for n in names if n), ""), pdfs
+    serials = [(v.text or "").strip() for v in root.iterfind(
+        f".//{d}items/{d}item/{d}identifications/{d}identification/{d}value")]
+    return number, next((n for n in names if n), ""), pdfs, [s for s in serials if s]
+
+
+def _same_lab(a: str, b: str) -> bool:
+    """Two laboratory names that print alike, case and spaces aside."""
+    from models.register.identifiers import same_identifier
+
+    a, b = " ".join(a.split()), " ".join(b.split())
+    return bool(a and b) and (a.casefold() == b.casefold() or same_identifier(a, b))
+
+
+def _same_item(serials: list[str], record) -> bool:
+    from models.register.identifiers import same_serial
+
+    return bool(record.item_serial) and any(same_serial(s, record.item_serial)
+                                            for s in serials)
 
 
 def _lab_of(record) -> str:
@@ -70,13 +88,14 @@ def own_dcc_refusal(register: Any, data: bytes, source: str) -> Message | None:
     if issued:
         record = _record(register, issued[0])
     else:
-        number, lab, pdfs = _named(data)
+        number, lab, pdfs, serials = _named(data)
         by_pdf = [n for pdf in pdfs for n, what in
                   register.issued_file(hashlib.sha256(pdf).hexdigest()) if what == "pdf"]
         record = _record(register, by_pdf[0]) if by_pdf else None
         named = _record(register, number) if number and record is None else None
-        if named is not None and lab and " ".join(lab.split()) == " ".join(
-                _lab_of(named).split()):
+        # this register's number under its laboratory's name, or for its item: another
+        # laboratory numbering alike calibrates another item under another name
+        if named is not None and (_same_lab(lab, _lab_of(named)) or _same_item(serials, named)):
             record = named
         if record is None:
             return None

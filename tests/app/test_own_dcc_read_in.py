@@ -108,12 +108,21 @@ def test_the_dcc_of_a_withdrawn_certificate_is_not_read(own, tmp_path, capsys):
     assert not (tmp_path / "p.pdf").exists()
 
 
-def test_another_registers_dcc_of_the_same_number_is_read(own, tmp_path, capsys):
-    """Another laboratory numbering as this one (AngleBench's default scheme): its DCC
-    names a number this register issued, under another laboratory's name, embedding a PDF
-    this register never issued; it is read as any supplier's."""
+@pytest.mark.parametrize("number", ["KAL-2026-0009", None])
+def test_another_laboratorys_dcc_is_read(own, tmp_path, capsys, number):
+    """Another laboratory's DCC of the same polygon, under its own name and number, or one
+    numbering as this one (AngleBench's default scheme: the same number) for another item,
+    embedding a PDF this register never issued: read as any supplier's."""
     xml = (tmp_path / "cc.xml").read_text(encoding="utf-8")
-    # the same number, another lab's name, the PDF inside another one's (any bytes)
+    if number is None:  # this register's number, another laboratory's item
+        xml = xml.replace("<dcc:value>P12-7</dcc:value>", "<dcc:value>Q-77</dcc:value>")
+        meta = json.loads((tmp_path / "p.json").read_text(encoding="utf-8"))
+        meta["standards"][0]["serial"] = "Q-77"
+        (tmp_path / "p.json").write_text(json.dumps(meta), encoding="utf-8")
+    else:
+        xml = xml.replace(f"<dcc:uniqueIdentifier>{own}</dcc:uniqueIdentifier>",
+                          f"<dcc:uniqueIdentifier>{number}</dcc:uniqueIdentifier>")
+    # another lab's name, the PDF inside another one's (any bytes)
     other = re.sub(r"<dcc:dataBase64>[^<]*</dcc:dataBase64>",
                    "<dcc:dataBase64>JVBERi0xLjQKJW90aGVyIGxhYgo=</dcc:dataBase64>", xml, count=1)
     lab = json.loads((tmp_path / "p.json").read_text(encoding="utf-8"))["lab_name"]
@@ -123,6 +132,21 @@ def test_another_registers_dcc_of_the_same_number_is_read(own, tmp_path, capsys)
     code, err = _read_in(tmp_path, tmp_path / "theirs.xml", capsys)
     assert "which this register issued" not in err
     assert code == 0, err
+
+
+def test_an_edited_copy_under_another_laboratorys_name_is_still_the_labs_own(
+        own, tmp_path, capsys):
+    """The laboratory's name changed in the copy, its PDF taken out: still this register's
+    number for this register's item, so still not read."""
+    xml = _edited(tmp_path).read_text(encoding="utf-8")
+    lab = json.loads((tmp_path / "p.json").read_text(encoding="utf-8"))["lab_name"]
+    xml, cut = re.subn(r"<dcc:document\b.*?</dcc:document>", "",
+                       xml.replace(lab, "Another Lab"), flags=re.S)
+    assert cut == 1 and "Another Lab" in xml
+    (tmp_path / "renamed.xml").write_text(xml, encoding="utf-8")
+    code, err = _read_in(tmp_path, tmp_path / "renamed.xml", capsys)
+    assert code == 2
+    assert f"renamed.xml is a DCC of certificate {own}, which this register issued" in err
 
 
 def test_the_window_refuses_an_edited_copy_in_both_readers(own, tmp_path, qtbot):
