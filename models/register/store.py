@@ -1325,6 +1325,9 @@ class Register:
                     # judged otherwise are a correction (hostile78 F2: the same readings,
                     # ±3″ for ±1″, issued "separate" read "pass")
                     repeated = self._judged_again(conn, same, request, meta)
+                    # a standard whose certificate is one of this register's, withdrawn or
+                    # superseded, calibrates nothing (hostile78 F6)
+                    void = self._void_standards(conn, meta)
                     # and what one with readings of its own changes against them is said
                     # beside why it is separate (one reading of 41 edited, "as left")
                     against = tuple(
@@ -1375,6 +1378,8 @@ class Register:
                         numbers=", ".join(same), serial=meta.item_serial or "—",
                         date=meta.calibration_date or "—"),
                         same)
+                if void:
+                    raise RegisterError(separated(void, " "))
                 if same and separate and repeated:
                     numbers = ", ".join(n for n, _ in repeated)
                     raise NotASeparateCalibration(message(QT_TR_NOOP(
@@ -1568,6 +1573,38 @@ class Register:
                                c.item_manufacturer).where(
             c.workbench == workbench, c.status == status,
             c.calibration_date == meta.calibration_date)
+
+    def _void_standards(self, conn, meta: CertificateMetadata) -> builtins.list[Any]:
+        """Why each reference standard of ``meta`` whose certificate is one of this
+        register's — its number, for that certificate's item (the standard's serial, where
+        it lists one) — cannot be cited: that certificate was withdrawn or superseded
+        (hostile78 F6: a polygon's withdrawn certificate typed as its calibration)."""
+        from models.register.identifiers import same_serial
+
+        out = []
+        for standard in meta.standards:
+            number = (standard.certificate_no or "").strip()
+            if not number:
+                continue
+            try:
+                record = self._get(conn, number)
+            except RegisterError:
+                continue
+            if standard.serial and not same_serial(standard.serial, record.item_serial):
+                continue  # another laboratory's certificate numbered alike
+            name = standard.description or standard.serial or number
+            if record.status == "withdrawn":
+                out.append(message(QT_TR_NOOP(
+                    "the reference standard {standard} cites certificate {number}, which this "
+                    "register withdrew ({reason}): a withdrawn certificate calibrates nothing; "
+                    "cite the standard's valid certificate"), standard=name,
+                    number=record.number, reason=record.withdrawn_reason or "—"))
+            elif record.status == "superseded":
+                out.append(message(QT_TR_NOOP(
+                    "the reference standard {standard} cites certificate {number}, which was "
+                    "superseded by {by}: cite {by}, with its figures"), standard=name,
+                    number=record.number, by=record.superseded_by or "—"))
+        return out
 
     def _judged_again(self, conn, same: tuple[str, ...], request: IssueRequest,
                       meta: CertificateMetadata) -> tuple[tuple[str, tuple], ...]:

@@ -166,3 +166,26 @@ def test_the_window_refuses_an_edited_copy_in_both_readers(own, tmp_path, qtbot)
     dialog.dcc_register_url = register_url
     assert not dialog.read_standard_dcc(edited)
     assert "is not the DCC it issued" in dialog.error_label.text()
+
+
+def test_a_standard_citing_a_withdrawn_certificate_of_this_register_is_refused(
+        own, tmp_path, capsys):
+    """hostile78 F6: the same without the DCC: the polygon's withdrawn certificate typed as
+    its calibration, with a U, was issued citing it."""
+    meta = json.loads((tmp_path / "p.json").read_text(encoding="utf-8"))
+    meta["standards"][0].update(uncertainty=0.05, uncertainty_unit="arcsec", basis="U95",
+                                applies_to="from face 1")
+    (tmp_path / "p.json").write_text(json.dumps(meta), encoding="utf-8")
+    assert main(["register", "withdraw", own, "--reason", "values wrong"]) == 0
+    capsys.readouterr()
+    args = ["analyze", "polygon", str(tmp_path / "p12.csv"), "--metadata",
+            str(tmp_path / "p.json"), "--reading-noise-arcsec", "0.3", "--certificate"]
+    assert main([*args, str(tmp_path / "p.pdf")]) == 2
+    assert (f"the reference standard 12-face polygon cites certificate {own}, which this "
+            "register withdrew (values wrong): a withdrawn certificate calibrates nothing"
+            ) in capsys.readouterr().err
+    assert not (tmp_path / "p.pdf").exists()
+    # another laboratory's certificate numbered alike, of another polygon: issued
+    meta["standards"][0]["serial"] = "Q-77"
+    (tmp_path / "p.json").write_text(json.dumps(meta), encoding="utf-8")
+    assert main([*args, str(tmp_path / "q.pdf")]) == 0
