@@ -1,7 +1,8 @@
 """What a certificate changes of what decides its result, against an earlier certificate of
 the same calibration: the tolerance, the decision rule, the decided quantity, the coverage
-probability, the item's grade and resolution, the reference standards, the readings and the
-analysis settings, each compared with the project state recorded with the earlier one.
+probability, the item's grade and resolution, the document asked for, the laboratory and its
+accreditation, the reference standards, the readings and the analysis settings, each
+compared with the project state recorded with the earlier one.
 
 An amendment says what it changes (ISO/IEC 17025 7.8.8.2). The register stated a corrected
 serial, date, maker, customer or description, and otherwise only the note typed: an
@@ -31,6 +32,10 @@ _DECIDING: tuple[tuple[str, str], ...] = (
                               "{new}")),
     ("document_type", QT_TR_NOOP("document asked for changed from {old} (on {number}) to "
                                  "{new}")),
+    # who certifies it: the laboratory and its accreditation
+    ("lab_name", QT_TR_NOOP("laboratory changed from {old} (on {number}) to {new}")),
+    ("lab_accreditation", QT_TR_NOOP("accreditation changed from {old} (on {number}) to "
+                                     "{new}")),
 )
 
 

@@ -35,20 +35,22 @@ def test_nothing_changed_says_nothing_and_a_sheets_padding_is_no_change():
 def test_each_deciding_detail_is_said_with_its_unit():
     said = _said(_project(), _project(
         tolerance=3, tolerance_unit="urad", decision_rule="simple",
-        document_type="test", standards=[{"description": "Theodolite", "serial": "T-1",
-                                          "certificate_no": "NIM-1", "uncertainty": 0.2,
-                                          "uncertainty_unit": "arcsec", "basis": "u"}]))
+        document_type="test", lab_accreditation="CNAS L0001",
+        standards=[{"description": "Theodolite", "serial": "T-1", "certificate_no": "NIM-1",
+                    "uncertainty": 0.2, "uncertainty_unit": "arcsec", "basis": "u"}]))
     assert said == [
         'tolerance changed from ±1" (on AB-1) to ±3 µrad',
         "decision rule changed from guarded (on AB-1) to simple",
         "document asked for changed from calibration (on AB-1) to test",
+        "accreditation changed from — (on AB-1) to CNAS L0001",
         'reference standards changed from Theodolite T-1 NIM-1 0.5" u (on AB-1) to '
         'Theodolite T-1 NIM-1 0.2" u']
 
 
 def test_readings_and_settings_are_said_by_row_and_by_key():
-    said = _said(_project(), _project(rows=[["-20", "1", "2"], ["-19", "3", "5"], ["-18", "1", "1"]],
-                                      settings={"cmc_arcsec": 0, "ac_roll": 0}))
+    said = _said(_project(), _project(
+        rows=[["-20", "1", "2"], ["-19", "3", "5"], ["-18", "1", "1"]],
+        settings={"cmc_arcsec": 0, "ac_roll": 0}))
     assert said == ["readings changed from those of AB-1: row(s) 2–3 (2 rows there, 3 here)",
                     "analysis settings changed from those of AB-1: cmc_arcsec 0.5 → 0"]
     # a key one side's version did not write is a change only where it sets something
