@@ -2739,16 +2739,34 @@ class Register:
         return body
 
     def list(self, search: str = "", limit: int = 10_000) -> list[CertificateRecord]:
-        """Newest first; ``search`` matches the number, the serial or the customer (any case)."""
+        """Newest first; ``search`` matches the number, the serial or the customer (any case),
+        as typed or as it prints: a customer "Аcme Optics" with a Cyrillic "А", or a serial
+        LRA-0980 searched as "LRA-098O", is found (hostile78 S1: the register takes serials
+        that print alike as one item, its search did not, and a look-alike letter hid a
+        customer's certificates from it)."""
+        from models.register.identifiers import printed_search_keys
+
         sa, certificates = self._sa, self._schema.CERTIFICATES
         query = sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS))
-        if search.strip():
-            pattern = f"%{search.strip().lower()}%"
-            query = query.where(sa.or_(*(sa.func.lower(certificates.c[c]).like(pattern)
-                                         for c in ("number", "item_serial", "customer"))))
-        query = query.order_by(certificates.c.id.desc()).limit(limit)
+        query = query.order_by(certificates.c.id.desc())
+        wanted = search.strip()
+        if not wanted:
+            with self._read() as conn:
+                return [CertificateRecord(**row._asdict())
+                        for row in conn.execute(query.limit(limit))]
+        typed = wanted.lower()
+        keys = printed_search_keys(wanted)
+        out = []
         with self._read() as conn:
-            return [CertificateRecord(**row._asdict()) for row in conn.execute(query)]
+            for row in conn.execute(query):
+                fields = [row.number or "", row.item_serial or "", row.customer or ""]
+                if any(typed in f.lower() for f in fields) or any(
+                        key in field_key for f in fields
+                        for field_key in printed_search_keys(f) for key in keys):
+                    out.append(CertificateRecord(**row._asdict()))
+                    if len(out) >= limit:
+                        break
+        return out
 
     # (``builtins.list``: in this class ``list`` is the method above)
     def verify_all(self, pdf: bytes) -> builtins.list[CertificateRecord]:

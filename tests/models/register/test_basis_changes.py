@@ -60,3 +60,4 @@ def test_readings_and_settings_are_said_by_row_and_by_key():
 
 def test_an_original_recorded_without_a_project_state_gives_nothing_to_compare():
     assert _said("", _project()) == [] and _said("not json", _project()) == []
+
