@@ -189,3 +189,21 @@ def test_a_standard_citing_a_withdrawn_certificate_of_this_register_is_refused(
     meta["standards"][0]["serial"] = "Q-77"
     (tmp_path / "p.json").write_text(json.dumps(meta), encoding="utf-8")
     assert main([*args, str(tmp_path / "q.pdf")]) == 0
+
+
+def test_the_window_gives_its_readers_its_register(window, monkeypatch):
+    """The polygon workbench's *Load polygon certificate…* and the details dialog's *Read
+    from DCC…* check against the window's register (File › Certificate register)."""
+    import app.certificate_dialogs as dialogs
+
+    assert window.presenter("polygon").dcc_register_url() == window.certificates.register_url()
+    made = []
+
+    class Dialog(dialogs.CertificateDialog):
+        def exec(self):
+            made.append(self.dcc_register_url())
+            return 0
+
+    monkeypatch.setattr(dialogs, "CertificateDialog", Dialog)
+    window.certificates.view.edit_certificate_details(CertificateMetadata(), {}, {})
+    assert made == [window.certificates.register_url()]
