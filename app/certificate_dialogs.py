@@ -71,6 +71,8 @@ class CertificateDialogs:
         dialog.lab_timezone_set.connect(self.window.certificates.set_lab_timezone)
         dialog.set_dcc_options(*self.window.certificates.dcc_options())
         dialog.set_dcc_signing_paths(*self.window.certificates.dcc_signing_paths())
+        # a DCC of this lab's own read in only as issued and current (hostile78 F4)
+        dialog.dcc_register_url = self.window.certificates.register_url
         # what the certificate will say of where its readings came from (day review 67 F7)
         dialog.set_readings_line(getattr(self.window.certificates, "readings_line", ""))
         if problems:  # a stored detail that no longer reads: shown as stored, marked

@@ -26,6 +26,7 @@ from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
 from models.capture.take_cells import elevation_from_zenith_deg
+from models.certificate.capture_dated import dated_before_capture_past_due
 from models.certificate.metadata import NUMBER_FIELDS, CertificateMetadata
 from models.certificate.readings_origin import captured_rows, filled_rows, readings_origin
 from models.project.file import READINGS_SOURCE, Project, WorkbenchState, project_to_json
@@ -304,6 +305,11 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     register's record (so with the number and date of issue the register gave, and the
     PDF's and DCC's SHA-256), its SHA-256 recorded in the register (a chained entry:
     ``register verify`` checks it), then written to ``results_path``."""
+    # a date of calibration typed before the readings were captured, past a standard's due
+    # date, is refused (hostile78 F5: an expired standard read as in date)
+    backdated = dated_before_capture_past_due(metadata, raw_capture)
+    if backdated is not None:
+        raise ValueError(backdated)
     # where the readings came from, as the certificate names them: an amendment opened from
     # this record names the same (rev62 F4)
     project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},

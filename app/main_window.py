@@ -135,6 +135,8 @@ class MainWindow(QMainWindow):
         for presenter in self.presenters:  # a polygon read from its DCC joins the standards
             if hasattr(presenter, "dcc_schema_dir"):  # a DCC read is validated against it
                 presenter.dcc_schema_dir = self._dcc_schema_dir
+            if hasattr(presenter, "dcc_register_url"):  # the lab's own DCC checked against it
+                presenter.dcc_register_url = self.certificates.register_url
             if hasattr(presenter, "dcc_trusted_certificate"):  # its signature checked against it
                 presenter.dcc_trusted_certificate = (
                     lambda: self.certificates.dcc_signing_paths()[2])

@@ -32,8 +32,15 @@ def reference_rows(path: str, kind, rows: list[list[str]], settings: dict[str, A
     """The readings' rows with the DCC's deviations in place, the reference, and what to
     say (the column's other values replaced, the reader's notes). DccError / SigningError
     for a DCC refused."""
+    from models.dcc.reader import DccError
     from models.dcc.signature import signature_demanded, trusted_certificate
+    from models.register.location import register_url
+    from models.register.read_in import own_dcc_refusal_at
 
+    # this register's own DCC: as issued and current only (hostile78 F4)
+    refused = own_dcc_refusal_at(register_url(), path)
+    if refused is not None:
+        raise DccError(refused)
     columns = [c.key for c in kind.columns]
     faces = int(settings.get("faces") or 0) or None
     reference = read_polygon_dcc(path, schema_dir or None,

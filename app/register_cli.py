@@ -268,6 +268,12 @@ def _print_record(record, register, words) -> None:
     if record.change_note:
         lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(
             QT_TR_NOOP("change_note")), value=record.change_note))
+    # an original in place of a withdrawn certificate of its calibration (hostile78 F3)
+    for key in (QT_TR_NOOP("replaces_withdrawn"), QT_TR_NOOP("withdrawn_note")):
+        value = _detail(record, key)
+        if value:
+            lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(key),
+                                 value=value))
     lines.append(message(QT_TR_NOOP("  chain head before it (printed on it): {head}"),
                          head=register.chain_before(record.number)))
     lines.append(_digest_form_line(record))
@@ -601,6 +607,50 @@ def _results_elsewhere(entry: dict, folder: Path, indent: str = "") -> list:
     return said
 
 
+def _is_project(data: bytes) -> bool:
+    """Whether ``data`` is an AngleBench project file (its ``format``), not a results CSV."""
+    import json
+
+    from models.project.file import FORMAT_NAME
+
+    if not data.lstrip(b"\xef\xbb\xbf \t\r\n").startswith(b"{"):
+        return False
+    try:
+        parsed = json.loads(data.decode("utf-8-sig"))
+    except (UnicodeDecodeError, ValueError):
+        return False
+    return isinstance(parsed, dict) and parsed.get("format") == FORMAT_NAME
+
+
+def _verify_project(register, path: str, data: bytes, out) -> int:
+    """A project file given to verify (hostile78 V1: the register's own export of a project,
+    untouched, was "NOT in the register … altered" as a results file): the project recorded
+    with a certificate, byte for byte as `register show N --project` and `register export`
+    write it, is said to be that record's (its certificate's state as for a PDF); any other
+    project is no file the register issued, and is said to be a project (exit 1)."""
+    matched = [record for record in register.list()
+               if record.project_json.encode("utf-8") == data]
+    if not matched:
+        out(message(QT_TR_NOOP(
+            "{path}: an AngleBench project file, which is not the project recorded with any "
+            "certificate (changed since, or saved from the window): verify judges a "
+            "certificate's PDF, its DCC and its results file; the project recorded with a "
+            "certificate is written by anglebench register show N --project OUT.json"),
+            path=path))
+        return EXIT_NOT_ISSUED
+    record = matched[0]
+    out(message(QT_TR_NOOP(
+        "{path}: the project (readings, settings and details) recorded with certificate "
+        "{number}, byte for byte as the register holds it; a project is no document issued "
+        "to the customer"), path=path, number=record.number))
+    if record.superseded_by:
+        out(message(SUPERSEDED, path=path, number=record.number, by=record.superseded_by))
+    if record.status == "withdrawn":
+        out(message(WITHDRAWN, path=path, number=record.number,
+                    reason=record.withdrawn_reason or "—"))
+    return EXIT_VERIFIED  # 4 when superseded or withdrawn: said above, _verify counts it
+
+
 def _verify_results(register, path: str, data: bytes, out) -> int:
     """A results file (CSV or XLSX): the certificate it was recorded with when issued, or
     1 when the register holds no results file with its SHA-256, when it is recorded under
@@ -618,6 +668,8 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
     elsewhere = [said for entry in records
                  if entry["file"] == os.path.basename(path) and entry["sha256"] != digest
                  for said in _results_elsewhere(entry, Path(path).parent)]
+    if not found and _is_project(data):  # hostile78 V1: called an altered results file
+        return _verify_project(register, path, data, out)
     if not found:
         out(message(QT_TR_NOOP(
             "{path}: NOT in the register (no results file written with an issued certificate "

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import datetime as dt
 import re
+from collections.abc import Callable
 from typing import Any
 
 from PySide6.QtCore import QT_TR_NOOP, QEvent, QSize, Qt, Signal
@@ -185,6 +186,8 @@ class CertificateDialog(QDialog):
         #: project even if the dialog is then cancelled (rev62day F15: the customer and item
         #: typed were lost)
         self.saved_details: CertificateMetadata | None = None
+        #: the register a DCC of this lab's own is checked against ("": none; hostile78 F4)
+        self.dcc_register_url: Callable[[], str] = lambda: ""
         self._setup_ui()
         self.set_metadata(metadata)
         self.timezone.setText(timezone)
@@ -502,6 +505,7 @@ class CertificateDialog(QDialog):
         said."""
         from models.dcc.reader import DccError, read_standard_dcc
         from models.dcc.signature import SigningError, signature_demanded, trusted_certificate
+        from models.register.read_in import own_dcc_refusal_at
 
         when = self.fields["calibration_date"].text().strip() if (
             "calibration_date" in self.fields) else ""
@@ -522,6 +526,11 @@ class CertificateDialog(QDialog):
             schema_dir = (schema_dir or os.environ.get("ANGLEBENCH_DCC_SCHEMA", "")
                           or self.dcc_schema.text()).strip()
             trust = self.dcc_signing["dcc_trusted_certificate"].text()
+            # this register's own DCC: read as issued, and while current (hostile78 F4)
+            url = self.dcc_register_url()
+            refused = own_dcc_refusal_at(url, path) if url else None
+            if refused is not None:
+                raise DccError(refused)
             found = read_standard_dcc(path, schema_dir or None, measurement_date=when,
                                       trusted_cert=trusted_certificate(trust),
                                       trust_named=signature_demanded(trust))

@@ -41,6 +41,7 @@ __all__ = [
     "readable_standards",
     "revision_statement",
     "separate_statement",
+    "withdrawn_statement",
 ]
 
 MAX_FIELD_CHARS = 200
@@ -391,6 +392,12 @@ class CertificateMetadata:
     # current certificate already reports (a calibration of its own, e.g. as left after an
     # adjustment): those certificates' numbers; ``change_note`` says why it is separate
     separate_from: str = ""
+    # set by the register on an original issued for an item and date of calibration whose
+    # certificate was withdrawn (hostile78 F3: a fail withdrawn and issued again as a pass,
+    # neither naming the other): those certificates' numbers, and ``withdrawn_note`` when
+    # and why each was withdrawn and what this one changes against it
+    replaces_withdrawn: str = ""
+    withdrawn_note: str = ""
     # the bundled example details (resources/samples/certificate_*.json): never recorded in
     # the user's register (the command line issues them into a register of their own)
     example: bool = False
@@ -435,7 +442,8 @@ class CertificateMetadata:
             elif f.name in cls._DATES:
                 values[f.name] = _date(raw, f.name)
             else:
-                values[f.name] = clean_text(raw, f.name, multiline=f.name in ("notes", "change_note"))
+                values[f.name] = clean_text(raw, f.name, multiline=f.name in ("notes", "change_note",
+                                                                   "withdrawn_note"))
         meta = cls(**values)
         if meta.language not in LANGUAGES:
             raise MetadataError(message(
@@ -642,6 +650,23 @@ def separate_statement(meta: CertificateMetadata) -> Any:
     return message(QT_TR_NOOP("A calibration of its own, separate from certificate {numbers} "
                               "of the same item and date of calibration, which stays valid: "
                               "{reason}"), numbers=meta.separate_from, reason=meta.change_note)
+
+
+def withdrawn_statement(meta: CertificateMetadata) -> Any:
+    """An original issued for the item and date of calibration of certificates withdrawn
+    (``meta.replaces_withdrawn``): it names them, when and why they were withdrawn and what
+    it changes against them (``meta.withdrawn_note``; ISO/IEC 17025 7.8.8.3: a new report
+    in place of another refers to it — hostile78 F3). The PDF prints it under the title,
+    the DCC states it (refType anglebench_inPlaceOfWithdrawn). "" for any other
+    certificate."""
+    if not meta.replaces_withdrawn:
+        return ""
+    if not meta.withdrawn_note:
+        return message(QT_TR_NOOP("Issued in place of withdrawn certificate(s) {numbers} of the "
+                                  "same item and date of calibration"),
+                       numbers=meta.replaces_withdrawn)
+    return message(QT_TR_NOOP("Issued in place of a withdrawn certificate of the same item and "
+                              "date of calibration: {note}"), note=meta.withdrawn_note)
 
 
 def revision_statement(meta: CertificateMetadata) -> Any:

@@ -82,6 +82,8 @@ REFTYPE_U_RAISED_TO_CMC = "anglebench_uncertaintyRaisedToCmc"
 #: a statement: an original issued as a calibration of its own, separate from certificates
 #: of the same item and date of calibration that stay valid (their numbers its references)
 REFTYPE_SEPARATE_CALIBRATION = "anglebench_separateCalibration"
+#: an original issued in place of withdrawn certificates of the same calibration
+REFTYPE_IN_PLACE_OF_WITHDRAWN = "anglebench_inPlaceOfWithdrawn"
 #: a statement: what an amendment or replacement changed of the certificate it supersedes,
 #: a confirmed corrected serial number or date of calibration first (ISO/IEC 17025 7.8.8.2;
 #: coreData/reportAmendedSubstituted names the certificate, and has no room for why)

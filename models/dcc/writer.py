@@ -24,7 +24,11 @@ from lxml import etree
 
 from models.certificate.document import CertificateDocument, Table
 from models.certificate.interval_note import interval_cells
-from models.certificate.metadata import revision_statement, separate_statement
+from models.certificate.metadata import (
+    revision_statement,
+    separate_statement,
+    withdrawn_statement,
+)
 from models.certificate.report_terms import report_translator
 from models.dcc import vocabulary as v
 from models.messages import QT_TR_NOOP, declared_text, message, rendered, translator
@@ -364,6 +368,21 @@ def _statements(b: _Builder, admin) -> None:
                         "valid; the declaration says why", separate)
         declaration = st.find(D + "declaration")
         for number in (n.strip() for n in doc.metadata.separate_from.split(",")):
+            if number:
+                reference = etree.Element(D + "reference")
+                reference.text = number
+                declaration.addprevious(reference)
+    withdrawn = withdrawn_statement(doc.metadata)
+    if withdrawn:
+        # an original in place of a withdrawn certificate of the same calibration (ISO/IEC
+        # 17025 7.8.8.3; hostile78 F3): each withdrawn one named as a reference
+        st = _statement(b, sts, v.REFTYPE_IN_PLACE_OF_WITHDRAWN,
+                        "an original issued in place of the withdrawn certificates of the same "
+                        "item and date of calibration named as its references; the declaration "
+                        "says when and why each was withdrawn and what this one changes",
+                        withdrawn)
+        declaration = st.find(D + "declaration")
+        for number in (n.strip() for n in doc.metadata.replaces_withdrawn.split(",")):
             if number:
                 reference = etree.Element(D + "reference")
                 reference.text = number

@@ -78,7 +78,8 @@ from models.register._identifier_tables import CONFUSABLES, DEFAULT_IGNORABLE
 __all__ = ["IdentifierError", "amendment_form_keys", "amendment_stems", "as_printed",
            "folded_identifier_key", "folded_serial_key", "identifier_key", "identifier_keys",
            "lookalike_character_class", "lookalike_serial_key", "no_serial",
-           "normalise_identifier", "reads_as_amendment", "reads_as_amendment_of",
+           "normalise_identifier", "printed_search_keys", "reads_as_amendment",
+           "reads_as_amendment_of",
            "refuse_unprinted", "same_identifier", "same_name",
            "same_serial", "serial_key", "serial_keys", "serial_lookalike"]
 
@@ -346,6 +347,16 @@ def identifier_keys(text: str) -> tuple[str, str, str, str, str]:
     skeleton, folded, skeleton_folded, prototypes, fifth = _case_kept_and_folded(text)
     return (_number_key(skeleton), _number_key(folded), _number_key(skeleton_folded),
             _number_key(prototypes), _number_key(fifth))
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def printed_search_keys(text: str) -> frozenset[str]:
+    """What a search compares by besides the text as typed: the skeleton case folded of the
+    text, of its capitals and of its small letters (so "lra" finds "LRA" as "LRA-098O" finds
+    LRA-0980 and "Acme" finds "Аcme" with a Cyrillic "А"); separators and zeros kept, so a
+    part of a number or a name is found as a part (Register.list)."""
+    return frozenset(_fold(_rn_as_m(_skeleton(t))) for t in {text, text.upper(), text.lower()}
+                     if t)
 
 
 def same_identifier(one: str, other: str) -> bool:

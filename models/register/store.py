@@ -42,6 +42,7 @@ from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
 from models.messages import QT_TR_NOOP, Message, listed, message, reason_of, separated
 from models.project.output_guard import TURN_FILE_SUFFIX
+from models.register.basis_changes import basis_changes, same_readings
 from models.register.chain import (
     CHAINED,
     CHAINED_V2,
@@ -83,6 +84,16 @@ class SameCalibrationIssued(RegisterError):
     reports (``numbers``): a corrected one is its amendment or replacement, a calibration of
     its own is issued as separate, saying why (ISO/IEC 17025 7.8.8: no second original of one
     calibration — a reading changed and issued again gave two, neither naming the other)."""
+
+    def __init__(self, text, numbers: tuple[str, ...]) -> None:
+        super().__init__(text)
+        self.numbers = numbers
+
+
+class NotASeparateCalibration(RegisterError):
+    """An original issued as a calibration of its own beside current certificates of the
+    same item and date (``numbers``) whose readings are its own: the same readings with
+    other details are a correction, its amendment or replacement (hostile78 F2)."""
 
     def __init__(self, text, numbers: tuple[str, ...]) -> None:
         super().__init__(text)
@@ -475,7 +486,7 @@ class Register:
             if self.read_only and journal.exists() and journal.stat().st_size > 0:
                 raise RegisterError(self._unread_journal()) from None
             if self._full(exc):  # reg72 #7: on opening, its WAL index could not be made
-                raise RegisterError(self._disk_full()) from None
+                raise RegisterError(self._disk_full(reading=True)) from None
             damaged = self._damaged(exc)
             if damaged is not None:
                 raise RegisterError(damaged) from None
@@ -672,7 +683,7 @@ class Register:
                 yield conn
         except self._sa.exc.SQLAlchemyError as exc:
             if self._full(exc):  # a new connection's WAL index could not be made (reg72 #7)
-                raise RegisterError(self._disk_full()) from None
+                raise RegisterError(self._disk_full(reading=True)) from None
             raise RegisterError(self._damaged(exc) or message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
                 display_url=self.display_url, reason=_reason(exc))) from None
@@ -775,12 +786,20 @@ class Register:
         with contextlib.suppress(Exception):  # a view that cannot show it stops no issue
             self.on_wait(said)
 
-    def _disk_full(self, path: str | None = None) -> Message:
+    def _disk_full(self, path: str | None = None, reading: bool = False) -> Message:
         """What a write that found the disk full says: where (the file the system named, or
         the register's file; a server's register by its URL), and that the transaction was
         rolled back: nothing recorded, the register as it was (it said "[Errno 28] No space
-        left on device", stop 63)."""
+        left on device", stop 63). ``reading``: the register was being opened or read (a
+        connection whose journal index could not be made), which any command does, `list`
+        and `verify` too: said without a recording that none of them attempted (hostile77
+        L1: "nothing was recorded" for a command that only reads)."""
         where = str(path or self._sqlite_path or self.display_url)
+        if reading:
+            return message(QT_TR_NOOP(
+                "the disk is full at {path}: the register cannot be opened there (SQLite needs "
+                "room beside it for its journal's index); it was not changed (free some space "
+                "and try again)"), path=where)
         return message(QT_TR_NOOP(
             "the disk is full at {path}: nothing was recorded; the register is unchanged "
             "(free some space and try again)"), path=where)
@@ -1302,6 +1321,24 @@ class Register:
                                       confirmed_date)
                     same = () if supersedes or separate_calibration is None else \
                         self._same_calibration(conn, request.workbench, meta)
+                    # a calibration of its own has readings of its own: the same readings
+                    # judged otherwise are a correction (hostile78 F2: the same readings,
+                    # ±3″ for ±1″, issued "separate" read "pass")
+                    repeated = self._judged_again(conn, same, request, meta)
+                    # a standard whose certificate is one of this register's, withdrawn or
+                    # superseded, calibrates nothing (hostile78 F6)
+                    void = self._void_standards(conn, meta)
+                    # and what one with readings of its own changes against them is said
+                    # beside why it is separate (one reading of 41 edited, "as left")
+                    against = tuple(
+                        c for n in same for c in basis_changes(
+                            self._get(conn, n).project_json,
+                            _with_metadata(request.project_json, request.workbench, meta),
+                            request.workbench, n)) if separate_calibration else ()
+                    # an original of the calibration of a withdrawn certificate names it, and
+                    # what it changes (hostile78 F3: a fail withdrawn, then a pass issued)
+                    withdrawn = () if supersedes or separate_calibration is None else \
+                        self._in_place_of_withdrawn(conn, request, meta)
                     # an amendment's corrected maker is confirmed and stated on it
                     # (_corrections); an original naming another maker is asked (rev65 F1)
                     others = () if supersedes or separate_calibration is None else \
@@ -1314,6 +1351,14 @@ class Register:
                         self._serial_left_out(conn, request.workbench, meta)
                     corrected = () if plan.original is None else self._corrections(
                         conn, plan.original, request.workbench, meta, correction_confirmed)
+                    if plan.original is not None:
+                        # what decides the result, changed, is said too: the tolerance, the
+                        # rule, the readings … (hostile78 F1: a "conditional pass" amended to
+                        # "pass" read "Changed: typo in the address")
+                        corrected = (*corrected, *basis_changes(
+                            plan.original.project_json,
+                            _with_metadata(request.project_json, request.workbench, meta),
+                            request.workbench, plan.original.number))
                     # an amendment or replacement that corrects the item is asked as an
                     # original is, its own certificates aside (stop 67: one corrected to
                     # "1ra-0815" made a second current certificate of LRA-0815's calibration)
@@ -1333,6 +1378,21 @@ class Register:
                         numbers=", ".join(same), serial=meta.item_serial or "—",
                         date=meta.calibration_date or "—"),
                         same)
+                if void:
+                    raise RegisterError(separated(void, " "))
+                if same and separate and repeated:
+                    numbers = ", ".join(n for n, _ in repeated)
+                    raise NotASeparateCalibration(message(QT_TR_NOOP(
+                        "the readings are those of {numbers} (serial {serial}, calibrated "
+                        "{date}), judged otherwise: {changes}. That is no calibration of its "
+                        "own, which has readings of its own (e.g. as left after an "
+                        "adjustment): it is a correction of {numbers}, its amendment or "
+                        "replacement (File › Certificate register, Amend… or Replace…), which "
+                        "states what changed (ISO/IEC 17025 7.8.8)"),
+                        numbers=numbers, serial=meta.item_serial or "—",
+                        date=meta.calibration_date or "—",
+                        changes=separated([c for _, said in repeated for c in said])),
+                        tuple(n for n, _ in repeated))
                 if others and not another_makers_item:
                     raise _another_makers_item(meta, others)
                 if lookalikes and not another_lookalike_item:
@@ -1345,9 +1405,11 @@ class Register:
                     created=now.isoformat(),
                     supersedes=original.number if original else "",
                     revision="" if plan.revision == "original" else plan.revision,
-                    change_note=separate if same else
-                    separated([*corrected, change_note]) if corrected else change_note,
-                    separate_from=", ".join(same))
+                    change_note=_bounded(separated([separate, *against])) if same else
+                    _bounded(separated([*corrected, change_note])) if corrected else change_note,
+                    separate_from=", ".join(same),
+                    replaces_withdrawn=", ".join(n for n, _ in withdrawn),
+                    withdrawn_note=_bounded(separated([said for _, said in withdrawn])))
                 record = CertificateRecord(
                     number=plan.number,
                     issued_at=now.isoformat(),
@@ -1501,18 +1563,101 @@ class Register:
         with self._read() as conn:
             return self._same_calibration(conn, workbench, meta)
 
-    def _current_of_the_day(self, workbench: str, meta: CertificateMetadata):
+    def _current_of_the_day(self, workbench: str, meta: CertificateMetadata,
+                            status: str = "issued"):
         """The query of the current certificates (issued, not superseded or withdrawn) of
         ``workbench`` and the date of calibration of ``meta``: their number and item (the
         one-calibration check and its another-maker and serial-left-out questions)."""
         c = self._schema.CERTIFICATES.c
         return self._sa.select(c.number, c.item_serial, c.item_description,
                                c.item_manufacturer).where(
-            c.workbench == workbench, c.status == "issued",
+            c.workbench == workbench, c.status == status,
             c.calibration_date == meta.calibration_date)
 
-    def _same_calibration(self, conn, workbench: str, meta: CertificateMetadata
-                          ) -> tuple[str, ...]:
+    def _void_standards(self, conn, meta: CertificateMetadata) -> builtins.list[Any]:
+        """Why each reference standard of ``meta`` whose certificate is one of this
+        register's — its number, for that certificate's item (the standard's serial, where
+        it lists one) — cannot be cited: that certificate was withdrawn or superseded
+        (hostile78 F6: a polygon's withdrawn certificate typed as its calibration)."""
+        from models.register.identifiers import same_serial
+
+        out = []
+        for standard in meta.standards:
+            number = (standard.certificate_no or "").strip()
+            if not number:
+                continue
+            try:
+                record = self._get(conn, number)
+            except RegisterError:
+                continue
+            if standard.serial and not same_serial(standard.serial, record.item_serial):
+                continue  # another laboratory's certificate numbered alike
+            name = standard.description or standard.serial or number
+            if record.status == "withdrawn":
+                out.append(message(QT_TR_NOOP(
+                    "the reference standard {standard} cites certificate {number}, which this "
+                    "register withdrew ({reason}): a withdrawn certificate calibrates nothing; "
+                    "cite the standard's valid certificate"), standard=name,
+                    number=record.number, reason=record.withdrawn_reason or "—"))
+            elif record.status == "superseded":
+                out.append(message(QT_TR_NOOP(
+                    "the reference standard {standard} cites certificate {number}, which was "
+                    "superseded by {by}: cite {by}, with its figures"), standard=name,
+                    number=record.number, by=record.superseded_by or "—"))
+        return out
+
+    def _judged_again(self, conn, same: tuple[str, ...], request: IssueRequest,
+                      meta: CertificateMetadata) -> tuple[tuple[str, tuple], ...]:
+        """Of the current certificates ``same`` of this calibration, those whose readings
+        ``request`` holds too, as typed, and judges otherwise (another tolerance, rule,
+        standard or setting): each with what it changes (hostile78 F2)."""
+        project = _with_metadata(request.project_json, request.workbench, meta)
+        out = []
+        for number in same:
+            record = self._get(conn, number)
+            if not same_readings(record.project_json, project, request.workbench):
+                continue
+            changes = basis_changes(record.project_json, project, request.workbench, number)
+            if changes:
+                out.append((number, changes))
+        return tuple(out)
+
+    def _in_place_of_withdrawn(self, conn, request: IssueRequest, meta: CertificateMetadata
+                               ) -> tuple[tuple[str, Any], ...]:
+        """The withdrawn certificates of the item and date of calibration of ``meta`` on
+        ``request``'s workbench, each with what to say of it: when and why it was withdrawn,
+        and what this certificate changes of what decides the result against it
+        (:func:`models.register.basis_changes.basis_changes`)."""
+        out = []
+        project = _with_metadata(request.project_json, request.workbench, meta)
+        for number in self._same_calibration(conn, request.workbench, meta, "withdrawn"):
+            record = self._get(conn, number)
+            when = self._withdrawn_on(conn, number)
+            changes = basis_changes(record.project_json, project, request.workbench, number)
+            if _printed(record.customer) != _printed(meta.customer_name):  # whose it is
+                changes = (message(QT_TR_NOOP(
+                    "customer changed from {old} (on {number}) to {new}"),
+                    old=_printed(record.customer) or "—", number=number,
+                    new=_printed(meta.customer_name) or "—"), *changes)
+            said = message(QT_TR_NOOP("{number} withdrawn {date} ({reason})"), number=number,
+                           date=when or "—", reason=record.withdrawn_reason or "—")
+            if changes:
+                said = message(QT_TR_NOOP("{withdrawn}; changed: {changes}"), withdrawn=said,
+                               changes=separated(changes))
+            out.append((number, said))
+        return tuple(out)
+
+    def _withdrawn_on(self, conn, number: str) -> str:
+        """The date (UTC, as recorded) of ``number``'s withdrawal entry; "" when the register
+        holds none (a withdrawal of an older register)."""
+        entries = self._schema.ENTRIES
+        row = conn.execute(self._sa.select(entries.c.recorded_at).where(
+            entries.c.kind == "withdrawal", entries.c.subject == number).order_by(
+            entries.c.seq.desc())).first()
+        return str(row.recorded_at)[:10] if row is not None and row.recorded_at else ""
+
+    def _same_calibration(self, conn, workbench: str, meta: CertificateMetadata,
+                          status: str = "issued") -> tuple[str, ...]:
         """The current certificates (issued, not superseded or withdrawn) of ``workbench``
         reporting the item and date of calibration of ``meta``: a serial number that prints
         alike or differs by case, separators aside (same_serial), of a manufacturer that
@@ -1525,7 +1670,7 @@ class Register:
         from models.register.identifiers import no_serial, same_identifier, same_serial
 
         c = self._schema.CERTIFICATES.c
-        query = self._current_of_the_day(workbench, meta)
+        query = self._current_of_the_day(workbench, meta, status)
         if no_serial(meta.item_serial):
             return tuple(row.number for row in conn.execute(query.order_by(c.id))
                          if no_serial(row.item_serial) and same_identifier(
@@ -2594,16 +2739,34 @@ class Register:
         return body
 
     def list(self, search: str = "", limit: int = 10_000) -> list[CertificateRecord]:
-        """Newest first; ``search`` matches the number, the serial or the customer (any case)."""
+        """Newest first; ``search`` matches the number, the serial or the customer (any case),
+        as typed or as it prints: a customer "Аcme Optics" with a Cyrillic "А", or a serial
+        LRA-0980 searched as "LRA-098O", is found (hostile78 S1: the register takes serials
+        that print alike as one item, its search did not, and a look-alike letter hid a
+        customer's certificates from it)."""
+        from models.register.identifiers import printed_search_keys
+
         sa, certificates = self._sa, self._schema.CERTIFICATES
         query = sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS))
-        if search.strip():
-            pattern = f"%{search.strip().lower()}%"
-            query = query.where(sa.or_(*(sa.func.lower(certificates.c[c]).like(pattern)
-                                         for c in ("number", "item_serial", "customer"))))
-        query = query.order_by(certificates.c.id.desc()).limit(limit)
+        query = query.order_by(certificates.c.id.desc())
+        wanted = search.strip()
+        if not wanted:
+            with self._read() as conn:
+                return [CertificateRecord(**row._asdict())
+                        for row in conn.execute(query.limit(limit))]
+        typed = wanted.lower()
+        keys = printed_search_keys(wanted)
+        out = []
         with self._read() as conn:
-            return [CertificateRecord(**row._asdict()) for row in conn.execute(query)]
+            for row in conn.execute(query):
+                fields = [row.number or "", row.item_serial or "", row.customer or ""]
+                if any(typed in f.lower() for f in fields) or any(
+                        key in field_key for f in fields
+                        for field_key in printed_search_keys(f) for key in keys):
+                    out.append(CertificateRecord(**row._asdict()))
+                    if len(out) >= limit:
+                        break
+        return out
 
     # (``builtins.list``: in this class ``list`` is the method above)
     def verify_all(self, pdf: bytes) -> builtins.list[CertificateRecord]:
@@ -3290,6 +3453,18 @@ def _amendment_count(conn, register: Register, record: CertificateRecord) -> int
         certificates.c.revision.like("amendment%"))).all()
     return max((int(m.group(1)) for row in rows if (m := form.fullmatch(row.number))),
                default=0)
+
+
+def _bounded(note: Any) -> Any:
+    """A note stated on a certificate, within what its details hold (MAX_NOTES_CHARS: the
+    project recorded with it must read again); longer, the changes are named, not listed
+    (the register's record of each certificate holds its readings and details)."""
+    from models.certificate.metadata import MAX_NOTES_CHARS
+
+    if len(str(note)) <= MAX_NOTES_CHARS:
+        return note
+    return str(note)[:MAX_NOTES_CHARS - 80].rsplit(";", 1)[0] + "; " + str(message(QT_TR_NOOP(
+        "and more: see the register's records")))
 
 
 def _with_metadata(project_json: str, workbench: str, meta: CertificateMetadata) -> str:

@@ -34,6 +34,8 @@ class PolygonPresenter(WorkbenchPresenter):
         self.dcc_schema_dir: Callable[[], str] = lambda: ""
         #: the lab's trusted certificate for a DCC's signature (a path; "": the environment's)
         self.dcc_trusted_certificate: Callable[[], str] = lambda: ""
+        # the register a DCC of this lab's own is checked against ("": none; hostile78 F4)
+        self.dcc_register_url: Callable[[], str] = lambda: ""
         #: what the last certificate loaded said beside its values (a DCC's notes, the
         #: deviation column's values replaced)
         self.certificate_notes: list[str] = []
@@ -78,12 +80,18 @@ class PolygonPresenter(WorkbenchPresenter):
                                      str(path))
 
     def _load_dcc(self, path: str) -> int:
-        from models.dcc.reader import read_polygon_dcc
+        from models.dcc.reader import DccError, read_polygon_dcc
         from models.dcc.signature import signature_demanded, trusted_certificate
+        from models.register.read_in import own_dcc_refusal_at
 
         details = self.certificate_details()
         when = getattr(details, "calibration_date", "") or dt.date.today().isoformat()
         faces = int(self.settings.get("faces") or 0) or max(self._positions()) or None
+        # this register's own DCC: read as issued, and while current (hostile78 F4)
+        refused = own_dcc_refusal_at(self.dcc_register_url(), path) \
+            if self.dcc_register_url() else None
+        if refused is not None:
+            raise DccError(refused)
         reference = read_polygon_dcc(path, self.dcc_schema_dir() or None, measurement_date=when,
                                      faces=faces,
                                      trusted_cert=trusted_certificate(self.dcc_trusted_certificate()),

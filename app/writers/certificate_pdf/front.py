@@ -11,7 +11,12 @@ from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.fonts import FONT
 from app.writers.certificate_pdf.wording import _between, _colon, _in_both, _listed, label
 from models.certificate.document import CertificateDocument
-from models.certificate.metadata import PLACES, revision_statement, separate_statement
+from models.certificate.metadata import (
+    PLACES,
+    revision_statement,
+    separate_statement,
+    withdrawn_statement,
+)
 from models.messages import QT_TR_NOOP, joined, message
 from models.uncertainty.printed_figure import tolerance_figure
 
@@ -40,6 +45,8 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
         pdf.paragraph(revision_statement(meta), 9.5, (20, 60, 140))
     elif meta.separate_from:
         pdf.paragraph(separate_statement(meta), 9.5, (20, 60, 140))
+    if meta.replaces_withdrawn:  # a withdrawn certificate of this calibration (hostile78 F3)
+        pdf.paragraph(withdrawn_statement(meta), 9.5, (20, 60, 140))
     pdf.ln(1)
     pdf.key_values([
         (label(document, "Certificate number", "\n"), meta.certificate_number),

@@ -115,7 +115,8 @@ def test_sqlites_io_error_on_a_full_disk_is_said_as_a_full_disk(monkeypatch, fre
 
 
 @pytest.mark.parametrize(("free", "said"), [
-    (0, "the disk is full at {path}: nothing was recorded; the register is unchanged"),
+    (0, "the disk is full at {path}: the register cannot be opened there (SQLite needs room "
+        "beside it for its journal's index); it was not changed"),
     (10 << 30, "disk I/O error")])
 def test_sqlites_io_error_on_connecting_to_a_full_disk_is_said_as_a_full_disk(
         monkeypatch, capsys, free, said):
@@ -152,3 +153,36 @@ def test_sqlites_io_error_on_connecting_to_a_full_disk_is_said_as_a_full_disk(
     monkeypatch.undo()
     with Register(url) as register:
         assert [(r.number, r.status) for r in register.list()] == [(number, "issued")]
+
+
+@pytest.mark.parametrize("command", [["list"], ["verify"], ["show", "{number}"]])
+def test_a_command_that_only_reads_a_register_on_a_full_disk_records_nothing_unsaid(
+        monkeypatch, capsys, command):
+    """hostile77 L1: `register list` and `verify` with the register's disk full said
+    "nothing was recorded; the register is unchanged", of a command that records nothing:
+    the register cannot be opened there, and it was not changed."""
+    import shutil
+    import sqlite3
+    from collections import namedtuple
+
+    import models.register.store as store
+
+    url = register_url()
+    with Register(url) as register:
+        number = _issued(register)[0]
+    path = url.split("///", 1)[1]
+
+    def no_wal_index(dbapi_connection, _record) -> None:
+        error = sqlite3.OperationalError("disk I/O error")
+        error.sqlite_errorname = "SQLITE_IOERR_SHMSIZE"
+        raise error
+
+    usage = namedtuple("usage", "total used free")
+    monkeypatch.setattr(store, "_sqlite_connect", no_wal_index)
+    monkeypatch.setattr(shutil, "disk_usage", lambda _path: usage(1 << 30, 1 << 30, 0))
+    capsys.readouterr()
+    assert main(["register", "--register", path,
+                 *(c.format(number=number) for c in command)]) == 2
+    err = capsys.readouterr().err
+    assert f"the disk is full at {path}: the register cannot be opened there" in err
+    assert "nothing was recorded" not in err
