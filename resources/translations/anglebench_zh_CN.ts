@@ -3113,6 +3113,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>证书信息必须是 JSON 对象</translation>
     </message>
     <message>
+        <source>Issued in place of withdrawn certificate(s) {numbers} of the same item and date of calibration</source>
+        <translation>代替同一被校件、同一校准日期的已撤回证书 {numbers} 签发</translation>
+    </message>
+    <message>
+        <source>Issued in place of a withdrawn certificate of the same item and date of calibration: {note}</source>
+        <translation>代替同一被校件、同一校准日期的已撤回证书签发：{note}</translation>
+    </message>
+    <message>
         <source>certificate field &apos;standards&apos; must be a list</source>
         <translation>证书字段 &apos;standards&apos; 必须是列表</translation>
     </message>
@@ -3432,6 +3440,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>更改说明</translation>
     </message>
     <message>
+        <source>replaces_withdrawn</source>
+        <translation>代替已撤回证书</translation>
+    </message>
+    <message>
+        <source>withdrawn_note</source>
+        <translation>撤回说明</translation>
+    </message>
+    <message>
         <source>  chain head before it (printed on it): {head}</source>
         <translation>  其前的链头（印在证书上）：{head}</translation>
     </message>
@@ -3668,6 +3684,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{indent}the results file recorded with certificate {number} is {path} (SHA-256 as recorded): give it a name of its own</source>
         <translation>{indent}随证书 {number} 登记的结果文件是 {path}（SHA-256 与登记的相同）：请给它一个自己的名称</translation>
+    </message>
+    <message>
+        <source>{path}: an AngleBench project file, which is not the project recorded with any certificate (changed since, or saved from the window): verify judges a certificate&apos;s PDF, its DCC and its results file; the project recorded with a certificate is written by anglebench register show N --project OUT.json</source>
+        <translation>{path}：AngleBench 项目文件，不是与任何证书一同登记的项目（此后改动过，或从窗口另存）：verify 判断的是证书的 PDF、DCC 和结果文件；与证书一同登记的项目可用 anglebench register show N --project OUT.json 写出</translation>
+    </message>
+    <message>
+        <source>{path}: the project (readings, settings and details) recorded with certificate {number}, byte for byte as the register holds it; a project is no document issued to the customer</source>
+        <translation>{path}：与证书 {number} 一同登记的项目（读数、设置和证书信息），与登记册所存逐字节相同；项目不是签发给客户的文件</translation>
     </message>
     <message>
         <source>{path}: NOT in the register (no results file written with an issued certificate has its SHA-256: altered, written without issuing one, or from another register)</source>
@@ -4180,7 +4204,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>allocated by the register on export</source>
-        <extracomment>the details as they were when *Save as lab defaults* was pressed: kept with the project even if the dialog is then cancelled (rev62day F15: the customer and item typed were lost)</extracomment>
+        <extracomment>the details as they were when *Save as lab defaults* was pressed: kept with the project even if the dialog is then cancelled (rev62day F15: the customer and item typed were lost) the register a DCC of this lab&apos;s own is checked against (&quot;&quot;: none; hostile78 F4)</extracomment>
         <translation>导出时由登记册分配</translation>
     </message>
     <message>
@@ -6724,6 +6748,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>half the peak-to-peak error after the best zero: the measured half range less the median excess of a measured range over the true one, with a coverage interval from that excess, the noise simulated from the budget (JCGM 101): the lower end on the least favourable curve the data allow (Romano, Shaikh &amp; Wolf 2014), the median and the upper end on the measured curve (parametric bootstrap, Efron &amp; Tibshirani 1993)</source>
+        <extracomment>each verdict as the statement of conformity words it, by the certificate&apos;s language: in Chinese 合格, 有条件合格 … (JJF 1059.1), not the catalogue&apos;s 通过 of a check passed, the validation report&apos;s &quot;pass&quot;. The XLSX&apos;s *Verdict* row (assessment 72 L1) and the window&apos;s verdict line (assessment 78 M1: 符合性：通过 beside the certificate&apos;s 合格) say them so.</extracomment>
         <translation>最佳零位下误差峰峰值的一半：实测半峰峰值减去实测极差超出真实极差之量的中位数，其包含区间由该超出量给出，噪声按不确定度预算仿真（JCGM 101）：下端取数据所允许的最不利曲线（Romano、Shaikh 与 Wolf 2014），中位数与上端取实测曲线（参数自助法，Efron 与 Tibshirani 1993）</translation>
     </message>
     <message>
@@ -7566,6 +7591,34 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>登记册 {display_url}：文件为空（0 字节），而登记册自创建之时起即含有其数据表：其记录已丢失（文件被清空或截断：崩溃、磁盘故障或某条命令覆盖了它）；不从中读取、也不向其签发任何内容，否则已签发的编号会再次签发：请从备份恢复登记册，然后用 &apos;anglebench register acknowledge-loss&apos; 记录此次丢失；如果从未向其签发过任何证书，请删除该文件</translation>
     </message>
     <message>
+        <source>the disk is full at {path}: the register cannot be opened there (SQLite needs room beside it for its journal&apos;s index); it was not changed (free some space and try again)</source>
+        <translation>{path} 所在磁盘已满：无法在那里打开登记册（SQLite 需要在其旁边为日志索引留出空间）；登记册未被改动（请释放一些空间后重试）</translation>
+    </message>
+    <message>
+        <source>the readings are those of {numbers} (serial {serial}, calibrated {date}), judged otherwise: {changes}. That is no calibration of its own, which has readings of its own (e.g. as left after an adjustment): it is a correction of {numbers}, its amendment or replacement (File › Certificate register, Amend… or Replace…), which states what changed (ISO/IEC 17025 7.8.8)</source>
+        <translation>读数就是 {numbers}（序列号 {serial}，校准于 {date}）的读数，只是换了判定方式：{changes}。这不是一次独立的校准（独立的校准有它自己的读数，例如调整后的交付状态）：这是对 {numbers} 的更正，应为其修订或替代（文件 › 证书登记册，修订…或替代…），并写明改了什么（ISO/IEC 17025 7.8.8）</translation>
+    </message>
+    <message>
+        <source>the reference standard {standard} cites certificate {number}, which this register withdrew ({reason}): a withdrawn certificate calibrates nothing; cite the standard&apos;s valid certificate</source>
+        <translation>参考标准器 {standard} 引用了证书 {number}，本登记册已将其撤回（{reason}）：已撤回的证书不校准任何东西；请引用该标准器有效的证书</translation>
+    </message>
+    <message>
+        <source>the reference standard {standard} cites certificate {number}, which was superseded by {by}: cite {by}, with its figures</source>
+        <translation>参考标准器 {standard} 引用了证书 {number}，该证书已被 {by} 取代：请引用 {by} 及其数值</translation>
+    </message>
+    <message>
+        <source>customer changed from {old} (on {number}) to {new}</source>
+        <translation>客户由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
+        <source>{number} withdrawn {date} ({reason})</source>
+        <translation>{number} 于 {date} 撤回（{reason}）</translation>
+    </message>
+    <message>
+        <source>{withdrawn}; changed: {changes}</source>
+        <translation>{withdrawn}；更改：{changes}</translation>
+    </message>
+    <message>
         <source>{number} was issued on the {original} workbench: its amendment or replacement corrects that calibration and is issued on that workbench, not on {workbench} (ISO/IEC 17025 7.8.8); a calibration on another workbench is an original</source>
         <translation>{number} 在 {original} 工作台上签发：其修改或替代更正的是那一次校准，应在该工作台上签发，而不是在 {workbench} 上（ISO/IEC 17025 7.8.8）；在另一个工作台上的校准是原始证书</translation>
     </message>
@@ -7652,6 +7705,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>record {number}: it has no place in the hash chain (inserted after issue)</source>
         <translation>记录 {number}：它在哈希链中没有位置（签发后插入）</translation>
+    </message>
+    <message>
+        <source>and more: see the register&apos;s records</source>
+        <translation>等等：见登记册的记录</translation>
     </message>
     <message>
         <source>--confirm-date {date}: not a date YYYY-MM-DD</source>
@@ -12066,6 +12123,11 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>本结果的计量溯源性未建立：{gaps}</translation>
     </message>
     <message>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so ({listed}): none is listed for {missing}, as no role is stated for {unnamed} and only a standard whose role says so is taken as {missing} (one with no role may be another instrument&apos;s, such as the ADC&apos;s): state the role {role} of the one that is</source>
+        <extracomment>a role only a standard stating it carries, not filled by a standard of no role stated (:func:`traceability_gaps`&apos; ``roles_stated_only``): what is missing and the role to state</extracomment>
+        <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项（{listed}）：未列出{missing}：未说明“{unnamed}”的角色，而只有角色注明如此的计量标准才作为{missing}（未注明角色的可能是其他仪器的标准，例如 ADC 的）：请为是它的那一项注明角色 {role}</translation>
+    </message>
+    <message>
         <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; none of them is listed so</source>
         <translation>承载被测量的计量标准为{roles}，每一项都须列出其校准证书及给定的不确定度；目前一项也未如此列出</translation>
     </message>
@@ -13685,6 +13747,71 @@ Replace it?</source>
         <source>measured − target in the deviation unit, as the analysis takes it (shown, not typed: typing a deviation replaces it)</source>
         <extracomment>what the table says of a deviation it shows and no one typed (its tooltip)</extracomment>
         <translation>以偏差单位表示的“测量值 − 目标值”，即分析所采用的值（仅显示，未录入：录入偏差将替换它）</translation>
+    </message>
+    <message>
+        <source>the date of calibration {calibrated} is before the readings were taken: the instruments&apos; sessions behind the captured readings started on {first}, after the calibration of {standard} was due ({due}); dated so, a standard that had expired would read as in date. Type the date the readings were taken</source>
+        <translation>校准日期 {calibrated} 早于读数的采集时间：所采集读数的仪器会话开始于 {first}，晚于 {standard} 的校准到期日（{due}）；这样填写日期，已过期的标准器会被当作在有效期内。请填写读数采集的日期</translation>
+    </message>
+    <message>
+        <source>decision rule changed from {old} (on {number}) to {new}</source>
+        <extracomment>the details that decide a result, each with how its change is said</extracomment>
+        <translation>判定规则由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
+        <source>decided quantity changed from {old} (on {number}) to {new}</source>
+        <translation>判定量由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
+        <source>coverage probability changed from {old} % (on {number}) to {new} %</source>
+        <translation>包含概率由 {old} %（{number} 上）改为 {new} %</translation>
+    </message>
+    <message>
+        <source>grade / specification changed from {old} (on {number}) to {new}</source>
+        <translation>等级/技术要求由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
+        <source>document asked for changed from {old} (on {number}) to {new}</source>
+        <translation>所要求的文件由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
+        <source>laboratory changed from {old} (on {number}) to {new}</source>
+        <translation>实验室由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
+        <source>accreditation changed from {old} (on {number}) to {new}</source>
+        <translation>认可由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
+        <source>tolerance changed from {old} (on {number}) to {new}</source>
+        <translation>容差由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
+        <source>item&apos;s resolution changed from {old} (on {number}) to {new}</source>
+        <translation>被校件的分辨力由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
+        <source>reference standards changed from {old} (on {number}) to {new}</source>
+        <translation>参考标准器由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
+        <source>readings changed from those of {number}: row(s) {rows} ({old} rows there, {new} here)</source>
+        <translation>读数与 {number} 的不同：第 {rows} 行（那里 {old} 行，这里 {new} 行）</translation>
+    </message>
+    <message>
+        <source>analysis settings changed from those of {number}: {settings}</source>
+        <translation>分析设置与 {number} 的不同：{settings}</translation>
+    </message>
+    <message>
+        <source>{source} is a DCC of certificate {number}, which this register issued, but it is not the DCC it issued (its SHA-256 is no issued DCC&apos;s: altered since, or another certificate&apos;s PDF put inside): its figures are not the ones certified, so it is not read. Read the DCC as issued: anglebench register show {number} --dcc OUT.xml</source>
+        <translation>{source} 是本登记册签发的证书 {number} 的 DCC，但不是签发的那份（其 SHA-256 不是任何已签发 DCC 的：此后改动过，或放入了另一份证书的 PDF）：其数值不是经证书证明的数值，因此不读入。请读入按签发原样的 DCC：anglebench register show {number} --dcc OUT.xml</translation>
+    </message>
+    <message>
+        <source>{source} is the DCC of certificate {number}, which was withdrawn ({reason}): a withdrawn certificate calibrates nothing, so it is not read as a standard&apos;s certificate</source>
+        <translation>{source} 是证书 {number} 的 DCC，该证书已撤回（{reason}）：已撤回的证书不校准任何东西，因此不作为标准器的证书读入</translation>
+    </message>
+    <message>
+        <source>{source} is the DCC of certificate {number}, which was superseded by {by}: read the DCC of {by} (anglebench register show {by} --dcc OUT.xml)</source>
+        <translation>{source} 是证书 {number} 的 DCC，该证书已被 {by} 取代：请读入 {by} 的 DCC（anglebench register show {by} --dcc OUT.xml）</translation>
     </message>
 </context>
 </TS>

@@ -25,7 +25,6 @@ from models.certificate.metadata import CertificateMetadata
 from models.registry import KINDS
 from tests.app.writers.test_certificate_chinese import SYMBOLS, WORD
 from tests.app.writers.test_certificate_export import _analysed
-from tests.pending_zh import pending_catalogue
 
 pytestmark = pytest.mark.slow  # five analyses, fifteen workbooks
 
@@ -51,16 +50,14 @@ def _meta(key: str, language: str) -> CertificateMetadata:
 
 
 @pytest.fixture(scope="module", params=sorted(KINDS))
-def books(request, tmp_path_factory):
-    """A workbench's document and its results file in each language (the catalogue with the
-    texts still to be translated laid over it: tests/pending_zh.py)."""
+def books(request):
+    """A workbench's document and its results file in each language."""
     key = request.param
     kind, result = _analysed(key)
     out = {}
-    with pending_catalogue(tmp_path_factory.mktemp("translations")):
-        for language in ("en", "zh", "zh+en"):
-            document = kind.certificate_document(result, _meta(key, language), kind.sample_file)
-            out[language] = (document, load_workbook(io.BytesIO(results_xlsx_bytes(document))))
+    for language in ("en", "zh", "zh+en"):
+        document = kind.certificate_document(result, _meta(key, language), kind.sample_file)
+        out[language] = (document, load_workbook(io.BytesIO(results_xlsx_bytes(document))))
     return key, out
 
 
