@@ -63,6 +63,7 @@ import subprocess
 import sys
 import time
 from collections import deque
+from collections.abc import Mapping
 from datetime import datetime, timedelta
 from pathlib import Path
 
@@ -1987,7 +1988,8 @@ class CapturePanel(QDockWidget):
                 changes.append((row, column, cell_text(value, "deg", NOMINAL_RESOLUTION_ARCSEC,
                                                        dms, sheet.columns[column].unit)))
                 filled.add(column)
-        changes += self._from_reference(sheet, keys, row, changes, filled)
+        changes += self._from_reference(sheet, keys, row, changes, filled,
+                                         getattr(presenter, "face_deviations", {}))
         new_takes = []
         for link in self.links:
             got = taking.get(link.slot)
@@ -2173,9 +2175,12 @@ class CapturePanel(QDockWidget):
                 header.resizeSection(column, needed)
 
     @staticmethod
-    def _from_reference(sheet, keys, row, changes, filled) -> list[tuple[int, int, str]]:
+    def _from_reference(sheet, keys, row, changes, filled,
+                        loaded: Mapping[int, str] | None = None) -> list[tuple[int, int, str]]:
         """A polygon face's deviation (its certificate's, as sent or typed for that face in
-        another row) into the row the take fills, when its cell is blank."""
+        another row, else as the certificate ``loaded`` before the face had a row gives
+        it: PolygonPresenter.face_deviations) into the row the take fills, when its cell
+        is blank."""
         if "polygon_dev_arcsec" not in keys or "position" not in keys:
             return []
         dev, position = keys.index("polygon_dev_arcsec"), keys.index("position")
@@ -2191,4 +2196,6 @@ class CapturePanel(QDockWidget):
                  if r != row and sheet.text(r, position).strip() == face
                  and sheet.text(r, dev).strip()}
         # one deviation per face; two different ones are the technician's to settle
+        if not known and loaded and face.isdigit() and int(face) in loaded:
+            known = {loaded[int(face)]}
         return [(row, dev, known.pop())] if len(known) == 1 else []
