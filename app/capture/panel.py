@@ -871,6 +871,10 @@ class CapturePanel(QDockWidget):
         #: why a take was refused, or auto-take switched off (until the next take)
         self.take_note = _ShownWhenSaid("")
         self.take_note_of: str | None = None  # the workbench whose take it is of
+        #: the undo stack and its index just after the take the note speaks of (None: the
+        #: note is of no take): the take undone (Edit › Undo), its note goes with it
+        self.take_note_step: tuple[object, int] | None = None
+        self._watched_stacks: set[int] = set()
         self.take_note.setStyleSheet("color: #b00020;")
         self.take_note.setVisible(False)
         # wide enough to wrap by words (a bottom-docked panel at 200 % squeezed it to a few
@@ -1050,6 +1054,22 @@ class CapturePanel(QDockWidget):
         """No take note (what the last take could not place, or took off the plan)."""
         self.take_note.setText("")
         self.take_note_of = None
+        self.take_note_step = None
+
+    def _note_with_take(self, stack) -> None:
+        """The take note (set by the take just pushed onto ``stack``) goes when that take
+        is undone. live78: after Edit › Undo of a take at face 4's place (or at the next
+        target), "Row 3: encoder a 190.0000° is +60.0° from … The reading is kept; undo the
+        take if it is wrong" stayed in red over the emptied row until the next take."""
+        self.take_note_step = (stack, stack.index())
+        if id(stack) not in self._watched_stacks:
+            self._watched_stacks.add(id(stack))
+            stack.indexChanged.connect(lambda index, s=stack: self._stack_moved(s, index))
+
+    def _stack_moved(self, stack, index: int) -> None:
+        step = self.take_note_step
+        if step is not None and step[0] is stack and index < step[1]:
+            self.clear_take_note()
 
     def sheet_replaced(self, workbench: str) -> None:
         """``workbench``'s sheet was replaced (an import, a sample, a project opened or
@@ -2037,6 +2057,7 @@ class CapturePanel(QDockWidget):
             table.next_row(row)
         finally:
             model.undo_stack.endMacro()
+        self._note_with_take(model.undo_stack)
         self.update_guide()
         # a take is on disk at once, as `anglebench capture` syncs each reading to its
         # journal: it cannot be typed again, the instrument has moved on (hostile77 M2: a
