@@ -639,12 +639,17 @@ class WorkbenchPresenter(QObject):
     def _settings_shown_in_blank(self) -> None:
         """The figures blank cells show (positioning's deviation from the measured
         position: gui77, the deviation column stayed empty while a live run's measured
-        filled), worked out with the settings of now, and the table repainted."""
+        filled), worked out with the settings of now, and the table repainted; the units
+        the settings give columns in their headers."""
         keys = [c.key for c in self.kind.columns]
         self._shown_in_blank = {keys.index(key): shown for key, shown in
                                 self.kind.shown_in_blank(self._settings).items() if key in keys}
         self.table_model.shown_columns = tuple(sorted(self._shown_in_blank))
         self.table_model.shown_changed()
+        # … and the units the settings give columns, in their headers (live78)
+        self.table_model.set_header_units({
+            keys.index(key): unit for key, unit in self.kind.column_units(self._settings).items()
+            if key in keys})
 
     def _blank_cell_shown(self, r: int, c: int) -> tuple[str, str] | None:
         """The figure blank cell (r, c) shows and what to say of it (None: none)."""
