@@ -120,7 +120,7 @@ from models.capture.take_rows import UNDONE, session_takes, take_key
 from models.capture.wrong_target import off_target
 from models.readings.angles import parse_angle_deg
 from models.workbench import GuidesAcquisition
-from widgets.i18n import declared, live, on_language_change, tr, translated
+from widgets.i18n import declared, live, on_language_change, said_again, tr, translated
 from widgets.settings_form import ignore_unfocused_wheel
 
 __all__ = ["TAKE_READING_KEY", "CapturePanel", "ConnectDialog", "InstrumentLink"]
@@ -1688,7 +1688,10 @@ class CapturePanel(QDockWidget):
                                 if not link.last_fault else
                                 tr("Connected: {port} (reconnected after: {reason})").format(
                                     port=worker.port,
-                                    reason=_without_port(link.last_fault, worker.port)))
+                                    # in the language now (live78: "cannot open (timed
+                                    # out)" stayed English in the Chinese window)
+                                    reason=_without_port(str(said_again(link.last_fault)),
+                                                         worker.port)))
             if link.lost:
                 link.mark_lost(False)
             self._links_changed()
