@@ -1813,10 +1813,12 @@ class CapturePanel(QDockWidget):
             # a spread that is the axis moving (or drifting) is not a window too tight
             rate = steady_motion(times, recent)
             self._motion = None if rate is None else rate * scale
-            shown = "   ".join(f"{s * scale:.3f}" for s in spread)
-            # in the window's unit (arcseconds for an angle, else the readout's own)
+            # in the window's unit (arcseconds for an angle, else the readout's own), after
+            # each axis's figure (live78: "0.097   0.097\"" left the first without one)
+            unit = _unit_symbol(reading.unit)
+            shown = "   ".join(f"{s * scale:.3f}{unit}" for s in spread)
             self.stability.setText(tr("Spread over the last second: {spread}{unit}").format(
-                spread=shown, unit=_unit_symbol(reading.unit)))
+                spread=shown, unit=""))
         if now >= self._allan_due and len(self.frames) >= 16:
             self._allan_due = now + 1.0
             self._show_allan(degrees, scale)
