@@ -95,8 +95,9 @@ def test_a_narrower_block_over_the_sheet_is_said_and_a_wider_one_s_columns_too(q
                                 ["60", "1", "+", "0.9", ""]]
     qtbot.waitUntil(lambda: "measured" in presenter.view.last_status)
     said = presenter.view.last_status
-    assert said.startswith("Pasted into target, run, dir [+/−], deviation;")
-    assert "measured left empty" in said
+    # the headers as shown, with the set-up's units (live78)
+    assert said.startswith('Pasted into target [deg], run, dir [+/−], deviation ["];')
+    assert "measured [deg] left empty" in said
     _click(qtbot, table, 1, deviation)
     _select_all_and_paste(qtbot, table, "0\t1\t+\t0.5\t\tx\ty\n30\t1\t-\t0.7\t\tx\ty")
     assert _rows(presenter) == [["0", "1", "+", "0.5", ""], ["30", "1", "-", "0.7", ""]]
