@@ -133,6 +133,12 @@ class Workbench(ABC, Generic[ResultT]):
         default."""
         return {}
 
+    def column_units(self, settings: Mapping[str, Any]) -> Mapping[str, str]:
+        """{column key: its unit as ``settings`` make it}, for a column whose unit is a
+        setting (positioning's target, measured and deviation): shown in the readings
+        table's header as a column's own unit is. Empty by default."""
+        return {}
+
     def split_incomplete(self, parsed: ParsedReadings, settings: Mapping[str, Any]
                          ) -> tuple[ParsedReadings, IncompleteUnit | None]:
         """The readings of the complete units, and the last unit when it is in progress

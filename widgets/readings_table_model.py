@@ -106,6 +106,8 @@ class ReadingsTableModel(QAbstractTableModel):
         self.shown_in_blank: Callable[[int, int], tuple[str, str] | None] = lambda r, c: None
         #: the columns whose blank cells may show such a figure (repainted with every change)
         self.shown_columns: tuple[int, ...] = ()
+        #: {column index: unit} the settings give a column (its header shows it)
+        self.header_units: dict[int, str] = {}
         self._waiting_from: int | None = None  # the first of them (None: none)
         self._planned: int | None = None
         self._waiting_known = False
@@ -296,6 +298,11 @@ class ReadingsTableModel(QAbstractTableModel):
         if orientation == Qt.Orientation.Horizontal:
             column = self.sheet.columns[section]
             if role == Qt.ItemDataRole.DisplayRole:
+                unit = self.header_units.get(section)
+                if unit:  # a unit the settings give (Workbench.column_units)
+                    # degrees as the headers' own "[deg]" are in each language ("θ [°]")
+                    shown = tr("deg") if unit == "deg" else unit
+                    return f"{declared(column.title)} [{shown}]"
                 return declared(column.header)
             if role == Qt.ItemDataRole.ToolTipRole:
                 return f"{column.key}: {declared(column.help)}" if column.help else column.key
@@ -317,6 +324,15 @@ class ReadingsTableModel(QAbstractTableModel):
                 self.dataChanged.emit(self.index(0, 0), self.index(self.sheet.row_count - 1,
                                                                    self.sheet.column_count - 1),
                                       [Qt.ItemDataRole.BackgroundRole])
+
+    def set_header_units(self, units: dict[int, str]) -> None:
+        """The units the settings give some columns ({column index: unit}), in their
+        headers; the header repainted on a change."""
+        if units != self.header_units:
+            self.header_units = dict(units)
+            if self.sheet.column_count:
+                self.headerDataChanged.emit(Qt.Orientation.Horizontal, 0,
+                                            self.sheet.column_count - 1)
 
     def shown_changed(self) -> None:
         """The figures shown in blank cells repainted (the cells, or the settings they are

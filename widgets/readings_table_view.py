@@ -45,6 +45,9 @@ class _TypingDelegate(QStyledItemDelegate):
         #: the row the last editor opened in, and whether it was empty then (the entry
         #: plan fills the plan's cells of a row typed into only when it was: plan_return)
         self.opened_in: tuple[int, bool] = (-1, True)
+        #: ``opened_in`` of the editor whose text was last entered (setModelData): Tab
+        #: opens the next cell's editor before the closed one is told of (closeEditor)
+        self.entered_in: tuple[int, bool] = (-1, True)
         #: the cell's text the open editor was last filled with ("" when none is open)
         self.loaded = ""
 
@@ -66,6 +69,10 @@ class _TypingDelegate(QStyledItemDelegate):
         super().setEditorData(editor, index)
         if editor is self.editor:
             self.loaded = editor.text()
+
+    def setModelData(self, editor, model, index) -> None:  # noqa: N802 - Qt's name
+        self.entered_in = self.opened_in
+        super().setModelData(editor, model, index)
 
     def typed(self) -> QLineEdit | None:
         """The open editor when it was typed into since it was filled, else None."""
@@ -109,6 +116,9 @@ class ReadingsTableView(QTableView):
         # reading fills the plan's cells and gives the row the next reading goes to; None
         # (or it returns None): no plan, the nominal step as before
         self.plan_return = None
+        # … and a reading left by Tab, a click or another cell (the presenter's
+        # WorkbenchPresenter.plan_typed): the row's plan cells, the cursor not moved
+        self.plan_typed = None
         # the entry plan's part in a paste (the presenter's WorkbenchPresenter.plan_paste):
         # given the block's first row and its row count before the paste, what fills the
         # plan's cells of the pasted rows after it (in the paste's undo step) and returns what
@@ -284,6 +294,14 @@ class ReadingsTableView(QTableView):
         if hint == QAbstractItemDelegate.EndEditHint.SubmitModelCache and row >= 0:
             opened, blank = self._typing_delegate.opened_in
             self.next_row(row, blank_before=blank or opened != row)
+        elif hint != QAbstractItemDelegate.EndEditHint.RevertModelCache \
+                and self.plan_typed is not None:
+            # left otherwise than by Return (Tab, a click): the cursor has moved (Tab has
+            # opened the next cell's editor already); the row is the one entered into
+            entered, blank = self._typing_delegate.entered_in
+            self._typing_delegate.entered_in = (-1, True)  # told once
+            if entered >= 0:
+                self.plan_typed(entered, blank)
 
     def next_row(self, row: int, blank_before: bool = True) -> None:
         """After a reading entered in ``row`` (Return, or a take): the cursor to the cell the

@@ -410,6 +410,7 @@ class WorkbenchPresenter(QObject):
         if hasattr(getattr(self.view, "table", None), "own_layout"):  # a mock view has none
             self.view.table.own_layout = kind.rows_from_table
             self.view.table.plan_return = self.plan_return
+            self.view.table.plan_typed = self.plan_typed
             self.view.table.plan_paste = self.plan_paste
         self._settings: dict[str, Any] = kind.settings_with_defaults(None)
         self._settings_modified = False
@@ -661,12 +662,17 @@ class WorkbenchPresenter(QObject):
     def _settings_shown_in_blank(self) -> None:
         """The figures blank cells show (positioning's deviation from the measured
         position: gui77, the deviation column stayed empty while a live run's measured
-        filled), worked out with the settings of now, and the table repainted."""
+        filled), worked out with the settings of now, and the table repainted; the units
+        the settings give columns in their headers."""
         keys = [c.key for c in self.kind.columns]
         self._shown_in_blank = {keys.index(key): shown for key, shown in
                                 self.kind.shown_in_blank(self._settings).items() if key in keys}
         self.table_model.shown_columns = tuple(sorted(self._shown_in_blank))
         self.table_model.shown_changed()
+        # … and the units the settings give columns, in their headers (live78)
+        self.table_model.set_header_units({
+            keys.index(key): unit for key, unit in self.kind.column_units(self._settings).items()
+            if key in keys})
 
     def _blank_cell_shown(self, r: int, c: int) -> tuple[str, str] | None:
         """The figure blank cell (r, c) shows and what to say of it (None: none)."""
@@ -908,17 +914,7 @@ class WorkbenchPresenter(QObject):
             return None
         rows, keys = got
         reading = self._reading_keys()
-        changes = []
-        if blank_before and 0 <= row < len(rows) and \
-                any(rows[row].get(k, "").strip() for k in reading) and \
-                not any(rows[row].get(k, "").strip() for k in plan.points[0].cells) and \
-                self._plan_pointed_at(plan, rows, row):
-            point = plan.next_point(rows, reading)
-            if point is not None:
-                changes += [(row, keys.index(k), v) for k, v in point.cells.items()]
-                rows[row].update(point.cells)
-                self._say(tr("Row {row}: {point}, from the entry plan").format(
-                    row=row + 1, point=translated(point.label)))
+        changes = self._typed_row_plan_cells(plan, rows, keys, row, blank_before)
         place = plan.placement(rows, reading)
         if place is None:
             if changes:
@@ -937,6 +933,42 @@ class WorkbenchPresenter(QObject):
             self.table_model.set_cells(changes, tr("Entry plan: {point}").format(
                 point=translated(place.point.label)))
         return place.row
+
+    def _typed_row_plan_cells(self, plan: EntryPlan, rows: list[dict[str, str]],
+                              keys: list[str], row: int,
+                              blank_before: bool) -> list[tuple[int, int, str]]:
+        """The plan's cells of ``row`` (``rows`` updated with them, said on the status line)
+        when it is the row the plan pointed at, empty before this reading, and its reading
+        came without them; [] otherwise."""
+        reading = self._reading_keys()
+        if not (blank_before and 0 <= row < len(rows)
+                and any(rows[row].get(k, "").strip() for k in reading)
+                and not any(rows[row].get(k, "").strip() for k in plan.points[0].cells)
+                and self._plan_pointed_at(plan, rows, row)):
+            return []
+        point = plan.next_point(rows, reading)
+        if point is None:
+            return []
+        rows[row].update(point.cells)
+        self._say(tr("Row {row}: {point}, from the entry plan").format(
+            row=row + 1, point=translated(point.label)))
+        return [(row, keys.index(k), v) for k, v in point.cells.items()]
+
+    def plan_typed(self, row: int, blank_before: bool = True) -> None:
+        """A reading typed into ``row`` and left by Tab, a click or another cell (not
+        Return): the row's plan cells filled as Return fills them (:meth:`plan_return`),
+        the cursor left where the user put it and the next row not pre-filled. live78: the
+        theodolite's first row typed A, Tab, E, Tab kept no θ; the block pasted below it
+        then took the plan's θ from −20° on, each row one θ early — a result from shifted
+        θ, said only as "Rows 2–5: θ = −20° … θ = 10°, from the entry plan"."""
+        plan = self.entry_plan()
+        got = None if plan is None else self._plan_rows(plan)
+        if plan is None or got is None:
+            return
+        rows, keys = got
+        changes = self._typed_row_plan_cells(plan, rows, keys, row, blank_before)
+        if changes:
+            self.table_model.set_cells(changes, tr("Entry plan"))
 
     def after_plan_end(self, row: int) -> str:
         """What to say of a reading taken into ``row`` (typed into a new row, or captured)

@@ -63,6 +63,7 @@ import subprocess
 import sys
 import time
 from collections import deque
+from collections.abc import Mapping
 from datetime import datetime, timedelta
 from pathlib import Path
 
@@ -119,7 +120,7 @@ from models.capture.take_rows import UNDONE, session_takes, take_key
 from models.capture.wrong_target import off_target
 from models.readings.angles import parse_angle_deg
 from models.workbench import GuidesAcquisition
-from widgets.i18n import declared, live, on_language_change, tr, translated
+from widgets.i18n import declared, live, on_language_change, said_again, tr, translated
 from widgets.settings_form import ignore_unfocused_wheel
 
 __all__ = ["TAKE_READING_KEY", "CapturePanel", "ConnectDialog", "InstrumentLink"]
@@ -870,6 +871,10 @@ class CapturePanel(QDockWidget):
         #: why a take was refused, or auto-take switched off (until the next take)
         self.take_note = _ShownWhenSaid("")
         self.take_note_of: str | None = None  # the workbench whose take it is of
+        #: the undo stack and its index just after the take the note speaks of (None: the
+        #: note is of no take): the take undone (Edit › Undo), its note goes with it
+        self.take_note_step: tuple[object, int] | None = None
+        self._watched_stacks: set[int] = set()
         self.take_note.setStyleSheet("color: #b00020;")
         self.take_note.setVisible(False)
         # wide enough to wrap by words (a bottom-docked panel at 200 % squeezed it to a few
@@ -1049,6 +1054,22 @@ class CapturePanel(QDockWidget):
         """No take note (what the last take could not place, or took off the plan)."""
         self.take_note.setText("")
         self.take_note_of = None
+        self.take_note_step = None
+
+    def _note_with_take(self, stack) -> None:
+        """The take note (set by the take just pushed onto ``stack``) goes when that take
+        is undone. live78: after Edit › Undo of a take at face 4's place (or at the next
+        target), "Row 3: encoder a 190.0000° is +60.0° from … The reading is kept; undo the
+        take if it is wrong" stayed in red over the emptied row until the next take."""
+        self.take_note_step = (stack, stack.index())
+        if id(stack) not in self._watched_stacks:
+            self._watched_stacks.add(id(stack))
+            stack.indexChanged.connect(lambda index, s=stack: self._stack_moved(s, index))
+
+    def _stack_moved(self, stack, index: int) -> None:
+        step = self.take_note_step
+        if step is not None and step[0] is stack and index < step[1]:
+            self.clear_take_note()
 
     def sheet_replaced(self, workbench: str) -> None:
         """``workbench``'s sheet was replaced (an import, a sample, a project opened or
@@ -1667,7 +1688,10 @@ class CapturePanel(QDockWidget):
                                 if not link.last_fault else
                                 tr("Connected: {port} (reconnected after: {reason})").format(
                                     port=worker.port,
-                                    reason=_without_port(link.last_fault, worker.port)))
+                                    # in the language now (live78: "cannot open (timed
+                                    # out)" stayed English in the Chinese window)
+                                    reason=_without_port(str(said_again(link.last_fault)),
+                                                         worker.port)))
             if link.lost:
                 link.mark_lost(False)
             self._links_changed()
@@ -1789,10 +1813,12 @@ class CapturePanel(QDockWidget):
             # a spread that is the axis moving (or drifting) is not a window too tight
             rate = steady_motion(times, recent)
             self._motion = None if rate is None else rate * scale
-            shown = "   ".join(f"{s * scale:.3f}" for s in spread)
-            # in the window's unit (arcseconds for an angle, else the readout's own)
+            # in the window's unit (arcseconds for an angle, else the readout's own), after
+            # each axis's figure (live78: "0.097   0.097\"" left the first without one)
+            unit = _unit_symbol(reading.unit)
+            shown = "   ".join(f"{s * scale:.3f}{unit}" for s in spread)
             self.stability.setText(tr("Spread over the last second: {spread}{unit}").format(
-                spread=shown, unit=_unit_symbol(reading.unit)))
+                spread=shown, unit=""))
         if now >= self._allan_due and len(self.frames) >= 16:
             self._allan_due = now + 1.0
             self._show_allan(degrees, scale)
@@ -1987,7 +2013,8 @@ class CapturePanel(QDockWidget):
                 changes.append((row, column, cell_text(value, "deg", NOMINAL_RESOLUTION_ARCSEC,
                                                        dms, sheet.columns[column].unit)))
                 filled.add(column)
-        changes += self._from_reference(sheet, keys, row, changes, filled)
+        changes += self._from_reference(sheet, keys, row, changes, filled,
+                                         getattr(presenter, "face_deviations", {}))
         new_takes = []
         for link in self.links:
             got = taking.get(link.slot)
@@ -2035,6 +2062,7 @@ class CapturePanel(QDockWidget):
             table.next_row(row)
         finally:
             model.undo_stack.endMacro()
+        self._note_with_take(model.undo_stack)
         self.update_guide()
         # a take is on disk at once, as `anglebench capture` syncs each reading to its
         # journal: it cannot be typed again, the instrument has moved on (hostile77 M2: a
@@ -2173,9 +2201,12 @@ class CapturePanel(QDockWidget):
                 header.resizeSection(column, needed)
 
     @staticmethod
-    def _from_reference(sheet, keys, row, changes, filled) -> list[tuple[int, int, str]]:
+    def _from_reference(sheet, keys, row, changes, filled,
+                        loaded: Mapping[int, str] | None = None) -> list[tuple[int, int, str]]:
         """A polygon face's deviation (its certificate's, as sent or typed for that face in
-        another row) into the row the take fills, when its cell is blank."""
+        another row, else as the certificate ``loaded`` before the face had a row gives
+        it: PolygonPresenter.face_deviations) into the row the take fills, when its cell
+        is blank."""
         if "polygon_dev_arcsec" not in keys or "position" not in keys:
             return []
         dev, position = keys.index("polygon_dev_arcsec"), keys.index("position")
@@ -2191,4 +2222,6 @@ class CapturePanel(QDockWidget):
                  if r != row and sheet.text(r, position).strip() == face
                  and sheet.text(r, dev).strip()}
         # one deviation per face; two different ones are the technician's to settle
+        if not known and loaded and face.isdigit() and int(face) in loaded:
+            known = {loaded[int(face)]}
         return [(row, dev, known.pop())] if len(known) == 1 else []

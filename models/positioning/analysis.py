@@ -766,6 +766,14 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
 
         return {"deviation": (shown_deviation(settings), DEVIATION_SHOWN_NOTE)}
 
+    def column_units(self, settings):
+        # live78: the live table's "deviation" and "measured" had no unit in their header
+        # (arcseconds, µm … only in the set-up below it), unlike every other workbench's
+        target = "mm" if settings.get("target_unit", "deg") == "mm" else "deg"
+        deviation = DEVIATION_UNITS.get(str(settings.get("deviation_unit", "arcsec")),
+                                        DEVIATION_UNITS["arcsec"])[2].strip()
+        return {"target": target, "measured": target, "deviation": deviation}
+
     def entry_plan(self, settings):
         runs = int(settings.get("plan_runs", 0) or 0)
         if not runs:

@@ -95,8 +95,9 @@ def test_a_narrower_block_over_the_sheet_is_said_and_a_wider_one_s_columns_too(q
                                 ["60", "1", "+", "0.9", ""]]
     qtbot.waitUntil(lambda: "measured" in presenter.view.last_status)
     said = presenter.view.last_status
-    assert said.startswith("Pasted into target, run, dir [+/−], deviation;")
-    assert "measured left empty" in said
+    # the headers as shown, with the set-up's units (live78)
+    assert said.startswith('Pasted into target [deg], run, dir [+/−], deviation ["];')
+    assert "measured [deg] left empty" in said
     _click(qtbot, table, 1, deviation)
     _select_all_and_paste(qtbot, table, "0\t1\t+\t0.5\t\tx\ty\n30\t1\t-\t0.7\t\tx\ty")
     assert _rows(presenter) == [["0", "1", "+", "0.5", ""], ["30", "1", "-", "0.7", ""]]
@@ -210,3 +211,39 @@ def test_a_correction_in_the_last_row_pasted_before_the_plan_gets_no_plan_theta(
     presenter.set_settings({"plan_passes": 2, "plan_thetas": "-2:1:5"})
     _type(qtbot, table, 2, elevation, "-0.35")
     assert _rows(presenter)[2] == ["", A_E[0][0], "-0.35", "", ""]
+
+
+def _type_and_tab(qtbot, table, row: int, column: int, text: str) -> None:
+    """``text`` typed into the cell and left with Tab, as in a spreadsheet (not Return)."""
+    _click(qtbot, table, row, column)
+    qtbot.keyClick(table, Qt.Key.Key_F2)
+    editor = next(w for w in table.viewport().findChildren(QLineEdit) if w.isVisible())
+    editor.selectAll()
+    qtbot.keyClicks(editor, text)
+    qtbot.keyClick(editor, Qt.Key.Key_Tab)
+    qtbot.waitUntil(lambda: table.model().data(table.model().index(row, column)) == text)
+
+
+@pytest.mark.slow
+def test_the_first_reading_left_with_tab_gets_its_theta_and_a_paste_below_goes_on(
+        qtbot, theodolite_with_plan):
+    """live78: row 1's A and E typed, each left with Tab (never Return), kept θ, run and
+    direction empty (red); pass 1's other A/E pasted below then took θ −2 … 1 — each row
+    one θ early, a result from shifted θ — said only as "Rows 2–5: θ = -2° … θ = 1°, from
+    the entry plan". Now row 1 gets the plan's point as Return gives it, the cursor
+    stays where Tab put it, and the paste goes on from θ −1."""
+    presenter = theodolite_with_plan
+    table = presenter.view.table
+    azimuth = presenter.sheet.column_index("azimuth_deg")
+    elevation = presenter.sheet.column_index("elevation_deg")
+    _type_and_tab(qtbot, table, 0, azimuth, A_E[-2][0])
+    assert _rows(presenter)[0] == ["-2", A_E[-2][0], "", "1", "+"]
+    assert presenter.view.last_status == "Row 1: θ = -2°, pass 1 ↑, from the entry plan"
+    assert (table.currentIndex().row(), table.currentIndex().column()) == (0, elevation)
+    _type_and_tab(qtbot, table, 0, elevation, A_E[-2][1])
+    assert _rows(presenter)[0] == ["-2", *A_E[-2], "1", "+"]
+    QGuiApplication.clipboard().setText("\n".join(f"{A_E[t][0]}\t{A_E[t][1]}"
+                                                  for t in THETAS[1:]))
+    _click(qtbot, table, 1, azimuth)
+    qtbot.keyClick(table, Qt.Key.Key_V, Qt.KeyboardModifier.ControlModifier)
+    assert _rows(presenter)[:5] == [[f"{t}", *A_E[t], "1", "+"] for t in THETAS]

@@ -12,6 +12,7 @@ from PySide6.QtGui import QColor, QFont, QPainter, QPen, QPolygonF
 from PySide6.QtWidgets import QSizePolicy, QWidget
 
 from models.fringe.signal_tolerance import Band
+from models.uncertainty.rounding import fixed_places
 
 __all__ = ["STATE_COLOURS", "SignalBar"]
 
@@ -67,7 +68,8 @@ class SignalBar(QWidget):
         if not math.isfinite(self.value):
             return "—"
         unit = f" {self.unit}" if self.unit and self.unit != "°" else self.unit
-        return f"{self.value:.{self.decimals}f}{unit}"
+        # a zero unsigned, as the window prints it elsewhere (live78: "Offset A -0.00 %")
+        return f"{fixed_places(self.value, self.decimals)}{unit}"
 
     def scale_range(self) -> tuple[float, float]:
         """The values the bar's ends stand for: the bands and half their width either side,

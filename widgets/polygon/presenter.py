@@ -4,16 +4,29 @@ from __future__ import annotations
 
 import datetime as dt
 from collections.abc import Callable
+from pathlib import Path
 
 from models.messages import QT_TR_NOOP, message
 from models.polygon import plots
 from models.polygon.analysis import POLYGON
 from models.polygon.certificate_reader import read_polygon_certificate
 from models.polygon.model import GRADE_ACCURACY_ARCSEC, PolygonResult
+from models.project.file import WorkbenchState
 from models.readings.tabular_import import TableImportError
 from widgets.i18n import declared, explained, tr, translated
 from widgets.polygon.view import PolygonView
 from widgets.workbench_presenter import WorkbenchPresenter
+
+
+def _face_list(faces: list[int]) -> str:
+    """"1–6", "2, 5, 7–9": runs of consecutive faces joined."""
+    runs: list[list[int]] = []
+    for face in faces:
+        if runs and face == runs[-1][-1] + 1:
+            runs[-1].append(face)
+        else:
+            runs.append([face])
+    return ", ".join(f"{r[0]}–{r[-1]}" if len(r) > 2 else ", ".join(map(str, r)) for r in runs)
 
 
 class PolygonPresenter(WorkbenchPresenter):
@@ -39,6 +52,14 @@ class PolygonPresenter(WorkbenchPresenter):
         #: what the last certificate loaded said beside its values (a DCC's notes, the
         #: deviation column's values replaced)
         self.certificate_notes: list[str] = []
+        #: the polygon certificate's deviations by face as last loaded (the cell's text), for
+        #: the faces not yet in the table: a take of such a face fills its row's deviation
+        #: (app/capture/panel.py _from_reference). live78: loaded before a live run (the
+        #: table empty), the certificate changed no cell and was dropped without a word;
+        #: every face taken then had no deviation, its row could not be read, and the run
+        #: showed no result and no faces. Forgotten when another project is opened or a
+        #: new one begun (load_state): another day's polygon may be another one.
+        self.face_deviations: dict[int, str] = {}
 
     def show_result(self, result: PolygonResult) -> None:
         self.table_model.set_highlight_rows(result.closure_rows)
@@ -188,7 +209,18 @@ class PolygonPresenter(WorkbenchPresenter):
                     path=str(path), position=position, row=row + 1))
             changes.append((row, column, format(deviations[position], spec)))
         self.table_model.set_cells(changes, label)
+        self.face_deviations = {face: format(value, spec) for face, value in deviations.items()}
+        in_table = set(self._positions())
+        waiting = sorted(face for face in deviations if face not in in_table)
+        if waiting:  # said: a certificate loaded before the run changes no cell
+            self.view.show_status(tr("{path}: {count} face(s) have no row yet ({faces}); their "
+                                     "deviations are filled in as each face is taken").format(
+                path=Path(path).name, count=len(waiting), faces=_face_list(waiting)))
         return len(changes)
+
+    def load_state(self, state: WorkbenchState, project: str = "") -> None:
+        super().load_state(state, project)
+        self.face_deviations = {}  # another project: its polygon may be another one
 
     def _positions(self) -> list[int]:
         """The face numbers in the position column (unreadable cells left out)."""

@@ -90,3 +90,20 @@ def test_a_readout_in_millimetres_is_gated_in_millimetres_and_the_window_says_so
         assert "readout's own unit (mm)" in panel.window_box.toolTip()
         assert panel.stability.text().endswith(" mm")
         panel.disconnect_instrument()
+
+
+def test_each_axis_s_spread_has_its_unit(window, qtbot):
+    """live78: an autocollimator's spread read "Spread over the last second: 0.097   0.097\\""
+    — the first figure, x's, without a unit; each is followed by its own."""
+    import re
+
+    from tests.instrument_simulators import AutocollimatorSimulator
+
+    _show(window, "polygon")
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(0.5, 0.25)], sigma=0.05) as ac:
+        panel.connect_to("autocollimator", ac.port, **FAST)
+        qtbot.waitUntil(lambda: bool(panel.stability.text()), timeout=5000)
+        said = panel.stability.text()
+        assert re.fullmatch(r'Spread over the last second: \d+\.\d{3}"   \d+\.\d{3}"', said), said
+        panel.disconnect_instrument()

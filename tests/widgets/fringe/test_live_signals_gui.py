@@ -407,3 +407,17 @@ def test_a_preset_the_lab_saved_since_is_there_when_the_window_opens(fringe):
     fringe.view.open_live_signals()
     assert panel.isVisible() and panel.preset.findData("lab_gap") >= 0
     panel.close()
+
+
+def test_a_bar_prints_a_zero_unsigned(qtbot):
+    """live78: a centred offset read "Offset A -0.00 %" on the live bars; zero is printed
+    unsigned, as the window's tables and the certificate print it."""
+    from widgets.fringe.signal_bar import SignalBar
+
+    bar = SignalBar("offset_a")
+    qtbot.addWidget(bar)
+    bar.set_band("Offset A", None, "%", 2)
+    bar.set_value(-0.0004, "")
+    assert bar.value_text() == "0.00 %"
+    bar.set_value(-0.006, "")
+    assert bar.value_text() == "-0.01 %"
