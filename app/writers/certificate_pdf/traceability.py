@@ -23,7 +23,7 @@ def draw_traceability(pdf: _CertificatePdf, document: CertificateDocument) -> No
 def _standards_table(document: CertificateDocument) -> Table:
     rows = []
     for s in document.metadata.standards:
-        u = "—" if s.uncertainty is None else _stated_uncertainty(s)
+        u = "—" if s.uncertainty is None else _stated_uncertainty(s, document.reading_name)
         if s.uncertainty is None and s.certificate_no and document.stated_inputs:
             u = message(QT_TR_NOOP("as stated in the settings: {inputs}"),
                         inputs=joined(_between(", ", document.stated_inputs)))
@@ -41,13 +41,15 @@ def _standards_table(document: CertificateDocument) -> Table:
 
 
 
-def _stated_uncertainty(s: ReferenceStandard):
+def _stated_uncertainty(s: ReferenceStandard, reading_name: str = APPLIES_TO_NAMES["reading"]):
     """A standard's figure as its certificate states it: as typed, with its basis and what it
     is stated per (a reading, an angle between two readings, a face from face 1: day review
     69 F2, the budget takes u/√2 a reading of one stated per angle); read from its DCC (its
     k known), U with that k to two significant digits (GUM 7.2.6), not the every digit of
-    the U/k the budget takes."""
-    per = message(APPLIES_TO_NAMES.get(s.applies_to, s.applies_to))
+    the U/k the budget takes. A reading is called ``reading_name``, the budget's word (the
+    fringe's "sample")."""
+    per = message(reading_name if s.applies_to == "reading" else
+                  APPLIES_TO_NAMES.get(s.applies_to, s.applies_to))
     if s.coverage_factor is None:
         return message("{u} ({basis})", u=Quantity(s.uncertainty, s.uncertainty_unit),
                        basis=message(QT_TR_NOOP("{basis} per {per}"), per=per,
