@@ -26,7 +26,7 @@ from typing import Any
 
 __all__ = ["JOINS", "LIST_JOIN", "QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "as_sentence",
            "catalogue", "declared_text", "in_language", "joined", "lines", "listed", "message", "reason_of",
-           "rendered", "separated", "translator", "unit_tail"]
+           "rendered", "separated", "translator", "typed_name", "unit_tail"]
 
 #: the .ts sources and compiled .qm files (the window loads the .qm; the command line reads
 #: the .ts, without Qt)
@@ -108,6 +108,21 @@ def listed(parts: Iterable[Any]) -> Any:
     """The non-empty ``parts`` as a list ("a, b, c" in English, "甲、乙、丙" in Chinese), each
     translated on its own; one part as it is, none ""."""
     return _chained(parts, LIST_JOIN, "items", "item")
+
+
+#: a name the user typed (a standard's description) inside a sentence: as it is in English,
+#: quoted in Chinese (“…”, as the catalogue's other quoted names), so that a Latin name does
+#: not run straight into the Chinese around it (assessment 78 L5: "未说明Data acquisition
+#: (16-bit ADC)的角色")
+TYPED_NAME = QT_TR_NOOP("{typed_name}")
+
+
+def typed_name(name: Any) -> Any:
+    """``name``, typed by the user, to be set inside a sentence (:data:`TYPED_NAME`); a
+    name of ours (a :class:`Message`, such as "standard") or an empty one as it is."""
+    if not name or isinstance(name, Message):
+        return name
+    return message(TYPED_NAME, typed_name=name)
 
 
 def lines(parts: Iterable[Any]) -> Message:

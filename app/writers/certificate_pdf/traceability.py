@@ -7,7 +7,7 @@ from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.wording import _between, _listed, _translatable, label
 from models.certificate.document import CertificateDocument, Table
 from models.certificate.metadata import APPLIES_TO_NAMES, ReferenceStandard
-from models.messages import QT_TR_NOOP, joined, message, separated
+from models.messages import QT_TR_NOOP, joined, message, separated, typed_name
 from models.quantity import UNITS, Quantity
 from models.uncertainty.budget import BASIS_DIVISORS
 from models.uncertainty.printed_figure import printed
@@ -73,11 +73,11 @@ def _traceability(document: CertificateDocument) -> str:
                                                              or stated)]
     names = joined(_between("; ", (
         message(QT_TR_NOOP("{standard} (certificate {certificate})"),
-                standard=s.description or message(QT_TR_NOOP("standard")),
+                standard=typed_name(s.description) or message(QT_TR_NOOP("standard")),
                 certificate=s.certificate_no) if s.uncertainty is not None else
         message(QT_TR_NOOP("{standard} (certificate {certificate}; its figures enter as the "
                            "inputs stated in the settings: {inputs})"),
-                standard=s.description or message(QT_TR_NOOP("standard")),
+                standard=typed_name(s.description) or message(QT_TR_NOOP("standard")),
                 certificate=s.certificate_no, inputs=joined(_between(", ", stated)))
         for s in listed)))
     if document.untraceable:
@@ -101,7 +101,8 @@ def _traceability(document: CertificateDocument) -> str:
             parts += [message(QT_TR_NOOP("The instruments listed are comparators only; "
                                               "their calibration enters the uncertainty, not "
                                               "the reference: {names}."),
-                                   names=_listed(s.description or message(QT_TR_NOOP("standard"))
+                                   names=_listed(typed_name(s.description)
+                                                 or message(QT_TR_NOOP("standard"))
                                                  for s in standards))]
     elif not listed:
         parts = [message(QT_TR_NOOP("Metrological traceability: not established on this "
@@ -117,5 +118,6 @@ def _traceability(document: CertificateDocument) -> str:
             parts += [message(QT_TR_NOOP("{standard}: no uncertainty stated, so it is no "
                                               "input of the budget and the results are not "
                                               "traceable through it."),
-                                   standard=s.description or message(QT_TR_NOOP("standard")))]
+                                   standard=(typed_name(s.description)
+                                             or message(QT_TR_NOOP("standard"))))]
     return separated(parts, " ")  # sentence after sentence
