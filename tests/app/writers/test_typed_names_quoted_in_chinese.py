@@ -13,7 +13,7 @@ import pytest
 
 from models.certificate.metadata import CertificateMetadata
 from models.certificate.traceability import standards_not_stated, traceability_gaps
-from models.messages import in_language, translator, typed_name
+from models.messages import in_language, translator
 from tests.pending_zh import pending_catalogue
 
 ADC_NO_ROLE = {"description": "Data acquisition (16-bit ADC)", "serial": "DAQ-5",
@@ -21,6 +21,8 @@ ADC_NO_ROLE = {"description": "Data acquisition (16-bit ADC)", "serial": "DAQ-5"
 
 
 def test_a_typed_name_is_itself_in_english_and_quoted_in_chinese(tmp_path):
+    from models.messages import typed_name
+
     name = typed_name("Data acquisition (16-bit ADC)")
     assert name == "Data acquisition (16-bit ADC)"
     assert typed_name("") == "" and typed_name(None) is None
