@@ -164,6 +164,12 @@ def rendered(text: str, translate: Callable[[str], str]) -> str:
     figures = {key: rendered(value, translate) if isinstance(value, str) else value
                for key, value in text.figures.items()}
     words = translate(template)
+    # a translation that quotes a typed name itself ("未说明“{unnamed}”的角色") does not quote
+    # it twice: the name comes quoted (:func:`typed_name`)
+    for key, value in text.figures.items():
+        if isinstance(value, Message) and value.template == TYPED_NAME:
+            words = words.replace(f"“{{{key}}}”", f"{{{key}}}").replace(
+                f"「{{{key}}}」", f"{{{key}}}")
     return _filled(words, figures) if figures else words
 
 
