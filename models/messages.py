@@ -165,9 +165,12 @@ def rendered(text: str, translate: Callable[[str], str]) -> str:
                for key, value in text.figures.items()}
     words = translate(template)
     # a translation that quotes a typed name itself ("未说明“{unnamed}”的角色") does not quote
-    # it twice: the name comes quoted (:func:`typed_name`)
+    # it twice where the name comes quoted already (:func:`typed_name`, once the catalogue
+    # quotes it)
     for key, value in text.figures.items():
-        if isinstance(value, Message) and value.template == TYPED_NAME:
+        shown = figures[key]
+        if (isinstance(value, Message) and value.template == TYPED_NAME
+                and isinstance(shown, str) and shown[:1] in "“「" and shown != str(value)):
             words = words.replace(f"“{{{key}}}”", f"{{{key}}}").replace(
                 f"「{{{key}}}」", f"{{{key}}}")
     return _filled(words, figures) if figures else words

@@ -80,3 +80,17 @@ def test_the_chinese_certificate_quotes_it(tmp_path):
     assert quoted in "".join(zh.split()) and quoted in "".join(both.split())
     assert "未说明Data" not in "".join(zh.split())
     assert "no role is stated for Data acquisition (16-bit ADC) and" in both  # English as it was
+
+
+def test_a_translation_that_quotes_the_name_keeps_its_quotes_before_the_catalogue_has_ours():
+    """Until the catalogue holds “{typed_name}”, a translation's own quotes stay (no name left
+    bare where the catalogue already quoted it); with it, the name is quoted once."""
+    from models.fringe import MEASURAND_STANDARDS
+    from models.fringe.analysis import ROLES_STATED_ONLY
+
+    meta = CertificateMetadata.from_dict({"standards": [ADC_NO_ROLE]})
+    gaps = traceability_gaps(meta, MEASURAND_STANDARDS, (), ROLES_STATED_ONLY)
+    zh = in_language(gaps[0], translator("zh_CN"))  # the catalogue as it is
+    if translator("zh_CN")("{typed_name}") == "{typed_name}":
+        assert "未说明“Data acquisition (16-bit ADC)”的角色" in zh, zh
+    assert "未说明Data" not in zh and "““" not in zh, zh
