@@ -26,7 +26,7 @@ from typing import Any
 
 __all__ = ["JOINS", "LIST_JOIN", "QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "as_sentence",
            "catalogue", "declared_text", "in_language", "joined", "lines", "listed", "message", "reason_of",
-           "rendered", "separated", "translator", "unit_tail"]
+           "rendered", "separated", "translator", "typed_name", "unit_tail"]
 
 #: the .ts sources and compiled .qm files (the window loads the .qm; the command line reads
 #: the .ts, without Qt)
@@ -110,6 +110,21 @@ def listed(parts: Iterable[Any]) -> Any:
     return _chained(parts, LIST_JOIN, "items", "item")
 
 
+#: a name the user typed (a standard's description) inside a sentence: as it is in English,
+#: quoted in Chinese (“…”, as the catalogue's other quoted names), so that a Latin name does
+#: not run straight into the Chinese around it (assessment 78 L5: "未说明Data acquisition
+#: (16-bit ADC)的角色")
+TYPED_NAME = QT_TR_NOOP("{typed_name}")
+
+
+def typed_name(name: Any) -> Any:
+    """``name``, typed by the user, to be set inside a sentence (:data:`TYPED_NAME`); a
+    name of ours (a :class:`Message`, such as "standard") or an empty one as it is."""
+    if not name or isinstance(name, Message):
+        return name
+    return message(TYPED_NAME, typed_name=name)
+
+
 def lines(parts: Iterable[Any]) -> Message:
     """Parts one to a line (a summary)."""
     out: list[Any] = []
@@ -149,6 +164,15 @@ def rendered(text: str, translate: Callable[[str], str]) -> str:
     figures = {key: rendered(value, translate) if isinstance(value, str) else value
                for key, value in text.figures.items()}
     words = translate(template)
+    # a translation that quotes a typed name itself ("未说明“{unnamed}”的角色") does not quote
+    # it twice where the name comes quoted already (:func:`typed_name`, once the catalogue
+    # quotes it)
+    for key, value in text.figures.items():
+        shown = figures[key]
+        if (isinstance(value, Message) and value.template == TYPED_NAME
+                and isinstance(shown, str) and shown[:1] in "“「" and shown != str(value)):
+            words = words.replace(f"“{{{key}}}”", f"{{{key}}}").replace(
+                f"「{{{key}}}」", f"{{{key}}}")
     return _filled(words, figures) if figures else words
 
 

@@ -236,6 +236,12 @@ class Workbench(ABC, Generic[ResultT]):
         unrounded value of any other (the register's trend keeps every figure unrounded)."""
         return {}
 
+    def listed_setting(self, parameter: Parameter, settings: Mapping[str, Any]) -> str:
+        """``parameter``'s value in ``settings`` (checked) as the certificate lists it: its
+        declaration's text (:meth:`Parameter.text`); a workbench whose setting takes its unit
+        from another setting (positioning's inputs, in the deviations' unit) says it here."""
+        return parameter.text(settings[parameter.key])
+
     def certificate_document(self, result: ResultT, metadata: CertificateMetadata, source_name: str = "",
                              settings: Mapping[str, Any] | None = None) -> CertificateDocument:
         """The certificate content of ``result`` (see models.certificate.document), listing
@@ -253,7 +259,7 @@ class Workbench(ABC, Generic[ResultT]):
                                     checked if settings is not None else None)
         if settings is not None:
             # the window's entry aids (the entry plan) are no setting of the analysis
-            listing = tuple((p.label, p.text(checked[p.key])) for p in self.parameters
+            listing = tuple((p.label, self.listed_setting(p, checked)) for p in self.parameters
                             if not p.entry_aid)
             document = dataclasses.replace(document, settings=listing)
         basis = self.traceability_basis

@@ -145,6 +145,10 @@ class CertificateDocument:
     # coverage interval was raised to the laboratory's CMC (models.uncertainty.lab_scope
     # .held_to_cmc): named in its scope statement
     figures_raised_to_cmc: tuple[str, ...] = ()
+    # what one reading is called here (the fringe's "sample"): the standards table says a
+    # standard's figure stated per reading per it, as the budget's note does (assessment 78
+    # L4: "per reading" in the table, "per sample" in the budget, for one figure)
+    reading_name: str = QT_TR_NOOP("reading")
 
     @property
     def is_test_report(self) -> bool:

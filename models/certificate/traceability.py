@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from models.messages import QT_TR_NOOP, listed, message, separated
+from models.messages import QT_TR_NOOP, listed, message, separated, typed_name
 
 if TYPE_CHECKING:  # the details' module is loaded by whoever hands them (not a plain analyze)
     from models.certificate.metadata import CertificateMetadata
@@ -41,7 +41,8 @@ def expired_withheld(metadata: CertificateMetadata):
     if not expired:
         return ""
     names = separated((message(QT_TR_NOOP("{standard} (due {due})"),
-                               standard=s.description or message(QT_TR_NOOP("standard")),
+                               standard=(typed_name(s.description)
+                                         or message(QT_TR_NOOP("standard"))),
                                due=s.due_date) for s in expired), "; ")
     return message(QT_TR_NOOP("the calibration of a standard had expired before the date of "
                               "calibration, so the uncertainty it states does not hold: {names}"),
@@ -56,7 +57,7 @@ def standards_not_stated(metadata: CertificateMetadata, stated_inputs: tuple[str
     listed with its certificate and no U in the table while inputs are stated in the settings
     (the fringe's ADC figures, ``stated_inputs``) stands behind those inputs: it is not one
     (the same rule as :func:`traceability_gaps`' "has no stated uncertainty")."""
-    return [s.description or QT_TR_NOOP("standard") for s in metadata.standards
+    return [typed_name(s.description) or QT_TR_NOOP("standard") for s in metadata.standards
             if s.uncertainty is None and not (stated_inputs and s.certificate_no)]
 
 
@@ -121,7 +122,8 @@ def _told_role(standard, roles: dict[str, str], families: set[str]) -> str:
 
 def _names(standards) -> object:
     """The standards' descriptions as a list ("standard" for one without)."""
-    return listed(s.description or message(QT_TR_NOOP("standard")) for s in standards)
+    return listed(typed_name(s.description) or message(QT_TR_NOOP("standard"))
+                  for s in standards)
 
 
 #: a role only a standard stating it carries, not filled by a standard of no role stated
@@ -216,7 +218,7 @@ def _gaps(metadata: CertificateMetadata, roles: tuple[tuple[str, str], ...],
                      else listed(role_names))))
     expired_ones = expired_standards(metadata) if expired else []
     for std in standards:
-        name = std.description or message(QT_TR_NOOP("standard"))
+        name = typed_name(std.description) or message(QT_TR_NOOP("standard"))
         if std in expired_ones:
             gaps.append(message(QT_TR_NOOP(
                 "{standard}: its calibration was due on {due}, before the date of calibration "

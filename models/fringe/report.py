@@ -173,6 +173,10 @@ def _refuse_identification(result) -> None:
         raise MetadataError(refusal)
 
 
+#: what one reading is called on the fringe's certificate: its budget's note and its
+#: standards table say a standard's figure per it (assessment 78 L4)
+READING_NAME = QT_TR_NOOP("sample")
+
 OBSERVABILITY_STATEMENT = QT_TR_NOOP(
     "The phase was estimated from the signals, with no phase reference: offsets, amplitude "
     "ratio and quadrature error are identified; a pure phase distortion of the grating is not "
@@ -472,7 +476,7 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
     uc = model_signal_std(result.theta_rad, sig_c, result.cos_fit.orders, result.theta_rad)
     model = np.hypot(ds * us, dc * uc) * to_unit
     phase_meta = _phase_references(metadata)  # the ADC's U is no phase error (its figures are)
-    standards = reference_standard_components(phase_meta, 1.0, QT_TR_NOOP("sample"),
+    standards = reference_standard_components(phase_meta, 1.0, READING_NAME,
                                               unit=result.unit, common=True)
     stated = _stated_inputs(result, ds, dc, to_unit)
     references = _per_sample_references(result, _reference_once(
@@ -612,7 +616,7 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
     # (reference_through_fit.scatter_beyond_reference: the larger of the two, not the sum)
     phase_meta = _phase_references(metadata)  # the ADC's U is no phase error (its figures are)
     references = _reference_once(
-        phase_meta, reference_standard_components(phase_meta, 1.0, QT_TR_NOOP("sample"),
+        phase_meta, reference_standard_components(phase_meta, 1.0, READING_NAME,
                                                   unit=result.unit),
         [c for c in _stated_inputs(result, np.zeros(1), np.zeros(1), to_unit)
          if c.name == _SETTING_REFERENCE], result.unit_symbol)
@@ -1091,7 +1095,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         "signals stay as they were measured.")),)
     return build_certificate(
         measurand_standards=MEASURAND_STANDARDS, roles_stated_only=ROLES_STATED_ONLY,
-        standards_in_settings=True,
+        standards_in_settings=True, reading_name=READING_NAME,
         kind_key=KEY, kind_title=TITLE, method=method_text(result), metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,
         parameters=parameters, results=results, decision=decision,

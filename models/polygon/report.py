@@ -136,6 +136,7 @@ from models.uncertainty.conformity import (
     half_range_monte_carlo,
 )
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.rounding import significant_decimals
 from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
 __all__ = ["OTHER_SET", "ZERO_READING", "ZeroFaceShare", "mean_zero_share", "polygon_budget",
@@ -898,6 +899,18 @@ def _noise_about_each_set(result: PolygonResult) -> float | None:
     return float(np.sqrt(np.mean(repeat[0] ** 2) * n / (n - 1)))
 
 
+def harmonics_decimals(expanded) -> int:
+    """The decimal the 1st and 2nd harmonics' amplitudes are printed to: that of the largest
+    U of the certificate's results (two significant digits, GUM 7.2.6), an amplitude having
+    no U of its own; 3 where no U is given."""
+    u = np.asarray(expanded, dtype=float)
+    finite = u[np.isfinite(u) & (u > 0)]
+    if not finite.size:
+        return 3
+    d = significant_decimals(float(np.max(finite)))
+    return 3 if d is None else max(d, 0)
+
+
 def _standard_components(metadata: CertificateMetadata, zero: int, n: int) -> list[BudgetComponent]:
     """Each reference standard twice, as the error e_i = … − (dev_i − dev_z) − (x_i − x_z)
     takes it: the face's (or reading's) own calibration error, one unknown per point, and
@@ -1487,8 +1500,11 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     more_rows = []
     h = result.harmonics
     if (harmonics_why := harmonics_reason(result)) is not None:
+        # to the decimal of the certificate's largest U, not finer than the data support
+        # (assessment 78 L6: "0.362″ / 0.157″" beside U = 0.42″)
+        d = harmonics_decimals(big_u)
         more_rows.append((QT_TR_NOOP("Harmonics 1st / 2nd"),
-                          f"{h.amplitude[1]:.3f}\" / {h.amplitude[2]:.3f}\"",
+                          f"{h.amplitude[1]:.{d}f}\" / {h.amplitude[2]:.{d}f}\"",
                           no_interval(message(QT_TR_NOOP("eccentricity / ellipticity")),
                                       harmonics_why)))
     moved = zero_moved(result)  # the sets' scatter and reversal hold the zero's moves

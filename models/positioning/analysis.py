@@ -722,6 +722,10 @@ def _figures_line(prefix: str, figures, symbol: str, decimals: dict[str, int] | 
     return joined(parts)
 
 
+#: the settings in the deviations' unit (the budget's inputs the readings cannot show)
+DEVIATION_UNIT_SETTINGS = ("misalignment_u", "reference_resolution", "temperature_u")
+
+
 class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningResult],
                   WritesCorrectionTable[PositioningResult], AcceptsRuns,
                   ComparesAfterLog[PositioningResult], ShowsHeadline[PositioningResult],
@@ -787,6 +791,14 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         """The deviation unit, every figure's."""
         unit = settings.get("deviation_unit", "arcsec")
         return unit if unit in DEVIATION_UNITS else "arcsec"
+
+    def listed_setting(self, parameter, settings):
+        # the budget's inputs are in the deviations' unit, which the certificate's settings
+        # state with each (assessment 78 L8: "misalignment u 0.3", no unit)
+        text = parameter.text(settings[parameter.key])
+        if parameter.key in DEVIATION_UNIT_SETTINGS and settings[parameter.key]:
+            return f"{text}{DEVIATION_UNITS[self.error_unit(settings)][2]}"
+        return text
 
     def certificate(self, result, metadata, source_name="", settings=None):
         return positioning_certificate(result, metadata, source_name, self.method_reference,

@@ -85,7 +85,8 @@ __all__ = ["FIGURE_NAMES", "axis_figures", "figure_decimals", "figure_uncertaint
            "axis_figure_values", "without_interval",
            "intervals_determined", "intervals_withheld", "readings_figure_intervals",
            "readings_step_component",
-           "stated_figure_intervals", "withheld_figure_reasons", "one_direction_reasons",
+           "stated_figure_intervals", "withheld_figure_reasons", "withheld_figure_notes",
+           "rounding_place", "one_direction_reasons",
            "DIRECTION_NOT_MEASURED", "NEEDS_BOTH_DIRECTIONS",
            "positioning_budget", "positioning_certificate", "repeated_readings_components"]
 
@@ -499,6 +500,31 @@ def one_direction_reasons(result: PositioningResult) -> dict[str, Message]:
     return out
 
 
+#: the cell of a figure whose interval is withheld (two runs), beside the figure printed to
+#: the place of that interval (assessment 78 L1: R↑ = R↓ = R = 10″ with nothing saying so)
+WITHHELD_INTERVAL_CELL = QT_TR_NOOP("— (withheld; value rounded to {place})")
+#: the note on a figure whose interval is withheld, and the place its value is printed to
+WITHHELD_FIGURE_NOTE = QT_TR_NOOP(
+    "No coverage interval is given for {figure}: {reason}; {figure} is printed rounded to "
+    "{place}, the last place of that interval's half-width to two significant digits (GUM "
+    "7.2.6): the two runs do not give it more closely.")
+
+
+def rounding_place(decimals: int, symbol: str) -> str:
+    """The place a figure printed to ``decimals`` is rounded to, with its unit: "10″" for
+    −1, "1″" for 0, "0.01″" for 2."""
+    return f"{fixed_places(10.0 ** -decimals, max(decimals, 0))}{symbol}"
+
+
+def withheld_figure_notes(result: PositioningResult, decimals: Mapping[str, int],
+                          budget: UncertaintyBudget | None = None) -> list[Message]:
+    """For each figure whose interval is withheld (:func:`withheld_figure_reasons`), why,
+    and the place its value is printed to (``decimals``: :func:`figure_decimals`)."""
+    return [message(WITHHELD_FIGURE_NOTE, figure=key, reason=reason,
+                    place=rounding_place(decimals[key], result.symbol))
+            for key, reason in withheld_figure_reasons(result, budget).items()]
+
+
 def readings_figure_intervals(result: PositioningResult) -> dict[str, FigureInterval]:
     """:func:`figure_uncertainties` of the readings alone, without the repeatability
     figures' intervals that two runs leave undetermined (:func:`withheld_figure_reasons`)."""
@@ -516,16 +542,23 @@ def _deviation_text(s: float) -> str:
 
 
 def _figure_cells(value: float | None, interval: FigureInterval | None,
-                  sym: str, withheld: int | None = None) -> tuple[str, str, str]:
+                  sym: str, withheld: int | None = None,
+                  rounded_as_withheld: bool = False) -> tuple[str, str, str]:
     """The figure, its interval "10.2″ … 12.0″" and the interval's probability "95.45 %":
     the figure and the interval's ends to the decimal of the interval's half-width, two
     significant digits (GUM 7.2.6); without an interval the figure to ``withheld`` (the
-    decimal of the interval withheld: :func:`figure_decimals`; None: 0.001) and "—"."""
+    decimal of the interval withheld: :func:`figure_decimals`; None: 0.001) and "—", which
+    says the place the value is rounded to where that is the interval withheld's
+    (``rounded_as_withheld``: two runs, :func:`withheld_figure_reasons`)."""
     if interval is None:
         text = figure_text(value, sym, 3 if withheld is None else withheld)
         # the DCC states the figure at full precision, as the JSON does
-        return (Exact(text, float(value)) if isinstance(text, str) and value is not None
-                and math.isfinite(value) else text), "—", ""
+        figure = (Exact(text, float(value)) if isinstance(text, str) and value is not None
+                  and math.isfinite(value) else text)
+        if rounded_as_withheld and withheld is not None and isinstance(text, str):
+            return figure, message(WITHHELD_INTERVAL_CELL,
+                                   place=rounding_place(withheld, sym)), ""
+        return figure, "—", ""
     # the figure and its interval's ends (rounded outwards) to the decimal of its half-width,
     # in any unit they are read in, converted from their values (assessment 70 H3); each
     # keeps its value (``exact``) for the DCC, which states them at full precision
@@ -541,8 +574,11 @@ def _figure_cells(value: float | None, interval: FigureInterval | None,
 
 def _figure_rows(result: PositioningResult,
                  uncertainty: dict[str, FigureInterval] | None = None,
-                 decimals: dict[str, int] | None = None) -> list[tuple[str, ...]]:
-    uncertainty, decimals = uncertainty or {}, decimals or {}
+                 decimals: dict[str, int] | None = None,
+                 withheld: Mapping[str, Any] | None = None) -> list[tuple[str, ...]]:
+    """The statistics' rows; ``withheld``: the figures whose interval is withheld (their
+    reasons), whose cell says the place their value is rounded to."""
+    uncertainty, decimals, withheld = uncertainty or {}, decimals or {}, withheld or {}
     sym, f = result.symbol, result.iso.figures
     gb = result.standard == "gb17421.2"
     present = {name for name, _, _ in result.directions_present()}
@@ -554,13 +590,14 @@ def _figure_rows(result: PositioningResult,
         name = f"{chinese} {key}" if gb else message("{key}: {name}", key=key,
                                                      name=message(english))
         iso_rows.append((name, *_figure_cells(f.get(key), uncertainty.get(key), sym,
-                                                  decimals.get(key)),
+                                                  decimals.get(key), key in withheld),
                          "GB/T 17421.2" if gb else "ISO 230-2"))
     # a figure of both directions with one measured: said why, not only "not evaluated"
     why = one_direction_reasons(result)
     vdi_rows = [(message("{key}: {name}", key=k, name=message(VDI_NAMES[k])),
                  *((message(why[k]), "—", "") if k in why and (v is None or not math.isfinite(v))
-                   else _figure_cells(v, uncertainty.get(k), sym, decimals.get(k))),
+                   else _figure_cells(v, uncertainty.get(k), sym, decimals.get(k),
+                                      k in withheld)),
                  "VDI/DGQ 3441")
                 for k, v in result.vdi.as_dict().items()]
     return vdi_rows + iso_rows if result.standard == "vdi3441" else iso_rows + vdi_rows
@@ -646,7 +683,9 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                         not_stated(result),
                         estimate=decided_half_range(result, budget, intervals))
     stated = stated_figure_intervals(result, budget)
-    statistics = Statistics(_figure_rows(result, stated, figure_decimals(result, budget)),
+    decimals = figure_decimals(result, budget)
+    statistics = Statistics(_figure_rows(result, stated, decimals,
+                                         withheld_figure_reasons(result, budget)),
                             QT_TR_NOOP("targets and directions"),
                             title=QT_TR_NOOP("Figures of the axis"),
                             header=(QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"),
@@ -735,9 +774,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     if withheld is not None:
         statements.append(message(QT_TR_NOOP("No coverage interval is given for the figures: "
                                              "{reason}."), reason=message(withheld)))
-    for key, reason in withheld_figure_reasons(result, budget).items():
-        statements.append(message(QT_TR_NOOP("No coverage interval is given for {figure}: "
-                                             "{reason}."), figure=key, reason=reason))
+    statements += withheld_figure_notes(result, decimals, budget)
     statements.append(QT_TR_NOOP(
         "A specification of A, R, E, B or P conforms when the upper end of the figure's "
         "coverage interval is within it, does not conform when the lower end exceeds it, and "

@@ -105,7 +105,6 @@ from models.uncertainty.budget import (
     coverage_factor,
     divisor_for_basis,
 )
-from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.printed_figure import interval_range, printed
 from models.uncertainty.probability_text import percent_text
@@ -386,11 +385,14 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata,
 
 
 
-def _degrees_to_its_u(value_deg: float, expanded_arcsec: float, fallback: int) -> str:
-    """A parameter in degrees rounded to the last digit of its U given in arcseconds
-    (:func:`gum_pair` with U in degrees): ψ = 5.82625° with U = 6.3" (0.0018°) is 5.8263°;
-    without a U, ``fallback`` decimals."""
-    return gum_pair(value_deg, expanded_arcsec / 3600.0, "°", fallback=fallback)[0]
+def _degrees_with_u(value_deg: float, expanded_arcsec: float, fallback: int
+                    ) -> tuple[str, str]:
+    """A set-up parameter in degrees and its U, given in arcseconds, both printed in degrees
+    to the same place (:func:`gum_pair`, GUM 7.2.6): ψ = 5.82625° with U = 6.3″ is
+    "5.8263°" and "0.0018°" — not "5.8263°" beside "6.4″", a U whose last digit (0.1″) is
+    finer than the value's (0.0001° = 0.36″: assessment 78 L3); without a U, ``fallback``
+    decimals and "—"."""
+    return gum_pair(value_deg, expanded_arcsec / 3600.0, "°", fallback=fallback)
 
 
 def theodolite_json_budgets(result: TheodoliteResult, metadata: CertificateMetadata,
@@ -631,19 +633,19 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         # holds the stated bound and β's origin, no k (assessment 72 L7)
         (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
          f"U (k = {k:.2f}, ν = {nu})" if ident.tilt_identified else "U"),
-        [(QT_TR_NOOP("Axis tilt ψ"), _degrees_to_its_u(s.psi_deg, u2[0], 5), expanded_text(u2[0]))
+        [(QT_TR_NOOP("Axis tilt ψ"), *_degrees_with_u(s.psi_deg, u2[0], 5))
          if ident.tilt_identified else
          (QT_TR_NOOP("Axis tilt ψ"), message(TILT_NOT_IDENTIFIED_CELL),
           message(QT_TR_NOOP("bound {bound} (stated) in U")
                   if ident.tilt_bound_arcsec != DEFAULT_TILT_BOUND_ARCSEC else
                   QT_TR_NOOP("bound {bound} (the program's default) in U"),
                   bound=f"{ident.tilt_bound_arcsec:g}\"")),
-         (QT_TR_NOOP("Tilt direction α"), _degrees_to_its_u(s.alpha_deg, u2[1], 4),
-          expanded_text(u2[1])) if ident.alpha_determined else
+         (QT_TR_NOOP("Tilt direction α"), *_degrees_with_u(s.alpha_deg, u2[1], 4))
+         if ident.alpha_determined else
          (QT_TR_NOOP("Tilt direction α"), message(NOT_IDENTIFIED if ident.tilt_identified
                                                   else TILT_NOT_IDENTIFIED_CELL), ""),
-         (QT_TR_NOOP("Mirror normal β"), _degrees_to_its_u(s.beta_deg, u2[2], 5),
-          expanded_text(u2[2])) if ident.tilt_identified else
+         (QT_TR_NOOP("Mirror normal β"), *_degrees_with_u(s.beta_deg, u2[2], 5))
+         if ident.tilt_identified else
          (QT_TR_NOOP("Mirror normal β"), f"{s.beta_deg:.4f}°",
           message(QT_TR_NOOP("−E at the reference reading"))),
          (QT_TR_NOOP("Identified from"), message(_IDENTIFIED_FROM.get(

@@ -32,11 +32,12 @@ Decision rules, as ILAC-G8:09/2019 defines them (section 4.2):
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, joined, listed, message, separated
+from models.messages import QT_TR_NOOP, Message, joined, listed, message, separated
 from models.quantity import Quantity, UnitError, unit
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.lab_scope import held_to_cmc
@@ -918,6 +919,18 @@ def _too_uncertain(u: PrintedFigure, t: float, q: str) -> str:
                    t=tolerance_figure(t, q))
 
 
+def _with_minus_sign(name):
+    """A point's name (str or Message) with its negative figures' hyphen-minus the
+    certificate's minus sign "−": "θ = -20.0000°" is "θ = −20.0000°"."""
+    if isinstance(name, Message) and name.parts:
+        return Message(name.template, parts=tuple(_with_minus_sign(p) for p in name.parts))
+    if isinstance(name, Message) and name.figures:
+        return Message(name.template, {k: _with_minus_sign(v) for k, v in name.figures.items()})
+    if isinstance(name, str) and not isinstance(name, Message):
+        return re.sub(r"(?<![\w.])-(?=\d)", "\u2212", name)
+    return name
+
+
 def _upper_too_uncertain(u: PrintedFigure, t: float, q: str) -> str:
     """The statement when an asymmetric interval's upper half-width U₊, which guards
     acceptance, is not smaller than T: no result could be shown to conform; ``u`` as
@@ -1131,8 +1144,13 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
         name = (point_names[largest] if point_names is not None else
                 message(QT_TR_NOOP("point {n}"), n=largest + 1))
         u_max = _point_figures(float(e[largest]), float(u[largest]), q)["u"]
-        text = separated([_too_uncertain(u_max, t, q),
-                          message(QT_TR_NOOP("(at {point})"), point=name)], " ")
+        # the place inside the sentence, its angle with the certificate's minus sign
+        # (assessment 78 L2: "…within it. (at θ = -20.0000°)" after the full stop)
+        text = message(QT_TR_NOOP("No statement of conformity is possible: the expanded "
+                                  "uncertainty U = {u} (at {point}) is not smaller than the "
+                                  "tolerance T = {t}, so no result could be shown to lie "
+                                  "within it."), u=u_max, point=_with_minus_sign(name),
+                       t=tolerance_figure(t, q))
         reason = _withheld_text([*withheld, message(
             QT_TR_NOOP("U = {u} is not smaller than T = {t}"), u=u_max,
             t=tolerance_figure(t, q))])

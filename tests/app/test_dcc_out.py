@@ -446,11 +446,12 @@ def test_parameters_carry_their_printed_u_and_k_and_summary_figures_their_interv
     tree = etree.fromstring(issued["theodolite"][3].read_bytes())
     psi = next(q for q in tree.iterfind(".//dcc:quantity[@refType='anglebench_setupParameter']", NS)
                if q.findtext("dcc:name/dcc:content", namespaces=NS) == "Axis tilt ψ")
-    # printed: 5.8263° with U 6.4" (U rounded up, issue 39; 0.0018°: the value to U's
-    # last digit, GUM 7.2.6) at k = 2.07 (the parameters' own k, not the curve's)
+    # printed: 5.8263° with U 0.0018° (U rounded up, issue 39; the value to U's last digit,
+    # in one unit, GUM 7.2.6: assessment 78 L3, it was 6.4") at k = 2.07 (the parameters'
+    # own k, not the curve's)
     assert float(psi.findtext("si:real/si:value", namespaces=NS)) == 5.8263
     assert psi.findtext("si:real/si:unit", namespaces=NS) == r"\degree"
-    assert float(psi.findtext(".//si:valueExpandedMU", namespaces=NS)) == pytest.approx(6.4 / 3600)
+    assert float(psi.findtext(".//si:valueExpandedMU", namespaces=NS)) == pytest.approx(0.0018)
     assert float(psi.findtext(".//si:coverageFactor", namespaces=NS)) == 2.07
     tree = etree.fromstring(issued["positioning"][3].read_bytes())
     a = next(lst for lst in tree.iterfind(".//dcc:list[@refType='anglebench_summaryFigure']", NS)

@@ -95,7 +95,9 @@ def test_the_figures_0_8_11_read_from_a_fitted_parameter_are_gone(dccs):
     """What the set-up parameters' largest U/k was, and what is read now."""
     theodolite = etree.parse(str(dccs["theodolite"])).getroot()
     setup = _setup(theodolite)
-    assert setup[0] == pytest.approx(59.0, rel=1e-5) and setup[2] == "Tilt direction α"
+    # α's U as printed, 0.017° (59″ until its U was printed in the value's degrees:
+    # assessment 78 L3)
+    assert setup[0] == pytest.approx(0.017 * 3600, rel=1e-5) and setup[2] == "Tilt direction α"
     got = read_standard_dcc(dccs["theodolite"], SCHEMA)
     assert got.uncertainty < 2.0  # the corrected error's U, 1.44" (was 59")
     fringe = read_standard_dcc(dccs["fringe"], SCHEMA)

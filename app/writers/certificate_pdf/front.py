@@ -26,7 +26,10 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
     pdf.set_font(FONT, "B", 17)
     pdf.cell(0, 9, label(document, document.title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     pdf.set_font(FONT, "", 11)
-    pdf.cell(0, 6, pdf.say(document.kind_title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+    # the workbench's title in both languages on a bilingual certificate, as the title above
+    # (assessment 78 L9: "校准证书 Calibration certificate" over English alone)
+    pdf.cell(0, 6, " ".join(pdf.say(part) for part in _in_both(document, document.kind_title)),
+             new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     if document.specimen:
         pdf.paragraph(message(QT_TR_NOOP(
             "SPECIMEN — made from example details for training or demonstration; not a "

@@ -7,7 +7,7 @@ from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.wording import _between, _listed, _translatable, label
 from models.certificate.document import CertificateDocument, Table
 from models.certificate.metadata import APPLIES_TO_NAMES, ReferenceStandard
-from models.messages import QT_TR_NOOP, joined, message, separated
+from models.messages import QT_TR_NOOP, joined, message, separated, typed_name
 from models.quantity import UNITS, Quantity
 from models.uncertainty.budget import BASIS_DIVISORS
 from models.uncertainty.printed_figure import printed
@@ -23,7 +23,7 @@ def draw_traceability(pdf: _CertificatePdf, document: CertificateDocument) -> No
 def _standards_table(document: CertificateDocument) -> Table:
     rows = []
     for s in document.metadata.standards:
-        u = "—" if s.uncertainty is None else _stated_uncertainty(s)
+        u = "—" if s.uncertainty is None else _stated_uncertainty(s, document.reading_name)
         if s.uncertainty is None and s.certificate_no and document.stated_inputs:
             u = message(QT_TR_NOOP("as stated in the settings: {inputs}"),
                         inputs=joined(_between(", ", document.stated_inputs)))
@@ -41,13 +41,15 @@ def _standards_table(document: CertificateDocument) -> Table:
 
 
 
-def _stated_uncertainty(s: ReferenceStandard):
+def _stated_uncertainty(s: ReferenceStandard, reading_name: str = APPLIES_TO_NAMES["reading"]):
     """A standard's figure as its certificate states it: as typed, with its basis and what it
     is stated per (a reading, an angle between two readings, a face from face 1: day review
     69 F2, the budget takes u/√2 a reading of one stated per angle); read from its DCC (its
     k known), U with that k to two significant digits (GUM 7.2.6), not the every digit of
-    the U/k the budget takes."""
-    per = message(APPLIES_TO_NAMES.get(s.applies_to, s.applies_to))
+    the U/k the budget takes. A reading is called ``reading_name``, the budget's word (the
+    fringe's "sample")."""
+    per = message(reading_name if s.applies_to == "reading" else
+                  APPLIES_TO_NAMES.get(s.applies_to, s.applies_to))
     if s.coverage_factor is None:
         return message("{u} ({basis})", u=Quantity(s.uncertainty, s.uncertainty_unit),
                        basis=message(QT_TR_NOOP("{basis} per {per}"), per=per,
@@ -71,11 +73,11 @@ def _traceability(document: CertificateDocument) -> str:
                                                              or stated)]
     names = joined(_between("; ", (
         message(QT_TR_NOOP("{standard} (certificate {certificate})"),
-                standard=s.description or message(QT_TR_NOOP("standard")),
+                standard=typed_name(s.description) or message(QT_TR_NOOP("standard")),
                 certificate=s.certificate_no) if s.uncertainty is not None else
         message(QT_TR_NOOP("{standard} (certificate {certificate}; its figures enter as the "
                            "inputs stated in the settings: {inputs})"),
-                standard=s.description or message(QT_TR_NOOP("standard")),
+                standard=typed_name(s.description) or message(QT_TR_NOOP("standard")),
                 certificate=s.certificate_no, inputs=joined(_between(", ", stated)))
         for s in listed)))
     if document.untraceable:
@@ -99,7 +101,8 @@ def _traceability(document: CertificateDocument) -> str:
             parts += [message(QT_TR_NOOP("The instruments listed are comparators only; "
                                               "their calibration enters the uncertainty, not "
                                               "the reference: {names}."),
-                                   names=_listed(s.description or message(QT_TR_NOOP("standard"))
+                                   names=_listed(typed_name(s.description)
+                                                 or message(QT_TR_NOOP("standard"))
                                                  for s in standards))]
     elif not listed:
         parts = [message(QT_TR_NOOP("Metrological traceability: not established on this "
@@ -115,5 +118,6 @@ def _traceability(document: CertificateDocument) -> str:
             parts += [message(QT_TR_NOOP("{standard}: no uncertainty stated, so it is no "
                                               "input of the budget and the results are not "
                                               "traceable through it."),
-                                   standard=s.description or message(QT_TR_NOOP("standard")))]
+                                   standard=(typed_name(s.description)
+                                             or message(QT_TR_NOOP("standard"))))]
     return separated(parts, " ")  # sentence after sentence

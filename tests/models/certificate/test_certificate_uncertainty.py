@@ -135,12 +135,13 @@ def test_theodolite_setup_parameters_take_k_from_their_own_dof():
     nu = result.theta_deg.size - 3
     k = GTC.reporting.k_factor(nu, 100 * math.erf(math.sqrt(2)))
     assert document.parameters.header[2] == f"U (k = {k:.2f}, ν = {nu})"
-    u_psi = result.identification.uncertainty_deg[0] * 3600.0
+    u_psi = result.identification.uncertainty_deg[0]
     # U to two significant digits (GUM 7.2.6; three were printed before issue 39), rounded
-    # up as every printed U (issue 39, "conformity you can defend")
+    # up as every printed U (issue 39, "conformity you can defend"), in the value's degrees
+    # (assessment 78 L3: "5.8263°" beside "6.4″", a U finer than the value's place)
     printed = document.parameters.rows[0][2]
     decimals = significant_decimals(k * u_psi)
-    assert printed == f"{math.ceil(k * u_psi * 10**decimals - 1e-9) / 10**decimals:.{decimals}f}\""
+    assert printed == f"{math.ceil(k * u_psi * 10**decimals - 1e-9) / 10**decimals:.{decimals}f}°"
 
 
 # 13. the deciding point named as the results table names it ----------------------------------
