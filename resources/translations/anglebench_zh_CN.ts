@@ -101,7 +101,7 @@
     </message>
     <message>
         <source>sample</source>
-        <extracomment>the points a period is judged on when the decided quantity is the half range of the continuous as-found error (the fitted model&apos;s, over the whole period)</extracomment>
+        <extracomment>what one reading is called on the fringe&apos;s certificate: its budget&apos;s note and its standards table say a standard&apos;s figure per it (assessment 78 L4)</extracomment>
         <translation>采样点</translation>
     </message>
     <message>
@@ -4608,12 +4608,16 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>a row the analysis left out (positioning&apos;s reading of another position): a shade that stands apart from the alternate rows&apos; and the closures&apos; at any scale, black text on it still readable (gui77: the muted shade of a closure row was barely seen at 1280 × 720) the text of a figure shown in a blank cell and worked out from its row (positioning&apos;s measured − target): greyed, as no one typed it; still readable on every background a take&apos;s reading that does not match its row&apos;s point (another face, another target) the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) rows the analysis left out (its warnings say why): shaded clearly, and said so in their cells&apos; tooltip cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip cells a take filled with a reading that does not match its row&apos;s point (the table at another face, the axis at another target: live76 F1), with the text the take wrote and what to say of it: drawn apart, the words in their tooltip, while the cell holds that text (undone, retyped or taken again, the mark goes). Rows inserted or removed above move them the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) with no :attr:`origin_step` (the origin is the sheet&apos;s as it was opened: a project&apos;s record of it, models/certificate/stored_origin.py), whether the rows were edited before, and the rows pasted before (0-based, as opened) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan) the figure a blank cell (row, column) shows, worked out from its row, with what to say of it (the presenter&apos;s: Workbench.shown_in_blank), or None: shown, greyed, never written into the sheet (the editor opens on the sheet&apos;s blank text) the columns whose blank cells may show such a figure (repainted with every change)</extracomment>
+        <extracomment>a row the analysis left out (positioning&apos;s reading of another position): a shade that stands apart from the alternate rows&apos; and the closures&apos; at any scale, black text on it still readable (gui77: the muted shade of a closure row was barely seen at 1280 × 720) the text of a figure shown in a blank cell and worked out from its row (positioning&apos;s measured − target): greyed, as no one typed it; still readable on every background a take&apos;s reading that does not match its row&apos;s point (another face, another target) the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) rows the analysis left out (its warnings say why): shaded clearly, and said so in their cells&apos; tooltip cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip cells a take filled with a reading that does not match its row&apos;s point (the table at another face, the axis at another target: live76 F1), with the text the take wrote and what to say of it: drawn apart, the words in their tooltip, while the cell holds that text (undone, retyped or taken again, the mark goes). Rows inserted or removed above move them the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) with no :attr:`origin_step` (the origin is the sheet&apos;s as it was opened: a project&apos;s record of it, models/certificate/stored_origin.py), whether the rows were edited before, and the rows pasted before (0-based, as opened) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan) the figure a blank cell (row, column) shows, worked out from its row, with what to say of it (the presenter&apos;s: Workbench.shown_in_blank), or None: shown, greyed, never written into the sheet (the editor opens on the sheet&apos;s blank text) the columns whose blank cells may show such a figure (repainted with every change) {column index: unit} the settings give a column (its header shows it)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
         <source>Row {row} is left out of the analysis; the warnings above the result say why</source>
         <translation>第 {row} 行不参与分析；原因见结果上方的警告</translation>
+    </message>
+    <message>
+        <source>deg</source>
+        <translation>°</translation>
     </message>
     <message>
         <source>Edit row {row}</source>
@@ -4758,7 +4762,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {column}: what you typed (“{typed}”) was entered, then the readings were replaced ({what})</source>
-        <extracomment>the row the last editor opened in, and whether it was empty then (the entry plan fills the plan&apos;s cells of a row typed into only when it was: plan_return) the cell&apos;s text the open editor was last filled with (&quot;&quot; when none is open) a message for the status line (the workbench&apos;s view shows it): the cell being typed in was changed by another path, what was typed not entered (:meth:`dataChanged`). An object, not a str: a ``Signal(str)`` gave the slot a plain copy of the message, which the status line could not say again after View › Language (day review 64 P6) a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
+        <extracomment>the row the last editor opened in, and whether it was empty then (the entry plan fills the plan&apos;s cells of a row typed into only when it was: plan_return) ``opened_in`` of the editor whose text was last entered (setModelData): Tab opens the next cell&apos;s editor before the closed one is told of (closeEditor) the cell&apos;s text the open editor was last filled with (&quot;&quot; when none is open) a message for the status line (the workbench&apos;s view shows it): the cell being typed in was changed by another path, what was typed not entered (:meth:`dataChanged`). An object, not a str: a ``Signal(str)`` gave the slot a plain copy of the message, which the status line could not say again after View › Language (day review 64 P6) a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
         <translation>第 {row} 行 {column}：您输入的内容（“{typed}”）已被确认，随后读数被替换（{what}）</translation>
     </message>
     <message>
@@ -5185,7 +5189,9 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>reading</source>
-        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides, U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned code points What a reference standard carries of the measurand (ReferenceStandard.role; &quot;&quot; not stated: told from its other fields where they tell it, models/certificate/traceability.py): the reference the errors are measured against (the theodolite, the polygon, the positioning&apos;s reference measuring system, the fringe&apos;s phase or angle reference), the polygon test&apos;s autocollimator, the fringe&apos;s ADC. A workbench names the roles its measurand needs. What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard). each as a certificate names it after &quot;per&quot; (&quot;standard uncertainty u per angle between two readings&quot;), in the standards table as in the budget (day review 69 F2: the table said &quot;0.5″ (standard uncertainty u)&quot; alike for both, and the budget took 0.354″ unexplained)
+        <extracomment>the digest of the register record&apos;s content (models/register/chain.content_digest), carried in the PDF&apos;s keywords: a record rewritten after issue is found from the PDF the register&apos;s proof that it issued this certificate (models/register/signing.proof), carried in the PDF&apos;s keywords; &quot;&quot; without the lab&apos;s key
+----------
+the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides, U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned code points What a reference standard carries of the measurand (ReferenceStandard.role; &quot;&quot; not stated: told from its other fields where they tell it, models/certificate/traceability.py): the reference the errors are measured against (the theodolite, the polygon, the positioning&apos;s reference measuring system, the fringe&apos;s phase or angle reference), the polygon test&apos;s autocollimator, the fringe&apos;s ADC. A workbench names the roles its measurand needs. What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard). each as a certificate names it after &quot;per&quot; (&quot;standard uncertainty u per angle between two readings&quot;), in the standards table as in the budget (day review 69 F2: the table said &quot;0.5″ (standard uncertainty u)&quot; alike for both, and the budget took 0.354″ unexplained)
 ----------
 what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO), in the words of the certificate&apos;s budget (models.certificate.document.reference_standard_components)</extracomment>
         <translation>读数</translation>
@@ -5249,8 +5255,17 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>未评定：读数中没有 ↓ 方向的趋近</translation>
     </message>
     <message>
+        <source>— (withheld; value rounded to {place})</source>
+        <extracomment>the figures of one direction (ISO 230-2), by the suffix of their keys the cell of a figure whose interval is withheld (two runs), beside the figure printed to the place of that interval (assessment 78 L1: R↑ = R↓ = R = 10″ with nothing saying so)</extracomment>
+        <translation>—（未给出；数值修约到 {place}）</translation>
+    </message>
+    <message>
+        <source>No coverage interval is given for {figure}: {reason}; {figure} is printed rounded to {place}, the last place of that interval&apos;s half-width to two significant digits (GUM 7.2.6): the two runs do not give it more closely.</source>
+        <extracomment>the note on a figure whose interval is withheld, and the place its value is printed to</extracomment>
+        <translation>{figure} 不给出包含区间：{reason}；{figure} 修约到 {place}，即该区间半宽取两位有效数字时的末位（GUM 7.2.6）：两次测量不能更精确地给出它。</translation>
+    </message>
+    <message>
         <source>forward {n}</source>
-        <extracomment>the figures of one direction (ISO 230-2), by the suffix of their keys</extracomment>
         <translation>正向 {n}</translation>
     </message>
     <message>
@@ -6092,6 +6107,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source> (no coverage interval: {figures})</source>
+        <extracomment>the settings in the deviations&apos; unit (the budget&apos;s inputs the readings cannot show)</extracomment>
         <translation>（无包含区间：{figures}）</translation>
     </message>
     <message>
@@ -6928,6 +6944,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>Probability of a false rejection at this decision: at most {p} % (a bound: the deciding point&apos;s probability of lying within ±T; specific risk, JCGM 106).</source>
         <translation>本判定的误不合格概率：至多 {p} %（为上限：判定点落在 ±T 之内的概率；特定风险，JCGM 106）。</translation>
+    </message>
+    <message>
+        <source>No statement of conformity is possible: the expanded uncertainty U = {u} (at {point}) is not smaller than the tolerance T = {t}, so no result could be shown to lie within it.</source>
+        <translation>无法作符合性声明：扩展不确定度 U = {u}（在 {point}）不小于允差 T = {t}，任何结果都不能证明在其范围以内。</translation>
     </message>
     <message>
         <source>U = {u} is not smaller than T = {t}</source>
@@ -9534,6 +9554,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>one independent direction of the fitted parameters&apos; covariance, carried to the modelled phase error</source>
+        <extracomment>the points a period is judged on when the decided quantity is the half range of the continuous as-found error (the fitted model&apos;s, over the whole period)</extracomment>
         <translation>拟合参数协方差的一个独立方向，传播至模型相位误差</translation>
     </message>
     <message>
@@ -9880,7 +9901,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget.</source>
-        <extracomment>the digest of the register record&apos;s content (models/register/chain.content_digest), carried in the PDF&apos;s keywords: a record rewritten after issue is found from the PDF the register&apos;s proof that it issued this certificate (models/register/signing.proof), carried in the PDF&apos;s keywords; &quot;&quot; without the lab&apos;s key</extracomment>
         <translation>未给出、因而未计入 U 的输入量：{inputs}。U 仅包含分量一览表中的输入量。</translation>
     </message>
     <message>
@@ -9890,10 +9910,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>point {n}</source>
         <translation>第 {n} 点</translation>
-    </message>
-    <message>
-        <source>(at {point})</source>
-        <translation>（在 {point}）</translation>
     </message>
     <message>
         <source>Every point&apos;s {what} was judged against ±{t} with its own U; the deciding point is {point}: |e| = {e}, U = {u}. {sentence}</source>
@@ -10364,7 +10380,7 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     </message>
     <message>
         <source>The demonstration instrument did not start: {reason}</source>
-        <extracomment>why a take was refused, or auto-take switched off (until the next take) the workbench in front as the panel last saw it, and those it was open on</extracomment>
+        <extracomment>why a take was refused, or auto-take switched off (until the next take) the undo stack and its index just after the take the note speaks of (None: the note is of no take): the take undone (Edit › Undo), its note goes with it the workbench in front as the panel last saw it, and those it was open on</extracomment>
         <translation>演示仪器未能启动：{reason}</translation>
     </message>
     <message>
@@ -10683,7 +10699,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source> — RUN INVALID (closure failed)</source>
-        <extracomment>the window adds a polygon read from its DCC (a PolygonReference) to this workbench&apos;s standards (its U enters the budget as a polygon certificate&apos;s does); returns what to say the same, checked and stored nowhere (DccError: another polygon&apos;s; MetadataError: a standard the details cannot take): before anything of the DCC is applied the folder of the DCC schemas a DCC is validated against (&quot;&quot;: not validated) the lab&apos;s trusted certificate for a DCC&apos;s signature (a path; &quot;&quot;: the environment&apos;s) what the last certificate loaded said beside its values (a DCC&apos;s notes, the deviation column&apos;s values replaced)</extracomment>
+        <extracomment>the window adds a polygon read from its DCC (a PolygonReference) to this workbench&apos;s standards (its U enters the budget as a polygon certificate&apos;s does); returns what to say the same, checked and stored nowhere (DccError: another polygon&apos;s; MetadataError: a standard the details cannot take): before anything of the DCC is applied the folder of the DCC schemas a DCC is validated against (&quot;&quot;: not validated) the lab&apos;s trusted certificate for a DCC&apos;s signature (a path; &quot;&quot;: the environment&apos;s) what the last certificate loaded said beside its values (a DCC&apos;s notes, the deviation column&apos;s values replaced) the polygon certificate&apos;s deviations by face as last loaded (the cell&apos;s text), for the faces not yet in the table: a take of such a face fills its row&apos;s deviation (app/capture/panel.py _from_reference). live78: loaded before a live run (the table empty), the certificate changed no cell and was dropped without a word; every face taken then had no deviation, its row could not be read, and the run showed no result and no faces. Forgotten when another project is opened or a new one begun (load_state): another day&apos;s polygon may be another one.</extracomment>
         <translation> — 测量无效（闭合不合格）</translation>
     </message>
     <message>
@@ -10701,6 +10717,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>{path}: no deviation for position {position} (row {row} of the readings)</source>
         <translation>{path}：位置 {position} 没有偏差值（读数第 {row} 行）</translation>
+    </message>
+    <message>
+        <source>{path}: {count} face(s) have no row yet ({faces}); their deviations are filled in as each face is taken</source>
+        <translation>{path}：有 {count} 个面尚无行（{faces}）；每采集一个面即填入其偏差</translation>
     </message>
     <message>
         <source>Load polygon certificate</source>
@@ -13234,6 +13254,11 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <source>{items}, {item}</source>
         <extracomment>how :func:`listed` joins the items of a list (names of inputs, fields, figures): Chinese puts the enumeration comma &quot;、&quot; between them, not the clause comma &quot;，&quot;</extracomment>
         <translation>{items}、{item}</translation>
+    </message>
+    <message>
+        <source>{typed_name}</source>
+        <extracomment>a name the user typed (a standard&apos;s description) inside a sentence: as it is in English, quoted in Chinese (“…”, as the catalogue&apos;s other quoted names), so that a Latin name does not run straight into the Chinese around it (assessment 78 L5: &quot;未说明Data acquisition (16-bit ADC)的角色&quot;)</extracomment>
+        <translation>“{typed_name}”</translation>
     </message>
     <message>
         <source>a θ was read fewer than twice in a direction: its standard deviation over the passes is unknown, so no ISO 230-2 figure has a coverage interval</source>

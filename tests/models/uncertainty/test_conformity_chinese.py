@@ -83,7 +83,7 @@ def test_the_reasons_for_no_statement_are_listed_in_chinese_punctuation():
                         "Item resolution, Reading error (pointing)")
 
 
-def test_no_space_between_chinese_runs_where_a_point_is_named(tmp_path):
+def test_no_space_between_chinese_runs_where_a_point_is_named():
     """The deciding point named in Chinese follows the Chinese words without a space
     (assessment 76 L3: "起决定作用的点为 目标位置 90°"); a point named in Latin letters
     (the theodolite's θ) keeps the space that sets it off, and the English is as it was."""
@@ -99,14 +99,11 @@ def test_no_space_between_chinese_runs_where_a_point_is_named(tmp_path):
     theta = ["θ = 0.0000°", "θ = 30.0000°", "θ = 60.0000°", "θ = 90.0000°"]
     c = decide_conformity(e, budget, 3.0, "guarded", "points", point_names=theta)
     assert "起决定作用的点为 θ = 60.0000°：" in in_language(c.statement, ZH)
-    # U ≥ T at a point: "U = … (at {point}) is not smaller", in Chinese "（在 {point}）" (its
-    # template newer than the catalogue: assessment 78 L2, tests/pending_zh.py)
-    from tests.pending_zh import pending_catalogue
-
+    # U ≥ T at a point: "U = … (at {point}) is not smaller", in Chinese "（在 {point}）"
+    # (assessment 78 L2)
     c = decide_conformity(e, _budget(2.0, e.size), 3.0, "guarded", "points", point_names=names)
     assert c.verdict == "not assessed" and "(at target" in c.statement
-    with pending_catalogue(tmp_path / "translations"):
-        zh = in_language(c.statement, translator("zh_CN"))
+    zh = in_language(c.statement, translator("zh_CN"))
     assert "（在目标位置 " in zh, zh
 
 

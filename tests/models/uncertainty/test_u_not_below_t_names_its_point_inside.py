@@ -30,14 +30,11 @@ def test_the_place_of_the_largest_u_is_inside_the_sentence_with_its_minus_sign()
     assert names[0] == "θ = -20.0000°"  # the names given are not changed
 
 
-def test_in_chinese_the_place_is_inside_the_sentence_too(tmp_path):
-    from tests.pending_zh import pending_catalogue
-
+def test_in_chinese_the_place_is_inside_the_sentence_too():
     e = np.array([-0.4, 0.2])
     c = decide_conformity(e, _budget(2.0, e.size), 3.0, "guarded", "points",
                           point_names=["θ = -20.0000°", "θ = 20.0000°"])
-    with pending_catalogue(tmp_path / "translations"):
-        zh = in_language(c.statement, translator("zh_CN"))
+    zh = in_language(c.statement, translator("zh_CN"))
     assert "（在 θ = −20.0000°）不小于允差 T = 3\"" in zh, zh
     assert zh.endswith("任何结果都不能证明在其范围以内。"), zh
 
