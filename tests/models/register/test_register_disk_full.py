@@ -114,16 +114,10 @@ def test_sqlites_io_error_on_a_full_disk_is_said_as_a_full_disk(monkeypatch, fre
         assert _state(register) == before
 
 
-@pytest.mark.parametrize(("free", "said"), [
-    (0, "the disk is full at {path}: the register cannot be opened there (SQLite needs room "
-        "beside it for its journal's index); it was not changed"),
-    (10 << 30, "disk I/O error")])
-def test_sqlites_io_error_on_connecting_to_a_full_disk_is_said_as_a_full_disk(
-        monkeypatch, capsys, free, said):
-    """reg72 #7 as it happens: on a full tmpfs SQLite fails already when a connection is
-    made, its "PRAGMA journal_mode=WAL" unable to map the WAL index (SQLITE_IOERR_SHMSIZE),
-    before any write: the register's opening said "disk I/O error". With no room left in
-    the register's folder it is the full disk's words; with room, the I/O error as it is."""
+def _register_on_a_full_tmpfs(monkeypatch, free: int) -> tuple[str, str, str]:
+    """A register with one certificate issued, then SQLite failing as on a full tmpfs when a
+    connection is made (its "PRAGMA journal_mode=WAL" unable to map the WAL index,
+    SQLITE_IOERR_SHMSIZE) with ``free`` bytes left in its folder: (url, path, number)."""
     import shutil
     import sqlite3
     from collections import namedtuple
@@ -143,6 +137,20 @@ def test_sqlites_io_error_on_connecting_to_a_full_disk_is_said_as_a_full_disk(
     usage = namedtuple("usage", "total used free")
     monkeypatch.setattr(store, "_sqlite_connect", no_wal_index)
     monkeypatch.setattr(shutil, "disk_usage", lambda _path: usage(1 << 30, 1 << 30, free))
+    return url, path, number
+
+
+@pytest.mark.parametrize(("free", "said"), [
+    (0, "the disk is full at {path}: the register cannot be opened there (SQLite needs room "
+        "beside it for its journal's index); it was not changed"),
+    (10 << 30, "disk I/O error")])
+def test_sqlites_io_error_on_connecting_to_a_full_disk_is_said_as_a_full_disk(
+        monkeypatch, capsys, free, said):
+    """reg72 #7 as it happens: on a full tmpfs SQLite fails already when a connection is
+    made, its "PRAGMA journal_mode=WAL" unable to map the WAL index (SQLITE_IOERR_SHMSIZE),
+    before any write: the register's opening said "disk I/O error". With no room left in
+    the register's folder it is the full disk's words; with room, the I/O error as it is."""
+    url, path, number = _register_on_a_full_tmpfs(monkeypatch, free)
     with pytest.raises(RegisterError) as refused:
         Register(url)
     assert said.format(path=path) in str(refused.value)
@@ -161,25 +169,7 @@ def test_a_command_that_only_reads_a_register_on_a_full_disk_records_nothing_uns
     """hostile77 L1: `register list` and `verify` with the register's disk full said
     "nothing was recorded; the register is unchanged", of a command that records nothing:
     the register cannot be opened there, and it was not changed."""
-    import shutil
-    import sqlite3
-    from collections import namedtuple
-
-    import models.register.store as store
-
-    url = register_url()
-    with Register(url) as register:
-        number = _issued(register)[0]
-    path = url.split("///", 1)[1]
-
-    def no_wal_index(dbapi_connection, _record) -> None:
-        error = sqlite3.OperationalError("disk I/O error")
-        error.sqlite_errorname = "SQLITE_IOERR_SHMSIZE"
-        raise error
-
-    usage = namedtuple("usage", "total used free")
-    monkeypatch.setattr(store, "_sqlite_connect", no_wal_index)
-    monkeypatch.setattr(shutil, "disk_usage", lambda _path: usage(1 << 30, 1 << 30, 0))
+    url, path, number = _register_on_a_full_tmpfs(monkeypatch, 0)
     capsys.readouterr()
     assert main(["register", "--register", path,
                  *(c.format(number=number) for c in command)]) == 2
