@@ -14,6 +14,7 @@ import os
 import threading
 import time
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 from pathlib import Path
 from typing import Any, Protocol
 
@@ -546,8 +547,7 @@ class ProjectPresenter(QObject):
                 cells += [""] * (column + 1 - len(cells))
                 cells[column] = text
                 state.rows.edited[row] = cells
-                project.workbenches[key] = WorkbenchState(state.rows, state.settings, origin,
-                                                          state.marks)
+                project.workbenches[key] = replace(state, origin=origin)
                 continue
             rows = list(state.rows)
             while len(rows) <= row:
@@ -556,7 +556,7 @@ class ProjectPresenter(QObject):
             cells += [""] * (column + 1 - len(cells))
             cells[column] = text
             rows[row] = cells
-            project.workbenches[key] = WorkbenchState(rows, state.settings, origin, state.marks)
+            project.workbenches[key] = replace(state, rows=rows, origin=origin)
         if pending:
             project.metadata = {**project.metadata, "pending_edits": {
                 key: {"row": row + 1, "column": column + 1, "text": text,
