@@ -22,7 +22,7 @@ import re
 import string
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 __all__ = ["JOINS", "LIST_JOIN", "QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "Named", "as_sentence",
            "catalogue", "declared_text", "in_language", "joined", "lines", "listed", "message", "reason_of",
@@ -68,12 +68,12 @@ class Named(Message):
 
     window: str
 
-    def __new__(cls, template: str, window: str = "") -> Named:  # type: ignore[override]
-        obj = super().__new__(cls, template)
+    def __new__(cls, template: str, window: str = "") -> Named:
+        obj = cast(Named, super().__new__(cls, template))
         obj.window = window or template
         return obj
 
-    def __reduce__(self):  # type: ignore[override]
+    def __reduce__(self):
         return (Named, (self.template, self.window))
 
 
