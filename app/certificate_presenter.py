@@ -178,6 +178,11 @@ class CertificatePresenter:
         self.raw: dict = {}
         #: the pending amendment or replacement changed (the window shows it: rev62 F3)
         self.revision_changed: Callable[[], None] = lambda: None
+        #: a certificate was issued (workbench, number) with details its issue stored in
+        #: the project, changed (the project's: app/project_presenter.py details_issued)
+        self.details_issued: Callable[[str, str], None] = lambda _key, _number: None
+        #: the number of the certificate the last issue recorded ("" none)
+        self.last_issued: str = ""
         self._pending: PendingRevision | None = None
         # the language of a certificate whose details do not name one: the window's
         # ("zh" in a Chinese window; the main window sets it)
@@ -334,7 +339,8 @@ class CertificatePresenter:
         meta, _problems = CertificateMetadata.from_dict_lenient(stored)
         return self._with_lab_defaults(meta, key)[0]
 
-    def store_details(self, key: str, meta: CertificateMetadata) -> None:
+    def store_details(self, key: str, meta: CertificateMetadata) -> bool:
+        """``meta`` as workbench ``key``'s details in the project; whether they changed."""
         metadata = self._metadata()
         certificates = dict(metadata.get("certificates", {}))
         if certificates.get(key) != meta.to_dict():
@@ -343,6 +349,8 @@ class CertificatePresenter:
             metadata["certificates_last"] = key
             self._mark_modified()  # the details are saved with the project
             self.details_changed(key)
+            return True
+        return False
 
     def add_polygon_standard(self, key: str, reference) -> tuple:
         """Put the polygon read from its DCC (``reference``: a PolygonReference) among
@@ -563,12 +571,14 @@ class CertificatePresenter:
         # before issue (day review 67 F7)
         self.readings_line = readings_stated(kind.key, source_name, rows or [], raw_capture,
                                              kind.columns, result)[0]
+        stored = False  # the details entered changed the project's
         while True:
             entered = self.edit_details(shown)
             if entered is None:
                 self.readings_line = ""
                 return False
-            self.store_details(kind.key, dataclasses.replace(entered, certificate_number=""))
+            stored = self.store_details(kind.key, dataclasses.replace(
+                entered, certificate_number="")) or stored
             # a standard of another kind of quantity is refused, one as large as the
             # tolerance asked about, before it enters the budget (#41)
             refusals, warnings = standards_fit(entered, kind.error_unit(settings))
@@ -681,8 +691,12 @@ class CertificatePresenter:
                 self.view.show_status(self._with_dcc(said.format(
                     path=path, missing=joined(", ", (tr(m) for m in draft))), path), 10000)
                 return True
-            return self._issue(kind, result, entered, settings, rows or [], source_name, path,
-                               revision, note, raw_capture, separate, confirmed)
+            self.last_issued = ""
+            issued = self._issue(kind, result, entered, settings, rows or [], source_name,
+                                 path, revision, note, raw_capture, separate, confirmed)
+            if stored and self.last_issued:  # issued: what it stored in the project said so
+                self.details_issued(kind.key, self.last_issued)
+            return issued
         except (OSError, ValueError) as exc:
             self.view.tell(tr("Cannot export"), _refusal(
                 path, explained(exc), tr("{path}: {reason}. Nothing else was changed."),
@@ -835,6 +849,7 @@ class CertificatePresenter:
                     tr("Certificate {number} is issued and recorded in the register, but "
                        "{reason}: save its PDF from File › Certificate register."))
             said = said.format(number=exc.record.number, reason=exc)
+            self.last_issued = exc.record.number
             if exc.others:  # every file not written is named (reg72 #5)
                 said += "\n\n" + tr("Not written either: {files}.").format(
                     files="; ".join(str(other) for other in exc.others))
@@ -842,6 +857,7 @@ class CertificatePresenter:
             return False
         if revision is not None:
             self.pending = None
+        self.last_issued = record.number
         number = record.number
         if record.supersedes:  # the register's revision words, in the window's language
             number = tr("{number} ({revision} of {supersedes})").format(

@@ -110,6 +110,8 @@ class MainWindow(QMainWindow):
                                                  lambda: self.current.mark_modified())
         self.certificates.open_project_path = lambda: self.projects.path
         self.projects.refuse_issued = self.certificates.refuse_issued  # issued files (rev64 F1)
+        # the details an issue stored in the project: said so on closing (gui78)
+        self.certificates.details_issued = self.projects.details_issued
         self.imported_files: list[str] = []  # inputs: no export may replace them
         self.certificates.inputs = lambda: list(self.imported_files)
         # the test plans are saved with the lab defaults; a new project starts with them

@@ -14,6 +14,7 @@ import os
 import threading
 import time
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 from pathlib import Path
 from typing import Any, Protocol
 
@@ -29,6 +30,7 @@ from models.project.file import (
     file_sha256,
     load_project,
     project_from_json,
+    project_to_json,
     save_project,
 )
 from models.project.recovery import RecoveryStore
@@ -159,6 +161,9 @@ class ProjectPresenter(QObject):
         #: PDF, DCC or results file (the window sets it: app/issued_outputs.py)
         self.refuse_issued: Callable[[str], None] = lambda _path: None
         self.metadata: dict = {}
+        #: by workbench, the certificates whose issue stored their details in the project
+        #: since it was last saved, opened or begun (:meth:`details_issued`)
+        self.issued_details: dict[str, list[str]] = {}
         #: the instruments' raw frames, saved and opened with the project (the window sets
         #: its capture panel's raw_capture and load_raw_capture)
         self.raw_capture: Callable[[], dict] = dict
@@ -229,6 +234,7 @@ class ProjectPresenter(QObject):
         where they came from (models/certificate/stored_origin.py)."""
         self.project_replaced()
         self.readings_source = None
+        self.issued_details = {}
         # the details first: the workbenches' plots draw the tolerance they set
         self.metadata = dict(project.metadata)
         self.metadata.pop("autosaved_at", None)
@@ -249,14 +255,52 @@ class ProjectPresenter(QObject):
 
     def confirm_discard(self, question: str = "") -> bool:
         """True when there is nothing unsaved, or the user saved it or lets it go;
-        ``question``: what the window asks, naming what replaces the work (else its own)."""
+        ``question``: what the window asks, naming what replaces the work (else its own:
+        when all that differs from the file is the certificate details an issue stored,
+        it says so, :meth:`issued_details_question`)."""
         if not self.is_modified:
             return True
+        question = question or self.issued_details_question()
         answer = self.view.ask_save_changes(question) if question else \
             self.view.ask_save_changes()
         if answer:
             return self.save()
         return answer is False
+
+    def details_issued(self, workbench: str, number: str) -> None:
+        """Certificate ``number`` of ``workbench`` was issued with details that its issue
+        stored in the project (the details dialog's, the number left out: the next
+        certificate of the project starts from them), not yet in the project's file."""
+        numbers = self.issued_details.setdefault(workbench, [])
+        if number not in numbers:
+            numbers.append(number)
+
+    def issued_details_question(self) -> str:
+        """What to ask before the work goes when the only difference between the project
+        and its file is the certificate details issues stored (:meth:`details_issued`):
+        which certificates, and that the register keeps them as issued; "" otherwise
+        (the generic question). gui78 (live78 F9): "Unsaved changes — Save the changes to
+        the project first?" right after an issue, though the user changed nothing after
+        the save but the details typed for the certificate."""
+        if not self.issued_details or self.path is None:
+            return ""
+        try:
+            saved = load_project(self.path, {p.kind.key: p.kind for p in self.presenters})
+        except (ProjectFileError, OSError, ValueError):
+            return ""
+        now = self.project()
+        details = ("certificates", "certificates_last")
+        now.metadata = {**{k: v for k, v in now.metadata.items() if k not in details},
+                        **{k: v for k, v in saved.metadata.items() if k in details}}
+        if project_to_json(now) != project_to_json(saved):
+            return ""  # readings, settings or more changed too: the generic question
+        numbers = [n for key in self.issued_details for n in self.issued_details[key]]
+        return tr("Issuing {numbers} stored the certificate details entered for it in this "
+                  "project; they are not yet saved in {file}. The register keeps them with "
+                  "the certificate as issued; nothing else was changed since the project was "
+                  "saved. Save the details in the project (the next certificate of this "
+                  "project starts from them)?").format(numbers=", ".join(numbers),
+                                                       file=self.path.name)
 
     def new_project(self) -> None:
         if not self.confirm_discard():
@@ -409,6 +453,7 @@ class ProjectPresenter(QObject):
             agreed = current  # replace that version (checked again: a later one asks again)
         self.path = Path(path)
         self.disk_sha256 = digest
+        self.issued_details = {}
         for presenter in self.presenters:
             presenter.mark_saved()
         self.recovery.discard()
@@ -546,8 +591,7 @@ class ProjectPresenter(QObject):
                 cells += [""] * (column + 1 - len(cells))
                 cells[column] = text
                 state.rows.edited[row] = cells
-                project.workbenches[key] = WorkbenchState(state.rows, state.settings, origin,
-                                                          state.marks)
+                project.workbenches[key] = replace(state, origin=origin)
                 continue
             rows = list(state.rows)
             while len(rows) <= row:
@@ -556,7 +600,7 @@ class ProjectPresenter(QObject):
             cells += [""] * (column + 1 - len(cells))
             cells[column] = text
             rows[row] = cells
-            project.workbenches[key] = WorkbenchState(rows, state.settings, origin, state.marks)
+            project.workbenches[key] = replace(state, rows=rows, origin=origin)
         if pending:
             project.metadata = {**project.metadata, "pending_edits": {
                 key: {"row": row + 1, "column": column + 1, "text": text,

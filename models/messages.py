@@ -22,9 +22,9 @@ import re
 import string
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
-__all__ = ["JOINS", "LIST_JOIN", "QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "as_sentence",
+__all__ = ["JOINS", "LIST_JOIN", "QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "Named", "as_sentence",
            "catalogue", "declared_text", "in_language", "joined", "lines", "listed", "message", "reason_of",
            "rendered", "separated", "translator", "typed_name", "unit_tail"]
 
@@ -56,6 +56,25 @@ class Message(str):
     def __reduce__(self) -> tuple[type[Message], tuple[str, dict[str, Any], tuple[Any, ...]]]:
         # copies and pickles keep the template and figures
         return (Message, (self.template, self.figures, self.parts))
+
+
+class Named(Message):
+    """A setting or a certificate field named in a message, as the command line and the
+    files name it (the English text and :attr:`template`: its key and option, e.g.
+    "reading_noise_arcsec; on the command line --reading-noise-arcsec") and as the window
+    labels it (:attr:`window`, e.g. the set-up field's label): :func:`rendered` for the
+    window gives the latter. gui78 (live78): the window's verdicts named internal keys
+    ("item_resolution") to the technician, in both languages."""
+
+    window: str
+
+    def __new__(cls, template: str, window: str = "") -> Named:
+        obj = cast(Named, super().__new__(cls, template))
+        obj.window = window or template
+        return obj
+
+    def __reduce__(self):
+        return (Named, (self.template, self.window))
 
 
 def message(template: str, **figures: Any) -> Message:
@@ -153,15 +172,16 @@ def reason_of(exc: BaseException) -> str:
     return str(exc)
 
 
-def rendered(text: str, translate: Callable[[str], str]) -> str:
+def rendered(text: str, translate: Callable[[str], str], window: bool = False) -> str:
     """``text`` with each template translated by ``translate`` and filled with the same
-    figures (a plain ``str`` comes back as it is)."""
+    figures (a plain ``str`` comes back as it is). ``window``: for the window, which names
+    a setting as its form labels it (:class:`Named`); else as the command line does."""
     if not isinstance(text, Message):
         return text
     if text.parts:
-        return "".join(rendered(part, translate) for part in text.parts)
-    template = text.template
-    figures = {key: rendered(value, translate) if isinstance(value, str) else value
+        return "".join(rendered(part, translate, window) for part in text.parts)
+    template = text.window if window and isinstance(text, Named) else text.template
+    figures = {key: rendered(value, translate, window) if isinstance(value, str) else value
                for key, value in text.figures.items()}
     words = translate(template)
     # a translation that quotes a typed name itself ("未说明“{unnamed}”的角色") does not quote

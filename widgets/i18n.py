@@ -140,7 +140,8 @@ def translated(text: str) -> str:
     """A result text of the models (models.messages.Message) in the window's language:
     its template translated and filled with the same figures (a :class:`Said`: said again,
     it is translated anew); plain text as it is."""
-    said = rendered(text, lambda template: QCoreApplication.translate("", template))
+    said = rendered(text, lambda template: QCoreApplication.translate("", template),
+                    window=True)
     return Said(said, lambda: translated(text)) if isinstance(text, Message) else said
 
 

@@ -9,6 +9,7 @@ plot's view changes size (after the layout has settled, not before)."""
 from __future__ import annotations
 
 import html
+import math
 
 import numpy as np
 import pyqtgraph as pg
@@ -130,6 +131,12 @@ def _legend_above(plot_item, legend) -> None:
         if drawn <= available or "<br>" not in lines and len(entries) < 2:
             break
         width *= 0.97 * available / drawn
+    # the title's row as tall as its lines (PlotItem.setTitle holds it at 30 px, one line's:
+    # the two lines of title and legend were cut at the top, gui78 / live78's positioning
+    # plot "Mean positional deviation with ±2s")
+    height = max(30, math.ceil(plot_item.titleLabel.item.boundingRect().height()) + 2)
+    plot_item.titleLabel.setMaximumHeight(height)
+    plot_item.layout.setRowFixedHeight(0, height)
     _refit(plot_item)
 
 

@@ -108,6 +108,11 @@ class ReadingsTableModel(QAbstractTableModel):
         self.shown_columns: tuple[int, ...] = ()
         #: {column index: unit} the settings give a column (its header shows it)
         self.header_units: dict[int, str] = {}
+        #: the cells an edit's own cells bring with them, in the same undo step (the
+        #: presenter's; [] by default): a polygon face typed after its certificate was
+        #: loaded gets its deviation (gui78)
+        self.cells_brought: Callable[[list[tuple[int, int, str]]],
+                                     list[tuple[int, int, str]]] = lambda changes: []
         self._waiting_from: int | None = None  # the first of them (None: none)
         self._planned: int | None = None
         self._waiting_known = False
@@ -389,6 +394,8 @@ class ReadingsTableModel(QAbstractTableModel):
         the clipboard (:meth:`readings_origin`)."""
         changes = [(r, c, t) for r, c, t in changes if 0 <= c < self.sheet.column_count]
         if changes:
+            changes += [(r, c, t) for r, c, t in self.cells_brought(changes)
+                        if 0 <= c < self.sheet.column_count]
             self.undo_stack.push(SetCellsCommand(self, changes, label or tr("Edit cells"),
                                                  takes, columns, pasted))
 

@@ -186,3 +186,19 @@ class SettingsCommand(QUndoCommand):
 
     def undo(self) -> None:
         self._apply(self._old)
+
+
+class KeptValueCommand(QUndoCommand):
+    """A value a workbench keeps beside its rows set (a polygon certificate's deviations by
+    face, loaded before the faces have rows: gui78); ``apply`` takes the value to keep. An
+    undo step, so that the project counts as changed and its undo puts the old one back."""
+
+    def __init__(self, apply, old, new, label: str) -> None:
+        super().__init__(label)
+        self._apply, self._old, self._new = apply, old, new
+
+    def redo(self) -> None:
+        self._apply(self._new)
+
+    def undo(self) -> None:
+        self._apply(self._old)

@@ -388,6 +388,21 @@ class WorkbenchView(QWidget):
         self.step_label.setText(tr("next {column} +").format(column=declared(
             self._nominal_title)) if self._nominal_title else "")
         self._fit_left_pane()  # the set-up's captions are as wide as the language makes them
+        self._fit_headers()
+
+    def _fit_headers(self) -> None:
+        """Columns sized once (a long sheet, a live capture's) as wide as their headers in
+        the language now chosen, no narrower (gui78, live78: "准直仪 x [" — the Chinese
+        "自准直仪 x [\"]" cut to the English header's width); columns that follow their
+        contents do so by themselves. Only widened: the contents are not measured again."""
+        header = self.table.horizontalHeader()
+        if header.count() == 0 or \
+                header.sectionResizeMode(0) == QHeaderView.ResizeMode.ResizeToContents:
+            return
+        for column in range(header.count()):
+            needed = header.sectionSizeFromContents(column).width()
+            if header.sectionSize(column) < needed:
+                header.resizeSection(column, needed)
 
     def set_entry_columns(self, nominal: int | None, entry: int, nominal_title: str) -> None:
         self.table.nominal_column, self.table.entry_column = nominal, entry

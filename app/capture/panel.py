@@ -1835,8 +1835,14 @@ class CapturePanel(QDockWidget):
         times = np.array([t for t, _, _ in kept])
         start = last_even_run(times)
         if len(kept) - start < 16:
-            self.allan.setText(tr("Allan deviation: waiting for frames after the gap")
-                               if self.frames else "")
+            if not self.frames:
+                self.allan.setText("")
+            elif link.gap_before > -math.inf:  # the link lost, a pause, the target gone
+                self.allan.setText(tr("Allan deviation: waiting for frames after the gap"))
+            else:  # no gap: frames that came unevenly (gui78, live78: "after the gap" said
+                # right after a fresh connection)
+                self.allan.setText(tr("Allan deviation: waiting for 16 frames at an even pace "
+                                      "({count} so far)").format(count=len(kept) - start))
             return
         first = np.array([v[0] for _, v, _ in kept[start:]])
         if degrees:
@@ -1846,7 +1852,8 @@ class CapturePanel(QDockWidget):
             self.allan.setText(tr("Allan deviation: the reading is moving (waiting for it to "
                                   "stay still)"))
             return
-        after_gap = start > 0 or len(kept) != len(self.frames)
+        after_gap = len(kept) != len(self.frames)  # the frames after a gap of the link
+        uneven = start > 0  # the frames since their spacing last broke
         times, first = times[start + still:], first[still:]
         tau0 = float(np.median(np.diff(times)))
         taus, adev = allan_deviation(first, tau0)
@@ -1859,6 +1866,9 @@ class CapturePanel(QDockWidget):
             said = tr("Allan deviation (first axis, since the reading last moved): {figures}")
         elif after_gap:
             said = tr("Allan deviation (first axis, since the last gap): {figures}")
+        elif uneven:
+            said = tr("Allan deviation (first axis, since the frames' pace last broke): "
+                      "{figures}")
         else:
             said = tr("Allan deviation (first axis): {figures}")
         self.allan.setText(said.format(figures=figures))

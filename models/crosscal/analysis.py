@@ -27,6 +27,7 @@ from models.crosscal.figures import ENCODER_FIGURES_NO_INTERVAL, encoder_figures
 from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, Message, joined, lines, message, reason_of, separated
+from models.named_settings import DRIFT_BOUND_SETTING
 from models.parameters import Parameter, SettingsError
 from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
@@ -202,9 +203,8 @@ class CrossCalResult:
             "the autocollimator's drift is not measured, and a drift the same way in every "
             "mounting is a ramp over the encoder's steps that these readings cannot tell from "
             "the encoder's error; add a closure reading to each mounting (its first face read "
-            "again at the end) or state the largest drift over a mounting (the setting "
-            "\"largest autocollimator drift over a mounting\"; --drift-bound-arcsec, "
-            "drift_bound_arcsec in the metadata)"), mountings=", ".join(map(str, unchecked)))
+            "again at the end) or state the largest drift over a mounting {setting}"),
+            mountings=", ".join(map(str, unchecked)), setting=DRIFT_BOUND_SETTING)
 
     @property
     def polygon_u_withheld(self) -> str | None:
@@ -229,9 +229,8 @@ class CrossCalResult:
             "from mounting to mounting moves the face deviations, which nothing in these "
             "readings bounds (σ stated, or a drift not shared by every mounting); add a closure "
             "reading to each mounting (its first face read again at the end) or state the "
-            "largest drift over a mounting (the setting \"largest autocollimator drift over a "
-            "mounting\"; --drift-bound-arcsec, drift_bound_arcsec in the metadata)"),
-            mountings=", ".join(map(str, unchecked)))
+            "largest drift over a mounting {setting}"),
+            mountings=", ".join(map(str, unchecked)), setting=DRIFT_BOUND_SETTING)
 
     def u_withheld(self, item: str) -> str | None:
         """Why ``item``'s U ("encoder", "polygon") is not given, or None."""

@@ -1054,12 +1054,16 @@ def summary(result: FringeResult) -> str:
         _fit_line("B", result.cos_fit, stated.channels.get("cos"), no_u),
         message(QT_TR_NOOP("Offsets {sin} / {cos} mV, amplitude ratio {ratio}, quadrature error "
                            "{quadrature}°"),
-                sin=f"{1e3 * result.sin_fit.offset:+.2f}", cos=f"{1e3 * result.cos_fit.offset:+.2f}",
+                # a figure that rounds to zero unsigned, as the window prints zero (live78:
+                # "Offsets -0.00 / +0.00 mV")
+                sin=fixed_places(1e3 * result.sin_fit.offset, 2, "+"),
+                cos=fixed_places(1e3 * result.cos_fit.offset, 2, "+"),
                 ratio=f"{result.amplitude_ratio:.4f}",
-                quadrature=f"{result.quadrature_error_deg:+.3f}"),
+                quadrature=fixed_places(result.quadrature_error_deg, 3, "+")),
         message(QT_TR_NOOP("Interpolation error as found: {low} … {high} (peak-to-peak {ptp}, "
                            "{share} % of a period)"),
-                low=f"{result.raw_range[0]:+.3f}{sym}", high=f"{result.raw_range[1]:+.3f}{sym}",
+                low=f"{fixed_places(result.raw_range[0], 3, '+')}{sym}",
+                high=f"{fixed_places(result.raw_range[1], 3, '+')}{sym}",
                 ptp=f"{result.raw_peak_to_peak:.3f}{sym}",
                 share=f"{result.raw_peak_to_peak / period * 100:.2f}"),
         message(QT_TR_NOOP("After compensation ({entries}-entry table, zero at its mean): {low} … "
@@ -1067,8 +1071,8 @@ def summary(result: FringeResult) -> str:
                 if result.table_zero == "mean" else
                 QT_TR_NOOP("After compensation ({entries}-entry table, zero at its phase 0): "
                            "{low} … {high} (peak-to-peak {ptp}, {share} %)"),
-                entries=result.table.size, low=f"{result.compensated_range[0]:+.3f}{sym}",
-                high=f"{result.compensated_range[1]:+.3f}{sym}",
+                entries=result.table.size, low=f"{fixed_places(result.compensated_range[0], 3, '+')}{sym}",
+                high=f"{fixed_places(result.compensated_range[1], 3, '+')}{sym}",
                 ptp=f"{result.compensated_peak_to_peak:.3f}{sym}",
                 share=f"{result.compensated_peak_to_peak / period * 100:.2f}"),
     ]

@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of, separated
+from models.named_settings import ITEM_RESOLUTION_FIELD
 from models.number_text import fixed
 from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, MEASURAND_STANDARDS, TITLE
@@ -681,14 +682,14 @@ def rounding_warnings(rounding) -> list[str]:
             "Every encoder reading lies on its face's nominal angle and the autocollimator "
             "read one value throughout: every error is 0 as typed, whatever the encoder's true "
             "errors within its display's step. No uncertainty can be given unless the "
-            "certificate details state the item's resolution (item_resolution).")))
+            "certificate details state {resolution}."), resolution=ITEM_RESOLUTION_FIELD))
     elif rounding.encoder_on_nominal and not rounding.repeated:
         out.append(message(QT_TR_NOOP(
             "Every encoder reading lies on its face's nominal angle (the encoder set to each "
             "nominal): where the shaft stopped within its display's step is in each error but "
             "in no scatter the readings show, and no direction was read twice. Unless the "
-            "certificate details state the item's resolution (item_resolution), it is named "
-            "as not stated and no statement of conformity is made.")))
+            "certificate details state {resolution}, it is named as not stated and no "
+            "statement of conformity is made."), resolution=ITEM_RESOLUTION_FIELD))
     for counts, step, spread, what in (
             (rounding.encoder_counts, rounding.encoder_step_arcsec,
              rounding.encoder_spread_arcsec, message(QT_TR_NOOP("encoder"))),

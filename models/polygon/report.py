@@ -94,6 +94,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.withheld import UncertaintyWithheld
 from models.messages import QT_TR_NOOP, message, reason_of, separated
+from models.named_settings import ITEM_RESOLUTION_FIELD, READING_NOISE_IN_SETTINGS
 from models.polygon import KEY, MEASURAND_STANDARDS, TITLE
 from models.polygon.budget_inputs import (
     PYRAMIDAL_INPUT,
@@ -306,8 +307,8 @@ ONE_SET_NOISE_NOT_DETERMINED = QT_TR_NOOP(
     "no uncertainty can be given: with one set the readings cannot tell the reading noise "
     "from the faces' own pyramidal errors (the vertical readings' scatter about the tilt fit "
     "holds both, and the encoder's own noise is in neither). State the σ of a reading, "
-    "encoder and autocollimator together, in the settings (reading_noise_arcsec; on the "
-    "command line --reading-noise-arcsec), or measure each direction, or one direction twice")
+    "encoder and autocollimator together, {where}, or measure each direction, or one "
+    "direction twice")
 
 
 def reading_noise_withheld(result: PolygonResult) -> str | None:
@@ -382,7 +383,8 @@ def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: fl
             # one set: its errors' noise (the encoder's and the horizontal reading's) has no
             # degrees of freedom in the readings, and the vertical fit's scatter holds the
             # faces' own pyramidal errors besides the autocollimator's noise
-            raise UncertaintyWithheld(message(ONE_SET_NOISE_NOT_DETERMINED))
+            raise UncertaintyWithheld(message(ONE_SET_NOISE_NOT_DETERMINED,
+                                              where=READING_NOISE_IN_SETTINGS))
         if dof > 0 and noise > 0:
             name = (QT_TR_NOOP("Autocollimator reading noise (mean of {sets} sets)")
                     if len(result.sets) > 1 else
@@ -1010,8 +1012,8 @@ def _rounding_components(result: PolygonResult, metadata: CertificateMetadata, z
         raise UncertaintyWithheld(message(QT_TR_NOOP(
             "no uncertainty can be given: every encoder reading lies on its face's nominal "
             "angle and the autocollimator read one value throughout, so every error is 0 as "
-            "typed whatever the encoder's true errors within its display's step; state the "
-            "item's resolution (item_resolution) in the certificate details")))
+            "typed whatever the encoder's true errors within its display's step; state "
+            "{resolution} in the certificate details"), resolution=ITEM_RESOLUTION_FIELD))
     out = []
     for name, width, note, bounded in _rounding_inputs(result, stated):
         if bounded and not bounded_too:

@@ -96,6 +96,11 @@ class WorkbenchState:
     #: the readings table's cell marks as the file keeps them (``cell_marks``:
     #: models/project/cell_marks.py; empty: none, or a file written before they were kept)
     marks: list[dict[str, Any]] = field(default_factory=list)
+    #: a polygon certificate's deviations by face, as loaded (the cells' text), kept for the
+    #: faces the table has no row of yet: a face taken or typed later gets its deviation
+    #: (``certificate_by_face``, optional: empty for other workbenches, for none loaded, and
+    #: in a file written before they were kept; gui78)
+    certificate_by_face: dict[int, str] = field(default_factory=dict)
 
 
 @dataclass
@@ -154,6 +159,9 @@ def project_json_parts(project: Project, between_blocks: Callable[[], None] | No
             yield f',"readings_origin":{dumps(state.origin)}'
         if state.marks:
             yield f',"cell_marks":{dumps(state.marks)}'
+        if state.certificate_by_face:
+            yield (',"certificate_by_face":'
+                   f'{dumps({str(k): v for k, v in sorted(state.certificate_by_face.items())})}')
         yield "}"
     yield "}"
     raw = {str(k): v for k, v in project.raw_capture.items() if v}
@@ -283,10 +291,25 @@ def project_from_json(text: str, source: str = "project",
         marks = state.get("cell_marks", [])
         project.workbenches[str(key)] = WorkbenchState(
             clean_rows, dict(settings), dict(origin) if isinstance(origin, dict) else None,
-            [dict(m) for m in marks if isinstance(m, dict)] if isinstance(marks, list) else [])
+            [dict(m) for m in marks if isinstance(m, dict)] if isinstance(marks, list) else [],
+            _certificate_by_face(state.get("certificate_by_face")))
     project.raw_capture = _raw_capture(document.get("raw_capture", {}), source)
     project.repairs = repairs
     return project
+
+
+def _certificate_by_face(kept: Any) -> dict[int, str]:
+    """The polygon certificate's deviations by face as the file keeps them (optional): each
+    face a whole number ≥ 1 with its deviation's text; an entry that is not is left out,
+    never a refused project (the certificate can be loaded again)."""
+    if not isinstance(kept, dict):
+        return {}
+    out: dict[int, str] = {}
+    for face, value in kept.items():
+        if isinstance(face, str) and face.isdigit() and int(face) >= 1 \
+                and isinstance(value, str) and value.strip():
+            out[int(face)] = value.strip()
+    return out
 
 
 #: a UTF-16 surrogate written as a JSON escape (a pair, or half of one), or one in the text

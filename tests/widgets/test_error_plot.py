@@ -122,3 +122,29 @@ def test_each_series_is_drawn_over_its_own_x(qtbot):
     with pytest.raises(ValueError, match="the model series 'set-up model' has 5 values over "
                                          "12 x values"):
         plot.show_figure(broken)
+
+
+@pytest.mark.slow
+def test_a_titled_plot_s_legend_above_it_is_not_cut_at_the_top(qtbot):
+    """A plot with a title whose legend goes above the data (the positioning plot "Mean
+    positional deviation with ±2s" at 1280×720, live78): the title and the legend's line
+    are two lines, which pyqtgraph's 30 px title row cut at the top (gui78); the row holds
+    them all."""
+    plot = ErrorPlot()
+    qtbot.addWidget(plot)
+    plot.resize(420, 330)
+    plot.show()
+    plot.main_plot.setTitle("Mean positional deviation with ±2s")
+    x = np.linspace(0, 100, 400)
+    wave = np.sin(x / 3.0)  # fills every corner
+    plot.set_curve_names("raw error", "set-up model", "corrected")
+    plot.set_curves(x, raw=wave, model=0.9 * wave, corrected=wave)
+    qtbot.waitUntil(lambda: plot.main_plot.legend_corner == "above")
+    label = plot.main_plot.titleLabel
+    assert label.text.startswith("Mean positional deviation with ±2s<br>"), label.text
+    lines = label.item.boundingRect().height()
+    assert lines > 30, lines  # two lines, more than pyqtgraph's row
+    qtbot.waitUntil(lambda: label.geometry().height() > 0)  # laid out
+    qtbot.wait(50)
+    assert label.geometry().height() >= lines, (label.geometry(), lines)
+    assert label.item.pos().y() >= 0, label.item.pos()  # its top line not above the row

@@ -35,7 +35,11 @@ def test_one_set_without_sigma_shows_no_interval_and_says_what_to_state(window, 
     presenter.refresh()
     shown = " ".join(presenter.view.verdict.text().split())
     assert "No statement of conformity: no uncertainty can be given" in shown, shown
-    assert "--reading-noise-arcsec" in shown and "Decided value" not in shown, shown
+    # the set-up's field as the window labels it (gui78: "reading_noise_arcsec; on the
+    # command line --reading-noise-arcsec" was shown to the technician)
+    assert "in the set-up (“σ of a reading, when not evaluated”)" in shown, shown
+    assert "reading_noise_arcsec" not in shown and "--reading" not in shown, shown
+    assert "Decided value" not in shown, shown
     sigma = math.hypot(bench.sigma_enc_arcsec, bench.sigma_ac_arcsec)
     presenter.set_settings({**presenter.settings, "reading_noise_arcsec": round(sigma, 3)})
     presenter.refresh()

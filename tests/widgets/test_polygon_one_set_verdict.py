@@ -20,8 +20,9 @@ from models.readings.sheet import ReadingsSheet
 from models.registry import KINDS
 from tests.polygon_one_set_rig import OneSetBench, write_csv
 
-#: what the refusal names: the setting and its command-line option
-ASKS = ("σ of a reading", "reading_noise_arcsec", "--reading-noise-arcsec")
+#: what the window's refusal names: the set-up's field as the window labels it (gui78: not
+#: the setting's key and command-line option, which the command line keeps)
+ASKS = ("σ of a reading", "in the set-up (“σ of a reading, when not evaluated”)")
 DETAILS = CertificateMetadata.from_dict({
     "lab_name": "Lab", "customer_name": "Customer", "item_description": "Rotary encoder",
     "item_serial": "E-1", "calibration_date": "2026-11-20", "operator": "Wang",

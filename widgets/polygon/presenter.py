@@ -15,6 +15,7 @@ from models.project.file import WorkbenchState
 from models.readings.tabular_import import TableImportError
 from widgets.i18n import declared, explained, tr, translated
 from widgets.polygon.view import PolygonView
+from widgets.table_commands import KeptValueCommand
 from widgets.workbench_presenter import WorkbenchPresenter
 
 
@@ -57,9 +58,12 @@ class PolygonPresenter(WorkbenchPresenter):
         #: (app/capture/panel.py _from_reference). live78: loaded before a live run (the
         #: table empty), the certificate changed no cell and was dropped without a word;
         #: every face taken then had no deviation, its row could not be read, and the run
-        #: showed no result and no faces. Forgotten when another project is opened or a
-        #: new one begun (load_state): another day's polygon may be another one.
+        #: showed no result and no faces. Saved with the project (WorkbenchState.
+        #: certificate_by_face), another project's taken when one is opened or a new one
+        #: begun (load_state): another day's polygon may be another one. A row typed with
+        #: a face and its reading gets it too (:meth:`_deviation_cells`, gui78).
         self.face_deviations: dict[int, str] = {}
+        self.table_model.cells_brought = self._deviation_cells
 
     def show_result(self, result: PolygonResult) -> None:
         self.table_model.set_highlight_rows(result.closure_rows)
@@ -208,19 +212,76 @@ class PolygonPresenter(WorkbenchPresenter):
                     "{path}: no deviation for position {position} (row {row} of the readings)"),
                     path=str(path), position=position, row=row + 1))
             changes.append((row, column, format(deviations[position], spec)))
-        self.table_model.set_cells(changes, label)
-        self.face_deviations = {face: format(value, spec) for face, value in deviations.items()}
+        kept = {face: format(value, spec) for face, value in deviations.items()}
+        # the cells and the deviations kept, one undo step: the project is changed by it
+        # even when no row has a face yet, and saved with them (gui78)
+        if kept == self.face_deviations:
+            self.table_model.set_cells(changes, label)
+        else:
+            self.undo_stack.beginMacro(label)
+            self.table_model.set_cells(changes, label)
+            self.undo_stack.push(KeptValueCommand(self._keep_face_deviations,
+                                                  self.face_deviations, kept, label))
+            self.undo_stack.endMacro()
         in_table = set(self._positions())
         waiting = sorted(face for face in deviations if face not in in_table)
         if waiting:  # said: a certificate loaded before the run changes no cell
             self.view.show_status(tr("{path}: {count} face(s) have no row yet ({faces}); their "
-                                     "deviations are filled in as each face is taken").format(
+                                     "deviations are filled in as each face is taken or "
+                                     "typed").format(
                 path=Path(path).name, count=len(waiting), faces=_face_list(waiting)))
         return len(changes)
 
+    def _keep_face_deviations(self, kept: dict[int, str]) -> None:
+        self.face_deviations = dict(kept)
+
+    def _deviation_cells(self, changes: list[tuple[int, int, str]]
+                         ) -> list[tuple[int, int, str]]:
+        """The deviations an edit's rows get from the certificate kept by face (as a take
+        gets its face's: app/capture/panel.py _from_reference): each row the edit touches
+        that then has its face and a reading but a blank deviation, the edit not writing
+        that cell — another row's deviation for the face if the table has one, else the
+        certificate's. live78: a row typed by hand after the certificate was loaded on an
+        empty table got none; red, and no result."""
+        if not self.face_deviations:
+            return []
+        sheet = self.sheet
+        dev, position = (sheet.column_index("polygon_dev_arcsec"),
+                         sheet.column_index("position"))
+        readings = [sheet.column_index(k) for k in self.kind.plan_reading_keys]
+        new = {(r, c): t for r, c, t in changes}
+
+        def text(r: int, c: int) -> str:
+            if (r, c) in new:
+                return new[(r, c)].strip()
+            return sheet.text(r, c).strip() if r < sheet.row_count else ""
+
+        out = []
+        for row in sorted({r for r, _, _ in changes}):
+            face = text(row, position)
+            if (row, dev) in new or text(row, dev) or not face.isdigit() \
+                    or int(face) not in self.face_deviations \
+                    or not any(text(row, c) for c in readings):
+                continue
+            known = {sheet.text(r, dev).strip() for r in range(sheet.row_count)
+                     if r != row and sheet.text(r, position).strip() == face
+                     and sheet.text(r, dev).strip()}
+            # one deviation per face; two different ones are the technician's to settle
+            if not known:
+                known = {self.face_deviations[int(face)]}
+            if len(known) == 1:
+                out.append((row, dev, known.pop()))
+        return out
+
+    def state(self, deep: bool = True) -> WorkbenchState:
+        state = super().state(deep)
+        state.certificate_by_face = dict(self.face_deviations)
+        return state
+
     def load_state(self, state: WorkbenchState, project: str = "") -> None:
+        # another project's: its polygon may be another one (none kept: none)
+        self.face_deviations = dict(state.certificate_by_face)
         super().load_state(state, project)
-        self.face_deviations = {}  # another project: its polygon may be another one
 
     def _positions(self) -> list[int]:
         """The face numbers in the position column (unreadable cells left out)."""

@@ -96,7 +96,7 @@ def test_the_allan_deviation_is_of_the_still_frames_in_the_instruments_unit(wind
             # (two whole-suite runs on 2026-12-07 read "waiting for frames after the gap")
             panel._allan_due = 0.0
             qtbot.waitUntil(lambda: panel._allan_due > 0.0, timeout=3000)
-            return not panel.allan.text().endswith("waiting for frames after the gap")
+            return not panel.allan.text().startswith("Allan deviation: waiting")
 
         qtbot.waitUntil(figured, timeout=8000)
         shown = panel.allan.text()
@@ -104,7 +104,9 @@ def test_the_allan_deviation_is_of_the_still_frames_in_the_instruments_unit(wind
     assert values.max() > 250.0 and values.min() < 50.0  # the frames kept hold the moves
     # the frames since the last move (or a gap of the stream after it): never across one
     assert shown.startswith(("Allan deviation (first axis, since the reading last moved): ",
-                             "Allan deviation (first axis, since the last gap): ")), shown
+                             "Allan deviation (first axis, since the last gap): ",
+                             "Allan deviation (first axis, since the frames' pace last "
+                             "broke): ")), shown
     assert "e+" not in shown and "e-" not in shown, shown
     figures = [float(m) for m in re.findall(r'([0-9.]+)" \([0-9.]+ s\)', shown)]
     assert len(figures) == 3, shown
@@ -123,3 +125,29 @@ def test_a_move_is_a_step_beyond_the_window_and_figures_are_positional():
     assert panel_module.last_still_run(np.full(30, 7.0), 0.5) == 0
     assert panel_module._significant(5123.4) == "5120" and panel_module._significant(0.07531) \
         == "0.0753"
+
+
+def test_a_fresh_connection_s_uneven_frames_are_not_called_a_gap(window):
+    """gui78 (live78 F6): right after a fresh connection, with no gap of the link, the line
+    said "Allan deviation: waiting for frames after the gap" — the frames' spacing had broken
+    (frames that came unevenly), which is no gap the technician could see. It says what it
+    waits for; after a gap of the link it still says "after the gap"."""
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
+    panel = window.capture_panel
+    link = panel.links[0]
+    rng = np.random.default_rng(3)
+    # 30 frames every 10 ms, then one late by 0.2 s, then 9 more: 10 at an even pace
+    times = [0.01 * i for i in range(30)] + [0.49 + 0.01 * i for i in range(10)]
+    link.frames.extend([(t, (float(rng.normal(0, SIGMA)), 0.0), "") for t in times])
+    assert link.gap_before == -np.inf  # a fresh connection: the link never lost
+    panel._show_allan(False, 1.0)
+    assert panel.allan.text() == "Allan deviation: waiting for 16 frames at an even pace (10 so far)"
+    link.frames.extend([(0.59 + 0.01 * i, (float(rng.normal(0, SIGMA)), 0.0), "")
+                        for i in range(20)])
+    panel._show_allan(False, 1.0)
+    assert panel.allan.text().startswith(
+        "Allan deviation (first axis, since the frames' pace last broke): "), panel.allan.text()
+    link.gap_before = 0.785  # the link lost at the last frame but 3
+    panel._show_allan(False, 1.0)
+    assert panel.allan.text() == "Allan deviation: waiting for frames after the gap"
+    link.frames.clear()

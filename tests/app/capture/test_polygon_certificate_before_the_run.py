@@ -51,7 +51,7 @@ def test_a_certificate_loaded_before_the_run_fills_each_face_taken(window, qtbot
             assert ys == pytest.approx(_errors(face + 1), abs=1e-6)
         panel.disconnect_instrument()
     assert said == ("polygon_certificate.csv: 12 face(s) have no row yet (1–12); their "
-                    "deviations are filled in as each face is taken")
+                    "deviations are filled in as each face is taken or typed")
     assert bench.face_deviations[12] == "0.6"
     window.menus.new_action.trigger()  # another project: another polygon, perhaps
     assert bench.face_deviations == {}

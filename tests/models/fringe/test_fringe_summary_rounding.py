@@ -89,3 +89,21 @@ def test_a_larger_noise_gives_fewer_decimals_never_a_third_significant_digit():
     assert len(_significant(u)) == 2 and len(value.split(".")[1]) == 3, (value, u)
     expected_u = 0.05 * math.sqrt(2.0 / 32)
     assert 0.8 * expected_u < float(u) < 1.25 * expected_u, (u, expected_u)
+
+
+def test_offsets_that_round_to_zero_are_printed_unsigned():
+    """live78 F7: a centred head's result read "Offsets -0.00 / +0.00 mV" in the window and
+    on the command line, where the window prints zero unsigned (gui78)."""
+    theta = equal_steps(PER_PERIOD * PERIODS, PER_PERIOD)
+    head = Channels(**{**HEAD.__dict__, "offsets_v": (-0.000001, 0.000001), "noise_v": 0.0,
+                       "quadrature_deg": 0.0})
+    u_sin, u_cos = head.sample(theta, np.random.default_rng(11))
+    parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
+                             "theta_deg": np.full(theta.size, np.nan)}, np.arange(theta.size))
+    result = FRINGE.analyze(parsed, {"max_order": 3, "lines_per_rev": LINES,
+                                     "samples_per_period": PER_PERIOD})
+    assert -5e-3 < 1e3 * result.sin_fit.offset < 0 < 1e3 * result.cos_fit.offset < 5e-3
+    text = FRINGE.summary(result)
+    assert "Offsets 0.00 / 0.00 mV" in text, text
+    assert "quadrature error 0.000°" in text, text  # nor "+0.000°"
+    assert "zero at its mean): 0.000\" … 0.000\" (peak-to-peak 0.000\"" in text, text
