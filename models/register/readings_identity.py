@@ -17,10 +17,11 @@ from typing import Any
 
 __all__ = ["readings_key"]
 
-#: significant digits a value is compared to: far below any reading's last digit (a
-#: degree to 12 digits is 4e-9″), far above the float noise of one value written two ways
-#: ("12.5" and "12°30'00.0\"" parse within 1e-15 of each other)
-_DIGITS = 12
+#: significant digits a value is compared to: far below any reading's last digit (20° to
+#: 10 digits is 4e-5″; a reading of 0.1″ resolution has 7), far above the float noise of
+#: one value written two ways ("12.5" and "12°30'00.0\"" parse within 1e-15 of each other)
+#: or an angle re-typed in decimal degrees to 12 places
+_DIGITS = 10
 
 
 def _value(value: Any) -> str:
@@ -46,7 +47,7 @@ def readings_key(project_json: str, workbench: str) -> str:
       workbench's columns (:class:`models.readings.sheet.ReadingsSheet`), blank rows and
       rows of an unreadable cell left out, as the analysis leaves them out;
     - each cell by its value, under its column's key: an angle typed 12°30'00.0" is the
-      angle typed 12.5, 12.50 is 12.5, "+1" is 1 (numbers to 12 significant digits, a blank
+      angle typed 12.5, 12.50 is 12.5, "+1" is 1 (numbers to 10 significant digits, a blank
       optional cell as empty, a text as it parses);
     - the rows as a set with their repeats, their order aside.
 
