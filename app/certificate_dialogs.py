@@ -199,9 +199,9 @@ class CertificateDialogs:
 
     def ask_readings_of_another_item(self, numbers, reason: str) -> str:
         return self._multiline_answer(tr("Readings of another item"), tr(
-            "{reason}.\n\nIf these readings are indeed this item's, say why (printed on the "
+            "{reason}.\n\nIf these readings are indeed this item's, say why: printed on the "
             "certificate with the number, item and date of calibration of {numbers}, and "
-            "recorded in the register); otherwise cancel and issue it from this item's own "
+            "recorded in the register. Otherwise cancel, and issue it from this item's own "
             "readings.").format(reason=as_sentence(reason), numbers=", ".join(numbers)))
 
     def _multiline_answer(self, title: str, question: str) -> str:

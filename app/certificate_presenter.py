@@ -793,7 +793,7 @@ class CertificatePresenter:
                     if stated:
                         raise
                     why = " ".join(self._asked(self.view.ask_readings_of_another_item,
-                                               exc.numbers, explained(exc)).split())
+                                               exc.numbers, translated(exc.facts)).split())
                     if not why:
                         raise
                     stated = (exc.numbers[0], why)
@@ -898,7 +898,7 @@ class CertificatePresenter:
         if question is None:
             return ()
         why = " ".join(self.view.ask_readings_of_another_item(question.numbers,
-                                                              explained(question)).split())
+                                                              translated(question.facts)).split())
         if not why:
             self.view.tell(tr("Not issued"), tr(
                 "No certificate was written or recorded: the readings are those of {numbers}, "

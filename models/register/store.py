@@ -111,7 +111,8 @@ class ReadingsOfAnotherItem(RegisterError):
     issued only when the user says why, naming one of them (``readings_of_another_item``:
     on the command line --readings-of-another-item N:REASON); the reason is printed on it
     with their numbers, items and dates of calibration, and recorded in the chain.
-    ``facts``: those certificates, each with its item and date of calibration."""
+    ``facts``: what the register found (those certificates, each with its item and date of
+    calibration), without the command line's option: the window asks from it."""
 
     def __init__(self, text, numbers: tuple[str, ...], facts: str = "") -> None:
         super().__init__(text)
@@ -1428,13 +1429,14 @@ class Register:
                         date=meta.calibration_date or "—",
                         changes=separated([c for _, said in repeated for c in said])),
                         tuple(n for n, _ in repeated))
-                readings_said = _readings_said(meta, elsewhere, readings_of_another_item)
                 if others and not another_makers_item:
                     raise _another_makers_item(meta, others)
                 if lookalikes and not another_lookalike_item:
                     raise _lookalike_serial(meta, lookalikes)
                 if left_out and not another_lookalike_item:
                     raise _serial_left_out(meta, left_out)
+                # asked once the item is told (another maker's, another serial's)
+                readings_said = _readings_said(meta, elsewhere, readings_of_another_item)
                 original = plan.original
                 final = dataclasses.replace(
                     meta, certificate_number=plan.number, issue_date=issue_date.isoformat(),
@@ -3342,14 +3344,15 @@ def _readings_said(meta: CertificateMetadata, elsewhere: tuple[tuple[str, str, s
             "those of {facts}; name the certificate whose readings they are"),
             number=number or "—", facts=facts))
     if not reason:
-        raise ReadingsOfAnotherItem(message(QT_TR_NOOP(
+        found = message(QT_TR_NOOP(
             "the readings are those of {facts}, another item than {serial}: no two "
-            "calibrations repeat every reading to the last digit. A calibration of this item "
-            "has readings of its own; if these are indeed its readings, say why (printed on "
-            "the certificate and recorded in the register; on the command line: "
-            "--readings-of-another-item {number}:REASON)"),
-            facts=facts, serial=_printed(meta.item_serial) or _printed(meta.item_description)
-            or "—", number=elsewhere[0][0]), tuple(e[0] for e in elsewhere), facts)
+            "calibrations repeat every reading to the last digit"), facts=facts,
+            serial=_printed(meta.item_serial) or _printed(meta.item_description) or "—")
+        raise ReadingsOfAnotherItem(message(QT_TR_NOOP(
+            "{found}. A calibration of this item has readings of its own; if these are "
+            "indeed its readings, say why (printed on the certificate and recorded in the "
+            "register; on the command line: --readings-of-another-item {number}:REASON)"),
+            found=found, number=elsewhere[0][0]), tuple(e[0] for e in elsewhere), found)
     if len(elsewhere) == 1:
         return message(QT_TR_NOOP("The readings are those of certificate {facts}: {reason}"),
                        facts=facts, reason=reason)

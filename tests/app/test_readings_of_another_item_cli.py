@@ -119,6 +119,7 @@ def test_the_window_asks_why_before_the_file_name(samples_dir, tmp_path):
     with Register(register_url()) as register:
         [first] = register.list()
     assert numbers == (first.number,) and "(item LRA-0815" in reason
+    assert "--readings-of-another-item" not in reason  # the window's question, not the CLI's
     view.choose_save_path.assert_not_called()
     assert "the readings are those of" in view.tell.call_args.args[1]
     view.ask_readings_of_another_item.return_value = "the pair was read once, coupled"

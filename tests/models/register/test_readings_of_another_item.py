@@ -1,8 +1,8 @@
 """One item's readings issued as another item's certificate (hostile78 F7: the sample's 41
 readings, to 0.1″, issued for LRA-0815, LRA-0900 … each an original, nothing said): the
 readings compared by their values (models/register/readings_identity.readings_key), refused
-unless the user says why, which is printed on it and recorded in the register's chain; and
-a withdrawn certificate's readings issued again for its item a day later name it."""
+unless the user says why, which is printed on it and recorded in the register's chain
+(a withdrawn certificate's readings issued a day later: test_withdrawn_readings_moved.py)."""
 
 from __future__ import annotations
 
@@ -141,20 +141,34 @@ def test_readings_of_their_own_and_the_items_own_are_issued_and_a_false_word_ref
                    stated=("AB-1", "why"))
 
 
-def test_a_withdrawn_certificates_readings_dated_a_day_later_name_it(tmp_path):
-    """hostile78 F3 left a day open: withdraw, then the same readings with the date of
-    calibration moved by a day issued as an unrelated original."""
+def test_a_lookalike_serial_said_to_be_another_item_is_still_asked_for_its_readings(tmp_path):
+    """hostile78 F7: with F2 closed the route stayed open through a look-alike serial and
+    --another-lookalike-item: another item, by the user's word, so another item's readings."""
     rows = _sample_rows()
     with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
         first, _ = _issue(register, "LRA-0815", rows)
-        register.withdraw(first.number, "tolerance typed wrong")
-        second, meta = _issue(register, "LRA-0815", rows, date="2026-11-21")
-        assert meta.replaces_withdrawn == first.number
-        assert str(meta.withdrawn_note).startswith(f"{first.number} withdrawn ")
-        assert (f"(tolerance typed wrong); changed: date of calibration changed from "
-                f"2026-11-20 (on {first.number}) to 2026-11-21") in str(meta.withdrawn_note)
-        # readings of their own, a day later: another calibration, no link
-        moved = _moved(rows)
-        register.withdraw(second.number, "again")
-        _, meta = _issue(register, "LRA-0815", moved, date="2026-11-22")
-        assert meta.replaces_withdrawn == ""
+        meta = _meta("1ra-0815")
+        with pytest.raises(ReadingsOfAnotherItem) as refused:
+            register.issue(IssueRequest("theodolite", meta, _project(rows)),
+                           lambda m: b"%PDF", separate_calibration="",
+                           another_lookalike_item=True)
+        assert refused.value.numbers == (first.number,)
+        assert [r.number for r in register.list()] == [first.number]
+
+
+def test_an_amendment_is_asked_only_when_it_changes_its_readings_to_another_items(tmp_path):
+    rows = _sample_rows()
+    with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
+        first, _ = _issue(register, "LRA-0815", rows)
+        second, _ = _issue(register, "LRA-0900", _moved(rows))
+        # its own readings again: not asked
+        amended, _ = register.issue(IssueRequest("theodolite", _meta("LRA-0900"),
+                                                 _project(_moved(rows))),
+                                    lambda m: b"%PDF A1", supersedes=second.number,
+                                    change_note="typo", separate_calibration="")
+        # LRA-0815's readings put in its place: asked
+        with pytest.raises(ReadingsOfAnotherItem) as refused:
+            register.issue(IssueRequest("theodolite", _meta("LRA-0900"), _project(rows)),
+                           lambda m: b"%PDF A2", supersedes=amended.number,
+                           change_note="readings", separate_calibration="")
+        assert refused.value.numbers == (first.number,)
