@@ -821,8 +821,9 @@ def _specimen(args: argparse.Namespace, kind, result, document, words, settings)
 
 
 def _readings_of_another_item(given: str) -> tuple[str, str] | None:
-    """--readings-of-another-item N:REASON as (N, REASON), split at its first colon (a
-    certificate number holds none); None when not given."""
+    """--readings-of-another-item N:REASON as (N, REASON), split at its first colon (the
+    register splits it again after the number it names, where a typed number holds a
+    colon); None when not given."""
     if not given.strip():
         return None
     number, _colon, reason = given.partition(":")

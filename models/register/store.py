@@ -3326,6 +3326,16 @@ def _readings_said(meta: CertificateMetadata, elsewhere: tuple[tuple[str, str, s
     false)."""
     from models.register.identifiers import as_printed
 
+    def same(a: str, b: str) -> bool:
+        return as_printed(a).upper() == as_printed(b).upper()
+
+    if stated and not any(same(stated[0].strip(), n) for n, *_ in elsewhere):
+        # "N:REASON" split at its first colon, where N holds one (a typed number may)
+        whole = f"{stated[0].strip()}:{stated[1]}"
+        for n in sorted((e[0] for e in elsewhere), key=len, reverse=True):
+            if same(whole[:len(n)], n) and whole[len(n):len(n) + 1] == ":":
+                stated = (n, whole[len(n) + 1:])
+                break
     number, reason = (stated[0].strip(), " ".join(stated[1].split())) if stated else ("", "")
     each = [message(QT_TR_NOOP("{number} (item {item}, calibrated {date})"), number=n,
                     item=item or "—", date=date or "—") for n, _serial, item, date in elsewhere]
@@ -3337,8 +3347,7 @@ def _readings_said(meta: CertificateMetadata, elsewhere: tuple[tuple[str, str, s
             "nothing is to be stated; leave it out"), number=number or "—"))
     if not elsewhere:
         return ""
-    if stated and not any(as_printed(number).upper() == as_printed(n).upper()
-                          for n, *_ in elsewhere):
+    if stated and not any(same(number, n) for n, *_ in elsewhere):
         raise RegisterError(message(QT_TR_NOOP(
             "--readings-of-another-item {number}: the readings are not those of {number} but "
             "those of {facts}; name the certificate whose readings they are"),

@@ -172,3 +172,16 @@ def test_an_amendment_is_asked_only_when_it_changes_its_readings_to_another_item
                            lambda m: b"%PDF A2", supersedes=amended.number,
                            change_note="readings", separate_calibration="")
         assert refused.value.numbers == (first.number,)
+
+
+def test_a_typed_number_with_a_colon_is_named_whole(tmp_path):
+    """--readings-of-another-item N:REASON is split at its first colon; a number typed with
+    one (the register takes it) is found again whole."""
+    rows = _sample_rows()
+    with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
+        register.issue(IssueRequest("theodolite", _meta(
+            "LRA-0815", certificate_number="LAB:2026-7"), _project(rows)),
+            lambda m: b"%PDF", separate_calibration="")
+        _, meta = _issue(register, "LRA-0900", rows, stated=("LAB", "2026-7:a pair: read once"))
+        assert meta.readings_of_another_item == "LAB:2026-7"
+        assert str(meta.readings_note).endswith("calibrated 2026-11-20): a pair: read once")
