@@ -197,6 +197,13 @@ class CertificateDialogs:
             "cancel and amend or replace it from File › Certificate register.").format(
                 reason=as_sentence(reason), numbers=", ".join(numbers)))
 
+    def ask_readings_of_another_item(self, numbers, reason: str) -> str:
+        return self._multiline_answer(tr("Readings of another item"), tr(
+            "{reason}.\n\nIf these readings are indeed this item's, say why: printed on the "
+            "certificate with the number, item and date of calibration of {numbers}, and "
+            "recorded in the register. Otherwise cancel, and issue it from this item's own "
+            "readings.").format(reason=as_sentence(reason), numbers=", ".join(numbers)))
+
     def _multiline_answer(self, title: str, question: str) -> str:
         """A question answered in a few lines of text ("" when cancelled), its words wrapped
         and the dialog no wider than the screen (QInputDialog's own label does not wrap: the

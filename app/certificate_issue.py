@@ -267,6 +267,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                       replacement: bool = False, separate_calibration: str = "",
                       correction_confirmed: bool = False, raw_capture: list | None = None,
                       another_makers_item: bool = False, another_lookalike_item: bool = False,
+                      readings_of_another_item: tuple[str, str] | None = None,
                       dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = "",
                       signing: tuple[str, str] = ("", ""),
                       results: Callable[[Any, CertificateRecord], bytes] | None = None,
@@ -294,6 +295,9 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     case aside, or, for an item of no serial, than that day's item of its description and
     maker with one, or the other way round (else LookalikeSerial, SerialLeftOut; recorded in
     the register's chain when issued; rev65 F7, stop 67).
+    ``readings_of_another_item``: (N, why) — the readings, by their values, are those of
+    certificate N of another item in the register, and why (else ReadingsOfAnotherItem;
+    printed on it and recorded in the register's chain; hostile78 F7).
     ``supersedes``: an amendment (or, with ``replacement``, a replacement) of that
     certificate, of its calibration: its workbench, item (serial as printed) and date of calibration,
     else NotTheSameCalibration, before anything is issued; ``correction_confirmed``: a
@@ -369,6 +373,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                                  correction_confirmed=correction_confirmed,
                                  another_makers_item=another_makers_item,
                                  another_lookalike_item=another_lookalike_item,
+                                 readings_of_another_item=readings_of_another_item,
                                  confirmed_date=confirmed_date,
                                  # what the document recorded is: a test report or a
                                  # calibration certificate (in the chain, chain format 4)

@@ -121,6 +121,11 @@ class CertificateView(Protocol):
         description with one (``question``: the register's facts, question and advice): is
         this another item? (recorded when issued; No: not issued)"""
 
+    def ask_readings_of_another_item(self, numbers: tuple[str, ...], reason: str) -> str:
+        """The readings are those of certificates ``numbers`` of another item (``reason``,
+        the register's words): why they are this item's (printed on the certificate and
+        recorded in the register; empty: not issued)."""
+
     def confirm_issue_date(self, date: str, reason: str) -> bool:
         """The issue is dated far after the register's last record (``reason``): is today
         ``date``? (recorded when issued; No: not issued)"""
@@ -645,6 +650,7 @@ class CertificatePresenter:
                         "and press Amend… or Replace….").format(numbers=", ".join(numbers)))
                     return False
         confirmed = (False, False)
+        readings: tuple[str, str] | tuple[()] | None = ()
         if revision is None and not draft and not entered.example:
             # another maker's item, a look-alike serial: asked before the file name, where the
             # register can tell (rev65: a No after the file dialog left a file chosen for
@@ -653,6 +659,10 @@ class CertificatePresenter:
             if answered is None:
                 return False
             confirmed = answered
+            # another item's readings (hostile78 F7): why, asked before the file name
+            readings = self._readings_of_another_item(kind.key, entered, rows or [])
+            if readings is None:
+                return False
         # an amendment or a replacement is not filed under the original's number, which the
         # details hold (day review 65 F6: AB-2026-0001-A1 was issued into AB-2026-0001.pdf)
         number = (self._revision_number(revision) if revision is not None
@@ -693,7 +703,8 @@ class CertificatePresenter:
                 return True
             self.last_issued = ""
             issued = self._issue(kind, result, entered, settings, rows or [], source_name,
-                                 path, revision, note, raw_capture, separate, confirmed)
+                                 path, revision, note, raw_capture, separate, confirmed,
+                                 readings if revision is None and not draft else ())
             if stored and self.last_issued:  # issued: what it stored in the project said so
                 self.details_issued(kind.key, self.last_issued)
             return issued
@@ -745,20 +756,25 @@ class CertificatePresenter:
 
     def _issue(self, kind, result, entered, settings, rows, source_name, path, revision,
                note, raw_capture=None, separate: str = "",
-               confirmed: tuple[bool, bool] = (False, False)) -> bool:
+               confirmed: tuple[bool, bool] = (False, False),
+               readings: tuple[str, str] | tuple[()] | None = ()) -> bool:
         """``confirmed``: another maker's item, another item than a look-alike serial's,
-        as the user said before the file dialog (else asked when the issue raises it)."""
+        as the user said before the file dialog (else asked when the issue raises it);
+        ``readings``: (N, why) the readings are those of certificate N of another item, as
+        the user said before it (else asked when the issue raises it)."""
         from app.certificate_issue import IssuedNotWritten, issue_certificate
         from models.register.clock_rules import DateToConfirm
         from models.register.store import (
             AnotherMakersItem,
             LookalikeSerial,
             NotTheSameCalibration,
+            ReadingsOfAnotherItem,
             RegisterError,
             SameCalibrationIssued,
         )
 
         corrected = False
+        stated = readings or None  # (N, why): the readings of another item, said
         another_maker, another_item = confirmed
         date_confirmed = None  # today's date, confirmed when the register asks (reg73 #6)
         declined: LookalikeSerial | None = None  # the question answered No
@@ -773,6 +789,7 @@ class CertificatePresenter:
                             separate_calibration=separate, correction_confirmed=corrected,
                             another_makers_item=another_maker,
                             another_lookalike_item=another_item,
+                            readings_of_another_item=stated,
                             raw_capture=raw_capture, confirmed_date=date_confirmed,
                             dcc=self._dcc_maker(kind, result, path, settings),
                             dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
@@ -784,6 +801,16 @@ class CertificatePresenter:
                                                     exc.numbers, explained(exc)).split())
                     if not separate:
                         raise
+                except ReadingsOfAnotherItem as exc:
+                    # one item's readings issued as another's (hostile78 F7): why, asked, and
+                    # the answer printed on it and recorded
+                    if stated:
+                        raise
+                    why = " ".join(self._asked(self.view.ask_readings_of_another_item,
+                                               exc.numbers, translated(exc.facts)).split())
+                    if not why:
+                        raise
+                    stated = (exc.numbers[0], why)
                 except DateToConfirm as exc:
                     # far after the register's last record: the date shown and asked, a
                     # Yes recorded with the certificate
@@ -870,6 +897,31 @@ class CertificatePresenter:
         self.view.show_status(self._with_dcc(said.format(number=number, path=path), path),
                               10000)
         return True
+
+    def _readings_of_another_item(self, workbench: str, entered: CertificateMetadata,
+                                  rows: list[list[str]]) -> tuple[str, str] | tuple[()] | None:
+        """The register's question about readings that are those of certificates of another
+        item (Register.readings_of_another_item), asked before the file name: (N, why) as
+        answered, () when not asked (none, or the register cannot be read now: the issue
+        says why), None after a cancel (said: nothing issued)."""
+        from models.register.store import RegisterError
+
+        try:
+            with self.open_register() as register:
+                question = register.readings_of_another_item(workbench, entered, rows)
+        except (RegisterError, OSError):
+            return ()
+        if question is None:
+            return ()
+        why = " ".join(self.view.ask_readings_of_another_item(question.numbers,
+                                                              translated(question.facts)).split())
+        if not why:
+            self.view.tell(tr("Not issued"), tr(
+                "No certificate was written or recorded: the readings are those of {numbers}, "
+                "another item's. Issue this item's certificate from its own readings.").format(
+                    numbers=", ".join(question.numbers)))
+            return None
+        return question.numbers[0], why
 
     def _confirmed_before_file(self, workbench: str, entered: CertificateMetadata
                                ) -> tuple[bool, bool] | None:

@@ -129,6 +129,13 @@ def _parser(words, kinds: tuple[str, ...] | None = None,
         "still valid of that date of calibration reports an item of its description and "
         "maker with one (or the other way round), and this is indeed another item (else it "
         "is refused, naming that certificate); recorded in the register that you said so")))
+    p.add_argument("--readings-of-another-item", metavar="N:REASON", default="",
+                   help=words(QT_TR_NOOP(
+                       "with --certificate: the readings (their values, however typed or "
+                       "ordered) are those of certificate N of another item in the register, "
+                       "and why (else it is refused, naming that certificate, its item and date "
+                       "of calibration: no two calibrations repeat every reading to the last "
+                       "digit); printed on the certificate and recorded in the register")))
     p.add_argument("--confirm-date", metavar="YYYY-MM-DD", default="", help=words(QT_TR_NOOP(
         "with --certificate: today's date, as you know it, for an issue more than 30 days "
         "after the register's last record (else it is refused, naming the date the computer's "
@@ -813,6 +820,16 @@ def _specimen(args: argparse.Namespace, kind, result, document, words, settings)
         "recorded in no register"), number=number, path=args.certificate), words))
 
 
+def _readings_of_another_item(given: str) -> tuple[str, str] | None:
+    """--readings-of-another-item N:REASON as (N, REASON), split at its first colon (the
+    register splits it again after the number it names, where a typed number holds a
+    colon); None when not given."""
+    if not given.strip():
+        return None
+    number, _colon, reason = given.partition(":")
+    return number.strip(), reason.strip()
+
+
 def _issue_into(url, args, kind, result, metadata, settings, rows, words, report=False,
                 raw_capture: list | None = None):
     """``report``: the document is a test report, and is called one (ISO/IEC 17025 7.8.2.1 a))."""
@@ -836,6 +853,8 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
                                                                    False),
                                        another_lookalike_item=getattr(
                                            args, "another_lookalike_item", False),
+                                       readings_of_another_item=_readings_of_another_item(
+                                           getattr(args, "readings_of_another_item", "")),
                                        confirmed_date=parse_confirmed_date(
                                            getattr(args, "confirm_date", "")),
                                        results=_issued_results(args) if args.results else None,

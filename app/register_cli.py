@@ -309,6 +309,15 @@ def _print_record(record, register, words) -> None:
             recorded_at=entry["recorded_at"], serial=entry["serial"] or "—",
             others=", ".join(f"{o.get('number', '')} ({o.get('serial', '')})"
                              for o in entry["others"])))
+    # the user's word that the readings are those of another item's certificates, and why
+    # (hostile78 F7: one item's readings issued as nine others', nothing said)
+    for entry in register.readings_of_another_item_confirmations(record.number):
+        lines.append(message(QT_TR_NOOP(
+            "  readings of another item, as {user} said at issue ({recorded_at}): those of "
+            "{others}: {reason}"), user=entry["os_user"] or "—",
+            recorded_at=entry["recorded_at"], reason=entry["reason"] or "—",
+            others=", ".join(f"{o.get('number', '')} ({o.get('item', '')})"
+                             for o in entry["others"])))
     due = register.due_date(record.item_serial, record.item_manufacturer or "") \
         if record.item_serial else None
     if due:

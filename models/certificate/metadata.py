@@ -398,6 +398,13 @@ class CertificateMetadata:
     # and why each was withdrawn and what this one changes against it
     replaces_withdrawn: str = ""
     withdrawn_note: str = ""
+    # set by the register on a certificate whose readings (their values: readings_identity)
+    # are those of certificates of another item, the user having said why (hostile78 F7:
+    # one item's 41 readings issued as another's): those certificates' numbers, and
+    # ``readings_note`` naming each with its item and date of calibration, and the reason;
+    # absent in older records
+    readings_of_another_item: str = ""
+    readings_note: str = ""
     # the bundled example details (resources/samples/certificate_*.json): never recorded in
     # the user's register (the command line issues them into a register of their own)
     example: bool = False
@@ -443,7 +450,8 @@ class CertificateMetadata:
                 values[f.name] = _date(raw, f.name)
             else:
                 values[f.name] = clean_text(raw, f.name, multiline=f.name in ("notes", "change_note",
-                                                                   "withdrawn_note"))
+                                                                   "withdrawn_note",
+                                                                   "readings_note"))
         meta = cls(**values)
         if meta.language not in LANGUAGES:
             raise MetadataError(message(
@@ -667,6 +675,20 @@ def withdrawn_statement(meta: CertificateMetadata) -> Any:
                        numbers=meta.replaces_withdrawn)
     return message(QT_TR_NOOP("Issued in place of a withdrawn certificate of the same item and "
                               "date of calibration: {note}"), note=meta.withdrawn_note)
+
+
+def readings_of_another_item_statement(meta: CertificateMetadata) -> Any:
+    """A certificate whose readings are those of certificates of another item in the
+    register (``meta.readings_of_another_item``), issued because the user said why
+    (``meta.readings_note``, the register's words: "The readings are those of certificate N
+    (item X, calibrated D): REASON"; hostile78 F7). The PDF prints it under the title, the
+    DCC states it (refType anglebench_readingsOfAnotherItem). "" for any other
+    certificate."""
+    if not meta.readings_of_another_item:
+        return ""
+    return meta.readings_note or message(QT_TR_NOOP(
+        "The readings are those of certificate(s) {numbers} of another item"),
+        numbers=meta.readings_of_another_item)
 
 
 def revision_statement(meta: CertificateMetadata) -> Any:

@@ -84,6 +84,8 @@ REFTYPE_U_RAISED_TO_CMC = "anglebench_uncertaintyRaisedToCmc"
 REFTYPE_SEPARATE_CALIBRATION = "anglebench_separateCalibration"
 #: an original issued in place of withdrawn certificates of the same calibration
 REFTYPE_IN_PLACE_OF_WITHDRAWN = "anglebench_inPlaceOfWithdrawn"
+#: the readings are those of a certificate of another item, the user said why (hostile78 F7)
+REFTYPE_READINGS_OF_ANOTHER_ITEM = "anglebench_readingsOfAnotherItem"
 #: a statement: what an amendment or replacement changed of the certificate it supersedes,
 #: a confirmed corrected serial number or date of calibration first (ISO/IEC 17025 7.8.8.2;
 #: coreData/reportAmendedSubstituted names the certificate, and has no room for why)

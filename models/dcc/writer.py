@@ -25,6 +25,7 @@ from lxml import etree
 from models.certificate.document import CertificateDocument, Table
 from models.certificate.interval_note import interval_cells
 from models.certificate.metadata import (
+    readings_of_another_item_statement,
     revision_statement,
     separate_statement,
     withdrawn_statement,
@@ -383,6 +384,20 @@ def _statements(b: _Builder, admin) -> None:
                         withdrawn)
         declaration = st.find(D + "declaration")
         for number in (n.strip() for n in doc.metadata.replaces_withdrawn.split(",")):
+            if number:
+                reference = etree.Element(D + "reference")
+                reference.text = number
+                declaration.addprevious(reference)
+    readings = readings_of_another_item_statement(doc.metadata)
+    if readings:
+        # the readings are another item's certificates', the user said why (hostile78 F7):
+        # each of those certificates named as a reference
+        st = _statement(b, sts, v.REFTYPE_READINGS_OF_ANOTHER_ITEM,
+                        "the readings are those of the certificates of another item named as "
+                        "its references; the declaration names their item and date of "
+                        "calibration and says why", readings)
+        declaration = st.find(D + "declaration")
+        for number in (n.strip() for n in doc.metadata.readings_of_another_item.split(",")):
             if number:
                 reference = etree.Element(D + "reference")
                 reference.text = number

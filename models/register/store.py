@@ -52,6 +52,7 @@ from models.register.chain import (
     link,
 )
 from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED, REPLACED
+from models.register.readings_identity import readings_key
 from models.register.register_error import RegisterError
 from models.register.wording import DOCUMENT_KINDS, kind_words
 from models.register.writer_note import holder as writer_holder
@@ -62,7 +63,8 @@ if TYPE_CHECKING:
 
 __all__ = ["AnotherMakersItem", "CertificateRecord", "IssueRequest", "LookalikeSerial",
            "NotTheSameCalibration", "PrintedHead", "Register", "RegisterError",
-           "RegisterTampered", "SameCalibrationIssued", "SerialLeftOut", "lab_timezone", "software_versions"]
+           "ReadingsOfAnotherItem", "RegisterTampered", "SameCalibrationIssued", "SerialLeftOut",
+           "lab_timezone", "software_versions"]
 
 LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
              "psycopg")
@@ -98,6 +100,24 @@ class NotASeparateCalibration(RegisterError):
     def __init__(self, text, numbers: tuple[str, ...]) -> None:
         super().__init__(text)
         self.numbers = numbers
+
+
+class ReadingsOfAnotherItem(RegisterError):
+    """A certificate whose readings, by their values (readings_identity.readings_key: a
+    re-typed, re-saved or re-ordered file of the same values is the same readings), are
+    those of certificates ``numbers`` of another item in the register (hostile78 F7: one
+    item's 41 readings, to 0.1″, issued as another item's certificate, each an original,
+    nothing said). No two calibrations repeat every reading to the last digit, so it is
+    issued only when the user says why, naming one of them (``readings_of_another_item``:
+    on the command line --readings-of-another-item N:REASON); the reason is printed on it
+    with their numbers, items and dates of calibration, and recorded in the chain.
+    ``facts``: what the register found (those certificates, each with its item and date of
+    calibration), without the command line's option: the window asks from it."""
+
+    def __init__(self, text, numbers: tuple[str, ...], facts: str = "") -> None:
+        super().__init__(text)
+        self.numbers = numbers
+        self.facts = facts or text
 
 
 class AnotherMakersItem(RegisterError):
@@ -424,6 +444,8 @@ class Register:
         #: the numbers :meth:`issue` issued through this object whose results file is not
         #: recorded yet: the only ones :meth:`record_results` records for (stop 63)
         self._results_due: set[str] = set()
+        #: each record's readings_key by its number (a record never changes): computed once
+        self._readings_keys: dict[str, str] = {}
         #: the key given is not the one the register was signed with (:meth:`_key_problem`)
         self.key_problem: Message | None = None
         self.url = _normalise_url(url)
@@ -1215,6 +1237,7 @@ class Register:
               document_kind: str | Callable[[], str] | None = None,
               correction_confirmed: bool = False, another_makers_item: bool = False,
               another_lookalike_item: bool = False,
+              readings_of_another_item: tuple[str, str] | None = None,
               confirmed_date: dt.date | None = None,
               prepare: Callable[[CertificateMetadata], tuple[str | None, bytes | None]]
               | None = None) -> tuple[CertificateRecord, bytes]:
@@ -1249,6 +1272,15 @@ class Register:
         confirms it is another item; the confirmation is then a chained entry
         ("lookalike_serial": :meth:`lookalike_serial_confirmations`), committed in the one
         transaction with the certificate. :meth:`confirmations_needed` tells both before.
+        Where its readings, by their values (readings_identity.readings_key), are those of
+        certificates of another item in the register (any status; an amendment's only when
+        it changes its original's readings), it raises :class:`ReadingsOfAnotherItem` unless
+        ``readings_of_another_item`` is (one of those certificates' numbers, why): then the
+        statement naming each of them, its item and date of calibration, and why, is
+        printed on it (``readings_note``) and is a chained entry ("readings_of_another_item":
+        :meth:`readings_of_another_item_confirmations`). Stated where its readings are not
+        that certificate's, it is refused too (the statement would be false). Not checked
+        with ``separate_calibration`` None.
 
         ``document_kind``: what the document rendered is, "calibration" (a calibration
         certificate) or "test" (a test report), or a callable that says so after each
@@ -1349,6 +1381,10 @@ class Register:
                         self._lookalike_serials(conn, meta)
                     left_out = () if supersedes or separate_calibration is None else \
                         self._serial_left_out(conn, request.workbench, meta)
+                    # another item's readings (hostile78 F7: one item's readings issued, byte
+                    # for byte, as the certificates of nine others)
+                    elsewhere = () if separate_calibration is None else \
+                        self._readings_elsewhere(conn, request, meta, plan.original)
                     corrected = () if plan.original is None else self._corrections(
                         conn, plan.original, request.workbench, meta, correction_confirmed)
                     if plan.original is not None:
@@ -1399,6 +1435,8 @@ class Register:
                     raise _lookalike_serial(meta, lookalikes)
                 if left_out and not another_lookalike_item:
                     raise _serial_left_out(meta, left_out)
+                # asked once the item is told (another maker's, another serial's)
+                readings_said = _readings_said(meta, elsewhere, readings_of_another_item)
                 original = plan.original
                 final = dataclasses.replace(
                     meta, certificate_number=plan.number, issue_date=issue_date.isoformat(),
@@ -1409,7 +1447,10 @@ class Register:
                     _bounded(separated([*corrected, change_note])) if corrected else change_note,
                     separate_from=", ".join(same),
                     replaces_withdrawn=", ".join(n for n, _ in withdrawn),
-                    withdrawn_note=_bounded(separated([said for _, said in withdrawn])))
+                    withdrawn_note=_bounded(separated([said for _, said in withdrawn])),
+                    readings_of_another_item=", ".join(e[0] for e in elsewhere)
+                    if readings_said else "",
+                    readings_note=_bounded(readings_said))
                 record = CertificateRecord(
                     number=plan.number,
                     issued_at=now.isoformat(),
@@ -1485,6 +1526,16 @@ class Register:
                                 "calibration_date": meta.calibration_date,
                                 "others": [{"number": n, "serial": k, "manufacturer": m}
                                            for n, k, m in (*lookalikes, *left_out)]})
+                        if readings_said:  # said by the user: recorded
+                            self._append_entry(conn, "readings_of_another_item", plan.number, {
+                                "serial": meta.item_serial,
+                                "manufacturer": meta.item_manufacturer,
+                                "calibration_date": meta.calibration_date,
+                                "reason": " ".join(readings_of_another_item[1].split())
+                                if readings_of_another_item else "",
+                                "others": [{"number": n, "serial": k, "item": i,
+                                            "calibration_date": d}
+                                           for n, k, i, d in elsewhere]})
                         if plan.date_confirmed is not None:  # said by the user: recorded
                             self._append_entry(conn, "date_confirmed", plan.number,
                                                plan.date_confirmed)
@@ -1622,18 +1673,113 @@ class Register:
                 out.append((number, changes))
         return tuple(out)
 
+    def _readings_key(self, record: CertificateRecord) -> str:
+        """``record``'s readings_key, computed once per register object."""
+        key = self._readings_keys.get(record.number)
+        if key is None:
+            key = self._readings_keys[record.number] = readings_key(record.project_json,
+                                                                    record.workbench)
+        return key
+
+    def _readings_elsewhere(self, conn, request: IssueRequest, meta: CertificateMetadata,
+                            original: CertificateRecord | None
+                            ) -> tuple[tuple[str, str, str, str], ...]:
+        """The certificates (number, serial, item as printed, date of calibration) of any
+        status, on ``request``'s workbench, of another item than ``meta``'s (not its serial
+        as printed alike, of its maker: _same_calibration's rule; for an item of no serial,
+        its description and maker) whose readings are ``request``'s by their values
+        (:func:`models.register.readings_identity.readings_key`), in the register's order.
+        ``original``: the certificate an amendment or replacement corrects; () when it holds
+        these readings already (the amendment does not change them), else its own revisions
+        are not counted."""
+        from models.register.identifiers import no_serial
+
+        key = readings_key(request.project_json, request.workbench)
+        if not key:
+            return ()
+        own: frozenset[str] = frozenset()
+        if original is not None:
+            if self._readings_key(original) == key:
+                return ()
+            own = self._revisions_of(conn, original)
+        c = self._schema.CERTIFICATES.c
+        numbers = conn.execute(self._sa.select(c.number).where(
+            c.workbench == request.workbench).order_by(c.id)).scalars().all()
+        if any(n not in self._readings_keys for n in numbers):  # read once, in one query
+            for row in conn.execute(self._sa.select(c.number, c.project_json).where(
+                    c.workbench == request.workbench)).all():
+                if row.number not in self._readings_keys:
+                    self._readings_keys[row.number] = readings_key(row.project_json,
+                                                                   request.workbench)
+        out = []
+        for number in numbers:
+            if number in own or self._readings_keys.get(number) != key:
+                continue
+            record = self._get(conn, number)
+            if not _one_item(record, meta):
+                serial = _printed(record.item_serial)
+                maker = _printed(record.item_manufacturer)
+                out.append((number, serial, (f"{serial}, {maker}" if maker else serial)
+                            if not no_serial(serial) else
+                            _item_text(_printed(record.item_description), maker),
+                            record.calibration_date or ""))
+        return tuple(out)
+
+    def readings_of_another_item(self, workbench: str, meta: CertificateMetadata,
+                                 rows: builtins.list[builtins.list[str]]
+                                 ) -> ReadingsOfAnotherItem | None:
+        """What :meth:`issue` would raise, unasked, for an original of ``meta`` on
+        ``workbench`` whose readings are ``rows`` (the sheet's, as typed) because they are
+        those of certificates of another item (:class:`ReadingsOfAnotherItem`); None when
+        they are not: the window asks before it asks for a file name. The issue checks
+        again."""
+        from models.register.identifiers import IdentifierError, normalise_identifier
+
+        try:
+            meta = dataclasses.replace(meta, item_serial=normalise_identifier(meta.item_serial))
+        except IdentifierError:
+            return None  # the issue refuses it, saying why
+        project = json.dumps({"workbenches": {workbench: {"rows": rows}}})
+        request = IssueRequest(workbench, meta, project)
+        with self._read() as conn:
+            elsewhere = self._readings_elsewhere(conn, request, meta, None)
+        try:
+            _readings_said(meta, elsewhere, None)
+        except ReadingsOfAnotherItem as exc:
+            return exc
+        return None
+
+    def readings_of_another_item_confirmations(self, number: str = "") -> builtins.list[dict]:
+        """The certificates issued after the user said why their readings are those of
+        certificates of another item (:class:`ReadingsOfAnotherItem`), from the chained
+        entries: ``number``, ``serial``, ``manufacturer``, ``reason``, ``others``
+        ([{number, serial, item, calibration_date}]), ``recorded_at``, ``os_user``; every
+        one, or ``number``'s."""
+        return self._confirmations("readings_of_another_item", number)
+
     def _in_place_of_withdrawn(self, conn, request: IssueRequest, meta: CertificateMetadata
                                ) -> tuple[tuple[str, Any], ...]:
         """The withdrawn certificates of the item and date of calibration of ``meta`` on
         ``request``'s workbench, each with what to say of it: when and why it was withdrawn,
         and what this certificate changes of what decides the result against it
-        (:func:`models.register.basis_changes.basis_changes`)."""
+        (:func:`models.register.basis_changes.basis_changes`). Also those of the item of
+        another date of calibration whose readings are ``request``'s, by their values
+        (readings_identity.readings_key): the date moved by a day is the same calibration
+        (hostile78 F3/F7: withdrawn, then issued again dated a day later, unlinked); the
+        date's change is said first."""
         out = []
         project = _with_metadata(request.project_json, request.workbench, meta)
-        for number in self._same_calibration(conn, request.workbench, meta, "withdrawn"):
+        numbers = self._same_calibration(conn, request.workbench, meta, "withdrawn")
+        moved = self._withdrawn_readings(conn, request, meta, numbers)
+        for number in (*numbers, *moved):
             record = self._get(conn, number)
             when = self._withdrawn_on(conn, number)
             changes = basis_changes(record.project_json, project, request.workbench, number)
+            if number in moved:
+                changes = (message(QT_TR_NOOP(
+                    "date of calibration changed from {old} (on {number}) to {new}"),
+                    old=record.calibration_date or "—", number=number,
+                    new=meta.calibration_date or "—"), *changes)
             if _printed(record.customer) != _printed(meta.customer_name):  # whose it is
                 changes = (message(QT_TR_NOOP(
                     "customer changed from {old} (on {number}) to {new}"),
@@ -1645,6 +1791,28 @@ class Register:
                 said = message(QT_TR_NOOP("{withdrawn}; changed: {changes}"), withdrawn=said,
                                changes=separated(changes))
             out.append((number, said))
+        return tuple(out)
+
+    def _withdrawn_readings(self, conn, request: IssueRequest, meta: CertificateMetadata,
+                            besides: tuple[str, ...]) -> tuple[str, ...]:
+        """The withdrawn certificates of ``request``'s workbench and ``meta``'s item (as
+        :meth:`_same_calibration` tells an item), of another date of calibration, whose
+        readings are ``request``'s by their values; ``besides`` (those of its date) not
+        counted."""
+        key = readings_key(request.project_json, request.workbench)
+        if not key:
+            return ()
+        c = self._schema.CERTIFICATES.c
+        rows = conn.execute(self._sa.select(c.number).where(
+            c.workbench == request.workbench, c.status == "withdrawn",
+            c.calibration_date != meta.calibration_date).order_by(c.id)).all()
+        out = []
+        for row in rows:
+            if row.number in besides:
+                continue
+            record = self._get(conn, row.number)
+            if self._readings_key(record) == key and _one_item(record, meta):
+                out.append(row.number)
         return tuple(out)
 
     def _withdrawn_on(self, conn, number: str) -> str:
@@ -1799,7 +1967,7 @@ class Register:
         for row in rows:
             body = json.loads(row.body_json or "{}")
             out.append({"number": row.subject, "manufacturer": body.get("manufacturer", ""),
-                        "serial": body.get("serial", ""),
+                        "serial": body.get("serial", ""), "reason": body.get("reason", ""),
                         "others": body.get("others", []), "recorded_at": row.recorded_at,
                         "os_user": row.os_user})
         return out
@@ -3130,6 +3298,75 @@ def _either(items: list[str]) -> Any:
     if len(items) < 2:
         return "".join(items)
     return message(QT_TR_NOOP("{items} or {item}"), items=listed(items[:-1]), item=items[-1])
+
+
+def _one_item(record: CertificateRecord, meta: CertificateMetadata) -> bool:
+    """Whether ``record`` reports ``meta``'s item, as :meth:`Register._same_calibration`
+    tells one: a serial that prints alike (same_serial) of its maker (_same_maker: a side
+    naming none is any); with no serial (no_serial), none on the record either and a
+    description that prints alike (same_identifier)."""
+    from models.register.identifiers import no_serial, same_identifier, same_serial
+
+    if not _same_maker(record.item_manufacturer, meta.item_manufacturer):
+        return False
+    if no_serial(meta.item_serial):
+        return no_serial(record.item_serial or "") and same_identifier(
+            record.item_description or "", meta.item_description or "")
+    return not no_serial(record.item_serial or "") and same_serial(record.item_serial,
+                                                                   meta.item_serial)
+
+
+def _readings_said(meta: CertificateMetadata, elsewhere: tuple[tuple[str, str, str, str], ...],
+                   stated: tuple[str, str] | None) -> Any:
+    """The statement printed on a certificate whose readings are those of the certificates
+    ``elsewhere`` of another item (:meth:`Register._readings_elsewhere`), ``stated`` (one of
+    their numbers, why) by the user; "" when there are none and none is stated.
+    :class:`ReadingsOfAnotherItem` when there are some and none is stated, or the reason is
+    empty; RegisterError when the number stated is none of them (the statement would be
+    false)."""
+    from models.register.identifiers import as_printed
+
+    def same(a: str, b: str) -> bool:
+        return as_printed(a).upper() == as_printed(b).upper()
+
+    if stated and not any(same(stated[0].strip(), n) for n, *_ in elsewhere):
+        # "N:REASON" split at its first colon, where N holds one (a typed number may)
+        whole = f"{stated[0].strip()}:{stated[1]}"
+        for n in sorted((e[0] for e in elsewhere), key=len, reverse=True):
+            if same(whole[:len(n)], n) and whole[len(n):len(n) + 1] == ":":
+                stated = (n, whole[len(n) + 1:])
+                break
+    number, reason = (stated[0].strip(), " ".join(stated[1].split())) if stated else ("", "")
+    each = [message(QT_TR_NOOP("{number} (item {item}, calibrated {date})"), number=n,
+                    item=item or "—", date=date or "—") for n, _serial, item, date in elsewhere]
+    facts = separated(each, ", ")
+    if stated and not elsewhere:
+        raise RegisterError(message(QT_TR_NOOP(
+            "--readings-of-another-item {number}: the readings are not those of any "
+            "certificate of another item in the register (compared by their values), so "
+            "nothing is to be stated; leave it out"), number=number or "—"))
+    if not elsewhere:
+        return ""
+    if stated and not any(same(number, n) for n, *_ in elsewhere):
+        raise RegisterError(message(QT_TR_NOOP(
+            "--readings-of-another-item {number}: the readings are not those of {number} but "
+            "those of {facts}; name the certificate whose readings they are"),
+            number=number or "—", facts=facts))
+    if not reason:
+        found = message(QT_TR_NOOP(
+            "the readings are those of {facts}, another item than {serial}: no two "
+            "calibrations repeat every reading to the last digit"), facts=facts,
+            serial=_printed(meta.item_serial) or _printed(meta.item_description) or "—")
+        raise ReadingsOfAnotherItem(message(QT_TR_NOOP(
+            "{found}. A calibration of this item has readings of its own; if these are "
+            "indeed its readings, say why (printed on the certificate and recorded in the "
+            "register; on the command line: --readings-of-another-item {number}:REASON)"),
+            found=found, number=elsewhere[0][0]), tuple(e[0] for e in elsewhere), found)
+    if len(elsewhere) == 1:
+        return message(QT_TR_NOOP("The readings are those of certificate {facts}: {reason}"),
+                       facts=facts, reason=reason)
+    return message(QT_TR_NOOP("The readings are those of certificates {facts}: {reason}"),
+                   facts=facts, reason=reason)
 
 
 def _serial_left_out(meta: CertificateMetadata, rows) -> SerialLeftOut:

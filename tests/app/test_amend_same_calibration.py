@@ -20,15 +20,19 @@ from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url, url_for_path
 from models.register.store import IssueRequest, NotTheSameCalibration, Register
+from tests.own_readings import own_readings
 from tests.pdf_stand_in import print_stand_ins
 
 
 def _issue(samples_dir, tmp_path, name, **changes) -> str:
-    """An original issued with the command line; its number."""
+    """An original issued with the command line, from its item's own readings
+    (tests/own_readings.py); its number."""
     meta = json.loads((samples_dir / "certificate_theodolite.json").read_text(encoding="utf-8"))
     meta.update({"example": False, "certificate_number": "", **changes})
     (tmp_path / f"{name}.json").write_text(json.dumps(meta), encoding="utf-8")
-    assert main(["analyze", "theodolite", str(samples_dir / "theodolite_sample.csv"),
+    readings = own_readings(samples_dir / "theodolite_sample.csv", meta["item_serial"],
+                            tmp_path.with_name(f"{tmp_path.name}-readings"))  # beside it
+    assert main(["analyze", "theodolite", str(readings),
                  "--certificate", str(tmp_path / f"{name}.pdf"),
                  "--metadata", str(tmp_path / f"{name}.json")]) == 0
     with Register(register_url()) as register:
@@ -92,6 +96,9 @@ def _amend(window, qtbot, tmp_path, number: str, asked: list, replacement: bool 
     view.ask_change_note = lambda revision: asked.append(("note", revision.number)) or \
         "typo in the address"
     view.ask_separate_calibration = lambda *a: ""
+    # the readings of another item's certificate: asked, not answered unless a test does
+    view.ask_readings_of_another_item = lambda numbers, reason: asked.append(
+        ("readings", numbers)) or ""
     view.choose_save_path = lambda *a: str(tmp_path / "exported.pdf")
     window.projects.view.ask_save_changes = lambda: False  # "Discard"
     qtbot.waitUntil(lambda: window._current_result() is not None, timeout=20000)
@@ -179,8 +186,12 @@ def test_a_refusal_for_good_ends_the_pending_amendment(window, qtbot, two, tmp_p
     window.certificates.view.edit_certificate_details = lambda meta, p, r: \
         CertificateMetadata.from_dict({**meta.to_dict(), "certificate_number": "",
                                        "item_serial": "QQ-1", "calibration_date": "2026-11-21"})
+    # A's readings, still in the window, issued for QQ-1: asked why (hostile78 F7), and said
+    window.certificates.view.ask_readings_of_another_item = lambda numbers, reason: \
+        asked.append(("readings", numbers)) or "the test is of the amendment's end"
     assert window.export_certificate()  # an original now: no change note asked
-    assert [k for k, _ in asked] == ["status"] and "(amendment" not in asked[0][1]
+    assert [k for k, _ in asked] == ["readings", "status"]
+    assert asked[0][1] == (a, f"{a}-A1") and "(amendment" not in asked[1][1]
     assert _records()[a + "-A1"][0] == "issued"
 
 
@@ -299,7 +310,10 @@ def test_the_command_line_joins_a_letter_with_a_mark_and_its_look_alike(samples_
     def analyze(name, *extra, **changes):
         (tmp_path / f"{name}.json").write_text(json.dumps(
             {**meta, "example": False, "certificate_number": "", **changes}), encoding="utf-8")
-        return main(["analyze", "theodolite", str(samples_dir / "theodolite_sample.csv"),
+        # each item its own readings (one item's readings are refused as another's)
+        readings = own_readings(samples_dir / "theodolite_sample.csv", changes["item_serial"],
+                                tmp_path / "readings")
+        return main(["analyze", "theodolite", str(readings),
                      "--certificate", str(tmp_path / f"{name}.pdf"),
                      "--metadata", str(tmp_path / f"{name}.json"), *extra])
 

@@ -20,6 +20,7 @@ from models.readings.tabular_import import map_columns, read_table
 from models.register.location import register_url
 from models.register.store import Register
 from models.registry import KINDS
+from tests.own_readings import own_readings
 
 #: certificates are issued from the window; the tests are of the questions asked and what
 #: the register records, never of a PDF's pages: each PDF a stand-in (tests/app/conftest.py;
@@ -34,8 +35,15 @@ def _details(samples_dir, **changes) -> CertificateMetadata:
 
 
 def _issue(register, samples_dir, tmp_path, name, **changes):
+    """An original of the item ``changes`` name, from readings of its own (its maker and
+    serial's: tests/own_readings.py; one item's readings are refused as another's, and the
+    window's are the sample's)."""
     kind = KINDS["polygon"]
-    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    details = _details(samples_dir, **changes)
+    own = own_readings(samples_dir / kind.sample_file,
+                       f"{details.item_manufacturer} {details.item_serial}",
+                       tmp_path / "readings")
+    rows = map_columns(read_table(own), kind.columns)
     result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
     return issue_certificate(register, kind, result, _details(samples_dir, **changes),
                              kind.checked_settings({}), rows, "polygon_sample.csv",

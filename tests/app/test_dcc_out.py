@@ -25,6 +25,7 @@ from lxml import etree
 from app.main import main
 from models.dcc import vocabulary as v
 from models.dcc.schema import validate
+from tests.own_readings import own_readings
 from tests.printed_u import u_beside
 
 pytestmark = pytest.mark.slow  # each sample prints a certificate
@@ -331,7 +332,10 @@ def test_an_issued_certificate_refused_for_its_dcc_is_not_recorded(tmp_path, cap
     path.write_text(json.dumps(details), encoding="utf-8")
     again = tmp_path / "again"
     again.mkdir()
-    code, said, pdf2, xml2 = _issue("theodolite", again, capsys, samples_dir, details=path)
+    # another item's readings its own (one item's are refused as another's: hostile78 F7)
+    own = own_readings(samples_dir / "theodolite_sample.csv", details["item_serial"],
+                       tmp_path / "readings").parent
+    code, said, pdf2, xml2 = _issue("theodolite", again, capsys, own, details=path)
     assert code != 0 and "si:value" in said
     assert not xml2.exists() and not pdf2.exists()
     with Register(register_url()) as register:

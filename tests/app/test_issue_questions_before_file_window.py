@@ -20,6 +20,7 @@ from models.readings.tabular_import import map_columns, read_table
 from models.register.location import register_url, url_for_path
 from models.register.store import Register
 from models.registry import KINDS
+from tests.own_readings import own_readings
 
 #: certificates are issued from the window; the tests are of the questions asked and what
 #: the register records, never of a PDF's pages: each PDF a stand-in (tests/app/conftest.py;
@@ -36,8 +37,12 @@ def _details(samples_dir, **changes) -> CertificateMetadata:
 
 
 def _first(samples_dir, tmp_path) -> str:
+    """LRA-0815 of :data:`FIRST_MAKER` issued from readings of its own (tests/own_readings.py:
+    one item's readings are refused as another's; the window's are the sample's)."""
     kind = KINDS["polygon"]
-    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    own = own_readings(samples_dir / kind.sample_file, f"{FIRST_MAKER} LRA-0815",
+                       tmp_path.with_name(f"{tmp_path.name}-readings"))
+    rows = map_columns(read_table(own), kind.columns)
     result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
     with Register(register_url()) as register:
         return issue_certificate(register, kind, result, _details(
@@ -76,6 +81,7 @@ def _answer(window, samples_dir, tmp_path, calls: list, answer, **details) -> No
                                                                          **details)
     view.confirm_draft = view.confirm_implausible = view.confirm_standards = lambda *a: True
     view.ask_separate_calibration = lambda numbers, reason: calls.append("separate") or ""
+    view.ask_readings_of_another_item = lambda numbers, reason: calls.append("readings") or ""
     view.choose_save_path = lambda title, suggested, file_filter: calls.append("file") or \
         str(tmp_path / "second.pdf")
     view.wait_cursor = lambda on: None

@@ -10,6 +10,7 @@ import json
 from app.main import main
 from models.register.location import register_url
 from models.register.store import Register
+from tests.own_readings import own_readings
 
 
 def test_a_lookalike_serial_is_issued_only_with_its_option_and_shown(samples_dir, tmp_path,
@@ -20,7 +21,12 @@ def test_a_lookalike_serial_is_issued_only_with_its_option_and_shown(samples_dir
         meta.update({"example": False, "certificate_number": "", "item_serial": serial,
                      "item_manufacturer": maker})
         (tmp_path / f"{name}.json").write_text(json.dumps(meta), encoding="utf-8")
-        code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+        # another item, readings of its own (one item's are refused as another's: hostile78
+        # F7); LRA-0815's the sample's
+        readings = samples_dir / "polygon_sample.csv"
+        if serial != "LRA-0815":
+            readings = own_readings(readings, serial, tmp_path / "readings")
+        code = main(["analyze", "polygon", str(readings),
                      "--certificate", str(tmp_path / f"{name}.pdf"), "--metadata",
                      str(tmp_path / f"{name}.json"), *options])
         return code, capsys.readouterr().err

@@ -22,16 +22,25 @@ from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url, url_for_path
 from models.register.schema import CERTIFICATES
 from models.register.store import IssueRequest, Register, RegisterError
+from tests.own_readings import own_readings
 from tests.pdf_stand_in import print_stand_ins
 
 
-def issue(samples_dir, tmp_path, name, capsys, **changes):
+def issue(samples_dir, tmp_path, name, capsys, *extra, **changes):
+    """The polygon sample's certificate issued with the example's details changed by
+    ``changes``: the example's item (RX-26-0815) from the sample's readings, another item
+    from readings of its own (tests/own_readings.py: one item's readings are refused as
+    another's, hostile78 F7)."""
     meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    sample = meta["item_serial"]
     meta.update({"example": False, **changes})  # the lab's own details, made from the example
     meta_path = tmp_path / f"{name}.json"
     meta_path.write_text(json.dumps(meta), encoding="utf-8")
-    code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--certificate",
-                 str(tmp_path / f"{name}.pdf"), "--metadata", str(meta_path)])
+    readings = samples_dir / "polygon_sample.csv"
+    if meta["item_serial"] != sample:
+        readings = own_readings(readings, meta["item_serial"], tmp_path / "readings")
+    code = main(["analyze", "polygon", str(readings), "--certificate",
+                 str(tmp_path / f"{name}.pdf"), "--metadata", str(meta_path), *extra])
     return code, capsys.readouterr().err
 
 
@@ -694,7 +703,12 @@ def test_another_makers_item_is_issued_only_with_its_option_and_shown(samples_di
         meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
         meta.update({"example": False, "certificate_number": "", "item_manufacturer": maker})
         (tmp_path / f"{name}.json").write_text(json.dumps(meta), encoding="utf-8")
-        code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+        # Zeta's item, another, has readings of its own (one item's are refused as
+        # another's: hostile78 F7); Möller-Wedel's, spelt either way, the sample's
+        readings = own_readings(samples_dir / "polygon_sample.csv", "Zeta RX-26-0815",
+                                tmp_path / "readings") if maker.startswith("Zeta") else \
+            samples_dir / "polygon_sample.csv"
+        code = main(["analyze", "polygon", str(readings),
                      "--certificate", str(tmp_path / f"{name}.pdf"), "--metadata",
                      str(tmp_path / f"{name}.json"), *options])
         return code, capsys.readouterr().err

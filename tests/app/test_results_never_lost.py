@@ -17,6 +17,7 @@ import os
 import tempfile
 import threading
 import zipfile
+from pathlib import Path
 
 import pytest
 
@@ -24,6 +25,7 @@ from app.main import main
 from models.project.output_guard import OutputRefused, check_output, check_outputs
 from models.register.location import register_url
 from models.register.store import Register, RegisterError
+from tests.own_readings import own_readings
 
 #: the tests are of where an issue's files go and what the register keeps of them, never of
 #: a PDF's pages: each certificate's PDF a stand-in (tests/app/conftest.py; ~0.5 s of CPU a
@@ -40,7 +42,16 @@ def _details(samples_dir, tmp_path, name="details.json", **changes):
 
 
 def _issue(samples_dir, tmp_path, *outputs, details=None, separate=False):
-    return main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+    """The polygon sample issued: the example's item from the sample's readings, another item
+    from readings of its own (tests/own_readings.py, beside ``tmp_path``: one item's
+    readings are refused as another's, hostile78 F7)."""
+    readings = samples_dir / "polygon_sample.csv"
+    serial = json.loads(Path(details).read_text(encoding="utf-8"))["item_serial"] \
+        if details else ""
+    if serial and serial != json.loads((samples_dir / "certificate_polygon.json").read_text(
+            encoding="utf-8"))["item_serial"]:
+        readings = own_readings(readings, serial, tmp_path.with_name(f"{tmp_path.name}-own"))
+    return main(["analyze", "polygon", str(readings),
                  "--metadata", str(details or _details(samples_dir, tmp_path)), *outputs,
                  *(["--separate-calibration", "rerun"] if separate else [])])
 

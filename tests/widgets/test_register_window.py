@@ -15,14 +15,24 @@ from models.certificate.metadata import CertificateMetadata
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
+from tests.own_readings import own_readings
 from tests.pdf_stand_in import print_stand_ins
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
 
 def issue_polygon(register, samples_dir, tmp_path, name, **changes):
+    """The polygon sample's certificate, the example's details changed by ``changes``: the
+    example's item from the sample's readings, another item (serial or maker changed) from
+    readings of its own (tests/own_readings.py: one item's readings are refused as
+    another's, hostile78 F7)."""
     kind = KINDS["polygon"]
-    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    readings = samples_dir / kind.sample_file
+    if "item_serial" in changes or "item_manufacturer" in changes:
+        readings = own_readings(readings, f"{changes.get('item_manufacturer', '')} "
+                                f"{changes.get('item_serial', '')}",
+                                tmp_path.with_name(f"{tmp_path.name}-own"))
+    rows = map_columns(read_table(readings), kind.columns)
     result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
     data = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
     # the lab's own details made from the example (with "example": true the window makes a

@@ -13,6 +13,7 @@ from app.writers.certificate_pdf.wording import _between, _colon, _in_both, _lis
 from models.certificate.document import CertificateDocument
 from models.certificate.metadata import (
     PLACES,
+    readings_of_another_item_statement,
     revision_statement,
     separate_statement,
     withdrawn_statement,
@@ -50,6 +51,8 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
         pdf.paragraph(separate_statement(meta), 9.5, (20, 60, 140))
     if meta.replaces_withdrawn:  # a withdrawn certificate of this calibration (hostile78 F3)
         pdf.paragraph(withdrawn_statement(meta), 9.5, (20, 60, 140))
+    if meta.readings_of_another_item:  # another item's readings, said why (hostile78 F7)
+        pdf.paragraph(readings_of_another_item_statement(meta), 9.5, (20, 60, 140))
     pdf.ln(1)
     pdf.key_values([
         (label(document, "Certificate number", "\n"), meta.certificate_number),

@@ -152,10 +152,13 @@ def issued(tmp_path_factory):
                            tolerance_unit="um", decision_quantity="half_range",
                            decision_rule="simple", standards=standards, item_serial="LS-0692")
         found["linear"] = _issue(out, "linear", "positioning", linear, details, options)
-        # the same results read in µrad: the µm figures are no angles, none converted
+        # the same results read in µrad: the µm figures are no angles, none converted (the
+        # same readings for another item: said, as the register asks, hostile78 F7)
         details = dict(details, certificate_number="AB-2026-0693", item_serial="LS-0693")
         found["linear_urad"] = _issue(out, "linear_urad", "positioning", linear, details,
-                                      options, unit="urad")
+                                      [*options, "--readings-of-another-item",
+                                       "AB-2026-0692:LS-0692's readings read in µrad, a test "
+                                       "of the units"], unit="urad")
         rotary = out / "rotary.csv"
         _positioning_csv(rotary, rng, np.arange(0.0, 360.0, 30.0), 0.002)  # ″ per degree
         found["rotary"] = _issue(out, "rotary", "positioning", rotary, _details(

@@ -34,6 +34,7 @@ from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.register.store import Register
 from tests.instrument_simulators import AutocollimatorSimulator
+from tests.own_readings import own_readings
 
 
 def _session(lines=(b"3 003 1.250 -0.500", b"\xff\x00garbage\r", b"3 003 1.260 -0.490")):
@@ -114,6 +115,12 @@ def test_the_register_chains_the_digest_and_the_certificate_prints_it(register_u
                                   kind.checked_settings({}), rows, "typed.csv",
                                   str(tmp_path / "typed.pdf"))
         data["item_serial"] += "-2"  # another item: one issued again is refused (#61)
+        # with readings of its own (one item's are refused as another's: hostile78 F7)
+        rows = map_columns(read_table(own_readings(samples_dir / kind.sample_file,
+                                                   data["item_serial"], tmp_path / "own")),
+                           kind.columns)
+        result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(),
+                              kind.checked_settings({}))
         record = issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
                                    kind.checked_settings({}), rows, "captured.anglebench.json",
                                    str(tmp_path / "captured.pdf"), raw_capture=sessions)
