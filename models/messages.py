@@ -198,6 +198,9 @@ def rendered(text: str, translate: Callable[[str], str], window: bool = False) -
 
 #: a character of Chinese text: an ideograph, or CJK or full-width punctuation ("。", "（")
 _CJK = re.compile(r"[\u3000-\u303f\u3400-\u4dbf\u4e00-\u9fff\uff00-\uffef]")
+#: a figure's end that is Chinese text's own: also the quotation marks a Chinese text quotes a
+#: typed name with (“…”, :func:`typed_name`), which Chinese sets with no space beside them
+_CJK_FIGURE_END = re.compile(r"[\u3000-\u303f\u3400-\u4dbf\u4e00-\u9fff\uff00-\uffef“”]")
 
 
 def _filled(words: str, figures: dict[str, Any]) -> str:
@@ -224,9 +227,11 @@ def _filled(words: str, figures: dict[str, Any]) -> str:
             continue
         before = pieces[i - 1] if i else ("", False)
         after = pieces[i + 1] if i + 1 < len(pieces) else ("", False)
-        if text[:1] == " " and before[1] and _CJK.match(before[0][-1:]) and _CJK.match(text[1:2]):
+        if (text[:1] == " " and before[1] and _CJK_FIGURE_END.match(before[0][-1:])
+                and _CJK.match(text[1:2])):
             text = text[1:]
-        if text[-1:] == " " and after[1] and _CJK.match(after[0][:1]) and _CJK.match(text[-2:-1]):
+        if (text[-1:] == " " and after[1] and _CJK_FIGURE_END.match(after[0][:1])
+                and _CJK.match(text[-2:-1])):
             text = text[:-1]
         pieces[i] = (text, figure)
     return "".join(text for text, _ in pieces)

@@ -1942,6 +1942,10 @@
         <translation>证书 {number} 已签发：已写入 {path} 并记录在登记册中</translation>
     </message>
     <message>
+        <source>No certificate was written or recorded: the readings are those of {numbers}, another item&apos;s. Issue this item&apos;s certificate from its own readings.</source>
+        <translation>未写出也未登记任何证书：这些读数是 {numbers} 的，属于另一被校件。请用本被校件自己的读数签发其证书。</translation>
+    </message>
+    <message>
         <source>Export results</source>
         <translation>导出结果</translation>
     </message>
@@ -2479,6 +2483,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{reason}。
 
 如果这是一次独立的校准，请说明理由（将与仍然有效的 {numbers} 的编号一起印在证书上）；如要更正 {numbers}，请取消，并在 文件 › 证书登记册 中对其进行修订或替代。</translation>
+    </message>
+    <message>
+        <source>Readings of another item</source>
+        <translation>另一被校件的读数</translation>
+    </message>
+    <message>
+        <source>{reason}.
+
+If these readings are indeed this item&apos;s, say why: printed on the certificate with the number, item and date of calibration of {numbers}, and recorded in the register. Otherwise cancel, and issue it from this item&apos;s own readings.</source>
+        <translation>{reason}。
+
+如果这些读数确实是本被校件的，请说明理由：理由连同 {numbers} 的编号、被校件和校准日期一起印在证书上，并记入登记册。否则请取消，用本被校件自己的读数签发。</translation>
     </message>
     <message>
         <source>Nothing to export</source>
@@ -3116,6 +3132,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>代替同一被校件、同一校准日期的已撤回证书签发：{note}</translation>
     </message>
     <message>
+        <source>The readings are those of certificate(s) {numbers} of another item</source>
+        <translation>读数是另一被校件的证书 {numbers} 的读数</translation>
+    </message>
+    <message>
         <source>certificate field &apos;standards&apos; must be a list</source>
         <translation>证书字段 &apos;standards&apos; 必须是列表</translation>
     </message>
@@ -3469,6 +3489,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>  another item, as {user} confirmed at issue ({recorded_at}): serial {serial}, not the item of {others}</source>
         <translation>  另一件物品，由 {user} 在签发时确认（{recorded_at}）：序列号 {serial}，不是 {others} 的物品</translation>
+    </message>
+    <message>
+        <source>  readings of another item, as {user} said at issue ({recorded_at}): those of {others}: {reason}</source>
+        <translation>  另一被校件的读数，由 {user} 在签发时说明（{recorded_at}）：为 {others} 的读数：{reason}</translation>
     </message>
     <message>
         <source>  next calibration of {serial} due: {date}</source>
@@ -6399,6 +6423,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>与 --certificate 一起使用：一份仍然有效的证书以另一制造商的名称报告了相同的序列号和校准日期，而这确实是另一制造商的被校件（否则予以拒绝：写法不同的制造商名称仍是同一制造商）；登记册会记录这是您的说明</translation>
     </message>
     <message>
+        <source>with --certificate: the readings (their values, however typed or ordered) are those of certificate N of another item in the register, and why (else it is refused, naming that certificate, its item and date of calibration: no two calibrations repeat every reading to the last digit); printed on the certificate and recorded in the register</source>
+        <translation>与 --certificate 一起使用：读数（按其数值，不论如何书写或排列）是登记册中另一被校件的证书 N 的读数，并说明理由（否则签发被拒绝，并指出那份证书、其被校件和校准日期：没有两次校准会把每个读数重复到最后一位）；印在证书上并记入登记册</translation>
+    </message>
+    <message>
         <source>with --certificate: today&apos;s date, as you know it, for an issue more than 30 days after the register&apos;s last record (else it is refused, naming the date the computer&apos;s clock gives: a clock set ahead would date the certificate wrongly); recorded in the register that you confirmed it</source>
         <translation>与 --certificate 一起用：签发时间晚于登记册最后一条记录 30 天以上时，您所知道的今天的日期（否则被拒绝，并指出计算机时钟给出的日期：调快的时钟会把证书的日期写错）；您的确认会记入登记册</translation>
     </message>
@@ -7420,7 +7448,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>register {display_url}: {reason}</source>
-        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the key&apos;s file, beside which the register&apos;s high-water mark is kept (reg73 #2) the state a write transaction leaves, noted in the mark once it is committed the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) the key given is not the one the register was signed with (:meth:`_key_problem`) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) told, at once, when a write waits for the SQLite register&apos;s write lock held by another process (what it waits for, and for how long at most): the command line says it on stderr, the window in its status line. None: nobody is told this process noted itself as the writer beside the database (writer_note.py) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
+        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the key&apos;s file, beside which the register&apos;s high-water mark is kept (reg73 #2) the state a write transaction leaves, noted in the mark once it is committed the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) each record&apos;s readings_key by its number (a record never changes): computed once the key given is not the one the register was signed with (:meth:`_key_problem`) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) told, at once, when a write waits for the SQLite register&apos;s write lock held by another process (what it waits for, and for how long at most): the command line says it on stderr, the window in its status line. None: nobody is told this process noted itself as the writer beside the database (writer_note.py) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
         <translation>登记册 {display_url}：{reason}</translation>
     </message>
     <message>
@@ -7630,6 +7658,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>参考标准器 {standard} 引用了证书 {number}，该证书已被 {by} 取代：请引用 {by} 及其数值</translation>
     </message>
     <message>
+        <source>date of calibration changed from {old} (on {number}) to {new}</source>
+        <translation>校准日期由 {old}（{number} 上）改为 {new}</translation>
+    </message>
+    <message>
         <source>customer changed from {old} (on {number}) to {new}</source>
         <translation>客户由 {old}（{number} 上）改为 {new}</translation>
     </message>
@@ -7728,6 +7760,34 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>record {number}: it has no place in the hash chain (inserted after issue)</source>
         <translation>记录 {number}：它在哈希链中没有位置（签发后插入）</translation>
+    </message>
+    <message>
+        <source>{number} (item {item}, calibrated {date})</source>
+        <translation>{number}（被校件 {item}，校准于 {date}）</translation>
+    </message>
+    <message>
+        <source>--readings-of-another-item {number}: the readings are not those of any certificate of another item in the register (compared by their values), so nothing is to be stated; leave it out</source>
+        <translation>--readings-of-another-item {number}：读数不是登记册中另一被校件任何证书的读数（按数值比较），因此没有什么需要声明；请去掉该选项</translation>
+    </message>
+    <message>
+        <source>--readings-of-another-item {number}: the readings are not those of {number} but those of {facts}; name the certificate whose readings they are</source>
+        <translation>--readings-of-another-item {number}：读数不是 {number} 的，而是 {facts} 的；请指出读数所属的那份证书</translation>
+    </message>
+    <message>
+        <source>the readings are those of {facts}, another item than {serial}: no two calibrations repeat every reading to the last digit</source>
+        <translation>读数是 {facts} 的读数，那是 {serial} 以外的另一被校件：没有两次校准会把每个读数重复到最后一位</translation>
+    </message>
+    <message>
+        <source>{found}. A calibration of this item has readings of its own; if these are indeed its readings, say why (printed on the certificate and recorded in the register; on the command line: --readings-of-another-item {number}:REASON)</source>
+        <translation>{found}。本被校件的校准有它自己的读数；如果这些确实是它的读数，请说明理由（印在证书上并记入登记册；命令行：--readings-of-another-item {number}:REASON）</translation>
+    </message>
+    <message>
+        <source>The readings are those of certificate {facts}: {reason}</source>
+        <translation>读数是证书 {facts} 的读数：{reason}</translation>
+    </message>
+    <message>
+        <source>The readings are those of certificates {facts}: {reason}</source>
+        <translation>读数是证书 {facts} 的读数：{reason}</translation>
     </message>
     <message>
         <source>and more: see the register&apos;s records</source>

@@ -117,3 +117,17 @@ def test_a_template_space_goes_only_between_its_chinese_and_a_chinese_figure():
     assert rendered(message("{a} {b}", a="甲", b="乙"), say) == "甲 乙"  # two figures: as typed
     assert rendered(message("第 {n} 点，{x} 的", n=3, x="边"), say) == "第 3 点，边的"
     assert message("for {x} the", x="目标") == "for 目标 the"  # English: never touched
+
+
+def test_no_space_between_a_quoted_name_and_the_chinese_beside_it():
+    """A typed name quoted in Chinese (“Data acquisition (16-bit ADC)”, assessment 78 L5) is
+    set as Chinese text sets its quotes, with no space beside them: the fringe DCC read
+    "“Data acquisition (16-bit ADC)” 未给出不确定度"."""
+    from models.messages import rendered
+
+    words = {"{name} 未给出不确定度": "{name} 未给出不确定度", "未说明 {name} 的": "未说明 {name} 的"}
+    say = words.__getitem__
+    assert rendered(message("{name} 未给出不确定度", name="“ADC 16”"), say) == "“ADC 16”未给出不确定度"
+    assert rendered(message("未说明 {name} 的", name="“ADC 16”"), say) == "未说明“ADC 16”的"
+    # unquoted Latin keeps its space, as before
+    assert rendered(message("{name} 未给出不确定度", name="ADC 16"), say) == "ADC 16 未给出不确定度"
