@@ -286,6 +286,17 @@ def _administrative(b: _Builder, root, software: SoftwareIdentity) -> _Element:
     return refdefs
 
 
+def _name_references(statement, numbers: str) -> None:
+    """Each certificate number of ``numbers`` (comma-separated) named as a reference of
+    ``statement``, before its declaration, in the order given."""
+    declaration = statement.find(D + "declaration")
+    for number in (n.strip() for n in numbers.split(",")):
+        if number:
+            reference = etree.Element(D + "reference")
+            reference.text = number
+            declaration.addprevious(reference)
+
+
 def _statement(b: _Builder, parent, ref: str, description: str, *texts: Any, **fields):
     st = etree.SubElement(parent, D + "statement", refType=b.ref(ref, description))
     for key in ("convention", "traceable", "norm", "reference"):
@@ -353,9 +364,7 @@ def _statements(b: _Builder, admin) -> None:
         st = _statement(b, sts, v.REFTYPE_REVISION,
                         "what the amendment or replacement changed of the certificate it "
                         "supersedes, named as its reference (ISO/IEC 17025 7.8.8)", revision)
-        reference = etree.Element(D + "reference")
-        reference.text = doc.metadata.supersedes
-        st.find(D + "declaration").addprevious(reference)
+        _name_references(st, doc.metadata.supersedes)
     separate = separate_statement(doc.metadata)
     if separate:
         # a calibration of its own beside certificates of the same item and date that stay
@@ -367,12 +376,7 @@ def _statements(b: _Builder, admin) -> None:
                         "a calibration of its own, separate from the certificates of the same "
                         "item and date of calibration named as its references, which stay "
                         "valid; the declaration says why", separate)
-        declaration = st.find(D + "declaration")
-        for number in (n.strip() for n in doc.metadata.separate_from.split(",")):
-            if number:
-                reference = etree.Element(D + "reference")
-                reference.text = number
-                declaration.addprevious(reference)
+        _name_references(st, doc.metadata.separate_from)
     withdrawn = withdrawn_statement(doc.metadata)
     if withdrawn:
         # an original in place of a withdrawn certificate of the same calibration (ISO/IEC
@@ -382,12 +386,7 @@ def _statements(b: _Builder, admin) -> None:
                         "item and date of calibration named as its references; the declaration "
                         "says when and why each was withdrawn and what this one changes",
                         withdrawn)
-        declaration = st.find(D + "declaration")
-        for number in (n.strip() for n in doc.metadata.replaces_withdrawn.split(",")):
-            if number:
-                reference = etree.Element(D + "reference")
-                reference.text = number
-                declaration.addprevious(reference)
+        _name_references(st, doc.metadata.replaces_withdrawn)
     readings = readings_of_another_item_statement(doc.metadata)
     if readings:
         # the readings are another item's certificates', the user said why (hostile78 F7):
@@ -396,12 +395,7 @@ def _statements(b: _Builder, admin) -> None:
                         "the readings are those of the certificates of another item named as "
                         "its references; the declaration names their item and date of "
                         "calibration and says why", readings)
-        declaration = st.find(D + "declaration")
-        for number in (n.strip() for n in doc.metadata.readings_of_another_item.split(",")):
-            if number:
-                reference = etree.Element(D + "reference")
-                reference.text = number
-                declaration.addprevious(reference)
+        _name_references(st, doc.metadata.readings_of_another_item)
     for extra in (*filter(None, [doc.not_in_u_statement]), *doc.statements, *doc.warnings):
         _statement(b, sts, "anglebench_remark", "a statement or warning of the certificate",
                    extra)
