@@ -9,7 +9,7 @@ import hashlib
 import re
 from pathlib import Path
 
-__all__ = ["own_readings"]
+__all__ = ["one_reading_moved", "own_readings", "theodolite_sample_rows"]
 
 #: the columns that set a point, not read at it, and a standard's known deviations: kept
 _SET = frozenset({"theta_deg", "position", "set", "direction", "run", "target", "mounting",
@@ -63,3 +63,22 @@ def own_readings(sample: Path, serial: str, folder: Path) -> Path:
     with open(path, "w", newline="", encoding="utf-8") as handle:
         csv.writer(handle).writerows(out)
     return path
+
+
+def theodolite_sample_rows() -> list[list[str]]:
+    """The bundled theodolite sample's rows as the sheet maps them (41 readings)."""
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+
+    kind = KINDS["theodolite"]
+    samples = Path(__file__).resolve().parents[1] / "resources" / "samples"
+    return map_columns(read_table(samples / kind.sample_file), kind.columns)
+
+
+def one_reading_moved(rows: list[list[str]]) -> list[list[str]]:
+    """The theodolite sample's ``rows`` with one reading of 41 a tenth of a second of arc
+    away: readings of their own, one digit from the sample's."""
+    moved = [list(r) for r in rows]
+    assert moved[7][1] == "-12°55'35.8\""
+    moved[7][1] = "-12°55'35.9\""
+    return moved

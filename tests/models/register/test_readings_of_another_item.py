@@ -7,7 +7,6 @@ unless the user says why, which is printed on it and recorded in the register's 
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import pytest
 
@@ -20,24 +19,7 @@ from models.register.store import (
     Register,
     RegisterError,
 )
-from models.registry import KINDS
-
-SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
-
-
-def _sample_rows() -> list[list[str]]:
-    from models.readings.tabular_import import map_columns, read_table
-
-    kind = KINDS["theodolite"]
-    return map_columns(read_table(SAMPLES / kind.sample_file), kind.columns)
-
-
-def _moved(rows) -> list[list[str]]:
-    """``rows`` with one reading of 41 a tenth of a second of arc away."""
-    moved = [list(r) for r in rows]
-    assert moved[7][1] == "-12°55'35.8\""
-    moved[7][1] = "-12°55'35.9\""
-    return moved
+from tests.own_readings import one_reading_moved, theodolite_sample_rows
 
 
 def _project(rows) -> str:
@@ -68,7 +50,7 @@ def _issue(register: Register, serial: str, rows, date: str = "2026-11-20",
 
 
 def test_the_readings_are_their_values_however_typed_ordered_or_saved():
-    rows = _sample_rows()
+    rows = theodolite_sample_rows()
     key = readings_key(_project(rows), "theodolite")
     assert len(key) == 64
     # re-typed: the angles in decimal degrees, 12 digits; "+" and trailing zeros; the rows
@@ -78,7 +60,7 @@ def test_the_readings_are_their_values_however_typed_ordered_or_saved():
     assert decimal[1] != rows[1]
     assert readings_key(_project(decimal[::-1] + [["", "", ""]]), "theodolite") == key
     # one reading of 41 one tenth of a second of arc away: other readings
-    moved = _moved(rows)
+    moved = one_reading_moved(rows)
     assert readings_key(_project(moved), "theodolite") != key
     # nothing to compare: no rows, no project, a workbench this version does not have
     assert readings_key(_project([]), "theodolite") == ""
@@ -87,7 +69,7 @@ def test_the_readings_are_their_values_however_typed_ordered_or_saved():
 
 
 def test_another_items_readings_are_refused_naming_its_certificate(tmp_path):
-    rows = _sample_rows()
+    rows = theodolite_sample_rows()
     with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
         first, _ = _issue(register, "LRA-0815", rows)
         # the same values re-typed and the rows reversed, for another item: refused
@@ -127,10 +109,10 @@ def test_another_items_readings_are_refused_naming_its_certificate(tmp_path):
 
 
 def test_readings_of_their_own_and_the_items_own_are_issued_and_a_false_word_refused(tmp_path):
-    rows = _sample_rows()
+    rows = theodolite_sample_rows()
     with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
         _issue(register, "LRA-0815", rows)
-        moved = _moved(rows)  # one reading of its own
+        moved = one_reading_moved(rows)  # one reading of its own
         _, meta = _issue(register, "LRA-0900", moved)
         assert meta.readings_of_another_item == "" and meta.readings_note == ""
         # the same item's readings, another day's calibration: not another item's
@@ -144,7 +126,7 @@ def test_readings_of_their_own_and_the_items_own_are_issued_and_a_false_word_ref
 def test_a_lookalike_serial_said_to_be_another_item_is_still_asked_for_its_readings(tmp_path):
     """hostile78 F7: with F2 closed the route stayed open through a look-alike serial and
     --another-lookalike-item: another item, by the user's word, so another item's readings."""
-    rows = _sample_rows()
+    rows = theodolite_sample_rows()
     with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
         first, _ = _issue(register, "LRA-0815", rows)
         meta = _meta("1ra-0815")
@@ -157,13 +139,13 @@ def test_a_lookalike_serial_said_to_be_another_item_is_still_asked_for_its_readi
 
 
 def test_an_amendment_is_asked_only_when_it_changes_its_readings_to_another_items(tmp_path):
-    rows = _sample_rows()
+    rows = theodolite_sample_rows()
     with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
         first, _ = _issue(register, "LRA-0815", rows)
-        second, _ = _issue(register, "LRA-0900", _moved(rows))
+        second, _ = _issue(register, "LRA-0900", one_reading_moved(rows))
         # its own readings again: not asked
         amended, _ = register.issue(IssueRequest("theodolite", _meta("LRA-0900"),
-                                                 _project(_moved(rows))),
+                                                 _project(one_reading_moved(rows))),
                                     lambda m: b"%PDF A1", supersedes=second.number,
                                     change_note="typo", separate_calibration="")
         # LRA-0815's readings put in its place: asked
@@ -177,7 +159,7 @@ def test_an_amendment_is_asked_only_when_it_changes_its_readings_to_another_item
 def test_a_typed_number_with_a_colon_is_named_whole(tmp_path):
     """--readings-of-another-item N:REASON is split at its first colon; a number typed with
     one (the register takes it) is found again whole."""
-    rows = _sample_rows()
+    rows = theodolite_sample_rows()
     with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
         register.issue(IssueRequest("theodolite", _meta(
             "LRA-0815", certificate_number="LAB:2026-7"), _project(rows)),

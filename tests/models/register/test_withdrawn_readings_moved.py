@@ -6,28 +6,10 @@ and the date's change. Readings of their own a day later are another calibration
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 from models.certificate.metadata import CertificateMetadata
 from models.register.store import IssueRequest, Register
-from models.registry import KINDS
-
-SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
-
-
-def _sample_rows() -> list[list[str]]:
-    from models.readings.tabular_import import map_columns, read_table
-
-    kind = KINDS["theodolite"]
-    return map_columns(read_table(SAMPLES / kind.sample_file), kind.columns)
-
-
-def _moved(rows) -> list[list[str]]:
-    """``rows`` with one reading of 41 a tenth of a second of arc away."""
-    moved = [list(r) for r in rows]
-    assert moved[7][1] == "-12°55'35.8\""
-    moved[7][1] = "-12°55'35.9\""
-    return moved
+from tests.own_readings import one_reading_moved, theodolite_sample_rows
 
 
 def _issue(register: Register, serial: str, rows, date: str):
@@ -50,7 +32,7 @@ def _issue(register: Register, serial: str, rows, date: str):
 
 
 def test_a_withdrawn_certificates_readings_dated_a_day_later_name_it(tmp_path):
-    rows = _sample_rows()
+    rows = theodolite_sample_rows()
     with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
         first, _ = _issue(register, "LRA-0815", rows, "2026-11-20")
         register.withdraw(first.number, "tolerance typed wrong")
@@ -60,7 +42,7 @@ def test_a_withdrawn_certificates_readings_dated_a_day_later_name_it(tmp_path):
         assert (f"(tolerance typed wrong); changed: date of calibration changed from "
                 f"2026-11-20 (on {first.number}) to 2026-11-21") in str(meta.withdrawn_note)
         # readings of their own, a day later: another calibration, no link
-        moved = _moved(rows)
+        moved = one_reading_moved(rows)
         register.withdraw(second.number, "again")
         _, meta = _issue(register, "LRA-0815", moved, "2026-11-22")
         assert meta.replaces_withdrawn == ""
