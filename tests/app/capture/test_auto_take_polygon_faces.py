@@ -64,7 +64,10 @@ def _first_take(panel, bench, qtbot, ac, ro=None) -> None:
     column), auto-take on, and the first face taken."""
     panel.connect_to("autocollimator", ac.port, **FAST)
     if ro is not None:
-        panel.connect_to("readout", ro.port, slot=1, **FAST)
+        # the readout answers throughout (only the autocollimator's mirror leaves the view):
+        # given 2 s of silence, as a loaded machine can starve its simulator past 0.5 s (a
+        # fresh-clone run: "readout … (link lost) (reconnecting)" during a turn, 2026-12-07)
+        panel.connect_to("readout", ro.port, slot=1, **{**FAST, "silence_s": 2.0})
         readout = panel.links[1]
         readout.column.setCurrentIndex(readout.column.findData("encoder_deg"))
     qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=5000)
