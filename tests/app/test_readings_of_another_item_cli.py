@@ -23,6 +23,7 @@ from models.readings.tabular_import import map_columns, read_table
 from models.register.location import register_url
 from models.register.store import Register
 from models.registry import KINDS
+from tests.app.test_certificate_presenter import Store
 
 
 def _retyped(samples_dir, path) -> None:
@@ -86,18 +87,10 @@ def test_another_items_readings_are_refused_then_issued_saying_why(samples_dir, 
                      rf"{first.number} \(LRA-0815, .*\): the pair was read once, coupled", shown)
 
 
-class _Store(dict):
-    def value(self, key, default=None):
-        return self.get(key, default)
-
-    def setValue(self, key, value):  # noqa: N802 - QSettings' name
-        self[key] = value
-
-
 @pytest.mark.slow
 def test_the_window_asks_why_before_the_file_name(samples_dir, tmp_path):
     view = mock.create_autospec(CertificateView, instance=True)
-    presenter = CertificatePresenter(view, _Store(), lambda: {}, mock.Mock())
+    presenter = CertificatePresenter(view, Store(), lambda: {}, mock.Mock())
     kind = KINDS["theodolite"]
     rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
     result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
