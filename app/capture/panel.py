@@ -474,6 +474,8 @@ class InstrumentLink:
         self.kind = ""
         self.frames: deque[tuple[float, tuple[float, ...], int]] = deque(maxlen=8192)
         self.latest: Reading | None = None
+        #: when :attr:`latest` came (``time.monotonic()``)
+        self.latest_at: float | None = None
         self.received = 0  # readings taken in from the worker since connecting
         #: the raw frame index of the last frame a take of this link used (-1: none): a
         #: take needs a newer one, one frame never fills two rows
@@ -1404,7 +1406,8 @@ class CapturePanel(QDockWidget):
                     (float(latest.values[0]) - taken_at + 180.0) % 360.0 - 180.0) \
                     >= self.table_move_deg():
                 gate.moved()
-        taken = gate.feed(reading.time_s, offsets * scale, tag=reading.frame)
+        taken = gate.feed(reading.time_s, offsets * scale, tag=reading.frame,
+                          others_since=self._others_since())
         if taken is None:
             return
         means = (self._origin.angles(np.asarray(taken.mean) / scale) if angles
@@ -1414,6 +1417,29 @@ class CapturePanel(QDockWidget):
         # hold)
         first = taken.first_tag if taken.first_tag is not None else reading.frame
         self.take_reading(means, (first, reading.frame))
+
+    def _others_since(self) -> float | None:
+        """When the oldest of the other links' newest readings came, in the first link's
+        time (its worker's seconds), or None with no other link usable: auto-take takes
+        only when it came during the first's steady dwell (a readout read before it may be
+        of the move: the encoder half-way between two faces beside the second's null)."""
+        first = self.links[0]
+        times = [link.latest_at for link in self.links
+                 if link is not first and link.usable and link.latest_at is not None]
+        if not times or first.worker is None:
+            return None
+        return min(times) - first.worker.t0
+
+    def _behind_the_dwell(self) -> list[InstrumentLink]:
+        """The other links whose newest reading came before the dwell in progress began."""
+        if self.gate is None or self.links[0].worker is None:
+            return []
+        since = self.gate.dwell_since
+        if since is None:
+            return []
+        t0 = self.links[0].worker.t0
+        return [link for link in self.links if link is not self.links[0] and link.usable
+                and link.latest_at is not None and link.latest_at - t0 < since]
 
     def _show_gate(self) -> None:
         if self.gate is None or self.latest is None:
@@ -1426,6 +1452,8 @@ class CapturePanel(QDockWidget):
             return
         phase, part = self.gate.progress(self.latest.time_s)
         again = [link for link in self.used_again() if link is not self.links[0]]
+        if phase == "settling" and part >= 1.0:
+            again = again or self._behind_the_dwell()
         table = self._table_link() if phase == "taken" else None
         if table is not None:
             self.auto_state.setText(tr("Auto-take: taken; turn the table to the next face "
@@ -1670,6 +1698,9 @@ class CapturePanel(QDockWidget):
             link.received += 1
             link.frames.append((event.time_s, event.values, event.frame))
             link.latest = event
+            # when it came, on the monotonic clock every link's worker counts from: auto-take
+            # pairs the first link's steady dwell only with the others' readings since
+            link.latest_at = worker.t0 + event.time_s
             if link.session is not None and link.received % 1000 == 0:
                 if link.session.behind() >= FRAMES_PER_BLOCK:
                     link.session.catch_up()  # a block's worth converted, not hours at a save

@@ -18,6 +18,11 @@ the position just taken is left only by :meth:`moved`: an autocollimator nulled 
 face reads the same within the window at every face, and its reading moving at one face
 (re-nulled, drifting) is no other face.
 
+Where another instrument is read beside (the table's encoder), a reading is taken only
+when each other instrument's newest reading came while the output was steady
+(``others_since`` of :meth:`StabilityGate.feed`): one read before the dwell may be of the
+move to this position, and its cell would hold the table half-way there.
+
 When the link is lost and comes back (:meth:`restart`) the dwell starts again from the
 frames after it: a reading is never the mean of frames from both sides of a gap in
 which the instrument was not heard.
@@ -182,9 +187,19 @@ class StabilityGate:
         self._taken = None
         self._clear()
 
-    def feed(self, time_s: float, values, tag: object = None) -> StableReading | None:
+    @property
+    def dwell_since(self) -> float | None:
+        """The time of the first frame of the dwell in progress (None before any)."""
+        return self._frames[0][0] if self._frames and self._taken is None else None
+
+    def feed(self, time_s: float, values, tag: object = None,
+             others_since: float | None = None) -> StableReading | None:
         """One frame (``tag``: what names it, e.g. its index in the raw record; the reading
-        carries its first frame's); the reading when this frame completes a stable dwell."""
+        carries its first frame's); the reading when this frame completes a stable dwell.
+        ``others_since``: when the oldest of the other instruments' newest readings came (in
+        this gate's time): while that is before the dwell's first frame the dwell goes on
+        and nothing is taken (that reading may be of the move: a fresh-clone run paired face
+        4's null with the encoder half-way from face 3)."""
         value = np.atleast_1d(np.asarray(values, dtype=float))
         if self._taken is not None:
             if self.moves_seen_elsewhere or np.all(np.abs(value - self._taken) <= self.window):
@@ -212,6 +227,8 @@ class StabilityGate:
         while len(self._frames) > 1 and self._frames[1][0] <= time_s - self.dwell_s + _EPS:
             self._drop_oldest()
         if time_s - self._frames[0][0] < self.dwell_s - _EPS:
+            return None
+        if others_since is not None and others_since < self._frames[0][0] - _EPS:
             return None
         values = np.array([v for _, v, _, _ in self._frames])
         reading = StableReading(time_s, tuple(values.mean(axis=0)),

@@ -114,6 +114,26 @@ def test_auto_take_takes_every_face_of_a_nulled_autocollimator_with_the_encoder(
         for i, (enc, x) in enumerate(FACES)]
 
 
+def test_a_slow_readout_is_read_again_after_the_null_before_the_take(bench, window, qtbot):
+    """The encoder's readout answers every 0.6 s (a slow one, or one starved on a loaded
+    machine): the autocollimator is steady for the 0.2 s dwell before the readout has
+    answered since the table stopped. The take waits for that answer; taking at once paired
+    the face's null with the encoder read half-way through the turn (a fresh-clone run:
+    face 4 at 85°, the turn's middle, for 100°)."""
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(FACES[0][1], -3.2)], rate_hz=50.0) as ac, \
+            ReadoutSimulator("pty", positions=[(FACES[0][0],)], reply_delay_s=0.6) as ro:
+        _first_take(panel, bench, qtbot, ac, ro)
+        for i in range(1, len(FACES)):
+            _turn(qtbot, ac, ro, FACES[i - 1][0], FACES[i][0], FACES[i][1], out_s=1.3)
+            qtbot.waitUntil(lambda i=i: len(_rows(bench)) == i + 1, timeout=8000)
+        rows = _rows(bench)
+        panel.disconnect_instrument()
+    assert [(f, float(e), float(x)) for f, e, x in rows] == [
+        (str(i + 1), pytest.approx(enc, abs=1e-4), pytest.approx(x, abs=0.02))
+        for i, (enc, x) in enumerate(FACES)]
+
+
 def test_auto_take_with_the_autocollimator_alone_sees_the_mirror_leave_the_view(bench, window,
                                                                               qtbot):
     panel = window.capture_panel

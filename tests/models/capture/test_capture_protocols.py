@@ -262,6 +262,26 @@ def test_after_a_restart_the_dwell_is_of_frames_after_it_and_a_taken_position_st
     assert gate.progress(2.4) == ("taken", 0.0)
 
 
+def test_no_take_until_the_other_instruments_have_read_during_the_dwell():
+    """Settled from 1.0 s (frames every 0.1 s, dwell 0.5 s): with the encoder's newest
+    reading from 0.8 s (during the turn) nothing is taken, the dwell going on; its reading
+    at 1.75 s (during the dwell, whose first frame is then 1.2 s) lets the next frame take,
+    the frames of the last 0.5 s (1.3–1.8 s) averaged."""
+    gate = StabilityGate(window=0.5, dwell_s=0.5)
+    turning = [gate.feed(0.1 * i, [30.0 * i], others_since=0.8) for i in range(10)]
+    settled = [gate.feed(1.0 + 0.1 * i, [7.0], others_since=0.8) for i in range(8)]
+    assert turning + settled == [None] * 18
+    assert gate.dwell_since == pytest.approx(1.2)  # the frames kept slide with the dwell
+    reading = gate.feed(1.8, [7.0], others_since=1.75)
+    assert reading is not None and reading.time_s == pytest.approx(1.8)
+    assert reading.frames == 6 and reading.mean == pytest.approx((7.0,))
+    assert gate.dwell_since is None  # taken: no dwell in progress
+    # an encoder read at the dwell's first frame is one read while steady
+    gate = StabilityGate(window=0.5, dwell_s=0.5)
+    assert [gate.feed(0.1 * i, [1.0], others_since=0.0) is not None
+            for i in range(6)] == [False] * 5 + [True]
+
+
 def test_a_reading_names_its_first_frame():
     """The reading carries its first frame's tag (the panel counted back through the 8,192
     frames it keeps, and named one frame for a dwell longer than those)."""
