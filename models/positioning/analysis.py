@@ -779,6 +779,12 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
                                         DEVIATION_UNITS["arcsec"])[2].strip()
         return {"target": target, "measured": target, "deviation": deviation}
 
+    def setting_units(self, settings):
+        # the budget's Type B inputs are in the deviations' unit: their fields showed no
+        # unit beside the set-up's "°C" and "µm/(m·K)" (leftovers 79)
+        unit = DEVIATION_UNITS[self.error_unit(settings)][2].strip()
+        return dict.fromkeys(DEVIATION_UNIT_SETTINGS, unit)
+
     def entry_plan(self, settings):
         runs = int(settings.get("plan_runs", 0) or 0)
         if not runs:
