@@ -139,6 +139,12 @@ class Workbench(ABC, Generic[ResultT]):
         table's header as a column's own unit is. Empty by default."""
         return {}
 
+    def setting_units(self, settings: Mapping[str, Any]) -> Mapping[str, str]:
+        """{setting key: its unit as ``settings`` make it}, for a number setting whose unit
+        is another setting's (positioning's budget inputs, in the deviations' unit): shown
+        beside its field as a declared unit is. Empty by default."""
+        return {}
+
     def split_incomplete(self, parsed: ParsedReadings, settings: Mapping[str, Any]
                          ) -> tuple[ParsedReadings, IncompleteUnit | None]:
         """The readings of the complete units, and the last unit when it is in progress

@@ -8,7 +8,7 @@ from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelInd
 from PySide6.QtGui import QBrush, QColor, QUndoCommand, QUndoStack
 
 from models.capture.take_cells import waiting_row
-from models.certificate.readings_origin import SheetOrigin
+from models.certificate.readings_origin import PastedIn, SheetOrigin
 from models.project.cell_marks import mark_to_json, marks_from_json
 from models.readings.sheet import NumericRows, ReadingsSheet
 from widgets.i18n import declared, on_language_change, tr, translated
@@ -113,6 +113,12 @@ class ReadingsTableModel(QAbstractTableModel):
         #: loaded gets its deviation (gui78)
         self.cells_brought: Callable[[list[tuple[int, int, str]]],
                                      list[tuple[int, int, str]]] = lambda changes: []
+        #: the same for pasted rows that replace the whole sheet (Ctrl+A, Ctrl+V), each
+        #: (row, column, text) of them: a full set of a polygon's readings pasted after its
+        #: certificate was loaded gets the deviations kept by face, as rows pasted over
+        #: part of the sheet do (leftovers 79)
+        self.rows_brought: Callable[[list[list[str]]],
+                                    list[tuple[int, int, str]]] = lambda rows: []
         self._waiting_from: int | None = None  # the first of them (None: none)
         self._planned: int | None = None
         self._waiting_known = False
@@ -487,6 +493,13 @@ class ReadingsTableModel(QAbstractTableModel):
         where the rows come from (a file, a paste, another workbench; None: typed or taken
         in the window; :meth:`readings_origin`)."""
         label = label or tr("Replace readings")
+        if isinstance(origin, PastedIn):  # the cells they bring, in the same step
+            brought = [(r, c, t) for r, c, t in self.rows_brought(rows)
+                       if 0 <= r < len(rows) and 0 <= c < len(rows[r])]
+            if brought:
+                rows = [list(row) for row in rows]
+                for r, c, t in brought:
+                    rows[r][c] = t
         self.replacing.emit(label)
         self.undo_stack.push(ReplaceAllCommand(self, rows, label, checked, replaces, origin))
 

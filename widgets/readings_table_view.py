@@ -412,13 +412,16 @@ class ReadingsTableView(QTableView):
             choice = self.ask_paste(len(plan.rows), plan.leaves_rows)
             if not choice:
                 return ""
-        columns_said = self._columns_said(plan, choice == "replace")
         if choice == "replace":
             model.replace_all(full, tr("{paste}, replacing the sheet").format(paste=label),
                               checked=True, origin=PastedIn())
+            # said of the sheet as replaced: a column the rows brought cells to (a polygon's
+            # deviations kept by face) is not "left empty"
+            columns_said = self._columns_said(plan, True)
             if columns_said:
                 self._say_after(columns_said)
             return "replace"
+        columns_said = self._columns_said(plan, False)
         changes = [(top + i, plan.left + j, cell) for i, row in enumerate(plan.rows)
                    for j, cell in enumerate(row) if plan.left + j < width]
         pasted = self.plan_paste(top, len(plan.rows)) if self.plan_paste is not None else None
@@ -442,8 +445,12 @@ class ReadingsTableView(QTableView):
         """What a paste does with the columns, when it is more than the block's columns
         landing on the sheet's: the block's columns beyond the sheet's last one (left out),
         and, when it replaces the sheet, the sheet's columns it leaves empty. "" otherwise."""
-        width = self.readings_model().sheet.column_count
-        empty = [c for c in range(width) if c not in plan.filled] if replaces else []
+        sheet = self.readings_model().sheet
+        width = sheet.column_count
+        # the sheet's columns the block left empty (``replaces``: asked of the sheet once
+        # replaced, where cells the rows brought may fill one)
+        empty = [c for c in range(width) if c not in plan.filled and not any(
+            sheet.text(r, c).strip() for r in range(sheet.row_count))] if replaces else []
         if not plan.dropped and not empty:
             return ""
         names = ", ".join(str(self._header(c)) for c in plan.filled) or "—"

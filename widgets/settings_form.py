@@ -60,6 +60,12 @@ def ignore_unfocused_wheel(widget: QWidget) -> None:
     widget.installEventFilter(_WHEEL_FILTER)
 
 
+def _suffix(unit: str) -> str:
+    """A number field's suffix for ``unit``: "°", "″", "′" close up to the figure, any other
+    unit after a space (" mV", " µm")."""
+    return f" {unit}" if unit and unit not in ("°", "\"", "′") else unit
+
+
 def _shown(text: str) -> Tr:
     """A text of the window (``tr``) as it is; a text the models declare, translated."""
     return text if isinstance(text, Tr) else declared(text)
@@ -125,7 +131,7 @@ class SettingsForm(QWidget):
             return self.add_text(p.key, p.label, tip)
         low = 0 if p.zero else (p.minimum if p.minimum is not None else -1e12)
         high = p.maximum if p.maximum is not None else 1e12
-        suffix = f" {p.unit}" if p.unit and p.unit not in ("°", "\"", "′") else p.unit
+        suffix = _suffix(p.unit)
         if p.kind == "int":
             box = self.add_int(p.key, p.label, int(low), int(min(high, 2**31 - 1)), suffix,
                                p.zero, tip)
@@ -134,6 +140,15 @@ class SettingsForm(QWidget):
             if p.zero:
                 live(box.setSpecialValueText, _shown(p.zero))
         return box
+
+    def set_units(self, units: dict[str, str]) -> None:
+        """Each number field of ``units``' keys shows its unit, as a declared unit is shown
+        (a unit another setting gives: :meth:`models.workbench.Workbench.setting_units`);
+        keys with no such field are passed over."""
+        for key, unit in units.items():
+            box = self._fields.get(key)
+            if isinstance(box, (QSpinBox, QDoubleSpinBox)) and box.suffix() != _suffix(unit):
+                box.setSuffix(_suffix(unit))
 
     def _retranslate_choices(self) -> None:
         for box, texts in self._choices:

@@ -468,6 +468,7 @@ class WorkbenchPresenter(QObject):
         self._redraw_timer.timeout.connect(self._redraw)
         self.build_settings()
         self.view.set_settings(self._settings)
+        self._setting_units_shown()
         keys = [c.key for c in kind.columns]
         nominal = keys.index(kind.nominal_column) if kind.nominal_column in keys else None
         self.view.set_entry_columns(nominal, keys.index(kind.entry_column)
@@ -673,6 +674,12 @@ class WorkbenchPresenter(QObject):
         self.table_model.set_header_units({
             keys.index(key): unit for key, unit in self.kind.column_units(self._settings).items()
             if key in keys})
+        self._setting_units_shown()
+
+    def _setting_units_shown(self) -> None:
+        """The units the settings give other settings, beside their fields (positioning's
+        budget inputs in the deviations' unit: leftovers 79)."""
+        self.view.set_setting_units(dict(self.kind.setting_units(self._settings)))
 
     def _blank_cell_shown(self, r: int, c: int) -> tuple[str, str] | None:
         """The figure blank cell (r, c) shows and what to say of it (None: none)."""

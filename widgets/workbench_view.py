@@ -448,6 +448,10 @@ class WorkbenchView(QWidget):
     def settings_values(self) -> dict:
         return self.settings.values()
 
+    def set_setting_units(self, units: dict[str, str]) -> None:
+        """The units other settings give the fields of ``units``' keys."""
+        self.settings.set_units(units)
+
     def mark_setting(self, key: str) -> None:
         """Mark the setting the readings refuse ("": none; a key no field has: none)."""
         self.settings.mark(key)

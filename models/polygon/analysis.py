@@ -865,9 +865,24 @@ def _with_u(value: float, u: float, unit: str) -> tuple[str, str]:
     return printed(value, unit, u=u), printed(u, unit)
 
 
+class PrintedDecimals(int):
+    """How a polygon certificate rounds: its decimal for the corrected error's range (the
+    int itself, that of its largest U) and the 1st and 2nd harmonics' amplitudes',
+    ``harmonics`` (models.polygon.report.harmonics_decimals: to U's decimal, GUM 7.2.6),
+    which the window's summary prints its figures to."""
+
+    harmonics: int
+
+    def __new__(cls, errors: int, harmonics: int = 3) -> PrintedDecimals:
+        made = super().__new__(cls, errors)
+        made.harmonics = int(harmonics)
+        return made
+
+
 def summary(result: PolygonResult, printed: int | None = None) -> str:
     """The result as text; ``printed``: the certificate's decimal for the corrected error's
-    range (:meth:`Polygon.printed_rounding`; None: two), its peak-to-peak as printed."""
+    range (:meth:`Polygon.printed_rounding`; None: two), its peak-to-peak as printed, and
+    for the harmonics (:class:`PrintedDecimals`; None or a plain int: 0.001″)."""
     s, tol = result.stats, GRADE_ACCURACY_ARCSEC[result.grade]
     decimals = 2 if printed is None else printed
     # each figure rounded from its unrounded value in the unit it is read in (assessment 72 L5)
@@ -928,10 +943,14 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
                    "conformity (a certificate decides with U, by the rule in its details)"),
         **corrected, accuracy=f"{tol:g}\""))
     h = result.harmonics
+    # to the certificate's decimal, that of its largest U (assessment 78 L6; leftovers 79:
+    # the window showed "0.362″" beside the certificate's "0.4″")
+    hd = getattr(printed, "harmonics", 3)
     if (harmonics_why := harmonics_reason(result)) is not None:
         out.append(no_interval(message(
             QT_TR_NOOP("Harmonics: 1st (eccentricity) {first}, 2nd (ellipticity) {second}"),
-            first=f"{h.amplitude[1]:.3f}\"", second=f"{h.amplitude[2]:.3f}\""), harmonics_why))
+            first=f"{h.amplitude[1]:.{hd}f}\"", second=f"{h.amplitude[2]:.{hd}f}\""),
+            harmonics_why))
     if len(result.sets) > 1:
         jjf = [message(QT_TR_NOOP("JJF 1115: division error {value}"),
                        value=printed_range_figures(  # the corrected error's, as printed
@@ -1113,13 +1132,15 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
         return error_figure(result)
 
     def printed_rounding(self, result, metadata, settings=None):
-        from models.polygon.report import polygon_budget  # not for a plain analysis
+        # not for a plain analysis
+        from models.polygon.report import harmonics_decimals, polygon_budget
 
         try:  # the certificate's statistics: to the decimal of its largest U
             budget = polygon_budget(result, metadata, settings)
         except (ValueError, ArithmeticError, IndexError):
             return None
-        return uncertainty_decimals(budget.max_expanded)
+        return PrintedDecimals(uncertainty_decimals(budget.max_expanded),
+                               harmonics_decimals(budget.expanded))
 
     def printed_headline(self, result, printed=None):
         s = result.stats

@@ -5,7 +5,9 @@ the first set: ``e_i = (a_i − a_z) − nominal_i − (dev_i − dev_z) − (x_
 minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the sets
 (the mean of the two directions' means when both were run). Its inputs:
 
-* each reference standard's figure, per face or reading, twice: the face's (or
+* each reference standard's figure, per reading as stated (a polygon's reading is a face's
+  deviation, an autocollimator's its horizontal reading at the face: the budget and the
+  standards table say "per reading" alike, leftovers 79), twice: the face's (or
   reading's) own calibration error, one unknown per point, and the zero face's,
   one unknown shared by every point (together √2·u, a difference of two; 0 at
   the zero face); a polygon whose certificate states its deviations from face 1
@@ -91,7 +93,7 @@ from models.certificate.document import (
     range_cells,
     reference_standard_components,
 )
-from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.certificate.metadata import APPLIES_TO_NAMES, CertificateMetadata, MetadataError
 from models.certificate.withheld import UncertaintyWithheld
 from models.messages import QT_TR_NOOP, message, reason_of, separated
 from models.named_settings import ITEM_RESOLUTION_FIELD, READING_NOISE_IN_SETTINGS
@@ -922,9 +924,11 @@ def _standard_components(metadata: CertificateMetadata, zero: int, n: int) -> li
     not_zero = np.ones(n)
     not_zero[zero] = 0.0
     not_first = (np.arange(n) != 0).astype(float)
-    own = reference_standard_components(metadata, not_zero, QT_TR_NOOP("face or reading"),
-                                        not_first * not_zero)
-    shared = reference_standard_components(metadata, not_zero, QT_TR_NOOP("face or reading"),
+    # a figure stated per reading is named as the standards table names it (one word for one
+    # figure: "per face or reading" in the budget beside "per reading" in the table)
+    reading = APPLIES_TO_NAMES["reading"]
+    own = reference_standard_components(metadata, not_zero, reading, not_first * not_zero)
+    shared = reference_standard_components(metadata, not_zero, reading,
                                            not_first[zero] * not_zero, common=True)
     out = list(own)
     for comp in shared:

@@ -29,12 +29,14 @@ from models.positioning.per_target_reasons import per_target_reasons
 from models.positioning.report import (
     axis_figure_values,
     figure_decimals,
+    figures_withheld_notes,
     intervals_withheld,
     one_direction_reasons,
     positioning_budget,
     positioning_certificate,
     readings_figure_intervals,
     stated_figure_intervals,
+    withheld_figure_notes,
     withheld_figure_reasons,
     without_interval,
 )
@@ -694,18 +696,17 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
             if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
                 parts.append(f" ({percent_text(iv.probability)} %)")
         out.append(joined(parts))
-        # R, R↑, R↓, Ps_max of two runs: no interval, and why (audit 68 finding 3)
-        out += [message(QT_TR_NOOP("No coverage interval is given for {figure}: {reason}."),
-                        figure=key, reason=reason)
-                for key, reason in withheld_figure_reasons(result).items()]
+        # R, R↑, R↓, Ps_max of two runs: no interval, why, and the place the figure above is
+        # printed to, in the certificate's words (audit 68 finding 3; leftovers 79: "R = 10″"
+        # with nothing saying it was rounded to the interval withheld)
+        out += withheld_figure_notes(result, decimals)
         # an upper end far above its figure (few runs): why, as the certificate says (F6)
         wide = wide_intervals_statement(axis_figure_values(result), intervals,
                                         min(result.least_runs.values()), sym, outwards=False)
         if wide is not None:
             out.append(wide)
-    elif (withheld := intervals_withheld(result)) is not None:
-        out.append(message(QT_TR_NOOP("No coverage intervals: {reason}"),
-                           reason=message(withheld)))
+    else:  # no figure has an interval: why, as the certificate says it
+        out += figures_withheld_notes(result, decimals)
     out.append(message(QT_TR_NOOP("Standard applied: {standard}. Compensation = −mean deviation "
                                   "(Export compensation table… below the set-up)."),
                        standard=message(STANDARDS[result.standard])))
@@ -777,6 +778,12 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         deviation = DEVIATION_UNITS.get(str(settings.get("deviation_unit", "arcsec")),
                                         DEVIATION_UNITS["arcsec"])[2].strip()
         return {"target": target, "measured": target, "deviation": deviation}
+
+    def setting_units(self, settings):
+        # the budget's Type B inputs are in the deviations' unit: their fields showed no
+        # unit beside the set-up's "°C" and "µm/(m·K)" (leftovers 79)
+        unit = DEVIATION_UNITS[self.error_unit(settings)][2].strip()
+        return dict.fromkeys(DEVIATION_UNIT_SETTINGS, unit)
 
     def entry_plan(self, settings):
         runs = int(settings.get("plan_runs", 0) or 0)

@@ -86,6 +86,7 @@ __all__ = ["FIGURE_NAMES", "axis_figures", "figure_decimals", "figure_uncertaint
            "intervals_determined", "intervals_withheld", "readings_figure_intervals",
            "readings_step_component",
            "stated_figure_intervals", "withheld_figure_reasons", "withheld_figure_notes",
+           "figures_withheld_notes",
            "rounding_place", "one_direction_reasons",
            "DIRECTION_NOT_MEASURED", "NEEDS_BOTH_DIRECTIONS",
            "positioning_budget", "positioning_certificate", "repeated_readings_components"]
@@ -525,6 +526,23 @@ def withheld_figure_notes(result: PositioningResult, decimals: Mapping[str, int]
             for key, reason in withheld_figure_reasons(result, budget).items()]
 
 
+#: the note on the figures when none has a coverage interval (:func:`intervals_withheld`)
+FIGURES_WITHHELD_NOTE = QT_TR_NOOP("No coverage interval is given for the figures: {reason}.")
+
+
+def figures_withheld_notes(result: PositioningResult, decimals: Mapping[str, int],
+                           budget: UncertaintyBudget | None = None) -> list[Message]:
+    """The certificate's notes on the figures printed with their coverage interval withheld:
+    why none has one (:func:`intervals_withheld`), or, for each whose interval two runs
+    withhold, why and the place it is printed to (:func:`withheld_figure_notes`). The
+    summary the command line prints and the window shows says the same (leftovers 79: "R =
+    10″" there with nothing beside it)."""
+    withheld = intervals_withheld(result)
+    if withheld is not None:
+        return [message(FIGURES_WITHHELD_NOTE, reason=message(withheld))]
+    return withheld_figure_notes(result, decimals, budget)
+
+
 def readings_figure_intervals(result: PositioningResult) -> dict[str, FigureInterval]:
     """:func:`figure_uncertainties` of the readings alone, without the repeatability
     figures' intervals that two runs leave undetermined (:func:`withheld_figure_reasons`)."""
@@ -770,11 +788,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 targets), where that is "
         "below {p} %."), trials=INTERVAL_TRIALS,
         p=f"{100 * budget.probability:.2f}"))
-    withheld = intervals_withheld(result)
-    if withheld is not None:
-        statements.append(message(QT_TR_NOOP("No coverage interval is given for the figures: "
-                                             "{reason}."), reason=message(withheld)))
-    statements += withheld_figure_notes(result, decimals, budget)
+    statements += figures_withheld_notes(result, decimals, budget)
     statements.append(QT_TR_NOOP(
         "A specification of A, R, E, B or P conforms when the upper end of the figure's "
         "coverage interval is within it, does not conform when the lower end exceeds it, and "

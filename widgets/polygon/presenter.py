@@ -64,6 +64,7 @@ class PolygonPresenter(WorkbenchPresenter):
         #: a face and its reading gets it too (:meth:`_deviation_cells`, gui78).
         self.face_deviations: dict[int, str] = {}
         self.table_model.cells_brought = self._deviation_cells
+        self.table_model.rows_brought = self._deviation_rows
 
     def show_result(self, result: PolygonResult) -> None:
         self.table_model.set_highlight_rows(result.closure_rows)
@@ -248,7 +249,6 @@ class PolygonPresenter(WorkbenchPresenter):
         sheet = self.sheet
         dev, position = (sheet.column_index("polygon_dev_arcsec"),
                          sheet.column_index("position"))
-        readings = [sheet.column_index(k) for k in self.kind.plan_reading_keys]
         new = {(r, c): t for r, c, t in changes}
 
         def text(r: int, c: int) -> str:
@@ -256,16 +256,51 @@ class PolygonPresenter(WorkbenchPresenter):
                 return new[(r, c)].strip()
             return sheet.text(r, c).strip() if r < sheet.row_count else ""
 
+        return self._kept_deviations(
+            sorted({r for r, _, _ in changes}), text,
+            lambda row: (row, dev) in new,
+            lambda row, face: {sheet.text(r, dev).strip() for r in range(sheet.row_count)
+                               if r != row and sheet.text(r, position).strip() == face
+                               and sheet.text(r, dev).strip()})
+
+    def _deviation_rows(self, rows: list[list[str]]) -> list[tuple[int, int, str]]:
+        """The deviations pasted rows that replace the whole sheet get (Ctrl+A, Ctrl+V of a
+        full set of readings), as :meth:`_deviation_cells` gives an edit's rows: each row
+        with its face and a reading but no deviation, another pasted row's deviation for the
+        face if one has it, else the certificate's kept by face."""
+        if not self.face_deviations:
+            return []
+        sheet = self.sheet
+        dev, position = (sheet.column_index("polygon_dev_arcsec"),
+                         sheet.column_index("position"))
+
+        def text(r: int, c: int) -> str:
+            return rows[r][c].strip() if c < len(rows[r]) else ""
+
+        return self._kept_deviations(
+            range(len(rows)), text, lambda _row: False,
+            lambda row, face: {text(r, dev) for r in range(len(rows))
+                               if r != row and text(r, position) == face and text(r, dev)})
+
+    def _kept_deviations(self, rows, text: Callable[[int, int], str],
+                         written: Callable[[int], bool],
+                         others: Callable[[int, str], set[str]]
+                         ) -> list[tuple[int, int, str]]:
+        """(row, deviation column, text) for each of ``rows`` that has its face and a
+        reading but a blank deviation (``text``: a cell as the change leaves it) which the
+        change does not write itself (``written``): the deviation the face's other rows
+        have (``others``) where they agree, else the certificate's kept by face."""
+        dev, position = (self.sheet.column_index("polygon_dev_arcsec"),
+                         self.sheet.column_index("position"))
+        readings = [self.sheet.column_index(k) for k in self.kind.plan_reading_keys]
         out = []
-        for row in sorted({r for r, _, _ in changes}):
+        for row in rows:
             face = text(row, position)
-            if (row, dev) in new or text(row, dev) or not face.isdigit() \
+            if written(row) or text(row, dev) or not face.isdigit() \
                     or int(face) not in self.face_deviations \
                     or not any(text(row, c) for c in readings):
                 continue
-            known = {sheet.text(r, dev).strip() for r in range(sheet.row_count)
-                     if r != row and sheet.text(r, position).strip() == face
-                     and sheet.text(r, dev).strip()}
+            known = others(row, face)
             # one deviation per face; two different ones are the technician's to settle
             if not known:
                 known = {self.face_deviations[int(face)]}

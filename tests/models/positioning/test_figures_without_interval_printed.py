@@ -101,7 +101,7 @@ def test_a_figure_with_no_interval_prints_to_what_its_readings_support(
     assert main(["analyze", "positioning", _csv(tmp_path, rows), "--language", "en"]) == 0
     out = capsys.readouterr().out
     assert f"B = {b:.{d}f}\"" in out and f"P = {p:.{d}f}\"" in out, out
-    assert "No coverage intervals:" in out
+    assert "No coverage interval is given for the figures:" in out  # the certificate's words
 
 
 def test_the_certificate_prints_a_figure_with_no_interval_as_the_window(tmp_path):
