@@ -256,6 +256,11 @@ class CertificateRecord:
     # schema version 6: what the document is, "calibration" (a calibration certificate) or
     # "test" (a test report), in the chain (format 4); None: issued before it, not recorded
     document_kind: str | None = None
+    # schema version 8: the identity of its readings by their values (readings_identity:
+    # "" for none), made at issue, not in the chain (made from project_json, which is);
+    # None: not stored (a register read as it is at version 6 or 7, a record issued by an
+    # AngleBench of schema 7 after the migration)
+    readings_key: str | None = None
 
     @property
     def headline(self) -> dict[str, float]:
@@ -274,6 +279,8 @@ class CertificateRecord:
 
 
 _RECORD_COLUMNS = tuple(f.name for f in dataclasses.fields(CertificateRecord))
+#: the record's columns a register of schema version 6 or 7 holds (read as it is)
+_RECORD_COLUMNS_V7 = tuple(c for c in _RECORD_COLUMNS if c != "readings_key")
 
 
 @dataclass(frozen=True)
@@ -454,6 +461,9 @@ class Register:
         #: a read-only register at schema version 6, read without migrating: its intervals
         #: are per serial (every maker's item's)
         self._intervals_per_serial = False
+        #: the records carry their readings' identity (schema version 8; a read-only
+        #: register read as it is at 6 or 7 does not: made when compared)
+        self._stored_keys = True
         self.timezone = lab_timezone(timezone)
         self._sqlite_path = ""
         #: told, at once, when a write waits for the SQLite register's write lock held by
@@ -599,6 +609,12 @@ class Register:
     def __exit__(self, *_exc) -> None:
         self.close()
 
+    @property
+    def _record_columns(self) -> tuple[str, ...]:
+        """The columns a record is read from (:class:`CertificateRecord`'s fields that the
+        register holds)."""
+        return _RECORD_COLUMNS if self._stored_keys else _RECORD_COLUMNS_V7
+
     # -- schema ---------------------------------------------------------------------------
     def _version_in(self, conn) -> int | None:
         sa, schema = self._sa, self._schema
@@ -653,7 +669,9 @@ class Register:
             return  # nothing to do: no write lock taken
         if self.read_only and version in schema.READ_AS_IS:
             # read as it is: its tables are this version's but for the intervals' key
-            self._intervals_per_serial = True
+            # (version 6) and the readings' stored identity (versions 6 and 7)
+            self._intervals_per_serial = version < 7
+            self._stored_keys = version >= schema.READINGS_KEY_VERSION
             return
         if self.read_only:
             raise RegisterError(message(QT_TR_NOOP(
@@ -1341,6 +1359,8 @@ class Register:
         self._check_approval(meta)
         certificates = self._schema.CERTIFICATES
         user = _os_user()
+        # the readings' identity, stored with the record (schema version 8)
+        key = readings_key(request.project_json, request.workbench)
         with self._issuing_turn() as turn:
             for _attempt in range(ISSUE_ATTEMPTS):
                 # the time of issue is taken for each attempt: a record committed by another
@@ -1467,7 +1487,7 @@ class Register:
                     pdf_sha256="",
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
                     os_user=user, approver=meta.approver,
-                    chain_format=6)
+                    chain_format=6, readings_key=key)
                 # the record's content first, carried by the PDF (so by the DCC that embeds
                 # it); then the files' hashes (reg72 #2: the newest record rewritten with its
                 # chain recomputed is found from the customer's copy). Content form 2 also
@@ -1674,12 +1694,46 @@ class Register:
         return tuple(out)
 
     def _readings_key(self, record: CertificateRecord) -> str:
-        """``record``'s readings_key, computed once per register object."""
+        """``record``'s readings_key: as stored with it (schema version 8), else made from
+        its project state, once per register object."""
+        if record.readings_key is not None:
+            return record.readings_key
         key = self._readings_keys.get(record.number)
         if key is None:
             key = self._readings_keys[record.number] = readings_key(record.project_json,
                                                                     record.workbench)
         return key
+
+    def _numbers_of_readings(self, conn, workbench: str, key: str, *where: Any
+                             ) -> builtins.list[str]:
+        """The numbers of the records of ``workbench`` (and ``where``) whose readings have
+        the identity ``key``, in the register's order: looked up by the stored identity
+        (its index, schema version 8); a record without one (issued by an AngleBench of
+        schema 7 after the migration, or a register read as it is) by its readings, made
+        once per register object."""
+        c = self._schema.CERTIFICATES.c
+        if not self._stored_keys:
+            rows = conn.execute(self._sa.select(c.number, c.project_json).where(
+                c.workbench == workbench, *where).order_by(c.id)).all()
+        else:
+            rows = conn.execute(self._sa.select(
+                c.number, self._sa.case((c.readings_key.is_(None), c.project_json),
+                                        else_=self._sa.null()).label("project_json"),
+                c.readings_key).where(
+                c.workbench == workbench, *where,
+                self._sa.or_(c.readings_key == key, c.readings_key.is_(None))
+            ).order_by(c.id)).all()
+        out = []
+        for row in rows:
+            stored = row.readings_key if self._stored_keys else None
+            if stored is None:
+                stored = self._readings_keys.get(row.number)
+                if stored is None:
+                    stored = self._readings_keys[row.number] = readings_key(
+                        row.project_json, workbench)
+            if stored == key:
+                out.append(row.number)
+        return out
 
     def _readings_elsewhere(self, conn, request: IssueRequest, meta: CertificateMetadata,
                             original: CertificateRecord | None
@@ -1702,18 +1756,9 @@ class Register:
             if self._readings_key(original) == key:
                 return ()
             own = self._revisions_of(conn, original)
-        c = self._schema.CERTIFICATES.c
-        numbers = conn.execute(self._sa.select(c.number).where(
-            c.workbench == request.workbench).order_by(c.id)).scalars().all()
-        if any(n not in self._readings_keys for n in numbers):  # read once, in one query
-            for row in conn.execute(self._sa.select(c.number, c.project_json).where(
-                    c.workbench == request.workbench)).all():
-                if row.number not in self._readings_keys:
-                    self._readings_keys[row.number] = readings_key(row.project_json,
-                                                                   request.workbench)
         out = []
-        for number in numbers:
-            if number in own or self._readings_keys.get(number) != key:
+        for number in self._numbers_of_readings(conn, request.workbench, key):
+            if number in own:
                 continue
             record = self._get(conn, number)
             if not _one_item(record, meta):
@@ -1803,16 +1848,12 @@ class Register:
         if not key:
             return ()
         c = self._schema.CERTIFICATES.c
-        rows = conn.execute(self._sa.select(c.number).where(
-            c.workbench == request.workbench, c.status == "withdrawn",
-            c.calibration_date != meta.calibration_date).order_by(c.id)).all()
         out = []
-        for row in rows:
-            if row.number in besides:
-                continue
-            record = self._get(conn, row.number)
-            if self._readings_key(record) == key and _one_item(record, meta):
-                out.append(row.number)
+        for number in self._numbers_of_readings(
+                conn, request.workbench, key, c.status == "withdrawn",
+                c.calibration_date != meta.calibration_date):
+            if number not in besides and _one_item(self._get(conn, number), meta):
+                out.append(number)
         return tuple(out)
 
     def _withdrawn_on(self, conn, number: str) -> str:
@@ -2260,7 +2301,7 @@ class Register:
     # -- reading --------------------------------------------------------------------------
     def _get(self, conn, number: str) -> CertificateRecord:
         certificates = self._schema.CERTIFICATES
-        row = conn.execute(self._sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS)).where(
+        row = conn.execute(self._sa.select(*(certificates.c[c] for c in self._record_columns)).where(
             certificates.c.number == number)).first()
         if row is None:
             raise _not_in_register(number)
@@ -2362,7 +2403,8 @@ class Register:
         sa, schema = self._sa, self._schema
         certificates, entries = schema.CERTIFICATES, schema.ENTRIES
         columns = ("id", *CHAINED, *CHAINED_V2, *CHAINED_V3, *CHAINED_V4, "chain_format", "status",
-                   "superseded_by", "withdrawn_reason", "chain_sha256", "signature")
+                   "superseded_by", "withdrawn_reason", "chain_sha256", "signature",
+                   *(("readings_key",) if self._stored_keys else ()))
         problems: list = []
         with self._read() as conn:
             rows = conn.execute(sa.select(*(certificates.c[c] for c in columns),
@@ -2409,6 +2451,7 @@ class Register:
                         dcc = conn.execute(sa.select(certificates.c.dcc).where(
                             certificates.c.id == item.id)).scalar_one() if item.has_dcc else None
                         problems += _content_problems(fields, bytes(data), dcc)
+                    problems += _readings_key_problems(fields)
                 if not is_entry:
                     problems += _dcc_problems(conn, certificates, item, pdfs)
                     if item.document_kind is not None and (item.chain_format or 1) < 4:
@@ -2664,7 +2707,7 @@ class Register:
         sa, certificates, entries = self._sa, self._schema.CERTIFICATES, self._schema.ENTRIES
         assert check.place is not None
         place = check.place + 1
-        row = conn.execute(sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS)).where(
+        row = conn.execute(sa.select(*(certificates.c[c] for c in self._record_columns)).where(
             certificates.c.seq == place)).first()
         record = CertificateRecord(**row._asdict()) if row is not None else None
         entry = conn.execute(sa.select(entries.c.kind, entries.c.subject, entries.c.body_json)
@@ -2915,7 +2958,7 @@ class Register:
         from models.register.identifiers import printed_search_keys
 
         sa, certificates = self._sa, self._schema.CERTIFICATES
-        query = sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS))
+        query = sa.select(*(certificates.c[c] for c in self._record_columns))
         query = query.order_by(certificates.c.id.desc())
         wanted = search.strip()
         if not wanted:
@@ -2982,7 +3025,7 @@ class Register:
                    and _same_maker(row.item_manufacturer, manufacturer)]
             if not ids:
                 return []
-            rows = conn.execute(self._sa.select(*(c[name] for name in _RECORD_COLUMNS))
+            rows = conn.execute(self._sa.select(*(c[name] for name in self._record_columns))
                                 .where(c.id.in_(ids))
                                 .order_by(c.calibration_date, c.id))
             return [CertificateRecord(**row._asdict()) for row in rows]
@@ -3548,6 +3591,22 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
                 recorded=f"\"{withdrawn[row.number]}\"" if row.number in withdrawn
                 else message(QT_TR_NOOP("it was never withdrawn"))))
     return problems
+
+
+def _readings_key_problems(fields: dict) -> list:
+    """A record's stored readings identity (schema version 8, outside the chain) against
+    the one its readings give (its project state, in the chain): set otherwise after issue,
+    it would hide its readings from the check of one item's readings issued as another's,
+    or name it for readings it does not hold. [] when they agree or none is stored."""
+    stored = fields.get("readings_key")
+    if stored is None:
+        return []
+    if stored == readings_key(fields["project_json"], fields["workbench"]):
+        return []
+    return [message(QT_TR_NOOP(
+        "record {number}: the identity of its readings stored with it is not that of its "
+        "readings (set otherwise after issue): the check of readings issued again would "
+        "not find them"), number=fields["number"])]
 
 
 def _content_problems(fields: dict, pdf: bytes, dcc: bytes | None) -> list:

@@ -20,7 +20,7 @@ import sqlalchemy as sa
 from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url, url_for_path
-from models.register.schema import CERTIFICATES
+from models.register.schema import CERTIFICATES, LATEST
 from models.register.store import IssueRequest, Register, RegisterError
 from tests.own_readings import own_readings
 from tests.pdf_stand_in import print_stand_ins
@@ -248,7 +248,7 @@ def test_verify_and_opening_find_a_version_set_back_and_a_truncated_tail(capsys)
     assert "CHANGED AFTER ISSUE" in capsys.readouterr().out
     assert main(["register", "list"]) == 2
     assert "schema version 2 was set back" in capsys.readouterr().err
-    _sql("UPDATE schema_version SET version = 7",  # the version it was at
+    _sql(f"UPDATE schema_version SET version = {LATEST}",  # the version it was at
          f"DELETE FROM certificates WHERE number = '{numbers[-1]}'")
     assert main(["register", "verify"]) == 3
     out = capsys.readouterr().out
