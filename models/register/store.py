@@ -63,8 +63,8 @@ if TYPE_CHECKING:
 
 __all__ = ["AnotherMakersItem", "CertificateRecord", "IssueRequest", "LookalikeSerial",
            "NotTheSameCalibration", "PrintedHead", "Register", "RegisterError",
-           "ReadingsOfAnotherItem", "RegisterTampered", "SameCalibrationIssued", "SerialLeftOut",
-           "lab_timezone", "software_versions"]
+           "ReadingsOfAnotherItem", "RegisterTampered", "SameCalibrationIssued",
+           "SameReadingsIssued", "SerialLeftOut", "lab_timezone", "software_versions"]
 
 LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
              "psycopg")
@@ -100,6 +100,21 @@ class NotASeparateCalibration(RegisterError):
     def __init__(self, text, numbers: tuple[str, ...]) -> None:
         super().__init__(text)
         self.numbers = numbers
+
+
+class SameReadingsIssued(NotASeparateCalibration):
+    """An original issued as a calibration of its own beside current certificates of the
+    same item and date (``numbers``) whose readings, by their values, and whose details are
+    its own: no two calibrations repeat every reading to the last digit, so it is their
+    calibration issued again, a second original of one calibration (ISO/IEC 17025 7.8.8).
+    Its copy is their PDF; a correction is their amendment or replacement; issued only when
+    the user says why, naming one of them (``same_readings_as``: on the command line
+    --same-readings-as N:REASON), which is stated on it and recorded in the chain.
+    ``facts``: what the register found, without the command line's option."""
+
+    def __init__(self, text, numbers: tuple[str, ...], facts: str = "") -> None:
+        super().__init__(text, numbers)
+        self.facts = facts or text
 
 
 class ReadingsOfAnotherItem(RegisterError):
@@ -1256,6 +1271,7 @@ class Register:
               correction_confirmed: bool = False, another_makers_item: bool = False,
               another_lookalike_item: bool = False,
               readings_of_another_item: tuple[str, str] | None = None,
+              same_readings_as: tuple[str, str] | None = None,
               confirmed_date: dt.date | None = None,
               prepare: Callable[[CertificateMetadata], tuple[str | None, bytes | None]]
               | None = None) -> tuple[CertificateRecord, bytes]:
@@ -1299,6 +1315,12 @@ class Register:
         :meth:`readings_of_another_item_confirmations`). Stated where its readings are not
         that certificate's, it is refused too (the statement would be false). Not checked
         with ``separate_calibration`` None.
+        A calibration of its own whose readings, by their values, and details are those of
+        a current certificate of its item and date raises :class:`SameReadingsIssued` (no
+        two calibrations repeat every reading to the last digit: it is that calibration
+        issued again) unless ``same_readings_as`` is (that certificate's number, why): then
+        it is stated in its change note and is a chained entry ("same_readings":
+        :meth:`same_readings_confirmations`).
 
         ``document_kind``: what the document rendered is, "calibration" (a calibration
         certificate) or "test" (a test report), or a callable that says so after each
@@ -1376,7 +1398,9 @@ class Register:
                     # a calibration of its own has readings of its own: the same readings
                     # judged otherwise are a correction (hostile78 F2: the same readings,
                     # ±3″ for ±1″, issued "separate" read "pass")
-                    repeated = self._judged_again(conn, same, request, meta)
+                    repeated = self._judged_again(conn, same, request, meta, key)
+                    # and one judged alike is that calibration issued again
+                    identical = self._issued_again(conn, same, request, key, repeated)
                     # a standard whose certificate is one of this register's, withdrawn or
                     # superseded, calibrates nothing (hostile78 F6)
                     void = self._void_standards(conn, meta)
@@ -1449,6 +1473,8 @@ class Register:
                         date=meta.calibration_date or "—",
                         changes=separated([c for _, said in repeated for c in said])),
                         tuple(n for n, _ in repeated))
+                same_said = _same_readings_said(meta, identical if same and separate else (),
+                                                same_readings_as)
                 if others and not another_makers_item:
                     raise _another_makers_item(meta, others)
                 if lookalikes and not another_lookalike_item:
@@ -1463,7 +1489,8 @@ class Register:
                     created=now.isoformat(),
                     supersedes=original.number if original else "",
                     revision="" if plan.revision == "original" else plan.revision,
-                    change_note=_bounded(separated([separate, *against])) if same else
+                    change_note=_bounded(separated([separate, *filter(None, [same_said]),
+                                                    *against])) if same else
                     _bounded(separated([*corrected, change_note])) if corrected else change_note,
                     separate_from=", ".join(same),
                     replaces_withdrawn=", ".join(n for n, _ in withdrawn),
@@ -1556,6 +1583,14 @@ class Register:
                                 "others": [{"number": n, "serial": k, "item": i,
                                             "calibration_date": d}
                                            for n, k, i, d in elsewhere]})
+                        if same_said:  # said by the user: recorded
+                            self._append_entry(conn, "same_readings", plan.number, {
+                                "serial": meta.item_serial,
+                                "manufacturer": meta.item_manufacturer,
+                                "calibration_date": meta.calibration_date,
+                                "reason": " ".join(same_readings_as[1].split())
+                                if same_readings_as else "",
+                                "others": [{"number": n} for n in identical]})
                         if plan.date_confirmed is not None:  # said by the user: recorded
                             self._append_entry(conn, "date_confirmed", plan.number,
                                                plan.date_confirmed)
@@ -1678,20 +1713,37 @@ class Register:
         return out
 
     def _judged_again(self, conn, same: tuple[str, ...], request: IssueRequest,
-                      meta: CertificateMetadata) -> tuple[tuple[str, tuple], ...]:
+                      meta: CertificateMetadata, key: str = ""
+                      ) -> tuple[tuple[str, tuple], ...]:
         """Of the current certificates ``same`` of this calibration, those whose readings
-        ``request`` holds too, as typed, and judges otherwise (another tolerance, rule,
-        standard or setting): each with what it changes (hostile78 F2)."""
+        ``request`` holds too, as typed or by their values (``key``: the request's
+        readings_key), and judges otherwise (another tolerance, rule, standard or setting):
+        each with what it changes (hostile78 F2)."""
         project = _with_metadata(request.project_json, request.workbench, meta)
         out = []
         for number in same:
             record = self._get(conn, number)
+            judged = project
             if not same_readings(record.project_json, project, request.workbench):
-                continue
-            changes = basis_changes(record.project_json, project, request.workbench, number)
+                if not key or self._readings_key(record) != key:
+                    continue
+                # the same values typed otherwise: compared with the record's rows as typed
+                judged = _with_rows_of(project, record.project_json, request.workbench)
+            changes = basis_changes(record.project_json, judged, request.workbench, number)
             if changes:
                 out.append((number, changes))
         return tuple(out)
+
+    def _issued_again(self, conn, same: tuple[str, ...], request: IssueRequest, key: str,
+                      repeated: tuple[tuple[str, tuple], ...]) -> tuple[str, ...]:
+        """Of the current certificates ``same`` of this calibration, those whose readings
+        are ``request``'s by their values (``key``) and that it judges alike (not among
+        ``repeated``, :meth:`_judged_again`'s): that calibration issued again."""
+        if not key:
+            return ()
+        judged = {n for n, _ in repeated}
+        return tuple(n for n in same if n not in judged
+                     and self._readings_key(self._get(conn, n)) == key)
 
     def _readings_key(self, record: CertificateRecord) -> str:
         """``record``'s readings_key: as stored with it (schema version 8), else made from
@@ -1801,6 +1853,14 @@ class Register:
         ([{number, serial, item, calibration_date}]), ``recorded_at``, ``os_user``; every
         one, or ``number``'s."""
         return self._confirmations("readings_of_another_item", number)
+
+    def same_readings_confirmations(self, number: str = "") -> builtins.list[dict]:
+        """The calibrations of their own issued after the user said why their readings and
+        details are those of a current certificate of their item and date
+        (:class:`SameReadingsIssued`), from the chained entries: ``number``, ``serial``,
+        ``manufacturer``, ``reason``, ``others`` ([{number}]), ``recorded_at``,
+        ``os_user``; every one, or ``number``'s."""
+        return self._confirmations("same_readings", number)
 
     def _in_place_of_withdrawn(self, conn, request: IssueRequest, meta: CertificateMetadata
                                ) -> tuple[tuple[str, Any], ...]:
@@ -3410,6 +3470,66 @@ def _readings_said(meta: CertificateMetadata, elsewhere: tuple[tuple[str, str, s
                        facts=facts, reason=reason)
     return message(QT_TR_NOOP("The readings are those of certificates {facts}: {reason}"),
                    facts=facts, reason=reason)
+
+
+def _with_rows_of(project_json: str, other_json: str, workbench: str) -> str:
+    """``project_json`` with the readings of ``workbench`` as ``other_json`` holds them
+    (typed otherwise, the same values: readings_identity.readings_key)."""
+    project, other = json.loads(project_json), json.loads(other_json)
+    project["workbenches"][workbench]["rows"] = other["workbenches"][workbench]["rows"]
+    return json.dumps(project)
+
+
+def _same_readings_said(meta: CertificateMetadata, identical: tuple[str, ...],
+                        stated: tuple[str, str] | None) -> Any:
+    """What a calibration of its own states whose readings and details are those of the
+    current certificates ``identical`` of its item and date, ``stated`` (one of their
+    numbers, why) by the user; "" when there are none and none is stated.
+    :class:`SameReadingsIssued` when there are some and no reason is given;
+    RegisterError when the number stated is none of them."""
+    from models.register.identifiers import as_printed
+
+    def same(a: str, b: str) -> bool:
+        return as_printed(a).upper() == as_printed(b).upper()
+
+    if stated and not any(same(stated[0].strip(), n) for n in identical):
+        # "N:REASON" split at its first colon, where N holds one (a typed number may)
+        whole = f"{stated[0].strip()}:{stated[1]}"
+        for n in sorted(identical, key=len, reverse=True):
+            if same(whole[:len(n)], n) and whole[len(n):len(n) + 1] == ":":
+                stated = (n, whole[len(n) + 1:])
+                break
+    number, reason = (stated[0].strip(), " ".join(stated[1].split())) if stated else ("", "")
+    numbers = ", ".join(identical)
+    if stated and not identical:
+        raise RegisterError(message(QT_TR_NOOP(
+            "--same-readings-as {number}: the readings and details are not those of a "
+            "current certificate of this item and date of calibration (the readings compared "
+            "by their values), so nothing is to be stated; leave it out"),
+            number=number or "—"))
+    if not identical:
+        return ""
+    if stated and not any(same(number, n) for n in identical):
+        raise RegisterError(message(QT_TR_NOOP(
+            "--same-readings-as {number}: the readings and details are not those of {number} "
+            "but those of {numbers}; name the certificate whose readings they are"),
+            number=number or "—", numbers=numbers))
+    if not reason:
+        found = message(QT_TR_NOOP(
+            "the readings are those of {numbers} (serial {serial}, calibrated {date}) to every "
+            "digit, and so are its details: no two calibrations repeat every reading to the "
+            "last digit, so this is the calibration {numbers} already reports, issued again"),
+            numbers=numbers, serial=_printed(meta.item_serial) or "—",
+            date=meta.calibration_date or "—")
+        raise SameReadingsIssued(message(QT_TR_NOOP(
+            "{found}. Its copy is the PDF of {number} (anglebench register show {number} "
+            "--pdf OUT.pdf); a correction is its amendment or replacement (File › "
+            "Certificate register, Amend… or Replace…); if these are indeed the readings of "
+            "a calibration of its own, say why (stated on the certificate and recorded in "
+            "the register; on the command line: --same-readings-as {number}:REASON)"),
+            found=found, number=identical[0]), identical, found)
+    return message(QT_TR_NOOP("The readings and details are those of {number} to every "
+                              "digit: {reason}"), number=number, reason=reason)
 
 
 def _serial_left_out(meta: CertificateMetadata, rows) -> SerialLeftOut:
