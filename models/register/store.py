@@ -682,7 +682,7 @@ class Register:
                 self._check_version(conn, version)
         if version == schema.LATEST:
             return  # nothing to do: no write lock taken
-        if self.read_only and version in schema.READ_AS_IS:
+        if self.read_only and version is not None and version in schema.READ_AS_IS:
             # read as it is: its tables are this version's but for the intervals' key
             # (version 6) and the readings' stored identity (versions 6 and 7)
             self._intervals_per_serial = version < 7
