@@ -204,6 +204,14 @@ class CertificateDialogs:
             "recorded in the register. Otherwise cancel, and issue it from this item's own "
             "readings.").format(reason=as_sentence(reason), numbers=", ".join(numbers)))
 
+    def ask_same_readings(self, numbers, reason: str) -> str:
+        return self._multiline_answer(tr("The same calibration issued again"), tr(
+            "{reason}.\n\nIf these are indeed the readings of a calibration of its own, say "
+            "why: stated on the certificate and recorded in the register. Otherwise cancel: "
+            "the copy of {numbers} is its PDF (Save PDF… in File › Certificate register), and "
+            "a correction is its amendment or replacement.").format(
+                reason=as_sentence(reason), numbers=", ".join(numbers)))
+
     def _multiline_answer(self, title: str, question: str) -> str:
         """A question answered in a few lines of text ("" when cancelled), its words wrapped
         and the dialog no wider than the screen (QInputDialog's own label does not wrap: the

@@ -268,6 +268,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                       correction_confirmed: bool = False, raw_capture: list | None = None,
                       another_makers_item: bool = False, another_lookalike_item: bool = False,
                       readings_of_another_item: tuple[str, str] | None = None,
+                      same_readings_as: tuple[str, str] | None = None,
                       dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = "",
                       signing: tuple[str, str] = ("", ""),
                       results: Callable[[Any, CertificateRecord], bytes] | None = None,
@@ -298,6 +299,9 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     ``readings_of_another_item``: (N, why) — the readings, by their values, are those of
     certificate N of another item in the register, and why (else ReadingsOfAnotherItem;
     printed on it and recorded in the register's chain; hostile78 F7).
+    ``same_readings_as``: (N, why) — a calibration of its own whose readings, by their
+    values, and details are those of certificate N, current, of its item and date, and why
+    (else SameReadingsIssued; stated in its change note and recorded in the chain).
     ``supersedes``: an amendment (or, with ``replacement``, a replacement) of that
     certificate, of its calibration: its workbench, item (serial as printed) and date of calibration,
     else NotTheSameCalibration, before anything is issued; ``correction_confirmed``: a
@@ -374,6 +378,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                                  another_makers_item=another_makers_item,
                                  another_lookalike_item=another_lookalike_item,
                                  readings_of_another_item=readings_of_another_item,
+                                 same_readings_as=same_readings_as,
                                  confirmed_date=confirmed_date,
                                  # what the document recorded is: a test report or a
                                  # calibration certificate (in the chain, chain format 4)

@@ -126,6 +126,12 @@ class CertificateView(Protocol):
         the register's words): why they are this item's (printed on the certificate and
         recorded in the register; empty: not issued)."""
 
+    def ask_same_readings(self, numbers: tuple[str, ...], reason: str) -> str:
+        """A calibration of its own whose readings, to every digit, and details are those
+        of the current certificates ``numbers`` of its item and date (``reason``, the
+        register's words): why it is nevertheless a calibration of its own (stated on it and
+        recorded in the register; empty: not issued)."""
+
     def confirm_issue_date(self, date: str, reason: str) -> bool:
         """The issue is dated far after the register's last record (``reason``): is today
         ``date``? (recorded when issued; No: not issued)"""
@@ -771,10 +777,12 @@ class CertificatePresenter:
             ReadingsOfAnotherItem,
             RegisterError,
             SameCalibrationIssued,
+            SameReadingsIssued,
         )
 
         corrected = False
         stated = readings or None  # (N, why): the readings of another item, said
+        same_stated = None  # (N, why): the readings and details of a current one, said
         another_maker, another_item = confirmed
         date_confirmed = None  # today's date, confirmed when the register asks (reg73 #6)
         declined: LookalikeSerial | None = None  # the question answered No
@@ -789,7 +797,7 @@ class CertificatePresenter:
                             separate_calibration=separate, correction_confirmed=corrected,
                             another_makers_item=another_maker,
                             another_lookalike_item=another_item,
-                            readings_of_another_item=stated,
+                            readings_of_another_item=stated, same_readings_as=same_stated,
                             raw_capture=raw_capture, confirmed_date=date_confirmed,
                             dcc=self._dcc_maker(kind, result, path, settings),
                             dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
@@ -801,6 +809,16 @@ class CertificatePresenter:
                                                     exc.numbers, explained(exc)).split())
                     if not separate:
                         raise
+                except SameReadingsIssued as exc:
+                    # the same readings and details as a current certificate of the
+                    # calibration: that calibration issued again, unless the user says why
+                    if same_stated:
+                        raise
+                    why = " ".join(self._asked(self.view.ask_same_readings, exc.numbers,
+                                               translated(exc.facts)).split())
+                    if not why:
+                        raise
+                    same_stated = (exc.numbers[0], why)
                 except ReadingsOfAnotherItem as exc:
                     # one item's readings issued as another's (hostile78 F7): why, asked, and
                     # the answer printed on it and recorded

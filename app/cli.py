@@ -136,6 +136,15 @@ def _parser(words, kinds: tuple[str, ...] | None = None,
                        "and why (else it is refused, naming that certificate, its item and date "
                        "of calibration: no two calibrations repeat every reading to the last "
                        "digit); printed on the certificate and recorded in the register")))
+    p.add_argument("--same-readings-as", metavar="N:REASON", default="",
+                   help=words(QT_TR_NOOP(
+                       "with --certificate and --separate-calibration: the readings (their "
+                       "values, however typed or ordered) and the details are those of "
+                       "certificate N, still valid, of this item and date of calibration, and "
+                       "this is nevertheless a calibration of its own: why (else it is "
+                       "refused: no two calibrations repeat every reading to the last digit, "
+                       "so it is N's calibration issued again); stated on the certificate and "
+                       "recorded in the register")))
     p.add_argument("--confirm-date", metavar="YYYY-MM-DD", default="", help=words(QT_TR_NOOP(
         "with --certificate: today's date, as you know it, for an issue more than 30 days "
         "after the register's last record (else it is refused, naming the date the computer's "
@@ -821,9 +830,9 @@ def _specimen(args: argparse.Namespace, kind, result, document, words, settings)
 
 
 def _readings_of_another_item(given: str) -> tuple[str, str] | None:
-    """--readings-of-another-item N:REASON as (N, REASON), split at its first colon (the
-    register splits it again after the number it names, where a typed number holds a
-    colon); None when not given."""
+    """--readings-of-another-item (or --same-readings-as) N:REASON as (N, REASON), split
+    at its first colon (the register splits it again after the number it names, where a
+    typed number holds a colon); None when not given."""
     if not given.strip():
         return None
     number, _colon, reason = given.partition(":")
@@ -855,6 +864,8 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
                                            args, "another_lookalike_item", False),
                                        readings_of_another_item=_readings_of_another_item(
                                            getattr(args, "readings_of_another_item", "")),
+                                       same_readings_as=_readings_of_another_item(
+                                           getattr(args, "same_readings_as", "")),
                                        confirmed_date=parse_confirmed_date(
                                            getattr(args, "confirm_date", "")),
                                        results=_issued_results(args) if args.results else None,

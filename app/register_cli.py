@@ -318,6 +318,14 @@ def _print_record(record, register, words) -> None:
             recorded_at=entry["recorded_at"], reason=entry["reason"] or "—",
             others=", ".join(f"{o.get('number', '')} ({o.get('item', '')})"
                              for o in entry["others"])))
+    # the user's word that a calibration of its own holds the readings and details of a
+    # current certificate of its item and date, and why
+    for entry in register.same_readings_confirmations(record.number):
+        lines.append(message(QT_TR_NOOP(
+            "  readings and details of {others} to every digit, as {user} said at issue "
+            "({recorded_at}): {reason}"), user=entry["os_user"] or "—",
+            recorded_at=entry["recorded_at"], reason=entry["reason"] or "—",
+            others=", ".join(o.get("number", "") for o in entry["others"])))
     due = register.due_date(record.item_serial, record.item_manufacturer or "") \
         if record.item_serial else None
     if due:
@@ -335,16 +343,26 @@ def _print_record(record, register, words) -> None:
 
 
 def _export(register, out: str, words) -> int:
+    from models.register.record_links import record_links
+
     records = register.list()
+    same_readings: dict[str, list[str]] = {}
+    for entry in register.same_readings_confirmations():
+        same_readings.setdefault(entry["number"], []).extend(
+            o.get("number", "") for o in entry["others"])
     index = io.StringIO()
     writer = csv.writer(index)
-    writer.writerow(COLUMNS + ("headline",))  # the register's own words: nothing to neutralise
+    # the register's own words: nothing to neutralise; "links": what links a record to
+    # other certificates, in the command line's language (record_links)
+    writer.writerow(COLUMNS + ("headline", "links"))
     buffer = io.BytesIO()
     with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as archive:
         for record in records:
             # a customer, a serial or a note typed as =HYPERLINK(…) is shown, never run
+            links = "; ".join(rendered(link, words) for link in record_links(
+                record, same_readings.get(record.number, ())))
             writer.writerow([spreadsheet_safe(getattr(record, c) or "") for c in COLUMNS]
-                            + [spreadsheet_safe(record.headline_json)])
+                            + [spreadsheet_safe(record.headline_json), spreadsheet_safe(links)])
             safe = record.number.replace("/", "_")
             pdf = register.pdf(record.number, checked=False)  # the audit's copy: all of it
             changed = hashlib.sha256(pdf).hexdigest() != record.pdf_sha256

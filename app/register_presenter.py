@@ -24,7 +24,10 @@ __all__ = ["RegisterPresenter", "RegisterView"]
 
 COLUMNS = (QT_TR_NOOP("Number"), QT_TR_NOOP("Status"), QT_TR_NOOP("Revision"),
            QT_TR_NOOP("Document"), QT_TR_NOOP("Issued"), QT_TR_NOOP("Calibrated"), QT_TR_NOOP("Workbench"),
-           QT_TR_NOOP("Serial"), QT_TR_NOOP("Manufacturer"), QT_TR_NOOP("Customer"))
+           QT_TR_NOOP("Serial"), QT_TR_NOOP("Manufacturer"), QT_TR_NOOP("Customer"),
+           # what links it to other certificates (models/register/record_links: amends,
+           # superseded by, in place of withdrawn, readings of another item …)
+           QT_TR_NOOP("Links"))
 
 
 class RegisterView(Protocol):
@@ -108,13 +111,13 @@ def _recovery_row(entry: dict, numbers: list[str], zone) -> tuple[str, ...]:
         lost = numbers_lost(body, numbers)
         return (", ".join(lost) or "—", tr("issued and lost"), "", tr("Loss acknowledged"),
                 day, "", "", "", "", tr("recorded by {by}: {reason}").format(
-                    by=by, reason=reason))
+                    by=by, reason=reason), "")
     from models.register.wording import recorded_words
 
     ahead = translated(recorded_words(str(body.get("ahead", ""))))  # in words, not "entry …"
     return (ahead, tr("dated by a clock set ahead"), "", tr("Clock correction"), day, "", "",
             "", "", tr("recorded by {by}: {reason}; {ahead} was dated {at}").format(
-                by=by, reason=reason, ahead=ahead or "?", at=body.get("ahead_at", "?")))
+                by=by, reason=reason, ahead=ahead or "?", at=body.get("ahead_at", "?")), "")
 
 
 def _days(date: str) -> float:
@@ -152,10 +155,16 @@ class RegisterPresenter:
         if search is not None:
             self.search = search
         self.view.show_location(self.certificates.register_url())
+        from models.register.record_links import record_links
+
         recorded: list[tuple[int, tuple[str, ...]]] = []
+        same_readings: dict[str, list[str]] = {}
         try:
             with self._register() as register:
                 self.records = register.list(self.search)
+                for entry in register.same_readings_confirmations():
+                    same_readings.setdefault(entry["number"], []).extend(
+                        o.get("number", "") for o in entry["others"])
                 problems = register.problems
                 recoveries = register.recoveries_recorded()
                 if recoveries:  # a loss's numbers are written as the register's are
@@ -190,7 +199,9 @@ class RegisterPresenter:
                          translated(revision_words(r.revision)),
                          translated(kind_words(r.document_kind)), r.issue_date,
                          r.calibration_date, _workbench_title(r.workbench), r.item_serial,
-                         r.item_manufacturer or "", r.customer))
+                         r.item_manufacturer or "", r.customer,
+                         "; ".join(translated(link) for link in record_links(
+                             r, same_readings.get(r.number, ())))))
             self.listed.append(r)
         while recorded:
             rows.append(recorded.pop()[1])

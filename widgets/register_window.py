@@ -112,6 +112,14 @@ class RegisterWindow(QDialog):
         self.table.verticalHeader().hide()
         self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
         self.table.horizontalHeader().setStretchLastSection(True)
+        #: the selected certificate's links to others (the list's last column) in full,
+        #: wrapped: at 200 % the column is off the screen or cut short
+        self.links = QLabel()
+        self.links.setWordWrap(True)
+        self.links.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.links.hide()
+        self._rows: list = []
+        self.table.itemSelectionChanged.connect(self._show_links)
         self.buttons = {}
         for name, text in (("open", tr("Open project")), ("amend", tr("Amend…")),
                            ("replace", tr("Replace…")), ("save", tr("Save PDF…")),
@@ -203,6 +211,7 @@ class RegisterWindow(QDialog):
         upper_layout.setContentsMargins(0, 0, 0, 0)
         upper_layout.addWidget(self.search)
         upper_layout.addWidget(self.table, 1)
+        upper_layout.addWidget(self.links)
         upper_layout.addLayout(actions)
         lower = QWidget()
         lower_layout = QVBoxLayout(lower)
@@ -268,9 +277,33 @@ class RegisterWindow(QDialog):
         self.location.setToolTip(url)
 
     def show_records(self, header, rows) -> None:
+        self._rows = list(rows)
         show_text_table(self.table, [tr(h) for h in header], rows)
+        for r, row in enumerate(rows):  # the links in full where the column is narrow
+            item = self.table.item(r, len(row) - 1) if row and row[-1] else None
+            if item is not None:
+                item.setToolTip(row[-1])
+        # the links' column as wide as its text up to about 30 characters, not squeezed to
+        # what the other columns leave (the selected one's in full below the list)
+        last = self.table.columnCount() - 1
+        if last > 0:
+            widest = 30 * self.table.fontMetrics().averageCharWidth()
+            header_view = self.table.horizontalHeader()
+            header_view.setStretchLastSection(False)
+            header_view.setSectionResizeMode(last, QHeaderView.ResizeMode.Interactive)
+            self.table.setColumnWidth(last, min(max(self.table.sizeHintForColumn(last),
+                                                    header_view.sectionSizeHint(last)),
+                                                widest))
+        self._show_links()
         if rows:
             self.table.selectRow(0)
+
+    def _show_links(self) -> None:
+        """The selected certificate's links (the list's last column) below the list."""
+        row = self.selected_row()
+        text = self._rows[row][-1] if 0 <= row < len(self._rows) and self._rows[row] else ""
+        self.links.setText(tr("Links: {links}").format(links=text) if text else "")
+        self.links.setVisible(bool(text))
 
     def selected_row(self) -> int:
         rows = self.table.selectionModel().selectedRows()

@@ -17,8 +17,8 @@ from collections.abc import Callable
 import sqlalchemy as sa
 
 __all__ = ["CERTIFICATES", "COUNTERS", "ENTRIES", "INSTRUMENTS", "LATEST", "METADATA",
-           "MIGRATIONS", "READ_AS_IS", "SCHEMA_VERSION", "STATE", "downgrade_evidence",
-           "intervals_per_serial"]
+           "MIGRATIONS", "READINGS_KEY_VERSION", "READ_AS_IS", "SCHEMA_VERSION", "STATE",
+           "downgrade_evidence", "intervals_per_serial"]
 
 METADATA = sa.MetaData()
 
@@ -80,6 +80,14 @@ CERTIFICATES = sa.Table(
     # of every record issued since (chain format 4); None on a record issued before it: not
     # recorded, never guessed
     sa.Column("document_kind", sa.String(20), nullable=True),
+    # migration 8: the identity of the record's readings by their values
+    # (models/register/readings_identity.readings_key: "" for none), made at issue and filled
+    # in once for the records before it, looked up by the index certificates_readings_key
+    # (one item's readings issued as another's, a withdrawn certificate's readings reissued);
+    # not in the chain (it is made from the project state, which is): 'register verify'
+    # makes it again from the readings and reports one that differs. None: issued by an
+    # AngleBench of schema 7 still running after the migration, made when it is compared
+    sa.Column("readings_key", sa.String(64), nullable=True),
 )
 
 #: the register's other records, chained with the certificates (migration 4): calibration
@@ -248,13 +256,39 @@ def _v7(conn: sa.Connection) -> None:
     old.drop(conn)
 
 
+def _v8(conn: sa.Connection) -> None:
+    """The readings' identity stored with each record (readings_identity.readings_key), and
+    its index: every issue compared the readings with every record's of the workbench,
+    made again from each record's project state (~2 ms a record: 20 s an issue for a
+    register of 10,000). One nullable column, filled in here once for every record from
+    its project state (in the chain), in the migration's one transaction; no record's
+    chain value is touched. Refused when the column exists already (a version set back)."""
+    from models.register.readings_identity import readings_key
+
+    columns = {c["name"] for c in sa.inspect(conn).get_columns("certificates")}
+    if "readings_key" in columns:
+        raise ValueError("the column of version 8 exists already")
+    conn.execute(sa.text("ALTER TABLE certificates ADD COLUMN readings_key VARCHAR(64)"))
+    conn.execute(sa.text("CREATE INDEX certificates_readings_key ON certificates "
+                         "(workbench, readings_key)"))
+    c = CERTIFICATES.c
+    rows = conn.execute(sa.select(c.id, c.workbench, c.project_json).order_by(c.id)).all()
+    if rows:
+        conn.execute(CERTIFICATES.update().where(c.id == sa.bindparam("row_id")).values(
+            readings_key=sa.bindparam("key")),
+            [{"row_id": r.id, "key": readings_key(r.project_json, r.workbench)} for r in rows])
+
+
 #: version → the migration that brings a register to it from the version before
 MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2, 3: _v3, 4: _v4,
-                                                          5: _v5, 6: _v6, 7: _v7}
+                                                          5: _v5, 6: _v6, 7: _v7, 8: _v8}
 LATEST = max(MIGRATIONS)
 #: versions a read-only register (which cannot be migrated) is read at as it is: version 6
-#: differs from 7 only by the intervals' key, read as every maker's item's (store._intervals)
-READ_AS_IS = frozenset({6})
+#: differs from 7 only by the intervals' key, read as every maker's item's (store._intervals);
+#: versions 6 and 7 from 8 only by the readings' stored identity, made when compared
+READ_AS_IS = frozenset({6, 7})
+#: the first version that stores the readings' identity (CERTIFICATES.c.readings_key)
+READINGS_KEY_VERSION = 8
 
 
 def downgrade_evidence(conn: sa.Connection, version: int) -> str:
@@ -289,6 +323,10 @@ def downgrade_evidence(conn: sa.Connection, version: int) -> str:
             return "the records carry the hash chain of version 3"
     if version < 7 and "calibration_intervals" in tables:
         return "the table of version 7 (calibration_intervals) exists"
+    if version < 8 and "certificates" in tables:
+        columns = {c["name"] for c in inspector.get_columns("certificates")}
+        if "readings_key" in columns:
+            return "the column of version 8 (readings_key) exists"
     return ""
 
 

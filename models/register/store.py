@@ -63,8 +63,8 @@ if TYPE_CHECKING:
 
 __all__ = ["AnotherMakersItem", "CertificateRecord", "IssueRequest", "LookalikeSerial",
            "NotTheSameCalibration", "PrintedHead", "Register", "RegisterError",
-           "ReadingsOfAnotherItem", "RegisterTampered", "SameCalibrationIssued", "SerialLeftOut",
-           "lab_timezone", "software_versions"]
+           "ReadingsOfAnotherItem", "RegisterTampered", "SameCalibrationIssued",
+           "SameReadingsIssued", "SerialLeftOut", "lab_timezone", "software_versions"]
 
 LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
              "psycopg")
@@ -100,6 +100,21 @@ class NotASeparateCalibration(RegisterError):
     def __init__(self, text, numbers: tuple[str, ...]) -> None:
         super().__init__(text)
         self.numbers = numbers
+
+
+class SameReadingsIssued(NotASeparateCalibration):
+    """An original issued as a calibration of its own beside current certificates of the
+    same item and date (``numbers``) whose readings, by their values, and whose details are
+    its own: no two calibrations repeat every reading to the last digit, so it is their
+    calibration issued again, a second original of one calibration (ISO/IEC 17025 7.8.8).
+    Its copy is their PDF; a correction is their amendment or replacement; issued only when
+    the user says why, naming one of them (``same_readings_as``: on the command line
+    --same-readings-as N:REASON), which is stated on it and recorded in the chain.
+    ``facts``: what the register found, without the command line's option."""
+
+    def __init__(self, text, numbers: tuple[str, ...], facts: str = "") -> None:
+        super().__init__(text, numbers)
+        self.facts = facts or text
 
 
 class ReadingsOfAnotherItem(RegisterError):
@@ -256,6 +271,11 @@ class CertificateRecord:
     # schema version 6: what the document is, "calibration" (a calibration certificate) or
     # "test" (a test report), in the chain (format 4); None: issued before it, not recorded
     document_kind: str | None = None
+    # schema version 8: the identity of its readings by their values (readings_identity:
+    # "" for none), made at issue, not in the chain (made from project_json, which is);
+    # None: not stored (a register read as it is at version 6 or 7, a record issued by an
+    # AngleBench of schema 7 after the migration)
+    readings_key: str | None = None
 
     @property
     def headline(self) -> dict[str, float]:
@@ -274,6 +294,8 @@ class CertificateRecord:
 
 
 _RECORD_COLUMNS = tuple(f.name for f in dataclasses.fields(CertificateRecord))
+#: the record's columns a register of schema version 6 or 7 holds (read as it is)
+_RECORD_COLUMNS_V7 = tuple(c for c in _RECORD_COLUMNS if c != "readings_key")
 
 
 @dataclass(frozen=True)
@@ -454,6 +476,9 @@ class Register:
         #: a read-only register at schema version 6, read without migrating: its intervals
         #: are per serial (every maker's item's)
         self._intervals_per_serial = False
+        #: the records carry their readings' identity (schema version 8; a read-only
+        #: register read as it is at 6 or 7 does not: made when compared)
+        self._stored_keys = True
         self.timezone = lab_timezone(timezone)
         self._sqlite_path = ""
         #: told, at once, when a write waits for the SQLite register's write lock held by
@@ -599,6 +624,12 @@ class Register:
     def __exit__(self, *_exc) -> None:
         self.close()
 
+    @property
+    def _record_columns(self) -> tuple[str, ...]:
+        """The columns a record is read from (:class:`CertificateRecord`'s fields that the
+        register holds)."""
+        return _RECORD_COLUMNS if self._stored_keys else _RECORD_COLUMNS_V7
+
     # -- schema ---------------------------------------------------------------------------
     def _version_in(self, conn) -> int | None:
         sa, schema = self._sa, self._schema
@@ -651,9 +682,11 @@ class Register:
                 self._check_version(conn, version)
         if version == schema.LATEST:
             return  # nothing to do: no write lock taken
-        if self.read_only and version in schema.READ_AS_IS:
+        if self.read_only and version is not None and version in schema.READ_AS_IS:
             # read as it is: its tables are this version's but for the intervals' key
-            self._intervals_per_serial = True
+            # (version 6) and the readings' stored identity (versions 6 and 7)
+            self._intervals_per_serial = version < 7
+            self._stored_keys = version >= schema.READINGS_KEY_VERSION
             return
         if self.read_only:
             raise RegisterError(message(QT_TR_NOOP(
@@ -1238,6 +1271,7 @@ class Register:
               correction_confirmed: bool = False, another_makers_item: bool = False,
               another_lookalike_item: bool = False,
               readings_of_another_item: tuple[str, str] | None = None,
+              same_readings_as: tuple[str, str] | None = None,
               confirmed_date: dt.date | None = None,
               prepare: Callable[[CertificateMetadata], tuple[str | None, bytes | None]]
               | None = None) -> tuple[CertificateRecord, bytes]:
@@ -1281,6 +1315,12 @@ class Register:
         :meth:`readings_of_another_item_confirmations`). Stated where its readings are not
         that certificate's, it is refused too (the statement would be false). Not checked
         with ``separate_calibration`` None.
+        A calibration of its own whose readings, by their values, and details are those of
+        a current certificate of its item and date raises :class:`SameReadingsIssued` (no
+        two calibrations repeat every reading to the last digit: it is that calibration
+        issued again) unless ``same_readings_as`` is (that certificate's number, why): then
+        it is stated in its change note and is a chained entry ("same_readings":
+        :meth:`same_readings_confirmations`).
 
         ``document_kind``: what the document rendered is, "calibration" (a calibration
         certificate) or "test" (a test report), or a callable that says so after each
@@ -1341,6 +1381,8 @@ class Register:
         self._check_approval(meta)
         certificates = self._schema.CERTIFICATES
         user = _os_user()
+        # the readings' identity, stored with the record (schema version 8)
+        key = readings_key(request.project_json, request.workbench)
         with self._issuing_turn() as turn:
             for _attempt in range(ISSUE_ATTEMPTS):
                 # the time of issue is taken for each attempt: a record committed by another
@@ -1356,7 +1398,9 @@ class Register:
                     # a calibration of its own has readings of its own: the same readings
                     # judged otherwise are a correction (hostile78 F2: the same readings,
                     # ±3″ for ±1″, issued "separate" read "pass")
-                    repeated = self._judged_again(conn, same, request, meta)
+                    repeated = self._judged_again(conn, same, request, meta, key)
+                    # and one judged alike is that calibration issued again
+                    identical = self._issued_again(conn, same, request, key, repeated)
                     # a standard whose certificate is one of this register's, withdrawn or
                     # superseded, calibrates nothing (hostile78 F6)
                     void = self._void_standards(conn, meta)
@@ -1429,6 +1473,8 @@ class Register:
                         date=meta.calibration_date or "—",
                         changes=separated([c for _, said in repeated for c in said])),
                         tuple(n for n, _ in repeated))
+                same_said = _same_readings_said(meta, identical if same and separate else (),
+                                                same_readings_as)
                 if others and not another_makers_item:
                     raise _another_makers_item(meta, others)
                 if lookalikes and not another_lookalike_item:
@@ -1443,7 +1489,8 @@ class Register:
                     created=now.isoformat(),
                     supersedes=original.number if original else "",
                     revision="" if plan.revision == "original" else plan.revision,
-                    change_note=_bounded(separated([separate, *against])) if same else
+                    change_note=_bounded(separated([separate, *filter(None, [same_said]),
+                                                    *against])) if same else
                     _bounded(separated([*corrected, change_note])) if corrected else change_note,
                     separate_from=", ".join(same),
                     replaces_withdrawn=", ".join(n for n, _ in withdrawn),
@@ -1467,7 +1514,7 @@ class Register:
                     pdf_sha256="",
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
                     os_user=user, approver=meta.approver,
-                    chain_format=6)
+                    chain_format=6, readings_key=key)
                 # the record's content first, carried by the PDF (so by the DCC that embeds
                 # it); then the files' hashes (reg72 #2: the newest record rewritten with its
                 # chain recomputed is found from the customer's copy). Content form 2 also
@@ -1536,6 +1583,14 @@ class Register:
                                 "others": [{"number": n, "serial": k, "item": i,
                                             "calibration_date": d}
                                            for n, k, i, d in elsewhere]})
+                        if same_said:  # said by the user: recorded
+                            self._append_entry(conn, "same_readings", plan.number, {
+                                "serial": meta.item_serial,
+                                "manufacturer": meta.item_manufacturer,
+                                "calibration_date": meta.calibration_date,
+                                "reason": " ".join(same_readings_as[1].split())
+                                if same_readings_as else "",
+                                "others": [{"number": n} for n in identical]})
                         if plan.date_confirmed is not None:  # said by the user: recorded
                             self._append_entry(conn, "date_confirmed", plan.number,
                                                plan.date_confirmed)
@@ -1658,28 +1713,79 @@ class Register:
         return out
 
     def _judged_again(self, conn, same: tuple[str, ...], request: IssueRequest,
-                      meta: CertificateMetadata) -> tuple[tuple[str, tuple], ...]:
+                      meta: CertificateMetadata, key: str = ""
+                      ) -> tuple[tuple[str, tuple], ...]:
         """Of the current certificates ``same`` of this calibration, those whose readings
-        ``request`` holds too, as typed, and judges otherwise (another tolerance, rule,
-        standard or setting): each with what it changes (hostile78 F2)."""
+        ``request`` holds too, as typed or by their values (``key``: the request's
+        readings_key), and judges otherwise (another tolerance, rule, standard or setting):
+        each with what it changes (hostile78 F2)."""
         project = _with_metadata(request.project_json, request.workbench, meta)
         out = []
         for number in same:
             record = self._get(conn, number)
+            judged = project
             if not same_readings(record.project_json, project, request.workbench):
-                continue
-            changes = basis_changes(record.project_json, project, request.workbench, number)
+                if not key or self._readings_key(record) != key:
+                    continue
+                # the same values typed otherwise: compared with the record's rows as typed
+                judged = _with_rows_of(project, record.project_json, request.workbench)
+            changes = basis_changes(record.project_json, judged, request.workbench, number)
             if changes:
                 out.append((number, changes))
         return tuple(out)
 
+    def _issued_again(self, conn, same: tuple[str, ...], request: IssueRequest, key: str,
+                      repeated: tuple[tuple[str, tuple], ...]) -> tuple[str, ...]:
+        """Of the current certificates ``same`` of this calibration, those whose readings
+        are ``request``'s by their values (``key``) and that it judges alike (not among
+        ``repeated``, :meth:`_judged_again`'s): that calibration issued again."""
+        if not key:
+            return ()
+        judged = {n for n, _ in repeated}
+        return tuple(n for n in same if n not in judged
+                     and self._readings_key(self._get(conn, n)) == key)
+
     def _readings_key(self, record: CertificateRecord) -> str:
-        """``record``'s readings_key, computed once per register object."""
+        """``record``'s readings_key: as stored with it (schema version 8), else made from
+        its project state, once per register object."""
+        if record.readings_key is not None:
+            return record.readings_key
         key = self._readings_keys.get(record.number)
         if key is None:
             key = self._readings_keys[record.number] = readings_key(record.project_json,
                                                                     record.workbench)
         return key
+
+    def _numbers_of_readings(self, conn, workbench: str, key: str, *where: Any
+                             ) -> builtins.list[str]:
+        """The numbers of the records of ``workbench`` (and ``where``) whose readings have
+        the identity ``key``, in the register's order: looked up by the stored identity
+        (its index, schema version 8); a record without one (issued by an AngleBench of
+        schema 7 after the migration, or a register read as it is) by its readings, made
+        once per register object."""
+        c = self._schema.CERTIFICATES.c
+        if not self._stored_keys:
+            rows = conn.execute(self._sa.select(c.number, c.project_json).where(
+                c.workbench == workbench, *where).order_by(c.id)).all()
+        else:
+            rows = conn.execute(self._sa.select(
+                c.number, self._sa.case((c.readings_key.is_(None), c.project_json),
+                                        else_=self._sa.null()).label("project_json"),
+                c.readings_key).where(
+                c.workbench == workbench, *where,
+                self._sa.or_(c.readings_key == key, c.readings_key.is_(None))
+            ).order_by(c.id)).all()
+        out = []
+        for row in rows:
+            stored = row.readings_key if self._stored_keys else None
+            if stored is None:
+                stored = self._readings_keys.get(row.number)
+                if stored is None:
+                    stored = self._readings_keys[row.number] = readings_key(
+                        row.project_json, workbench)
+            if stored == key:
+                out.append(row.number)
+        return out
 
     def _readings_elsewhere(self, conn, request: IssueRequest, meta: CertificateMetadata,
                             original: CertificateRecord | None
@@ -1702,18 +1808,9 @@ class Register:
             if self._readings_key(original) == key:
                 return ()
             own = self._revisions_of(conn, original)
-        c = self._schema.CERTIFICATES.c
-        numbers = conn.execute(self._sa.select(c.number).where(
-            c.workbench == request.workbench).order_by(c.id)).scalars().all()
-        if any(n not in self._readings_keys for n in numbers):  # read once, in one query
-            for row in conn.execute(self._sa.select(c.number, c.project_json).where(
-                    c.workbench == request.workbench)).all():
-                if row.number not in self._readings_keys:
-                    self._readings_keys[row.number] = readings_key(row.project_json,
-                                                                   request.workbench)
         out = []
-        for number in numbers:
-            if number in own or self._readings_keys.get(number) != key:
+        for number in self._numbers_of_readings(conn, request.workbench, key):
+            if number in own:
                 continue
             record = self._get(conn, number)
             if not _one_item(record, meta):
@@ -1756,6 +1853,14 @@ class Register:
         ([{number, serial, item, calibration_date}]), ``recorded_at``, ``os_user``; every
         one, or ``number``'s."""
         return self._confirmations("readings_of_another_item", number)
+
+    def same_readings_confirmations(self, number: str = "") -> builtins.list[dict]:
+        """The calibrations of their own issued after the user said why their readings and
+        details are those of a current certificate of their item and date
+        (:class:`SameReadingsIssued`), from the chained entries: ``number``, ``serial``,
+        ``manufacturer``, ``reason``, ``others`` ([{number}]), ``recorded_at``,
+        ``os_user``; every one, or ``number``'s."""
+        return self._confirmations("same_readings", number)
 
     def _in_place_of_withdrawn(self, conn, request: IssueRequest, meta: CertificateMetadata
                                ) -> tuple[tuple[str, Any], ...]:
@@ -1803,16 +1908,12 @@ class Register:
         if not key:
             return ()
         c = self._schema.CERTIFICATES.c
-        rows = conn.execute(self._sa.select(c.number).where(
-            c.workbench == request.workbench, c.status == "withdrawn",
-            c.calibration_date != meta.calibration_date).order_by(c.id)).all()
         out = []
-        for row in rows:
-            if row.number in besides:
-                continue
-            record = self._get(conn, row.number)
-            if self._readings_key(record) == key and _one_item(record, meta):
-                out.append(row.number)
+        for number in self._numbers_of_readings(
+                conn, request.workbench, key, c.status == "withdrawn",
+                c.calibration_date != meta.calibration_date):
+            if number not in besides and _one_item(self._get(conn, number), meta):
+                out.append(number)
         return tuple(out)
 
     def _withdrawn_on(self, conn, number: str) -> str:
@@ -2260,7 +2361,7 @@ class Register:
     # -- reading --------------------------------------------------------------------------
     def _get(self, conn, number: str) -> CertificateRecord:
         certificates = self._schema.CERTIFICATES
-        row = conn.execute(self._sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS)).where(
+        row = conn.execute(self._sa.select(*(certificates.c[c] for c in self._record_columns)).where(
             certificates.c.number == number)).first()
         if row is None:
             raise _not_in_register(number)
@@ -2362,7 +2463,8 @@ class Register:
         sa, schema = self._sa, self._schema
         certificates, entries = schema.CERTIFICATES, schema.ENTRIES
         columns = ("id", *CHAINED, *CHAINED_V2, *CHAINED_V3, *CHAINED_V4, "chain_format", "status",
-                   "superseded_by", "withdrawn_reason", "chain_sha256", "signature")
+                   "superseded_by", "withdrawn_reason", "chain_sha256", "signature",
+                   *(("readings_key",) if self._stored_keys else ()))
         problems: list = []
         with self._read() as conn:
             rows = conn.execute(sa.select(*(certificates.c[c] for c in columns),
@@ -2409,6 +2511,7 @@ class Register:
                         dcc = conn.execute(sa.select(certificates.c.dcc).where(
                             certificates.c.id == item.id)).scalar_one() if item.has_dcc else None
                         problems += _content_problems(fields, bytes(data), dcc)
+                    problems += _readings_key_problems(fields)
                 if not is_entry:
                     problems += _dcc_problems(conn, certificates, item, pdfs)
                     if item.document_kind is not None and (item.chain_format or 1) < 4:
@@ -2664,7 +2767,7 @@ class Register:
         sa, certificates, entries = self._sa, self._schema.CERTIFICATES, self._schema.ENTRIES
         assert check.place is not None
         place = check.place + 1
-        row = conn.execute(sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS)).where(
+        row = conn.execute(sa.select(*(certificates.c[c] for c in self._record_columns)).where(
             certificates.c.seq == place)).first()
         record = CertificateRecord(**row._asdict()) if row is not None else None
         entry = conn.execute(sa.select(entries.c.kind, entries.c.subject, entries.c.body_json)
@@ -2915,7 +3018,7 @@ class Register:
         from models.register.identifiers import printed_search_keys
 
         sa, certificates = self._sa, self._schema.CERTIFICATES
-        query = sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS))
+        query = sa.select(*(certificates.c[c] for c in self._record_columns))
         query = query.order_by(certificates.c.id.desc())
         wanted = search.strip()
         if not wanted:
@@ -2982,7 +3085,7 @@ class Register:
                    and _same_maker(row.item_manufacturer, manufacturer)]
             if not ids:
                 return []
-            rows = conn.execute(self._sa.select(*(c[name] for name in _RECORD_COLUMNS))
+            rows = conn.execute(self._sa.select(*(c[name] for name in self._record_columns))
                                 .where(c.id.in_(ids))
                                 .order_by(c.calibration_date, c.id))
             return [CertificateRecord(**row._asdict()) for row in rows]
@@ -3369,6 +3472,66 @@ def _readings_said(meta: CertificateMetadata, elsewhere: tuple[tuple[str, str, s
                    facts=facts, reason=reason)
 
 
+def _with_rows_of(project_json: str, other_json: str, workbench: str) -> str:
+    """``project_json`` with the readings of ``workbench`` as ``other_json`` holds them
+    (typed otherwise, the same values: readings_identity.readings_key)."""
+    project, other = json.loads(project_json), json.loads(other_json)
+    project["workbenches"][workbench]["rows"] = other["workbenches"][workbench]["rows"]
+    return json.dumps(project)
+
+
+def _same_readings_said(meta: CertificateMetadata, identical: tuple[str, ...],
+                        stated: tuple[str, str] | None) -> Any:
+    """What a calibration of its own states whose readings and details are those of the
+    current certificates ``identical`` of its item and date, ``stated`` (one of their
+    numbers, why) by the user; "" when there are none and none is stated.
+    :class:`SameReadingsIssued` when there are some and no reason is given;
+    RegisterError when the number stated is none of them."""
+    from models.register.identifiers import as_printed
+
+    def same(a: str, b: str) -> bool:
+        return as_printed(a).upper() == as_printed(b).upper()
+
+    if stated and not any(same(stated[0].strip(), n) for n in identical):
+        # "N:REASON" split at its first colon, where N holds one (a typed number may)
+        whole = f"{stated[0].strip()}:{stated[1]}"
+        for n in sorted(identical, key=len, reverse=True):
+            if same(whole[:len(n)], n) and whole[len(n):len(n) + 1] == ":":
+                stated = (n, whole[len(n) + 1:])
+                break
+    number, reason = (stated[0].strip(), " ".join(stated[1].split())) if stated else ("", "")
+    numbers = ", ".join(identical)
+    if stated and not identical:
+        raise RegisterError(message(QT_TR_NOOP(
+            "--same-readings-as {number}: the readings and details are not those of a "
+            "current certificate of this item and date of calibration (the readings compared "
+            "by their values), so nothing is to be stated; leave it out"),
+            number=number or "—"))
+    if not identical:
+        return ""
+    if stated and not any(same(number, n) for n in identical):
+        raise RegisterError(message(QT_TR_NOOP(
+            "--same-readings-as {number}: the readings and details are not those of {number} "
+            "but those of {numbers}; name the certificate whose readings they are"),
+            number=number or "—", numbers=numbers))
+    if not reason:
+        found = message(QT_TR_NOOP(
+            "the readings are those of {numbers} (serial {serial}, calibrated {date}) to every "
+            "digit, and so are its details: no two calibrations repeat every reading to the "
+            "last digit, so this is the calibration {numbers} already reports, issued again"),
+            numbers=numbers, serial=_printed(meta.item_serial) or "—",
+            date=meta.calibration_date or "—")
+        raise SameReadingsIssued(message(QT_TR_NOOP(
+            "{found}. Its copy is the PDF of {number} (anglebench register show {number} "
+            "--pdf OUT.pdf); a correction is its amendment or replacement (File › "
+            "Certificate register, Amend… or Replace…); if these are indeed the readings of "
+            "a calibration of its own, say why (stated on the certificate and recorded in "
+            "the register; on the command line: --same-readings-as {number}:REASON)"),
+            found=found, number=identical[0]), identical, found)
+    return message(QT_TR_NOOP("The readings and details are those of {number} to every "
+                              "digit: {reason}"), number=number, reason=reason)
+
+
 def _serial_left_out(meta: CertificateMetadata, rows) -> SerialLeftOut:
     """The question of an item of no serial beside one of its description with a serial, or
     the other way round (:meth:`Register.issue`; stop 67), as raised: each serial once
@@ -3548,6 +3711,22 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
                 recorded=f"\"{withdrawn[row.number]}\"" if row.number in withdrawn
                 else message(QT_TR_NOOP("it was never withdrawn"))))
     return problems
+
+
+def _readings_key_problems(fields: dict) -> list:
+    """A record's stored readings identity (schema version 8, outside the chain) against
+    the one its readings give (its project state, in the chain): set otherwise after issue,
+    it would hide its readings from the check of one item's readings issued as another's,
+    or name it for readings it does not hold. [] when they agree or none is stored."""
+    stored = fields.get("readings_key")
+    if stored is None:
+        return []
+    if stored == readings_key(fields["project_json"], fields["workbench"]):
+        return []
+    return [message(QT_TR_NOOP(
+        "record {number}: the identity of its readings stored with it is not that of its "
+        "readings (set otherwise after issue): the check of readings issued again would "
+        "not find them"), number=fields["number"])]
 
 
 def _content_problems(fields: dict, pdf: bytes, dcc: bytes | None) -> list:

@@ -70,6 +70,10 @@ _ENTRIES = {
                                 "item of the same serial"),
     "lookalike_serial": QT_TR_NOOP("the note that certificate {subject}'s serial only looks "
                                    "like another item's"),
+    "readings_of_another_item": QT_TR_NOOP("the note why certificate {subject} holds the "
+                                           "readings of another item's certificate"),
+    "same_readings": QT_TR_NOOP("the note why certificate {subject} holds the readings and "
+                                "details of a current certificate of its calibration"),
     "missing": QT_TR_NOOP("the note that certificate {subject} was shown whose record the "
                           "register no longer held"),
     "number_reissued": QT_TR_NOOP("the note that number {subject} was issued twice"),

@@ -20,6 +20,7 @@ from models.capture.raw_record import raw_digest
 from models.register.location import register_url
 from models.register.store import Register
 from tests.instrument_simulators import AutocollimatorSimulator
+from tests.own_readings import own_readings
 
 FAST = ["--silence", "0.2", "--retries", "1"]
 
@@ -104,8 +105,10 @@ def test_a_certificate_from_captured_readings_says_so_and_names_the_output(
     assert [take[0] for take in sessions[0]["takes"]] == [0, 1, 2]
     assert stored["sha256"] == raw_digest(sessions)
     assert raw_digest(sessions) in text.replace(" ", "")  # the instrument output's SHA-256
-    # without the record: the readings file alone, as before
-    assert _analyze(readings, _details(samples_dir, tmp_path), tmp_path / "plain.pdf",
+    # without the record: a readings file alone, as before (readings of their own: the same
+    # readings and details are the first calibration issued again, refused: register79)
+    plain = own_readings(readings, "plain", tmp_path / "plain")
+    assert _analyze(plain, _details(samples_dir, tmp_path), tmp_path / "plain.pdf",
                     "--separate-calibration", "issued again without the record") == 0
     assert "captured from the instruments" not in _pdf_text(tmp_path / "plain.pdf")
 

@@ -74,7 +74,12 @@ def test_a_change_after_the_issue_gets_the_generic_question(window, qtbot, sampl
 
 def test_an_issue_with_the_details_as_saved_leaves_nothing_to_ask(window, qtbot, samples_dir,
                                                                   tmp_path):
-    _polygon, path, _number = _reopened_and_issued(window, qtbot, samples_dir, tmp_path)
+    polygon, path, _number = _reopened_and_issued(window, qtbot, samples_dir, tmp_path)
+    # the calibration as left: a reading of its own (the same readings and details are the
+    # first calibration issued again, refused: register79), saved before its issue
+    model = polygon.table_model
+    typed = str(model.index(0, 2).data())
+    model.setData(model.index(0, 2), typed[:-1] + str((int(typed[-1]) + 1) % 10))
     assert window.projects.save_to(path)
     calls: list = []
     _answer_dialogs(window, tmp_path, samples_dir, "polygon", calls, "cert2.pdf")

@@ -25,6 +25,7 @@ from openpyxl import load_workbook
 from app.main import main
 from models.dcc import vocabulary as v
 from models.dcc.schema import validate
+from tests.own_readings import own_readings
 
 pytestmark = pytest.mark.slow  # certificates, DCCs and the JSON
 
@@ -170,7 +171,10 @@ def test_a_separate_calibration_is_a_dcc_statement_and_xlsx_rows(tmp_path):
     try:
         first = _issue(["analyze", "theodolite", str(readings), "--metadata", str(meta),
                         "--certificate", str(tmp_path / "a.pdf")])
-        _main(["analyze", "theodolite", str(readings), "--metadata", str(meta),
+        # as left after the adjustment: readings of its own (the same readings and details
+        # are the first calibration issued again, refused: register79)
+        as_left = own_readings(readings, "as left", tmp_path / "as_left")
+        _main(["analyze", "theodolite", str(as_left), "--metadata", str(meta),
                "--certificate", str(tmp_path / "b.pdf"), "--dcc", str(tmp_path / "b.xml"),
                "--results", str(tmp_path / "b.xlsx"),
                "--separate-calibration", "as left after the adjustment"])
@@ -188,7 +192,8 @@ def test_a_separate_calibration_is_a_dcc_statement_and_xlsx_rows(tmp_path):
     zh = st.findtext("dcc:declaration/dcc:content[@lang='zh']", namespaces=NS)
     assert en == (f"A calibration of its own, separate from certificate {number} of the same "
                   "item and date of calibration, which stays valid: as left after the "
-                  "adjustment")
+                  f"adjustment; readings changed from those of {number}: row(s) 1–41 (41 rows "
+                  "there, 41 here)")
     assert f"证书 {number}" in zh and "仍然有效" in zh
     assert dcc.xpath(".//dcc:coreData/dcc:reportAmendedSubstituted", namespaces=NS) == []
     sheet = load_workbook(tmp_path / "b.xlsx")["Certificate"]
@@ -196,8 +201,11 @@ def test_a_separate_calibration_is_a_dcc_statement_and_xlsx_rows(tmp_path):
     # a bilingual certificate's labels: the Chinese, a space, the English
     assert rows["独立校准，有别于以下证书（仍然有效） Separate calibration from certificate(s), "
                 "which stay valid"] == number
-    assert rows["作为独立校准的理由 Why it is a calibration of its own"] == \
-        "as left after the adjustment"
+    # why, and what it changes against the other (its readings: readings of its own)
+    assert rows["作为独立校准的理由 Why it is a calibration of its own"] == (
+        f"as left after the adjustment；读数与 {number} 的不同：第 1–41 行（那里 41 行，这里 41 行）\n"
+        f"as left after the adjustment; readings changed from those of {number}: row(s) 1–41 "
+        "(41 rows there, 41 here)")
 
 
 def test_the_polygons_per_set_arrays_flag_their_own_points(tmp_path):

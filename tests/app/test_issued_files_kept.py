@@ -15,6 +15,7 @@ import pytest
 from app.main import main
 from models.register.location import register_url
 from models.register.store import Register
+from tests.own_readings import own_readings
 
 #: the tests are of which files an output may replace, never of a PDF's pages: each
 #: certificate's PDF a stand-in (tests/app/conftest.py; ~0.5 s of CPU a certificate not printed)
@@ -30,7 +31,13 @@ def _details(samples_dir, tmp_path, name="details.json", **changes):
 
 
 def _issue(samples_dir, tmp_path, *outputs, separate=""):
-    return main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+    """The polygon sample issued; with ``separate``, a calibration of its own of the item:
+    readings of its own (tests/own_readings.py; the same readings and details are the first
+    calibration issued again, refused: register79)."""
+    readings = samples_dir / "polygon_sample.csv"
+    if separate:
+        readings = own_readings(readings, separate, tmp_path.with_name(f"{tmp_path.name}-own"))
+    return main(["analyze", "polygon", str(readings),
                  "--metadata", str(_details(samples_dir, tmp_path)), *outputs,
                  *(["--separate-calibration", separate] if separate else [])])
 

@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from app.main import main
+from tests.own_readings import own_readings
 
 ROOT = Path(__file__).resolve().parents[2]
 SAMPLE = ROOT / "resources" / "samples" / "theodolite_sample.csv"
@@ -32,7 +33,11 @@ def _issue(tmp_path: Path, results: Path) -> int:
         details.pop(key, None)
     meta = tmp_path / "meta.json"
     meta.write_text(json.dumps(details), encoding="utf-8")
-    return main(["analyze", "theodolite", str(SAMPLE), "--metadata", str(meta),
+    # each its own run: readings of its own (the same readings and details are the first
+    # calibration issued again, refused: register79)
+    readings = own_readings(SAMPLE, f"run {len(os.listdir(tmp_path))}",
+                            tmp_path.with_name(f"{tmp_path.name}-own"))
+    return main(["analyze", "theodolite", str(readings), "--metadata", str(meta),
                  "--certificate", str(tmp_path / f"c{len(os.listdir(tmp_path))}.pdf"),
                  "--results", str(results), "--separate-calibration", "each its own run"])
 

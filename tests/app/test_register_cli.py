@@ -20,7 +20,7 @@ import sqlalchemy as sa
 from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.register.location import register_url, url_for_path
-from models.register.schema import CERTIFICATES
+from models.register.schema import CERTIFICATES, LATEST
 from models.register.store import IssueRequest, Register, RegisterError
 from tests.own_readings import own_readings
 from tests.pdf_stand_in import print_stand_ins
@@ -248,7 +248,7 @@ def test_verify_and_opening_find_a_version_set_back_and_a_truncated_tail(capsys)
     assert "CHANGED AFTER ISSUE" in capsys.readouterr().out
     assert main(["register", "list"]) == 2
     assert "schema version 2 was set back" in capsys.readouterr().err
-    _sql("UPDATE schema_version SET version = 7",  # the version it was at
+    _sql(f"UPDATE schema_version SET version = {LATEST}",  # the version it was at
          f"DELETE FROM certificates WHERE number = '{numbers[-1]}'")
     assert main(["register", "verify"]) == 3
     out = capsys.readouterr().out
@@ -548,7 +548,17 @@ def test_a_calibration_issued_again_is_refused_unless_said_separate(samples_dir,
     assert code == 2 and f"{first} already reports this calibration" in err
     assert "--separate-calibration" in err and not (tmp_path / "b.pdf").exists()
     meta = json.loads((tmp_path / "b.json").read_text(encoding="utf-8"))
+    # the same readings, to every digit, with the same details: the first calibration
+    # issued again, not one of its own (register79), whatever the reason given
     code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--certificate",
+                 str(tmp_path / "c.pdf"), "--metadata", str(tmp_path / "b.json"),
+                 "--separate-calibration", "as left, after the read head was adjusted"])
+    err = " ".join(capsys.readouterr().err.split())
+    assert code == 2 and f"the readings are those of {first} " in err and "to every digit" in err
+    assert f"--same-readings-as {first}:REASON" in err and not (tmp_path / "c.pdf").exists()
+    # a calibration of its own has readings of its own: the polygon as left after adjustment
+    as_left = own_readings(samples_dir / "polygon_sample.csv", "as left", tmp_path / "left")
+    code = main(["analyze", "polygon", str(as_left), "--certificate",
                  str(tmp_path / "c.pdf"), "--metadata", str(tmp_path / "b.json"),
                  "--separate-calibration", "as left, after the read head was adjusted"])
     err = capsys.readouterr().err

@@ -51,6 +51,10 @@ def _issue(samples_dir, tmp_path, *outputs, details=None, separate=False):
     if serial and serial != json.loads((samples_dir / "certificate_polygon.json").read_text(
             encoding="utf-8"))["item_serial"]:
         readings = own_readings(readings, serial, tmp_path.with_name(f"{tmp_path.name}-own"))
+    if separate:  # a calibration of its own has readings of its own (register79: the
+        # same readings and details are the first calibration issued again, refused)
+        readings = own_readings(readings, f"rerun {len(list(tmp_path.glob('*')))}",
+                                tmp_path.with_name(f"{tmp_path.name}-rerun"))
     return main(["analyze", "polygon", str(readings),
                  "--metadata", str(details or _details(samples_dir, tmp_path)), *outputs,
                  *(["--separate-calibration", "rerun"] if separate else [])])

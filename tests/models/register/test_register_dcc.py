@@ -156,7 +156,9 @@ def _as_version_4(url: str) -> str:
             previous = hashlib.sha256(f"{previous}\n{body}".encode()).hexdigest()
             conn.execute(sa.text("UPDATE certificates SET chain_format = 2, chain_sha256 = :c "
                                  "WHERE id = :i"), {"c": previous, "i": row["id"]})
-        for statement in ("ALTER TABLE certificates DROP COLUMN dcc",
+        for statement in ("DROP INDEX certificates_readings_key",
+                          "ALTER TABLE certificates DROP COLUMN readings_key",
+                          "ALTER TABLE certificates DROP COLUMN dcc",
                           "ALTER TABLE certificates DROP COLUMN dcc_sha256",
                           "ALTER TABLE certificates DROP COLUMN document_kind",
                           # the intervals per serial, as version 2 made them (no interval set)
@@ -180,7 +182,7 @@ def test_a_version_4_register_migrates_keeping_its_chain(register_url):
                for _ in range(3)]
     head = _as_version_4(register_url)
     with _open(register_url) as register:
-        assert register.version == schema.LATEST == 7
+        assert register.version == schema.LATEST == 8
         assert register.problems == [] and register.find_head(head) == (3, head)
         kept = [register.get(r.number) for r in old]
         assert kept[-1].chain_sha256 == head and {r.chain_format for r in kept} == {2}

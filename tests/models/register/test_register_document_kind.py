@@ -107,7 +107,7 @@ def _schema_5(tmp_path) -> tuple[str, dict[str, str]]:
 def test_a_register_of_0_8_11_opens_verifies_and_migrates_unchanged(tmp_path, capsys):
     url, chains = _schema_5(tmp_path)
     with _open(url) as register:
-        assert register.version == schema.LATEST == 7
+        assert register.version == schema.LATEST == 8
         assert register.problems == [] and register.audit(pdfs=True) == []
         assert register.chain_head() == SCHEMA_5_HEAD
         old = {r.number: r for r in register.list()}

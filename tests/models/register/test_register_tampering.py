@@ -16,6 +16,7 @@ import sqlalchemy as sa
 
 from models.certificate.metadata import CertificateMetadata
 from models.register.chain import link
+from models.register.schema import LATEST
 from models.register.store import IssueRequest, Register, RegisterError, RegisterTampered
 
 META = CertificateMetadata(item_serial="RX-1", item_description="Rotary encoder",
@@ -69,19 +70,19 @@ def found(url: str) -> list[str]:
         return on_opening
 
 
-@pytest.mark.parametrize("version", [1, 2, 3, 4, 5, 6])
+@pytest.mark.parametrize("version", [1, 2, 3, 4, 5, 6, 7])
 def test_a_schema_version_set_back_is_refused_never_migrated(issued, version):
     url, numbers, head = issued
     sql(url, "UPDATE certificates SET customer = 'Someone Else' WHERE number = :n",
         f"UPDATE schema_version SET version = {version}", n=numbers[1])
     with pytest.raises(RegisterTampered, match=f"schema version {version} was set back"):
         Register(url)
-    sql(url, "UPDATE schema_version SET version = 7")  # nothing was migrated meanwhile
+    sql(url, f"UPDATE schema_version SET version = {LATEST}")  # nothing migrated meanwhile
     problems = found(url)
     assert any(f"record {numbers[1]}: the hash chain is broken" in p for p in problems)
 
 
-@pytest.mark.parametrize("version", [0, -1, 8])
+@pytest.mark.parametrize("version", [0, -1, LATEST + 1])
 def test_an_unknown_schema_version_is_refused(issued, version):
     url, _, _ = issued
     sql(url, f"UPDATE schema_version SET version = {version}")

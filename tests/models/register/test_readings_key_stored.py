@@ -1,0 +1,176 @@
+"""The readings' identity stored with each record (schema version 8): every issue compared
+its readings with every record's of the workbench, the identity made again from each
+record's project state on every command-line issue (~2 ms a record: 20 s an issue in a
+register of 10,000). Stored at issue, filled in once by the migration for the records
+before it, looked up by its index; 'register verify' makes it again and reports one that
+was set otherwise in the database."""
+
+from __future__ import annotations
+
+import json
+import os
+import sqlite3
+from pathlib import Path
+
+import pytest
+
+from models.certificate.metadata import CertificateMetadata
+from models.register import schema, store
+from models.register.readings_identity import readings_key
+from models.register.store import IssueRequest, ReadingsOfAnotherItem, Register, RegisterTampered
+from tests.own_readings import theodolite_sample_rows
+
+
+def _project(rows) -> str:
+    return json.dumps({"format": "anglebench-project",
+                       "workbenches": {"theodolite": {"rows": rows, "settings": {}}}})
+
+
+def _rows(n: int) -> list[list[str]]:
+    """The theodolite sample's readings with row 8's reading n tenths of a second of arc
+    away: the readings of a calibration of their own."""
+    rows = [list(r) for r in theodolite_sample_rows()]
+    assert rows[7][1] == "-12°55'35.8\""
+    rows[7][1] = f"-12°55'{35.8 + n / 10:.1f}\""
+    return rows
+
+
+def _issue(register: Register, serial: str, rows, **options):
+    meta = CertificateMetadata(approver="Dr. Li", item_serial=serial,
+                               calibration_date="2026-11-20",
+                               item_description="Limited-rotation axis",
+                               item_manufacturer="Example Instruments")
+    return register.issue(IssueRequest("theodolite", meta, _project(rows)),
+                          lambda m: f"%PDF {m.certificate_number}".encode(),
+                          separate_calibration="", **options)[0]
+
+
+def _keys(path: Path) -> dict[str, str | None]:
+    with sqlite3.connect(path) as conn:
+        return dict(conn.execute("SELECT number, readings_key FROM certificates"))
+
+
+def _as_version_7(path: Path) -> None:
+    """The register as schema version 7 left it: no stored identity, no index."""
+    with sqlite3.connect(path) as conn:
+        conn.execute("DROP INDEX certificates_readings_key")
+        conn.execute("ALTER TABLE certificates DROP COLUMN readings_key")
+        conn.execute("UPDATE schema_version SET version = 7")
+        conn.execute("UPDATE register_state SET value = '7' WHERE name = 'schema_version'")
+
+
+def test_each_record_stores_its_readings_identity_and_an_issue_makes_none_again(
+        tmp_path, monkeypatch):
+    path = tmp_path / "r.sqlite"
+    with Register(f"sqlite:///{path}") as register:
+        records = [_issue(register, f"LRA-08{i:02d}", _rows(i)) for i in range(4)]
+    assert _keys(path) == {r.number: readings_key(_project(_rows(i)), "theodolite")
+                           for i, r in enumerate(records)}
+    assert all(len(k) == 64 for k in _keys(path).values())
+    made = []
+
+    def counted(project_json: str, workbench: str) -> str:
+        made.append(project_json)
+        return readings_key(project_json, workbench)
+
+    monkeypatch.setattr(store, "readings_key", counted)
+    with Register(f"sqlite:///{path}") as register:  # a new command line: nothing cached
+        # another item's readings (those of the second record) are still found …
+        with pytest.raises(ReadingsOfAnotherItem) as refused:
+            _issue(register, "LRA-0900", _rows(1))
+        assert refused.value.numbers == (records[1].number,)
+        # … by the request's identity alone: no record's made again from its readings
+        assert made and set(made) == {_project(_rows(1))}
+        made.clear()
+        new = _issue(register, "LRA-0901", _rows(9))
+        assert set(made) == {_project(_rows(9))} and new.readings_key == readings_key(_project(_rows(9)),
+                                                                   "theodolite")
+        assert register.get(new.number).readings_key == new.readings_key
+
+
+def test_a_register_of_version_7_gets_every_records_identity_once_its_chain_kept(tmp_path):
+    path = tmp_path / "r.sqlite"
+    with Register(f"sqlite:///{path}") as register:
+        records = [_issue(register, f"LRA-08{i:02d}", _rows(i)) for i in range(3)]
+        head = register.chain_head()
+    keys = _keys(path)
+    _as_version_7(path)
+    with Register(f"sqlite:///{path}") as register:
+        assert register.version == schema.LATEST == 8
+        assert register.problems == [] and register.audit(pdfs=True) == []
+        assert register.chain_head() == head
+        assert [register.get(r.number).chain_sha256 for r in records] == \
+            [r.chain_sha256 for r in records]
+    assert _keys(path) == keys
+    with sqlite3.connect(path) as conn:
+        assert "certificates_readings_key" in {row[0] for row in conn.execute(
+            "SELECT name FROM sqlite_master WHERE type = 'index'")}
+    # set back to 7 with the column there: refused, never migrated again
+    with sqlite3.connect(path) as conn:
+        conn.execute("UPDATE schema_version SET version = 7")
+        conn.execute("UPDATE register_state SET value = '7' WHERE name = 'schema_version'")
+    with pytest.raises(RegisterTampered, match=r"schema version 7 was set back \(the column "
+                                               r"of version 8 \(readings_key\) exists\)"):
+        Register(f"sqlite:///{path}")
+
+
+def test_a_read_only_register_of_version_7_is_read_as_it_is(tmp_path, monkeypatch):
+    """An archive at version 7 cannot be migrated: read as it is, its readings' identities
+    made when compared, verified; nothing written."""
+    path = tmp_path / "r.sqlite"
+    with Register(f"sqlite:///{path}") as register:
+        first = _issue(register, "LRA-0800", _rows(0))
+    _as_version_7(path)
+    before = path.read_bytes()
+    real = os.access
+    monkeypatch.setattr(os, "access", lambda p, mode, **k: False if (
+        mode == os.W_OK and str(p) in (str(path), str(tmp_path))) else real(p, mode, **k))
+    with Register(f"sqlite:///{path}") as register:
+        assert register.read_only and register.version == 7
+        assert register.problems == [] and register.audit(pdfs=True) == []
+        assert register.get(first.number).readings_key is None
+        assert [r.number for r in register.list()] == [first.number]
+        meta = CertificateMetadata(approver="Dr. Li", item_serial="LRA-0900",
+                                   calibration_date="2026-11-21",
+                                   item_description="Limited-rotation axis")
+        asked = register.readings_of_another_item("theodolite", meta, _rows(0))
+        assert asked is not None and asked.numbers == (first.number,)
+    assert path.read_bytes() == before
+
+
+def test_a_record_issued_without_its_identity_is_compared_by_its_readings(tmp_path):
+    """A record an AngleBench of schema 7 issued after the migration (still running) has no
+    stored identity: its readings are still compared."""
+    path = tmp_path / "r.sqlite"
+    with Register(f"sqlite:///{path}") as register:
+        first = _issue(register, "LRA-0800", _rows(0))
+    with sqlite3.connect(path) as conn:
+        conn.execute("UPDATE certificates SET readings_key = NULL")
+    with Register(f"sqlite:///{path}") as register:
+        assert register.audit(pdfs=True) == []
+        with pytest.raises(ReadingsOfAnotherItem) as refused:
+            _issue(register, "LRA-0900", _rows(0))
+        assert refused.value.numbers == (first.number,)
+
+
+@pytest.mark.parametrize("stored", ["other", "blank"])
+def test_an_identity_set_otherwise_in_the_database_is_found_by_verify(tmp_path, stored):
+    """Tampering as tests/models/register/test_register_tampering.py does it: the second
+    record's identity set to another's (its readings then hidden from the check) or to
+    "" (no readings): 'register verify' (audit with the stored files) names the record."""
+    from app.main import main
+
+    path = tmp_path / "r.sqlite"
+    with Register(f"sqlite:///{path}") as register:
+        records = [_issue(register, f"LRA-08{i:02d}", _rows(i)) for i in range(3)]
+        assert register.audit(pdfs=True) == []
+    value = "0" * 64 if stored == "other" else ""
+    with sqlite3.connect(path) as conn:
+        conn.execute("UPDATE certificates SET readings_key = ? WHERE number = ?",
+                     (value, records[1].number))
+    with Register(f"sqlite:///{path}") as register:
+        problems = [str(p) for p in register.audit(pdfs=True)]
+    assert problems == [f"record {records[1].number}: the identity of its readings stored "
+                        "with it is not that of its readings (set otherwise after issue): "
+                        "the check of readings issued again would not find them"]
+    assert main(["register", "--register", f"sqlite:///{path}", "verify"]) == 3

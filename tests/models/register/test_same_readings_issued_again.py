@@ -1,0 +1,116 @@
+"""A "calibration of its own" whose readings, to every digit, and details are those of a
+current certificate of its item and date was issued as a new certificate, a second original
+of one calibration: no two calibrations repeat every reading to the last digit. Refused,
+naming the certificate and the ways out (its PDF, its amendment or replacement, or
+--same-readings-as N:REASON), as a laundered copy is; said why, it is stated and chained."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from models.certificate.metadata import CertificateMetadata
+from models.readings.angles import parse_angle_deg
+from models.register.store import (
+    IssueRequest,
+    NotASeparateCalibration,
+    Register,
+    RegisterError,
+    SameReadingsIssued,
+)
+from tests.own_readings import one_reading_moved, theodolite_sample_rows
+
+
+def _project(rows) -> str:
+    return json.dumps({"format": "anglebench-project",
+                       "workbenches": {"theodolite": {"rows": rows, "settings": {}}}})
+
+
+META = CertificateMetadata(approver="Dr. Li", item_serial="LRA-0815",
+                           calibration_date="2026-11-20",
+                           item_description="Limited-rotation axis",
+                           item_manufacturer="Example Instruments")
+
+
+def _issue(register: Register, rows, separate: str = "", **options):
+    return register.issue(IssueRequest("theodolite", META, _project(rows)),
+                          lambda m: f"%PDF {m.certificate_number}".encode(),
+                          separate_calibration=separate, **options)[0]
+
+
+@pytest.fixture
+def first(tmp_path):
+    register = Register(f"sqlite:///{tmp_path / 'r.sqlite'}")
+    yield register, _issue(register, theodolite_sample_rows())
+    register.close()
+
+
+def test_the_same_readings_and_details_as_separate_are_refused_naming_the_ways_out(first):
+    register, original = first
+    rows = theodolite_sample_rows()
+    # the same values, re-typed in decimal degrees and the rows reversed: the same readings
+    retyped = [[r[0], f"{parse_angle_deg(r[1]):.12f}", r[2]] for r in rows][::-1]
+    for readings in (rows, retyped):
+        with pytest.raises(SameReadingsIssued) as refused:
+            _issue(register, readings, "as left after adjustment")
+        said = str(refused.value)
+        assert isinstance(refused.value, NotASeparateCalibration)
+        assert refused.value.numbers == (original.number,)
+        assert said.startswith(
+            f"the readings are those of {original.number} (serial LRA-0815, calibrated "
+            "2026-11-20) to every digit, and so are its details: no two calibrations repeat "
+            "every reading to the last digit")
+        assert f"anglebench register show {original.number} --pdf OUT.pdf" in said
+        assert "Amend… or Replace…" in said
+        assert f"--same-readings-as {original.number}:REASON" in said
+        assert "--same-readings-as" not in str(refused.value.facts)  # the window's words
+    assert [r.number for r in register.list()] == [original.number]
+
+
+def test_said_why_it_is_issued_stating_it_and_recorded_in_the_chain(first):
+    register, original = first
+    rows = theodolite_sample_rows()
+    with pytest.raises(RegisterError, match="not those of XX-1 but those of"):
+        _issue(register, rows, "as left", same_readings_as=("XX-1", "a reason"))
+    with pytest.raises(SameReadingsIssued):  # a number and no reason
+        _issue(register, rows, "as left", same_readings_as=(original.number, "  "))
+    record = _issue(register, rows, "as left",
+                    same_readings_as=(original.number, "second run of the  same mounting"))
+    assert record.change_note == (f"as left; The readings and details are those of "
+                                  f"{original.number} to every digit: second run of the "
+                                  "same mounting")
+    [entry] = register.same_readings_confirmations(record.number)
+    assert entry["reason"] == "second run of the same mounting"
+    assert entry["others"] == [{"number": original.number}]
+    assert register.audit(pdfs=True) == []
+
+
+def test_readings_of_their_own_are_a_calibration_of_its_own_and_the_option_is_refused(first):
+    register, original = first
+    moved = one_reading_moved(theodolite_sample_rows())
+    with pytest.raises(RegisterError, match="--same-readings-as .*leave it out"):
+        _issue(register, moved, "as left", same_readings_as=(original.number, "why"))
+    record = _issue(register, moved, "as left after adjustment")
+    assert record.change_note.startswith("as left after adjustment")
+    assert register.same_readings_confirmations(record.number) == []
+
+
+def test_the_same_values_typed_otherwise_and_judged_otherwise_are_no_separate_calibration(
+        first):
+    """hostile78 F2's refusal compared the readings as typed: re-typed in decimal degrees
+    and judged against another tolerance they were issued as separate."""
+    import dataclasses
+
+    register, original = first
+    retyped = [[r[0], f"{parse_angle_deg(r[1]):.12f}", r[2]]
+               for r in theodolite_sample_rows()]
+    meta = dataclasses.replace(META, tolerance=3.0, tolerance_unit="arcsec")
+    with pytest.raises(NotASeparateCalibration) as refused:
+        register.issue(IssueRequest("theodolite", meta, _project(retyped)),
+                       lambda m: f"%PDF {m.certificate_number}".encode(),
+                       separate_calibration="as left")
+    assert not isinstance(refused.value, SameReadingsIssued)
+    said = str(refused.value)
+    assert f"judged otherwise: tolerance changed from — (on {original.number}) to ±3" in said
+    assert "readings changed" not in said
