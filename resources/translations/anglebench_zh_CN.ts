@@ -387,10 +387,6 @@
         <translation>闭合差 {closures} 超出其读数噪声；{how}</translation>
     </message>
     <message>
-        <source>face or reading</source>
-        <translation>面或读数</translation>
-    </message>
-    <message>
         <source>{name} ({what})</source>
         <translation>{name}（{what}）</translation>
     </message>
@@ -2212,6 +2208,7 @@ Yes: replace it with this window&apos;s project. No: save this window&apos;s pro
     </message>
     <message>
         <source>Open project</source>
+        <extracomment>the selected certificate&apos;s links to others (the list&apos;s last column) in full, wrapped: at 200 % the column is off the screen or cut short</extracomment>
         <translation>打开项目</translation>
     </message>
     <message>
@@ -2497,6 +2494,18 @@ If these readings are indeed this item&apos;s, say why: printed on the certifica
 如果这些读数确实是本被校件的，请说明理由：理由连同 {numbers} 的编号、被校件和校准日期一起印在证书上，并记入登记册。否则请取消，用本被校件自己的读数签发。</translation>
     </message>
     <message>
+        <source>The same calibration issued again</source>
+        <translation>同一次校准再次签发</translation>
+    </message>
+    <message>
+        <source>{reason}.
+
+If these are indeed the readings of a calibration of its own, say why: stated on the certificate and recorded in the register. Otherwise cancel: the copy of {numbers} is its PDF (Save PDF… in File › Certificate register), and a correction is its amendment or replacement.</source>
+        <translation>{reason}。
+
+如果这些确实是一次独立校准的读数，请说明原因：将写在证书上并记入登记册。否则请取消：{numbers} 的副本是其 PDF（文件 › 证书登记册中的“保存 PDF…”），更正则是对其修订或替代。</translation>
+    </message>
+    <message>
         <source>Nothing to export</source>
         <translation>没有可导出的内容</translation>
     </message>
@@ -2691,6 +2700,10 @@ If these readings are indeed this item&apos;s, say why: printed on the certifica
     <message>
         <source>Stored PDFs changed after issue: {problems}</source>
         <translation>存储的 PDF 在签发后被改动：{problems}</translation>
+    </message>
+    <message>
+        <source>Links</source>
+        <translation>关联</translation>
     </message>
     <message>
         <source>issued and lost</source>
@@ -3493,6 +3506,10 @@ If these readings are indeed this item&apos;s, say why: printed on the certifica
     <message>
         <source>  readings of another item, as {user} said at issue ({recorded_at}): those of {others}: {reason}</source>
         <translation>  另一被校件的读数，由 {user} 在签发时说明（{recorded_at}）：为 {others} 的读数：{reason}</translation>
+    </message>
+    <message>
+        <source>  readings and details of {others} to every digit, as {user} said at issue ({recorded_at}): {reason}</source>
+        <translation>  读数和证书信息与 {others} 逐位相同，{user} 签发时（{recorded_at}）说明：{reason}</translation>
     </message>
     <message>
         <source>  next calibration of {serial} due: {date}</source>
@@ -4627,7 +4644,7 @@ If these readings are indeed this item&apos;s, say why: printed on the certifica
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>a row the analysis left out (positioning&apos;s reading of another position): a shade that stands apart from the alternate rows&apos; and the closures&apos; at any scale, black text on it still readable (gui77: the muted shade of a closure row was barely seen at 1280 × 720) the text of a figure shown in a blank cell and worked out from its row (positioning&apos;s measured − target): greyed, as no one typed it; still readable on every background a take&apos;s reading that does not match its row&apos;s point (another face, another target) the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) rows the analysis left out (its warnings say why): shaded clearly, and said so in their cells&apos; tooltip cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip cells a take filled with a reading that does not match its row&apos;s point (the table at another face, the axis at another target: live76 F1), with the text the take wrote and what to say of it: drawn apart, the words in their tooltip, while the cell holds that text (undone, retyped or taken again, the mark goes). Rows inserted or removed above move them the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) with no :attr:`origin_step` (the origin is the sheet&apos;s as it was opened: a project&apos;s record of it, models/certificate/stored_origin.py), whether the rows were edited before, and the rows pasted before (0-based, as opened) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan) the figure a blank cell (row, column) shows, worked out from its row, with what to say of it (the presenter&apos;s: Workbench.shown_in_blank), or None: shown, greyed, never written into the sheet (the editor opens on the sheet&apos;s blank text) the columns whose blank cells may show such a figure (repainted with every change) {column index: unit} the settings give a column (its header shows it) the cells an edit&apos;s own cells bring with them, in the same undo step (the presenter&apos;s; [] by default): a polygon face typed after its certificate was loaded gets its deviation (gui78)</extracomment>
+        <extracomment>a row the analysis left out (positioning&apos;s reading of another position): a shade that stands apart from the alternate rows&apos; and the closures&apos; at any scale, black text on it still readable (gui77: the muted shade of a closure row was barely seen at 1280 × 720) the text of a figure shown in a blank cell and worked out from its row (positioning&apos;s measured − target): greyed, as no one typed it; still readable on every background a take&apos;s reading that does not match its row&apos;s point (another face, another target) the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) the sheet is about to be replaced as one undo step (:meth:`replace_all`: a paste over the sheet, an import, the fringe&apos;s live take), with the step&apos;s label: the view enters what is being typed in a cell first (widgets/readings_table_view.py) rows the analysis left out (its warnings say why): shaded clearly, and said so in their cells&apos; tooltip cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip cells a take filled with a reading that does not match its row&apos;s point (the table at another face, the axis at another target: live76 F1), with the text the take wrote and what to say of it: drawn apart, the words in their tooltip, while the cell holds that text (undone, retyped or taken again, the mark goes). Rows inserted or removed above move them the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) where the rows came from when one step replaced them all (models/certificate/ readings_origin.SheetOrigin: a file imported, a paste, another workbench&apos;s; None: typed, or a project&apos;s), set and put back by that undo step (:attr:`origin_step`, None: at the bottom of the undo history) with no :attr:`origin_step` (the origin is the sheet&apos;s as it was opened: a project&apos;s record of it, models/certificate/stored_origin.py), whether the rows were edited before, and the rows pasted before (0-based, as opened) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read) the row the entry plan sends the next reading to (the presenter&apos;s), wherever it is: one in the middle whose reading was cleared waits for it too, its blank cells not red (None: a new row, or no plan) the figure a blank cell (row, column) shows, worked out from its row, with what to say of it (the presenter&apos;s: Workbench.shown_in_blank), or None: shown, greyed, never written into the sheet (the editor opens on the sheet&apos;s blank text) the columns whose blank cells may show such a figure (repainted with every change) {column index: unit} the settings give a column (its header shows it) the cells an edit&apos;s own cells bring with them, in the same undo step (the presenter&apos;s; [] by default): a polygon face typed after its certificate was loaded gets its deviation (gui78) the same for pasted rows that replace the whole sheet (Ctrl+A, Ctrl+V), each (row, column, text) of them: a full set of a polygon&apos;s readings pasted after its certificate was loaded gets the deviations kept by face, as rows pasted over part of the sheet do (leftovers 79)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -4964,8 +4981,12 @@ If these readings are indeed this item&apos;s, say why: printed on the certifica
         <translation>校准周期</translation>
     </message>
     <message>
-        <source>Instrument {serial} of {maker}: {count} calibration(s)</source>
+        <source>Links: {links}</source>
         <extracomment>the interval is set for the instrument whose history is shown: shown with it</extracomment>
+        <translation>关联：{links}</translation>
+    </message>
+    <message>
+        <source>Instrument {serial} of {maker}: {count} calibration(s)</source>
         <translation>{maker} 的仪器 {serial}：{count} 次校准</translation>
     </message>
     <message>
@@ -6427,6 +6448,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>与 --certificate 一起使用：读数（按其数值，不论如何书写或排列）是登记册中另一被校件的证书 N 的读数，并说明理由（否则签发被拒绝，并指出那份证书、其被校件和校准日期：没有两次校准会把每个读数重复到最后一位）；印在证书上并记入登记册</translation>
     </message>
     <message>
+        <source>with --certificate and --separate-calibration: the readings (their values, however typed or ordered) and the details are those of certificate N, still valid, of this item and date of calibration, and this is nevertheless a calibration of its own: why (else it is refused: no two calibrations repeat every reading to the last digit, so it is N&apos;s calibration issued again); stated on the certificate and recorded in the register</source>
+        <translation>与 --certificate 和 --separate-calibration 一起使用：读数（其数值，无论如何输入或排序）和证书信息与本被校件、本校准日期仍然有效的证书 N 相同，但这仍是一次独立校准：说明原因（否则拒绝：两次校准不会每个读数都逐位相同，因此这是 N 的校准再次签发）；写在证书上并记入登记册</translation>
+    </message>
+    <message>
         <source>with --certificate: today&apos;s date, as you know it, for an issue more than 30 days after the register&apos;s last record (else it is refused, naming the date the computer&apos;s clock gives: a clock set ahead would date the certificate wrongly); recorded in the register that you confirmed it</source>
         <translation>与 --certificate 一起用：签发时间晚于登记册最后一条记录 30 天以上时，您所知道的今天的日期（否则被拒绝，并指出计算机时钟给出的日期：调快的时钟会把证书的日期写错）；您的确认会记入登记册</translation>
     </message>
@@ -7438,7 +7463,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>the number scheme &apos;{scheme}&apos; has no {{seq}}: the register cannot number certificates with it</source>
-        <extracomment>the serial asked about and the serials it looks like, each once with the certificates of it, in the register&apos;s order: a window lists them one a line (day review 68 F11); () where the question is not about a serial&apos;s characters the register already recorded that this PDF&apos;s record is missing (the &quot;missing&quot; entry at place + 1) a record elsewhere in the chain has this PDF&apos;s SHA-256 (the head printed is not its)</extracomment>
+        <extracomment>the serial asked about and the serials it looks like, each once with the certificates of it, in the register&apos;s order: a window lists them one a line (day review 68 F11); () where the question is not about a serial&apos;s characters the record&apos;s columns a register of schema version 6 or 7 holds (read as it is) the register already recorded that this PDF&apos;s record is missing (the &quot;missing&quot; entry at place + 1) a record elsewhere in the chain has this PDF&apos;s SHA-256 (the head printed is not its)</extracomment>
         <translation>编号方案 &apos;{scheme}&apos; 中没有 {{seq}}：登记册无法用它为证书编号</translation>
     </message>
     <message>
@@ -7448,7 +7473,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>register {display_url}: {reason}</source>
-        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the key&apos;s file, beside which the register&apos;s high-water mark is kept (reg73 #2) the state a write transaction leaves, noted in the mark once it is committed the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) each record&apos;s readings_key by its number (a record never changes): computed once the key given is not the one the register was signed with (:meth:`_key_problem`) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) told, at once, when a write waits for the SQLite register&apos;s write lock held by another process (what it waits for, and for how long at most): the command line says it on stderr, the window in its status line. None: nobody is told this process noted itself as the writer beside the database (writer_note.py) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
+        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked the key&apos;s file, beside which the register&apos;s high-water mark is kept (reg73 #2) the state a write transaction leaves, noted in the mark once it is committed the numbers :meth:`issue` issued through this object whose results file is not recorded yet: the only ones :meth:`record_results` records for (stop 63) each record&apos;s readings_key by its number (a record never changes): computed once the key given is not the one the register was signed with (:meth:`_key_problem`) a read-only register at schema version 6, read without migrating: its intervals are per serial (every maker&apos;s item&apos;s) the records carry their readings&apos; identity (schema version 8; a read-only register read as it is at 6 or 7 does not: made when compared) told, at once, when a write waits for the SQLite register&apos;s write lock held by another process (what it waits for, and for how long at most): the command line says it on stderr, the window in its status line. None: nobody is told this process noted itself as the writer beside the database (writer_note.py) what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
         <translation>登记册 {display_url}：{reason}</translation>
     </message>
     <message>
@@ -7790,6 +7815,30 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>读数是证书 {facts} 的读数：{reason}</translation>
     </message>
     <message>
+        <source>--same-readings-as {number}: the readings and details are not those of a current certificate of this item and date of calibration (the readings compared by their values), so nothing is to be stated; leave it out</source>
+        <translation>--same-readings-as {number}：读数和证书信息不是本被校件、本校准日期现行证书的（按数值比较读数），因此没有什么需要声明；请去掉该选项</translation>
+    </message>
+    <message>
+        <source>--same-readings-as {number}: the readings and details are not those of {number} but those of {numbers}; name the certificate whose readings they are</source>
+        <translation>--same-readings-as {number}：读数和证书信息不是 {number} 的，而是 {numbers} 的；请指明这些读数所属的证书</translation>
+    </message>
+    <message>
+        <source>the readings are those of {numbers} (serial {serial}, calibrated {date}) to every digit, and so are its details: no two calibrations repeat every reading to the last digit, so this is the calibration {numbers} already reports, issued again</source>
+        <translation>读数与 {numbers}（序列号 {serial}，校准于 {date}）逐位相同，证书信息也相同：两次校准不会每个读数都逐位相同，因此这是 {numbers} 已报告的那次校准再次签发</translation>
+    </message>
+    <message>
+        <source>{found}. Its copy is the PDF of {number} (anglebench register show {number} --pdf OUT.pdf); a correction is its amendment or replacement (File › Certificate register, Amend… or Replace…); if these are indeed the readings of a calibration of its own, say why (stated on the certificate and recorded in the register; on the command line: --same-readings-as {number}:REASON)</source>
+        <translation>{found}。其副本是 {number} 的 PDF（anglebench register show {number} --pdf OUT.pdf）；更正是对其修订或替代（文件 › 证书登记册，“修订…”或“替代…”）；如果这些确实是一次独立校准的读数，请说明原因（写在证书上并记入登记册；命令行中：--same-readings-as {number}:REASON）</translation>
+    </message>
+    <message>
+        <source>The readings and details are those of {number} to every digit: {reason}</source>
+        <translation>读数和证书信息与 {number} 逐位相同：{reason}</translation>
+    </message>
+    <message>
+        <source>record {number}: the identity of its readings stored with it is not that of its readings (set otherwise after issue): the check of readings issued again would not find them</source>
+        <translation>记录 {number}：随其存储的读数标识与其读数不符（签发后被改动）：再次签发读数的检查将找不到它们</translation>
+    </message>
+    <message>
         <source>and more: see the register&apos;s records</source>
         <translation>等等：见登记册的记录</translation>
     </message>
@@ -8076,6 +8125,14 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>the note that certificate {subject}&apos;s serial only looks like another item&apos;s</source>
         <translation>关于证书 {subject} 的出厂编号只是与另一仪器的相似的记录</translation>
+    </message>
+    <message>
+        <source>the note why certificate {subject} holds the readings of another item&apos;s certificate</source>
+        <translation>关于证书 {subject} 为何含有另一被校件证书读数的说明</translation>
+    </message>
+    <message>
+        <source>the note why certificate {subject} holds the readings and details of a current certificate of its calibration</source>
+        <translation>关于证书 {subject} 为何含有其校准的现行证书的读数和证书信息的说明</translation>
     </message>
     <message>
         <source>the note that certificate {subject} was shown whose record the register no longer held</source>
@@ -9340,8 +9397,36 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>记录 {number}：标为“{status}”（被 {marked} 取代），但登记册的记录表明{by}</translation>
     </message>
     <message>
+        <source>replaces {number}</source>
+        <translation>替代 {number}</translation>
+    </message>
+    <message>
+        <source>amends {number}</source>
+        <translation>修订 {number}</translation>
+    </message>
+    <message>
         <source>superseded by {number}</source>
         <translation>已被 {number} 取代</translation>
+    </message>
+    <message>
+        <source>withdrawn: {reason}</source>
+        <translation>已撤回：{reason}</translation>
+    </message>
+    <message>
+        <source>issued in place of withdrawn {numbers}</source>
+        <translation>代替已撤回的 {numbers} 签发</translation>
+    </message>
+    <message>
+        <source>separate calibration from {numbers}</source>
+        <translation>独立于 {numbers} 的校准</translation>
+    </message>
+    <message>
+        <source>readings of another item&apos;s {numbers}</source>
+        <translation>另一被校件 {numbers} 的读数</translation>
+    </message>
+    <message>
+        <source>readings and details of {numbers}, said why</source>
+        <translation>{numbers} 的读数和证书信息（已说明原因）</translation>
     </message>
     <message>
         <source>withdrawn</source>
@@ -9961,6 +10046,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>No coverage interval is given for the figures: {reason}.</source>
+        <extracomment>the note on the figures when none has a coverage interval (:func:`intervals_withheld`)</extracomment>
         <translation>各项指标不给出包含区间：{reason}。</translation>
     </message>
     <message>
@@ -10319,7 +10405,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
-        <extracomment>where the demonstration instrument points in turn (8 s each) the readout&apos;s runs through its targets (more than any plan has: ISO 230-2 asks 5) the demonstration axis&apos;s reversal error: where it stops coming down (2.9″) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short) frames arrive with no measurement since this one (a mirror out of view); None: readings come. Not a fault of the link: said as what it is (live76 F3) the table&apos;s position (degrees) this link read at its last take, where it reads the table&apos;s encoder (:data:`TABLE_COLUMNS`); None: no take of it yet
+        <extracomment>where the demonstration instrument points in turn (8 s each) the readout&apos;s runs through its targets (more than any plan has: ISO 230-2 asks 5) the demonstration axis&apos;s reversal error: where it stops coming down (2.9″) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) a readout&apos;s: per take, the key of the column its value went to (raw_record&apos;s OPTIONAL_KEYS; the cell is chosen at the time, so the record says which) when :attr:`latest` came (``time.monotonic()``) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short) frames arrive with no measurement since this one (a mirror out of view); None: readings come. Not a fault of the link: said as what it is (live76 F3) the table&apos;s position (degrees) this link read at its last take, where it reads the table&apos;s encoder (:data:`TABLE_COLUMNS`); None: no take of it yet
 ----------
 the workbenches (keys, comma-separated) the panel was open on when last left: restored open on those only, never on every tab with nothing connected (day 65, F10)</extracomment>
         <translation>仪器</translation>
