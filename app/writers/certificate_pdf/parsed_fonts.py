@@ -15,11 +15,16 @@ for its FPDFRecorder) shares the same read-only parts.
 
 Each certificate's fontTools font is given what it would read again from the file only to
 reach the same result (:func:`_for_document`): the file's glyph order (the CJK font has no
-glyph names: fontTools makes them from its whole character map, ~0.1 s), and none of the
+glyph names: fontTools makes them from its whole character map, ~0.1 s), none of the
 layout tables fpdf2's subsetter drops on output (GDEF, GSUB, GPOS: fontTools reads them
-before it drops them, ~0.1 s; and ``kern``, which it drops where the font has GPOS). The
-bytes printed are the same (tests/app/writers/test_certificate_parsed_fonts.py: the second
-certificate of a process, made so, and the first, made as fpdf2 makes it).
+before it drops them, ~0.1 s; and ``kern``, which it drops where the font has GPOS), and a
+``glyf`` table whose glyphs are made from the file's bytes only when asked for
+(:class:`_GlyphsOnDemand`): fontTools made an object of every one of the CJK font's 49 382
+glyphs for each certificate (~0.15 s, half the time of writing its fonts) where the
+subsetter asks for the few hundred printed; and the ``hmtx`` table's widths as the file's
+were read once (the subsetter keeps the printed glyphs' in a table of its own). The bytes printed are the same
+(tests/app/writers/test_certificate_parsed_fonts.py: the second certificate of a process,
+made so, and the first, made as fpdf2 makes it).
 
 This reaches into fpdf2's ``TTFFont`` by its slots: where the installed fpdf2's slots are
 not the ones this was written for (:data:`KNOWN_SLOTS`), or a font needed fpdf2's
@@ -32,10 +37,12 @@ from __future__ import annotations
 import copy
 import os
 import threading
+from collections.abc import Iterator, MutableMapping
 from pathlib import Path
 from typing import Any
 
 from fontTools import ttLib
+from fontTools.ttLib.tables._g_l_y_f import Glyph as _Glyph
 from fpdf import FPDF
 from fpdf.font_type_3 import get_color_font_object
 from fpdf.fonts import SubsetMap, TTFFont
@@ -108,7 +115,104 @@ def _kept(font: TTFFont) -> dict[str, Any]:
     kept["cw"] = font.cw.copy()
     kept["glyph_ids"] = dict(font.glyph_ids)
     kept["glyph_order"] = tuple(font.ttfont.getGlyphOrder())
+    kept["glyf"] = _GlyfBytes.of(font.ttfont, kept["glyph_order"])
+    # each glyph's (advance, side bearing), as the file has them (fpdf2 only reads them)
+    kept["hmtx"] = dict(font.ttfont["hmtx"].metrics) if "hmtx" in font.ttfont else None
     return kept
+
+
+class _GlyfBytes:
+    """A TrueType font file's ``glyf`` table as its bytes and each glyph's place in them (its
+    ``loca``), by glyph name: what fontTools' ``glyf`` decompile reads, kept once a process."""
+
+    def __init__(self, data: bytes, offsets: tuple[int, ...], index: dict[str, int]) -> None:
+        self.data, self.offsets, self.index = data, offsets, index
+
+    @classmethod
+    def of(cls, ttfont: ttLib.TTFont, order: tuple[str, ...]) -> _GlyfBytes | None:
+        """The font's, or None where it has no ``glyf`` (CFF outlines) or its glyphs are not
+        one a name (names repeated, or a ``loca`` longer than the glyph order: fontTools
+        names those itself); such a font's table is read whole for each document, as before."""
+        if "glyf" not in ttfont or "loca" not in ttfont or len(set(order)) != len(order):
+            return None
+        offsets = tuple(int(o) for o in ttfont["loca"])
+        if len(offsets) - 1 != len(order):
+            return None
+        data = bytes(ttfont.reader["glyf"])
+        if offsets and (offsets[0] > offsets[-1] or offsets[-1] > len(data)):
+            return None
+        return cls(data, offsets, {name: i for i, name in enumerate(order)})
+
+    def glyph(self, name: str) -> Any:
+        """The glyph ``name`` as fontTools' ``glyf`` decompile makes it (not yet expanded)."""
+        i = self.index[name]
+        return _Glyph(self.data[self.offsets[i]:self.offsets[i + 1]])
+
+
+class _GlyphsOnDemand(MutableMapping):
+    """The ``glyphs`` of a document's ``glyf`` table (name → Glyph, in the glyph order): each
+    made from the kept bytes (:class:`_GlyfBytes`) the first time it is asked for, then the
+    document's own to change, as the table's dict holds them; a name set or deleted is the
+    document's too."""
+
+    def __init__(self, source: _GlyfBytes) -> None:
+        self.source = source
+        self.made: dict[str, Any] = {}
+        self.added: dict[str, None] = {}  # names set that the file's glyph order lacks
+        self.deleted: set[str] = set()
+
+    def __getitem__(self, name: str) -> Any:
+        glyph = self.made.get(name)
+        if glyph is None:
+            if name in self.deleted or name not in self.source.index:
+                raise KeyError(name)
+            glyph = self.made[name] = self.source.glyph(name)
+        return glyph
+
+    def __setitem__(self, name: str, glyph: Any) -> None:
+        self.made[name] = glyph
+        self.deleted.discard(name)
+        if name not in self.source.index:
+            self.added[name] = None
+
+    def __delitem__(self, name: str) -> None:
+        if name not in self:
+            raise KeyError(name)
+        self.made.pop(name, None)
+        self.added.pop(name, None)
+        if name in self.source.index:
+            self.deleted.add(name)
+
+    def __contains__(self, name: object) -> bool:
+        return name not in self.deleted and (name in self.source.index or name in self.added)
+
+    def __iter__(self) -> Iterator[str]:
+        for name in self.source.index:
+            if name not in self.deleted:
+                yield name
+        yield from list(self.added)
+
+    def __len__(self) -> int:
+        return len(self.source.index) - len(self.deleted) + len(self.added)
+
+
+def _metrics_kept(ttfont: ttLib.TTFont, metrics: dict[str, tuple[int, int]]) -> None:
+    """``ttfont``'s ``hmtx`` table as fontTools' decompile makes it from the file, from the
+    widths kept: a dict of the document's own (the subsetter replaces it with the printed
+    glyphs' and adds to that; the values are tuples, never changed)."""
+    table = ttLib.newTable("hmtx")
+    table.metrics = dict(metrics)
+    ttfont["hmtx"] = table
+
+
+def _glyf_on_demand(ttfont: ttLib.TTFont, source: _GlyfBytes) -> None:
+    """``ttfont``'s ``glyf`` table as fontTools' decompile leaves it (lazily), its glyphs
+    made when asked for (:class:`_GlyphsOnDemand`)."""
+    table = ttLib.newTable("glyf")
+    table.glyphOrder = ttfont.getGlyphOrder()
+    table._reverseGlyphOrder = {}
+    table.glyphs = _GlyphsOnDemand(source)
+    ttfont["glyf"] = table
 
 
 def _for_document(parsed: dict[str, Any], pdf: FPDF) -> TTFFont:
@@ -125,6 +229,10 @@ def _for_document(parsed: dict[str, Any], pdf: FPDF) -> TTFFont:
     font.ttfont = ttLib.TTFont(font.ttffile, recalcTimestamp=False,
                                fontNumber=font.collection_font_number, lazy=True)
     font.ttfont.setGlyphOrder(list(parsed["glyph_order"]))
+    if parsed.get("glyf") is not None:
+        _glyf_on_demand(font.ttfont, parsed["glyf"])
+    if parsed.get("hmtx") is not None:
+        _metrics_kept(font.ttfont, parsed["hmtx"])
     if font.is_compressed:
         font.ttfont.flavor = None
     else:  # (fpdf2's text shaping reads a compressed font's layout from this font)
