@@ -272,7 +272,8 @@ class CertificateRecord:
     # "test" (a test report), in the chain (format 4); None: issued before it, not recorded
     document_kind: str | None = None
     # schema version 8: the identity of its readings by their values (readings_identity:
-    # "" for none), made at issue, not in the chain (made from project_json, which is);
+    # "" for none), made at issue, in the chain from chain format 7 (filled in by migration
+    # 8 for older records: not in their chain, made again from project_json by verify);
     # None: not stored (a register read as it is at version 6 or 7, a record issued by an
     # AngleBench of schema 7 after the migration)
     readings_key: str | None = None
@@ -1514,7 +1515,7 @@ class Register:
                     pdf_sha256="",
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
                     os_user=user, approver=meta.approver,
-                    chain_format=6, readings_key=key)
+                    chain_format=7, readings_key=key)
                 # the record's content first, carried by the PDF (so by the DCC that embeds
                 # it); then the files' hashes (reg72 #2: the newest record rewritten with its
                 # chain recomputed is found from the customer's copy). Content form 2 also
@@ -3714,7 +3715,8 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
 
 
 def _readings_key_problems(fields: dict) -> list:
-    """A record's stored readings identity (schema version 8, outside the chain) against
+    """A record's stored readings identity (schema version 8; in the chain from chain
+    format 7, outside it for the records migration 8 filled it in for) against
     the one its readings give (its project state, in the chain): set otherwise after issue,
     it would hide its readings from the check of one item's readings issued as another's,
     or name it for readings it does not hold. [] when they agree or none is stored."""
