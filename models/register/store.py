@@ -694,6 +694,38 @@ class Register:
                 "register {display_url} is read-only and at schema version {version}: it must "
                 "be migrated to {latest} by an AngleBench that can write it"),
                 display_url=self.display_url, version=version or 0, latest=schema.LATEST))
+        try:
+            self._migrate_in_one_transaction()
+        except OSError as exc:
+            if exc.errno in _DISK_FULL:
+                raise RegisterError(self._migration_full(version)) from None
+            raise
+        except sa.exc.SQLAlchemyError as exc:
+            if self._full(exc):
+                raise RegisterError(self._migration_full(version)) from None
+            raise
+
+    def _migration_full(self, version: int | None) -> Message:
+        """What a migration that found the disk full says (hostile79 #1: "the register cannot
+        be opened there (SQLite needs room beside it for its journal's index)", so the
+        user freed a few kilobytes for nothing): it needs room for its journal, up to the
+        register's own size (migration 8 rewrites every record's row); rolled back."""
+        size = ""
+        if self._sqlite_path:
+            with contextlib.suppress(OSError):
+                size = f"{Path(self._sqlite_path).stat().st_size / 1e6:.1f} MB"
+        return message(QT_TR_NOOP(
+            "the disk is full at {path}: migrating the register from schema version "
+            "{version} to {latest} needs room for its journal (up to the register's own size, "
+            "{size}); nothing was changed, the register is still at version {version} (free "
+            "some space and try again)"),
+            path=str(self._sqlite_path or self.display_url), version=version or 0,
+            latest=self._schema.LATEST, size=size or "?")
+
+    def _migrate_in_one_transaction(self) -> None:
+        """The migrations from the register's version to the latest, in one transaction
+        (rolled back whole: a register is at its old version or at the latest)."""
+        sa, schema = self._sa, self._schema
         with self.engine.begin() as conn:
             if not self.is_sqlite:
                 conn.execute(sa.text("SELECT pg_advisory_xact_lock(:k)"), {"k": _ADVISORY_LOCK})

@@ -215,7 +215,7 @@ def test_an_identity_set_otherwise_is_found_at_opening_and_launders_nothing(tmp_
     path = tmp_path / "r.sqlite"
     with Register(f"sqlite:///{path}") as register:
         first = _issue(register, "LRA-0800", _rows(0))
-        assert first.chain_format == 7 and register.audit(pdfs=True) == []
+        assert register.audit(pdfs=True) == []
     with sqlite3.connect(path) as conn:
         conn.execute("UPDATE certificates SET readings_key = ? WHERE number = ?",
                      ("0" * 64 if stored == "other" else "", first.number))
@@ -227,6 +227,7 @@ def test_an_identity_set_otherwise_is_found_at_opening_and_launders_nothing(tmp_
         with pytest.raises(store.RegisterError, match="changed after issue"):
             _issue(register, "LRA-0900", _rows(0))
         assert [r.number for r in register.list()] == [first.number]
+        assert register.get(first.number).chain_format == 7
 
 
 def test_a_migrated_records_identity_set_otherwise_is_found_by_verify(tmp_path):
@@ -247,3 +248,40 @@ def test_a_migrated_records_identity_set_otherwise_is_found_by_verify(tmp_path):
             f"record {first.number}: the identity of its readings stored with it is not that "
             "of its readings (set otherwise after issue): the check of readings issued again "
             "would not find them"]
+
+
+def test_a_full_disk_during_migration_8_says_so_and_leaves_version_7(tmp_path, monkeypatch):
+    """hostile79 #1: a full disk during migration 8 (its journal holds every record's row
+    rewritten, up to the register's size) was said as a register that cannot be opened for
+    want of room for its journal's index; the migration is rolled back whole: version 7,
+    no column, verified clean, and migrated once there is room."""
+    path = tmp_path / "r.sqlite"
+    with Register(f"sqlite:///{path}") as register:
+        records = [_issue(register, f"LRA-08{i:02d}", _rows(i)) for i in range(3)]
+    _as_version_7(path)
+    with sqlite3.connect(path) as conn:  # no free page left by the column dropped
+        conn.execute("VACUUM")
+    real = store._sqlite_connect
+
+    def no_room(dbapi_connection, record) -> None:  # the file may grow no more
+        real(dbapi_connection, record)
+        pages = dbapi_connection.execute("PRAGMA page_count").fetchone()[0]
+        dbapi_connection.execute(f"PRAGMA max_page_count = {pages}")
+
+    monkeypatch.setattr(store, "_sqlite_connect", no_room)
+    with pytest.raises(store.RegisterError) as refused:
+        Register(f"sqlite:///{path}")
+    size = f"{path.stat().st_size / 1e6:.1f} MB"
+    assert str(refused.value) == (
+        f"the disk is full at {path}: migrating the register from schema version 7 to 8 "
+        f"needs room for its journal (up to the register's own size, {size}); nothing was "
+        "changed, the register is still at version 7 (free some space and try again)")
+    with sqlite3.connect(path) as conn:
+        assert conn.execute("SELECT version FROM schema_version").fetchall() == [(7,)]
+        assert "readings_key" not in {r[1] for r in conn.execute(
+            "PRAGMA table_info(certificates)")}
+    monkeypatch.setattr(store, "_sqlite_connect", real)
+    with Register(f"sqlite:///{path}") as register:
+        assert register.version == 8 and register.audit(pdfs=True) == []
+        assert [register.get(r.number).readings_key for r in records] == [
+            readings_key(_project(_rows(i)), "theodolite") for i in range(3)]
