@@ -1448,6 +1448,11 @@ class Register:
                     # what it changes (hostile78 F3: a fail withdrawn, then a pass issued)
                     withdrawn = () if supersedes or separate_calibration is None else \
                         self._in_place_of_withdrawn(conn, request, meta)
+                    # a current certificate of the item whose readings these are, to every
+                    # digit, with another date of calibration: that calibration issued again,
+                    # re-dated (hostile79 #3: a day later it issued as an original, unsaid)
+                    redated = () if supersedes or separate_calibration is None else \
+                        self._readings_redated(conn, request, meta, key, same)
                     # an amendment's corrected maker is confirmed and stated on it
                     # (_corrections); an original naming another maker is asked (rev65 F1)
                     others = () if supersedes or separate_calibration is None else \
@@ -1506,8 +1511,10 @@ class Register:
                         date=meta.calibration_date or "—",
                         changes=separated([c for _, said in repeated for c in said])),
                         tuple(n for n, _ in repeated))
-                same_said = _same_readings_said(meta, identical if same and separate else (),
-                                                same_readings_as)
+                identical = identical if same and separate else ()
+                same_said = _same_readings_said(meta, identical or redated, same_readings_as,
+                                                redated=not identical and bool(redated))
+                identical = identical or redated
                 if others and not another_makers_item:
                     raise _another_makers_item(meta, others)
                 if lookalikes and not another_lookalike_item:
@@ -1524,7 +1531,8 @@ class Register:
                     revision="" if plan.revision == "original" else plan.revision,
                     change_note=_bounded(separated([separate, *filter(None, [same_said]),
                                                     *against])) if same else
-                    _bounded(separated([*corrected, change_note])) if corrected else change_note,
+                    _bounded(separated([*corrected, change_note])) if corrected else
+                    _bounded(separated([same_said, change_note])) if same_said else change_note,
                     separate_from=", ".join(same),
                     replaces_withdrawn=", ".join(n for n, _ in withdrawn),
                     withdrawn_note=_bounded(separated([said for _, said in withdrawn])),
@@ -1894,6 +1902,21 @@ class Register:
         ``manufacturer``, ``reason``, ``others`` ([{number}]), ``recorded_at``,
         ``os_user``; every one, or ``number``'s."""
         return self._confirmations("same_readings", number)
+
+    def _readings_redated(self, conn, request: IssueRequest, meta: CertificateMetadata,
+                          key: str, same: tuple[str, ...]) -> tuple[str, ...]:
+        """The current certificates of ``meta``'s item on ``request``'s workbench with
+        another date of calibration than ``meta``'s whose readings are ``request``'s by their
+        values (``key``): no two calibrations repeat every reading to the last digit, so an
+        original of them is that calibration issued again with its date moved (hostile79
+        #3). ``same``: this date's certificates, told apart already."""
+        if not key:
+            return ()
+        c = self._schema.CERTIFICATES.c
+        return tuple(n for n in self._numbers_of_readings(
+            conn, request.workbench, key, c.status == "issued",
+            c.calibration_date != meta.calibration_date)
+            if n not in same and _one_item(self._get(conn, n), meta))
 
     def _in_place_of_withdrawn(self, conn, request: IssueRequest, meta: CertificateMetadata
                                ) -> tuple[tuple[str, Any], ...]:
@@ -3514,7 +3537,7 @@ def _with_rows_of(project_json: str, other_json: str, workbench: str) -> str:
 
 
 def _same_readings_said(meta: CertificateMetadata, identical: tuple[str, ...],
-                        stated: tuple[str, str] | None) -> Any:
+                        stated: tuple[str, str] | None, redated: bool = False) -> Any:
     """What a calibration of its own states whose readings and details are those of the
     current certificates ``identical`` of its item and date, ``stated`` (one of their
     numbers, why) by the user; "" when there are none and none is stated.
@@ -3552,6 +3575,12 @@ def _same_readings_said(meta: CertificateMetadata, identical: tuple[str, ...],
             "the readings are those of {numbers} (serial {serial}, calibrated {date}) to every "
             "digit, and so are its details: no two calibrations repeat every reading to the "
             "last digit, so this is the calibration {numbers} already reports, issued again"),
+            numbers=numbers, serial=_printed(meta.item_serial) or "—",
+            date=meta.calibration_date or "—") if not redated else message(QT_TR_NOOP(
+            "the readings are those of {numbers} (serial {serial}) to every digit, with "
+            "another date of calibration than {date}: no two calibrations repeat every "
+            "reading to the last digit, so this is the calibration {numbers} already reports, "
+            "issued again with its date of calibration moved"),
             numbers=numbers, serial=_printed(meta.item_serial) or "—",
             date=meta.calibration_date or "—")
         raise SameReadingsIssued(message(QT_TR_NOOP(
