@@ -6,6 +6,7 @@ the presenter is app/register_presenter.py."""
 from __future__ import annotations
 
 import datetime as dt
+import html
 import threading
 
 import pyqtgraph as pg
@@ -77,6 +78,17 @@ class _Delivery(QObject):
     finished = Signal(object, object)  # done, its result
 
 
+#: the characters of the selected certificate's links shown below the list (about four
+#: lines at 1280x720 and 200 %): the rest on hover and in 'register show'
+LINKS_SHOWN = 400
+
+
+def _plain_tip(text: str) -> str:
+    """``text`` as a tooltip shown as typed (a tooltip that looks like HTML is rendered as
+    HTML: a reason typed <h1>VALID</h1>), wrapped."""
+    return f"<p>{html.escape(text)}</p>" if text else ""
+
+
 class RegisterWindow(QDialog):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
@@ -115,6 +127,9 @@ class RegisterWindow(QDialog):
         #: the selected certificate's links to others (the list's last column) in full,
         #: wrapped: at 200 % the column is off the screen or cut short
         self.links = QLabel()
+        # plain text: a withdrawal reason typed as <h1>VALID</h1> showed as a heading
+        # (hostile79 #4)
+        self.links.setTextFormat(Qt.TextFormat.PlainText)
         self.links.setWordWrap(True)
         self.links.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.links.hide()
@@ -282,7 +297,7 @@ class RegisterWindow(QDialog):
         for r, row in enumerate(rows):  # the links in full where the column is narrow
             item = self.table.item(r, len(row) - 1) if row and row[-1] else None
             if item is not None:
-                item.setToolTip(row[-1])
+                item.setToolTip(_plain_tip(row[-1]))
         # the links' column as wide as its text up to about 30 characters, not squeezed to
         # what the other columns leave (the selected one's in full below the list)
         last = self.table.columnCount() - 1
@@ -302,7 +317,10 @@ class RegisterWindow(QDialog):
         """The selected certificate's links (the list's last column) below the list."""
         row = self.selected_row()
         text = self._rows[row][-1] if 0 <= row < len(self._rows) and self._rows[row] else ""
-        self.links.setText(tr("Links: {links}").format(links=text) if text else "")
+        shown = text if len(text) <= LINKS_SHOWN else text[:LINKS_SHOWN - 1].rstrip() + "…"
+        self.links.setText(tr("Links: {links}").format(links=shown) if text else "")
+        # cut short (a reason of 10,000 characters took the list's room): in full on hover
+        self.links.setToolTip(_plain_tip(text) if shown != text else "")
         self.links.setVisible(bool(text))
 
     def selected_row(self) -> int:

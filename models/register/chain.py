@@ -42,6 +42,14 @@ against it. The results file is made after the PDF and names its SHA-256: no dig
 carries can cover it; its chained entry is found rewritten by the customer's results file
 (which names its certificate's PDF) and, with the key, by its signature.
 
+Since schema version 8 every certificate issued has chain format 7 (the fields of format 4,
+content form 2): its chain also covers the identity of its readings (``readings_key``), by
+which the register looks up a certificate's readings issued again; set otherwise in the
+database after issue, the register's opening finds it and issues nothing (hostile79 #2: it
+laundered a copy of the readings as another item's certificate unseen until ``register
+verify``). Records issued before keep their format; their identity, filled in by migration 8,
+is made again from their readings by ``register verify``.
+
 Anyone with write access can recompute the whole chain: the chain's head (``anglebench
 register head``), noted outside the database, and the head printed on every certificate
 (the head *before* it) anchor it (``anglebench register verify --head``).
@@ -54,7 +62,7 @@ import json
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "CHAINED_V4", "CONTENT", "CONTENT_MARK",
+__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "CHAINED_V4", "CHAINED_V5", "CONTENT", "CONTENT_MARK",
            "CONTENT_V2", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK", "PROOF_MARK", "content_digest",
            "content_digest_v2", "content_form", "content_in_pdf", "dcc_body_digest", "head_in_pdf", "link",
            "link_entry", "number_in_pdf", "proof_in_pdf"]
@@ -73,6 +81,14 @@ CHAINED_V3 = ("dcc_sha256",)
 #: chain format 3's: what the document is, "calibration" or "test" (chain format 4 covers
 #: the DCC's SHA-256 also when it is None: a record issued without a DCC)
 CHAINED_V4 = ("document_kind",)
+#: what a record of chain format 7 (schema version 8: every record issued since) adds to
+#: chain format 4's: the identity of its readings (readings_identity.readings_key), which
+#: the register looks them up by: set otherwise in the database it hid a record's readings
+#: from the check of one item's readings issued as another's until 'register verify' made
+#: every identity again (hostile79 #2); chained, the opening's check finds it and nothing
+#: is issued into the register. Records of earlier formats (their identity filled in by
+#: migration 8) are still compared with their readings by 'register verify'
+CHAINED_V5 = ("readings_key",)
 #: an entry's fields, all in the chain
 ENTRY_CHAINED = ("seq", "kind", "subject", "body_json", "recorded_at", "os_user", "workstation")
 GENESIS = "0" * 64
@@ -88,8 +104,11 @@ def link(previous: str, record: Mapping[str, Any]) -> str:
     chain_format = record.get("chain_format") or 1
     keys = (CHAINED + (CHAINED_V2 if chain_format >= 2 else ())
             + (CHAINED_V3 if chain_format >= 3 else ())
-            + (CHAINED_V4 if chain_format >= 4 else ()))
-    fields = {k: record[k] for k in keys}
+            + (CHAINED_V4 if chain_format >= 4 else ())
+            + (CHAINED_V5 if chain_format >= 7 else ()))
+    # .get: a record set to format 7 in a register read as it is at version 7, which has no
+    # column readings_key, breaks its chain instead of the check
+    fields = {k: record.get(k) if k in CHAINED_V5 else record[k] for k in keys}
     if chain_format >= 2:
         fields["chain_format"] = record["chain_format"]
     return _digest(previous, fields)
@@ -125,7 +144,7 @@ CONTENT_V2 = ("document_kind", "dcc_body")
 
 
 def content_form(record: Mapping[str, Any]) -> int:
-    """Which form of content digest a record's PDF carries: 2 for chain format 6 (AngleBench
+    """Which form of content digest a record's PDF carries: 2 for chain format 6 or 7 (AngleBench
     0.8.22 on: the document kind and the DCC covered), 1 for chain format 5 (0.8.21: the
     readings, results and details only), 0 for older records (their PDFs carry none)."""
     chain_format = record.get("chain_format") or 1

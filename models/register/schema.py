@@ -84,8 +84,10 @@ CERTIFICATES = sa.Table(
     # (models/register/readings_identity.readings_key: "" for none), made at issue and filled
     # in once for the records before it, looked up by the index certificates_readings_key
     # (one item's readings issued as another's, a withdrawn certificate's readings reissued);
-    # not in the chain (it is made from the project state, which is): 'register verify'
-    # makes it again from the readings and reports one that differs. None: issued by an
+    # in the chain of every record issued since (chain format 7: a key set otherwise is
+    # found at opening); for the records the migration filled it in for, not (it is made
+    # from the project state, which is): 'register verify' makes it again from the
+    # readings and reports one that differs. None: issued by an
     # AngleBench of schema 7 still running after the migration, made when it is compared
     sa.Column("readings_key", sa.String(64), nullable=True),
 )

@@ -272,7 +272,8 @@ class CertificateRecord:
     # "test" (a test report), in the chain (format 4); None: issued before it, not recorded
     document_kind: str | None = None
     # schema version 8: the identity of its readings by their values (readings_identity:
-    # "" for none), made at issue, not in the chain (made from project_json, which is);
+    # "" for none), made at issue, in the chain from chain format 7 (filled in by migration
+    # 8 for older records: not in their chain, made again from project_json by verify);
     # None: not stored (a register read as it is at version 6 or 7, a record issued by an
     # AngleBench of schema 7 after the migration)
     readings_key: str | None = None
@@ -693,6 +694,38 @@ class Register:
                 "register {display_url} is read-only and at schema version {version}: it must "
                 "be migrated to {latest} by an AngleBench that can write it"),
                 display_url=self.display_url, version=version or 0, latest=schema.LATEST))
+        try:
+            self._migrate_in_one_transaction()
+        except OSError as exc:
+            if exc.errno in _DISK_FULL:
+                raise RegisterError(self._migration_full(version)) from None
+            raise
+        except sa.exc.SQLAlchemyError as exc:
+            if self._full(exc):
+                raise RegisterError(self._migration_full(version)) from None
+            raise
+
+    def _migration_full(self, version: int | None) -> Message:
+        """What a migration that found the disk full says (hostile79 #1: "the register cannot
+        be opened there (SQLite needs room beside it for its journal's index)", so the
+        user freed a few kilobytes for nothing): it needs room for its journal, up to the
+        register's own size (migration 8 rewrites every record's row); rolled back."""
+        size = ""
+        if self._sqlite_path:
+            with contextlib.suppress(OSError):
+                size = f"{Path(self._sqlite_path).stat().st_size / 1e6:.1f} MB"
+        return message(QT_TR_NOOP(
+            "the disk is full at {path}: migrating the register from schema version "
+            "{version} to {latest} needs room for its journal (up to the register's own size, "
+            "{size}); nothing was changed, the register is still at version {version} (free "
+            "some space and try again)"),
+            path=str(self._sqlite_path or self.display_url), version=version or 0,
+            latest=self._schema.LATEST, size=size or "?")
+
+    def _migrate_in_one_transaction(self) -> None:
+        """The migrations from the register's version to the latest, in one transaction
+        (rolled back whole: a register is at its old version or at the latest)."""
+        sa, schema = self._sa, self._schema
         with self.engine.begin() as conn:
             if not self.is_sqlite:
                 conn.execute(sa.text("SELECT pg_advisory_xact_lock(:k)"), {"k": _ADVISORY_LOCK})
@@ -1415,6 +1448,11 @@ class Register:
                     # what it changes (hostile78 F3: a fail withdrawn, then a pass issued)
                     withdrawn = () if supersedes or separate_calibration is None else \
                         self._in_place_of_withdrawn(conn, request, meta)
+                    # a current certificate of the item whose readings these are, to every
+                    # digit, with another date of calibration: that calibration issued again,
+                    # re-dated (hostile79 #3: a day later it issued as an original, unsaid)
+                    redated = () if supersedes or separate_calibration is None else \
+                        self._readings_redated(conn, request, meta, key, same)
                     # an amendment's corrected maker is confirmed and stated on it
                     # (_corrections); an original naming another maker is asked (rev65 F1)
                     others = () if supersedes or separate_calibration is None else \
@@ -1473,8 +1511,10 @@ class Register:
                         date=meta.calibration_date or "—",
                         changes=separated([c for _, said in repeated for c in said])),
                         tuple(n for n, _ in repeated))
-                same_said = _same_readings_said(meta, identical if same and separate else (),
-                                                same_readings_as)
+                identical = identical if same and separate else ()
+                same_said = _same_readings_said(meta, identical or redated, same_readings_as,
+                                                redated=not identical and bool(redated))
+                identical = identical or redated
                 if others and not another_makers_item:
                     raise _another_makers_item(meta, others)
                 if lookalikes and not another_lookalike_item:
@@ -1491,7 +1531,8 @@ class Register:
                     revision="" if plan.revision == "original" else plan.revision,
                     change_note=_bounded(separated([separate, *filter(None, [same_said]),
                                                     *against])) if same else
-                    _bounded(separated([*corrected, change_note])) if corrected else change_note,
+                    _bounded(separated([*corrected, change_note])) if corrected else
+                    _bounded(separated([same_said, change_note])) if same_said else change_note,
                     separate_from=", ".join(same),
                     replaces_withdrawn=", ".join(n for n, _ in withdrawn),
                     withdrawn_note=_bounded(separated([said for _, said in withdrawn])),
@@ -1514,7 +1555,7 @@ class Register:
                     pdf_sha256="",
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
                     os_user=user, approver=meta.approver,
-                    chain_format=6, readings_key=key)
+                    chain_format=7, readings_key=key)
                 # the record's content first, carried by the PDF (so by the DCC that embeds
                 # it); then the files' hashes (reg72 #2: the newest record rewritten with its
                 # chain recomputed is found from the customer's copy). Content form 2 also
@@ -1861,6 +1902,21 @@ class Register:
         ``manufacturer``, ``reason``, ``others`` ([{number}]), ``recorded_at``,
         ``os_user``; every one, or ``number``'s."""
         return self._confirmations("same_readings", number)
+
+    def _readings_redated(self, conn, request: IssueRequest, meta: CertificateMetadata,
+                          key: str, same: tuple[str, ...]) -> tuple[str, ...]:
+        """The current certificates of ``meta``'s item on ``request``'s workbench with
+        another date of calibration than ``meta``'s whose readings are ``request``'s by their
+        values (``key``): no two calibrations repeat every reading to the last digit, so an
+        original of them is that calibration issued again with its date moved (hostile79
+        #3). ``same``: this date's certificates, told apart already."""
+        if not key:
+            return ()
+        c = self._schema.CERTIFICATES.c
+        return tuple(n for n in self._numbers_of_readings(
+            conn, request.workbench, key, c.status == "issued",
+            c.calibration_date != meta.calibration_date)
+            if n not in same and _one_item(self._get(conn, n), meta))
 
     def _in_place_of_withdrawn(self, conn, request: IssueRequest, meta: CertificateMetadata
                                ) -> tuple[tuple[str, Any], ...]:
@@ -3481,7 +3537,7 @@ def _with_rows_of(project_json: str, other_json: str, workbench: str) -> str:
 
 
 def _same_readings_said(meta: CertificateMetadata, identical: tuple[str, ...],
-                        stated: tuple[str, str] | None) -> Any:
+                        stated: tuple[str, str] | None, redated: bool = False) -> Any:
     """What a calibration of its own states whose readings and details are those of the
     current certificates ``identical`` of its item and date, ``stated`` (one of their
     numbers, why) by the user; "" when there are none and none is stated.
@@ -3519,6 +3575,12 @@ def _same_readings_said(meta: CertificateMetadata, identical: tuple[str, ...],
             "the readings are those of {numbers} (serial {serial}, calibrated {date}) to every "
             "digit, and so are its details: no two calibrations repeat every reading to the "
             "last digit, so this is the calibration {numbers} already reports, issued again"),
+            numbers=numbers, serial=_printed(meta.item_serial) or "—",
+            date=meta.calibration_date or "—") if not redated else message(QT_TR_NOOP(
+            "the readings are those of {numbers} (serial {serial}) to every digit, with "
+            "another date of calibration than {date}: no two calibrations repeat every "
+            "reading to the last digit, so this is the calibration {numbers} already reports, "
+            "issued again with its date of calibration moved"),
             numbers=numbers, serial=_printed(meta.item_serial) or "—",
             date=meta.calibration_date or "—")
         raise SameReadingsIssued(message(QT_TR_NOOP(
@@ -3714,7 +3776,8 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
 
 
 def _readings_key_problems(fields: dict) -> list:
-    """A record's stored readings identity (schema version 8, outside the chain) against
+    """A record's stored readings identity (schema version 8; in the chain from chain
+    format 7, outside it for the records migration 8 filled it in for) against
     the one its readings give (its project state, in the chain): set otherwise after issue,
     it would hide its readings from the check of one item's readings issued as another's,
     or name it for readings it does not hold. [] when they agree or none is stored."""

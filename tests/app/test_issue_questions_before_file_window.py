@@ -208,13 +208,19 @@ def test_the_schedule_names_the_maker_and_marks_makerless_certificates(window, q
 
     kind = KINDS["polygon"]
     rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
-    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    # the later calibration with readings of its own (the same readings to every digit on
+    # another date are the first calibration issued again, re-dated: hostile79 #3)
+    later = map_columns(read_table(own_readings(samples_dir / kind.sample_file,
+                                                "LRA-0815 2026", tmp_path)), kind.columns)
     with window.certificates.open_register() as register:
-        for name, maker, day in (("a", "", "2025-01-10"), ("b", "Acme Optics", "2026-11-20")):
-            issue_certificate(register, kind, result, _details(
+        for name, maker, day, readings in (("a", "", "2025-01-10", rows),
+                                           ("b", "Acme Optics", "2026-11-20", later)):
+            analysed = kind.analyze(ReadingsSheet(kind.columns, readings).parse(),
+                                    kind.checked_settings({}))
+            issue_certificate(register, kind, analysed, _details(
                 samples_dir, item_serial="LRA-0815", item_manufacturer=maker,
-                calibration_date=day), kind.checked_settings({}), rows, "polygon_sample.csv",
-                str(tmp_path / f"{name}.pdf"))
+                calibration_date=day), kind.checked_settings({}), readings,
+                "polygon_sample.csv", str(tmp_path / f"{name}.pdf"))
         register.set_interval("LRA-0815", 365, "Acme Optics")
     window.show_register()
     dialog = window.register_window

@@ -18,6 +18,7 @@ from models.register.store import (
     ReadingsOfAnotherItem,
     Register,
     RegisterError,
+    SameReadingsIssued,
 )
 from tests.own_readings import one_reading_moved, theodolite_sample_rows
 
@@ -115,8 +116,12 @@ def test_readings_of_their_own_and_the_items_own_are_issued_and_a_false_word_ref
         moved = one_reading_moved(rows)  # one reading of its own
         _, meta = _issue(register, "LRA-0900", moved)
         assert meta.readings_of_another_item == "" and meta.readings_note == ""
-        # the same item's readings, another day's calibration: not another item's
-        _issue(register, "LRA-0815", rows, date="2026-11-25")
+        # the same item's readings, another day's calibration: not another item's (to every
+        # digit they are its calibration of 2026-11-20 re-dated: hostile79 #3, refused as
+        # that calibration issued again unless said why)
+        with pytest.raises(SameReadingsIssued) as refused:
+            _issue(register, "LRA-0815", rows, date="2026-11-25")
+        assert not isinstance(refused.value, ReadingsOfAnotherItem)
         # said where nothing is another item's: the statement would be false
         with pytest.raises(RegisterError, match="not those of any certificate of another item"):
             _issue(register, "LRA-0999", [r[:1] + [r[1] + " "] + r[2:] for r in moved][:3],

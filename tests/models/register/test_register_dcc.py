@@ -60,13 +60,13 @@ def issued(register_url):
 def test_the_dcc_is_stored_with_the_same_number_and_pdf_and_chained(issued):
     url, plain, with_dcc = issued
     with _open(url) as register:
-        # chain format 4 and later (6: 0.8.22) covers the DCC's SHA-256, None here, and the kind
-        assert plain.chain_format == 6 and plain.dcc_sha256 is None
+        # chain format 4 and later (7: schema 8) covers the DCC's SHA-256, None here, and the kind
+        assert plain.chain_format == 7 and plain.dcc_sha256 is None
         with pytest.raises(RegisterError, match="issued without a digital calibration"):
             register.dcc(plain.number)
         for record in with_dcc:
             dcc = register.dcc(record.number)
-            assert record.chain_format == 6
+            assert record.chain_format == 7
             assert record.dcc_sha256 == hashlib.sha256(dcc).hexdigest()
             assert register.get(record.number).dcc_sha256 == record.dcc_sha256
             t.assert_valid(dcc)
@@ -189,7 +189,7 @@ def test_a_version_4_register_migrates_keeping_its_chain(register_url):
         assert {r.document_kind for r in kept} == {None}  # not recorded, never guessed
         new = register.issue(IssueRequest("polygon", META, PROJECT), render,
                              render_dcc=render_dcc)[0]
-        assert new.chain_format == 6 and register.audit(pdfs=True) == []
+        assert new.chain_format == 7 and register.audit(pdfs=True) == []
     sql(register_url, "UPDATE schema_version SET version = 4",
         "UPDATE register_state SET value = '4' WHERE name = 'schema_version'")
     with pytest.raises(RegisterError, match="schema version 4 was set back"):

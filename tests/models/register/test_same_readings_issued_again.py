@@ -6,6 +6,7 @@ naming the certificate and the ways out (its PDF, its amendment or replacement, 
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import pytest
@@ -114,3 +115,38 @@ def test_the_same_values_typed_otherwise_and_judged_otherwise_are_no_separate_ca
     said = str(refused.value)
     assert f"judged otherwise: tolerance changed from — (on {original.number}) to ±3" in said
     assert "readings changed" not in said
+
+
+def test_the_same_readings_with_the_date_of_calibration_moved_are_refused(first):
+    """hostile79 #3: the same readings and details with the date of calibration a day later
+    issued as an original, nothing said on it: a second current certificate of one
+    calibration, re-dated. Refused as that calibration issued again; said why with
+    --same-readings-as, stated on it and chained; a calibration of its own (readings of its
+    own) on another date issues as before."""
+    register, original = first
+    later = dataclasses.replace(META, calibration_date="2026-11-21")
+
+    def issue(rows, meta=later, **options):
+        return register.issue(IssueRequest("theodolite", meta, _project(rows)),
+                              lambda m: f"%PDF {m.certificate_number}".encode(),
+                              separate_calibration="", **options)[0]
+
+    with pytest.raises(SameReadingsIssued) as refused:
+        issue(theodolite_sample_rows()[::-1])
+    assert refused.value.numbers == (original.number,)
+    assert str(refused.value).startswith(
+        f"the readings are those of {original.number} (serial LRA-0815) to every digit, with "
+        "another date of calibration than 2026-11-21: no two calibrations repeat every reading "
+        f"to the last digit, so this is the calibration {original.number} already reports, "
+        "issued again with its date of calibration moved. Its copy is the PDF of "
+        f"{original.number}")
+    assert [r.number for r in register.list()] == [original.number]
+    said = issue(theodolite_sample_rows(),
+                 same_readings_as=(original.number, "the lab's date was wrong on the first"))
+    assert said.change_note == (f"The readings and details are those of {original.number} to "
+                                "every digit: the lab's date was wrong on the first")
+    assert [e["others"] for e in register.same_readings_confirmations(said.number)] == [
+        [{"number": original.number}]]
+    own = issue(one_reading_moved(theodolite_sample_rows()),
+                dataclasses.replace(META, calibration_date="2026-11-22"))
+    assert own.change_note == "" and own.calibration_date == "2026-11-22"
