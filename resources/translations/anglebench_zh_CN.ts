@@ -4880,6 +4880,7 @@ If these are indeed the readings of a calibration of its own, say why: stated on
     </message>
     <message>
         <source>Certificate register</source>
+        <extracomment>the characters of the selected certificate&apos;s links shown below the list (about four lines at 1280x720 and 200 %): the rest on hover and in &apos;register show&apos;</extracomment>
         <translation>证书登记册</translation>
     </message>
     <message>
@@ -7667,6 +7668,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>登记册 {display_url}：文件为空（0 字节），而登记册自创建之时起即含有其数据表：其记录已丢失（文件被清空或截断：崩溃、磁盘故障或某条命令覆盖了它）；不从中读取、也不向其签发任何内容，否则已签发的编号会再次签发：请从备份恢复登记册，然后用 &apos;anglebench register acknowledge-loss&apos; 记录此次丢失；如果从未向其签发过任何证书，请删除该文件</translation>
     </message>
     <message>
+        <source>the disk is full at {path}: migrating the register from schema version {version} to {latest} needs room for its journal (up to the register&apos;s own size, {size}); nothing was changed, the register is still at version {version} (free some space and try again)</source>
+        <translation>{path} 所在磁盘已满：将登记册从架构版本 {version} 迁移到 {latest} 需要为其日志留出空间（最多为登记册本身的大小 {size}）；未作任何更改，登记册仍为版本 {version}（请释放一些空间后重试）</translation>
+    </message>
+    <message>
         <source>the disk is full at {path}: the register cannot be opened there (SQLite needs room beside it for its journal&apos;s index); it was not changed (free some space and try again)</source>
         <translation>{path} 所在磁盘已满：无法在那里打开登记册（SQLite 需要在其旁边为日志索引留出空间）；登记册未被改动（请释放一些空间后重试）</translation>
     </message>
@@ -7825,6 +7830,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>the readings are those of {numbers} (serial {serial}, calibrated {date}) to every digit, and so are its details: no two calibrations repeat every reading to the last digit, so this is the calibration {numbers} already reports, issued again</source>
         <translation>读数与 {numbers}（序列号 {serial}，校准于 {date}）逐位相同，证书信息也相同：两次校准不会每个读数都逐位相同，因此这是 {numbers} 已报告的那次校准再次签发</translation>
+    </message>
+    <message>
+        <source>the readings are those of {numbers} (serial {serial}) to every digit, with another date of calibration than {date}: no two calibrations repeat every reading to the last digit, so this is the calibration {numbers} already reports, issued again with its date of calibration moved</source>
+        <translation>读数与 {numbers}（序列号 {serial}）逐位相同，但校准日期不是 {date}：两次校准不会每个读数都逐位相同，因此这是 {numbers} 已报告的那次校准，改动校准日期后再次签发</translation>
     </message>
     <message>
         <source>{found}. Its copy is the PDF of {number} (anglebench register show {number} --pdf OUT.pdf); a correction is its amendment or replacement (File › Certificate register, Amend… or Replace…); if these are indeed the readings of a calibration of its own, say why (stated on the certificate and recorded in the register; on the command line: --same-readings-as {number}:REASON)</source>
