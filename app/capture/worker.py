@@ -313,6 +313,12 @@ class CaptureWorker(LinkThread):
         instrument = self.instrument
         got = 0
         heard_bytes = False
+        #: when the worker first read bytes since the last reading (None: none since): bytes
+        #: are "unreadable" once they have come for the silence without making a reading, not
+        #: when the first byte of a line is read late (a loaded machine starved this thread
+        #: past the silence; its read returned the line's first byte, the rest waiting: "only
+        #: unreadable bytes for 0.2 s (a wrong baud rate?)" and a reconnection, flake79)
+        heard_from: float | None = None
         last_refusal = ""
         start = last_good = time.monotonic()
         #: the last whole frame that carried no measurement (a mirror out of view): the
@@ -363,9 +369,11 @@ class CaptureWorker(LinkThread):
                     heard_since_request = False
                     expected = None if polling else instrument.transaction_of(self._transactions)
                 data = self._read(link)
+                now = time.monotonic()
                 if data:
                     heard_bytes = heard_since_request = True
-                now = time.monotonic()
+                    if heard_from is None:
+                        heard_from = now
                 for line in framer.feed(data):
                     lines += 1
                     if partial_first:
@@ -415,7 +423,7 @@ class CaptureWorker(LinkThread):
                     out_of_view = False
                     # what a silence after this says is of the bytes since it: a link that read
                     # well and went quiet is "no answer", not "only unreadable bytes"
-                    heard_bytes, last_refusal = False, ""
+                    heard_bytes, last_refusal, heard_from = False, "", None
                     if ask is None:
                         self._streamed = True
                     self.events.put(Reading(now - self._t0, parsed[0], parsed[1], line, index))
@@ -426,8 +434,11 @@ class CaptureWorker(LinkThread):
                     raise LinkLost(self._no_reading_message(heard_bytes, last_refusal, True,
                                                             got > 0), got)
                 # only silence (or nothing whole) is a fault: frames with no measurement
-                # are an instrument that sees no target
-                if now - max(last_good, last_no_target) > self.silence_s and not waiting:
+                # are an instrument that sees no target; bytes read since the last reading
+                # are given the silence from the first of them to make one
+                first_byte = last_good if heard_from is None else heard_from
+                if now - max(last_good, last_no_target, first_byte) \
+                        > self.silence_s and not waiting:
                     raise LinkLost(self._no_reading_message(heard_bytes, last_refusal, False), got)
         except (serial.SerialException, OSError) as exc:
             reason = (str(exc).strip() or type(exc).__name__).splitlines()[0][:200]
