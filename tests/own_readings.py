@@ -6,10 +6,11 @@ from __future__ import annotations
 
 import csv
 import hashlib
+import json
 import re
 from pathlib import Path
 
-__all__ = ["one_reading_moved", "own_readings", "theodolite_sample_rows"]
+__all__ = ["one_reading_moved", "own_readings", "theodolite_project", "theodolite_sample_rows"]
 
 #: the columns that set a point, not read at it, and a standard's known deviations: kept
 _SET = frozenset({"theta_deg", "position", "set", "direction", "run", "target", "mounting",
@@ -82,3 +83,9 @@ def one_reading_moved(rows: list[list[str]]) -> list[list[str]]:
     assert moved[7][1] == "-12°55'35.8\""
     moved[7][1] = "-12°55'35.9\""
     return moved
+
+
+def theodolite_project(rows: list[list[str]]) -> str:
+    """A project file's text holding ``rows`` on the theodolite workbench, with no settings."""
+    return json.dumps({"format": "anglebench-project",
+                       "workbenches": {"theodolite": {"rows": rows, "settings": {}}}})

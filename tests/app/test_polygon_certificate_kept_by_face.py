@@ -22,12 +22,17 @@ DEVIATIONS = [0.1, 0.2, 0.3, 0.0, -0.2, -0.1]
 ENCODER = [10.0, 70.0004, 130.0002, 189.9999, 250.0001, 310.0003]
 
 
-@pytest.fixture
-def certificate(tmp_path):
-    path = tmp_path / "polygon6_certificate.csv"
+def polygon_certificate_file(folder):
+    """The polygon's certificate in ``folder``: its 6 faces' deviations (″) by position."""
+    path = folder / "polygon6_certificate.csv"
     path.write_text("position,deviation_arcsec\n" + "".join(
         f"{face},{value:g}\n" for face, value in enumerate(DEVIATIONS, start=1)))
     return path
+
+
+@pytest.fixture
+def certificate(tmp_path):
+    return polygon_certificate_file(tmp_path)
 
 
 def _empty_polygon(window):

@@ -15,16 +15,13 @@ from tests.app.test_polygon_certificate_kept_by_face import (
     ENCODER,
     _col,
     _empty_polygon,
+    polygon_certificate_file,
 )
 
 
 @pytest.fixture
 def certificate(tmp_path):
-    """The polygon's certificate: its 6 faces' deviations (″) by position."""
-    path = tmp_path / "polygon6_certificate.csv"
-    path.write_text("position,deviation_arcsec\n" + "".join(
-        f"{face},{value:g}\n" for face, value in enumerate(DEVIATIONS, start=1)))
-    return path
+    return polygon_certificate_file(tmp_path)
 
 
 def _block(header: bool, deviations: dict[int, str] | None = None) -> str:

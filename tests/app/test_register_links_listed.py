@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import zipfile
 from types import SimpleNamespace
 from unittest import mock
@@ -17,12 +16,7 @@ from app.register_presenter import COLUMNS, RegisterPresenter, RegisterView
 from models.certificate.metadata import CertificateMetadata
 from models.register.record_links import record_links
 from models.register.store import IssueRequest, Register
-from tests.own_readings import one_reading_moved, theodolite_sample_rows
-
-
-def _project(rows) -> str:
-    return json.dumps({"format": "anglebench-project",
-                       "workbenches": {"theodolite": {"rows": rows, "settings": {}}}})
+from tests.own_readings import one_reading_moved, theodolite_project, theodolite_sample_rows
 
 
 def _issue(register: Register, serial: str, rows, **options):
@@ -31,7 +25,7 @@ def _issue(register: Register, serial: str, rows, **options):
                                item_description="Limited-rotation axis",
                                item_manufacturer="Example Instruments")
     options.setdefault("separate_calibration", "")
-    return register.issue(IssueRequest("theodolite", meta, _project(rows)),
+    return register.issue(IssueRequest("theodolite", meta, theodolite_project(rows)),
                           lambda m: f"%PDF {m.certificate_number}".encode(), **options)[0]
 
 

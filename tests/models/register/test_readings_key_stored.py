@@ -7,7 +7,6 @@ was set otherwise in the database."""
 
 from __future__ import annotations
 
-import json
 import os
 import sqlite3
 from pathlib import Path
@@ -18,12 +17,7 @@ from models.certificate.metadata import CertificateMetadata
 from models.register import schema, store
 from models.register.readings_identity import readings_key
 from models.register.store import IssueRequest, ReadingsOfAnotherItem, Register, RegisterTampered
-from tests.own_readings import theodolite_sample_rows
-
-
-def _project(rows) -> str:
-    return json.dumps({"format": "anglebench-project",
-                       "workbenches": {"theodolite": {"rows": rows, "settings": {}}}})
+from tests.own_readings import theodolite_project, theodolite_sample_rows
 
 
 def _rows(n: int) -> list[list[str]]:
@@ -40,7 +34,7 @@ def _issue(register: Register, serial: str, rows, **options):
                                calibration_date="2026-11-20",
                                item_description="Limited-rotation axis",
                                item_manufacturer="Example Instruments")
-    return register.issue(IssueRequest("theodolite", meta, _project(rows)),
+    return register.issue(IssueRequest("theodolite", meta, theodolite_project(rows)),
                           lambda m: f"%PDF {m.certificate_number}".encode(),
                           separate_calibration="", **options)[0]
 
@@ -87,7 +81,7 @@ def test_each_record_stores_its_readings_identity_and_an_issue_makes_none_again(
     path = tmp_path / "r.sqlite"
     with Register(f"sqlite:///{path}") as register:
         records = [_issue(register, f"LRA-08{i:02d}", _rows(i)) for i in range(4)]
-    assert _keys(path) == {r.number: readings_key(_project(_rows(i)), "theodolite")
+    assert _keys(path) == {r.number: readings_key(theodolite_project(_rows(i)), "theodolite")
                            for i, r in enumerate(records)}
     assert all(len(k) == 64 for k in _keys(path).values())
     made = []
@@ -103,11 +97,11 @@ def test_each_record_stores_its_readings_identity_and_an_issue_makes_none_again(
             _issue(register, "LRA-0900", _rows(1))
         assert refused.value.numbers == (records[1].number,)
         # … by the request's identity alone: no record's made again from its readings
-        assert made and set(made) == {_project(_rows(1))}
+        assert made and set(made) == {theodolite_project(_rows(1))}
         made.clear()
         new = _issue(register, "LRA-0901", _rows(9))
-        assert set(made) == {_project(_rows(9))} and new.readings_key == readings_key(_project(_rows(9)),
-                                                                   "theodolite")
+        project = theodolite_project(_rows(9))
+        assert set(made) == {project} and new.readings_key == readings_key(project, "theodolite")
         assert register.get(new.number).readings_key == new.readings_key
 
 
@@ -284,4 +278,4 @@ def test_a_full_disk_during_migration_8_says_so_and_leaves_version_7(tmp_path, m
     with Register(f"sqlite:///{path}") as register:
         assert register.version == 8 and register.audit(pdfs=True) == []
         assert [register.get(r.number).readings_key for r in records] == [
-            readings_key(_project(_rows(i)), "theodolite") for i in range(3)]
+            readings_key(theodolite_project(_rows(i)), "theodolite") for i in range(3)]

@@ -20,12 +20,7 @@ from models.register.store import (
     RegisterError,
     SameReadingsIssued,
 )
-from tests.own_readings import one_reading_moved, theodolite_sample_rows
-
-
-def _project(rows) -> str:
-    return json.dumps({"format": "anglebench-project",
-                       "workbenches": {"theodolite": {"rows": rows, "settings": {}}}})
+from tests.own_readings import one_reading_moved, theodolite_project, theodolite_sample_rows
 
 
 def _meta(serial: str, date: str = "2026-11-20", **changes) -> CertificateMetadata:
@@ -45,28 +40,28 @@ def _issue(register: Register, serial: str, rows, date: str = "2026-11-20",
         return f"%PDF {meta.certificate_number}".encode()
 
     record, _ = register.issue(IssueRequest("theodolite", _meta(serial, date),
-                                            _project(rows)), render,
+                                            theodolite_project(rows)), render,
                                separate_calibration="", readings_of_another_item=stated)
     return record, rendered["meta"]
 
 
 def test_the_readings_are_their_values_however_typed_ordered_or_saved():
     rows = theodolite_sample_rows()
-    key = readings_key(_project(rows), "theodolite")
+    key = readings_key(theodolite_project(rows), "theodolite")
     assert len(key) == 64
     # re-typed: the angles in decimal degrees, 12 digits; "+" and trailing zeros; the rows
     # in another order; a sheet's padding and a blank row
     decimal = [[f"{float(r[0]):+.1f}", f"{parse_angle_deg(r[1]):.12f}",
                 f"{parse_angle_deg(r[2]):.12f}" if r[2].strip() else ""] for r in rows]
     assert decimal[1] != rows[1]
-    assert readings_key(_project(decimal[::-1] + [["", "", ""]]), "theodolite") == key
+    assert readings_key(theodolite_project(decimal[::-1] + [["", "", ""]]), "theodolite") == key
     # one reading of 41 one tenth of a second of arc away: other readings
     moved = one_reading_moved(rows)
-    assert readings_key(_project(moved), "theodolite") != key
+    assert readings_key(theodolite_project(moved), "theodolite") != key
     # nothing to compare: no rows, no project, a workbench this version does not have
-    assert readings_key(_project([]), "theodolite") == ""
+    assert readings_key(theodolite_project([]), "theodolite") == ""
     assert readings_key("not json", "theodolite") == ""
-    assert readings_key(_project(rows), "nonesuch") == ""
+    assert readings_key(theodolite_project(rows), "nonesuch") == ""
 
 
 def test_another_items_readings_are_refused_naming_its_certificate(tmp_path):
@@ -136,7 +131,7 @@ def test_a_lookalike_serial_said_to_be_another_item_is_still_asked_for_its_readi
         first, _ = _issue(register, "LRA-0815", rows)
         meta = _meta("1ra-0815")
         with pytest.raises(ReadingsOfAnotherItem) as refused:
-            register.issue(IssueRequest("theodolite", meta, _project(rows)),
+            register.issue(IssueRequest("theodolite", meta, theodolite_project(rows)),
                            lambda m: b"%PDF", separate_calibration="",
                            another_lookalike_item=True)
         assert refused.value.numbers == (first.number,)
@@ -150,12 +145,12 @@ def test_an_amendment_is_asked_only_when_it_changes_its_readings_to_another_item
         second, _ = _issue(register, "LRA-0900", one_reading_moved(rows))
         # its own readings again: not asked
         amended, _ = register.issue(IssueRequest("theodolite", _meta("LRA-0900"),
-                                                 _project(one_reading_moved(rows))),
+                                                 theodolite_project(one_reading_moved(rows))),
                                     lambda m: b"%PDF A1", supersedes=second.number,
                                     change_note="typo", separate_calibration="")
         # LRA-0815's readings put in its place: asked
         with pytest.raises(ReadingsOfAnotherItem) as refused:
-            register.issue(IssueRequest("theodolite", _meta("LRA-0900"), _project(rows)),
+            register.issue(IssueRequest("theodolite", _meta("LRA-0900"), theodolite_project(rows)),
                            lambda m: b"%PDF A2", supersedes=amended.number,
                            change_note="readings", separate_calibration="")
         assert refused.value.numbers == (first.number,)
@@ -167,7 +162,7 @@ def test_a_typed_number_with_a_colon_is_named_whole(tmp_path):
     rows = theodolite_sample_rows()
     with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
         register.issue(IssueRequest("theodolite", _meta(
-            "LRA-0815", certificate_number="LAB:2026-7"), _project(rows)),
+            "LRA-0815", certificate_number="LAB:2026-7"), theodolite_project(rows)),
             lambda m: b"%PDF", separate_calibration="")
         _, meta = _issue(register, "LRA-0900", rows, stated=("LAB", "2026-7:a pair: read once"))
         assert meta.readings_of_another_item == "LAB:2026-7"

@@ -7,7 +7,6 @@ naming the certificate and the ways out (its PDF, its amendment or replacement, 
 from __future__ import annotations
 
 import dataclasses
-import json
 
 import pytest
 
@@ -20,13 +19,7 @@ from models.register.store import (
     RegisterError,
     SameReadingsIssued,
 )
-from tests.own_readings import one_reading_moved, theodolite_sample_rows
-
-
-def _project(rows) -> str:
-    return json.dumps({"format": "anglebench-project",
-                       "workbenches": {"theodolite": {"rows": rows, "settings": {}}}})
-
+from tests.own_readings import one_reading_moved, theodolite_project, theodolite_sample_rows
 
 META = CertificateMetadata(approver="Dr. Li", item_serial="LRA-0815",
                            calibration_date="2026-11-20",
@@ -35,7 +28,7 @@ META = CertificateMetadata(approver="Dr. Li", item_serial="LRA-0815",
 
 
 def _issue(register: Register, rows, separate: str = "", **options):
-    return register.issue(IssueRequest("theodolite", META, _project(rows)),
+    return register.issue(IssueRequest("theodolite", META, theodolite_project(rows)),
                           lambda m: f"%PDF {m.certificate_number}".encode(),
                           separate_calibration=separate, **options)[0]
 
@@ -108,7 +101,7 @@ def test_the_same_values_typed_otherwise_and_judged_otherwise_are_no_separate_ca
                for r in theodolite_sample_rows()]
     meta = dataclasses.replace(META, tolerance=3.0, tolerance_unit="arcsec")
     with pytest.raises(NotASeparateCalibration) as refused:
-        register.issue(IssueRequest("theodolite", meta, _project(retyped)),
+        register.issue(IssueRequest("theodolite", meta, theodolite_project(retyped)),
                        lambda m: f"%PDF {m.certificate_number}".encode(),
                        separate_calibration="as left")
     assert not isinstance(refused.value, SameReadingsIssued)
@@ -127,7 +120,7 @@ def test_the_same_readings_with_the_date_of_calibration_moved_are_refused(first)
     later = dataclasses.replace(META, calibration_date="2026-11-21")
 
     def issue(rows, meta=later, **options):
-        return register.issue(IssueRequest("theodolite", meta, _project(rows)),
+        return register.issue(IssueRequest("theodolite", meta, theodolite_project(rows)),
                               lambda m: f"%PDF {m.certificate_number}".encode(),
                               separate_calibration="", **options)[0]
 
