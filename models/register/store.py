@@ -81,6 +81,13 @@ def _not_in_register(number: str) -> RegisterError:
         QT_TR_NOOP("no certificate or test report {number} in the register"), number=number))
 
 
+def _item_said(meta: CertificateMetadata) -> dict:
+    """The item and date of calibration a chained entry of the user's word names (serial,
+    maker, date: the keys in the order the entries have always held them)."""
+    return {"serial": meta.item_serial, "manufacturer": meta.item_manufacturer,
+            "calibration_date": meta.calibration_date}
+
+
 class SameCalibrationIssued(RegisterError):
     """An original for an item and date of calibration that a current certificate already
     reports (``numbers``): a corrected one is its amendment or replacement, a calibration of
@@ -1609,16 +1616,12 @@ class Register:
                                            for n, m in others]})
                         if lookalikes or left_out:  # said by the user: recorded
                             self._append_entry(conn, "lookalike_serial", plan.number, {
-                                "serial": meta.item_serial,
-                                "manufacturer": meta.item_manufacturer,
-                                "calibration_date": meta.calibration_date,
+                                **_item_said(meta),
                                 "others": [{"number": n, "serial": k, "manufacturer": m}
                                            for n, k, m in (*lookalikes, *left_out)]})
                         if readings_said:  # said by the user: recorded
                             self._append_entry(conn, "readings_of_another_item", plan.number, {
-                                "serial": meta.item_serial,
-                                "manufacturer": meta.item_manufacturer,
-                                "calibration_date": meta.calibration_date,
+                                **_item_said(meta),
                                 "reason": " ".join(readings_of_another_item[1].split())
                                 if readings_of_another_item else "",
                                 "others": [{"number": n, "serial": k, "item": i,
@@ -1626,9 +1629,7 @@ class Register:
                                            for n, k, i, d in elsewhere]})
                         if same_said:  # said by the user: recorded
                             self._append_entry(conn, "same_readings", plan.number, {
-                                "serial": meta.item_serial,
-                                "manufacturer": meta.item_manufacturer,
-                                "calibration_date": meta.calibration_date,
+                                **_item_said(meta),
                                 "reason": " ".join(same_readings_as[1].split())
                                 if same_readings_as else "",
                                 "others": [{"number": n} for n in identical]})

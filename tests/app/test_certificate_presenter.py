@@ -36,10 +36,23 @@ def parts():
     return presenter, view, metadata, modified
 
 
-def _theodolite(samples_dir):
+def window_presenter():
+    """(view, presenter): the window's certificate presenter over a stand-in view and settings."""
+    view = mock.create_autospec(CertificateView, instance=True)
+    return view, CertificatePresenter(view, Store(), lambda: {}, mock.Mock())
+
+
+def theodolite_sample_analysed(samples_dir):
+    """(kind, rows, result) of the bundled theodolite sample."""
     kind = KINDS["theodolite"]
     rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
-    return kind, kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    return kind, rows, kind.analyze(ReadingsSheet(kind.columns, rows).parse(),
+                                    kind.checked_settings({}))
+
+
+def _theodolite(samples_dir):
+    kind, _, result = theodolite_sample_analysed(samples_dir)
+    return kind, result
 
 
 @pytest.mark.slow

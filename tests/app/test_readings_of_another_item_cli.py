@@ -9,21 +9,16 @@ from __future__ import annotations
 import csv
 import json
 import re
-from unittest import mock
 
 import pytest
 from pypdf import PdfReader
 
-from app.certificate_presenter import CertificatePresenter, CertificateView
 from app.main import main
 from models.certificate.metadata import CertificateMetadata
 from models.readings.angles import parse_angle_deg
-from models.readings.sheet import ReadingsSheet
-from models.readings.tabular_import import map_columns, read_table
 from models.register.location import register_url
 from models.register.store import Register
-from models.registry import KINDS
-from tests.app.test_certificate_presenter import Store
+from tests.app.test_certificate_presenter import theodolite_sample_analysed, window_presenter
 
 
 def _retyped(samples_dir, path) -> None:
@@ -89,11 +84,8 @@ def test_another_items_readings_are_refused_then_issued_saying_why(samples_dir, 
 
 @pytest.mark.slow
 def test_the_window_asks_why_before_the_file_name(samples_dir, tmp_path):
-    view = mock.create_autospec(CertificateView, instance=True)
-    presenter = CertificatePresenter(view, Store(), lambda: {}, mock.Mock())
-    kind = KINDS["theodolite"]
-    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
-    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    view, presenter = window_presenter()
+    kind, rows, result = theodolite_sample_analysed(samples_dir)
     details = json.loads((samples_dir / "certificate_theodolite.json").read_text(
         encoding="utf-8"))
 

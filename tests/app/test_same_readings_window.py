@@ -6,28 +6,20 @@ issued saying so and the answer is recorded."""
 from __future__ import annotations
 
 import json
-from unittest import mock
 
 import pytest
 
-from app.certificate_presenter import CertificatePresenter, CertificateView
 from models.certificate.metadata import CertificateMetadata
-from models.readings.sheet import ReadingsSheet
-from models.readings.tabular_import import map_columns, read_table
 from models.register.location import register_url
 from models.register.store import Register
-from models.registry import KINDS
-from tests.app.test_certificate_presenter import Store
+from tests.app.test_certificate_presenter import theodolite_sample_analysed, window_presenter
 
 
 @pytest.mark.slow
 def test_the_window_asks_why_the_same_readings_are_a_calibration_of_its_own(samples_dir,
                                                                            tmp_path):
-    view = mock.create_autospec(CertificateView, instance=True)
-    presenter = CertificatePresenter(view, Store(), lambda: {}, mock.Mock())
-    kind = KINDS["theodolite"]
-    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
-    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    view, presenter = window_presenter()
+    kind, rows, result = theodolite_sample_analysed(samples_dir)
     details = json.loads((samples_dir / "certificate_theodolite.json").read_text(
         encoding="utf-8"))
     view.edit_certificate_details.return_value = CertificateMetadata.from_dict(
