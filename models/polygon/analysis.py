@@ -882,7 +882,8 @@ class PrintedDecimals(int):
 def summary(result: PolygonResult, printed: int | None = None) -> str:
     """The result as text; ``printed``: the certificate's decimal for the corrected error's
     range (:meth:`Polygon.printed_rounding`; None: two), its peak-to-peak as printed, and
-    for the harmonics (:class:`PrintedDecimals`; None or a plain int: 0.001″)."""
+    for the harmonics (:class:`PrintedDecimals`; None or a plain int: the corrected
+    error's)."""
     s, tol = result.stats, GRADE_ACCURACY_ARCSEC[result.grade]
     decimals = 2 if printed is None else printed
     # each figure rounded from its unrounded value in the unit it is read in (assessment 72 L5)
@@ -945,7 +946,9 @@ def summary(result: PolygonResult, printed: int | None = None) -> str:
     h = result.harmonics
     # to the certificate's decimal, that of its largest U (assessment 78 L6; leftovers 79:
     # the window showed "0.362″" beside the certificate's "0.4″")
-    hd = getattr(printed, "harmonics", 3)
+    # without them, to the corrected error's (the amplitudes are fitted to those errors:
+    # leftovers 80, "0.362″" beside errors printed to 0.01″)
+    hd = getattr(printed, "harmonics", decimals)
     if (harmonics_why := harmonics_reason(result)) is not None:
         out.append(no_interval(message(
             QT_TR_NOOP("Harmonics: 1st (eccentricity) {first}, 2nd (ellipticity) {second}"),

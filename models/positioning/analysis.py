@@ -782,8 +782,12 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
     def setting_units(self, settings):
         # the budget's Type B inputs are in the deviations' unit: their fields showed no
         # unit beside the set-up's "°C" and "µm/(m·K)" (leftovers 79)
+        # unit; the laboratory's CMC is in it too, the compensation table's step in the
+        # targets' (leftovers 80: both fields bare)
         unit = DEVIATION_UNITS[self.error_unit(settings)][2].strip()
-        return dict.fromkeys(DEVIATION_UNIT_SETTINGS, unit)
+        target = TARGET_UNITS.get(str(settings.get("target_unit", "deg")), "°").strip()
+        return dict.fromkeys((*DEVIATION_UNIT_SETTINGS, "cmc"), unit) | {
+            "compensation_step": target}
 
     def entry_plan(self, settings):
         runs = int(settings.get("plan_runs", 0) or 0)

@@ -80,6 +80,10 @@ from models.uncertainty.undetermined_repeatability import (
     undetermined_repeatability,
 )
 from models.uncertainty.wide_intervals import wide_intervals_statement
+from models.uncertainty.without_interval_note import (
+    figures_without_interval_note,
+    rounding_place,
+)
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_decimals", "figure_uncertainties",
            "axis_figure_values", "without_interval",
@@ -511,12 +515,6 @@ WITHHELD_FIGURE_NOTE = QT_TR_NOOP(
     "7.2.6): the two runs do not give it more closely.")
 
 
-def rounding_place(decimals: int, symbol: str) -> str:
-    """The place a figure printed to ``decimals`` is rounded to, with its unit: "10″" for
-    −1, "1″" for 0, "0.01″" for 2."""
-    return f"{fixed_places(10.0 ** -decimals, max(decimals, 0))}{symbol}"
-
-
 def withheld_figure_notes(result: PositioningResult, decimals: Mapping[str, int],
                           budget: UncertaintyBudget | None = None) -> list[Message]:
     """For each figure whose interval is withheld (:func:`withheld_figure_reasons`), why,
@@ -524,10 +522,6 @@ def withheld_figure_notes(result: PositioningResult, decimals: Mapping[str, int]
     return [message(WITHHELD_FIGURE_NOTE, figure=key, reason=reason,
                     place=rounding_place(decimals[key], result.symbol))
             for key, reason in withheld_figure_reasons(result, budget).items()]
-
-
-#: the note on the figures when none has a coverage interval (:func:`intervals_withheld`)
-FIGURES_WITHHELD_NOTE = QT_TR_NOOP("No coverage interval is given for the figures: {reason}.")
 
 
 def figures_withheld_notes(result: PositioningResult, decimals: Mapping[str, int],
@@ -539,7 +533,9 @@ def figures_withheld_notes(result: PositioningResult, decimals: Mapping[str, int
     10″" there with nothing beside it)."""
     withheld = intervals_withheld(result)
     if withheld is not None:
-        return [message(FIGURES_WITHHELD_NOTE, reason=message(withheld))]
+        # every figure is then printed to the one place its readings support (figure_decimals)
+        return [figures_without_interval_note(message(withheld), result.pooled_s(),
+                                              result.readings_step, result.symbol)]
     return withheld_figure_notes(result, decimals, budget)
 
 

@@ -269,9 +269,11 @@ def _intervals_line(result: TheodoliteResult, printed: Mapping[str, int] | None 
     the readings alone, at 95.45 %), or why there are none; each to its figure's decimal
     (``printed``: the certificate's, where known)."""
     from models.certificate.metadata import CertificateMetadata
+    from models.readings.resolution import readings_step
     from models.theodolite.figures import (
         figure_intervals_withheld,
         least_passes,
+        passes_scatter,
         readings_theodolite_figure_intervals,
         theodolite_figure_decimals,
         withheld_theodolite_figure_reasons,
@@ -279,10 +281,13 @@ def _intervals_line(result: TheodoliteResult, printed: Mapping[str, int] | None 
     from models.theodolite.report import theodolite_budget
     from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
     from models.uncertainty.wide_intervals import wide_intervals_statement
+    from models.uncertainty.without_interval_note import figures_without_interval_note
 
     withheld = figure_intervals_withheld(result)
-    if withheld is not None:
-        return message(QT_TR_NOOP("No coverage intervals: {reason}"), reason=message(withheld))
+    if withheld is not None:  # the certificate's note: why, and the place every figure is
+        # printed to, the one its readings support (leftovers 80)
+        return figures_without_interval_note(message(withheld), passes_scatter(result)[0],
+                                             readings_step(result.raw_error_arcsec), '"')
     budget = theodolite_budget(result, CertificateMetadata())
     intervals = readings_theodolite_figure_intervals(result, budget)
     parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %, from the readings alone; a "

@@ -419,12 +419,15 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
     """The ISO 230-2 figures of a run with passes, each with its coverage interval (held to
     the laboratory's CMC, the ``budget``'s floor) and the probability it reached
     (models.theodolite.figures), or why it has none."""
+    from models.readings.resolution import readings_step
     from models.theodolite.figures import (
         figure_intervals_withheld,
+        passes_scatter,
         stated_theodolite_figure_intervals,
         theodolite_figure_decimals,
         withheld_theodolite_figure_reasons,
     )
+    from models.uncertainty.without_interval_note import figures_without_interval_note
 
     if result.iso230 is None:
         return []
@@ -450,8 +453,10 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
         if iv is None:  # no interval at all: to the decimal its readings support (F5)
             said = withheld is None or any(r[2] for r in rows)  # the reason once
             rows.append((f"ISO 230-2 {key}", Exact(f"{fixed_places(v, decimals[key])}\"", float(v)),
-                         message(QT_TR_NOOP("no coverage interval")) if said else message(
-                QT_TR_NOOP("no coverage interval: {reason}"), reason=message(withheld))))
+                         message(QT_TR_NOOP("no coverage interval")) if said else
+                         figures_without_interval_note(
+                             message(withheld), passes_scatter(result)[0],
+                             readings_step(result.raw_error_arcsec), '"')))
             continue
         # the value and the interval's ends (rounded outwards, as every interval) to the
         # decimal of its half-width (GUM 7.2.6), at full precision for the DCC and the

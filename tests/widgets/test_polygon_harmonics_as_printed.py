@@ -31,3 +31,16 @@ def test_the_window_prints_the_harmonics_as_the_certificate(window, qtbot):
     shown = _harmonics(presenter.view.summary.toPlainText())
     assert shown == (first, second), (shown, row)
     assert shown == ("0.36", "0.16")  # beside the sample's U 0.34″ (0.01″)
+
+
+def test_the_command_line_prints_the_harmonics_to_the_corrected_errors_place(capsys,
+                                                                            samples_dir):
+    """Without certificate details the summary printed them to 0.001″ beside corrected errors
+    printed to 0.01″ (leftovers 80): the amplitudes, fitted to those errors, to their place."""
+    from app.main import main
+
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv")]) == 0
+    out = capsys.readouterr().out
+    errors = re.search(r"Corrected error (-?\d+\.(\d+))\"", out)
+    assert errors and len(errors.group(2)) == 2, out
+    assert _harmonics(out) == ("0.36", "0.16")

@@ -63,5 +63,7 @@ def test_no_interval_at_all_said_as_the_certificate_says_it(tmp_path, capsys):
     out = _summary(_write(once, tmp_path / "once.csv"), capsys)
     assert ("No coverage interval is given for the figures: a target was approached fewer "
             "than twice in a direction: its standard deviation is unknown, so no figure has a "
-            "coverage interval.") in out, out
+            "coverage interval. Each figure is printed rounded to 0.001\", the last place of "
+            "the step the readings were entered in (0.001\"): without an interval nothing "
+            "says it is known more closely.") in out, out  # run 2, incomplete, waits: no s
     assert "No coverage intervals:" not in out
