@@ -272,8 +272,8 @@ def _intervals_line(result: TheodoliteResult, printed: Mapping[str, int] | None 
     from models.readings.resolution import readings_step
     from models.theodolite.figures import (
         figure_intervals_withheld,
+        figures_scatter,
         least_passes,
-        passes_scatter,
         readings_theodolite_figure_intervals,
         theodolite_figure_decimals,
         withheld_theodolite_figure_reasons,
@@ -286,8 +286,10 @@ def _intervals_line(result: TheodoliteResult, printed: Mapping[str, int] | None 
     withheld = figure_intervals_withheld(result)
     if withheld is not None:  # the certificate's note: why, and the place every figure is
         # printed to, the one its readings support (leftovers 80)
-        return figures_without_interval_note(message(withheld), passes_scatter(result)[0],
-                                             readings_step(result.raw_error_arcsec), '"')
+        scatter, about_fit = figures_scatter(result)
+        return figures_without_interval_note(message(withheld), scatter,
+                                             readings_step(result.raw_error_arcsec), '"',
+                                             about_fit)
     budget = theodolite_budget(result, CertificateMetadata())
     intervals = readings_theodolite_figure_intervals(result, budget)
     parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %, from the readings alone; a "

@@ -102,7 +102,8 @@ from models.uncertainty.undetermined_repeatability import (
 
 __all__ = ["CIRCLE_NUISANCE_SHARE", "MODEL_INPUT", "PER_ANGLE_NOTE", "PER_ANGLE_STANDARD", "circle_part",
            "per_angle_note",
-           "circle_part_not_excluded", "figure_intervals_withheld", "least_passes",
+           "circle_part_not_excluded", "figure_intervals_withheld", "figures_scatter",
+           "least_passes",
            "theodolite_figure_decimals",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
            "pointing_in_figures", "pointing_in_figures_note", "pointing_per_reading",
@@ -193,6 +194,20 @@ def passes_scatter(result: TheodoliteResult) -> tuple[float, float]:
     nu = sum(float(np.sum(stats.runs - 1)) for _, stats in present)
     ss = sum(float(np.nansum((stats.runs - 1) * stats.std**2)) for _, stats in present)
     return (math.sqrt(ss / nu) if nu > 0 else 0.0), nu
+
+
+def figures_scatter(result: TheodoliteResult) -> tuple[float, bool]:
+    """The scatter that sets the place of a figure with no interval at all
+    (models.uncertainty.rounding.without_interval_decimals), and whether it is the
+    readings' about the set-up fit: the corrected error's pooled s over the passes; with
+    one pass each way (no ν) the vertical readings' residual RMS about the fit, each
+    reading's pointing noise (leftovers 80: such figures were printed to 0.001″ beside a U
+    of 1.5″)."""
+    s, nu = passes_scatter(result)
+    if nu > 0 and s > 0:
+        return s, False
+    rms = float(result.identification.residual_rms_arcsec)
+    return (rms, True) if math.isfinite(rms) and rms > 0 else (s, False)
 
 
 def pointing_per_reading(result: TheodoliteResult) -> float:
@@ -434,7 +449,7 @@ def theodolite_figure_decimals(result: TheodoliteResult, budget: UncertaintyBudg
     if held:
         intervals = held_to_cmc_figures(intervals, float(budget.floor))
     decimals = {key: interval_decimals(iv.low, iv.high) for key, iv in intervals.items()}
-    alone = without_interval_decimals(passes_scatter(result)[0],
+    alone = without_interval_decimals(figures_scatter(result)[0],
                                       readings_step(result.raw_error_arcsec))
     return {key: alone for key, value in result.iso230.figures.items()
             if math.isfinite(value) and key not in decimals} | decimals

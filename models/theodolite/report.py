@@ -422,7 +422,7 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
     from models.readings.resolution import readings_step
     from models.theodolite.figures import (
         figure_intervals_withheld,
-        passes_scatter,
+        figures_scatter,
         stated_theodolite_figure_intervals,
         theodolite_figure_decimals,
         withheld_theodolite_figure_reasons,
@@ -455,8 +455,9 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
             rows.append((f"ISO 230-2 {key}", Exact(f"{fixed_places(v, decimals[key])}\"", float(v)),
                          message(QT_TR_NOOP("no coverage interval")) if said else
                          figures_without_interval_note(
-                             message(withheld), passes_scatter(result)[0],
-                             readings_step(result.raw_error_arcsec), '"')))
+                             message(withheld), figures_scatter(result)[0],
+                             readings_step(result.raw_error_arcsec), '"',
+                             figures_scatter(result)[1])))
             continue
         # the value and the interval's ends (rounded outwards, as every interval) to the
         # decimal of its half-width (GUM 7.2.6), at full precision for the DCC and the

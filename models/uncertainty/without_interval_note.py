@@ -25,6 +25,12 @@ _BASES = {
         "Each figure is printed rounded to {place}, the first significant place of the "
         "readings' pooled standard deviation ({s}): without an interval nothing says it is "
         "known more closely."),
+    # a theodolite run of one pass each way: no scatter over the passes; the vertical
+    # readings' about the set-up fit, each reading's pointing noise
+    "fit": QT_TR_NOOP(
+        "Each figure is printed rounded to {place}, the first significant place of the "
+        "readings' scatter about the set-up fit ({s}; one pass gives no scatter over the "
+        "passes): without an interval nothing says it is known more closely."),
     "step": QT_TR_NOOP(
         "Each figure is printed rounded to {place}, the last place of the step the readings "
         "were entered in ({step}): without an interval nothing says it is known more "
@@ -56,13 +62,15 @@ def place_basis(scatter: float, step: float | None) -> str:
 
 
 def figures_without_interval_note(reason: Message | str, scatter: float, step: float | None,
-                                  symbol: str) -> Message:
+                                  symbol: str, about_fit: bool = False) -> Message:
     """The note for figures that have no interval at all: ``reason`` why, and the place they
     are printed to (from the readings' pooled ``scatter`` and their ``step``, in the unit
-    ``symbol``) and what set it."""
+    ``symbol``) and what set it; ``about_fit``: the scatter is the readings' about a fit, not
+    over repeated runs (models.theodolite.figures.figures_scatter)."""
     decimals = without_interval_decimals(scatter, step)
     basis = place_basis(scatter, step)
+    said = "fit" if basis == "scatter" and about_fit else basis
     return message(FIGURES_WITHOUT_INTERVAL_NOTE, reason=reason, basis=message(
-        _BASES[basis], place=rounding_place(decimals, symbol),
+        _BASES[said], place=rounding_place(decimals, symbol),
         s=f"{scatter:.2g}{symbol}" if basis == "scatter" else "",
         step=f"{step:g}{symbol}" if basis == "step" else ""))

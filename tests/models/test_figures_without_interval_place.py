@@ -20,6 +20,9 @@ _NOTE = (r"No coverage interval is given for the figures: (?P<reason>.*?)\. Each
 _BASES = {
     "scatter": r", the first significant place of the readings' pooled standard deviation "
                r"\((?P<s>[\d.]+)\"\): without an interval nothing says it is known more closely\.",
+    "fit": r", the first significant place of the readings' scatter about the set-up fit "
+           r"\((?P<s>[\d.]+)\"; one pass gives no scatter over the passes\): without an "
+           r"interval nothing says it is known more closely\.",
     "step": r", the last place of the step the readings were entered in \((?P<step>[\d.]+)\"\): "
             r"without an interval nothing says it is known more closely\.",
     "neither": r": the readings show neither their scatter nor the step they were entered "
@@ -33,9 +36,10 @@ def _place_of(text: str) -> str:
     return f"0.{'0' * (len(digits) - 1)}1\"" if digits else "1\""
 
 
-@pytest.mark.parametrize("step, basis", [(None, "neither"), (0.1, "step")])
+@pytest.mark.parametrize("step, basis, place", [(None, "fit", '0.1"'), (0.1, "fit", '0.1"'),
+                                                (1.0, "step", '1"')])
 def test_the_theodolite_summary_says_the_place_of_figures_without_an_interval(
-        capsys, tmp_path, step, basis):
+        capsys, tmp_path, step, basis, place):
     record = tmp_path / "once.csv"
     # one pass each way: no scatter over the passes; typed in decimal degrees or in d°m's"
     # to 0.1″
@@ -46,7 +50,9 @@ def test_the_theodolite_summary_says_the_place_of_figures_without_an_interval(
     assert note, out
     assert "read fewer than twice in a direction" in note.group("reason")
     assert re.fullmatch(_BASES[basis], note.group("basis")), note.group(0)
-    assert note.group("place") == {"neither": "0.001\"", "step": "0.1\""}[basis]
+    # one pass: the place from the readings' scatter about the set-up fit (0.23″ here), not
+    # 0.001″ (three decimals where no scatter is known), unless typed coarser
+    assert note.group("place") == place
     assert "No coverage intervals:" not in out
     # every figure printed in the summary is rounded to the place the note names
     shown = re.findall(r"\b(E(?:_up|_down)?|M|B) = (-?\d+(?:\.\d+)?)\"", out)
@@ -66,6 +72,7 @@ def test_the_note_names_what_set_the_place(scatter, step, place, basis):
     from models.uncertainty.without_interval_note import figures_without_interval_note
 
     note = figures_without_interval_note("a reason", scatter, step, '"')
+    assert note == figures_without_interval_note("a reason", scatter, step, '"', False)
     said = re.search(_NOTE, note)
     assert said and said.group("reason") == "a reason", note
     assert said.group("place") == place, note
@@ -75,3 +82,7 @@ def test_the_note_names_what_set_the_place(scatter, step, place, basis):
         assert float(quoted.group("s")) == pytest.approx(scatter, rel=0.05)
     if basis == "step":
         assert float(quoted.group("step")) == step
+    # about a fit: said so where the scatter set the place, else the same
+    fit = figures_without_interval_note("a reason", scatter, step, '"', about_fit=True)
+    assert re.fullmatch(_BASES["fit" if basis == "scatter" else basis],
+                        re.search(_NOTE, fit).group("basis")), fit
