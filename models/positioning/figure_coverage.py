@@ -21,8 +21,8 @@ and that case is not in the study's grid:
   5 and 0.0225 from K = 8, the tail itself (0.02275): the bound is exact at the least
   favourable σ, which is beyond the grid. An end that held K ≤ 3 alone could take c = 2.2
   (miss 0.017), 25 % nearer the value; it misses 6.5 % at K = 100. The lower end (Šidák over
-  the targets) is exact where σ is alike: R↑ and R↓ missed below in 13 and 20 of 800 tests of
-  such axes (1.6 %, 2.5 %): no slack either side. Their width, 3.6–4.7 × where σ is alike and
+  the targets) is exact where σ is alike: R↑ and R↓ missed below in 17 and 27 of 1000 tests
+  of such axes (1.7 %, 2.7 %): no slack either side. Their width, 3.6–6.1 × where σ is alike and
   1.7–5.3 × along the SIGMA_ALONG axes, is the price of K unbounded.
 * A, A↑, A↓ (and P): the upper end max(x̄ + k s) − min(x̄ − k s), k = 6.25 (the noncentral t
   at 5 runs, _band_span_bounds). On a flat curve of 12 targets with one target's σ K × the
@@ -34,10 +34,10 @@ and that case is not in the study's grid:
   half) where the bottom is one target of σ → 0, so each side could take the whole tail
   (0.0215 there): that moves the lower end up by 0.8–1.1 % of the width (A, A↑, P; smooth,
   rough and one-noisy-target axes): left as it is. No test of A, A↑, A↓, P or Ps_max missed
-  on either side in 3500 (σ alike, SIGMA_ALONG, cov78's axes): what the grid lacks is K ≥ 5.
+  on either side in 4150 (σ alike, SIGMA_ALONG, cov78's axes): what the grid lacks is K ≥ 5.
 * B, U_max: the upper end max(|B_i| + z u_i) is exact where one target's reversal stands
   Δ above an even reversal and Δ grows (its own bound, no correction for the m targets); its
-  lower end missed 6 of 800, 22 of 2100 and 1 of 600 tests: no slack.
+  lower end missed 7 of 1000, 22 of 2400 and 1 of 750 tests: no slack.
 * E, E↑, E↓ with Type B inputs: the envelope k · pair_u (the reference's errors within their
   U, of any shape) is a bias; the intervals hold it at its least favourable shape, the curve's
   own against it (it flattens the measured curve). An audit's systematic drawn at random
@@ -50,7 +50,7 @@ and that case is not in the study's grid:
   150 above against the curve).
 
 The least favourable cases' misses: tests/benchmarks/least_favourable_width_study.py; the
-tests per side and the widths: this study's cases and cov78's rig (1100–2100 tests a group).
+tests per side and the widths: this study's cases and cov78's rig (750–2400 tests a group).
 """
 
 from __future__ import annotations
