@@ -8,6 +8,49 @@ than the binomial test allows at the probability stated beside the figure (one-s
 a correct interval fails it once in a hundred studies). Its width is stated beside it as a
 multiple of the width a correct interval needs (2 z σ of measured − truth over the tests
 of each case); 1.6 × is the aim, stated, not a condition of passing.
+
+What sets the widths (#39's widths, wide80; an assessor can check each number with the
+scripts named). The needed width is that of the case at hand; an interval that must hold
+whatever σ and the curve do along the axis is as wide as their least favourable case needs,
+and that case is not in the study's grid:
+
+* R↑, R↓ (and R's 4σ terms, Ps_max): the upper end is 4 c max s_i, c = √(ν/χ²_ν(tail)) = 2.95
+  at 5 runs (models.uncertainty.figure_intervals._repeatability_bounds). With 12 targets and
+  one target's σ K × the others', its s drawn low hides it among theirs, and the end misses
+  (4·10⁵ draws) 0.0000 at K ≤ 2, 0.0001 at K = 3 (the study's "one"), 0.0057 at 4, 0.0177 at
+  5 and 0.0225 from K = 8, the tail itself (0.02275): the bound is exact at the least
+  favourable σ, which is beyond the grid. An end that held K ≤ 3 alone could take c = 2.2
+  (miss 0.017), 25 % nearer the value; it misses 6.5 % at K = 100. The lower end (Šidák over
+  the targets) is exact where σ is alike: R↑ and R↓ missed below in 17 and 27 of 1000 tests
+  of such axes (1.7 %, 2.7 %): no slack either side. Their width, 3.6–6.1 × where σ is alike and
+  1.7–5.3 × along the SIGMA_ALONG axes, is the price of K unbounded.
+* A, A↑, A↓ (and P): the upper end max(x̄ + k s) − min(x̄ − k s), k = 6.25 (the noncentral t
+  at 5 runs, _band_span_bounds). On a flat curve of 12 targets with one target's σ K × the
+  others' it misses 0 at K ≤ 3, 0.0015 at 4, 0.0088 at 5 and 0.018 from K = 8 (0.8 of the
+  tail; the tail itself where the top and the bottom are two targets and one σ is far the
+  larger); k = 4.2 would hold K ≤ 3 (0.017) and misses 7.7 % at K = 100. The lower end takes
+  each band end at half Šidák's share (the top and the bottom a half of the tail each): the
+  sum of the two excesses misses at 0.0007 on a flat curve of alike σ and at 0.0106 (the
+  half) where the bottom is one target of σ → 0, so each side could take the whole tail
+  (0.0215 there): that moves the lower end up by 0.8–1.1 % of the width (A, A↑, P; smooth,
+  rough and one-noisy-target axes): left as it is. No test of A, A↑, A↓, P or Ps_max missed
+  on either side in 4150 (σ alike, SIGMA_ALONG, cov78's axes): what the grid lacks is K ≥ 5.
+* B, U_max: the upper end max(|B_i| + z u_i) is exact where one target's reversal stands
+  Δ above an even reversal and Δ grows (its own bound, no correction for the m targets); its
+  lower end missed 7 of 1000, 22 of 2400 and 1 of 750 tests: no slack.
+* E, E↑, E↓ with Type B inputs: the envelope k · pair_u (the reference's errors within their
+  U, of any shape) is a bias; the intervals hold it at its least favourable shape, the curve's
+  own against it (it flattens the measured curve). An audit's systematic drawn at random
+  (cov78) is not that shape: its 150 tests of a spike at the σ × 3 target with the sample's
+  inputs missed above in 0, but with the reference against the curve in 7, 9 and 3 of 150
+  (E, E↑, E↓: 4.7 %, 6 %, 2 % against 7.5 %, 8 %, 6.5 % printed); the noisy target's pairs'
+  bound with the inputs in quadrature (GUM's way, not the envelope's) missed E↑ above in 9 of
+  60 such tests (15 %), the additive bound in 4. The +10 % cov78 found on E is forced; M's and
+  Pa's pairs' bound now shares the tail (figure_intervals: 1.6–2.1 % narrower there, 4 → 6 of
+  150 above against the curve).
+
+The least favourable cases' misses: tests/benchmarks/least_favourable_width_study.py; the
+tests per side and the widths: this study's cases and cov78's rig (750–2400 tests a group).
 """
 
 from __future__ import annotations

@@ -694,13 +694,30 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         shift = pair_widening(probability, pair, pair_spent, pair_envelope)
         for key in TYPE_B_FIGURES & out.keys() & bare.keys() & wide.keys():
             here, there, far = out[key], bare[key], wide[key]
+            far_high = far.high
             if pair_envelope and pair_bias_level and shift > 0.0 and \
                     key in BIAS_LEVEL_FIGURES:
                 level = bias_aware_tail(tail, shift, _pivot_spread(far, tail))
                 far = _intervals(plain, 1.0 - 2.0 * level, frozenset({key}))[key]
+                far_high = far.high
+            elif pair_envelope and pair_bias_level and shift > 0.0 and \
+                    key in UPPER_REACH_FIGURES:
+                # M, Pa: the bootstrap's interval stays at the tail (BIAS_LEVEL_FIGURES), but
+                # a named target's own pairs' bound, a Student bound of its own, shares the
+                # tail with the envelope as E's interval does (bias_aware_tail): at the bias
+                # that lowers the figure, the one its upper end must hold, the lower end has
+                # 2 k · pair to spare (until 0.8.28 at the tail, added to the envelope whole:
+                # cov78's MEDIUM, M +5.5 % where the inputs' widening had covered alone)
+                level = bias_aware_tail(tail, shift, _pivot_spread(far, tail))
+                pairs = _noisy_target_bounds(plain.x, plain.s, plain.n, level,
+                                             frozenset({key}))
+                if key in pairs and level > tail:
+                    bare_far = _intervals(plain, 1.0 - outside, frozenset({key}),
+                                          noisy_high=False)[key]
+                    far_high = max(bare_far.high, pairs[key][1])
             out[key] = FigureInterval(here.value, max(min(here.low, there.low,
                                                           far.low - shift), 0.0),
-                                      max(here.high, there.high, far.high + shift),
+                                      max(here.high, there.high, far_high + shift),
                                       here.probability)
     return out
 
@@ -827,11 +844,14 @@ def _simulation(means, stds, runs, type_b_u, seed, trials, figures, outer, inner
 BOUND_FIGURES = frozenset({"R", "R_up", "R_down", "Ps_max", "A", "A_up", "A_down", "P"})
 
 
-def _intervals(drawn: _Simulation, probability: float, keys: frozenset[str] | None = None
-               ) -> dict[str, FigureInterval]:
+def _intervals(drawn: _Simulation, probability: float, keys: frozenset[str] | None = None,
+               noisy_high: bool = True) -> dict[str, FigureInterval]:
     """The intervals at ``probability`` of a bootstrap (without the union with the
     readings' own without the Type B inputs, which :func:`figure_intervals` makes); with
-    ``keys``, of those figures only."""
+    ``keys``, of those figures only. ``noisy_high`` False: the upper end of the ranges of the
+    means without a named target's own pairs' bound (:func:`_noisy_target_bounds`; the
+    lower end moved as with it), which :func:`figure_intervals` then takes at a level of its
+    own."""
     x, sig_mean, n, shared, pivots = drawn.x, drawn.sig_mean, drawn.n, drawn.shared, drawn.pivots
     tail = 0.5 * (1.0 - probability)
     levels = {k: (tail, 1.0 - tail) for k in pivots}
@@ -867,8 +887,8 @@ def _intervals(drawn: _Simulation, probability: float, keys: frozenset[str] | No
             if key in noisy_bounds:
                 # a target whose scatter stands out (_scatter_outliers): its own pairs' bounds
                 # (_noisy_target_bounds), which the worlds' alike σ do not give
-                shift, noisy_high = noisy_bounds[key]
-                low, high = low - shift, max(high, noisy_high)
+                shift, pairs_high = noisy_bounds[key]
+                low, high = low - shift, max(high, pairs_high) if noisy_high else high
         if guard is not None and key in ("B", "U_max"):
             # half the tail each: the mean reversal's bound, and the lowest of the bootstrap's
             # (both worlds) and the simultaneous bound, as the lower end was before 0.8.14
