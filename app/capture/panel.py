@@ -97,6 +97,7 @@ from app.capture.worker import CaptureWorker, Fault, NoTarget, Reading
 from models.capture.allan import allan_deviation, last_even_run
 from models.capture.guidance import degrees_text
 from models.capture.raw_record import FRAMES_PER_BLOCK, FrameBlocks, frame_text
+from models.capture.repeat_check import turned_away
 from models.capture.stability import (
     ANGLE_UNITS,
     OUT_OF_VIEW_GAP_S,
@@ -807,6 +808,11 @@ class CapturePanel(QDockWidget):
         #: rows filled by Take reading or auto-take: (workbench, row, values of the first
         #: instrument at full precision)
         self.taken: list[tuple[str, int, tuple[float, ...]]] = []
+        #: the table seen turning since the last take: the seconds the first instrument's
+        #: mirror was out of view (None: not seen); a repeat of a point after it is refused
+        #: (:meth:`_not_this_points`), and — once that was said (``_turn_said``) — taken by hand
+        self._turn_seen: float | None = None
+        self._turn_said = False
         #: per workbench, the columns an instrument has filled or was set to fill: the
         #: plan's nominal is never written there (#60: a readout's link gave up and the
         #: plan's expected encoder value went into its column as if read)
@@ -1176,6 +1182,7 @@ class CapturePanel(QDockWidget):
         self._guide_due = 0.0
         self.next_reading = None
         self.guide.setText("")
+        self._turn_seen, self._turn_said = None, False
         self._gate_changed()
 
     # ------------------------------------------------------------ where it is open
@@ -1761,6 +1768,9 @@ class CapturePanel(QDockWidget):
             return  # a frame marked not valid among good ones: no gap
         if link.frames:
             link.gap_before = link.frames[-1][0]
+        if link is self.links[0]:
+            # the table seen turning (a repeat of the point after it is not its reading)
+            self._turn_seen = max(self._turn_seen or 0.0, reading.time_s - gone.time_s)
         if link is self.links[0] and self.gate is not None:
             self.gate.restart()
             if self._table_link() is None:
@@ -2003,6 +2013,14 @@ class CapturePanel(QDockWidget):
         # a position in degrees in its target's turn (positioning's measured: a readout's
         # 359.5 at target 0° is −0.5); the raw trace keeps it as sent
         taking = self._in_target_turn(presenter, row, place, targets, taking)
+        self.update_guide()
+        # a repeat of a point that cannot be this point's (the table at another face): never
+        # filed under it (capture80: face 3's reading went in as face 2's reading 2)
+        refused = self._not_this_points(presenter, row, targets, taking, by_hand=values is None)
+        if refused:
+            self._turn_said = True
+            self.take_note.setText(refused)
+            return ""
         changes = []
         steps: dict[int, float] = {}
         for link, i, key in targets:
@@ -2014,7 +2032,6 @@ class CapturePanel(QDockWidget):
             changes.append((row, column, text))
             # the step the cell was rounded to: within half of it the cell is as captured
             steps[link.slot] = max(steps.get(link.slot, 0.0), step)
-        self.update_guide()
         # a reading that does not match its row's point (another face, another target): said
         # beside the guidance and its cell marked in the table (live76 F1: later takes went
         # into another face's row without a word)
@@ -2100,6 +2117,7 @@ class CapturePanel(QDockWidget):
             # what the take could not place, or took far from where the plan expects it:
             # said until the next take (the reading is kept)
             self.take_note.setText("\n".join(notes))
+            self._turn_seen, self._turn_said = None, False  # a turn is of the takes after
             table.next_row(row)
         finally:
             model.undo_stack.endMacro()
@@ -2112,6 +2130,62 @@ class CapturePanel(QDockWidget):
         if projects is not None and hasattr(projects, "autosave_now"):
             projects.autosave_now()
         return f"row {row + 1}"
+
+    def _not_this_points(self, presenter, row: int, targets, taking, by_hand: bool) -> str:
+        """Why a take cannot be the repeat of its point the guidance names (reading k > 1 of
+        a face, :attr:`next_reading`), or "" when it can be: the table's encoder more than
+        half the pitch from the face's first reading, or — with no encoder in the take — the
+        table seen turning since the last take (:attr:`_turn_seen`: the mirror out of view).
+        models/capture/repeat_check.py says why those limits. The autocollimator alone cannot
+        tell whether the table came back to the face: after the refusal is said, a take by
+        hand (F9) is the technician's word that it did."""
+        step = self.next_reading
+        if step is None or step.reading <= 1:
+            return ""
+        sheet = presenter.table_model.sheet
+        keys = [c.key for c in sheet.columns]
+        # the point's earlier readings: the used rows just above the take's (the guide's)
+        earlier = [r for r in range(min(row, sheet.row_count) - 1, -1, -1)
+                   if any(sheet.text(r, c).strip() for c in range(sheet.column_count))]
+        earlier = earlier[:step.reading - 1]
+        if len(earlier) < step.reading - 1:
+            return ""
+        first = earlier[-1]
+        face = step.fill.get("position", "").strip()
+        if not face and "position" in keys:
+            face = sheet.text(first, keys.index("position")).strip()
+        for link, i, key in targets:
+            got, unit, _ = taking[link.slot]
+            if key not in TABLE_COLUMNS or unit != "deg" or i >= len(got):
+                continue
+            try:
+                was = float(parse_angle_deg(sheet.text(first, keys.index(key))))
+            except (ValueError, TypeError, OverflowError):
+                continue
+            if not math.isfinite(was):
+                continue
+            # the encoder is in the take: it says where the table is, whatever the mirror did
+            away = turned_away(float(got[i]), was, step.pitch_deg)
+            if away is None:
+                return ""
+            return tr("Not taken: face {face}'s reading {k} of {n} is due, but the table is at "
+                      "another face: {column} {value}° is {off}° from the {first}° of its "
+                      "reading 1 (a repeat reads within half the {pitch}° between faces). Turn "
+                      "back to face {face} and take reading {k} there; the readings taken are "
+                      "kept").format(
+                face=face, k=step.reading, n=step.of, column=self.column_name(key),
+                value=f"{round(away.value_deg, 4) % 360.0:.4f}", off=f"{away.off_deg:+.1f}",
+                first=f"{round(away.first_deg, 4) % 360.0:.4f}",
+                pitch=degrees_text(2.0 * away.limit_deg))
+        if self._turn_seen is None or (by_hand and self._turn_said):
+            return ""
+        return tr("Not taken: face {face}'s reading {k} of {n} is due, but the table was seen "
+                  "turning since its reading {last} (the mirror out of view for {seconds} s). "
+                  "Turn back to face {face}, null the autocollimator and press F9 (Take "
+                  "reading): without the table's encoder the faces cannot be told apart. The "
+                  "readings taken are kept").format(
+            face=face, k=step.reading, n=step.of, last=step.reading - 1,
+            seconds=f"{self._turn_seen:.1f}")
 
     def _not_placed(self, link: InstrumentLink) -> str:
         """Why a take holds no reading of ``link`` (connected, with a reading to give)."""
