@@ -8,7 +8,9 @@ the raw frames.
 
 Each connection is a :class:`app.capture.worker.CaptureWorker` (its own thread); a timer
 empties their queues every 20 ms, so the window never waits for an instrument. A value
-not refreshed for ``STALE_S`` (or after a fault) is greyed and marked "link lost"; the
+after which the worker has seen no reading for ``STALE_S`` of its own clock (or after a
+fault) is greyed and marked "link lost" — never on the window's clock: a worker starved of
+CPU is no lost link (capture80); the
 statistics and the guidance start afresh on a new connection and when the workbench in
 front changes. The panel's body scrolls rather than widening the window: the window never
 grows past its screen.
@@ -93,7 +95,7 @@ from PySide6.QtWidgets import (
 )
 
 from app.capture.instruments import INSTRUMENTS
-from app.capture.worker import CaptureWorker, Fault, NoTarget, Reading
+from app.capture.worker import CaptureWorker, Fault, NoTarget, Reading, Stale
 from models.capture.allan import allan_deviation, last_even_run
 from models.capture.guidance import degrees_text
 from models.capture.raw_record import FRAMES_PER_BLOCK, FrameBlocks, frame_text
@@ -161,7 +163,8 @@ DRAIN_BUDGET_S = 0.010
 #: the live readout's texts are redrawn at most this often (a 250 Hz stream would
 #: otherwise repaint the panel at every 20 ms tick); the newest reading is always shown
 SHOW_EVERY_S = 0.1
-#: a value not refreshed for this long is greyed and marked "link lost"
+#: a value after which the worker has read no reading for this long (its clock, from a read
+#: begun after it: app/capture/worker.py Stale) is greyed and marked "link lost"
 STALE_S = 1.0
 #: the panel's narrowest: it scrolls rather than widening the window
 PANEL_MIN_WIDTH = 240
@@ -483,7 +486,6 @@ class InstrumentLink:
         self.taken_frame = -1
         self.session: _Session | None = None
         self.last_fault = ""  # the fault the link recovered from, said while connected
-        self.fresh_at = 0.0  # perf_counter time of the newest reading
         #: the time of the last frame before the link's last fault: the Allan deviation is of
         #: the frames after it (a reconnection is a gap in the series, however short)
         self.gap_before = -math.inf
@@ -624,10 +626,11 @@ class InstrumentLink:
         worker_options.setdefault("retries", WINDOW_RETRIES)
         worker_options.setdefault("poll_interval_s", 1.0 / WINDOW_POLL_RATE_HZ)
         worker_options.setdefault("request_interval_s", 1.0 / WINDOW_POLL_RATE_HZ)
+        # the value is stale when the worker says so, on its clock (never the window's)
+        worker_options.setdefault("stale_s", STALE_S)
         self.worker = CaptureWorker(port, INSTRUMENTS[kind](), baud, **worker_options).start()
         self.session = _Session(self.panel.window_.current.kind.key, kind, self.worker)
         self.last_fault = ""
-        self.fresh_at = time.perf_counter()
         self.status.setStyleSheet("")
         self.status.setText(tr("Connecting to {port}…").format(port=port))
         self.disconnect_button.setEnabled(True)
@@ -1665,12 +1668,11 @@ class CapturePanel(QDockWidget):
         active = [link for link in self.links if link.worker is not None]
         for link in active:  # each its share: a fast stream never starves the other link
             self._drain_link(link, link.worker, time.perf_counter() + DRAIN_BUDGET_S / len(active))
-        now = time.perf_counter()
         for link in self.links:
+            # a worker whose thread ended without a word (never: it says a final fault) —
+            # its value is no longer refreshed. Silence is the worker's to judge (Stale)
             if link.worker is not None and link.latest is not None and not link.lost \
-                    and now - link.fresh_at > STALE_S:
-                if link.no_target is not None:  # frames come, no measurement: said so
-                    link.say_no_target()
+                    and not link.worker.running and link.worker.events.empty():
                 link.mark_lost(True)
 
     def _drain_link(self, link: InstrumentLink, worker: CaptureWorker,
@@ -1700,6 +1702,13 @@ class CapturePanel(QDockWidget):
                 if link.no_target is None:
                     link.no_target = event
                 continue
+            if isinstance(event, Stale):
+                # no reading for STALE_S, as the worker saw it itself
+                if link.latest is not None:
+                    if link.no_target is not None:  # frames come, no measurement: said so
+                        link.say_no_target()
+                    link.mark_lost(True)
+                continue
             if link.no_target is not None:
                 self._target_back(link, event)
             link.received += 1
@@ -1712,7 +1721,6 @@ class CapturePanel(QDockWidget):
                 if link.session.behind() >= FRAMES_PER_BLOCK:
                     link.session.catch_up()  # a block's worth converted, not hours at a save
                 link.release_raw()  # and the worker's memory holds only what is not
-            link.fresh_at = time.perf_counter()
             fresh = True
             if first:
                 if event.time_s >= self._guide_due:
