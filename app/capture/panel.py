@@ -394,11 +394,18 @@ class DemonstrationProcess:
 
 class _ShownWhenSaid(QLabel):
     """A label that takes no room while it says nothing (an empty one left a blank band at
-    the top of a panel docked at a side)."""
+    the top of a panel docked at a side); ``said()`` after each new text."""
+
+    def __init__(self, text: str = "", said=None) -> None:
+        super().__init__(text)
+        self._said = said
 
     def setText(self, text: str) -> None:  # noqa: N802 (Qt's name)
+        changed = text != self.text()
         super().setText(text)
         self.setVisible(bool(text))
+        if changed and self._said is not None:
+            self._said()
 
 
 class _Session:
@@ -837,7 +844,7 @@ class CapturePanel(QDockWidget):
             self.body_layout.addWidget(section, 0)
         self._sections = sections
         self.body_layout.addStretch(1)
-        self.guide = _ShownWhenSaid("")
+        self.guide = _ShownWhenSaid("", said=self._show_whole_note)
         self.guide.setVisible(False)
         self.guide.setStyleSheet("font-size: 12pt; font-weight: bold; color: #0b5394;")
         self.stability = QLabel("")
@@ -880,7 +887,7 @@ class CapturePanel(QDockWidget):
         auto_form.addRow(self.dwell_label, self.dwell_box)
         self.auto_state = QLabel("")
         #: why a take was refused, or auto-take switched off (until the next take)
-        self.take_note = _ShownWhenSaid("")
+        self.take_note = _ShownWhenSaid("", said=self._show_whole_note)
         self.take_note_of: str | None = None  # the workbench whose take it is of
         #: the undo stack and its index just after the take the note speaks of (None: the
         #: note is of no take): the take undone (Edit › Undo), its note goes with it
@@ -971,6 +978,36 @@ class CapturePanel(QDockWidget):
             home.insertWidget(index, widget)
         self.header.setVisible(not bottom)
         self._keep_plots()
+        if bottom:  # a note said before, whole at the bottom too (once the parts are laid out)
+            QTimer.singleShot(0, self._show_whole_note)
+
+    def _show_whole_note(self) -> None:
+        """Docked at the bottom, the panel grows (up to :data:`BOTTOM_PANEL_MAX_HEIGHT`, as the
+        window has room) to show the guidance and the take note whole: they are the first of
+        its parts side by side, in the part that scrolls, and an 88 px high panel on a
+        1280×720 screen showed two lines of a refused take's note (capture80: "Not taken:
+        face 6's reading 2 of 2 is due, but the table is at another face: encoder a" — the
+        rest, and what to do, out of sight). Never shrinks it: the technician's height
+        stays."""
+        window = self.window_
+        if not hasattr(self, "scroll") or not hasattr(window, "resizeDocks") \
+                or self.isHidden() or self.isFloating() \
+                or window.dockWidgetArea(self) != Qt.DockWidgetArea.BottomDockWidgetArea:
+            return
+        column = self._sections[0]
+        layout = column.layout()
+        width = column.width()
+        if layout is None or width <= 0:
+            return
+        layout.activate()
+        needed = layout.heightForWidth(width) if layout.hasHeightForWidth() \
+            else layout.sizeHint().height()
+        # the dock's title and the body's margins around its parts
+        around = self.height() - self.scroll.viewport().height() \
+            + self.body_layout.contentsMargins().top() + self.body_layout.contentsMargins().bottom()
+        wanted = min(BOTTOM_PANEL_MAX_HEIGHT, needed + around)
+        if wanted > self.height():
+            window.resizeDocks([self], [wanted], Qt.Orientation.Vertical)
 
     def _keep_plots(self, *_args) -> None:
         """While the panel is in sight at the bottom, every workbench's plot keeps ~200 px of
