@@ -149,3 +149,33 @@ def test_a_worker_that_reads_nothing_says_so_on_its_clock():
     last = [e for e in events if isinstance(e, Reading)][-1]
     assert stale.since_s == pytest.approx(last.time_s, abs=1e-6)
     assert 0.5 <= stale.time_s - stale.since_s < 0.6
+
+
+class _StarvedSignals(_StarvedStream):
+    """A sin/cos stream: a sample line per read, and read ``starved_at`` empty 1.5 s late."""
+
+    def read(self, _n: int = 1) -> bytes:
+        self.reads += 1
+        if self.reads == self.starved_at:
+            time.sleep(self.starved_s)
+            return b""
+        time.sleep(0.01)
+        return b"0.1,0.2\n" * (150 if self.reads == self.starved_at + 1 else 1)
+
+
+def test_a_signal_stream_worker_starved_after_an_empty_read_is_no_lost_link():
+    """The fringe's signal stream worker judges its silence the same way."""
+    from app.capture.signal_worker import SampleBlock, SignalStreamWorker
+    from app.capture.worker import Fault
+
+    port = _StarvedSignals()
+    worker = SignalStreamWorker("FAKE", silence_s=1.0, retries=1, retry_pause_s=0.01,
+                                opener=lambda _port, _baud: port).start()
+    deadline = time.monotonic() + 10.0
+    while time.monotonic() < deadline and port.reads < port.starved_at + 20:
+        time.sleep(0.01)
+    worker.stop()
+    events = worker.drain()
+    assert not any(isinstance(e, Fault) for e in events), [e for e in events
+                                                           if isinstance(e, Fault)]
+    assert sum(e.u_sin.size for e in events if isinstance(e, SampleBlock)) >= 150
