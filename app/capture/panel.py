@@ -65,7 +65,7 @@ import subprocess
 import sys
 import time
 from collections import deque
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from datetime import datetime, timedelta
 from pathlib import Path
 
@@ -396,7 +396,7 @@ class _ShownWhenSaid(QLabel):
     """A label that takes no room while it says nothing (an empty one left a blank band at
     the top of a panel docked at a side); ``said()`` after each new text."""
 
-    def __init__(self, text: str = "", said=None) -> None:
+    def __init__(self, text: str = "", said: Callable[[], None] | None = None) -> None:
         super().__init__(text)
         self._said = said
 
@@ -990,7 +990,8 @@ class CapturePanel(QDockWidget):
         rest, and what to do, out of sight). Never shrinks it: the technician's height
         stays."""
         window = self.window_
-        if not hasattr(self, "scroll") or not hasattr(window, "resizeDocks") \
+        viewport = self.body.parentWidget() if hasattr(self, "body") else None
+        if viewport is None or not hasattr(window, "resizeDocks") \
                 or self.isHidden() or self.isFloating() \
                 or window.dockWidgetArea(self) != Qt.DockWidgetArea.BottomDockWidgetArea:
             return
@@ -1003,7 +1004,7 @@ class CapturePanel(QDockWidget):
         needed = layout.heightForWidth(width) if layout.hasHeightForWidth() \
             else layout.sizeHint().height()
         # the dock's title and the body's margins around its parts
-        around = self.height() - self.scroll.viewport().height() \
+        around = self.height() - viewport.height() \
             + self.body_layout.contentsMargins().top() + self.body_layout.contentsMargins().bottom()
         wanted = min(BOTTOM_PANEL_MAX_HEIGHT, needed + around)
         if wanted > self.height():
@@ -1706,8 +1707,9 @@ class CapturePanel(QDockWidget):
         for link in active:  # each its share: a fast stream never starves the other link
             self._drain_link(link, link.worker, time.perf_counter() + DRAIN_BUDGET_S / len(active))
         for link in self.links:
-            # a worker whose thread ended without a word (never: it says a final fault) —
-            # its value is no longer refreshed. Silence is the worker's to judge (Stale)
+            # a worker whose thread ended without a word (ending by itself it says a final
+            # fault; a crash would not): its value is no longer refreshed. Silence is the
+            # worker's own to judge (Stale, its faults), never this timer's
             if link.worker is not None and link.latest is not None and not link.lost \
                     and not link.worker.running and link.worker.events.empty():
                 link.mark_lost(True)
@@ -2189,13 +2191,18 @@ class CapturePanel(QDockWidget):
             return ""
         sheet = presenter.table_model.sheet
         keys = [c.key for c in sheet.columns]
-        # the point's earlier readings: the used rows just above the take's (the guide's)
-        earlier = [r for r in range(min(row, sheet.row_count) - 1, -1, -1)
-                   if any(sheet.text(r, c).strip() for c in range(sheet.column_count))]
-        earlier = earlier[:step.reading - 1]
-        if len(earlier) < step.reading - 1:
+        # the point's earlier readings: the used rows just above the take's (the guide's);
+        # the first of them is its reading 1
+        earlier = 0
+        first = min(row, sheet.row_count) - 1
+        while first >= 0:
+            if any(sheet.text(first, c).strip() for c in range(sheet.column_count)):
+                earlier += 1
+                if earlier == step.reading - 1:
+                    break
+            first -= 1
+        if first < 0:
             return ""
-        first = earlier[-1]
         face = step.fill.get("position", "").strip()
         if not face and "position" in keys:
             face = sheet.text(first, keys.index("position")).strip()

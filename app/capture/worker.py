@@ -186,7 +186,7 @@ class CaptureWorker(LinkThread):
         #: the instrument did not stream when asked to and is read by single-shot requests
         self.polling = False
         self._open = opener
-        self.events: queue.Queue[Reading | Fault | NoTarget] = queue.Queue()
+        self.events: queue.Queue[Reading | Fault | NoTarget | Stale] = queue.Queue()
         #: lines refused (noise, a wrong baud rate, an invalid axis, an error reply)
         self.refused = 0
         self.refusals: list[str] = []
