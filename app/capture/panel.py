@@ -8,7 +8,9 @@ the raw frames.
 
 Each connection is a :class:`app.capture.worker.CaptureWorker` (its own thread); a timer
 empties their queues every 20 ms, so the window never waits for an instrument. A value
-not refreshed for ``STALE_S`` (or after a fault) is greyed and marked "link lost"; the
+after which the worker has seen no reading for ``STALE_S`` of its own clock (or after a
+fault) is greyed and marked "link lost" — never on the window's clock: a worker starved of
+CPU is no lost link (capture80); the
 statistics and the guidance start afresh on a new connection and when the workbench in
 front changes. The panel's body scrolls rather than widening the window: the window never
 grows past its screen.
@@ -63,7 +65,7 @@ import subprocess
 import sys
 import time
 from collections import deque
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from datetime import datetime, timedelta
 from pathlib import Path
 
@@ -93,10 +95,11 @@ from PySide6.QtWidgets import (
 )
 
 from app.capture.instruments import INSTRUMENTS
-from app.capture.worker import CaptureWorker, Fault, NoTarget, Reading
+from app.capture.worker import CaptureWorker, Fault, NoTarget, Reading, Stale
 from models.capture.allan import allan_deviation, last_even_run
 from models.capture.guidance import degrees_text
 from models.capture.raw_record import FRAMES_PER_BLOCK, FrameBlocks, frame_text
+from models.capture.repeat_check import turned_away
 from models.capture.stability import (
     ANGLE_UNITS,
     OUT_OF_VIEW_GAP_S,
@@ -160,7 +163,8 @@ DRAIN_BUDGET_S = 0.010
 #: the live readout's texts are redrawn at most this often (a 250 Hz stream would
 #: otherwise repaint the panel at every 20 ms tick); the newest reading is always shown
 SHOW_EVERY_S = 0.1
-#: a value not refreshed for this long is greyed and marked "link lost"
+#: a value after which the worker has read no reading for this long (its clock, from a read
+#: begun after it: app/capture/worker.py Stale) is greyed and marked "link lost"
 STALE_S = 1.0
 #: the panel's narrowest: it scrolls rather than widening the window
 PANEL_MIN_WIDTH = 240
@@ -390,11 +394,18 @@ class DemonstrationProcess:
 
 class _ShownWhenSaid(QLabel):
     """A label that takes no room while it says nothing (an empty one left a blank band at
-    the top of a panel docked at a side)."""
+    the top of a panel docked at a side); ``said()`` after each new text."""
+
+    def __init__(self, text: str = "", said: Callable[[], None] | None = None) -> None:
+        super().__init__(text)
+        self._said = said
 
     def setText(self, text: str) -> None:  # noqa: N802 (Qt's name)
+        changed = text != self.text()
         super().setText(text)
         self.setVisible(bool(text))
+        if changed and self._said is not None:
+            self._said()
 
 
 class _Session:
@@ -482,7 +493,6 @@ class InstrumentLink:
         self.taken_frame = -1
         self.session: _Session | None = None
         self.last_fault = ""  # the fault the link recovered from, said while connected
-        self.fresh_at = 0.0  # perf_counter time of the newest reading
         #: the time of the last frame before the link's last fault: the Allan deviation is of
         #: the frames after it (a reconnection is a gap in the series, however short)
         self.gap_before = -math.inf
@@ -623,10 +633,11 @@ class InstrumentLink:
         worker_options.setdefault("retries", WINDOW_RETRIES)
         worker_options.setdefault("poll_interval_s", 1.0 / WINDOW_POLL_RATE_HZ)
         worker_options.setdefault("request_interval_s", 1.0 / WINDOW_POLL_RATE_HZ)
+        # the value is stale when the worker says so, on its clock (never the window's)
+        worker_options.setdefault("stale_s", STALE_S)
         self.worker = CaptureWorker(port, INSTRUMENTS[kind](), baud, **worker_options).start()
         self.session = _Session(self.panel.window_.current.kind.key, kind, self.worker)
         self.last_fault = ""
-        self.fresh_at = time.perf_counter()
         self.status.setStyleSheet("")
         self.status.setText(tr("Connecting to {port}…").format(port=port))
         self.disconnect_button.setEnabled(True)
@@ -807,6 +818,11 @@ class CapturePanel(QDockWidget):
         #: rows filled by Take reading or auto-take: (workbench, row, values of the first
         #: instrument at full precision)
         self.taken: list[tuple[str, int, tuple[float, ...]]] = []
+        #: the table seen turning since the last take: the seconds the first instrument's
+        #: mirror was out of view (None: not seen); a repeat of a point after it is refused
+        #: (:meth:`_not_this_points`), and — once that was said (``_turn_said``) — taken by hand
+        self._turn_seen: float | None = None
+        self._turn_said = False
         #: per workbench, the columns an instrument has filled or was set to fill: the
         #: plan's nominal is never written there (#60: a readout's link gave up and the
         #: plan's expected encoder value went into its column as if read)
@@ -828,7 +844,7 @@ class CapturePanel(QDockWidget):
             self.body_layout.addWidget(section, 0)
         self._sections = sections
         self.body_layout.addStretch(1)
-        self.guide = _ShownWhenSaid("")
+        self.guide = _ShownWhenSaid("", said=self._show_whole_note)
         self.guide.setVisible(False)
         self.guide.setStyleSheet("font-size: 12pt; font-weight: bold; color: #0b5394;")
         self.stability = QLabel("")
@@ -871,7 +887,7 @@ class CapturePanel(QDockWidget):
         auto_form.addRow(self.dwell_label, self.dwell_box)
         self.auto_state = QLabel("")
         #: why a take was refused, or auto-take switched off (until the next take)
-        self.take_note = _ShownWhenSaid("")
+        self.take_note = _ShownWhenSaid("", said=self._show_whole_note)
         self.take_note_of: str | None = None  # the workbench whose take it is of
         #: the undo stack and its index just after the take the note speaks of (None: the
         #: note is of no take): the take undone (Edit › Undo), its note goes with it
@@ -962,6 +978,37 @@ class CapturePanel(QDockWidget):
             home.insertWidget(index, widget)
         self.header.setVisible(not bottom)
         self._keep_plots()
+        if bottom:  # a note said before, whole at the bottom too (once the parts are laid out)
+            QTimer.singleShot(0, self._show_whole_note)
+
+    def _show_whole_note(self) -> None:
+        """Docked at the bottom, the panel grows (up to :data:`BOTTOM_PANEL_MAX_HEIGHT`, as the
+        window has room) to show the guidance and the take note whole: they are the first of
+        its parts side by side, in the part that scrolls, and an 88 px high panel on a
+        1280×720 screen showed two lines of a refused take's note (capture80: "Not taken:
+        face 6's reading 2 of 2 is due, but the table is at another face: encoder a" — the
+        rest, and what to do, out of sight). Never shrinks it: the technician's height
+        stays."""
+        window = self.window_
+        viewport = self.body.parentWidget() if hasattr(self, "body") else None
+        if viewport is None or not hasattr(window, "resizeDocks") \
+                or self.isHidden() or self.isFloating() \
+                or window.dockWidgetArea(self) != Qt.DockWidgetArea.BottomDockWidgetArea:
+            return
+        column = self._sections[0]
+        layout = column.layout()
+        width = column.width()
+        if layout is None or width <= 0:
+            return
+        layout.activate()
+        needed = layout.heightForWidth(width) if layout.hasHeightForWidth() \
+            else layout.sizeHint().height()
+        # the dock's title and the body's margins around its parts
+        around = self.height() - viewport.height() \
+            + self.body_layout.contentsMargins().top() + self.body_layout.contentsMargins().bottom()
+        wanted = min(BOTTOM_PANEL_MAX_HEIGHT, needed + around)
+        if wanted > self.height():
+            window.resizeDocks([self], [wanted], Qt.Orientation.Vertical)
 
     def _keep_plots(self, *_args) -> None:
         """While the panel is in sight at the bottom, every workbench's plot keeps ~200 px of
@@ -1176,6 +1223,7 @@ class CapturePanel(QDockWidget):
         self._guide_due = 0.0
         self.next_reading = None
         self.guide.setText("")
+        self._turn_seen, self._turn_said = None, False
         self._gate_changed()
 
     # ------------------------------------------------------------ where it is open
@@ -1658,12 +1706,12 @@ class CapturePanel(QDockWidget):
         active = [link for link in self.links if link.worker is not None]
         for link in active:  # each its share: a fast stream never starves the other link
             self._drain_link(link, link.worker, time.perf_counter() + DRAIN_BUDGET_S / len(active))
-        now = time.perf_counter()
         for link in self.links:
+            # a worker whose thread ended without a word (ending by itself it says a final
+            # fault; a crash would not): its value is no longer refreshed. Silence is the
+            # worker's own to judge (Stale, its faults), never this timer's
             if link.worker is not None and link.latest is not None and not link.lost \
-                    and now - link.fresh_at > STALE_S:
-                if link.no_target is not None:  # frames come, no measurement: said so
-                    link.say_no_target()
+                    and not link.worker.running and link.worker.events.empty():
                 link.mark_lost(True)
 
     def _drain_link(self, link: InstrumentLink, worker: CaptureWorker,
@@ -1693,6 +1741,13 @@ class CapturePanel(QDockWidget):
                 if link.no_target is None:
                     link.no_target = event
                 continue
+            if isinstance(event, Stale):
+                # no reading for STALE_S, as the worker saw it itself
+                if link.latest is not None:
+                    if link.no_target is not None:  # frames come, no measurement: said so
+                        link.say_no_target()
+                    link.mark_lost(True)
+                continue
             if link.no_target is not None:
                 self._target_back(link, event)
             link.received += 1
@@ -1705,7 +1760,6 @@ class CapturePanel(QDockWidget):
                 if link.session.behind() >= FRAMES_PER_BLOCK:
                     link.session.catch_up()  # a block's worth converted, not hours at a save
                 link.release_raw()  # and the worker's memory holds only what is not
-            link.fresh_at = time.perf_counter()
             fresh = True
             if first:
                 if event.time_s >= self._guide_due:
@@ -1761,6 +1815,9 @@ class CapturePanel(QDockWidget):
             return  # a frame marked not valid among good ones: no gap
         if link.frames:
             link.gap_before = link.frames[-1][0]
+        if link is self.links[0]:
+            # the table seen turning (a repeat of the point after it is not its reading)
+            self._turn_seen = max(self._turn_seen or 0.0, reading.time_s - gone.time_s)
         if link is self.links[0] and self.gate is not None:
             self.gate.restart()
             if self._table_link() is None:
@@ -2003,6 +2060,14 @@ class CapturePanel(QDockWidget):
         # a position in degrees in its target's turn (positioning's measured: a readout's
         # 359.5 at target 0° is −0.5); the raw trace keeps it as sent
         taking = self._in_target_turn(presenter, row, place, targets, taking)
+        self.update_guide()
+        # a repeat of a point that cannot be this point's (the table at another face): never
+        # filed under it (capture80: face 3's reading went in as face 2's reading 2)
+        refused = self._not_this_points(presenter, row, targets, taking, by_hand=values is None)
+        if refused:
+            self._turn_said = True
+            self.take_note.setText(refused)
+            return ""
         changes = []
         steps: dict[int, float] = {}
         for link, i, key in targets:
@@ -2014,7 +2079,6 @@ class CapturePanel(QDockWidget):
             changes.append((row, column, text))
             # the step the cell was rounded to: within half of it the cell is as captured
             steps[link.slot] = max(steps.get(link.slot, 0.0), step)
-        self.update_guide()
         # a reading that does not match its row's point (another face, another target): said
         # beside the guidance and its cell marked in the table (live76 F1: later takes went
         # into another face's row without a word)
@@ -2100,6 +2164,7 @@ class CapturePanel(QDockWidget):
             # what the take could not place, or took far from where the plan expects it:
             # said until the next take (the reading is kept)
             self.take_note.setText("\n".join(notes))
+            self._turn_seen, self._turn_said = None, False  # a turn is of the takes after
             table.next_row(row)
         finally:
             model.undo_stack.endMacro()
@@ -2112,6 +2177,67 @@ class CapturePanel(QDockWidget):
         if projects is not None and hasattr(projects, "autosave_now"):
             projects.autosave_now()
         return f"row {row + 1}"
+
+    def _not_this_points(self, presenter, row: int, targets, taking, by_hand: bool) -> str:
+        """Why a take cannot be the repeat of its point the guidance names (reading k > 1 of
+        a face, :attr:`next_reading`), or "" when it can be: the table's encoder more than
+        half the pitch from the face's first reading, or — with no encoder in the take — the
+        table seen turning since the last take (:attr:`_turn_seen`: the mirror out of view).
+        models/capture/repeat_check.py says why those limits. The autocollimator alone cannot
+        tell whether the table came back to the face: after the refusal is said, a take by
+        hand (F9) is the technician's word that it did."""
+        step = self.next_reading
+        if step is None or step.reading <= 1:
+            return ""
+        sheet = presenter.table_model.sheet
+        keys = [c.key for c in sheet.columns]
+        # the point's earlier readings: the used rows just above the take's (the guide's);
+        # the first of them is its reading 1
+        earlier = 0
+        first = min(row, sheet.row_count) - 1
+        while first >= 0:
+            if any(sheet.text(first, c).strip() for c in range(sheet.column_count)):
+                earlier += 1
+                if earlier == step.reading - 1:
+                    break
+            first -= 1
+        if first < 0:
+            return ""
+        face = step.fill.get("position", "").strip()
+        if not face and "position" in keys:
+            face = sheet.text(first, keys.index("position")).strip()
+        for link, i, key in targets:
+            got, unit, _ = taking[link.slot]
+            if key not in TABLE_COLUMNS or unit != "deg" or i >= len(got):
+                continue
+            try:
+                was = float(parse_angle_deg(sheet.text(first, keys.index(key))))
+            except (ValueError, TypeError, OverflowError):
+                continue
+            if not math.isfinite(was):
+                continue
+            # the encoder is in the take: it says where the table is, whatever the mirror did
+            away = turned_away(float(got[i]), was, step.pitch_deg)
+            if away is None:
+                return ""
+            return tr("Not taken: face {face}'s reading {k} of {n} is due, but the table is at "
+                      "another face: {column} {value}° is {off}° from the {first}° of its "
+                      "reading 1 (a repeat reads within half the {pitch}° between faces). Turn "
+                      "back to face {face} and take reading {k} there; the readings taken are "
+                      "kept").format(
+                face=face, k=step.reading, n=step.of, column=self.column_name(key),
+                value=f"{round(away.value_deg, 4) % 360.0:.4f}", off=f"{away.off_deg:+.1f}",
+                first=f"{round(away.first_deg, 4) % 360.0:.4f}",
+                pitch=degrees_text(2.0 * away.limit_deg))
+        if self._turn_seen is None or (by_hand and self._turn_said):
+            return ""
+        return tr("Not taken: face {face}'s reading {k} of {n} is due, but the table was seen "
+                  "turning since its reading {last} (the mirror out of view for {seconds} s). "
+                  "Turn back to face {face}, null the autocollimator and press F9 (Take "
+                  "reading): without the table's encoder the faces cannot be told apart. The "
+                  "readings taken are kept").format(
+            face=face, k=step.reading, n=step.of, last=step.reading - 1,
+            seconds=f"{self._turn_seen:.1f}")
 
     def _not_placed(self, link: InstrumentLink) -> str:
         """Why a take holds no reading of ``link`` (connected, with a reading to give)."""

@@ -132,6 +132,9 @@ class SignalStreamWorker(LinkThread):
         stale = 0
         try:
             while not self._stop.is_set():
+                # the silence is judged from this read: one begun after it has passed found
+                # nothing (a thread starved past it reads first what came meanwhile: capture80)
+                read_at = time.monotonic()
                 data = self._read(link)
                 now = time.monotonic()
                 heard = heard or bool(data)
@@ -158,7 +161,7 @@ class SignalStreamWorker(LinkThread):
                     if parsed.u_sin.size:
                         got += parsed.u_sin.size
                         last_good = now
-                if now - last_good > self.silence_s:
+                if read_at - last_good > self.silence_s:
                     what = (QT_TR_NOOP("{port}: no answer for {seconds} s") if not heard else
                             QT_TR_NOOP("{port}: no valid sample for {seconds} s"))
                     raise LinkLost(message(what, port=self.port, seconds=f"{self.silence_s:g}"),

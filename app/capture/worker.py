@@ -3,11 +3,17 @@ after a fault, and keeps every reading.
 
 Everything it learns goes into :attr:`CaptureWorker.events`, a queue the caller empties
 when it likes (the command line in its loop, the window on a timer): a
-:class:`Reading` per measurement, a :class:`Fault` per fault. A fault that the worker
-recovers from (the link dropped, the instrument went quiet) is followed by a reconnection
-and more readings; a ``final`` fault ends the worker (the port cannot be opened, or the
-link failed ``retries`` times in a row without one reading in between). Readings already
-queued stay queued whatever happens.
+:class:`Reading` per measurement, a :class:`Fault` per fault (and, asked for with
+``stale_s``, a :class:`Stale` when no reading has come for that long). A fault that the
+worker recovers from (the link dropped, the instrument went quiet) is followed by a
+reconnection and more readings; a ``final`` fault ends the worker (the port cannot be
+opened, or the link failed ``retries`` times in a row without one reading in between).
+Readings already queued stay queued whatever happens.
+
+Silence is judged on the worker's own clock and only from a read it began after the
+silence had passed: a thread starved of CPU (a loaded machine) that wakes to find time gone
+by reads what arrived meanwhile before it says anything (capture80: the window's own timer,
+which a starved worker cannot feed, said "link lost" for a link that never fell silent).
 """
 
 from __future__ import annotations
@@ -27,7 +33,7 @@ from models.capture.errors import FrameError, NoMeasurement
 from models.capture.framing import LineFramer
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["CaptureWorker", "DroppedLines", "Fault", "NoTarget", "Reading"]
+__all__ = ["CaptureWorker", "DroppedLines", "Fault", "NoTarget", "Reading", "Stale"]
 
 
 @dataclass(frozen=True)
@@ -69,6 +75,20 @@ class NoTarget:
     limits: tuple[float, float] | None = None
     #: the frame's index among the lines the worker kept
     frame: int = -1
+
+
+@dataclass(frozen=True)
+class Stale:
+    """No reading for the worker's ``stale_s`` on its own clock, found by a read it began
+    after that time (frames with no measurement, or nothing, or only what makes no
+    reading): the last reading is stale. Put once, until the next :class:`Reading`; not a
+    :class:`Fault` — the link is given up only after its silence (:attr:`CaptureWorker.
+    silence_s`), and a reading ends it."""
+
+    #: seconds since the worker started, when the read that found no reading began
+    time_s: float
+    #: seconds since the worker started, of the last reading (or of the connection)
+    since_s: float
 
 
 class DroppedLines(LookupError):
@@ -138,7 +158,7 @@ class CaptureWorker(LinkThread):
                  silence_s: float = 1.0, retries: int = 3, retry_pause_s: float = 0.2,
                  opener=open_link, reply_timeout_s: float | None = None,
                  poll_interval_s: float = 0.0, raw_cap: int | None = None,
-                 request_interval_s: float = 0.0) -> None:
+                 request_interval_s: float = 0.0, stale_s: float | None = None) -> None:
         self.port, self.instrument = port, instrument
         self.baud = baud or instrument.default_baud
         self.silence_s, self.retries, self.retry_pause_s = silence_s, retries, retry_pause_s
@@ -152,6 +172,8 @@ class CaptureWorker(LinkThread):
         #: readout, a theodolite): with none, one that answers at once is asked again at once
         #: (#62 review: a readout polled at ~8.7 kHz, 2 M frames in a morning's record)
         self.request_interval_s = request_interval_s
+        #: no reading for this long (its own clock) puts a :class:`Stale` (None: never)
+        self.stale_s = stale_s
         #: requests sent, reply timeouts, lines found in a serial port's buffer at connection
         self.requests = 0
         self.timeouts = 0
@@ -164,7 +186,7 @@ class CaptureWorker(LinkThread):
         #: the instrument did not stream when asked to and is read by single-shot requests
         self.polling = False
         self._open = opener
-        self.events: queue.Queue[Reading | Fault | NoTarget] = queue.Queue()
+        self.events: queue.Queue[Reading | Fault | NoTarget | Stale] = queue.Queue()
         #: lines refused (noise, a wrong baud rate, an invalid axis, an error reply)
         self.refused = 0
         self.refusals: list[str] = []
@@ -326,6 +348,7 @@ class CaptureWorker(LinkThread):
         last_no_target = start
         out_of_view = False
         in_flight: float | None = None  # when the request in flight was sent
+        stale_said = False  # Stale put since the last reading
         heard_since_request = False
         asked_at = -1e9
         lines = 0  # lines framed in this session
@@ -368,6 +391,9 @@ class CaptureWorker(LinkThread):
                     in_flight = asked_at = now
                     heard_since_request = False
                     expected = None if polling else instrument.transaction_of(self._transactions)
+                # the silence is judged from this read: one begun after it has passed
+                # found nothing (a thread starved past it reads first what came meanwhile)
+                read_at = time.monotonic()
                 data = self._read(link)
                 now = time.monotonic()
                 if data:
@@ -420,14 +446,14 @@ class CaptureWorker(LinkThread):
                         continue
                     got += 1
                     last_good = now
-                    out_of_view = False
+                    out_of_view = stale_said = False
                     # what a silence after this says is of the bytes since it: a link that read
                     # well and went quiet is "no answer", not "only unreadable bytes"
                     heard_bytes, last_refusal, heard_from = False, "", None
                     if ask is None:
                         self._streamed = True
                     self.events.put(Reading(now - self._t0, parsed[0], parsed[1], line, index))
-                waiting = in_flight is not None and now - in_flight <= self.reply_timeout_s
+                waiting = in_flight is not None and read_at - in_flight <= self.reply_timeout_s
                 timed_out = (in_flight is not None and not waiting)
                 if timed_out and not heard_since_request:
                     self.timeouts += 1
@@ -437,7 +463,11 @@ class CaptureWorker(LinkThread):
                 # are an instrument that sees no target; bytes read since the last reading
                 # are given the silence from the first of them to make one
                 first_byte = last_good if heard_from is None else heard_from
-                if now - max(last_good, last_no_target, first_byte) \
+                if self.stale_s is not None and not stale_said \
+                        and read_at - last_good > self.stale_s:
+                    stale_said = True
+                    self.events.put(Stale(read_at - self._t0, last_good - self._t0))
+                if read_at - max(last_good, last_no_target, first_byte) \
                         > self.silence_s and not waiting:
                     raise LinkLost(self._no_reading_message(heard_bytes, last_refusal, False), got)
         except (serial.SerialException, OSError) as exc:

@@ -75,6 +75,9 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
         return said(message(QT_TR_NOOP("go to face {face}"), face=1), 1, 1, 1)
     (_, set_text, _), last = groups[-1]
     set_no = _int(set_text, 1)
+    # the pitch with a repeat too (a repeat further than half of it from the face's first
+    # reading is at another face: app/capture/panel.py refuses it)
+    count = int(settings.get("faces", 0) or 0)
     if len(last) < n:
         return said(message(QT_TR_NOOP("stay at face {face}"), face=face), face, set_no,
                     len(last) + 1)
