@@ -6142,10 +6142,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{figure} 不给出包含区间：{reason}。</translation>
     </message>
     <message>
-        <source>No coverage intervals: {reason}</source>
-        <translation>无包含区间：{reason}</translation>
-    </message>
-    <message>
         <source>Standard applied: {standard}. Compensation = −mean deviation (Export compensation table… below the set-up).</source>
         <translation>采用的标准：{standard}。补偿值 = −平均偏差（设置下方的“导出补偿表…”）。</translation>
     </message>
@@ -10054,11 +10050,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
     </message>
     <message>
-        <source>No coverage interval is given for the figures: {reason}.</source>
-        <extracomment>the note on the figures when none has a coverage interval (:func:`intervals_withheld`)</extracomment>
-        <translation>各项指标不给出包含区间：{reason}。</translation>
-    </message>
-    <message>
         <source>Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget.</source>
         <translation>未给出、因而未计入 U 的输入量：{inputs}。U 仅包含分量一览表中的输入量。</translation>
     </message>
@@ -10388,7 +10379,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Autocollimator (ELCOMAT kind)</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) the columns of the table&apos;s own position (the polygon&apos;s and the cross-calibration&apos;s encoder): a second instrument read into one shows the table&apos;s move to the next face with the pitch between faces not known yet (no *faces* set, too few faces read), the table&apos;s move is half of 1°, the finest pitch the polygon&apos;s guide knows (360 faces) the instruments&apos; names for their values, where the workbench has no column for them a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value after which the worker has read no reading for this long (its clock, from a read begun after it: app/capture/worker.py Stale) is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) the columns of the table&apos;s own position (the polygon&apos;s and the cross-calibration&apos;s encoder): a second instrument read into one shows the table&apos;s move to the next face with the pitch between faces not known yet (no *faces* set, too few faces read), the table&apos;s move is half of 1°, the finest pitch the polygon&apos;s guide knows (360 faces) the instruments&apos; names for their values, where the workbench has no column for them a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
         <translation>自准直仪（ELCOMAT 类）</translation>
     </message>
     <message>
@@ -10596,6 +10587,14 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
         <translation>未取数：{instrument}无读数（{why}）</translation>
     </message>
     <message>
+        <source>Not taken: face {face}&apos;s reading {k} of {n} is due, but the table is at another face: {column} {value}° is {off}° from the {first}° of its reading 1 (a repeat reads within half the {pitch}° between faces). Turn back to face {face} and take reading {k} there; the readings taken are kept</source>
+        <translation>未读取：应读第 {face} 面的第 {k} 次读数（共 {n} 次），但转台在另一面：{column} {value}° 与其第 1 次读数的 {first}° 相差 {off}°（重复读数应在两面间隔 {pitch}° 的一半以内）。请转回第 {face} 面并在该处读取第 {k} 次读数；已读取的读数均保留</translation>
+    </message>
+    <message>
+        <source>Not taken: face {face}&apos;s reading {k} of {n} is due, but the table was seen turning since its reading {last} (the mirror out of view for {seconds} s). Turn back to face {face}, null the autocollimator and press F9 (Take reading): without the table&apos;s encoder the faces cannot be told apart. The readings taken are kept</source>
+        <translation>未读取：应读第 {face} 面的第 {k} 次读数（共 {n} 次），但自其第 {last} 次读数以来转台曾转动（反射镜离开视场 {seconds} s）。请转回第 {face} 面，将自准直仪调零后按 F9（读取读数）：没有转台编码器，无法区分各面。已读取的读数均保留</translation>
+    </message>
+    <message>
         <source>{instrument}: its reading was not taken: no column of its own to go to (the current cell&apos;s is another instrument&apos;s, or there is none) — choose one in “Readout into”</source>
         <translation>{instrument}：其读数未取用：没有属于它的列可填（当前单元格所在列属于另一台仪器，或没有当前单元格）——请在“数显表读数填入”中选择一列</translation>
     </message>
@@ -10613,7 +10612,7 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
     </message>
     <message>
         <source>Take reading (F9)</source>
-        <extracomment>finished sessions per workbench (stored form) rows filled by Take reading or auto-take: (workbench, row, values of the first instrument at full precision) per workbench, the columns an instrument has filled or was set to fill: the plan&apos;s nominal is never written there (#60: a readout&apos;s link gave up and the plan&apos;s expected encoder value went into its column as if read)</extracomment>
+        <extracomment>finished sessions per workbench (stored form) rows filled by Take reading or auto-take: (workbench, row, values of the first instrument at full precision) the table seen turning since the last take: the seconds the first instrument&apos;s mirror was out of view (None: not seen); a repeat of a point after it is refused (:meth:`_not_this_points`), and — once that was said (``_turn_said``) — taken by hand per workbench, the columns an instrument has filled or was set to fill: the plan&apos;s nominal is never written there (#60: a readout&apos;s link gave up and the plan&apos;s expected encoder value went into its column as if read)</extracomment>
         <translation>取读数 (F9)</translation>
     </message>
     <message>
@@ -10787,7 +10786,7 @@ the workbenches (keys, comma-separated) the panel was open on when last left: re
         <source>{port}: no answer for {seconds} s</source>
         <extracomment>the default baud rate of a serial ADC stream the index (since the worker started) of the block&apos;s first line seconds since the worker started when the block arrived (each of its lines) the lines as sent, and per line whether it became a sample the samples (V), in the order of the lines that gave them lines kept and not read that were not refused (a connection&apos;s first line: it may be the rest of a sample begun before the connection) lines framed, samples read and lines refused since the start
 ----------
-seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (read back with :meth:`CaptureWorker.lines`) a :class:`models.messages.Message`: English as a ``str``, translatable seconds since the worker started, when the frame arrived why the frame holds no measurement (English, as the worker&apos;s refusals) the instrument&apos;s columns (keys) concerned, the value beyond the range and the range (None: the instrument marks the axes not valid) the frame&apos;s index among the lines the worker kept how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests: :attr:`request_interval_s`) the least time between two requests to an instrument that only answers requests (a readout, a theodolite): with none, one that answers at once is asked again at once (#62 review: a readout polled at ~8.7 kHz, 2 M frames in a morning&apos;s record) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection requests numbered over the worker&apos;s whole life, not per connection: a late reply to the last connection&apos;s request 1 would otherwise match this one&apos;s request 1 whether a connection of this worker has read a streamed frame the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) the lines the instrument sent that are still in memory, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only. Read them with :meth:`lines` (indices since the start, under the lock): lines before ``raw_first`` have been dropped the index (since the start) of ``raw[0]``: lines a consumer has taken (:meth:`take_raw`) beyond ``raw_cap``, or said it no longer needs (:meth:`release`), are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
+seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (read back with :meth:`CaptureWorker.lines`) a :class:`models.messages.Message`: English as a ``str``, translatable seconds since the worker started, when the frame arrived why the frame holds no measurement (English, as the worker&apos;s refusals) the instrument&apos;s columns (keys) concerned, the value beyond the range and the range (None: the instrument marks the axes not valid) the frame&apos;s index among the lines the worker kept seconds since the worker started, when the read that found no reading began seconds since the worker started, of the last reading (or of the connection) how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests: :attr:`request_interval_s`) the least time between two requests to an instrument that only answers requests (a readout, a theodolite): with none, one that answers at once is asked again at once (#62 review: a readout polled at ~8.7 kHz, 2 M frames in a morning&apos;s record) no reading for this long (its own clock) puts a :class:`Stale` (None: never) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection requests numbered over the worker&apos;s whole life, not per connection: a late reply to the last connection&apos;s request 1 would otherwise match this one&apos;s request 1 whether a connection of this worker has read a streamed frame the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) the lines the instrument sent that are still in memory, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only. Read them with :meth:`lines` (indices since the start, under the lock): lines before ``raw_first`` have been dropped the index (since the start) of ``raw[0]``: lines a consumer has taken (:meth:`take_raw`) beyond ``raw_cap``, or said it no longer needs (:meth:`release`), are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>
     </message>
     <message>
@@ -10808,7 +10807,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>{port}: the link dropped ({reason})</source>
-        <extracomment>the last whole frame that carried no measurement (a mirror out of view): the instrument is heard, not silent; and whether NoTarget was put since the last reading</extracomment>
+        <extracomment>when the worker first read bytes since the last reading (None: none since): bytes are &quot;unreadable&quot; once they have come for the silence without making a reading, not when the first byte of a line is read late (a loaded machine starved this thread past the silence; its read returned the line&apos;s first byte, the rest waiting: &quot;only unreadable bytes for 0.2 s (a wrong baud rate?)&quot; and a reconnection, flake79) the last whole frame that carried no measurement (a mirror out of view): the instrument is heard, not silent; and whether NoTarget was put since the last reading</extracomment>
         <translation>{port}：连接中断（{reason}）</translation>
     </message>
     <message>
@@ -14031,6 +14030,27 @@ Replace it?</source>
     <message>
         <source>(“largest autocollimator drift over a mounting, when not measured” in the set-up)</source>
         <translation>（设置中的“安装位置内自准直仪的最大漂移（未测量时）”）</translation>
+    </message>
+    <message>
+        <source>No coverage interval is given for the figures: {reason}. {basis}</source>
+        <translation>各项指标不给出包含区间：{reason}。{basis}</translation>
+    </message>
+    <message>
+        <source>Each figure is printed rounded to {place}, the first significant place of the readings&apos; pooled standard deviation ({s}): without an interval nothing says it is known more closely.</source>
+        <extracomment>what set the place, by :func:`place_basis`</extracomment>
+        <translation>各项指标修约到 {place}，即读数合并标准偏差（{s}）的第一位有效数字所在位：没有区间，就没有依据说明它被更精确地知道。</translation>
+    </message>
+    <message>
+        <source>Each figure is printed rounded to {place}, the first significant place of the readings&apos; scatter about the set-up fit ({s}; one pass gives no scatter over the passes): without an interval nothing says it is known more closely.</source>
+        <translation>各项指标修约到 {place}，即读数相对装调拟合的分散性（{s}；单次行程不给出各行程间的分散性）的第一位有效数字所在位：没有区间，就没有依据说明它被更精确地知道。</translation>
+    </message>
+    <message>
+        <source>Each figure is printed rounded to {place}, the last place of the step the readings were entered in ({step}): without an interval nothing says it is known more closely.</source>
+        <translation>各项指标修约到 {place}，即读数录入步距（{step}）的末位：没有区间，就没有依据说明它被更精确地知道。</translation>
+    </message>
+    <message>
+        <source>Each figure is printed rounded to {place}: the readings show neither their scatter nor the step they were entered in, and without an interval nothing says how closely it is known.</source>
+        <translation>各项指标修约到 {place}：读数既未显示其分散性，也未显示其录入步距；没有区间，就没有依据说明它被知道到何种精度。</translation>
     </message>
 </context>
 </TS>
