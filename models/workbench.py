@@ -146,6 +146,14 @@ class Workbench(ABC, Generic[ResultT]):
         analysis reads (models/register/readings_identity.py). Empty by default."""
         return {}
 
+    def derived_columns(self, settings: Mapping[str, Any]) -> Mapping[str, tuple[str, str]]:
+        """{column key: (source, other)} for a column whose value the analysis takes as
+        source − other where its cell is blank, and from its cell (not the source) where it
+        is given (positioning's deviation: measured − target, in the deviation unit): the
+        register compares readings as the analysis takes them (readings_identity.py), so a
+        deviation typed as a measured position is the same reading. Empty by default."""
+        return {}
+
     def setting_units(self, settings: Mapping[str, Any]) -> Mapping[str, str]:
         """{setting key: its unit as ``settings`` make it}, for a number setting whose unit
         is another setting's (positioning's budget inputs, in the deviations' unit): shown

@@ -132,7 +132,7 @@ _QUANTUM = 2.0 ** -40
 _BOUND = 2 ** 62
 #: the float noise allowed beside a tolerance: of the values (a value parsed from two
 #: spellings and converted to rad differs by a few ulp) and of the tolerance itself
-_ULPS = 8 * np.finfo(float).eps
+_ULPS = 8 * float(np.finfo(float).eps)
 _RELATIVE = 1e-6
 #: an exponent at a number's end: the step is that of the mantissa's last digit
 _EXPONENT = re.compile(r"[eE][+-]?\d+\s*$")
@@ -227,7 +227,8 @@ def readings_identity(project_json: str, workbench: str) -> ReadingsIdentity | N
         return None  # no project state this version reads: nothing to compare
     if parsed.n == 0:
         return None
-    physical: list[tuple[int, Any, float, float]] = []  # (index, column, size, origin)
+    physical: list[tuple[int, Any, float, float, str]] = []  # (index, column, size, origin,
+    #                                                     dimension)
     dimensions = []
     for index, column in enumerate(columns):
         size, dimension = 0.0, ""
@@ -240,17 +241,18 @@ def readings_identity(project_json: str, workbench: str) -> ReadingsIdentity | N
                 size, dimension = found.size, found.dimension
         dimensions.append([column.key, dimension])
         if dimension:
-            physical.append((index, column, size, float(origins.get(column.key, 0.0))))
+            physical.append((index, column, size, float(origins.get(column.key, 0.0)), dimension))
     others = [c.key for c in columns if not any(c is p[1] for p in physical)]
     n = parsed.n
     values = np.full((n, len(physical)), np.nan)
     halves = np.zeros((n, len(physical)))
-    for j, (index, column, size, origin) in enumerate(physical):
+    for j, (index, column, size, origin, _) in enumerate(physical):
         raw = np.asarray(parsed.values[column.key], dtype=float)
         values[:, j] = (raw + origin) * size
         for i in np.nonzero(np.isfinite(raw))[0]:
             text = sheet.text(int(parsed.row_index[i]), index)
             halves[i, j] = 0.5 * _step(text, column, float(raw[i])) * size
+    _derive(kind.derived_columns(settings), physical, values, halves)
     blank = ~np.isfinite(values)
     members: dict[tuple, list[int]] = {}
     for i in range(n):
@@ -263,6 +265,26 @@ def readings_identity(project_json: str, workbench: str) -> ReadingsIdentity | N
         ensure_ascii=False).encode()).hexdigest()
     anchor, reach = _anchor(kind, physical, values, halves)
     return ReadingsIdentity(layout, anchor, reach, groups)
+
+
+def _derive(derived: Mapping[str, tuple[str, str]], physical: list, values: np.ndarray,
+            halves: np.ndarray) -> None:
+    """The readings as the analysis takes them where a column's value may be given through
+    others (:meth:`models.workbench.Workbench.derived_columns`: the positioning's deviation
+    as measured − target): a blank cell of the column gets source − other (in rad or m, so
+    in any of their units), with the source's half step; the source column is then blank
+    throughout (where both are given, the analysis takes the column's), in place."""
+    at = {p[1].key: j for j, p in enumerate(physical)}
+    for key, (source, other) in derived.items():
+        if key not in at or source not in at or other not in at:
+            continue
+        j, js, jo = at[key], at[source], at[other]
+        if len({physical[i][4] for i in (j, js, jo)}) != 1:
+            continue
+        fill = ~np.isfinite(values[:, j]) & np.isfinite(values[:, js]) & np.isfinite(values[:, jo])
+        values[fill, j] = values[fill, js] - values[fill, jo]
+        halves[fill, j] = halves[fill, js]
+        values[:, js], halves[:, js] = np.nan, 0.0
 
 
 def _anchor(kind: Any, physical: list, values: np.ndarray, halves: np.ndarray

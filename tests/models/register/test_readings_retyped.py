@@ -1,7 +1,8 @@
 """The same readings re-typed are the same readings (ident80; hostile pass of stop 79, left
 open): the angles in decimal degrees to 6, 8 or 10 places instead of D°M'S" (or the other
 way), the deviations in another unit chosen in the settings (arcsec ↔ µrad, µm ↔ nm), the
-vertical column as zenith angles V with the setting that says so. Compared by their
+vertical column as zenith angles V with the setting that says so, the positioning's
+deviations as the measured positions they are taken from. Compared by their
 physical values within the resolution they were typed to
 (models/register/readings_identity.py), they are refused as one item's readings issued as
 another's, or as a calibration of its own of the same item; one reading changed by one step
@@ -77,6 +78,11 @@ def _routes():
          {"vertical_reading": "zenith"}),
         ("deviations in µrad", "positioning", positioning, {},
          _deviations_as(positioning, URAD_PER_ARCSEC, 4), {"deviation_unit": "urad"}),
+        # the positioning's deviation is measured − target where it is blank: the same
+        # readings typed as measured positions (decimal degrees to 8 places)
+        ("deviations as measured positions", "positioning", positioning, {},
+         [[t, run, d, "", f"{float(t) + float(x) / 3600:.8f}"] for t, run, d, x in positioning],
+         {}),
         ("deviations in nm of µm", "positioning", positioning,
          {"target_unit": "mm", "deviation_unit": "um"},
          _deviations_as(positioning, 1000.0, 1), {"target_unit": "mm", "deviation_unit": "nm"}),
