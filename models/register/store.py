@@ -1911,20 +1911,23 @@ class Register:
         return tuple(out)
 
     def readings_of_another_item(self, workbench: str, meta: CertificateMetadata,
-                                 rows: builtins.list[builtins.list[str]]
+                                 rows: builtins.list[builtins.list[str]],
+                                 settings: dict | None = None
                                  ) -> ReadingsOfAnotherItem | None:
         """What :meth:`issue` would raise, unasked, for an original of ``meta`` on
         ``workbench`` whose readings are ``rows`` (the sheet's, as typed) because they are
         those of certificates of another item (:class:`ReadingsOfAnotherItem`); None when
-        they are not: the window asks before it asks for a file name. The issue checks
-        again."""
+        they are not: the window asks before it asks for a file name. ``settings``: the
+        workbench's, which give its columns' units (readings_identity; None: the defaults).
+        The issue checks again."""
         from models.register.identifiers import IdentifierError, normalise_identifier
 
         try:
             meta = dataclasses.replace(meta, item_serial=normalise_identifier(meta.item_serial))
         except IdentifierError:
             return None  # the issue refuses it, saying why
-        project = json.dumps({"workbenches": {workbench: {"rows": rows}}})
+        project = json.dumps({"workbenches": {workbench: {"rows": rows,
+                                                          "settings": settings or {}}}})
         request = IssueRequest(workbench, meta, project)
         with self._read() as conn:
             elsewhere = self._readings_elsewhere(conn, request, meta, None)
