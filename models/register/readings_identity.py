@@ -249,9 +249,9 @@ def readings_identity(project_json: str, workbench: str) -> ReadingsIdentity | N
     for j, (index, column, size, origin, _) in enumerate(physical):
         raw = np.asarray(parsed.values[column.key], dtype=float)
         values[:, j] = (raw + origin) * size
-        for i in np.nonzero(np.isfinite(raw))[0]:
-            text = sheet.text(int(parsed.row_index[i]), index)
-            halves[i, j] = 0.5 * _step(text, column, float(raw[i])) * size
+        for r in np.nonzero(np.isfinite(raw))[0].tolist():
+            text = sheet.text(int(parsed.row_index[r]), index)
+            halves[r, j] = 0.5 * _step(text, column, float(raw[r])) * size
     _derive(kind.derived_columns(settings), physical, values, halves)
     blank = ~np.isfinite(values)
     members: dict[tuple, list[int]] = {}

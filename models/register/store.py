@@ -1449,6 +1449,7 @@ class Register:
         # 9, chain format 8), which the register compares readings by (ident80)
         key = readings_key(request.project_json, request.workbench)
         ident = readings_identity(request.project_json, request.workbench)
+        stored = NO_READINGS if ident is None else ident.stored
         with self._issuing_turn() as turn:
             for _attempt in range(ISSUE_ATTEMPTS):
                 # the time of issue is taken for each attempt: a record committed by another
@@ -1588,9 +1589,8 @@ class Register:
                     pdf_sha256="",
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
                     os_user=user, approver=meta.approver,
-                    chain_format=8, readings_key=key,
-                    **dict(zip(("readings_layout", "readings_anchor", "readings_reach"),
-                               NO_READINGS if ident is None else ident.stored, strict=True)))
+                    chain_format=8, readings_key=key, readings_layout=stored[0],
+                    readings_anchor=stored[1], readings_reach=stored[2])
                 # the record's content first, carried by the PDF (so by the DCC that embeds
                 # it); then the files' hashes (reg72 #2: the newest record rewritten with its
                 # chain recomputed is found from the customer's copy). Content form 2 also
