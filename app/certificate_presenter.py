@@ -666,7 +666,7 @@ class CertificatePresenter:
                 return False
             confirmed = answered
             # another item's readings (hostile78 F7): why, asked before the file name
-            readings = self._readings_of_another_item(kind.key, entered, rows or [])
+            readings = self._readings_of_another_item(kind.key, entered, rows or [], settings)
             if readings is None:
                 return False
         # an amendment or a replacement is not filed under the original's number, which the
@@ -917,16 +917,19 @@ class CertificatePresenter:
         return True
 
     def _readings_of_another_item(self, workbench: str, entered: CertificateMetadata,
-                                  rows: list[list[str]]) -> tuple[str, str] | tuple[()] | None:
+                                  rows: list[list[str]], settings: dict | None = None
+                                  ) -> tuple[str, str] | tuple[()] | None:
         """The register's question about readings that are those of certificates of another
-        item (Register.readings_of_another_item), asked before the file name: (N, why) as
+        item (Register.readings_of_another_item, with the workbench's ``settings``: its
+        columns' units), asked before the file name: (N, why) as
         answered, () when not asked (none, or the register cannot be read now: the issue
         says why), None after a cancel (said: nothing issued)."""
         from models.register.store import RegisterError
 
         try:
             with self.open_register() as register:
-                question = register.readings_of_another_item(workbench, entered, rows)
+                question = register.readings_of_another_item(workbench, entered, rows,
+                                                             settings)
         except (RegisterError, OSError):
             return ()
         if question is None:

@@ -139,6 +139,21 @@ class Workbench(ABC, Generic[ResultT]):
         table's header as a column's own unit is. Empty by default."""
         return {}
 
+    def column_origins(self, settings: Mapping[str, Any]) -> Mapping[str, float]:
+        """{column key: what the analysis adds to the column's values, in its unit, to read
+        them as it does}, for a column whose origin is a setting (the theodolite's zenith
+        angle V: −90°, E = V − 90°): the register compares readings by the values the
+        analysis reads (models/register/readings_identity.py). Empty by default."""
+        return {}
+
+    def derived_columns(self, settings: Mapping[str, Any]) -> Mapping[str, tuple[str, str]]:
+        """{column key: (source, other)} for a column whose value the analysis takes as
+        source − other where its cell is blank, and from its cell (not the source) where it
+        is given (positioning's deviation: measured − target, in the deviation unit): the
+        register compares readings as the analysis takes them (readings_identity.py), so a
+        deviation typed as a measured position is the same reading. Empty by default."""
+        return {}
+
     def setting_units(self, settings: Mapping[str, Any]) -> Mapping[str, str]:
         """{setting key: its unit as ``settings`` make it}, for a number setting whose unit
         is another setting's (positioning's budget inputs, in the deviations' unit): shown

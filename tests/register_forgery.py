@@ -17,12 +17,15 @@ CHAINED = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
            "os_user", "approver", "dcc_sha256", "document_kind")
 #: what a record of chain format 7 (schema version 8) adds: the identity of its readings
 CHAINED_V7 = ("readings_key",)
+#: what a record of chain format 8 (schema version 9) adds: its readings by their physical values
+CHAINED_V8 = ("readings_layout", "readings_anchor", "readings_reach")
 
 
 def relinked(previous: str, row: dict) -> str:
     """The chain value of ``row`` (a certificates row as a dict) after the chain value
     ``previous``: what a forger writes after changing the row."""
-    keys = CHAINED + (CHAINED_V7 if (row["chain_format"] or 1) >= 7 else ())
+    keys = CHAINED + (CHAINED_V7 if (row["chain_format"] or 1) >= 7 else ()) + (
+        CHAINED_V8 if (row["chain_format"] or 1) >= 8 else ())
     fields = {k: row[k] for k in keys} | {"chain_format": row["chain_format"]}
     body = json.dumps(fields, sort_keys=True, ensure_ascii=False, separators=(",", ":"))
     return hashlib.sha256(f"{previous}\n{body}".encode()).hexdigest()

@@ -210,13 +210,19 @@ def _row(parsed: ParsedReadings, index: int) -> int:
     return int(parsed.row_index[index]) + 1
 
 
+#: the columns a blank deviation is taken from, as measured − target (Workbench.derived_columns)
+DEVIATION_FROM = ("measured", "target")
+
+
 def _deviations(parsed: ParsedReadings, s: dict[str, Any]) -> np.ndarray:
-    """Each reading's deviation in the deviation unit, from either column; refuses a row with
-    neither, or with both disagreeing, naming it."""
+    """Each reading's deviation in the deviation unit, from either column (where it is blank,
+    :data:`DEVIATION_FROM`: measured − target); refuses a row with neither, or with both
+    disagreeing, naming it."""
     scale = DEVIATION_UNITS[s["deviation_unit"]][1]
     deviation = parsed["deviation"].astype(float)
-    measured = parsed["measured"].astype(float)
-    from_measured = (measured - parsed["target"]) * scale
+    source, other = DEVIATION_FROM
+    measured = parsed[source].astype(float)
+    from_measured = (measured - parsed[other]) * scale
     neither = np.nonzero(~np.isfinite(deviation) & ~np.isfinite(measured))[0]
     if neither.size:
         raise ValueError(message(
@@ -770,6 +776,10 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         from models.positioning.deviation_shown import DEVIATION_SHOWN_NOTE, shown_deviation
 
         return {"deviation": (shown_deviation(settings), DEVIATION_SHOWN_NOTE)}
+
+    def derived_columns(self, settings):
+        # where the deviation is blank the analysis takes measured − target (_deviations)
+        return {"deviation": DEVIATION_FROM}
 
     def column_units(self, settings):
         # live78: the live table's "deviation" and "measured" had no unit in their header

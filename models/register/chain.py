@@ -50,6 +50,14 @@ laundered a copy of the readings as another item's certificate unseen until ``re
 verify``). Records issued before keep their format; their identity, filled in by migration 8,
 is made again from their readings by ``register verify``.
 
+Since schema version 9 every certificate issued has chain format 8 (the fields of format 7):
+its chain also covers the identity of its readings by their physical values
+(``readings_layout``, ``readings_anchor``, ``readings_reach``: readings_identity.
+readings_identity), by which the register finds the same readings issued again re-typed in
+decimal degrees or in another unit (ident80); set otherwise in the database, the opening
+finds it. Records issued before keep their format; their identity, filled in by migration
+9, is made again from their readings by ``register verify``.
+
 Anyone with write access can recompute the whole chain: the chain's head (``anglebench
 register head``), noted outside the database, and the head printed on every certificate
 (the head *before* it) anchor it (``anglebench register verify --head``).
@@ -62,7 +70,8 @@ import json
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "CHAINED_V4", "CHAINED_V5", "CONTENT", "CONTENT_MARK",
+__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "CHAINED_V4", "CHAINED_V5", "CHAINED_V6", "CONTENT",
+           "CONTENT_MARK",
            "CONTENT_V2", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK", "PROOF_MARK", "content_digest",
            "content_digest_v2", "content_form", "content_in_pdf", "dcc_body_digest", "head_in_pdf", "link",
            "link_entry", "number_in_pdf", "proof_in_pdf"]
@@ -89,6 +98,12 @@ CHAINED_V4 = ("document_kind",)
 #: is issued into the register. Records of earlier formats (their identity filled in by
 #: migration 8) are still compared with their readings by 'register verify'
 CHAINED_V5 = ("readings_key",)
+#: what a record of chain format 8 (schema version 9: every record issued since) adds to
+#: chain format 7's: the identity of its readings by their physical values
+#: (readings_identity.readings_identity: the layout, the anchor and its reach), by which the
+#: register finds them issued again, re-typed too (ident80); set otherwise in the database,
+#: the opening's check of the chain finds it, as format 7's readings_key
+CHAINED_V6 = ("readings_layout", "readings_anchor", "readings_reach")
 #: an entry's fields, all in the chain
 ENTRY_CHAINED = ("seq", "kind", "subject", "body_json", "recorded_at", "os_user", "workstation")
 GENESIS = "0" * 64
@@ -105,10 +120,12 @@ def link(previous: str, record: Mapping[str, Any]) -> str:
     keys = (CHAINED + (CHAINED_V2 if chain_format >= 2 else ())
             + (CHAINED_V3 if chain_format >= 3 else ())
             + (CHAINED_V4 if chain_format >= 4 else ())
-            + (CHAINED_V5 if chain_format >= 7 else ()))
-    # .get: a record set to format 7 in a register read as it is at version 7, which has no
-    # column readings_key, breaks its chain instead of the check
-    fields = {k: record.get(k) if k in CHAINED_V5 else record[k] for k in keys}
+            + (CHAINED_V5 if chain_format >= 7 else ())
+            + (CHAINED_V6 if chain_format >= 8 else ()))
+    # .get: a record set to format 7 (8) in a register read as it is at version 7 (8), which
+    # has no column readings_key (readings_layout …), breaks its chain instead of the check
+    fields = {k: record.get(k) if k in CHAINED_V5 or k in CHAINED_V6 else record[k]
+              for k in keys}
     if chain_format >= 2:
         fields["chain_format"] = record["chain_format"]
     return _digest(previous, fields)
@@ -144,7 +161,7 @@ CONTENT_V2 = ("document_kind", "dcc_body")
 
 
 def content_form(record: Mapping[str, Any]) -> int:
-    """Which form of content digest a record's PDF carries: 2 for chain format 6 or 7 (AngleBench
+    """Which form of content digest a record's PDF carries: 2 for chain format 6 on (AngleBench
     0.8.22 on: the document kind and the DCC covered), 1 for chain format 5 (0.8.21: the
     readings, results and details only), 0 for older records (their PDFs carry none)."""
     chain_format = record.get("chain_format") or 1

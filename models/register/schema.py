@@ -17,7 +17,8 @@ from collections.abc import Callable
 import sqlalchemy as sa
 
 __all__ = ["CERTIFICATES", "COUNTERS", "ENTRIES", "INSTRUMENTS", "LATEST", "METADATA",
-           "MIGRATIONS", "READINGS_KEY_VERSION", "READ_AS_IS", "SCHEMA_VERSION", "STATE",
+           "MIGRATIONS", "READINGS_IDENTITY_COLUMNS", "READINGS_IDENTITY_VERSION",
+           "READINGS_KEY_VERSION", "READ_AS_IS", "SCHEMA_VERSION", "STATE",
            "downgrade_evidence", "intervals_per_serial"]
 
 METADATA = sa.MetaData()
@@ -90,6 +91,18 @@ CERTIFICATES = sa.Table(
     # readings and reports one that differs. None: issued by an
     # AngleBench of schema 7 still running after the migration, made when it is compared
     sa.Column("readings_key", sa.String(64), nullable=True),
+    # migration 9: the identity of the record's readings by their physical values, within
+    # the resolution each was typed to (models/register/readings_identity.readings_identity:
+    # "", 0, 0 for none), by which the register finds readings issued again re-typed (in
+    # decimal degrees, another unit: ident80): the layout (an exact key), the anchor and its
+    # reach (in 2⁻⁴⁰ rad or m), looked up by the indexes certificates_readings_anchor and
+    # certificates_readings_reach; made at issue and filled in once for the records before
+    # it; in the chain of every record issued since (chain format 8), made again from the
+    # readings by 'register verify' for every record. None: not made (issued by an AngleBench
+    # of schema 8 still running after the migration), made when compared
+    sa.Column("readings_layout", sa.String(64), nullable=True),
+    sa.Column("readings_anchor", sa.BigInteger, nullable=True),
+    sa.Column("readings_reach", sa.BigInteger, nullable=True),
 )
 
 #: the register's other records, chained with the certificates (migration 4): calibration
@@ -281,16 +294,57 @@ def _v8(conn: sa.Connection) -> None:
             [{"row_id": r.id, "key": readings_key(r.project_json, r.workbench)} for r in rows])
 
 
+#: the columns of migration 9 (CERTIFICATES: the readings' identity by their physical values)
+READINGS_IDENTITY_COLUMNS = ("readings_layout", "readings_anchor", "readings_reach")
+
+
+def _v9(conn: sa.Connection) -> None:
+    """The readings' identity by their physical values (readings_identity.readings_identity:
+    the same readings re-typed in decimal degrees or in another unit escaped readings_key,
+    ident80), and its indexes. Three nullable columns, filled in here once for every record
+    from its project state (in the chain), in the migration's one transaction, as migration
+    8's; no record's chain value is touched (readings_key, in the chains of format 7, is
+    kept as it is). Refused when the columns exist already (a version set back)."""
+    from models.register.readings_identity import NO_READINGS, readings_identity
+
+    columns = {c["name"] for c in sa.inspect(conn).get_columns("certificates")}
+    if set(READINGS_IDENTITY_COLUMNS) & columns:
+        raise ValueError("the columns of version 9 exist already")
+    big = conn.dialect.type_compiler_instance.process(sa.BigInteger())
+    conn.execute(sa.text("ALTER TABLE certificates ADD COLUMN readings_layout VARCHAR(64)"))
+    conn.execute(sa.text(f"ALTER TABLE certificates ADD COLUMN readings_anchor {big}"))
+    conn.execute(sa.text(f"ALTER TABLE certificates ADD COLUMN readings_reach {big}"))
+    conn.execute(sa.text("CREATE INDEX certificates_readings_anchor ON certificates "
+                         "(workbench, readings_layout, readings_anchor)"))
+    conn.execute(sa.text("CREATE INDEX certificates_readings_reach ON certificates "
+                         "(workbench, readings_layout, readings_reach)"))
+    c = CERTIFICATES.c
+    rows = conn.execute(sa.select(c.id, c.workbench, c.project_json).order_by(c.id)).all()
+    values = []
+    for r in rows:
+        identity = readings_identity(r.project_json, r.workbench)
+        layout, anchor, reach = NO_READINGS if identity is None else identity.stored
+        values.append({"row_id": r.id, "layout": layout, "anchor": anchor, "reach": reach})
+    if values:
+        conn.execute(CERTIFICATES.update().where(c.id == sa.bindparam("row_id")).values(
+            readings_layout=sa.bindparam("layout"), readings_anchor=sa.bindparam("anchor"),
+            readings_reach=sa.bindparam("reach")), values)
+
+
 #: version → the migration that brings a register to it from the version before
 MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2, 3: _v3, 4: _v4,
-                                                          5: _v5, 6: _v6, 7: _v7, 8: _v8}
+                                                          5: _v5, 6: _v6, 7: _v7, 8: _v8,
+                                                          9: _v9}
 LATEST = max(MIGRATIONS)
 #: versions a read-only register (which cannot be migrated) is read at as it is: version 6
 #: differs from 7 only by the intervals' key, read as every maker's item's (store._intervals);
-#: versions 6 and 7 from 8 only by the readings' stored identity, made when compared
-READ_AS_IS = frozenset({6, 7})
+#: versions 6 and 7 from 8 only by the readings' stored identity, made when compared; 6 to 8
+#: from 9 only by the readings' identity by their physical values, made when compared
+READ_AS_IS = frozenset({6, 7, 8})
 #: the first version that stores the readings' identity (CERTIFICATES.c.readings_key)
 READINGS_KEY_VERSION = 8
+#: the first version that stores it by the readings' physical values (readings_layout …)
+READINGS_IDENTITY_VERSION = 9
 
 
 def downgrade_evidence(conn: sa.Connection, version: int) -> str:
@@ -329,6 +383,10 @@ def downgrade_evidence(conn: sa.Connection, version: int) -> str:
         columns = {c["name"] for c in inspector.get_columns("certificates")}
         if "readings_key" in columns:
             return "the column of version 8 (readings_key) exists"
+    if version < 9 and "certificates" in tables:
+        columns = {c["name"] for c in inspector.get_columns("certificates")}
+        if "readings_layout" in columns:
+            return "the columns of version 9 (readings_layout …) exist"
     return ""
 
 

@@ -52,7 +52,14 @@ from models.register.chain import (
     link,
 )
 from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED, REPLACED
-from models.register.readings_identity import readings_key
+from models.register.readings_identity import (
+    NO_READINGS,
+    ReadingsIdentity,
+    near,
+    readings_identity,
+    readings_key,
+    same_readings_values,
+)
 from models.register.register_error import RegisterError
 from models.register.wording import DOCUMENT_KINDS, kind_words
 from models.register.writer_note import holder as writer_holder
@@ -284,6 +291,14 @@ class CertificateRecord:
     # None: not stored (a register read as it is at version 6 or 7, a record issued by an
     # AngleBench of schema 7 after the migration)
     readings_key: str | None = None
+    # schema version 9: the identity of its readings by their physical values
+    # (readings_identity.readings_identity: "", 0, 0 for none), made at issue, in the chain
+    # from chain format 8 (filled in by migration 9 for older records: not in their chain,
+    # made again from project_json by verify); None: not stored (a register read as it is
+    # at version 6 to 8, a record issued by an AngleBench of schema 8 after the migration)
+    readings_layout: str | None = None
+    readings_anchor: int | None = None
+    readings_reach: int | None = None
 
     @property
     def headline(self) -> dict[str, float]:
@@ -302,8 +317,11 @@ class CertificateRecord:
 
 
 _RECORD_COLUMNS = tuple(f.name for f in dataclasses.fields(CertificateRecord))
+#: the record's columns a register of schema version 8 holds (read as it is)
+_RECORD_COLUMNS_V8 = tuple(c for c in _RECORD_COLUMNS if c not in (
+    "readings_layout", "readings_anchor", "readings_reach"))
 #: the record's columns a register of schema version 6 or 7 holds (read as it is)
-_RECORD_COLUMNS_V7 = tuple(c for c in _RECORD_COLUMNS if c != "readings_key")
+_RECORD_COLUMNS_V7 = tuple(c for c in _RECORD_COLUMNS_V8 if c != "readings_key")
 
 
 @dataclass(frozen=True)
@@ -474,8 +492,8 @@ class Register:
         #: the numbers :meth:`issue` issued through this object whose results file is not
         #: recorded yet: the only ones :meth:`record_results` records for (stop 63)
         self._results_due: set[str] = set()
-        #: each record's readings_key by its number (a record never changes): computed once
-        self._readings_keys: dict[str, str] = {}
+        #: each record's readings by their physical values, by its number: made once
+        self._identities: dict[str, ReadingsIdentity | None] = {}
         #: the key given is not the one the register was signed with (:meth:`_key_problem`)
         self.key_problem: Message | None = None
         self.url = _normalise_url(url)
@@ -487,6 +505,9 @@ class Register:
         #: the records carry their readings' identity (schema version 8; a read-only
         #: register read as it is at 6 or 7 does not: made when compared)
         self._stored_keys = True
+        #: the records carry their readings' identity by their physical values (schema
+        #: version 9; a read-only register read as it is at 6 to 8 does not)
+        self._stored_identities = True
         self.timezone = lab_timezone(timezone)
         self._sqlite_path = ""
         #: told, at once, when a write waits for the SQLite register's write lock held by
@@ -636,7 +657,8 @@ class Register:
     def _record_columns(self) -> tuple[str, ...]:
         """The columns a record is read from (:class:`CertificateRecord`'s fields that the
         register holds)."""
-        return _RECORD_COLUMNS if self._stored_keys else _RECORD_COLUMNS_V7
+        return _RECORD_COLUMNS if self._stored_identities else \
+            _RECORD_COLUMNS_V8 if self._stored_keys else _RECORD_COLUMNS_V7
 
     # -- schema ---------------------------------------------------------------------------
     def _version_in(self, conn) -> int | None:
@@ -692,9 +714,10 @@ class Register:
             return  # nothing to do: no write lock taken
         if self.read_only and version is not None and version in schema.READ_AS_IS:
             # read as it is: its tables are this version's but for the intervals' key
-            # (version 6) and the readings' stored identity (versions 6 and 7)
+            # (version 6) and the readings' stored identities (versions 6 to 8)
             self._intervals_per_serial = version < 7
             self._stored_keys = version >= schema.READINGS_KEY_VERSION
+            self._stored_identities = version >= schema.READINGS_IDENTITY_VERSION
             return
         if self.read_only:
             raise RegisterError(message(QT_TR_NOOP(
@@ -1421,8 +1444,12 @@ class Register:
         self._check_approval(meta)
         certificates = self._schema.CERTIFICATES
         user = _os_user()
-        # the readings' identity, stored with the record (schema version 8)
+        # the readings' identities, stored with the record: by their values to 10 digits
+        # (schema version 8, chain format 7) and by their physical values (schema version
+        # 9, chain format 8), which the register compares readings by (ident80)
         key = readings_key(request.project_json, request.workbench)
+        ident = readings_identity(request.project_json, request.workbench)
+        stored = NO_READINGS if ident is None else ident.stored
         with self._issuing_turn() as turn:
             for _attempt in range(ISSUE_ATTEMPTS):
                 # the time of issue is taken for each attempt: a record committed by another
@@ -1438,9 +1465,9 @@ class Register:
                     # a calibration of its own has readings of its own: the same readings
                     # judged otherwise are a correction (hostile78 F2: the same readings,
                     # ±3″ for ±1″, issued "separate" read "pass")
-                    repeated = self._judged_again(conn, same, request, meta, key)
+                    repeated = self._judged_again(conn, same, request, meta, ident)
                     # and one judged alike is that calibration issued again
-                    identical = self._issued_again(conn, same, request, key, repeated)
+                    identical = self._issued_again(conn, same, ident, repeated)
                     # a standard whose certificate is one of this register's, withdrawn or
                     # superseded, calibrates nothing (hostile78 F6)
                     void = self._void_standards(conn, meta)
@@ -1459,7 +1486,7 @@ class Register:
                     # digit, with another date of calibration: that calibration issued again,
                     # re-dated (hostile79 #3: a day later it issued as an original, unsaid)
                     redated = () if supersedes or separate_calibration is None else \
-                        self._readings_redated(conn, request, meta, key, same)
+                        self._readings_redated(conn, request, meta, ident, same)
                     # an amendment's corrected maker is confirmed and stated on it
                     # (_corrections); an original naming another maker is asked (rev65 F1)
                     others = () if supersedes or separate_calibration is None else \
@@ -1473,7 +1500,7 @@ class Register:
                     # another item's readings (hostile78 F7: one item's readings issued, byte
                     # for byte, as the certificates of nine others)
                     elsewhere = () if separate_calibration is None else \
-                        self._readings_elsewhere(conn, request, meta, plan.original)
+                        self._readings_elsewhere(conn, request, meta, plan.original, ident)
                     corrected = () if plan.original is None else self._corrections(
                         conn, plan.original, request.workbench, meta, correction_confirmed)
                     if plan.original is not None:
@@ -1562,7 +1589,8 @@ class Register:
                     pdf_sha256="",
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
                     os_user=user, approver=meta.approver,
-                    chain_format=7, readings_key=key)
+                    chain_format=8, readings_key=key, readings_layout=stored[0],
+                    readings_anchor=stored[1], readings_reach=stored[2])
                 # the record's content first, carried by the PDF (so by the DCC that embeds
                 # it); then the files' hashes (reg72 #2: the newest record rewritten with its
                 # chain recomputed is found from the customer's copy). Content form 2 also
@@ -1755,19 +1783,19 @@ class Register:
         return out
 
     def _judged_again(self, conn, same: tuple[str, ...], request: IssueRequest,
-                      meta: CertificateMetadata, key: str = ""
+                      meta: CertificateMetadata, ident: ReadingsIdentity | None = None
                       ) -> tuple[tuple[str, tuple], ...]:
         """Of the current certificates ``same`` of this calibration, those whose readings
-        ``request`` holds too, as typed or by their values (``key``: the request's
-        readings_key), and judges otherwise (another tolerance, rule, standard or setting):
-        each with what it changes (hostile78 F2)."""
+        ``request`` holds too, as typed or by their values (``ident``: the request's
+        readings_identity), and judges otherwise (another tolerance, rule, standard or
+        setting): each with what it changes (hostile78 F2)."""
         project = _with_metadata(request.project_json, request.workbench, meta)
         out = []
         for number in same:
             record = self._get(conn, number)
             judged = project
             if not same_readings(record.project_json, project, request.workbench):
-                if not key or self._readings_key(record) != key:
+                if not self._same_values(record, ident):
                     continue
                 # the same values typed otherwise: compared with the record's rows as typed
                 judged = _with_rows_of(project, record.project_json, request.workbench)
@@ -1776,82 +1804,100 @@ class Register:
                 out.append((number, changes))
         return tuple(out)
 
-    def _issued_again(self, conn, same: tuple[str, ...], request: IssueRequest, key: str,
+    def _issued_again(self, conn, same: tuple[str, ...], ident: ReadingsIdentity | None,
                       repeated: tuple[tuple[str, tuple], ...]) -> tuple[str, ...]:
         """Of the current certificates ``same`` of this calibration, those whose readings
-        are ``request``'s by their values (``key``) and that it judges alike (not among
+        are the request's by their values (``ident``) and that it judges alike (not among
         ``repeated``, :meth:`_judged_again`'s): that calibration issued again."""
-        if not key:
+        if ident is None:
             return ()
         judged = {n for n, _ in repeated}
         return tuple(n for n in same if n not in judged
-                     and self._readings_key(self._get(conn, n)) == key)
+                     and self._same_values(self._get(conn, n), ident))
 
-    def _readings_key(self, record: CertificateRecord) -> str:
-        """``record``'s readings_key: as stored with it (schema version 8), else made from
-        its project state, once per register object."""
-        if record.readings_key is not None:
-            return record.readings_key
-        key = self._readings_keys.get(record.number)
-        if key is None:
-            key = self._readings_keys[record.number] = readings_key(record.project_json,
-                                                                    record.workbench)
-        return key
+    def _identity_of(self, number: str, workbench: str, project_json: str
+                     ) -> ReadingsIdentity | None:
+        """Record ``number``'s readings by their physical values, made from its project
+        state (in the chain) once per register object."""
+        if number not in self._identities:
+            self._identities[number] = readings_identity(project_json, workbench)
+        return self._identities[number]
 
-    def _numbers_of_readings(self, conn, workbench: str, key: str, *where: Any
-                             ) -> builtins.list[str]:
-        """The numbers of the records of ``workbench`` (and ``where``) whose readings have
-        the identity ``key``, in the register's order: looked up by the stored identity
-        (its index, schema version 8); a record without one (issued by an AngleBench of
-        schema 7 after the migration, or a register read as it is) by its readings, made
-        once per register object."""
-        c = self._schema.CERTIFICATES.c
-        if not self._stored_keys:
-            rows = conn.execute(self._sa.select(c.number, c.project_json).where(
+    def _same_values(self, record: CertificateRecord, ident: ReadingsIdentity | None) -> bool:
+        """Whether ``record``'s readings are ``ident``'s by their physical values
+        (readings_identity.same_readings_values)."""
+        if ident is None:
+            return False
+        if record.readings_layout is not None and (
+                record.readings_layout != ident.layout or not near(
+                    ident.anchor, ident.reach, record.readings_anchor or 0,
+                    record.readings_reach or 0)):
+            return False
+        return same_readings_values(ident, self._identity_of(
+            record.number, record.workbench, record.project_json))
+
+    def _numbers_of_readings(self, conn, workbench: str, ident: ReadingsIdentity | None,
+                             *where: Any) -> builtins.list[str]:
+        """The numbers of the records of ``workbench`` (and ``where``) whose readings are
+        ``ident``'s by their physical values, in the register's order: the candidates looked
+        up by the stored identity (its layout and anchor, their indexes: schema version 9),
+        then compared; a record without one (issued by an AngleBench of schema 8 after the
+        migration, or a register read as it is) by its readings, made once per register
+        object."""
+        if ident is None:
+            return []
+        sa, c = self._sa, self._schema.CERTIFICATES.c
+        if not self._stored_identities:
+            rows = conn.execute(sa.select(c.number, c.project_json).where(
                 c.workbench == workbench, *where).order_by(c.id)).all()
         else:
-            rows = conn.execute(self._sa.select(
-                c.number, self._sa.case((c.readings_key.is_(None), c.project_json),
-                                        else_=self._sa.null()).label("project_json"),
-                c.readings_key).where(
-                c.workbench == workbench, *where,
-                self._sa.or_(c.readings_key == key, c.readings_key.is_(None))
-            ).order_by(c.id)).all()
-        out = []
-        for row in rows:
-            stored = row.readings_key if self._stored_keys else None
-            if stored is None:
-                stored = self._readings_keys.get(row.number)
-                if stored is None:
-                    stored = self._readings_keys[row.number] = readings_key(
-                        row.project_json, workbench)
-            if stored == key:
-                out.append(row.number)
-        return out
+            # the anchors within the larger reach: the request's, or a record's, which is at
+            # most the largest of the layout's (its index: one look-up)
+            widest = conn.execute(sa.select(sa.func.max(c.readings_reach)).where(
+                c.workbench == workbench, c.readings_layout == ident.layout)).scalar() or 0
+            span = max(ident.reach, int(widest))
+            rows = conn.execute(sa.select(c.number, c.project_json).where(
+                c.workbench == workbench, *where, sa.or_(
+                    sa.and_(c.readings_layout == ident.layout,
+                            c.readings_anchor.between(ident.anchor - span, ident.anchor + span)),
+                    c.readings_layout.is_(None))).order_by(c.id)).all()
+        return [row.number for row in rows if same_readings_values(
+            ident, self._identity_of(row.number, workbench, row.project_json))]
+
+    def _request_identity(self, request: IssueRequest) -> ReadingsIdentity | None:
+        """``request``'s readings by their physical values (the last request's kept)."""
+        made = getattr(self, "_last_request_identity", None)
+        if made is None or made[0] != (request.project_json, request.workbench):
+            made = self._last_request_identity = (
+                (request.project_json, request.workbench),
+                readings_identity(request.project_json, request.workbench))
+        return made[1]
 
     def _readings_elsewhere(self, conn, request: IssueRequest, meta: CertificateMetadata,
-                            original: CertificateRecord | None
+                            original: CertificateRecord | None,
+                            ident: ReadingsIdentity | None = None
                             ) -> tuple[tuple[str, str, str, str], ...]:
         """The certificates (number, serial, item as printed, date of calibration) of any
         status, on ``request``'s workbench, of another item than ``meta``'s (not its serial
         as printed alike, of its maker: _same_calibration's rule; for an item of no serial,
-        its description and maker) whose readings are ``request``'s by their values
-        (:func:`models.register.readings_identity.readings_key`), in the register's order.
+        its description and maker) whose readings are ``request``'s by their physical values
+        (``ident``, made when not given: :func:`models.register.readings_identity.
+        readings_identity`), in the register's order.
         ``original``: the certificate an amendment or replacement corrects; () when it holds
         these readings already (the amendment does not change them), else its own revisions
         are not counted."""
         from models.register.identifiers import no_serial
 
-        key = readings_key(request.project_json, request.workbench)
-        if not key:
+        ident = ident if ident is not None else self._request_identity(request)
+        if ident is None:
             return ()
         own: frozenset[str] = frozenset()
         if original is not None:
-            if self._readings_key(original) == key:
+            if self._same_values(original, ident):
                 return ()
             own = self._revisions_of(conn, original)
         out = []
-        for number in self._numbers_of_readings(conn, request.workbench, key):
+        for number in self._numbers_of_readings(conn, request.workbench, ident):
             if number in own:
                 continue
             record = self._get(conn, number)
@@ -1865,20 +1911,23 @@ class Register:
         return tuple(out)
 
     def readings_of_another_item(self, workbench: str, meta: CertificateMetadata,
-                                 rows: builtins.list[builtins.list[str]]
+                                 rows: builtins.list[builtins.list[str]],
+                                 settings: dict | None = None
                                  ) -> ReadingsOfAnotherItem | None:
         """What :meth:`issue` would raise, unasked, for an original of ``meta`` on
         ``workbench`` whose readings are ``rows`` (the sheet's, as typed) because they are
         those of certificates of another item (:class:`ReadingsOfAnotherItem`); None when
-        they are not: the window asks before it asks for a file name. The issue checks
-        again."""
+        they are not: the window asks before it asks for a file name. ``settings``: the
+        workbench's, which give its columns' units (readings_identity; None: the defaults).
+        The issue checks again."""
         from models.register.identifiers import IdentifierError, normalise_identifier
 
         try:
             meta = dataclasses.replace(meta, item_serial=normalise_identifier(meta.item_serial))
         except IdentifierError:
             return None  # the issue refuses it, saying why
-        project = json.dumps({"workbenches": {workbench: {"rows": rows}}})
+        project = json.dumps({"workbenches": {workbench: {"rows": rows,
+                                                          "settings": settings or {}}}})
         request = IssueRequest(workbench, meta, project)
         with self._read() as conn:
             elsewhere = self._readings_elsewhere(conn, request, meta, None)
@@ -1905,17 +1954,16 @@ class Register:
         return self._confirmations("same_readings", number)
 
     def _readings_redated(self, conn, request: IssueRequest, meta: CertificateMetadata,
-                          key: str, same: tuple[str, ...]) -> tuple[str, ...]:
+                          ident: ReadingsIdentity | None, same: tuple[str, ...]
+                          ) -> tuple[str, ...]:
         """The current certificates of ``meta``'s item on ``request``'s workbench with
         another date of calibration than ``meta``'s whose readings are ``request``'s by their
-        values (``key``): no two calibrations repeat every reading to the last digit, so an
+        values (``ident``): no two calibrations repeat every reading to the last digit, so an
         original of them is that calibration issued again with its date moved (hostile79
         #3). ``same``: this date's certificates, told apart already."""
-        if not key:
-            return ()
         c = self._schema.CERTIFICATES.c
         return tuple(n for n in self._numbers_of_readings(
-            conn, request.workbench, key, c.status == "issued",
+            conn, request.workbench, ident, c.status == "issued",
             c.calibration_date != meta.calibration_date)
             if n not in same and _one_item(self._get(conn, n), meta))
 
@@ -1961,13 +2009,10 @@ class Register:
         :meth:`_same_calibration` tells an item), of another date of calibration, whose
         readings are ``request``'s by their values; ``besides`` (those of its date) not
         counted."""
-        key = readings_key(request.project_json, request.workbench)
-        if not key:
-            return ()
         c = self._schema.CERTIFICATES.c
         out = []
         for number in self._numbers_of_readings(
-                conn, request.workbench, key, c.status == "withdrawn",
+                conn, request.workbench, self._request_identity(request), c.status == "withdrawn",
                 c.calibration_date != meta.calibration_date):
             if number not in besides and _one_item(self._get(conn, number), meta):
                 out.append(number)
@@ -2521,7 +2566,8 @@ class Register:
         certificates, entries = schema.CERTIFICATES, schema.ENTRIES
         columns = ("id", *CHAINED, *CHAINED_V2, *CHAINED_V3, *CHAINED_V4, "chain_format", "status",
                    "superseded_by", "withdrawn_reason", "chain_sha256", "signature",
-                   *(("readings_key",) if self._stored_keys else ()))
+                   *(("readings_key",) if self._stored_keys else ()),
+                   *(schema.READINGS_IDENTITY_COLUMNS if self._stored_identities else ()))
         problems: list = []
         with self._read() as conn:
             rows = conn.execute(sa.select(*(certificates.c[c] for c in columns),
@@ -3777,15 +3823,21 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
 
 
 def _readings_key_problems(fields: dict) -> list:
-    """A record's stored readings identity (schema version 8; in the chain from chain
-    format 7, outside it for the records migration 8 filled it in for) against
-    the one its readings give (its project state, in the chain): set otherwise after issue,
-    it would hide its readings from the check of one item's readings issued as another's,
-    or name it for readings it does not hold. [] when they agree or none is stored."""
+    """A record's stored readings identities (readings_key, schema version 8: in the chain
+    from chain format 7; readings_layout, _anchor and _reach, schema version 9: in the chain
+    from chain format 8; outside it for the records migrations 8 and 9 filled them in for)
+    against the ones its readings give (its project state, in the chain): set otherwise
+    after issue, they would hide its readings from the check of one item's readings issued
+    as another's, or name it for readings it does not hold. [] when they agree or none is
+    stored; one finding for either or both."""
     stored = fields.get("readings_key")
-    if stored is None:
-        return []
-    if stored == readings_key(fields["project_json"], fields["workbench"]):
+    kept = stored is None or stored == readings_key(fields["project_json"], fields["workbench"])
+    layout = fields.get("readings_layout")
+    if kept and layout is not None:
+        identity = readings_identity(fields["project_json"], fields["workbench"])
+        kept = (layout, fields.get("readings_anchor"), fields.get("readings_reach")) == (
+            NO_READINGS if identity is None else identity.stored)
+    if kept:
         return []
     return [message(QT_TR_NOOP(
         "record {number}: the identity of its readings stored with it is not that of its "

@@ -124,6 +124,12 @@ def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
     return THEODOLITE.checked_settings(settings)
 
 
+def elevation_origin(settings: Mapping[str, Any]) -> float:
+    """What the analysis adds to the vertical column's readings (deg) to read them as
+    elevations E: −90 for zenith angles V (E = V − 90°), 0 for elevations."""
+    return -90.0 if settings.get("vertical_reading") == "zenith" else 0.0
+
+
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteResult:
     s = _settings(settings)
     parsed, repeats = average_repeats(parsed, s["readings_per_point"],
@@ -134,9 +140,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
         raise ValueError(message(
             QT_TR_NOOP("{n} usable readings; at least 4 are needed"),
             n=parsed.n))
-    elevation = parsed["elevation_deg"]
-    if s["vertical_reading"] == "zenith":
-        elevation = elevation - 90.0
+    elevation = parsed["elevation_deg"] + elevation_origin(s)
     reference = int(s["reference_row"])
     reference_index = None
     if reference > 0:
@@ -444,6 +448,9 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
     analyze = staticmethod(analyze)
     split_incomplete = staticmethod(split_incomplete)
     plan_reading_keys = ("azimuth_deg", "elevation_deg")
+
+    def column_origins(self, settings: Mapping[str, Any]) -> Mapping[str, float]:
+        return {"elevation_deg": elevation_origin(settings)}
 
     def entry_plan(self, settings: Mapping[str, Any]) -> EntryPlan | None:
         from models.readings.entry_plan import targets_from_text, theodolite_plan

@@ -112,3 +112,33 @@ def test_the_window_asks_why_before_the_file_name(samples_dir, tmp_path):
     with Register(register_url()) as register:
         [said] = register.readings_of_another_item_confirmations()
     assert said["reason"] == "the pair was read once, coupled"
+
+
+@pytest.mark.slow
+def test_the_window_asks_for_readings_retyped_in_the_unit_its_settings_give(samples_dir,
+                                                                            tmp_path):
+    """ident80: the window's question before the file name compares the readings with the
+    workbench's settings (the units and origins of its columns): the sample's elevations
+    typed as zenith angles V, with the setting that says so, are asked about as the issue
+    would refuse them, before any file is chosen."""
+    view, presenter = window_presenter()
+    kind, rows, result = theodolite_sample_analysed(samples_dir)
+    details = json.loads((samples_dir / "certificate_theodolite.json").read_text(
+        encoding="utf-8"))
+    zenith = [[r[0], r[1], f"{parse_angle_deg(r[2]) + 90:.8f}"] for r in rows]
+
+    def export(serial: str, path: str, readings, settings) -> bool:
+        view.edit_certificate_details.return_value = CertificateMetadata.from_dict(
+            {**details, "example": False, "certificate_number": "", "item_serial": serial})
+        view.choose_save_path.return_value = str(tmp_path / path)
+        return presenter.export_certificate(kind, result, settings, "run.csv", readings)
+
+    assert export("LRA-0815", "a.pdf", rows, {})
+    view.choose_save_path.reset_mock()
+    view.ask_readings_of_another_item.return_value = ""  # cancelled: nothing, no file asked
+    assert not export("LRA-0900", "b.pdf", zenith, {"vertical_reading": "zenith"})
+    with Register(register_url()) as register:
+        [first] = register.list()
+    numbers, _reason = view.ask_readings_of_another_item.call_args.args
+    assert numbers == (first.number,)
+    view.choose_save_path.assert_not_called()

@@ -65,10 +65,21 @@ def _as_chain_format_6(path: Path, without_key: bool = False) -> None:
         conn.execute("UPDATE register_state SET value = ? WHERE name = 'head'", (head,))
 
 
+def _without_version_9(path: Path) -> None:
+    """The columns and indexes of schema version 9 dropped (the readings by their physical
+    values, tests/models/register/test_readings_identity_stored.py)."""
+    with sqlite3.connect(path) as conn:
+        for index in ("certificates_readings_anchor", "certificates_readings_reach"):
+            conn.execute(f"DROP INDEX {index}")
+        for column in ("readings_layout", "readings_anchor", "readings_reach"):
+            conn.execute(f"ALTER TABLE certificates DROP COLUMN {column}")
+
+
 def _as_version_7(path: Path) -> None:
     """The register as schema version 7 left it: its records of chain format 6, no stored
     identity, no index."""
     _as_chain_format_6(path)
+    _without_version_9(path)
     with sqlite3.connect(path) as conn:
         conn.execute("DROP INDEX certificates_readings_key")
         conn.execute("ALTER TABLE certificates DROP COLUMN readings_key")
@@ -116,7 +127,7 @@ def test_a_register_of_version_7_gets_every_records_identity_once_its_chain_kept
             "SELECT chain_sha256 FROM certificates ORDER BY id")]
         head = conn.execute("SELECT value FROM register_state WHERE name = 'head'").fetchone()[0]
     with Register(f"sqlite:///{path}") as register:
-        assert register.version == schema.LATEST == 8
+        assert register.version == schema.LATEST == 9
         assert register.problems == [] and register.audit(pdfs=True) == []
         assert register.chain_head() == head
         assert [register.get(r.number).chain_sha256 for r in records] == chains
@@ -221,7 +232,7 @@ def test_an_identity_set_otherwise_is_found_at_opening_and_launders_nothing(tmp_
         with pytest.raises(store.RegisterError, match="changed after issue"):
             _issue(register, "LRA-0900", _rows(0))
         assert [r.number for r in register.list()] == [first.number]
-        assert register.get(first.number).chain_format == 7
+        assert register.get(first.number).chain_format == 8
 
 
 def test_a_migrated_records_identity_set_otherwise_is_found_by_verify(tmp_path):
@@ -267,7 +278,7 @@ def test_a_full_disk_during_migration_8_says_so_and_leaves_version_7(tmp_path, m
         Register(f"sqlite:///{path}")
     size = f"{path.stat().st_size / 1e6:.1f} MB"
     assert str(refused.value) == (
-        f"the disk is full at {path}: migrating the register from schema version 7 to 8 "
+        f"the disk is full at {path}: migrating the register from schema version 7 to 9 "
         f"needs room for its journal (up to the register's own size, {size}); nothing was "
         "changed, the register is still at version 7 (free some space and try again)")
     with sqlite3.connect(path) as conn:
@@ -276,6 +287,6 @@ def test_a_full_disk_during_migration_8_says_so_and_leaves_version_7(tmp_path, m
             "PRAGMA table_info(certificates)")}
     monkeypatch.setattr(store, "_sqlite_connect", real)
     with Register(f"sqlite:///{path}") as register:
-        assert register.version == 8 and register.audit(pdfs=True) == []
+        assert register.version == 9 and register.audit(pdfs=True) == []
         assert [register.get(r.number).readings_key for r in records] == [
             readings_key(theodolite_project(_rows(i)), "theodolite") for i in range(3)]

@@ -61,12 +61,12 @@ def test_the_dcc_is_stored_with_the_same_number_and_pdf_and_chained(issued):
     url, plain, with_dcc = issued
     with _open(url) as register:
         # chain format 4 and later (7: schema 8) covers the DCC's SHA-256, None here, and the kind
-        assert plain.chain_format == 7 and plain.dcc_sha256 is None
+        assert plain.chain_format == 8 and plain.dcc_sha256 is None
         with pytest.raises(RegisterError, match="issued without a digital calibration"):
             register.dcc(plain.number)
         for record in with_dcc:
             dcc = register.dcc(record.number)
-            assert record.chain_format == 7
+            assert record.chain_format == 8
             assert record.dcc_sha256 == hashlib.sha256(dcc).hexdigest()
             assert register.get(record.number).dcc_sha256 == record.dcc_sha256
             t.assert_valid(dcc)
@@ -156,7 +156,12 @@ def _as_version_4(url: str) -> str:
             previous = hashlib.sha256(f"{previous}\n{body}".encode()).hexdigest()
             conn.execute(sa.text("UPDATE certificates SET chain_format = 2, chain_sha256 = :c "
                                  "WHERE id = :i"), {"c": previous, "i": row["id"]})
-        for statement in ("DROP INDEX certificates_readings_key",
+        for statement in ("DROP INDEX certificates_readings_anchor",
+                          "DROP INDEX certificates_readings_reach",
+                          "ALTER TABLE certificates DROP COLUMN readings_layout",
+                          "ALTER TABLE certificates DROP COLUMN readings_anchor",
+                          "ALTER TABLE certificates DROP COLUMN readings_reach",
+                          "DROP INDEX certificates_readings_key",
                           "ALTER TABLE certificates DROP COLUMN readings_key",
                           "ALTER TABLE certificates DROP COLUMN dcc",
                           "ALTER TABLE certificates DROP COLUMN dcc_sha256",
@@ -182,14 +187,14 @@ def test_a_version_4_register_migrates_keeping_its_chain(register_url):
                for _ in range(3)]
     head = _as_version_4(register_url)
     with _open(register_url) as register:
-        assert register.version == schema.LATEST == 8
+        assert register.version == schema.LATEST == 9
         assert register.problems == [] and register.find_head(head) == (3, head)
         kept = [register.get(r.number) for r in old]
         assert kept[-1].chain_sha256 == head and {r.chain_format for r in kept} == {2}
         assert {r.document_kind for r in kept} == {None}  # not recorded, never guessed
         new = register.issue(IssueRequest("polygon", META, PROJECT), render,
                              render_dcc=render_dcc)[0]
-        assert new.chain_format == 7 and register.audit(pdfs=True) == []
+        assert new.chain_format == 8 and register.audit(pdfs=True) == []
     sql(register_url, "UPDATE schema_version SET version = 4",
         "UPDATE register_state SET value = '4' WHERE name = 'schema_version'")
     with pytest.raises(RegisterError, match="schema version 4 was set back"):

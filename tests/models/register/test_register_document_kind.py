@@ -57,13 +57,15 @@ def sql(url: str, *statements: str, **params) -> None:
 def _chain_v4(previous: str, record) -> str:
     """Chain format 4 written out here: SHA-256 of the previous value and the issued fields,
     the kind and the DCC's SHA-256 among them, as sorted compact JSON (format 7: and the
-    readings' identity)."""
+    readings' identity; format 8: by their physical values)."""
     keys = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
             "item_description", "item_manufacturer", "item_serial", "customer", "operator",
             "workstation", "supersedes", "revision", "change_note", "project_json",
             "software_json", "headline_json", "pdf_sha256", "seq", "counter", "counter_value",
             "os_user", "approver", "dcc_sha256", "document_kind", "chain_format") + (
-        ("readings_key",) if record.chain_format >= 7 else ())
+        ("readings_key",) if record.chain_format >= 7 else ()) + (
+        ("readings_layout", "readings_anchor", "readings_reach") if record.chain_format >= 8
+        else ())
     body = json.dumps({k: getattr(record, k) for k in keys}, sort_keys=True,
                       ensure_ascii=False, separators=(",", ":"))
     return hashlib.sha256(f"{previous}\n{body}".encode()).hexdigest()
@@ -88,7 +90,7 @@ def test_each_record_chains_what_its_document_is(register_url):
         kinds = {r.number: r.document_kind for r in register.list()}
         assert kinds == {report.number: "test", certificate.number: "calibration",
                          amended.number: "test", replaced.number: "test"}
-        assert {r.chain_format for r in register.list()} == {7}  # 4 and later chain the kind
+        assert {r.chain_format for r in register.list()} == {8}  # 4 and later chain the kind
         assert register.get(certificate.number).chain_sha256 == _chain_v4(before, certificate)
         assert register.audit(pdfs=True) == []
         with pytest.raises(ValueError, match="document_kind 'certificate'"):
@@ -109,7 +111,7 @@ def _schema_5(tmp_path) -> tuple[str, dict[str, str]]:
 def test_a_register_of_0_8_11_opens_verifies_and_migrates_unchanged(tmp_path, capsys):
     url, chains = _schema_5(tmp_path)
     with _open(url) as register:
-        assert register.version == schema.LATEST == 8
+        assert register.version == schema.LATEST == 9
         assert register.problems == [] and register.audit(pdfs=True) == []
         assert register.chain_head() == SCHEMA_5_HEAD
         old = {r.number: r for r in register.list()}
@@ -119,7 +121,7 @@ def test_a_register_of_0_8_11_opens_verifies_and_migrates_unchanged(tmp_path, ca
         assert old["AB-2026-0002"].status == "withdrawn"
         new = register.issue(IssueRequest("positioning", META, PROJECT), render,
                              document_kind="test")[0]
-        assert new.chain_format == 7 and register.chain_before(new.number) == SCHEMA_5_HEAD
+        assert new.chain_format == 8 and register.chain_before(new.number) == SCHEMA_5_HEAD
         assert register.audit(pdfs=True) == []
     assert main(["register", "--register", url, "verify"]) == 0
     capsys.readouterr()

@@ -150,7 +150,7 @@ def _instruments(url: str, table: str = "instruments") -> tuple[list, list]:
 def test_a_register_of_0_8_13_migrates_keeping_its_chain_and_intervals(tmp_path, capsys):
     url, chains = _schema_6(tmp_path)
     with _open(url) as register:
-        assert register.version == schema.LATEST == 8
+        assert register.version == schema.LATEST == 9
         assert register.problems == [] and register.audit(pdfs=True) == []
         assert register.chain_head() == SCHEMA_6_HEAD and _chains(url) == chains
         # the intervals set per serial are every maker's item's, as they were

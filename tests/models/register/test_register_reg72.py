@@ -194,7 +194,7 @@ def test_a_signed_register_of_0_8_20_verifies_and_signs_its_state_from_its_next_
         assert register.chain_head() == OLD_HEAD
         register.clock = lambda: ISSUED + dt.timedelta(days=3)
         new = register.issue(IssueRequest("polygon", META, PROJECT), stand_in_pdf)[0]
-        assert new.number == "AB-2026-0003" and new.chain_format == 7
+        assert new.number == "AB-2026-0003" and new.chain_format == 8
         assert register.chain_before(new.number) == OLD_HEAD
         assert register.audit(pdfs=True) == []
     assert _rows(url, "SELECT value FROM register_state WHERE name = 'state_signature'")

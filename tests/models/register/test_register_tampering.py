@@ -339,7 +339,7 @@ def test_the_issuing_user_and_approver_are_chained(issued):
     with _open(url) as register:
         record = register.get(numbers[0])
         assert record.approver == "Dr. Li" and record.os_user is not None
-        assert record.chain_format == 7 and record.seq == 1  # every record since schema 8
+        assert record.chain_format == 8 and record.seq == 1  # every record since schema 9
     sql(url, "UPDATE certificates SET approver = 'Someone' WHERE number = :n", n=numbers[0])
     assert any(f"record {numbers[0]}: the hash chain is broken" in p for p in found(url))
 
