@@ -8,11 +8,18 @@ Through the real window: the readings typed in the table's editor, Return after 
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLineEdit
 
 from tests.app.capture.window_steps import show_workbench as _show
+
+#: two polygon projects with an entry plan saved by main before plan80, and what its window
+#: said of them (tests/fixtures/plan80/written_by_main.py)
+WRITTEN_BY_MAIN = Path(__file__).resolve().parents[1] / "fixtures" / "plan80"
 
 pytestmark = pytest.mark.slow  # a window, 24 readings typed
 
@@ -102,3 +109,46 @@ def test_typed_readings_of_twelve_faces_twice_each_land_on_their_faces(bench, qt
     assert bench.problem == ""
     assert bench.result is not None and bench.result.repeats.n == 2
     assert bench.result.repeats.rows.shape == (FACES + 1, 2)
+
+
+def _table(bench) -> list[dict[str, str]]:
+    sheet = bench.sheet
+    keys = [c.key for c in sheet.columns]
+    return [{k: sheet.text(r, c) for c, k in enumerate(keys)} for r in range(sheet.row_count)]
+
+
+def _opened(window, name: str):
+    path = WRITTEN_BY_MAIN / name
+    assert window.projects.open_project(path)
+    bench = _show(window, "polygon")
+    saved = json.loads(path.read_text(encoding="utf-8"))["workbenches"]["polygon"]
+    # opened as saved: the settings, the cells as typed, nothing changed by the opening
+    assert {k: bench.settings[k] for k in saved["settings"]} == saved["settings"]
+    assert [[r[c.key] for c in bench.sheet.columns] for r in _table(bench)] == saved["rows"]
+    assert not window.projects.is_modified
+    return bench
+
+
+def test_projects_saved_before_keep_their_plan_and_figures(window, qtbot):
+    said = json.loads((WRITTEN_BY_MAIN / "said_by_main.json").read_text(encoding="utf-8"))
+    # one reading a face: the plan is the one main had, at the same point
+    bench = _opened(window, "polygon_plan_one_reading.anglebench.json")
+    plan = bench.entry_plan()
+    assert [dict(p.cells) for p in plan.points] == said["one_reading"]["cells"]
+    assert str(plan.next_text(_table(bench), bench.kind.plan_reading_keys)) == \
+        said["one_reading"]["next"] == "next: set 1: face 8 of 12"
+    assert list(plan.progress(_table(bench), bench.kind.plan_reading_keys)) == \
+        said["one_reading"]["progress"]
+    # two readings a face (the faces typed by hand on main, its plan could not take them):
+    # the same figures; the plan now counts both readings of every face
+    bench = _opened(window, "polygon_plan_two_readings.anglebench.json")
+    assert bench.settings["readings_per_point"] == 2 and bench.settings["plan_sets"] == 1
+    qtbot.waitUntil(lambda: not bench.analysis_pending and bench.result is not None,
+                    timeout=10000)
+    assert list(bench.result.mean_corrected_arcsec) == pytest.approx(
+        said["two_readings"]["mean_corrected_arcsec"], abs=1e-12)
+    plan = bench.entry_plan()
+    assert said["two_readings"]["progress"] == [13, 13]  # main: a row a face, 13 of 26 taken
+    assert plan.progress(_table(bench), bench.kind.plan_reading_keys) == (26, 26)
+    assert str(plan.next_text(_table(bench), bench.kind.plan_reading_keys)) == \
+        "plan complete (26 points)"
