@@ -18,10 +18,9 @@ from widgets.readings_table_model import INVALID_BRUSH, LEFT_OUT_BRUSH
 
 pytestmark = pytest.mark.slow  # a window
 
-MISSING = ("the polygon's face deviations are missing: load its calibration certificate "
-           "(“Load polygon certificate…” below the settings) or type each face's deviation "
-           "in the polygon dev column. A blank deviation is not taken as 0 (a perfect "
-           "polygon): the readings are kept and give a result once the deviations are in.")
+MISSING = ("the polygon's face deviations are missing: load its certificate (“Load polygon "
+           "certificate…”, at the end of the set-up) or type them in the polygon dev column. A "
+           "blank one is not taken as 0; the readings are kept.")
 DEVIATIONS = [0.0, 0.12, -0.08, 0.05, 0.2, -0.15, 0.03, -0.04, 0.1, -0.11, 0.07, -0.02]
 
 

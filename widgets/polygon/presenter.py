@@ -101,11 +101,10 @@ class PolygonPresenter(WorkbenchPresenter):
                     continue  # typed wrong: that cell stays red, the column still awaited
                 return None
         return "polygon_dev_arcsec", tr(
-            "the polygon's face deviations are missing: load its calibration certificate "
-            "(“Load polygon certificate…” below the settings) or type each face's deviation "
-            "in the {column} column. A blank deviation is not taken as 0 (a perfect "
-            "polygon): the readings are kept and give a result once the deviations are "
-            "in.").format(column=declared(column.title))
+            "the polygon's face deviations are missing: load its certificate (“Load polygon "
+            "certificate…”, at the end of the set-up) or type them in the {column} column. A "
+            "blank one is not taken as 0; the readings are kept.").format(
+                column=declared(column.title))
 
     def load_certificate_dialog(self) -> None:
         from models.certificate.metadata import MetadataError
