@@ -63,6 +63,12 @@ class ReadingsTableModel(QAbstractTableModel):
         #: rows the analysis left out (its warnings say why): shaded clearly, and said so
         #: in their cells' tooltip
         self.left_out_rows: set[int] = set()
+        #: {column: what its blank cells wait for} — a column the analysis needs that no row
+        #: has filled yet (the polygon's face deviations before its certificate is loaded:
+        #: plan80), said once by the presenter: its blank cells are not bad cells (not red),
+        #: drawn as left out with that sentence as their tooltip. A cell typed wrong in it
+        #: is still red
+        self.awaited_columns: dict[int, str] = {}
         #: cells whose captured reading was edited since, with what to say of each
         #: (models/capture/edits.py): drawn apart, the text in their tooltip
         self.edited_cells: dict[tuple[int, int], str] = {}
@@ -201,6 +207,8 @@ class ReadingsTableModel(QAbstractTableModel):
                 return EDITED_BRUSH
             if self.cell_error(r, c) is not None:
                 return INVALID_BRUSH
+            if self.awaits(r, c):
+                return LEFT_OUT_BRUSH
             if (r, c) in self.edited_cells:
                 return EDITED_BRUSH
             if self.take_warning(r, c) is not None:
@@ -211,6 +219,8 @@ class ReadingsTableModel(QAbstractTableModel):
                 return MUTED_BRUSH
             return None
         if role == Qt.ItemDataRole.ToolTipRole:
+            if self.awaits(r, c):
+                return translated(self.awaited_columns[c])
             reason = self.cell_error(r, c)
             edited = self.edited_cells.get((r, c))
             if reason is None and edited is not None:
@@ -286,15 +296,35 @@ class ReadingsTableModel(QAbstractTableModel):
         says what was captured), never a cell that cannot be read (it was red)."""
         return (r, c) in self.edited_cells and not self.sheet.text(r, c).strip()
 
+    def awaits(self, r: int, c: int) -> bool:
+        """Cell (r, c) is a blank cell of a column the analysis waits for
+        (:attr:`awaited_columns`) in a row that is not blank."""
+        return (c in self.awaited_columns and r < self.sheet.row_count
+                and not self.sheet.text(r, c).strip() and not self.sheet.is_blank_row(r))
+
+    def set_awaited_columns(self, columns: dict[int, str]) -> None:
+        """The columns whose blank cells wait for what the presenter says once
+        (:attr:`awaited_columns`); those columns repainted on a change."""
+        if columns == self.awaited_columns:
+            return
+        changed = set(columns) | set(self.awaited_columns)
+        self.awaited_columns = dict(columns)
+        if self.sheet.row_count:
+            for c in changed:
+                self.dataChanged.emit(self.index(0, c), self.index(self.sheet.row_count - 1, c),
+                                      [Qt.ItemDataRole.BackgroundRole,
+                                       Qt.ItemDataRole.ToolTipRole])
+
     def cell_error(self, r: int, c: int) -> str | None:
         """The sheet's :meth:`~models.readings.sheet.ReadingsSheet.cell_error`, the parse
         remembered by column and text (a blank row is fine, asked each time, and so is a
-        blank cell of a row waiting for its reading: :meth:`is_waiting`)."""
+        blank cell of a row waiting for its reading: :meth:`is_waiting`, and one of a
+        column the analysis waits for: :attr:`awaited_columns`)."""
         if self.sheet.is_blank_row(r):
             return None
         key = (c, self.sheet.text(r, c))
-        if not key[1].strip() and self.is_waiting(r):
-            return None  # a row waiting for its reading: a cell not filled yet
+        if not key[1].strip() and (self.is_waiting(r) or c in self.awaited_columns):
+            return None  # a row waiting for its reading, or a column: a cell not filled yet
         try:
             return self._reasons[key]
         except KeyError:

@@ -1237,8 +1237,34 @@ class WorkbenchPresenter(QObject):
                 taken=parsed.n, used=parsed.n - waiting)
         return tr("Readings — {used} used").format(used=parsed.n)
 
+    def awaited_column(self, sheet: ReadingsSheet) -> tuple[str, str] | None:
+        """A column the analysis cannot go without that no row of ``sheet`` has filled yet,
+        with the one sentence (translated) that says what it waits for and where it comes
+        from: its blank cells are then not bad cells (not red, not counted as such) and the
+        sentence is the reason there is no result (the polygon's face deviations before its
+        certificate is loaded: plan80). None (the default): every blank cell of a column
+        that needs a value is a bad cell."""
+        return None
+
+    def _awaited(self, parsed: ParsedReadings, error: str,
+                 result: Any) -> tuple[list[Any], str]:
+        """The bad cells of ``parsed`` less the blank ones of the column the analysis waits
+        for (:meth:`awaited_column`), marked so in the table; and ``error``, with no result
+        the sentence that says what it waits for."""
+        sheet = self.result_sheet
+        awaited = None if isinstance(sheet.rows, NumericRows) else self.awaited_column(sheet)
+        self.table_model.set_awaited_columns(
+            {} if awaited is None else {sheet.column_index(awaited[0]): awaited[1]})
+        if awaited is None:
+            return list(parsed.errors), error
+        errors = [e for e in parsed.errors
+                  if not (e.column_key == awaited[0] and not str(e.text).strip())]
+        return errors, (awaited[1] if result is None else error)
+
     def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None,
                 shown: ShownAsPrinted | None = None, refused: str = "") -> None:
+        # the blank cells of a column the analysis waits for: one sentence, not bad cells
+        bad_cells, error = self._awaited(parsed, error, result)
         self.parsed = parsed
         self.display = display
         self.result = result
@@ -1248,12 +1274,12 @@ class WorkbenchPresenter(QObject):
         self.refused_setting = refused
         self.view.mark_setting(refused)
         input_warnings = []
-        if parsed.errors:
-            rows = sorted({e.row + 1 for e in parsed.errors})
+        if bad_cells:
+            rows = sorted({e.row + 1 for e in bad_cells})
             listed = ", ".join(map(str, rows[:8])) + (" …" if len(rows) > 8 else "")
             input_warnings.append(
                 tr("{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point "
-                   "at a red cell to see why.").format(cells=len(parsed.errors), rows=listed))
+                   "at a red cell to see why.").format(cells=len(bad_cells), rows=listed))
         waiting = self._waiting_in_the_middle(parsed)
         if waiting is not None:
             input_warnings.append(tr("The next reading goes to row {row}: row {row} waits for "
@@ -1264,8 +1290,8 @@ class WorkbenchPresenter(QObject):
             input_warnings.append(tr("Entry plan: {reason}").format(
                 reason=translated(self.plan_problem)))
         self.view.set_readings_caption(self._readings_count(parsed, result) + (
-                tr(", {cells} bad cell(s)").format(cells=len(parsed.errors))
-                                             if parsed.errors else ""))
+                tr(", {cells} bad cell(s)").format(cells=len(bad_cells))
+                                             if bad_cells else ""))
         self.view.set_next_row(next_text)
         if result is None:
             self.shown = None  # (a million-sample result is not kept for nothing)

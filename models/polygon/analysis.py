@@ -1080,7 +1080,8 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
         if not faces:
             raise ValueError(message(QT_TR_NOOP("the entry plan needs the number of faces "
                                                 "(set-up: faces n)")))
-        return polygon_plan(faces, sets, closure=True, alternate=True)
+        return polygon_plan(faces, sets, closure=True, alternate=True,
+                            readings=int(settings.get("readings_per_point", 1) or 1))
 
     def certificate(self, result, metadata, source_name="", settings=None):
         from models.polygon.report import polygon_certificate  # not for a plain analysis

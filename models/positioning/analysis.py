@@ -806,7 +806,8 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         unit = TARGET_UNITS.get(str(settings.get("target_unit", "deg")), "°")
         return positioning_plan(targets_from_text(str(settings.get("plan_targets", ""))), runs,
                                 settings.get("plan_directions", "both") == "both",
-                                str(settings.get("plan_order", "linear")), unit)
+                                str(settings.get("plan_order", "linear")), unit,
+                                int(settings.get("readings_per_point", 1) or 1))
 
     def error_unit(self, settings):
         """The deviation unit, every figure's."""

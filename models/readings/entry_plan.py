@@ -22,6 +22,11 @@ API (plain Python, no Qt; the window's readings table and the capture panel both
     plan.progress(rows, reading_keys)    # (points taken, points in the plan)
     plan.as_dict() / EntryPlan.from_dict(d)   # saved with the lab defaults / project
 
+With n readings per point (the workbench's ``readings_per_point``, averaged n rows at a
+time by models/readings/repeats.py) each point is n rows with the same plan cells, one
+after another, each labelled with its reading ("set 1: face 3 of 12, reading 2 of 2"): a
+plan of one row per point put a face's second reading in the next face's row (plan80).
+
 ``rows`` is the table as a list of {column key: cell text}. A row *takes* a plan point
 when its plan cells equal the point's (numbers compared as numbers, "+"/"↑"/"up" as one
 direction) and at least one of ``reading_keys`` is filled. ``placement`` returns None when
@@ -252,14 +257,15 @@ def _check_count(name: str, value: Any, least: int = 1) -> int:
 
 
 def positioning_plan(targets: Sequence[float], runs: int = 5, bidirectional: bool = True,
-                     order: str = "linear", unit: str = "°") -> EntryPlan:
+                     order: str = "linear", unit: str = "°", readings: int = 1) -> EntryPlan:
     """ISO 230-2's test cycle over ``targets`` (in the target unit, ``unit`` its symbol).
 
     ``linear`` (ISO 230-2 standard test cycle): run 1 forward over the targets in rising
     order, then (bidirectional) backward in falling order, then run 2, …
     ``pilgrim`` (the pilgrim-step cycle): every approach of one target before the next
     target: at each target in rising order, run 1 ↑ (and ↓), run 2 ↑ (and ↓), …
-    Fills ``target``, ``run`` and ``direction`` (+ forward, − backward).
+    Fills ``target``, ``run`` and ``direction`` (+ forward, − backward); each approach is
+    ``readings`` rows, one per reading of the point (the workbench's readings per point).
     """
     targets = [float(t) for t in targets]
     if len(targets) < 2 or not all(math.isfinite(t) for t in targets):
@@ -267,6 +273,7 @@ def positioning_plan(targets: Sequence[float], runs: int = 5, bidirectional: boo
     if len({round(t, 9) for t in targets}) != len(targets):
         raise ValueError(message(QT_TR_NOOP("a test plan lists a target twice")))
     _check_count("runs", runs)
+    _check_count("readings", readings)
     if order not in ("linear", "pilgrim"):
         raise ValueError(message(QT_TR_NOOP("test plan order '{order}': linear or pilgrim"),
                                  order=order))
@@ -283,24 +290,43 @@ def positioning_plan(targets: Sequence[float], runs: int = 5, bidirectional: boo
                 approaches.append((t, run, 1))
                 if bidirectional:
                     approaches.append((t, run, -1))
-    points = tuple(PlanPoint(i, {"target": _number(t), "run": str(run),
-                                 "direction": "+" if d > 0 else "-"},
-                             message(QT_TR_NOOP("target {target}, run {run} {arrow}"),
-                                     target=f"{_number(t)}{unit}", run=run,
-                                     arrow="↑" if d > 0 else "↓"))
-                   for i, (t, run, d) in enumerate(approaches))
-    return EntryPlan("cycle", {"targets": targets, "runs": runs,
-                                     "bidirectional": bool(bidirectional), "order": order,
-                                     "unit": unit}, points)
+    rows = [row for t, run, d in approaches for row in _readings_of(
+        {"target": _number(t), "run": str(run), "direction": "+" if d > 0 else "-"},
+        message(QT_TR_NOOP("target {target}, run {run} {arrow}"), target=f"{_number(t)}{unit}",
+                run=run, arrow="↑" if d > 0 else "↓"), readings)]
+    points = tuple(PlanPoint(i, cells, label) for i, (cells, label) in enumerate(rows))
+    return EntryPlan("cycle", _with_readings({"targets": targets, "runs": runs,
+                                              "bidirectional": bool(bidirectional),
+                                              "order": order, "unit": unit}, readings), points)
+
+
+def _readings_of(cells: Mapping[str, str], label: Message,
+                 readings: int) -> list[tuple[Mapping[str, str], Message]]:
+    """A point's ``readings`` rows (the workbench's readings per point n, taken one after
+    another, averaged by models/readings/repeats.py): its cells on each, its label saying
+    which reading of the point it is when there is more than one."""
+    if readings == 1:
+        return [(cells, label)]
+    return [(cells, message(QT_TR_NOOP("{point}, reading {k} of {n}"), point=label, k=k,
+                            n=readings)) for k in range(1, readings + 1)]
+
+
+def _with_readings(spec: dict[str, Any], readings: int) -> dict[str, Any]:
+    """A plan's inputs as saved: ``readings`` only when more than one, so a plan of one
+    reading per point saves as the versions before it did (they had no such input; a
+    saved plan without it is one reading per point)."""
+    return {**spec, "readings": readings} if readings > 1 else spec
 
 
 def polygon_plan(faces: int, sets: int = 1, closure: bool = True,
-                 alternate: bool = False) -> EntryPlan:
+                 alternate: bool = False, readings: int = 1) -> EntryPlan:
     """A polygon test: each set reads faces 1…n in order (a reverse set, with
     ``alternate`` every second one: 1, n, n − 1, …, 2), then face 1 again for the closure.
-    Fills ``position``, ``set`` and ``direction``."""
+    Each face (and the closure) is ``readings`` rows, one per reading of the face (the
+    workbench's readings per point). Fills ``position``, ``set`` and ``direction``."""
     _check_count("faces", faces, 3)
     _check_count("sets", sets)
+    _check_count("readings", readings)
     points: list[PlanPoint] = []
     for s in range(1, sets + 1):
         reverse = alternate and s % 2 == 0
@@ -312,10 +338,13 @@ def polygon_plan(faces: int, sets: int = 1, closure: bool = True,
                      if closure and q == len(order) - 1 else
                      message(QT_TR_NOOP("set {set}: face {face} of {faces}"), set=s, face=face,
                              faces=faces))
-            points.append(PlanPoint(len(points), {"position": str(face), "set": str(s),
-                                                  "direction": "-" if reverse else "+"}, label))
-    return EntryPlan("sets", {"faces": faces, "sets": sets, "closure": bool(closure),
-                                 "alternate": bool(alternate)}, tuple(points))
+            cells = {"position": str(face), "set": str(s), "direction": "-" if reverse else "+"}
+            points += [PlanPoint(len(points) + k, c, text)
+                       for k, (c, text) in enumerate(_readings_of(cells, label, readings))]
+    return EntryPlan("sets", _with_readings({"faces": faces, "sets": sets,
+                                             "closure": bool(closure),
+                                             "alternate": bool(alternate)}, readings),
+                     tuple(points))
 
 
 def crosscal_plan(faces: int, mountings: int | None = None, closure: bool = False) -> EntryPlan:
@@ -343,13 +372,15 @@ def crosscal_plan(faces: int, mountings: int | None = None, closure: bool = Fals
 
 
 def theodolite_plan(thetas: Sequence[float], runs: int = 1,
-                    bidirectional: bool = False) -> EntryPlan:
+                    bidirectional: bool = False, readings: int = 1) -> EntryPlan:
     """A theodolite run over the θ steps: pass 1 forward (and backward), pass 2, …
-    Fills ``theta_deg``, and ``run`` and ``direction`` when there is more than one pass."""
+    Fills ``theta_deg``, and ``run`` and ``direction`` when there is more than one pass;
+    each θ is ``readings`` rows, one per reading of the point (readings per point)."""
     thetas = [float(t) for t in thetas]
     if len(thetas) < 3 or not all(math.isfinite(t) for t in thetas):
         raise ValueError(message(QT_TR_NOOP("a theodolite plan needs at least 3 finite θ")))
     _check_count("runs", runs)
+    _check_count("readings", readings)
     several = runs > 1 or bidirectional
     points: list[PlanPoint] = []
     for run in range(1, runs + 1):
@@ -363,9 +394,11 @@ def theodolite_plan(thetas: Sequence[float], runs: int = 1,
                                  theta=f"{_number(t)}°", run=run, arrow="↑" if d > 0 else "↓")
                          if several else message(QT_TR_NOOP("θ = {theta}"),
                                                  theta=f"{_number(t)}°"))
-                points.append(PlanPoint(len(points), cells, label))
-    return EntryPlan("passes", {"thetas": thetas, "runs": runs,
-                                    "bidirectional": bool(bidirectional)}, tuple(points))
+                points += [PlanPoint(len(points) + k, c, text)
+                           for k, (c, text) in enumerate(_readings_of(cells, label, readings))]
+    return EntryPlan("passes", _with_readings({"thetas": thetas, "runs": runs,
+                                               "bidirectional": bool(bidirectional)}, readings),
+                     tuple(points))
 
 
 #: each plan's maker by its kind (EntryPlan.from_dict)

@@ -458,7 +458,8 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
         passes = int(settings.get("plan_passes", 0) or 0)
         if not passes:
             return None
-        return theodolite_plan(targets_from_text(str(settings.get("plan_thetas", ""))), passes)
+        return theodolite_plan(targets_from_text(str(settings.get("plan_thetas", ""))), passes,
+                               readings=int(settings.get("readings_per_point", 1) or 1))
 
     to_json = staticmethod(to_json)
     summary = staticmethod(summary)

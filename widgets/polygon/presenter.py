@@ -12,6 +12,7 @@ from models.polygon.analysis import POLYGON
 from models.polygon.certificate_reader import read_polygon_certificate
 from models.polygon.model import GRADE_ACCURACY_ARCSEC, PolygonResult
 from models.project.file import WorkbenchState
+from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import TableImportError
 from widgets.i18n import declared, explained, tr, translated
 from widgets.polygon.view import PolygonView
@@ -75,6 +76,35 @@ class PolygonPresenter(WorkbenchPresenter):
             sets=self.in_unit(plots.sets_figure(result, self.parsed, tolerance))[0])
         if not result.valid:
             self.view.append_to_readings_caption(tr(" — RUN INVALID (closure failed)"))
+
+    def awaited_column(self, sheet: ReadingsSheet) -> tuple[str, str] | None:
+        """The deviation column while no row has a face deviation that reads and no
+        certificate is kept by face (:attr:`face_deviations`), with readings in the table:
+        every row needs its face's deviation from the polygon's certificate (SPEC §2,
+        b_i = (i − 1)·360°/n + dev_i); a blank one is never taken as 0, which would take
+        the polygon as perfect and put its face deviations into the encoder's errors on the
+        certificate. Said once, not as a bad cell in every row (plan80: captured rows showed
+        "0 used, 24 bad cells" as if each deviation had been typed wrong)."""
+        if self.face_deviations:
+            return None
+        dev = sheet.column_index("polygon_dev_arcsec")
+        column = sheet.columns[dev]
+        readings = [sheet.column_index(k) for k in self.kind.plan_reading_keys]
+        if not any(sheet.text(r, c).strip() for r in range(sheet.row_count) for c in readings):
+            return None
+        for r in range(sheet.row_count):
+            text = sheet.text(r, dev)
+            if text.strip():
+                try:
+                    column.parse(text)
+                except ValueError:
+                    continue  # typed wrong: that cell stays red, the column still awaited
+                return None
+        return "polygon_dev_arcsec", tr(
+            "the polygon's face deviations are missing: load its certificate (“Load polygon "
+            "certificate…”, at the end of the set-up) or type them in the {column} column. A "
+            "blank one is not taken as 0; the readings are kept.").format(
+                column=declared(column.title))
 
     def load_certificate_dialog(self) -> None:
         from models.certificate.metadata import MetadataError

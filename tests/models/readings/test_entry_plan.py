@@ -160,3 +160,61 @@ def test_fill_gives_readings_without_plan_cells_the_next_points_skipping_those_t
         (1, {"theta_deg": "0", "run": "1", "direction": "+"}),
         (3, {"theta_deg": "-1", "run": "2", "direction": "+"}),
         (5, {"theta_deg": "1", "run": "2", "direction": "+"})]
+
+
+def test_each_point_has_a_row_per_reading_when_points_are_read_several_times():
+    """plan80: with n readings per point the plan's rows are each point n times over, in
+    order, each labelled with its reading; the rows the averaging takes n at a time agree
+    on every plan cell (models/readings/repeats.py)."""
+    p = polygon_plan(12, sets=2, alternate=True, readings=2)
+    assert len(p) == 2 * 2 * 13
+    assert [c.cells["position"] for c in p.points[:6]] == ["1", "1", "2", "2", "3", "3"]
+    assert [c.cells["position"] for c in p.points[24:28]] == ["1", "1", "1", "1"]  # closure, set 2
+    assert str(p.points[5].label) == "set 1: face 3 of 12, reading 2 of 2"
+    assert str(p.points[25].label) == "set 1: closure on face 1, reading 2 of 2"
+    assert str(p.points[29].label) == "set 2: face 12 of 12, reading 2 of 2"
+    for a, b in zip(p.points[::2], p.points[1::2], strict=True):
+        assert dict(a.cells) == dict(b.cells)
+    # typed one after another, face 1's second reading is face 1's, never face 2's
+    rows = _take_all(p, lambda c: "10.0", keys=("encoder_deg",))
+    assert [r["position"] for r in rows[:4]] == ["1", "1", "2", "2"]
+    assert str(p.next_text(rows[:5], ("encoder_deg",))) == \
+        "next: set 1: face 3 of 12, reading 2 of 2"
+    c = positioning_plan([0, 30], runs=1, bidirectional=False, readings=3)
+    assert [(x.cells["target"], str(x.label)) for x in c.points] == [
+        ("0", "target 0°, run 1 ↑, reading 1 of 3"), ("0", "target 0°, run 1 ↑, reading 2 of 3"),
+        ("0", "target 0°, run 1 ↑, reading 3 of 3"), ("30", "target 30°, run 1 ↑, reading 1 of 3"),
+        ("30", "target 30°, run 1 ↑, reading 2 of 3"), ("30", "target 30°, run 1 ↑, reading 3 of 3")]
+    t = theodolite_plan([-1, 0, 1], readings=2)
+    assert [x.cells["theta_deg"] for x in t.points] == ["-1", "-1", "0", "0", "1", "1"]
+    with pytest.raises(ValueError):
+        polygon_plan(12, readings=0)
+
+
+def test_a_plan_saved_before_readings_per_point_reads_back_as_one_reading_per_point():
+    """A plan saved by the versions before plan80 (no ``readings``) means one row per point,
+    as it did; a plan of one reading per point saves as they saved it."""
+    saved = {"kind": "sets", "faces": 12, "sets": 2, "closure": True, "alternate": True}
+    plan = EntryPlan.from_dict(saved)
+    assert len(plan) == 26 and plan.as_dict() == saved
+    assert [dict(p.cells) for p in plan.points] == [dict(p.cells) for p in polygon_plan(
+        12, 2, alternate=True).points]
+    twice = polygon_plan(12, 2, alternate=True, readings=2)
+    assert twice.as_dict() == {**saved, "readings": 2}
+    again = EntryPlan.from_dict(twice.as_dict())
+    assert [dict(p.cells) for p in again.points] == [dict(p.cells) for p in twice.points]
+
+
+def test_the_workbenches_plans_follow_their_readings_per_point():
+    from models.polygon.analysis import POLYGON
+    from models.theodolite.analysis import THEODOLITE
+
+    polygon = POLYGON.entry_plan({"faces": 12, "plan_sets": 1, "readings_per_point": 2})
+    assert len(polygon) == 26 and polygon.spec["readings"] == 2
+    assert len(POLYGON.entry_plan({"faces": 12, "plan_sets": 1})) == 13
+    positioning = POSITIONING.entry_plan({"plan_runs": 1, "plan_targets": "0:30:3",
+                                          "plan_directions": "up", "readings_per_point": 3})
+    assert [p.cells["target"] for p in positioning.points] == ["0"] * 3 + ["30"] * 3 + ["60"] * 3
+    theodolite = THEODOLITE.entry_plan({"plan_passes": 1, "plan_thetas": "-1:1:3",
+                                        "readings_per_point": 2})
+    assert len(theodolite) == 6
