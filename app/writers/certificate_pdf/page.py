@@ -10,6 +10,7 @@ from fpdf.unicode_script import UnicodeScript, get_unicode_script
 
 from app.writers.certificate_pdf.fonts import CJK_FONT, FONT, _latin_coverage, font_files
 from app.writers.certificate_pdf.line_breaks import _CLOSING, _long_word, _mostly_cjk, _units
+from app.writers.certificate_pdf.measured_fragments import measured
 from app.writers.certificate_pdf.parsed_fonts import add_parsed_font
 from app.writers.certificate_pdf.wording import _say
 from models.messages import QT_TR_NOOP, message
@@ -71,6 +72,11 @@ class PageFrame(FPDF):
     def text(self, *args, **kwargs):
         self.current_font_is_set_on_page = False
         return super().text(*args, **kwargs)
+
+    # every text's runs measured once per character as a line grows, not once per line for
+    # every character added (measured_fragments: the same widths to the last bit)
+    def _preload_font_styles(self, *args, **kwargs):
+        return measured(super()._preload_font_styles(*args, **kwargs))
 
     # -- page furniture ------------------------------------------------------
     def header(self) -> None:
