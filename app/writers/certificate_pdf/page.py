@@ -6,8 +6,9 @@ from __future__ import annotations
 from fpdf import FPDF
 from fpdf.enums import CharVPos, XPos, YPos
 from fpdf.fonts import TTFFont
-from fpdf.unicode_script import UnicodeScript, get_unicode_script
+from fpdf.unicode_script import UnicodeScript
 
+from app.writers.certificate_pdf.fallback_fragments import fallback_fragments, script_of
 from app.writers.certificate_pdf.fonts import CJK_FONT, FONT, _latin_coverage, font_files
 from app.writers.certificate_pdf.line_breaks import _CLOSING, _long_word, _mostly_cjk, _units
 from app.writers.certificate_pdf.measured_fragments import measured
@@ -19,17 +20,6 @@ PAGE_TOTAL_ALIAS = "{nb}"
 INK = (20, 20, 20)
 GREY = (110, 110, 110)
 RULE = (170, 170, 170)
-
-
-_SCRIPTS: dict[str, UnicodeScript] = {}
-
-
-def _script(ch: str) -> UnicodeScript:
-    """fpdf2's ``get_unicode_script(ch)``, each character looked up once a process."""
-    found = _SCRIPTS.get(ch)
-    if found is None:
-        found = _SCRIPTS[ch] = get_unicode_script(ch)
-    return found
 
 
 #: the marks that close what comes before them (the Chinese closing ones, and the Latin
@@ -77,6 +67,14 @@ class PageFrame(FPDF):
     # every character added (measured_fragments: the same widths to the last bit)
     def _preload_font_styles(self, *args, **kwargs):
         return measured(super()._preload_font_styles(*args, **kwargs))
+
+    # a text with fallback fonts (Chinese) cut into its fragments each character's script
+    # looked up once a process (fallback_fragments: the same fragments)
+    def _parse_chars(self, text, markdown, **kwargs):
+        if markdown or self.text_shaping or not self._fallback_font_ids \
+                or set(kwargs) - {"_initial_emphasis"}:
+            return super()._parse_chars(text, markdown, **kwargs)
+        return fallback_fragments(self, text, kwargs.get("_initial_emphasis"))
 
     # -- page furniture ------------------------------------------------------
     def header(self) -> None:
@@ -247,7 +245,7 @@ class PageFrame(FPDF):
             pieces, script = [], None
             piece: list[str] = []
             for ch in run:
-                found = _script(ch)
+                found = script_of(ch)
                 if found not in (UnicodeScript.COMMON, UnicodeScript.UNKNOWN, script):
                     if piece and script:
                         pieces.append(piece)

@@ -1,7 +1,9 @@
-"""A line's width as the certificate's cells grow it (``measured_fragments``: each fragment's
-width summed once per character added) is fpdf2's to the last bit, in every font of the
-certificate, with and without the CJK fallback font, soft hyphens and page-count aliases
-included: every line breaks where fpdf2 broke it, so the PDF is the same bytes."""
+"""A text's fragments as the certificate cuts it (``fallback_fragments``: each character's
+script looked up once a process) are fpdf2's, and a line's width as the certificate's cells
+grow it (``measured_fragments``: each fragment's width summed once per character added) is
+fpdf2's to the last bit, in every font of the certificate, with and without the CJK fallback
+font, soft hyphens and page-count aliases included: every line breaks where fpdf2 broke it,
+so the PDF is the same bytes."""
 
 from __future__ import annotations
 
@@ -19,7 +21,7 @@ from app.writers.certificate_pdf.page import PageFrame
 
 ALPHABET = ("AZaz09 .,;:-+−=±×°″′\"'()（）[]/%µψβωθΔσ·—–…"
             "校准证书测量不确定度符合性声明，。、；：“”《》"
-            "\u00ad\u00a0\n")
+            "\u00ad\u00a0\n{nb}")
 
 
 @pytest.fixture(scope="module")
@@ -52,10 +54,17 @@ def test_lines_break_where_fpdf2_breaks_them_with_the_same_widths(frames, text, 
                                                                    style, width, wrapmode):
     pdf = frames[frame]
     pdf.set_font(FONT, style, size)
+    pdf.str_alias_nb_pages = "{nb}" if size == 11 else ""  # the page foot's
+    theirs = tuple(FPDF._parse_chars(pdf, text, False))  # fpdf2's own
+    assert [(type(f), f.characters, f.graphics_state, f.k, f.link)
+            for f in pdf._parse_chars(text, False)] \
+        == [(type(f), f.characters, f.graphics_state, f.k, f.link) for f in theirs]
     ours = pdf._preload_font_styles(text, False)
-    theirs = FPDF._preload_font_styles(pdf, text, False)
-    assert [type(f) for f in theirs if type(f) is not Fragment] == []
-    assert all(type(f) is MeasuredFragment for f in ours)
+    pdf.str_alias_nb_pages = ""
+    assert [type(f) for f in ours] == [MeasuredFragment if type(f) is Fragment else type(f)
+                                       for f in theirs] if text else ours == ()
+    theirs = tuple(f for f in theirs if type(f) is Fragment) if text else ()
+    ours = tuple(f for f in ours if type(f) is MeasuredFragment)
     try:
         expected = _lines(theirs, width, wrapmode)
     except Exception as exc:  # noqa: BLE001 - fpdf2's refusal (a character wider than the cell)
