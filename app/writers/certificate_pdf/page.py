@@ -22,6 +22,10 @@ GREY = (110, 110, 110)
 RULE = (170, 170, 170)
 
 
+#: how far (mm) inside a line's width a paragraph measured whole is taken to fit: beyond any
+#: difference of the last bits between the widths of its parts and of the whole
+_FITS_WITHIN = 1e-6
+
 #: the marks that close what comes before them (the Chinese closing ones, and the Latin
 #: ones that close a clause or a bracket): never alone on a line
 _TRAILING = "".join(sorted(_CLOSING | set(")]},.;:!?")))
@@ -174,6 +178,12 @@ class PageFrame(FPDF):
         another unit wider than a line is left to fpdf2's character wrap."""
         lines = []
         for paragraph in text.split("\n"):
+            # a paragraph the line holds whole (most of a table's cells) is measured once, not
+            # once for every word added: no part of it is wider than the whole (each width a
+            # sum of its characters', none negative), so no break would come
+            if self.text_width(paragraph.rstrip(), size, style) <= width - _FITS_WITHIN:
+                lines.append(paragraph.rstrip())
+                continue
             line = ""
             for unit in _units(paragraph):
                 if line.strip() and self.text_width((line + unit).rstrip(), size, style) > width:

@@ -101,3 +101,36 @@ def test_the_page_count_alias_and_the_usual_text_are_measured_by_the_fast_path(m
         assert len(_lines(fragments, 30.0, WrapMode.WORD)) > 1
     finally:
         close_fonts(pdf)
+
+
+@pytest.mark.slow  # ~0.5 s: 150 texts wrapped twice
+@settings(max_examples=150, deadline=None)
+@given(text=st.text(ALPHABET.replace("{nb}", ""), max_size=80),
+       frame=st.sampled_from(["latin", "cjk"]), size=st.sampled_from([7.5, 8, 9]),
+       style=st.sampled_from(["", "B"]), width=st.sampled_from([5.0, 20.0, 41.8, 126.4]))
+def test_a_paragraph_that_fits_is_wrapped_as_word_by_word(frames, text, frame, size, style,
+                                                          width):
+    """``_wrapped`` takes a paragraph the line holds whole without measuring it word by word:
+    the same lines as measured word by word (the fast path off)."""
+    import app.writers.certificate_pdf.page as page
+
+    pdf = frames[frame]
+    pdf.set_font(FONT, "", size)
+    ours = pdf._wrapped(text, width, size, style)
+    with pytest.MonkeyPatch.context() as patched:
+        patched.setattr(page, "_FITS_WITHIN", float("inf"))  # never taken as fitting
+        assert pdf._wrapped(text, width, size, style) == ours
+
+
+def test_a_cell_the_line_holds_is_measured_once(frames, monkeypatch):
+    pdf = frames["cjk"]
+    measured: list[str] = []
+    real = PageFrame.text_width
+    monkeypatch.setattr(PageFrame, "text_width",
+                        lambda self, text, *a: measured.append(text) or real(self, text, *a))
+    text = "扩展不确定度 U = 0.42″ (k = 2)"
+    assert pdf._wrapped(text, 60.0, 8) == text
+    assert measured == [text]
+    measured.clear()
+    assert "\n" in pdf._wrapped(text, 20.0, 8)  # too wide: word by word
+    assert len(measured) > 5
