@@ -6,10 +6,12 @@ from __future__ import annotations
 from fpdf import FPDF
 from fpdf.enums import CharVPos, XPos, YPos
 from fpdf.fonts import TTFFont
-from fpdf.unicode_script import UnicodeScript, get_unicode_script
+from fpdf.unicode_script import UnicodeScript
 
+from app.writers.certificate_pdf.fallback_fragments import fallback_fragments, script_of
 from app.writers.certificate_pdf.fonts import CJK_FONT, FONT, _latin_coverage, font_files
 from app.writers.certificate_pdf.line_breaks import _CLOSING, _long_word, _mostly_cjk, _units
+from app.writers.certificate_pdf.measured_fragments import measured
 from app.writers.certificate_pdf.parsed_fonts import add_parsed_font
 from app.writers.certificate_pdf.wording import _say
 from models.messages import QT_TR_NOOP, message
@@ -20,16 +22,9 @@ GREY = (110, 110, 110)
 RULE = (170, 170, 170)
 
 
-_SCRIPTS: dict[str, UnicodeScript] = {}
-
-
-def _script(ch: str) -> UnicodeScript:
-    """fpdf2's ``get_unicode_script(ch)``, each character looked up once a process."""
-    found = _SCRIPTS.get(ch)
-    if found is None:
-        found = _SCRIPTS[ch] = get_unicode_script(ch)
-    return found
-
+#: how far (mm) inside a line's width a paragraph measured whole is taken to fit: beyond any
+#: difference of the last bits between the widths of its parts and of the whole
+_FITS_WITHIN = 1e-6
 
 #: the marks that close what comes before them (the Chinese closing ones, and the Latin
 #: ones that close a clause or a bracket): never alone on a line
@@ -71,6 +66,19 @@ class PageFrame(FPDF):
     def text(self, *args, **kwargs):
         self.current_font_is_set_on_page = False
         return super().text(*args, **kwargs)
+
+    # every text's runs measured once per character as a line grows, not once per line for
+    # every character added (measured_fragments: the same widths to the last bit)
+    def _preload_font_styles(self, *args, **kwargs):
+        return measured(super()._preload_font_styles(*args, **kwargs))
+
+    # a text with fallback fonts (Chinese) cut into its fragments each character's script
+    # looked up once a process (fallback_fragments: the same fragments)
+    def _parse_chars(self, text, markdown, **kwargs):
+        if markdown or self.text_shaping or not self._fallback_font_ids \
+                or set(kwargs) - {"_initial_emphasis"}:
+            return super()._parse_chars(text, markdown, **kwargs)
+        return fallback_fragments(self, text, kwargs.get("_initial_emphasis"))
 
     # -- page furniture ------------------------------------------------------
     def header(self) -> None:
@@ -170,6 +178,12 @@ class PageFrame(FPDF):
         another unit wider than a line is left to fpdf2's character wrap."""
         lines = []
         for paragraph in text.split("\n"):
+            # a paragraph the line holds whole (most of a table's cells) is measured once, not
+            # once for every word added: no part of it is wider than the whole (each width a
+            # sum of its characters', none negative), so no break would come
+            if self.text_width(paragraph.rstrip(), size, style) <= width - _FITS_WITHIN:
+                lines.append(paragraph.rstrip())
+                continue
             line = ""
             for unit in _units(paragraph):
                 if line.strip() and self.text_width((line + unit).rstrip(), size, style) > width:
@@ -241,7 +255,7 @@ class PageFrame(FPDF):
             pieces, script = [], None
             piece: list[str] = []
             for ch in run:
-                found = _script(ch)
+                found = script_of(ch)
                 if found not in (UnicodeScript.COMMON, UnicodeScript.UNKNOWN, script):
                     if piece and script:
                         pieces.append(piece)

@@ -21,8 +21,9 @@ before it drops them, ~0.1 s; and ``kern``, which it drops where the font has GP
 ``glyf`` table whose glyphs are made from the file's bytes only when asked for
 (:class:`_GlyphsOnDemand`): fontTools made an object of every one of the CJK font's 49 382
 glyphs for each certificate (~0.15 s, half the time of writing its fonts) where the
-subsetter asks for the few hundred printed; and the ``hmtx`` table's widths as the file's
-were read once (the subsetter keeps the printed glyphs' in a table of its own). The bytes printed are the same
+subsetter asks for the few hundred printed; and the ``hmtx`` table's widths and the
+``vmtx`` table's heights (the CJK font's: ~0.09 s a certificate) as the file's were read
+once (the subsetter keeps the printed glyphs' in a table of its own). The bytes printed are the same
 (tests/app/writers/test_certificate_parsed_fonts.py: the second certificate of a process,
 made so, and the first, made as fpdf2 makes it).
 
@@ -68,6 +69,9 @@ _PER_DOCUMENT = ("i", "desc", "glyph_ids", "_hbfont", "cw", "subset", "ttfont",
 #: the layout tables fpdf2 drops from the font it embeds (fpdf/output.py: ``drop_tables``)
 #: which fontTools' subsetter reads before it drops them
 _DROPPED_LAYOUT = ("GDEF", "GSUB", "GPOS")
+
+#: the tables of each glyph's metrics, kept from the parse (:func:`_metrics_kept`)
+_METRICS = ("hmtx", "vmtx")
 
 _PARSED: dict[tuple[str, str, int, int], dict[str, Any]] = {}
 _LOCK = threading.Lock()
@@ -117,7 +121,10 @@ def _kept(font: TTFFont) -> dict[str, Any]:
     kept["glyph_order"] = tuple(font.ttfont.getGlyphOrder())
     kept["glyf"] = _GlyfBytes.of(font.ttfont, kept["glyph_order"])
     # each glyph's (advance, side bearing), as the file has them (fpdf2 only reads them)
-    kept["hmtx"] = dict(font.ttfont["hmtx"].metrics) if "hmtx" in font.ttfont else None
+    # each glyph's (advance, side bearing), as the file has them (fpdf2 only reads them),
+    # across (hmtx) and down (vmtx: the CJK font's, which only the subsetter reads)
+    for tag in _METRICS:
+        kept[tag] = dict(font.ttfont[tag].metrics) if tag in font.ttfont else None
     return kept
 
 
@@ -196,13 +203,14 @@ class _GlyphsOnDemand(MutableMapping):
         return len(self.source.index) - len(self.deleted) + len(self.added)
 
 
-def _metrics_kept(ttfont: ttLib.TTFont, metrics: dict[str, tuple[int, int]]) -> None:
-    """``ttfont``'s ``hmtx`` table as fontTools' decompile makes it from the file, from the
-    widths kept: a dict of the document's own (the subsetter replaces it with the printed
-    glyphs' and adds to that; the values are tuples, never changed)."""
-    table = ttLib.newTable("hmtx")
+def _metrics_kept(ttfont: ttLib.TTFont, metrics: dict[str, tuple[int, int]],
+                  tag: str = "hmtx") -> None:
+    """``ttfont``'s ``hmtx`` (or ``vmtx``) table as fontTools' decompile makes it from the
+    file, from the metrics kept: a dict of the document's own (the subsetter replaces it
+    with the printed glyphs' and adds to that; the values are tuples, never changed)."""
+    table = ttLib.newTable(tag)
     table.metrics = dict(metrics)
-    ttfont["hmtx"] = table
+    ttfont[tag] = table
 
 
 def _glyf_on_demand(ttfont: ttLib.TTFont, source: _GlyfBytes) -> None:
@@ -231,8 +239,9 @@ def _for_document(parsed: dict[str, Any], pdf: FPDF) -> TTFFont:
     font.ttfont.setGlyphOrder(list(parsed["glyph_order"]))
     if parsed.get("glyf") is not None:
         _glyf_on_demand(font.ttfont, parsed["glyf"])
-    if parsed.get("hmtx") is not None:
-        _metrics_kept(font.ttfont, parsed["hmtx"])
+    for tag in _METRICS:
+        if parsed.get(tag) is not None:
+            _metrics_kept(font.ttfont, parsed[tag], tag)
     if font.is_compressed:
         font.ttfont.flavor = None
     else:  # (fpdf2's text shaping reads a compressed font's layout from this font)

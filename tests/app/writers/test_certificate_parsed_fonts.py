@@ -215,9 +215,10 @@ def test_a_certificate_from_the_kept_fonts_reads_nothing_it_would_throw_away(par
 def test_a_certificate_from_the_kept_fonts_makes_only_the_glyphs_it_prints(parses, monkeypatch):
     """fontTools made an object of every glyph of every font for each certificate (61 831:
     the CJK font's 49 382 and DejaVu's two 6 000; ~0.15 s, half of writing the fonts) and read
-    every glyph's width again, where the subsetter asks for the few hundred printed: the
-    second certificate of a process makes those glyphs only (parsed_fonts._GlyphsOnDemand)
-    and takes the widths kept, and its bytes are the first one's, which fontTools made whole."""
+    every glyph's width (and the CJK font's heights) again, where the subsetter asks for the
+    few hundred printed: the second certificate of a process makes those glyphs only
+    (parsed_fonts._GlyphsOnDemand) and takes the metrics kept, and its bytes are the first
+    one's, which fontTools made whole."""
     from fontTools import ttLib
 
     glyph = ttLib.getTableModule("glyf").Glyph
@@ -237,9 +238,9 @@ def test_a_certificate_from_the_kept_fonts_makes_only_the_glyphs_it_prints(parse
     monkeypatch.setattr(ttLib.TTFont, "_readTable", reading)
     first = _certificate("zh")
     assert len(made) > 49_382  # as fpdf2 and fontTools make them: every glyph of the files
-    assert {"glyf", "hmtx"} <= set(read)
+    assert {"glyf", "hmtx", "vmtx"} <= set(read)
     made.clear()
     read.clear()
     assert _certificate("zh") == first
     assert 0 < len(made) < 3_000, len(made)
-    assert not {"glyf", "hmtx"} & set(read), read
+    assert not {"glyf", "hmtx", "vmtx"} & set(read), read  # the CJK font's heights too
