@@ -63,7 +63,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["NO_READINGS", "ReadingsIdentity", "near", "readings_identity", "readings_key",
+__all__ = ["INDEX_BOUND", "NO_READINGS", "ReadingsIdentity", "near", "readings_identity", "readings_key",
            "same_readings_values"]
 
 #: significant digits a value is compared to: far below any reading's last digit (20° to
@@ -130,6 +130,8 @@ def readings_key(project_json: str, workbench: str) -> str:
 _QUANTUM = 2.0 ** -40
 #: an interval beyond ±this (values of 10⁶ rad and more) is every value's: always compared
 _BOUND = 2 ** 62
+#: the reach of such an interval: a record of it is a candidate of every look-up
+INDEX_BOUND = _BOUND
 #: the float noise allowed beside a tolerance: of the values (a value parsed from two
 #: spellings and converted to rad differs by a few ulp) and of the tolerance itself
 _ULPS = 8 * float(np.finfo(float).eps)
@@ -154,8 +156,14 @@ class ReadingsIdentity:
     #: readings are within the larger of their two reaches
     anchor: int
     reach: int
-    #: each set of other cells → (the rows' angles and lengths in rad or m, NaN blank; the
-    #: half step of each one's last digit), as arrays of one row a reading
+    #: SHA-256 of the columns and of the set of the rows' other cells as the analysis reads
+    #: them (:meth:`models.workbench.Workbench.read_cells`: a choice by its meaning, a blank
+    #: run or direction as it derives it): what is compared (not stored, made again from the
+    #: record's project state; ident80b)
+    shape: str = field(compare=False, repr=False)
+    #: each set of other cells as the analysis reads them → (the rows' angles and lengths in
+    #: rad or m, NaN blank; the half step of each one's last digit), as arrays of one row a
+    #: reading
     groups: Mapping[tuple, tuple[np.ndarray, np.ndarray]] = field(compare=False, repr=False)
 
     @property
@@ -253,18 +261,26 @@ def readings_identity(project_json: str, workbench: str) -> ReadingsIdentity | N
             text = sheet.text(int(parsed.row_index[r]), index)
             halves[r, j] = 0.5 * _step(text, column, float(raw[r])) * size
     _derive(kind.derived_columns(settings), physical, values, halves)
+    try:
+        read = {k: v for k, v in kind.read_cells(parsed, settings).items()
+                if k in others and len(v) == n}
+    except (ValueError, TypeError, ArithmeticError, LookupError):
+        read = {}  # refused by the analysis: the cells as typed
     blank = ~np.isfinite(values)
+    typed: dict[tuple, list[int]] = {}
     members: dict[tuple, list[int]] = {}
     for i in range(n):
-        key = (tuple(_value(parsed.values[k][i]) for k in others),
-               tuple(bool(b) for b in blank[i]))
-        members.setdefault(key, []).append(i)
+        blanks = tuple(bool(b) for b in blank[i])
+        typed.setdefault((tuple(_value(parsed.values[k][i]) for k in others), blanks),
+                         []).append(i)
+        members.setdefault((tuple(_value(read[k][i] if k in read else parsed.values[k][i])
+                                  for k in others), blanks), []).append(i)
     groups = {key: (values[rows_], halves[rows_]) for key, rows_ in members.items()}
-    layout = hashlib.sha256(json.dumps(
-        [dimensions, sorted([list(k[0]), list(k[1])] for k in members)],
-        ensure_ascii=False).encode()).hexdigest()
+    layout, shape = (hashlib.sha256(json.dumps(
+        [dimensions, sorted([list(k[0]), list(k[1])] for k in keys)],
+        ensure_ascii=False).encode()).hexdigest() for keys in (typed, members))
     anchor, reach = _anchor(kind, physical, values, halves)
-    return ReadingsIdentity(layout, anchor, reach, groups)
+    return ReadingsIdentity(layout, anchor, reach, shape, groups)
 
 
 def _derive(derived: Mapping[str, tuple[str, str]], physical: list, values: np.ndarray,
@@ -345,7 +361,7 @@ def same_readings_values(one: ReadingsIdentity | None, other: ReadingsIdentity |
     """Whether two identities are of the same readings (the module's docstring): the same
     columns and set of other cells, and each row of either within the tolerance of a row of
     the other with those cells. None (no readings) is no one's."""
-    if one is None or other is None or one.layout != other.layout:
+    if one is None or other is None or one.shape != other.shape:
         return False
     for key, (values, halves) in one.groups.items():
         found = other.groups.get(key)

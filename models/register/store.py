@@ -53,6 +53,7 @@ from models.register.chain import (
 )
 from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED, REPLACED
 from models.register.readings_identity import (
+    INDEX_BOUND,
     NO_READINGS,
     ReadingsIdentity,
     near,
@@ -1828,10 +1829,11 @@ class Register:
         (readings_identity.same_readings_values)."""
         if ident is None:
             return False
-        if record.readings_layout is not None and (
-                record.readings_layout != ident.layout or not near(
-                    ident.anchor, ident.reach, record.readings_anchor or 0,
-                    record.readings_reach or 0)):
+        # the anchor only: the stored layout is of the cells as typed, compared as the
+        # analysis reads them (ReadingsIdentity.shape, made again)
+        if record.readings_layout is not None and not near(
+                ident.anchor, ident.reach, record.readings_anchor or 0,
+                record.readings_reach or 0):
             return False
         return same_readings_values(ident, self._identity_of(
             record.number, record.workbench, record.project_json))
@@ -1840,8 +1842,9 @@ class Register:
                              *where: Any) -> builtins.list[str]:
         """The numbers of the records of ``workbench`` (and ``where``) whose readings are
         ``ident``'s by their physical values, in the register's order: the candidates looked
-        up by the stored identity (its layout and anchor, their indexes: schema version 9),
-        then compared; a record without one (issued by an AngleBench of schema 8 after the
+        up by the stored identity (its anchor, of any layout: the stored layout is of the
+        cells as typed, "up" or a run given where the analysis derives it; their indexes:
+        schema version 9), then compared; a record without one (issued by an AngleBench of schema 8 after the
         migration, or a register read as it is) by its readings, made once per register
         object."""
         if ident is None:
@@ -1852,14 +1855,17 @@ class Register:
                 c.workbench == workbench, *where).order_by(c.id)).all()
         else:
             # the anchors within the larger reach: the request's, or a record's, which is at
-            # most the largest of the layout's (its index: one look-up)
+            # most the largest of the workbench's below the index's bound (one look-up);
+            # a record beyond it (values of 10⁶ rad) is every value's, compared always
+            # — without widening every look-up to the whole workbench
             widest = conn.execute(sa.select(sa.func.max(c.readings_reach)).where(
-                c.workbench == workbench, c.readings_layout == ident.layout)).scalar() or 0
+                c.workbench == workbench, c.readings_reach < INDEX_BOUND)).scalar() or 0
             span = max(ident.reach, int(widest))
             rows = conn.execute(sa.select(c.number, c.project_json).where(
                 c.workbench == workbench, *where, sa.or_(
-                    sa.and_(c.readings_layout == ident.layout,
-                            c.readings_anchor.between(ident.anchor - span, ident.anchor + span)),
+                    sa.and_(c.readings_layout != NO_READINGS[0], sa.or_(
+                        c.readings_anchor.between(ident.anchor - span, ident.anchor + span),
+                        c.readings_reach >= INDEX_BOUND)),
                     c.readings_layout.is_(None))).order_by(c.id)).all()
         return [row.number for row in rows if same_readings_values(
             ident, self._identity_of(row.number, workbench, row.project_json))]
