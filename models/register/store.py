@@ -1483,9 +1483,10 @@ class Register:
                     # what it changes (hostile78 F3: a fail withdrawn, then a pass issued)
                     withdrawn = () if supersedes or separate_calibration is None else \
                         self._in_place_of_withdrawn(conn, request, meta)
-                    # a current certificate of the item whose readings these are, to every
-                    # digit, with another date of calibration: that calibration issued again,
-                    # re-dated (hostile79 #3: a day later it issued as an original, unsaid)
+                    # a current certificate of the item whose readings these are (each
+                    # within the last digit it was typed to), with another date of
+                    # calibration: that calibration issued again, re-dated (hostile79 #3: a
+                    # day later it issued as an original, unsaid)
                     redated = () if supersedes or separate_calibration is None else \
                         self._readings_redated(conn, request, meta, ident, same)
                     # an amendment's corrected maker is confirmed and stated on it
@@ -3625,13 +3626,15 @@ def _same_readings_said(meta: CertificateMetadata, identical: tuple[str, ...],
             number=number or "—", numbers=numbers))
     if not reason:
         found = message(QT_TR_NOOP(
-            "the readings are those of {numbers} (serial {serial}, calibrated {date}) to every "
-            "digit, and so are its details: no two calibrations repeat every reading to the "
-            "last digit, so this is the calibration {numbers} already reports, issued again"),
+            "the readings are the same as those of {numbers} (serial {serial}, calibrated "
+            "{date}), each within the last digit it was typed to, and so are its details: no "
+            "two calibrations repeat every reading to the last digit, so this is the "
+            "calibration {numbers} already reports, issued again"),
             numbers=numbers, serial=_printed(meta.item_serial) or "—",
             date=meta.calibration_date or "—") if not redated else message(QT_TR_NOOP(
-            "the readings are those of {numbers} (serial {serial}) to every digit, with "
-            "another date of calibration than {date}: no two calibrations repeat every "
+            "the readings are the same as those of {numbers} (serial {serial}), each within "
+            "the last digit it was typed to, with another date of calibration than {date}: no "
+            "two calibrations repeat every "
             "reading to the last digit, so this is the calibration {numbers} already reports, "
             "issued again with its date of calibration moved"),
             numbers=numbers, serial=_printed(meta.item_serial) or "—",
@@ -3643,8 +3646,9 @@ def _same_readings_said(meta: CertificateMetadata, identical: tuple[str, ...],
             "a calibration of its own, say why (stated on the certificate and recorded in "
             "the register; on the command line: --same-readings-as {number}:REASON)"),
             found=found, number=identical[0]), identical, found)
-    return message(QT_TR_NOOP("The readings and details are those of {number} to every "
-                              "digit: {reason}"), number=number, reason=reason)
+    return message(QT_TR_NOOP("The readings are the same as those of {number}, each within "
+                              "the last digit it was typed to, and so are the details: "
+                              "{reason}"), number=number, reason=reason)
 
 
 def _serial_left_out(meta: CertificateMetadata, rows) -> SerialLeftOut:
