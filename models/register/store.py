@@ -697,6 +697,19 @@ class Register:
                     "register {display_url}: its table(s) {tables} are gone: deleted outside "
                     "AngleBench; the register is not opened; restore it from a backup"),
                     display_url=self.display_url, tables=", ".join(missing)))
+            # a column of its version dropped (ident80b: ALTER TABLE … DROP COLUMN
+            # readings_anchor gave a raw "no such column" at opening): said as the tables
+            # are, never read as a register of another version
+            for name, table in schema.METADATA.tables.items():
+                held_columns = {c["name"] for c in self._sa.inspect(conn).get_columns(name)}
+                lacking = [c.name for c in table.columns if c.name not in held_columns]
+                if lacking:
+                    raise RegisterTampered(message(QT_TR_NOOP(
+                        "register {display_url}: its table {table} lacks the column(s) "
+                        "{columns} of schema version {version}: it has been altered outside "
+                        "AngleBench; the register is not opened; restore it from a backup"),
+                        display_url=self.display_url, table=name, columns=", ".join(lacking),
+                        version=version))
         evidence = schema.downgrade_evidence(conn, version)
         if evidence:
             raise RegisterTampered(message(QT_TR_NOOP(
