@@ -114,3 +114,65 @@ def test_the_stored_layout_is_of_the_cells_as_typed():
     assert len({typed.layout, spelled.layout, blank.layout}) == 3
     assert typed.shape == spelled.shape == blank.shape
     assert typed.stored[1:] == spelled.stored[1:] == blank.stored[1:]
+
+
+def _polygon_rows() -> list[list[str]]:
+    import csv
+
+    from tests.models.register.test_readings_retyped import SAMPLES
+
+    with open(SAMPLES / "polygon_sample.csv", newline="", encoding="utf-8") as handle:
+        return [list(r) for r in csv.reader(handle)][1:]
+
+
+def _polygon_without(rows, set_: bool = False, direction: bool = False, later: bool = False):
+    """The polygon rows with the set or the direction left out (``later``: the direction
+    left out but in each set's first row)."""
+    out, seen = [], set()
+    for r in rows:
+        first = r[5] not in seen
+        seen.add(r[5])
+        out.append([*r[:5], "" if set_ else r[5],
+                    "" if direction or (later and not first) else r[6]])
+    return out
+
+
+def _polygon_routes():
+    rows = _polygon_rows()
+    one_set = [r for r in rows if r[5] == "1"]
+    return [
+        ("directions from the encoder's steps", rows, _polygon_without(rows, direction=True)),
+        ("directions in each set's first row", rows, _polygon_without(rows, later=True)),
+        ("set 1 left out", one_set, _polygon_without(one_set, set_=True)),
+        ("set and direction left out", _polygon_without(one_set, True, True), one_set),
+    ]
+
+
+POLYGON_ROUTES = _polygon_routes()
+
+
+@pytest.mark.parametrize("route", POLYGON_ROUTES, ids=[r[0] for r in POLYGON_ROUTES])
+def test_polygon_sets_and_directions_read_alike_are_the_same_readings(tmp_path, route):
+    """The polygon's set, blank, is set 1 (split_sets), and a set's direction its first
+    stated, else the encoder's steps' (_direction): typed or left out, the same readings."""
+    _, rows, retyped = route
+    assert retyped != rows
+    with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
+        first = _issue(register, "polygon", "PG-0815", rows)
+        with pytest.raises(ReadingsOfAnotherItem) as refused:
+            _issue(register, "polygon", "PG-0900", retyped)
+        assert refused.value.numbers == (first.number,)
+        with pytest.raises(SameReadingsIssued) as redated:
+            _issue(register, "polygon", "PG-0815", retyped, date="2026-11-21")
+        assert redated.value.numbers == (first.number,)
+
+
+def test_a_polygon_set_turned_the_other_way_is_other_readings(tmp_path):
+    """Set 2 stated forward, against its encoder's steps: the analysis reads it forward
+    (the stated direction), other readings than the sample's."""
+    rows = _polygon_rows()
+    turned = [[*r[:6], "+"] for r in rows]
+    with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
+        first = _issue(register, "polygon", "PG-0815", rows)
+        other = _issue(register, "polygon", "PG-0900", turned)
+        assert other.number != first.number
