@@ -292,8 +292,11 @@ def readings_identity(project_json: str, workbench: str) -> ReadingsIdentity | N
         blanks = tuple(bool(b) for b in blank[i])
         typed.setdefault((tuple(_value(parsed.values[k][i]) for k in others), blanks),
                          []).append(i)
-        members.setdefault((tuple(_value(read[k][i] if k in read else parsed.values[k][i])
-                                  for k in others), blanks), []).append(i)
+        if read:
+            members.setdefault((tuple(_value(read[k][i] if k in read else parsed.values[k][i])
+                                      for k in others), blanks), []).append(i)
+    if not read:
+        members = typed  # every cell read as typed
     groups = {key: (values[rows_], halves[rows_]) for key, rows_ in members.items()}
     layout, shape = (hashlib.sha256(json.dumps(
         [dimensions, sorted([list(k[0]), list(k[1])] for k in keys)],
