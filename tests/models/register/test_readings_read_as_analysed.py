@@ -176,3 +176,20 @@ def test_a_polygon_set_turned_the_other_way_is_other_readings(tmp_path):
         first = _issue(register, "polygon", "PG-0815", rows)
         other = _issue(register, "polygon", "PG-0900", turned)
         assert other.number != first.number
+
+
+def test_theodolite_blank_directions_beside_stated_ones_are_forward(tmp_path):
+    """The theodolite's direction, stated in some rows, is forward in the blank ones
+    (pass_directions): "+" typed there is the same readings; "-" there is not."""
+    from tests.own_readings import theodolite_sample_rows
+
+    rows = theodolite_sample_rows()
+    blank = [[*r[:3], "", "-" if i % 10 == 9 else ""] for i, r in enumerate(rows)]
+    typed = [[*r[:3], "", "-" if i % 10 == 9 else "+"] for i, r in enumerate(rows)]
+    other = [[*r[:3], "", "-" if i % 10 == 9 or i == 4 else "+"] for i, r in enumerate(rows)]
+    with Register(f"sqlite:///{tmp_path / 'r.sqlite'}") as register:
+        first = _issue(register, "theodolite", "LRA-0815", blank)
+        with pytest.raises(ReadingsOfAnotherItem) as refused:
+            _issue(register, "theodolite", "LRA-0900", typed)
+        assert refused.value.numbers == (first.number,)
+        assert _issue(register, "theodolite", "LRA-0901", other).number != first.number
