@@ -25,7 +25,12 @@ kept as it is, in the chains of the records issued with it. :func:`readings_iden
   (``12°30'00.1"``: 0.1″; ``12.500028``: 1e-6° = 0.0036″; ``-7.0298`` µrad: 1e-4 µrad),
   found by reading the text with that digit moved by one, through the column's own parser;
 - every other cell (fringe signals in V, run, set and face numbers, directions) is
-  compared as before: to 10 significant digits, a text as it parses;
+  compared as the analysis reads it (:meth:`models.workbench.Workbench.read_cells`, through
+  the analysis's own functions: a choice by its meaning — the positioning's "up", "↑" are
+  "+"; a run or direction left blank as the analysis derives it — the positioning's k-th
+  approach, the order of its targets, the polygon's set 1 and its encoder's steps, the
+  theodolite's forward pass; ident80b), else as before: to 10 significant digits, a text as
+  it parses;
 - the rows are a set: each row of one set has a row of the other with the same other
   cells and every angle or length within the tolerance below, and the other way round
   (their order, and a row given twice, aside; a row left out or added is other readings).
@@ -44,11 +49,15 @@ cell typed with fewer digits than its neighbours (``30.5`` of a file of numbers,
 trailing zeros are not kept) compares at its own coarser step.
 
 No grid is cut through the values, so no copy can fall on the other side of a boundary
-from its original: the register finds the candidates by an exact key and an anchor
-(:class:`ReadingsIdentity`: the other cells' set, and the smallest value of the first reading
-column with the largest half step of that column, in whole units of 2⁻⁴⁰ rad or m — a row
-given twice changes neither — found within the larger of the two half steps, :func:`near`),
-and compares the candidates' values as above (:func:`same_readings_values`)."""
+from its original: the register finds the candidates by an anchor (:class:`ReadingsIdentity`:
+the smallest value of the first reading column with the largest half step of that column, in
+whole units of 2⁻⁴⁰ rad or m — a row given twice changes neither — found within the larger of
+the two half steps, :func:`near`), and compares the candidates' cells and values as above
+(:func:`same_readings_values`). The layout stored beside it (the other cells' set as typed,
+in the chains of format 8) keeps its meaning and is checked by ``register verify``; it no
+longer narrows the look-up, since the cells are compared as the analysis reads them
+(``shape``, made again from the record's project state): so the records issued before keep
+their stored values, and a copy with its directions re-spelt still finds them."""
 
 from __future__ import annotations
 
@@ -143,13 +152,14 @@ _EXPONENT = re.compile(r"[eE][+-]?\d+\s*$")
 @dataclass(frozen=True)
 class ReadingsIdentity:
     """The readings of a project state, as the register compares them
-    (:func:`readings_identity`). ``layout``, ``low`` and ``high`` are stored with the record
-    (schema version 9; in the chain from chain format 8) and find the candidates: ``layout``
-    equal and the anchors within the larger reach (:func:`near`); ``groups`` are compared
-    (:func:`same_readings_values`)."""
+    (:func:`readings_identity`). ``layout``, ``anchor`` and ``reach`` are stored with the
+    record (schema version 9; in the chain from chain format 8); the anchors within the
+    larger reach (:func:`near`) find the candidates, whose ``shape`` and ``groups`` are
+    compared (:func:`same_readings_values`)."""
 
     #: SHA-256 of the columns (each one's key and dimension) and of the set of the rows'
-    #: other cells (every cell but the angles and lengths, and which of those are blank)
+    #: other cells as typed (every cell but the angles and lengths, and which of those are
+    #: blank): stored and chained, checked by verify, no longer compared (``shape`` is)
     layout: str
     #: the smallest value of the first reading column, and the largest half step of that
     #: column, in whole units of :data:`_QUANTUM` (:func:`_anchor`): the anchors of the same
