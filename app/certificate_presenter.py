@@ -127,10 +127,10 @@ class CertificateView(Protocol):
         recorded in the register; empty: not issued)."""
 
     def ask_same_readings(self, numbers: tuple[str, ...], reason: str) -> str:
-        """A calibration of its own whose readings, to every digit, and details are those
-        of the current certificates ``numbers`` of its item and date (``reason``, the
-        register's words): why it is nevertheless a calibration of its own (stated on it and
-        recorded in the register; empty: not issued)."""
+        """A calibration of its own whose readings (each within the last digit it was typed
+        to) and details are those of the current certificates ``numbers`` of its item and
+        date (``reason``, the register's words): why it is nevertheless a calibration of its
+        own (stated on it and recorded in the register; empty: not issued)."""
 
     def confirm_issue_date(self, date: str, reason: str) -> bool:
         """The issue is dated far after the register's last record (``reason``): is today

@@ -322,8 +322,9 @@ def _print_record(record, register, words) -> None:
     # current certificate of its item and date, and why
     for entry in register.same_readings_confirmations(record.number):
         lines.append(message(QT_TR_NOOP(
-            "  readings and details of {others} to every digit, as {user} said at issue "
-            "({recorded_at}): {reason}"), user=entry["os_user"] or "—",
+            "  the same readings as {others}, each within the last digit it was typed to, "
+            "and the same details, as {user} said at issue ({recorded_at}): {reason}"),
+            user=entry["os_user"] or "—",
             recorded_at=entry["recorded_at"], reason=entry["reason"] or "—",
             others=", ".join(o.get("number", "") for o in entry["others"])))
     due = register.due_date(record.item_serial, record.item_manufacturer or "") \

@@ -154,6 +154,18 @@ class Workbench(ABC, Generic[ResultT]):
         deviation typed as a measured position is the same reading. Empty by default."""
         return {}
 
+    def read_cells(self, parsed: ParsedReadings, settings: Mapping[str, Any]
+                   ) -> Mapping[str, list[Any]]:
+        """{column key: each parsed row's cell as the analysis reads it}, for a column the
+        analysis reads otherwise than as typed: a choice by its meaning (the first of its
+        group: positioning's "up" and "↑" are "+"), a blank cell as the analysis fills it
+        (positioning's direction from the order of the targets, its run as the k-th
+        approach), through the functions the analysis takes them by. The register compares
+        readings by them (models/register/readings_identity.py), so a direction or run typed
+        where the analysis would derive the same is the same readings. Empty by default:
+        every cell as typed (as it parses)."""
+        return {}
+
     def setting_units(self, settings: Mapping[str, Any]) -> Mapping[str, str]:
         """{setting key: its unit as ``settings`` make it}, for a number setting whose unit
         is another setting's (positioning's budget inputs, in the deviations' unit): shown

@@ -1065,6 +1065,20 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
     def check_settings(self, checked):
         _check_across(checked)
 
+    def read_cells(self, parsed, settings):
+        # each row's set as split_sets takes it (blank: set 1) and its set's direction as
+        # _direction takes it (the set's first stated, else from the encoder's steps); with
+        # several readings a point, averaged first, the cells as typed
+        if parsed.n == 0 or int(settings.get("readings_per_point", 1) or 1) > 1:
+            return {}
+        sets: list[Any] = [None] * parsed.n
+        directions: list[Any] = [None] * parsed.n
+        for set_id, rows, _ in split_sets(parsed):
+            sense = "+" if _direction(parsed, rows, "", []) > 0 else "-"
+            for i in rows.tolist():
+                sets[i], directions[i] = set_id, sense
+        return {"set": sets, "direction": directions}
+
     def split_incomplete(self, parsed, settings):
         return split_incomplete(parsed, settings)
 

@@ -311,12 +311,21 @@ def _entered_step(parsed: ParsedReadings, s: dict[str, Any]) -> float | None:
     return max(found) if found and len(found) == len(steps) else None
 
 
+def approach_directions(targets: np.ndarray, stated: Any) -> np.ndarray:
+    """Each reading's approach direction as the analysis takes it: +1 where its cell is one
+    of :data:`UP` (+, ↑, up), −1 where one of :data:`DOWN`, and where it is blank from the
+    order of the targets (:func:`models.positioning.model.infer_directions`)."""
+    directions = infer_directions(targets)
+    for i, d in enumerate(stated):
+        if d:
+            directions[i] = 1.0 if d in UP else -1.0
+    return directions
+
+
 def _directions(parsed: ParsedReadings, warnings: list[str]) -> np.ndarray:
     stated = parsed["direction"]
     given = np.array([bool(d) for d in stated], dtype=bool)
-    directions = infer_directions(parsed["target"])
-    for i in np.nonzero(given)[0]:
-        directions[i] = 1.0 if stated[i] in UP else -1.0
+    directions = approach_directions(parsed["target"], stated)
     if not given.all():
         count = int(np.sum(~given))
         warnings.append(message(QT_TR_NOOP("Approach direction not stated for {count} "
@@ -349,12 +358,7 @@ def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -
             QT_TR_NOOP("row {row}: no run number, though other rows have one; give every row its run, or "
                        "none"),
             row=_row(parsed, i)))
-    counts: dict[tuple[float, float], int] = {}
-    out = np.empty(targets.size, dtype=int)
-    for i, key in enumerate(zip(key_target.tolist(), directions.tolist(), strict=True)):
-        counts[key] = counts.get(key, 0) + 1
-        out[i] = counts[key]
-    return out
+    return _runs_counted(runs, targets, directions)
 
 
 def _check_stray_targets(parsed: ParsedReadings, targets: np.ndarray, runs: np.ndarray,
@@ -418,7 +422,7 @@ def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
     with np.errstate(all="ignore"):  # a target of 1e308: refused by the analysis, naming it
         targets = np.round(parsed["target"].astype(float), 9)
     directions = _directions(parsed, [])
-    runs = _runs_counted(parsed, targets, directions)
+    runs = _runs_counted(parsed["run"], targets, directions)
     if np.all(np.isfinite(targets)):  # before a run is taken for one in progress
         _check_stray_targets(parsed, targets, runs, directions)
     t, d, r = targets.tolist(), directions.tolist(), runs.tolist()
@@ -444,15 +448,18 @@ def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
         tuple(int(i) for i in rows))
 
 
-def _runs_counted(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray
+def _runs_counted(runs: np.ndarray, targets: np.ndarray, directions: np.ndarray
                   ) -> np.ndarray:
-    """The run of each reading: the run column, else the k-th approach to a target in a
-    direction (no check: the analysis checks)."""
-    if np.all(np.isfinite(parsed["run"])):
-        return parsed["run"].astype(int)
+    """The run of each reading: the run column (``runs``) where every row has one, else the
+    k-th approach to a target (to 9 decimals) in a direction (no check: the analysis
+    checks)."""
+    if np.all(np.isfinite(runs)):
+        return runs.astype(int)
     counts: dict[tuple[float, float], int] = {}
     out = np.empty(targets.size, dtype=int)
-    for i, key in enumerate(zip(targets.tolist(), directions.tolist(), strict=True)):
+    with np.errstate(all="ignore"):  # a target of 1e308: refused by the analysis, naming it
+        key_target = np.round(targets.astype(float), 9)
+    for i, key in enumerate(zip(key_target.tolist(), directions.tolist(), strict=True)):
         counts[key] = counts.get(key, 0) + 1
         out[i] = counts[key]
     return out
@@ -780,6 +787,22 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
     def derived_columns(self, settings):
         # where the deviation is blank the analysis takes measured − target (_deviations)
         return {"deviation": DEVIATION_FROM}
+
+    def read_cells(self, parsed, settings):
+        # the direction by its meaning, + or − (UP's and DOWN's first), blank ones from the
+        # order of the targets; the run, where no row has one, counted: as the analysis takes
+        # them (approach_directions, _runs_counted), of each point's first reading where a
+        # point has several (readings_per_point: the analysis averages them first)
+        n = int(settings.get("readings_per_point", 1) or 1)
+        if parsed.n == 0 or parsed.n % n:
+            return {}  # refused by the analysis (a point short of its readings)
+        first = slice(None, None, n)
+        targets = parsed["target"].astype(float)[first]
+        directions = approach_directions(targets, parsed["direction"][first])
+        runs = _runs_counted(parsed["run"][first], targets, directions)
+        return {"direction": np.repeat([UP[0] if d > 0 else DOWN[0] for d in directions], n
+                                       ).tolist(),
+                "run": np.repeat(runs, n).tolist()}
 
     def column_units(self, settings):
         # live78: the live table's "deviation" and "measured" had no unit in their header

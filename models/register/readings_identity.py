@@ -25,7 +25,12 @@ kept as it is, in the chains of the records issued with it. :func:`readings_iden
   (``12°30'00.1"``: 0.1″; ``12.500028``: 1e-6° = 0.0036″; ``-7.0298`` µrad: 1e-4 µrad),
   found by reading the text with that digit moved by one, through the column's own parser;
 - every other cell (fringe signals in V, run, set and face numbers, directions) is
-  compared as before: to 10 significant digits, a text as it parses;
+  compared as the analysis reads it (:meth:`models.workbench.Workbench.read_cells`, through
+  the analysis's own functions: a choice by its meaning — the positioning's "up", "↑" are
+  "+"; a run or direction left blank as the analysis derives it — the positioning's k-th
+  approach, the order of its targets, the polygon's set 1 and its encoder's steps, the
+  theodolite's forward pass; ident80b), else as before: to 10 significant digits, a text as
+  it parses;
 - the rows are a set: each row of one set has a row of the other with the same other
   cells and every angle or length within the tolerance below, and the other way round
   (their order, and a row given twice, aside; a row left out or added is other readings).
@@ -44,11 +49,15 @@ cell typed with fewer digits than its neighbours (``30.5`` of a file of numbers,
 trailing zeros are not kept) compares at its own coarser step.
 
 No grid is cut through the values, so no copy can fall on the other side of a boundary
-from its original: the register finds the candidates by an exact key and an anchor
-(:class:`ReadingsIdentity`: the other cells' set, and the smallest value of the first reading
-column with the largest half step of that column, in whole units of 2⁻⁴⁰ rad or m — a row
-given twice changes neither — found within the larger of the two half steps, :func:`near`),
-and compares the candidates' values as above (:func:`same_readings_values`)."""
+from its original: the register finds the candidates by an anchor (:class:`ReadingsIdentity`:
+the smallest value of the first reading column with the largest half step of that column, in
+whole units of 2⁻⁴⁰ rad or m — a row given twice changes neither — found within the larger of
+the two half steps, :func:`near`), and compares the candidates' cells and values as above
+(:func:`same_readings_values`). The layout stored beside it (the other cells' set as typed,
+in the chains of format 8) keeps its meaning and is checked by ``register verify``; it no
+longer narrows the look-up, since the cells are compared as the analysis reads them
+(``shape``, made again from the record's project state): so the records issued before keep
+their stored values, and a copy with its directions re-spelt still finds them."""
 
 from __future__ import annotations
 
@@ -63,7 +72,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["NO_READINGS", "ReadingsIdentity", "near", "readings_identity", "readings_key",
+__all__ = ["INDEX_BOUND", "NO_READINGS", "ReadingsIdentity", "near", "readings_identity", "readings_key",
            "same_readings_values"]
 
 #: significant digits a value is compared to: far below any reading's last digit (20° to
@@ -130,6 +139,8 @@ def readings_key(project_json: str, workbench: str) -> str:
 _QUANTUM = 2.0 ** -40
 #: an interval beyond ±this (values of 10⁶ rad and more) is every value's: always compared
 _BOUND = 2 ** 62
+#: the reach of such an interval: a record of it is a candidate of every look-up
+INDEX_BOUND = _BOUND
 #: the float noise allowed beside a tolerance: of the values (a value parsed from two
 #: spellings and converted to rad differs by a few ulp) and of the tolerance itself
 _ULPS = 8 * float(np.finfo(float).eps)
@@ -141,21 +152,28 @@ _EXPONENT = re.compile(r"[eE][+-]?\d+\s*$")
 @dataclass(frozen=True)
 class ReadingsIdentity:
     """The readings of a project state, as the register compares them
-    (:func:`readings_identity`). ``layout``, ``low`` and ``high`` are stored with the record
-    (schema version 9; in the chain from chain format 8) and find the candidates: ``layout``
-    equal and the anchors within the larger reach (:func:`near`); ``groups`` are compared
-    (:func:`same_readings_values`)."""
+    (:func:`readings_identity`). ``layout``, ``anchor`` and ``reach`` are stored with the
+    record (schema version 9; in the chain from chain format 8); the anchors within the
+    larger reach (:func:`near`) find the candidates, whose ``shape`` and ``groups`` are
+    compared (:func:`same_readings_values`)."""
 
     #: SHA-256 of the columns (each one's key and dimension) and of the set of the rows'
-    #: other cells (every cell but the angles and lengths, and which of those are blank)
+    #: other cells as typed (every cell but the angles and lengths, and which of those are
+    #: blank): stored and chained, checked by verify, no longer compared (``shape`` is)
     layout: str
     #: the smallest value of the first reading column, and the largest half step of that
     #: column, in whole units of :data:`_QUANTUM` (:func:`_anchor`): the anchors of the same
     #: readings are within the larger of their two reaches
     anchor: int
     reach: int
-    #: each set of other cells → (the rows' angles and lengths in rad or m, NaN blank; the
-    #: half step of each one's last digit), as arrays of one row a reading
+    #: SHA-256 of the columns and of the set of the rows' other cells as the analysis reads
+    #: them (:meth:`models.workbench.Workbench.read_cells`: a choice by its meaning, a blank
+    #: run or direction as it derives it): what is compared (not stored, made again from the
+    #: record's project state; ident80b)
+    shape: str = field(compare=False, repr=False)
+    #: each set of other cells as the analysis reads them → (the rows' angles and lengths in
+    #: rad or m, NaN blank; the half step of each one's last digit), as arrays of one row a
+    #: reading
     groups: Mapping[tuple, tuple[np.ndarray, np.ndarray]] = field(compare=False, repr=False)
 
     @property
@@ -172,6 +190,25 @@ def near(anchor: int, reach: int, other_anchor: int, other_reach: int) -> bool:
 
 #: what a record of no readings that parse stores
 NO_READINGS = ("", 0, 0)
+
+
+#: the steps found (:func:`_step`) by the column's kind and the cell's text, which alone
+#: decide them (an angle or a number parses by its text alone): a register's records repeat
+#: many cells (the targets, the nominal steps, a display's usual readings), and migration 9
+#: made every one's again (34.6 s for 10,000 records, ident80b); cleared past its size
+_STEPS: dict[tuple[Any, str], float] = {}
+_STEPS_KEPT = 200_000
+
+
+def _step_of(text: str, column: Any, value: float) -> float:
+    """:func:`_step`, remembered by the column's kind and the text."""
+    key = (column.kind, text)
+    found = _STEPS.get(key)
+    if found is None:
+        if len(_STEPS) >= _STEPS_KEPT:
+            _STEPS.clear()
+        found = _STEPS[key] = _step(text, column, value)
+    return found
 
 
 def _step(text: str, column: Any, value: float) -> float:
@@ -251,20 +288,31 @@ def readings_identity(project_json: str, workbench: str) -> ReadingsIdentity | N
         values[:, j] = (raw + origin) * size
         for r in np.nonzero(np.isfinite(raw))[0].tolist():
             text = sheet.text(int(parsed.row_index[r]), index)
-            halves[r, j] = 0.5 * _step(text, column, float(raw[r])) * size
+            halves[r, j] = 0.5 * _step_of(text, column, float(raw[r])) * size
     _derive(kind.derived_columns(settings), physical, values, halves)
+    try:
+        read = {k: v for k, v in kind.read_cells(parsed, settings).items()
+                if k in others and len(v) == n}
+    except (ValueError, TypeError, ArithmeticError, LookupError):
+        read = {}  # refused by the analysis: the cells as typed
     blank = ~np.isfinite(values)
+    typed: dict[tuple, list[int]] = {}
     members: dict[tuple, list[int]] = {}
     for i in range(n):
-        key = (tuple(_value(parsed.values[k][i]) for k in others),
-               tuple(bool(b) for b in blank[i]))
-        members.setdefault(key, []).append(i)
+        blanks = tuple(bool(b) for b in blank[i])
+        typed.setdefault((tuple(_value(parsed.values[k][i]) for k in others), blanks),
+                         []).append(i)
+        if read:
+            members.setdefault((tuple(_value(read[k][i] if k in read else parsed.values[k][i])
+                                      for k in others), blanks), []).append(i)
+    if not read:
+        members = typed  # every cell read as typed
     groups = {key: (values[rows_], halves[rows_]) for key, rows_ in members.items()}
-    layout = hashlib.sha256(json.dumps(
-        [dimensions, sorted([list(k[0]), list(k[1])] for k in members)],
-        ensure_ascii=False).encode()).hexdigest()
+    layout, shape = (hashlib.sha256(json.dumps(
+        [dimensions, sorted([list(k[0]), list(k[1])] for k in keys)],
+        ensure_ascii=False).encode()).hexdigest() for keys in (typed, members))
     anchor, reach = _anchor(kind, physical, values, halves)
-    return ReadingsIdentity(layout, anchor, reach, groups)
+    return ReadingsIdentity(layout, anchor, reach, shape, groups)
 
 
 def _derive(derived: Mapping[str, tuple[str, str]], physical: list, values: np.ndarray,
@@ -345,7 +393,7 @@ def same_readings_values(one: ReadingsIdentity | None, other: ReadingsIdentity |
     """Whether two identities are of the same readings (the module's docstring): the same
     columns and set of other cells, and each row of either within the tolerance of a row of
     the other with those cells. None (no readings) is no one's."""
-    if one is None or other is None or one.layout != other.layout:
+    if one is None or other is None or one.shape != other.shape:
         return False
     for key, (values, halves) in one.groups.items():
         found = other.groups.get(key)

@@ -53,6 +53,7 @@ from models.register.chain import (
 )
 from models.register.high_water import BEHIND, COUNTER_BEHIND, NOT_SIGNED, REPLACED
 from models.register.readings_identity import (
+    INDEX_BOUND,
     NO_READINGS,
     ReadingsIdentity,
     near,
@@ -696,6 +697,19 @@ class Register:
                     "register {display_url}: its table(s) {tables} are gone: deleted outside "
                     "AngleBench; the register is not opened; restore it from a backup"),
                     display_url=self.display_url, tables=", ".join(missing)))
+            # a column of its version dropped (ident80b: ALTER TABLE … DROP COLUMN
+            # readings_anchor gave a raw "no such column" at opening): said as the tables
+            # are, never read as a register of another version
+            for name, table in schema.METADATA.tables.items():
+                held_columns = {c["name"] for c in self._sa.inspect(conn).get_columns(name)}
+                lacking = [c.name for c in table.columns if c.name not in held_columns]
+                if lacking:
+                    raise RegisterTampered(message(QT_TR_NOOP(
+                        "register {display_url}: its table {table} lacks the column(s) "
+                        "{columns} of schema version {version}: it has been altered outside "
+                        "AngleBench; the register is not opened; restore it from a backup"),
+                        display_url=self.display_url, table=name, columns=", ".join(lacking),
+                        version=version))
         evidence = schema.downgrade_evidence(conn, version)
         if evidence:
             raise RegisterTampered(message(QT_TR_NOOP(
@@ -1482,9 +1496,10 @@ class Register:
                     # what it changes (hostile78 F3: a fail withdrawn, then a pass issued)
                     withdrawn = () if supersedes or separate_calibration is None else \
                         self._in_place_of_withdrawn(conn, request, meta)
-                    # a current certificate of the item whose readings these are, to every
-                    # digit, with another date of calibration: that calibration issued again,
-                    # re-dated (hostile79 #3: a day later it issued as an original, unsaid)
+                    # a current certificate of the item whose readings these are (each
+                    # within the last digit it was typed to), with another date of
+                    # calibration: that calibration issued again, re-dated (hostile79 #3: a
+                    # day later it issued as an original, unsaid)
                     redated = () if supersedes or separate_calibration is None else \
                         self._readings_redated(conn, request, meta, ident, same)
                     # an amendment's corrected maker is confirmed and stated on it
@@ -1828,10 +1843,11 @@ class Register:
         (readings_identity.same_readings_values)."""
         if ident is None:
             return False
-        if record.readings_layout is not None and (
-                record.readings_layout != ident.layout or not near(
-                    ident.anchor, ident.reach, record.readings_anchor or 0,
-                    record.readings_reach or 0)):
+        # the anchor only: the stored layout is of the cells as typed, compared as the
+        # analysis reads them (ReadingsIdentity.shape, made again)
+        if record.readings_layout is not None and not near(
+                ident.anchor, ident.reach, record.readings_anchor or 0,
+                record.readings_reach or 0):
             return False
         return same_readings_values(ident, self._identity_of(
             record.number, record.workbench, record.project_json))
@@ -1840,8 +1856,9 @@ class Register:
                              *where: Any) -> builtins.list[str]:
         """The numbers of the records of ``workbench`` (and ``where``) whose readings are
         ``ident``'s by their physical values, in the register's order: the candidates looked
-        up by the stored identity (its layout and anchor, their indexes: schema version 9),
-        then compared; a record without one (issued by an AngleBench of schema 8 after the
+        up by the stored identity (its anchor, of any layout: the stored layout is of the
+        cells as typed, "up" or a run given where the analysis derives it; their indexes:
+        schema version 9), then compared; a record without one (issued by an AngleBench of schema 8 after the
         migration, or a register read as it is) by its readings, made once per register
         object."""
         if ident is None:
@@ -1852,14 +1869,17 @@ class Register:
                 c.workbench == workbench, *where).order_by(c.id)).all()
         else:
             # the anchors within the larger reach: the request's, or a record's, which is at
-            # most the largest of the layout's (its index: one look-up)
+            # most the largest of the workbench's below the index's bound (one look-up);
+            # a record beyond it (values of 10⁶ rad) is every value's, compared always
+            # — without widening every look-up to the whole workbench
             widest = conn.execute(sa.select(sa.func.max(c.readings_reach)).where(
-                c.workbench == workbench, c.readings_layout == ident.layout)).scalar() or 0
+                c.workbench == workbench, c.readings_reach < INDEX_BOUND)).scalar() or 0
             span = max(ident.reach, int(widest))
             rows = conn.execute(sa.select(c.number, c.project_json).where(
                 c.workbench == workbench, *where, sa.or_(
-                    sa.and_(c.readings_layout == ident.layout,
-                            c.readings_anchor.between(ident.anchor - span, ident.anchor + span)),
+                    sa.and_(c.readings_layout != NO_READINGS[0], sa.or_(
+                        c.readings_anchor.between(ident.anchor - span, ident.anchor + span),
+                        c.readings_reach >= INDEX_BOUND)),
                     c.readings_layout.is_(None))).order_by(c.id)).all()
         return [row.number for row in rows if same_readings_values(
             ident, self._identity_of(row.number, workbench, row.project_json))]
@@ -3619,13 +3639,15 @@ def _same_readings_said(meta: CertificateMetadata, identical: tuple[str, ...],
             number=number or "—", numbers=numbers))
     if not reason:
         found = message(QT_TR_NOOP(
-            "the readings are those of {numbers} (serial {serial}, calibrated {date}) to every "
-            "digit, and so are its details: no two calibrations repeat every reading to the "
-            "last digit, so this is the calibration {numbers} already reports, issued again"),
+            "the readings are the same as those of {numbers} (serial {serial}, calibrated "
+            "{date}), each within the last digit it was typed to, and so are its details: no "
+            "two calibrations repeat every reading to the last digit, so this is the "
+            "calibration {numbers} already reports, issued again"),
             numbers=numbers, serial=_printed(meta.item_serial) or "—",
             date=meta.calibration_date or "—") if not redated else message(QT_TR_NOOP(
-            "the readings are those of {numbers} (serial {serial}) to every digit, with "
-            "another date of calibration than {date}: no two calibrations repeat every "
+            "the readings are the same as those of {numbers} (serial {serial}), each within "
+            "the last digit it was typed to, with another date of calibration than {date}: no "
+            "two calibrations repeat every "
             "reading to the last digit, so this is the calibration {numbers} already reports, "
             "issued again with its date of calibration moved"),
             numbers=numbers, serial=_printed(meta.item_serial) or "—",
@@ -3637,8 +3659,9 @@ def _same_readings_said(meta: CertificateMetadata, identical: tuple[str, ...],
             "a calibration of its own, say why (stated on the certificate and recorded in "
             "the register; on the command line: --same-readings-as {number}:REASON)"),
             found=found, number=identical[0]), identical, found)
-    return message(QT_TR_NOOP("The readings and details are those of {number} to every "
-                              "digit: {reason}"), number=number, reason=reason)
+    return message(QT_TR_NOOP("The readings are the same as those of {number}, each within "
+                              "the last digit it was typed to, and so are the details: "
+                              "{reason}"), number=number, reason=reason)
 
 
 def _serial_left_out(meta: CertificateMetadata, rows) -> SerialLeftOut:

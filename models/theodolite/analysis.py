@@ -130,6 +130,14 @@ def elevation_origin(settings: Mapping[str, Any]) -> float:
     return -90.0 if settings.get("vertical_reading") == "zenith" else 0.0
 
 
+def pass_directions(stated: Any) -> np.ndarray | None:
+    """Each reading's direction as the analysis takes it where any is stated: −1 for "-",
+    +1 for "+" and for a blank cell (forward); None where none is stated (no directions)."""
+    if not any(d for d in stated):
+        return None
+    return np.array([-1.0 if d == "-" else 1.0 for d in stated])
+
+
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteResult:
     s = _settings(settings)
     parsed, repeats = average_repeats(parsed, s["readings_per_point"],
@@ -151,10 +159,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
                 QT_TR_NOOP("reference row {reference} is blank, unreadable or missing"),
                 reference=reference))
         reference_index = int(matches[0])
-    directions = None
-    dir_col = parsed["direction"]
-    if any(d for d in dir_col):
-        directions = np.array([-1.0 if d == "-" else 1.0 for d in dir_col])
+    directions = pass_directions(parsed["direction"])
     result = analyze_run(
         parsed["theta_deg"], parsed["azimuth_deg"], elevation,
         reference_index=reference_index, method=str(s["method"]),
@@ -451,6 +456,14 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
 
     def column_origins(self, settings: Mapping[str, Any]) -> Mapping[str, float]:
         return {"elevation_deg": elevation_origin(settings)}
+
+    def read_cells(self, parsed: ParsedReadings, settings: Mapping[str, Any]
+                   ) -> Mapping[str, list[Any]]:
+        # a blank direction beside stated ones is forward, as pass_directions takes it
+        directions = pass_directions(parsed["direction"])
+        if directions is None:
+            return {}
+        return {"direction": ["+" if d > 0 else "-" for d in directions.tolist()]}
 
     def entry_plan(self, settings: Mapping[str, Any]) -> EntryPlan | None:
         from models.readings.entry_plan import targets_from_text, theodolite_plan

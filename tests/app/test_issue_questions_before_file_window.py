@@ -208,7 +208,7 @@ def test_the_schedule_names_the_maker_and_marks_makerless_certificates(window, q
 
     kind = KINDS["polygon"]
     rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
-    # the later calibration with readings of its own (the same readings to every digit on
+    # the later calibration with readings of its own (the same readings on
     # another date are the first calibration issued again, re-dated: hostile79 #3)
     later = map_columns(read_table(own_readings(samples_dir / kind.sample_file,
                                                 "LRA-0815 2026", tmp_path)), kind.columns)

@@ -548,13 +548,14 @@ def test_a_calibration_issued_again_is_refused_unless_said_separate(samples_dir,
     assert code == 2 and f"{first} already reports this calibration" in err
     assert "--separate-calibration" in err and not (tmp_path / "b.pdf").exists()
     meta = json.loads((tmp_path / "b.json").read_text(encoding="utf-8"))
-    # the same readings, to every digit, with the same details: the first calibration
+    # the same readings (each within its last digit), with the same details: the first calibration
     # issued again, not one of its own (register79), whatever the reason given
     code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--certificate",
                  str(tmp_path / "c.pdf"), "--metadata", str(tmp_path / "b.json"),
                  "--separate-calibration", "as left, after the read head was adjusted"])
     err = " ".join(capsys.readouterr().err.split())
-    assert code == 2 and f"the readings are those of {first} " in err and "to every digit" in err
+    assert code == 2 and f"the readings are the same as those of {first} " in err
+    assert "each within the last digit it was typed to" in err and "every digit" not in err
     assert f"--same-readings-as {first}:REASON" in err and not (tmp_path / "c.pdf").exists()
     # a calibration of its own has readings of its own: the polygon as left after adjustment
     as_left = own_readings(samples_dir / "polygon_sample.csv", "as left", tmp_path / "left")

@@ -1,7 +1,7 @@
-"""The window's question for a calibration of its own whose readings, to every digit, and
-details are those of a current certificate of its item and date (register79): asked why
-after the separate calibration's reason; cancelled, nothing is issued; answered, it is
-issued saying so and the answer is recorded."""
+"""The window's question for a calibration of its own whose readings (each within the last
+digit it was typed to) and details are those of a current certificate of its item and date
+(register79): asked why after the separate calibration's reason; cancelled, nothing is
+issued; answered, it is issued saying so and the answer is recorded."""
 
 from __future__ import annotations
 
@@ -36,7 +36,7 @@ def test_the_window_asks_why_the_same_readings_are_a_calibration_of_its_own(samp
     view.ask_same_readings.return_value = ""  # cancelled: nothing issued
     assert not export("b.pdf")
     numbers, reason = view.ask_same_readings.call_args.args
-    assert numbers == (first.number,) and "to every digit, and so are its details" in reason
+    assert numbers == (first.number,) and "typed to, and so are its details" in reason
     assert "--same-readings-as" not in reason  # the window's question, not the CLI's
     assert not (tmp_path / "b.pdf").exists()
     view.ask_same_readings.return_value = "a second certificate of the  run, asked for"
@@ -45,6 +45,7 @@ def test_the_window_asks_why_the_same_readings_are_a_calibration_of_its_own(samp
         [said] = register.same_readings_confirmations()
         second = register.get(said["number"])
     assert said["reason"] == "a second certificate of the run, asked for"
-    assert second.change_note == (f"as left; The readings and details are those of "
-                                  f"{first.number} to every digit: a second certificate of "
+    assert second.change_note == (f"as left; The readings are the same as those of "
+                                  f"{first.number}, each within the last digit it was typed "
+                                  "to, and so are the details: a second certificate of "
                                   "the run, asked for")

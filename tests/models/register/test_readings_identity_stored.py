@@ -201,6 +201,29 @@ def test_an_identity_set_otherwise_is_found_at_opening_and_by_verify(register_ur
         assert [r.number for r in register.list()] == [first.number]
 
 
+@pytest.mark.parametrize("column", IDENTITY)
+def test_a_column_of_version_9_dropped_is_said_at_opening(register_url, column):
+    """A column of version 9 dropped with SQL (ident80b: ALTER TABLE … DROP COLUMN
+    readings_anchor gave a raw "no such column" at opening): the register's own refusal,
+    as for a table gone, naming the table and the column; nothing opened."""
+    with Register(register_url) as register:
+        _issue(register, "LRA-0800", _rows(0))
+    engine = _engine(register_url)
+    with engine.begin() as conn:
+        for statement in ("DROP INDEX certificates_readings_anchor",
+                          "DROP INDEX certificates_readings_reach",
+                          f"ALTER TABLE certificates DROP COLUMN {column}"):
+            conn.execute(sa.text(statement))
+    engine.dispose()
+    with pytest.raises(RegisterTampered) as refused:
+        Register(register_url)
+    said = str(refused.value)
+    assert said.startswith("register ") and "no such column" not in said
+    assert said.endswith(f": its table certificates lacks the column(s) {column} of schema "
+                         "version 9: it has been altered outside AngleBench; the register "
+                         "is not opened; restore it from a backup")
+
+
 def test_a_migrated_records_identity_set_otherwise_is_found_by_verify(register_url):
     """A record of chain format 7 keeps its chain when migration 9 fills in its identity:
     set otherwise afterwards, the opening cannot see it (its chain does not cover it), but

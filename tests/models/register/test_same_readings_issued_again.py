@@ -1,8 +1,9 @@
-"""A "calibration of its own" whose readings, to every digit, and details are those of a
-current certificate of its item and date was issued as a new certificate, a second original
-of one calibration: no two calibrations repeat every reading to the last digit. Refused,
-naming the certificate and the ways out (its PDF, its amendment or replacement, or
---same-readings-as N:REASON), as a laundered copy is; said why, it is stated and chained."""
+"""A "calibration of its own" whose readings (each within the last digit it was typed to)
+and details are those of a current certificate of its item and date was issued as a new
+certificate, a second original of one calibration: no two calibrations repeat every reading
+to the last digit. Refused, naming the certificate and the ways out (its PDF, its amendment
+or replacement, or --same-readings-as N:REASON), as a laundered copy is; said why, it is
+stated and chained."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ import dataclasses
 
 import pytest
 
+from app.register_cli import run_register
 from models.certificate.metadata import CertificateMetadata
 from models.readings.angles import parse_angle_deg
 from models.register.store import (
@@ -52,9 +54,9 @@ def test_the_same_readings_and_details_as_separate_are_refused_naming_the_ways_o
         assert isinstance(refused.value, NotASeparateCalibration)
         assert refused.value.numbers == (original.number,)
         assert said.startswith(
-            f"the readings are those of {original.number} (serial LRA-0815, calibrated "
-            "2026-11-20) to every digit, and so are its details: no two calibrations repeat "
-            "every reading to the last digit")
+            f"the readings are the same as those of {original.number} (serial LRA-0815, "
+            "calibrated 2026-11-20), each within the last digit it was typed to, and so are "
+            "its details: no two calibrations repeat every reading to the last digit")
         assert f"anglebench register show {original.number} --pdf OUT.pdf" in said
         assert "Amend… or Replace…" in said
         assert f"--same-readings-as {original.number}:REASON" in said
@@ -62,7 +64,7 @@ def test_the_same_readings_and_details_as_separate_are_refused_naming_the_ways_o
     assert [r.number for r in register.list()] == [original.number]
 
 
-def test_said_why_it_is_issued_stating_it_and_recorded_in_the_chain(first):
+def test_said_why_it_is_issued_stating_it_and_recorded_in_the_chain(first, capsys):
     register, original = first
     rows = theodolite_sample_rows()
     with pytest.raises(RegisterError, match="not those of XX-1 but those of"):
@@ -71,13 +73,21 @@ def test_said_why_it_is_issued_stating_it_and_recorded_in_the_chain(first):
         _issue(register, rows, "as left", same_readings_as=(original.number, "  "))
     record = _issue(register, rows, "as left",
                     same_readings_as=(original.number, "second run of the  same mounting"))
-    assert record.change_note == (f"as left; The readings and details are those of "
-                                  f"{original.number} to every digit: second run of the "
+    assert record.change_note == (f"as left; The readings are the same as those of "
+                                  f"{original.number}, each within the last digit it was "
+                                  "typed to, and so are the details: second run of the "
                                   "same mounting")
     [entry] = register.same_readings_confirmations(record.number)
     assert entry["reason"] == "second run of the same mounting"
     assert entry["others"] == [{"number": original.number}]
     assert register.audit(pdfs=True) == []
+    # register show says what the user said, as true of a re-typed copy as of these
+    assert run_register(["--register", register.url, "show", record.number]) == 0
+    shown = " ".join(capsys.readouterr().out.split())
+    assert (f"the same readings as {original.number}, each within the last digit it was "
+            "typed to, and the same details, as ") in shown
+    assert "said at issue" in shown and "): second run of the same mounting" in shown
+    assert "to every digit" not in shown
 
 
 def test_readings_of_their_own_are_a_calibration_of_its_own_and_the_option_is_refused(first):
@@ -128,16 +138,18 @@ def test_the_same_readings_with_the_date_of_calibration_moved_are_refused(first)
         issue(theodolite_sample_rows()[::-1])
     assert refused.value.numbers == (original.number,)
     assert str(refused.value).startswith(
-        f"the readings are those of {original.number} (serial LRA-0815) to every digit, with "
-        "another date of calibration than 2026-11-21: no two calibrations repeat every reading "
+        f"the readings are the same as those of {original.number} (serial LRA-0815), each "
+        "within the last digit it was typed to, with another date of calibration than "
+        "2026-11-21: no two calibrations repeat every reading "
         f"to the last digit, so this is the calibration {original.number} already reports, "
         "issued again with its date of calibration moved. Its copy is the PDF of "
         f"{original.number}")
     assert [r.number for r in register.list()] == [original.number]
     said = issue(theodolite_sample_rows(),
                  same_readings_as=(original.number, "the lab's date was wrong on the first"))
-    assert said.change_note == (f"The readings and details are those of {original.number} to "
-                                "every digit: the lab's date was wrong on the first")
+    assert said.change_note == (f"The readings are the same as those of {original.number}, "
+                                "each within the last digit it was typed to, and so are the "
+                                "details: the lab's date was wrong on the first")
     assert [e["others"] for e in register.same_readings_confirmations(said.number)] == [
         [{"number": original.number}]]
     own = issue(one_reading_moved(theodolite_sample_rows()),
