@@ -3508,10 +3508,6 @@ If these are indeed the readings of a calibration of its own, say why: stated on
         <translation>  另一被校件的读数，由 {user} 在签发时说明（{recorded_at}）：为 {others} 的读数：{reason}</translation>
     </message>
     <message>
-        <source>  readings and details of {others} to every digit, as {user} said at issue ({recorded_at}): {reason}</source>
-        <translation>  读数和证书信息与 {others} 逐位相同，{user} 签发时（{recorded_at}）说明：{reason}</translation>
-    </message>
-    <message>
         <source>  next calibration of {serial} due: {date}</source>
         <translation>  {serial} 的下次校准日期：{date}</translation>
     </message>
@@ -3687,6 +3683,10 @@ If these are indeed the readings of a calibration of its own, say why: stated on
     <message>
         <source>the chain head printed on a certificate (the head before it): the register must still hold the history up to it, and the certificate&apos;s own record right after it</source>
         <translation>证书上印的链头（该证书之前的链头）：登记册必须仍保有截至该链头的历史，且紧随其后的是该证书自身的记录</translation>
+    </message>
+    <message>
+        <source>  the same readings as {others}, each within the last digit it was typed to, and the same details, as {user} said at issue ({recorded_at}): {reason}</source>
+        <translation>  与 {others} 相同的读数（每个读数在其输入的最后一位之内）和相同的证书信息，由 {user} 在签发时说明（{recorded_at}）：{reason}</translation>
     </message>
     <message>
         <source>  {n} record(s) are signed with the laboratory&apos;s key: their signatures and the register&apos;s signed state are NOT checked without the key (set ANGLEBENCH_REGISTER_KEY); a rewrite by someone with write access to the database is not detectable without it: compare the head with your log</source>
@@ -4016,7 +4016,7 @@ If these are indeed the readings of a calibration of its own, say why: stated on
     </message>
     <message>
         <source>Page {page} of {pages}</source>
-        <extracomment>the marks that close what comes before them (the Chinese closing ones, and the Latin ones that close a clause or a bracket): never alone on a line</extracomment>
+        <extracomment>how far (mm) inside a line&apos;s width a paragraph measured whole is taken to fit: beyond any difference of the last bits between the widths of its parts and of the whole the marks that close what comes before them (the Chinese closing ones, and the Latin ones that close a clause or a bracket): never alone on a line</extracomment>
         <translation>第 {page} 页 共 {pages} 页</translation>
     </message>
     <message>
@@ -7045,6 +7045,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>empty</source>
+        <extracomment>the spellings read as the plain ones, replaced in this order any text of :data:`_REPLACEMENTS` (a replacement makes one only where this finds one)</extracomment>
         <translation>为空</translation>
     </message>
     <message>
@@ -7097,7 +7098,7 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source>&apos;{text}&apos; is not a number</source>
-        <extracomment>The largest whole number an INTEGER column takes (positions, set numbers …).</extracomment>
+        <extracomment>an angle cell&apos;s value by its text, remembered (a float: the same for every reader): the register reads every record&apos;s readings at migration 9 and at each look-up (10,000 records of 41 rows, 1.2 million angle cells, most of them a target&apos;s, a nominal step&apos;s or a display&apos;s usual reading seen before; ident80b); an unreadable text is not kept The largest whole number an INTEGER column takes (positions, set numbers …).</extracomment>
         <translation>&apos;{text}&apos; 不是数字</translation>
     </message>
     <message>
@@ -7665,6 +7666,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>登记册 {display_url}：文件为空（0 字节），而登记册自创建之时起即含有其数据表：其记录已丢失（文件被清空或截断：崩溃、磁盘故障或某条命令覆盖了它）；不从中读取、也不向其签发任何内容，否则已签发的编号会再次签发：请从备份恢复登记册，然后用 &apos;anglebench register acknowledge-loss&apos; 记录此次丢失；如果从未向其签发过任何证书，请删除该文件</translation>
     </message>
     <message>
+        <source>register {display_url}: its table {table} lacks the column(s) {columns} of schema version {version}: it has been altered outside AngleBench; the register is not opened; restore it from a backup</source>
+        <translation>登记册 {display_url}：其数据表 {table} 缺少数据库结构版本 {version} 的列 {columns}：它在 AngleBench 之外被改动过；登记册未打开；请从备份恢复</translation>
+    </message>
+    <message>
         <source>the disk is full at {path}: migrating the register from schema version {version} to {latest} needs room for its journal (up to the register&apos;s own size, {size}); nothing was changed, the register is still at version {version} (free some space and try again)</source>
         <translation>{path} 所在磁盘已满：将登记册从架构版本 {version} 迁移到 {latest} 需要为其日志留出空间（最多为登记册本身的大小 {size}）；未作任何更改，登记册仍为版本 {version}（请释放一些空间后重试）</translation>
     </message>
@@ -7825,20 +7830,8 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>--same-readings-as {number}：读数和证书信息不是 {number} 的，而是 {numbers} 的；请指明这些读数所属的证书</translation>
     </message>
     <message>
-        <source>the readings are those of {numbers} (serial {serial}, calibrated {date}) to every digit, and so are its details: no two calibrations repeat every reading to the last digit, so this is the calibration {numbers} already reports, issued again</source>
-        <translation>读数与 {numbers}（序列号 {serial}，校准于 {date}）逐位相同，证书信息也相同：两次校准不会每个读数都逐位相同，因此这是 {numbers} 已报告的那次校准再次签发</translation>
-    </message>
-    <message>
-        <source>the readings are those of {numbers} (serial {serial}) to every digit, with another date of calibration than {date}: no two calibrations repeat every reading to the last digit, so this is the calibration {numbers} already reports, issued again with its date of calibration moved</source>
-        <translation>读数与 {numbers}（序列号 {serial}）逐位相同，但校准日期不是 {date}：两次校准不会每个读数都逐位相同，因此这是 {numbers} 已报告的那次校准，改动校准日期后再次签发</translation>
-    </message>
-    <message>
         <source>{found}. Its copy is the PDF of {number} (anglebench register show {number} --pdf OUT.pdf); a correction is its amendment or replacement (File › Certificate register, Amend… or Replace…); if these are indeed the readings of a calibration of its own, say why (stated on the certificate and recorded in the register; on the command line: --same-readings-as {number}:REASON)</source>
         <translation>{found}。其副本是 {number} 的 PDF（anglebench register show {number} --pdf OUT.pdf）；更正是对其修订或替代（文件 › 证书登记册，“修订…”或“替代…”）；如果这些确实是一次独立校准的读数，请说明原因（写在证书上并记入登记册；命令行中：--same-readings-as {number}:REASON）</translation>
-    </message>
-    <message>
-        <source>The readings and details are those of {number} to every digit: {reason}</source>
-        <translation>读数和证书信息与 {number} 逐位相同：{reason}</translation>
     </message>
     <message>
         <source>record {number}: the identity of its readings stored with it is not that of its readings (set otherwise after issue): the check of readings issued again would not find them</source>
@@ -9465,6 +9458,18 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>record {number}: the stored DCC does not match the SHA-256 recorded at issue</source>
         <translation>记录 {number}：所存的 DCC 与签发时记录的 SHA-256 不符</translation>
+    </message>
+    <message>
+        <source>the readings are the same as those of {numbers} (serial {serial}, calibrated {date}), each within the last digit it was typed to, and so are its details: no two calibrations repeat every reading to the last digit, so this is the calibration {numbers} already reports, issued again</source>
+        <translation>读数与 {numbers}（序列号 {serial}，校准于 {date}）的相同，每个读数在其输入的最后一位之内，证书信息也相同：没有两次校准会把每个读数重复到最后一位，所以这是 {numbers} 已报告的那次校准再次签发</translation>
+    </message>
+    <message>
+        <source>the readings are the same as those of {numbers} (serial {serial}), each within the last digit it was typed to, with another date of calibration than {date}: no two calibrations repeat every reading to the last digit, so this is the calibration {numbers} already reports, issued again with its date of calibration moved</source>
+        <translation>读数与 {numbers}（序列号 {serial}）的相同，每个读数在其输入的最后一位之内，但校准日期不是 {date}：没有两次校准会把每个读数重复到最后一位，所以这是 {numbers} 已报告的那次校准改动校准日期后再次签发</translation>
+    </message>
+    <message>
+        <source>The readings are the same as those of {number}, each within the last digit it was typed to, and so are the details: {reason}</source>
+        <translation>读数与 {number} 的相同，每个读数在其输入的最后一位之内，证书信息也相同：{reason}</translation>
     </message>
     <message>
         <source>record {number}: it is not the record its stored PDF was issued from: the PDF carries the digest {carried}… of its record&apos;s content (form {form}), the record now gives {actual}…: the record was rewritten after issue</source>
