@@ -225,7 +225,7 @@ class Workbench(ABC, Generic[ResultT]):
             else:  # the short point on its own
                 unit = IncompleteUnit("point", float(last + 1), short, n, 0, 0, (last,))
                 counted = short
-        elif short:
+        elif short and unit is not None:
             counted = unit.readings - 1
         if unit is None:
             return parsed, None

@@ -1016,7 +1016,7 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
     sample_file = "polygon_sample.csv"
     point_keys = ("position", "set", "direction")
 
-    def point_name(self, parsed, index):
+    def point_name(self, parsed: ParsedReadings, index: int) -> str:
         return message(QT_TR_NOOP("face {face}"), face=f"{parsed['position'][index]:g}")
     measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)

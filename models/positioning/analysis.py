@@ -744,7 +744,7 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
     sample_file = "positioning_sample.csv"
     point_keys = ("target", "run", "direction")
 
-    def point_name(self, parsed, index):
+    def point_name(self, parsed: ParsedReadings, index: int) -> str:
         return message(QT_TR_NOOP("target {target}"), target=f"{parsed['target'][index]:g}")
     measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"mean_deviation": ""}  # the certificate's U column (DCC)

@@ -434,7 +434,7 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
     sample_file = "theodolite_sample.csv"
     point_keys = ("theta_deg", "run", "direction")
 
-    def point_name(self, parsed, index):
+    def point_name(self, parsed: ParsedReadings, index: int) -> str:
         return message(QT_TR_NOOP("θ = {theta}°"), theta=f"{parsed['theta_deg'][index]:g}")
     measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)

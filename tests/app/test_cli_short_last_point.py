@@ -144,3 +144,24 @@ def test_a_point_short_in_the_middle_or_a_last_point_read_too_often_is_refused(
     assert main(["analyze", "polygon", _write(tmp_path / "t.csv", header, three),
                  "--readings-per-point", "2"]) == 2
     assert "the last point has 1" in capsys.readouterr().err
+
+
+def test_positioning_runs_counted_from_the_order_find_the_run_in_progress(capsys, samples_dir,
+                                                                          tmp_path):
+    """No run column, two readings a point: the runs are counted among the points, so run
+    5's first two targets read twice are a run in progress (on main none was found: its
+    readings entered the figures as a run of their own)."""
+    header, rows = _rows(samples_dir / "positioning_sample.csv")
+    runs = _units(rows, 1)
+    done = _twice([[r[0], "", *r[2:]] for s in runs[:-1] for r in s])
+    last = [[r[0], "", *r[2:]] for r in runs[-1]]
+    alone = _json(capsys, "positioning", _write(tmp_path / "a.csv", header, done))
+    partial = _json(capsys, "positioning",
+                    _write(tmp_path / "b.csv", header, done + _twice(last[:2])))
+    got = partial.pop("incomplete")
+    alone.pop("incomplete")
+    assert got["text"] == "run 5: 2 of 26 readings"
+    assert partial == alone
+    short = _json(capsys, "positioning",
+                  _write(tmp_path / "c.csv", header, done + _twice(last[:2]) + last[2:3]))
+    assert short["incomplete"]["text"] == "run 5: 2 of 26 readings, target 60: reading 1 of 2"
