@@ -37,10 +37,12 @@ from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar
 
+import numpy as np
+
 from models.certificate.traceability import test_report_statement, traceability_gaps
 from models.messages import QT_TR_NOOP, joined, listed, message, reason_of
 from models.parameters import Parameter, SettingsError, Shortcut, check_parameters
-from models.readings.incomplete import IncompleteUnit
+from models.readings.incomplete import IncompleteUnit, point_groups, subset
 from models.readings.sheet import Column, ParsedReadings
 from models.sign_convention import SIGN_CONVENTION, SIGN_CONVENTION_TEXT
 from models.uncertainty.lab_scope import cmc_quantity, scope_statement
@@ -179,11 +181,82 @@ class Workbench(ABC, Generic[ResultT]):
         default every reading is complete."""
         return parsed, None
 
+    #: the columns that say which point a reading is (face, set, direction …), on which
+    #: the n readings of a point agree (models.readings.repeats): a workbench with the
+    #: setting ``readings_per_point`` names them; empty: every reading its own point
+    point_keys: ClassVar[tuple[str, ...]] = ()
+
+    def point_name(self, parsed: ParsedReadings, index: int) -> str:
+        """What point reading ``index`` is ("face 3"), for the progress line of a point
+        short of its n readings; by default its sheet row."""
+        return message(QT_TR_NOOP("row {row}"), row=int(parsed.row_index[index]) + 1)
+
+    def split_in_points(self, parsed: ParsedReadings, settings: Mapping[str, Any]
+                        ) -> tuple[ParsedReadings, IncompleteUnit | None]:
+        """:meth:`split_incomplete` with n readings per point: the units are found among
+        the points (each point's first reading standing for it), and the last point, when
+        it has fewer than n readings, is part of the run in progress — of the last unit
+        when that unit is in progress or it completes it, else the unit in progress on its
+        own ("point 7: 1 of 2 readings"). A point whose readings disagree on what point
+        they are (a reading missing in the middle), or a last point with more than n
+        readings, finds no run in progress: the analysis refuses it, naming the rows."""
+        n = int(settings.get("readings_per_point", 1) or 1)
+        keys = [k for k in self.point_keys if k in parsed.values]
+        if n <= 1 or not keys or parsed.n == 0:
+            return self.split_incomplete(parsed, settings)
+        groups, short = point_groups(parsed, n)
+
+        def same(i: int, j: int) -> bool:
+            for key in keys:
+                a, b = parsed[key][i], parsed[key][j]
+                if isinstance(a, float) or isinstance(b, float):
+                    a, b = float(a), float(b)
+                    if not (math.isnan(a) and math.isnan(b)) and not abs(a - b) <= 1e-9:
+                        return False
+                elif (a or "") != (b or ""):
+                    return False
+            return True
+
+        if not all(same(int(g[0]), int(i)) for g in groups for i in g[1:]):
+            return parsed, None  # a reading missing in the middle: refused by the analysis
+        if short and len(groups) > 1 and same(int(groups[-1][0]), int(groups[-2][0])):
+            return parsed, None  # the last point has more than n readings: refused
+        firsts = np.zeros(parsed.n, dtype=bool)
+        firsts[[int(g[0]) for g in groups]] = True
+        points = subset(parsed, firsts)
+        one = {**settings, "readings_per_point": 1}
+        last = len(groups) - 1
+        unit = self.split_incomplete(points, one)[1]
+        counted = 0 if unit is None else unit.readings
+        if short and (unit is None or last not in unit.rows):
+            head = subset(points, np.arange(points.n) != last)
+            unit = self.split_incomplete(head, one)[1] if head.n else None
+            if unit is not None and last - 1 in unit.rows:
+                counted = unit.readings
+                unit = dataclasses.replace(unit, rows=(*unit.rows, last))
+            else:  # the short point on its own
+                unit = IncompleteUnit("point", float(last + 1), short, n, 0, 0, (last,))
+                counted = short
+        elif short and unit is not None:
+            counted = unit.readings - 1
+        if unit is None:
+            return parsed, None
+        rows = [int(i) for p in unit.rows for i in groups[p]]
+        keep = np.ones(parsed.n, dtype=bool)
+        keep[rows] = False
+        sheet = parsed.row_index.astype(int) + 1
+        named = (self.point_name(parsed, int(groups[last][0])) if short and unit.unit != "point"
+                 else "")
+        return subset(parsed, keep), dataclasses.replace(
+            unit, readings=counted, first_row=int(sheet[rows[0]]), last_row=int(sheet[rows[-1]]),
+            rows=tuple(rows), point=named, point_readings=short if named else 0, per_point=n)
+
     def analyze_as_far_as_it_goes(self, parsed: ParsedReadings,
                                   settings: Mapping[str, Any]) -> ResultT:
         """The result of the complete units (its ``incomplete``: the last unit in progress,
-        whose readings enter no figure); ValueError when no unit is complete yet."""
-        complete, unit = self.split_incomplete(parsed, settings)
+        whose readings enter no figure, with n readings per point its last point short of
+        them too: :meth:`split_in_points`); ValueError when no unit is complete yet."""
+        complete, unit = self.split_in_points(parsed, settings)
         if unit is None:
             return self.analyze(parsed, settings)
         if complete.n == 0:

@@ -496,7 +496,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     grade = s["grade"]
     typed = parsed  # every reading as typed: the displays' steps (models.polygon.rounding)
     parsed, repeats = average_repeats(
-        parsed, s["readings_per_point"], ("position", "set", "direction"),
+        parsed, s["readings_per_point"], Polygon.point_keys,
         ("encoder_deg", "polygon_dev_arcsec", "ac_x_arcsec", "ac_y_arcsec"), angles=("encoder_deg",))
     if parsed.n < 3:
         raise ValueError(message(
@@ -1014,6 +1014,10 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "polygon_sample.csv"
+    point_keys = ("position", "set", "direction")
+
+    def point_name(self, parsed: ParsedReadings, index: int) -> str:
+        return message(QT_TR_NOOP("face {face}"), face=f"{parsed['position'][index]:g}")
     measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
     #: what the DCC says of a column's U where the PDF prints none beside it

@@ -468,8 +468,8 @@ def _runs_counted(runs: np.ndarray, targets: np.ndarray, directions: np.ndarray
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningResult:
     s = POSITIONING.checked_settings(settings)
     step = _entered_step(parsed, s)
-    parsed, repeats = average_repeats(parsed, s["readings_per_point"],
-                                      ("target", "run", "direction"), ("deviation", "measured"))
+    parsed, repeats = average_repeats(parsed, s["readings_per_point"], Positioning.point_keys,
+                                      ("deviation", "measured"))
     if parsed.n < 2:
         raise ValueError(message(
             QT_TR_NOOP("{n} usable readings; a positioning test needs at least two targets"),
@@ -749,6 +749,10 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "positioning_sample.csv"
+    point_keys = ("target", "run", "direction")
+
+    def point_name(self, parsed: ParsedReadings, index: int) -> str:
+        return message(QT_TR_NOOP("target {target}"), target=f"{parsed['target'][index]:g}")
     measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"mean_deviation": ""}  # the certificate's U column (DCC)
     method_reference = ("ISO 230-2:2014 Test code for machine tools — Part 2: Determination of "

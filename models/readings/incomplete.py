@@ -18,7 +18,8 @@ import numpy as np
 from models.messages import QT_TR_NOOP, Message, message
 from models.readings.sheet import ParsedReadings
 
-__all__ = ["UNIT_WORDS", "IncompleteUnit", "short_last_unit", "subset", "without_waiting_rows"]
+__all__ = ["UNIT_WORDS", "IncompleteUnit", "point_groups", "short_last_unit", "subset",
+           "without_waiting_rows"]
 
 #: each unit's words: (what the unit is, what its readings are)
 UNIT_WORDS: dict[str, tuple[str, str]] = {
@@ -27,6 +28,9 @@ UNIT_WORDS: dict[str, tuple[str, str]] = {
     "run": (QT_TR_NOOP("run {number}: {readings} of {expected} readings"), "readings"),
     "target": (QT_TR_NOOP("target {number}: {readings} of {expected} readings"), "readings"),
     "pass": (QT_TR_NOOP("pass {number}: {readings} of {expected} steps"), "steps"),
+    # a workbench without units, or whose last unit is complete but for its last point:
+    # that point, short of its n readings, is the unit in progress on its own
+    "point": (QT_TR_NOOP("point {number}: {readings} of {expected} readings"), "readings"),
 }
 
 
@@ -43,13 +47,23 @@ class IncompleteUnit:
     first_row: int
     last_row: int
     rows: tuple[int, ...] = ()
+    #: with n readings per point, the unit's last point when it is short of them (it is not
+    #: counted in ``readings``): what it is ("face 3"), its readings taken, and n
+    point: str = ""
+    point_readings: int = 0
+    per_point: int = 1
 
     def text(self) -> Message:
-        """"set 2: 3 of 24 faces"."""
+        """"set 2: 3 of 24 faces"; with its last point short of its n readings "set 2: 2 of
+        24 faces, face 3: reading 1 of 2"."""
         number = int(self.number) if float(self.number).is_integer() else self.number
-        return message(UNIT_WORDS[self.unit][0], number=f"{number:g}"
+        unit = message(UNIT_WORDS[self.unit][0], number=f"{number:g}"
                        if isinstance(number, float) else number, readings=self.readings,
                        expected=self.expected)
+        if not self.point:
+            return unit
+        return message(QT_TR_NOOP("{unit}, {point}: reading {readings} of {n}"), unit=unit,
+                       point=self.point, readings=self.point_readings, n=self.per_point)
 
     def progress(self) -> Message:
         """The line the summary and the command line print."""
@@ -61,9 +75,24 @@ class IncompleteUnit:
     def as_dict(self) -> dict[str, object]:
         """The JSON key ``incomplete``."""
         number = int(self.number) if float(self.number).is_integer() else float(self.number)
-        return {"unit": self.unit, "number": number, "readings": self.readings,
-                "expected": self.expected, "first_row": self.first_row,
-                "last_row": self.last_row, "text": str(self.text())}
+        out: dict[str, object] = {
+            "unit": self.unit, "number": number, "readings": self.readings,
+            "expected": self.expected, "first_row": self.first_row, "last_row": self.last_row,
+            "text": str(self.text())}
+        if self.point:
+            out["point"] = {"name": str(self.point), "readings": self.point_readings,
+                            "expected": self.per_point}
+        return out
+
+
+def point_groups(parsed: ParsedReadings, n: int) -> tuple[list[np.ndarray], int]:
+    """The readings' indices taken ``n`` at a time, in order (each group one point, as
+    models.readings.repeats.average_repeats takes them), the last group short when the
+    readings are not a multiple of ``n``; and how many readings that short group has (0:
+    none is short)."""
+    total = parsed.n
+    groups = [np.arange(i, min(i + n, total)) for i in range(0, total, n)]
+    return groups, total % n
 
 
 def subset(parsed: ParsedReadings, keep: np.ndarray) -> ParsedReadings:

@@ -140,8 +140,7 @@ def pass_directions(stated: Any) -> np.ndarray | None:
 
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteResult:
     s = _settings(settings)
-    parsed, repeats = average_repeats(parsed, s["readings_per_point"],
-                                      ("theta_deg", "run", "direction"),
+    parsed, repeats = average_repeats(parsed, s["readings_per_point"], Theodolite.point_keys,
                                       ("azimuth_deg", "elevation_deg"),
                                       angles=("azimuth_deg", "elevation_deg"))
     if parsed.n < 4:
@@ -438,6 +437,10 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "theodolite_sample.csv"
+    point_keys = ("theta_deg", "run", "direction")
+
+    def point_name(self, parsed: ParsedReadings, index: int) -> str:
+        return message(QT_TR_NOOP("θ = {theta}°"), theta=f"{parsed['theta_deg'][index]:g}")
     measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
     #: what the DCC says of the raw error's U (the JSON's raw_error_arcsec budget)
