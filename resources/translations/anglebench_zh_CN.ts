@@ -5891,6 +5891,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>；未评定 {figures}（同上文的重复性和反向差）</translation>
     </message>
     <message>
+        <source>face {face}</source>
+        <translation>第 {face} 面</translation>
+    </message>
+    <message>
         <source>No statement of conformity: {reason}. Grade {grade} (±{accuracy}): corrected error peak-to-peak {ptp}, U left out; </source>
         <translation>不作符合性声明：{reason}。{grade} 级（±{accuracy}）：修正后误差峰峰值 {ptp}，未计 U；</translation>
     </message>
@@ -6153,7 +6157,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     </message>
     <message>
         <source> (no coverage interval: {figures})</source>
-        <extracomment>the settings in the deviations&apos; unit (the budget&apos;s inputs the readings cannot show)</extracomment>
         <translation>（无包含区间：{figures}）</translation>
     </message>
     <message>
@@ -6223,6 +6226,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>Corrected error  {low} … {high} (peak-to-peak {ptp}, RMS {rms})</source>
         <translation>修正后误差       {low} … {high}（峰峰值 {ptp}，均方根 {rms}）</translation>
+    </message>
+    <message>
+        <source>θ = {theta}°</source>
+        <translation>θ = {theta}°</translation>
     </message>
     <message>
         <source>the autocollimating theodolite</source>
@@ -6761,8 +6768,12 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>误差 = 示值 − 参考值（VIM）；修正值 = −误差</translation>
     </message>
     <message>
+        <source>row {row}</source>
+        <extracomment>what a concrete workbench class must set (checked when its object is made) the columns that say which point a reading is (face, set, direction …), on which the n readings of a point agree (models.readings.repeats): a workbench with the setting ``readings_per_point`` names them; empty: every reading its own point</extracomment>
+        <translation>第 {row} 行</translation>
+    </message>
+    <message>
         <source>{progress}: none is complete yet</source>
-        <extracomment>what a concrete workbench class must set (checked when its object is made)</extracomment>
         <translation>{progress}：尚无已完成的部分</translation>
     </message>
     <message>
@@ -11041,6 +11052,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>target {target}</source>
+        <extracomment>the settings in the deviations&apos; unit (the budget&apos;s inputs the readings cannot show)</extracomment>
         <translation>目标位置 {target}</translation>
     </message>
     <message>
@@ -12103,6 +12115,15 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>pass {number}: {readings} of {expected} steps</source>
         <translation>第 {number} 遍：已有 {readings} 步，共 {expected} 步</translation>
+    </message>
+    <message>
+        <source>point {number}: {readings} of {expected} readings</source>
+        <translation>第 {number} 点：已读 {readings} 个，共 {expected} 个读数</translation>
+    </message>
+    <message>
+        <source>{unit}, {point}: reading {readings} of {n}</source>
+        <extracomment>with n readings per point, the unit&apos;s last point when it is short of them (it is not counted in ``readings``): what it is (&quot;face 3&quot;), its readings taken, and n</extracomment>
+        <translation>{unit}，{point}：第 {readings} 次读数（共 {n} 次）</translation>
     </message>
     <message>
         <source>In progress: {unit} (rows {first}–{last}); its readings enter no figure until it is complete, and a certificate waits for it.</source>
