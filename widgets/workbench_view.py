@@ -392,13 +392,6 @@ class WorkbenchView(QWidget):
             self.plot_tabs.setTabText(index, tr(title.source))
         self.step_label.setText(tr("next {column} +").format(column=declared(
             self._nominal_title)) if self._nominal_title else "")
-        # in lines at its spaces where the pane is narrow, never one character a line: the
-        # Chinese "下一个 目标位置 +" beside the docked capture panel at 150 % was given 34 px,
-        # drawn a character a line and cut at the top and bottom (gui80)
-        metrics = self.step_label.fontMetrics()
-        self.step_label.setMinimumWidth(max(
-            (metrics.horizontalAdvance(word) for word in self.step_label.text().split()),
-            default=0))
         self._fit_left_pane()  # the set-up's captions are as wide as the language makes them
         self._fit_headers()
 

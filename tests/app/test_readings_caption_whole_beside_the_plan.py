@@ -50,26 +50,3 @@ def test_the_readings_caption_is_whole_beside_a_long_next_caption(window, qtbot,
     # and the next reading's caption is whole too
     nxt = view.next_label
     assert nxt.heightForWidth(nxt.width()) <= nxt.height(), (nxt.width(), nxt.height())
-
-
-def test_the_step_caption_keeps_its_words_whole_in_a_narrow_pane(window, qtbot):
-    """gui80: the Chinese window at 150 % on a 1280×720 screen (853×480), the capture panel
-    docked beside the workbench: the step's caption "下一个 目标位置 +" was given 15 px and
-    drawn one character a line, its first and last characters cut off at the top and bottom.
-    It keeps its widest word ("目标位置") on a line, and every line in sight."""
-    window.set_language("zh_CN")
-    window.show()
-    window.capture_panel.show()
-    # the offscreen capture panel is narrower than on the screen (240 px, not 360): the
-    # window narrowed so that the readings pane has the ~330 px it had there
-    window.resize(680, 446)
-    bench = _show(window, "positioning")
-    bench.set_settings({**bench.settings, "plan_runs": 2, "plan_targets": "0:90:4",
-                        "plan_directions": "both", "readings_per_point": 2})
-    qtbot.wait(300)
-    label = bench.view.step_label
-    assert label.text() == "下一个 目标位置 +"
-    metrics = QFontMetrics(label.font())
-    assert label.width() >= metrics.horizontalAdvance("目标位置"), label.width()
-    assert label.heightForWidth(label.width()) <= label.height(), (label.width(),
-                                                                   label.height())
