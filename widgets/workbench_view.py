@@ -272,6 +272,11 @@ class WorkbenchView(QWidget):
         self._entry.addWidget(self.next_label, row, 1)
         self._entry.addWidget(self.step_label, row, 2)
         self._entry.addWidget(self.step, row, 3)
+        # beside the next reading, the caption keeps the width it was placed there for: the
+        # plan's long next caption ("下一个：目标位置 270°，第 1 次测量 ↑，第 1 次读数（共 2 次）")
+        # squeezed it to 57 px, narrower than its unbroken last words "测量：已标注" (72 px),
+        # and "注" (flagged) was cut off (gui80)
+        self._entry.setColumnMinimumWidth(0, 0 if above else self.CAPTION_MIN_WIDTH)
         self._caption_above = above
 
     def _left_width_wanted(self) -> int:

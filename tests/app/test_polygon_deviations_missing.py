@@ -19,8 +19,8 @@ from widgets.readings_table_model import INVALID_BRUSH, LEFT_OUT_BRUSH
 pytestmark = pytest.mark.slow  # a window
 
 MISSING = ("the polygon's face deviations are missing: load its certificate (“Load polygon "
-           "certificate…”, at the end of the set-up) or type them in the polygon dev column. A "
-           "blank one is not taken as 0; the readings are kept.")
+           "certificate…”, at the end of the set-up) or type them in the polygon dev [\"] column. "
+           "A blank one is not taken as 0; the readings are kept.")
 DEVIATIONS = [0.0, 0.12, -0.08, 0.05, 0.2, -0.15, 0.03, -0.04, 0.1, -0.11, 0.07, -0.02]
 
 
@@ -94,3 +94,18 @@ def test_blank_deviations_are_said_once_not_marked_bad_in_every_row(bench, tmp_p
     assert bench.result is not None and bench.problem == ""
     assert view.readings_label.text().startswith("Readings — 24 used")
     assert all(brush is None for brush, _ in _marks(bench, "polygon_dev_arcsec"))
+
+
+def test_the_chinese_sentence_names_the_column_as_the_table_heads_it(bench, window):
+    """gui80: the Chinese sentence said "或在 polygon dev 列中键入" — an English column name
+    the Chinese table has not (its header is "棱体偏差 [\"]"): it names the header shown."""
+    window.set_language("zh_CN")
+    bench.refresh()
+    model = bench.table_model
+    dev = bench.sheet.column_index("polygon_dev_arcsec")
+    header = model.headerData(dev, Qt.Orientation.Horizontal)
+    assert header == '棱体偏差 ["]'
+    said = bench.view.summary.toPlainText()
+    assert f"{header} 列" in said, said
+    assert "polygon dev" not in said
+    assert _marks(bench, "polygon_dev_arcsec")[0][1] == said.split("：", 1)[1]

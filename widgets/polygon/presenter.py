@@ -104,7 +104,10 @@ class PolygonPresenter(WorkbenchPresenter):
             "the polygon's face deviations are missing: load its certificate (“Load polygon "
             "certificate…”, at the end of the set-up) or type them in the {column} column. A "
             "blank one is not taken as 0; the readings are kept.").format(
-                column=declared(column.title))
+                # its header as the table shows it ("棱体偏差 [\"]"): the title alone has no
+                # translation, and the Chinese sentence named an English "polygon dev" column
+                # the table has not (gui80)
+                column=declared(column.header))
 
     def load_certificate_dialog(self) -> None:
         from models.certificate.metadata import MetadataError
