@@ -560,8 +560,8 @@ def vertical_fits_noise(sets: list[PolygonSetResult], faces: int
         # about each fit, over the faces it was fitted to (4 or more)
         dof = sum(int(np.count_nonzero(np.isfinite(r))) - TILT_FIT_UNKNOWNS for r in residuals)
         scatter = sum(float(np.nansum(r**2)) for r in residuals)
-    if dof <= 0:
-        return None
+    if dof <= 0 or not math.sqrt(scatter / dof) > ARITHMETIC_NOISE_ARCSEC:
+        return None  # no scatter beyond the arithmetic's: nothing to tell the noise from
     return float(np.sqrt(scatter / dof)), dof, between
 
 
@@ -746,6 +746,14 @@ def zero_offsets_warning(values: np.ndarray, directions: np.ndarray,
         spread=f"{spread[0]:.2f}\"", expected=f"{expected:.2f}\"")
 
 
+#: a reading noise at or below this (″) is the arithmetic's, not the readings': the errors
+#: are made of angles up to 360° (1.3e6″) converted and differenced in doubles (1.3e6 ×
+#: 2.2e-16 ≈ 3e-10″), and no display reads finer than 1e-4″. Readings that differ by no
+#: more show no scatter at all: nothing to tell the noise from, never a noise of 0 (gui80:
+#: noise-free captured readings of two sets gave "reading noise 9.76e-17″" into U)
+ARITHMETIC_NOISE_ARCSEC = 1e-7
+
+
 def reversal_pair_noise(values: np.ndarray, directions: np.ndarray) -> tuple[float, int] | None:
     """σ of one error from one forward and one reverse set, with its degrees of freedom:
     the encoder's own reading noise and the horizontal reading's together, which is what an
@@ -761,7 +769,7 @@ def reversal_pair_noise(values: np.ndarray, directions: np.ndarray) -> tuple[flo
     d = fwd[0] - rev[0]
     dof = d.size - 1
     scatter = float(np.sum((d - d.mean()) ** 2))
-    if not scatter > 0:
+    if not math.sqrt(scatter / (2.0 * dof)) > ARITHMETIC_NOISE_ARCSEC:
         return None
     return math.sqrt(scatter / (2.0 * dof)), dof
 

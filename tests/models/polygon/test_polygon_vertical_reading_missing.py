@@ -93,8 +93,15 @@ def test_a_blank_in_one_of_two_sets_keeps_the_noise_between_the_sets():
         np.testing.assert_allclose(s.corrected_error_arcsec, truth, atol=1e-5)
     from models.polygon.model import vertical_fits_noise
 
-    noise, dof, between = vertical_fits_noise(result.sets, FACES)
-    assert between and dof == (FACES - 1 - 3) and np.isfinite(noise)
+    # the rig reads without noise: the fits' residuals are the arithmetic's, no noise told
+    # (gui80: 9.76e-17″ went into U as the reading noise)
+    assert vertical_fits_noise(result.sets, FACES) is None
+    # with a reading noise, it is told between the sets over the faces both read
+    rng = np.random.default_rng(80)
+    noisy = [r[:4] + [repr(float(r[4]) + rng.normal(0.0, 0.05)) if r[4] else ""] + r[5:]
+             for r in rows]
+    noise, dof, between = vertical_fits_noise(_analyse(noisy).sets, FACES)
+    assert between and dof == (FACES - 1 - 3) and 0.01 < noise < 0.15
 
 
 def test_too_few_vertical_readings_left_is_not_identified_naming_the_rows():
