@@ -11,7 +11,7 @@ from __future__ import annotations
 import pytest
 
 from tests.app.capture.test_auto_take_polygon_faces import FAST
-from tests.app.capture.window_steps import show_workbench as _show
+from tests.app.capture.window_steps import captured_rows, polygon_bench
 from tests.instrument_simulators import AutocollimatorSimulator, ReadoutSimulator
 
 pytestmark = pytest.mark.slow  # a window and two instruments for seconds
@@ -22,22 +22,12 @@ FACES = [(10.0, 0.10), (40.0, 0.25), (70.0, 0.05)]
 
 @pytest.fixture
 def bench(window):
-    presenter = _show(window, "polygon")
-    presenter.table_model.replace_all([], "empty")
-    presenter.set_settings({**presenter.settings, "faces": 12, "plan_sets": 1,
-                            "readings_per_point": 2})
-    presenter.undo_stack.clear()
-    yield presenter
-    window.capture_panel.close()
+    yield from polygon_bench(window, faces=12, plan_sets=1, readings_per_point=2)
 
 
-def _rows(bench) -> list[tuple[str, str, str, str]]:
+def _rows(bench) -> list[tuple]:
     """(face, set, encoder, AC x) of the rows with an AC x."""
-    sheet = bench.table_model.sheet
-    keys = [c.key for c in sheet.columns]
-    return [tuple(sheet.text(r, keys.index(k)) for k in ("position", "set", "encoder_deg",
-                                                         "ac_x_arcsec"))
-            for r in range(sheet.row_count) if sheet.text(r, keys.index("ac_x_arcsec"))]
+    return captured_rows(bench, ("position", "set", "encoder_deg", "ac_x_arcsec"))
 
 
 def test_two_takes_a_face_fill_the_faces_rows_in_the_plan(bench, window, qtbot):
