@@ -8,40 +8,19 @@ A point short in the middle, or a last point with more readings than n, is still
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 
 import pytest
 
 from app.main import main
+from tests.app.test_cli_incomplete import _rows, _units, _write
 
 pytestmark = pytest.mark.slow  # each workbench's analysis, a few times
-
-
-def _rows(path):
-    with open(path, encoding="utf-8-sig", newline="") as handle:
-        table = list(csv.reader(handle))
-    return table[0], table[1:]
-
-
-def _write(path, header, rows):
-    out = io.StringIO()
-    csv.writer(out, lineterminator="\n").writerows([header, *rows])
-    path.write_text(out.getvalue(), encoding="utf-8")
-    return str(path)
 
 
 def _twice(rows):
     """Each row read twice (its two readings the same: the figures are the sample's)."""
     return [row for row in rows for row in (row, row)]
-
-
-def _units(rows, column):
-    out: dict[str, list] = {}
-    for row in rows:
-        out.setdefault(row[column], []).append(row)
-    return list(out.values())
 
 
 def _cases(samples_dir):
