@@ -536,13 +536,13 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
             "be told from them (readings shown coarser than they scatter, or copied) and is "
             "not evaluated; the reading noise comes from the vertical readings' fits, or the "
             "σ of a reading stated in the settings, or U is withheld.")))
+    noise, noise_origin = _budget_noise(results, faces, corrected, directions,
+                                        float(s.get("reading_noise_arcsec", 0.0) or 0.0))
     rounding = horizontal_rounding(
-        sets, faces, counting,
-        _budget_noise(results, faces, corrected, directions,
-                      float(s.get("reading_noise_arcsec", 0.0) or 0.0)),
+        sets, faces, counting, noise,
         None if repeats is None else tuple(np.asarray(typed[c], dtype=float) for c in (
             "position", "encoder_deg", "ac_x_arcsec")))
-    warnings += rounding_warnings(rounding)
+    warnings += rounding_warnings(rounding, noise_origin)
     stats = error_stats(mean_corrected)
     tol = GRADE_ACCURACY_ARCSEC[grade]
     # the roll left uncorrected: the bound, or 2u of a measured roll
@@ -655,25 +655,40 @@ def _vertical_readings_missing(sets: list[PolygonSetReadings],
     return out
 
 
+#: where the reading noise the budget takes comes from (:func:`_budget_noise`), as the
+#: rounding's warning names it (gui80: a noise of the forward and reverse sets was said to
+#: come "from the vertical readings")
+NOISE_ORIGINS = {
+    "pair": QT_TR_NOOP("from the forward and reverse sets"),
+    "vertical": QT_TR_NOOP("from the vertical readings"),
+    "stated": QT_TR_NOOP("the σ of a reading stated"),
+}
+
+
 def _budget_noise(results, faces: int, corrected: np.ndarray, directions: np.ndarray,
-                  stated: float = 0.0) -> float | None:
+                  stated: float = 0.0) -> tuple[float | None, str]:
     """The reading noise the budget takes where no direction was read twice (the rounding's
-    decision and the budget must judge one figure): the forward/reverse pair's
+    decision and the budget must judge one figure), and where it comes from (a key of
+    :data:`NOISE_ORIGINS`, "" without one): the forward/reverse pair's
     (:func:`reversal_pair_noise`); with one set the σ ``stated`` (″, 0: not stated); else
     the vertical fits' (between the sets where it can: a face's own pyramidal error is no
     noise), else the σ stated; None without one."""
     pair = reversal_pair_noise(corrected, directions)
     if pair is not None:
-        return pair[0]
+        return pair[0], "pair"
     if len(results) == 1 and stated > 0:
-        return stated
+        return stated, "stated"
     fitted = vertical_fits_noise(results, faces)
-    return fitted[0] if fitted is not None and fitted[0] > 0 else (stated or None)
+    if fitted is not None and fitted[0] > 0:
+        return fitted[0], "vertical"
+    return (stated, "stated") if stated else (None, "")
 
 
-def rounding_warnings(rounding) -> list[str]:
+def rounding_warnings(rounding, noise_origin: str = "vertical") -> list[str]:
     """What the rounding of the horizontal readings (models.polygon.rounding) asks the
-    user to know: a step counted in U, a display's step the readings cannot show."""
+    user to know: a step counted in U, a display's step the readings cannot show;
+    ``noise_origin``: where the noise it was compared with comes from
+    (:data:`NOISE_ORIGINS`)."""
     if rounding is None:
         return []
     out: list[str] = []
@@ -701,9 +716,10 @@ def rounding_warnings(rounding) -> list[str]:
                                   "than the step (s = {spread})"), spread=f"{spread:.3g}\"")
                if spread is not None else
                message(QT_TR_NOOP("no direction was read twice: the reading noise "
-                                  "({noise}, from the vertical readings) does not hold its "
-                                  "rounding and is smaller than the step"),
-                       noise=f"{rounding.noise_arcsec:.3g}\"")
+                                  "({noise}, {origin}) does not hold its rounding and is "
+                                  "smaller than the step"),
+                       noise=f"{rounding.noise_arcsec:.3g}\"",
+                       origin=message(NOISE_ORIGINS.get(noise_origin, NOISE_ORIGINS["vertical"])))
                if rounding.noise_arcsec is not None else
                message(QT_TR_NOOP("no direction was read twice, and the vertical readings' "
                                   "noise does not hold it")))

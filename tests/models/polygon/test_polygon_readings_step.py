@@ -292,3 +292,17 @@ def test_a_faces_own_pyramidal_error_does_not_hide_the_encoders_step(tmp_path, c
         h, t = _covered(data, truth)
         hits, total = hits + h, total + t
     assert hits >= 0.93 * total, (hits, total)
+
+
+def test_the_step_s_warning_names_where_the_noise_it_was_judged_against_comes_from(
+        tmp_path, capsys):
+    """One set each way: the noise the encoder's step is judged against is the forward and
+    reverse sets' (the budget's first choice), and the warning said it came "from the
+    vertical readings" (gui80)."""
+    bench = Bench(**QUIET, stop_at="nulled", ac_step_arcsec=0.1, encoder_step_deg=0.0002,
+                  face_pyramidal_sd_arcsec=2.0)
+    data = _analyse(tmp_path, capsys, bench, 500, sets=ONE_EACH_WAY)
+    said = [w for w in data["warnings"] if "step of 0.72\"" in w]
+    assert said, data["warnings"]
+    assert "from the forward and reverse sets) does not hold its rounding" in said[0], said
+    assert "from the vertical readings" not in said[0]
