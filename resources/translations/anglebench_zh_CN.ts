@@ -5815,6 +5815,19 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>{set}：第 {faces} 面（第 {rows} 行）没有垂直读数：有垂直读数的 {read} 个面太少，无法拟合棱锥倾斜。</translation>
     </message>
     <message>
+        <source>from the forward and reverse sets</source>
+        <extracomment>where the reading noise the budget takes comes from (:func:`_budget_noise`), as the rounding&apos;s warning names it (gui80: a noise of the forward and reverse sets was said to come &quot;from the vertical readings&quot;)</extracomment>
+        <translation>由正向和反向测回得出</translation>
+    </message>
+    <message>
+        <source>from the vertical readings</source>
+        <translation>由竖直读数得出</translation>
+    </message>
+    <message>
+        <source>the σ of a reading stated</source>
+        <translation>所给定的单次读数 σ</translation>
+    </message>
+    <message>
         <source>Every encoder reading lies on its face&apos;s nominal angle and the autocollimator read one value throughout: every error is 0 as typed, whatever the encoder&apos;s true errors within its display&apos;s step. No uncertainty can be given unless the certificate details state {resolution}.</source>
         <translation>每个编码器读数都落在其面的标称角上，自准直仪始终读同一值：无论编码器在其显示步距内的真实误差如何，录入的每个误差都是 0。除非证书信息给出{resolution}，否则无法给出不确定度。</translation>
     </message>
@@ -5825,10 +5838,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>autocollimator</source>
         <translation>自准直仪</translation>
-    </message>
-    <message>
-        <source>no direction was read twice: the reading noise ({noise}, from the vertical readings) does not hold its rounding and is smaller than the step</source>
-        <translation>没有方向被测量两次：读数噪声（{noise}，由竖直读数得出）不包含其舍入，且小于该步距</translation>
     </message>
     <message>
         <source>no direction was read twice, and the vertical readings&apos; noise does not hold it</source>
@@ -9173,6 +9182,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>its readings at a face scatter from set to set by less than the step (s = {spread})</source>
         <translation>其在同一面上的读数在各测回间的分散小于该步距（s = {spread}）</translation>
+    </message>
+    <message>
+        <source>no direction was read twice: the reading noise ({noise}, {origin}) does not hold its rounding and is smaller than the step</source>
+        <translation>没有方向被测量两次：读数噪声（{noise}，{origin}）不包含其舍入，且小于该步距</translation>
     </message>
     <message>
         <source>Corrected error {low} … {high} (peak-to-peak {ptp}): half the peak-to-peak is within the grade&apos;s ±{accuracy}, U left out — not a statement of conformity (a certificate decides with U, by the rule in its details)</source>
