@@ -24,6 +24,7 @@ from models.register.schema import CERTIFICATES, LATEST
 from models.register.store import IssueRequest, Register, RegisterError
 from tests.own_readings import own_readings
 from tests.pdf_stand_in import print_stand_ins
+from tests.read_only_file import deny_writing
 
 
 def issue(samples_dir, tmp_path, name, capsys, *extra, **changes):
@@ -386,13 +387,10 @@ def test_a_certificate_whose_record_was_replaced_after_deletion_is_named(tmp_pat
 
 
 def test_a_read_only_sqlite_register_is_listed_and_verified(monkeypatch, capsys):
-    import os
 
     numbers = _three()
     path = register_url().split("///", 1)[1]
-    real = os.access
-    monkeypatch.setattr(os, "access", lambda p, mode, **k: False if (
-        mode == os.W_OK and str(p) in (path, os.path.dirname(path))) else real(p, mode, **k))
+    deny_writing(monkeypatch, path)
     assert main(["register", "list"]) == 0
     assert capsys.readouterr().out.count("\n") == 4  # the header and three
     assert main(["register", "verify"]) == 0

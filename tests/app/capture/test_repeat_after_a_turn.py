@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.app.capture.test_auto_take_polygon_faces import FAST, OUT_OF_VIEW
+from tests.app.capture.test_auto_take_polygon_faces import FAST, _turn
 from tests.app.capture.window_steps import captured_rows, polygon_bench
 from tests.instrument_simulators import AutocollimatorSimulator, ReadoutSimulator
 
@@ -29,16 +29,6 @@ def bench(window):
 def _rows(bench) -> list[tuple]:
     """(face, encoder, AC x) of the rows with an AC x."""
     return captured_rows(bench)
-
-
-def _turn(qtbot, ac, ro, encoder_from, encoder_to, x, out_s=0.8) -> None:
-    ac.positions[0] = OUT_OF_VIEW
-    if ro is not None:
-        ro.positions[0] = ((encoder_from + encoder_to) / 2,)
-    qtbot.wait(int(out_s * 1000))
-    if ro is not None:
-        ro.positions[0] = (encoder_to,)
-    ac.positions[0] = (x, -3.2)
 
 
 @pytest.mark.parametrize("with_encoder", [True, False])

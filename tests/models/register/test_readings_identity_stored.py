@@ -21,6 +21,7 @@ from models.register import schema, store
 from models.register.readings_identity import readings_identity
 from models.register.store import IssueRequest, ReadingsOfAnotherItem, Register, RegisterTampered
 from tests.own_readings import theodolite_project, theodolite_sample_rows
+from tests.read_only_file import deny_writing
 
 ROOT = Path(__file__).parents[3]
 IDENTITY = ("readings_layout", "readings_anchor", "readings_reach")
@@ -269,9 +270,7 @@ def test_a_read_only_register_of_version_8_is_read_as_it_is(tmp_path, monkeypatc
     path = tmp_path / "r.sqlite"
     records, _ = _version_8_register(f"sqlite:///{path}")
     before = path.read_bytes()
-    real = os.access
-    monkeypatch.setattr(os, "access", lambda p, mode, **k: False if (
-        mode == os.W_OK and str(p) in (str(path), str(tmp_path))) else real(p, mode, **k))
+    deny_writing(monkeypatch, path)
     with Register(f"sqlite:///{path}") as register:
         assert register.read_only and register.version == 8
         assert register.problems == [] and register.audit(pdfs=True) == []

@@ -7,7 +7,6 @@ was set otherwise in the database."""
 
 from __future__ import annotations
 
-import os
 import sqlite3
 from pathlib import Path
 
@@ -18,6 +17,7 @@ from models.register import schema, store
 from models.register.readings_identity import readings_key
 from models.register.store import IssueRequest, ReadingsOfAnotherItem, Register, RegisterTampered
 from tests.own_readings import theodolite_project, theodolite_sample_rows
+from tests.read_only_file import deny_writing
 
 
 def _rows(n: int) -> list[list[str]]:
@@ -153,9 +153,7 @@ def test_a_read_only_register_of_version_7_is_read_as_it_is(tmp_path, monkeypatc
         first = _issue(register, "LRA-0800", _rows(0))
     _as_version_7(path)
     before = path.read_bytes()
-    real = os.access
-    monkeypatch.setattr(os, "access", lambda p, mode, **k: False if (
-        mode == os.W_OK and str(p) in (str(path), str(tmp_path))) else real(p, mode, **k))
+    deny_writing(monkeypatch, path)
     with Register(f"sqlite:///{path}") as register:
         assert register.read_only and register.version == 7
         assert register.problems == [] and register.audit(pdfs=True) == []

@@ -26,6 +26,7 @@ from models.register.store import (
     RegisterTampered,
     SameCalibrationIssued,
 )
+from tests.read_only_file import deny_writing
 
 PROJECT = '{"format": "anglebench-project", "schema_version": 1, "workbenches": {}}'
 ISSUED = dt.datetime(2026, 11, 25, 10, 0, tzinfo=dt.timezone.utc)
@@ -190,9 +191,7 @@ def test_a_read_only_register_of_0_8_13_is_read_and_verified_as_it_is(tmp_path, 
     url, _ = _schema_6(tmp_path)
     path = url.split("///", 1)[1]
     digest = hashlib.sha256(Path(path).read_bytes()).hexdigest()
-    real = os.access
-    monkeypatch.setattr(os, "access", lambda p, mode, **k: False if (
-        mode == os.W_OK and str(p) in (path, os.path.dirname(path))) else real(p, mode, **k))
+    deny_writing(monkeypatch, path)
     with _open(url) as register:
         assert register.read_only and register.version == 6
         assert register.problems == [] and register.audit(pdfs=True) == []
