@@ -674,12 +674,18 @@ def summary(result: PositioningResult, printed: dict[str, int] | None = None) ->
         runs += ([", "] if runs else []) + [message(
             QT_TR_NOOP("forward ≥ {runs}") if key == "up" else QT_TR_NOOP("backward ≥ {runs}"),
             runs=n)]
+    n = int(getattr(result.repeats, "n", 1) or 1)  # readings per point
     out = [joined((
         message(QT_TR_NOOP("{targets} targets {first}…{last}, {readings} readings, {directions} "
-                           "(runs per target: {runs})"),
+                           "(runs per target: {runs})") if n == 1 else
+                # the readings and the points they make (gui80: "3 readings" beside the
+                # table's caption "6 used", the averaged points counted as readings)
+                QT_TR_NOOP("{targets} targets {first}…{last}, {readings} readings ({points} "
+                           "points of {n}), {directions} (runs per target: {runs})"),
                 targets=result.positions.size, first=f"{result.positions.min():g}",
                 last=f"{result.positions.max():g}{result.target_symbol}",
-                readings=result.deviations.size, directions=dirs, runs=joined(runs)),
+                readings=result.deviations.size * n, points=result.deviations.size, n=n,
+                directions=dirs, runs=joined(runs)),
         "" if result.minimum_runs_met else
         message(QT_TR_NOOP("   *** fewer than 5 runs: flagged ***"))))]
     keys = ("A", "R", "B", "B_mean", "E", "M") if result.bidirectional else tuple(
