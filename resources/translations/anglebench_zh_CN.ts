@@ -6119,6 +6119,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>没有任何目标位置在同一方向上趋近两次：未评定重复性（R）、准确度（A）和位置分散度 Ps。</translation>
     </message>
     <message>
+        <source>{targets} targets {first}…{last}, {readings} readings ({points} points of {n}), {directions} (runs per target: {runs})</source>
+        <translation>{targets} 个目标位置 {first}…{last}，{readings} 个读数（{points} 个点，每点 {n} 个），{directions}（每个目标位置的测量次数：{runs}）</translation>
+    </message>
+    <message>
         <source>Coverage intervals ({p} %, from the readings without the reference standards&apos; U; a certificate&apos;s include it): </source>
         <translation>包含区间（{p} %，仅由读数得出，未计参考标准器的 U；证书中的区间计入了它）：</translation>
     </message>
