@@ -19,7 +19,8 @@ from models.certificate.metadata import CertificateMetadata
 from models.readings.angles import parse_angle_deg
 from models.register import schema, store
 from models.register.readings_identity import readings_identity
-from models.register.store import IssueRequest, ReadingsOfAnotherItem, Register, RegisterTampered
+from models.register.store import ReadingsOfAnotherItem, Register, RegisterTampered
+from tests.models.register.test_readings_key_stored import _issue
 from tests.own_readings import theodolite_project, theodolite_sample_rows
 from tests.read_only_file import deny_writing
 
@@ -37,16 +38,6 @@ def _rows(n: int) -> list[list[str]]:
 def _decimal(rows, places: int = 8):
     return [[r[0], f"{parse_angle_deg(r[1]):.{places}f}", f"{parse_angle_deg(r[2]):.{places}f}"]
             for r in rows]
-
-
-def _issue(register: Register, serial: str, rows):
-    meta = CertificateMetadata(approver="Dr. Li", item_serial=serial,
-                               calibration_date="2026-11-20",
-                               item_description="Limited-rotation axis",
-                               item_manufacturer="Example Instruments")
-    return register.issue(IssueRequest("theodolite", meta, theodolite_project(rows)),
-                          lambda m: f"%PDF {m.certificate_number}".encode(),
-                          separate_calibration="")[0]
 
 
 def _engine(url: str) -> sa.Engine:
