@@ -1034,6 +1034,20 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
 
     def point_name(self, parsed: ParsedReadings, index: int) -> str:
         return message(QT_TR_NOOP("face {face}"), face=f"{parsed['position'][index]:g}")
+
+    def lone_point_name(self, parsed: ParsedReadings, index: int) -> str:
+        # a set's closure short of its n readings, every face of the set read (the set is
+        # complete without it, so no set is in progress): named as the entry plan names it
+        # (live81: "point 13: 1 of 2 readings" beside "next: set 1: closure on face 1,
+        # reading 2 of 2"); its set's first face again, after another face of the set
+        set_ids = np.nan_to_num(parsed["set"], nan=1.0).astype(int)
+        rows = np.nonzero(set_ids[:index + 1] == set_ids[index])[0]
+        positions = parsed["position"][rows]
+        if positions[-1] == positions[0] and np.any(positions != positions[0]):
+            return message(QT_TR_NOOP("set {set}: closure on face {face}"),
+                           set=int(set_ids[index]), face=f"{positions[0]:g}")
+        return message(QT_TR_NOOP("set {set}: face {face}"), set=int(set_ids[index]),
+                       face=f"{positions[-1]:g}")
     measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
     #: what the DCC says of a column's U where the PDF prints none beside it

@@ -144,3 +144,35 @@ def test_positioning_runs_counted_from_the_order_find_the_run_in_progress(capsys
     short = _json(capsys, "positioning",
                   _write(tmp_path / "c.csv", header, done + _twice(last[:2]) + last[2:3]))
     assert short["incomplete"]["text"] == "run 5: 2 of 26 readings, target 60: reading 1 of 2"
+
+
+def test_a_sets_closure_short_of_its_readings_is_named_as_the_plan_names_it(
+        capsys, samples_dir, tmp_path):
+    """live81: a set read but for its closure's second reading was "point 25: 1 of 2
+    readings" (every face of the set read, no set is in progress: the closure stood alone,
+    counted among the points); it is the set's closure, as the entry plan names it ("set 1:
+    closure on face 1, reading 2 of 2"), in the forward set 1 and the reverse set 2."""
+    header, rows = _rows(samples_dir / "polygon_sample.csv")
+    sets = _units(rows, header.index("set"))
+    assert sets[0][-1][0] == sets[1][-1][0] == "1"  # each set ends on its closure
+    without = _json(capsys, "polygon", _write(tmp_path / "a.csv", header,
+                                              _twice(sets[0][:-1])))
+    partial = _json(capsys, "polygon", _write(tmp_path / "b.csv", header,
+                                              _twice(sets[0])[:-1]))
+    got = partial.pop("incomplete")
+    assert got["text"] == "set 1: closure on face 1: reading 1 of 2"
+    assert got["point"] == {"name": "set 1: closure on face 1", "readings": 1, "expected": 2}
+    assert (got["unit"], got["readings"], got["expected"]) == ("point", 1, 2)
+    assert (got["first_row"], got["last_row"]) == (49, 49)
+    without.pop("incomplete")
+    assert partial == without  # set 1's faces as without the closure
+    got = _json(capsys, "polygon", _write(tmp_path / "c.csv", header,
+                                          _twice(sets[0]) + _twice(sets[1])[:-1]))["incomplete"]
+    assert got["text"] == "set 2: closure on face 1: reading 1 of 2"
+    assert (got["first_row"], got["last_row"]) == (99, 99)
+    thrice = [row for row in sets[0] for row in (row, row, row)]
+    assert main(["analyze", "polygon", _write(tmp_path / "d.csv", header, thrice[:-1]),
+                 "--json", "--readings-per-point", "3"]) == 0
+    got = json.loads(capsys.readouterr().out)["incomplete"]
+    assert got["text"] == "set 1: closure on face 1: reading 2 of 3"
+    assert (got["first_row"], got["last_row"]) == (73, 74)
