@@ -138,6 +138,10 @@ def test_the_closure_short_of_its_second_reading_is_named_as_the_plan_names_it(
         "In progress: set 1: closure on face 1: reading 1 of 2 (rows 13–13); its readings "
         "enter no figure until it is complete")
     assert "point 7" not in summary.toPlainText() + view.warnings.text()
+    # its closure is being read, not missing (main: "⚠ Set 1: no closure reading (the row
+    # back on its start face): drift not checked." beside it)
+    assert "no closure reading" not in view.warnings.text()
+    assert "⚠ In progress: set 1: closure on face 1: reading 1 of 2" in view.warnings.text()
     assert str(bench.result.incomplete.text()) == "set 1: closure on face 1: reading 1 of 2"
     assert bench.result.mean_corrected_arcsec.size == FACES  # set 1's faces keep their result
     assert view.readings_label.text() == "Readings — 13 taken, 12 used"
@@ -157,6 +161,7 @@ def test_the_closure_short_of_its_second_reading_is_named_as_the_plan_names_it(
     assert view.next_label.text() == "next: set 2: closure on face 1, reading 2 of 2 (27/28)"
     assert summary.toPlainText().startswith(
         "In progress: set 2: closure on face 1: reading 1 of 2 (rows 27–27)")
+    assert "no closure reading" not in view.warnings.text()
     assert bench.result.incomplete.as_dict()["point"] == {
         "name": "set 2: closure on face 1", "readings": 1, "expected": 2}
     assert view.readings_label.text() == "Readings — 27 taken, 26 used"
