@@ -1121,7 +1121,8 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
     def split_incomplete(self, parsed, settings):
         return split_incomplete(parsed, settings)
 
-    def analyze_as_far_as_it_goes(self, parsed, settings):
+    def analyze_as_far_as_it_goes(self, parsed: ParsedReadings,
+                                  settings: Mapping[str, Any]) -> PolygonResult:
         result = super().analyze_as_far_as_it_goes(parsed, settings)
         unit = getattr(result, "incomplete", None)
         if unit is not None and getattr(unit.point, "template", None) == CLOSURE_POINT:
