@@ -180,3 +180,18 @@ def test_a_sets_closure_short_of_its_readings_is_named_as_the_plan_names_it(
     got = json.loads(capsys.readouterr().out)["incomplete"]
     assert got["text"] == "set 1: closure on face 1: reading 2 of 3"
     assert (got["first_row"], got["last_row"]) == (73, 74)
+
+
+def test_a_lone_point_of_a_polygon_set_is_named_by_its_set_and_face(capsys, samples_dir,
+                                                                    tmp_path):
+    """live81: a point short of its readings that no set in progress takes (one partial set
+    with the face count "from the readings": nothing says the set is short) is named by its
+    set and face, not counted ("point 4: 1 of 2 readings"), in the reason the set is
+    refused."""
+    header, rows = _rows(samples_dir / "polygon_sample.csv")
+    sets = _units(rows, header.index("set"))
+    taken = _twice(sets[0][:3]) + [sets[0][3]]
+    assert main(["analyze", "polygon", _write(tmp_path / "p.csv", header, taken),
+                 "--readings-per-point", "2"]) == 2
+    err = capsys.readouterr().err
+    assert "(in progress, left out: set 1: face 4: reading 1 of 2)" in err, err
