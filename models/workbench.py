@@ -191,6 +191,14 @@ class Workbench(ABC, Generic[ResultT]):
         short of its n readings; by default its sheet row."""
         return message(QT_TR_NOOP("row {row}"), row=int(parsed.row_index[index]) + 1)
 
+    def lone_point_name(self, parsed: ParsedReadings, index: int) -> str:
+        """What point reading ``index`` is when that point, short of its n readings, is in
+        progress on its own (no unit of the workbench is: a polygon set's closure, read
+        after every face of the set), named with the unit it belongs to ("set 1: closure
+        on face 1"): the progress line says "set 1: closure on face 1: reading 1 of 2".
+        "" (the default): the point is counted ("point 8: 1 of 2 readings")."""
+        return ""
+
     def split_in_points(self, parsed: ParsedReadings, settings: Mapping[str, Any]
                         ) -> tuple[ParsedReadings, IncompleteUnit | None]:
         """:meth:`split_incomplete` with n readings per point: the units are found among
@@ -245,8 +253,9 @@ class Workbench(ABC, Generic[ResultT]):
         keep = np.ones(parsed.n, dtype=bool)
         keep[rows] = False
         sheet = parsed.row_index.astype(int) + 1
-        named = (self.point_name(parsed, int(groups[last][0])) if short and unit.unit != "point"
-                 else "")
+        named = "" if not short else (self.point_name(parsed, int(groups[last][0]))
+                                      if unit.unit != "point" else
+                                      self.lone_point_name(parsed, int(groups[last][0])))
         return subset(parsed, keep), dataclasses.replace(
             unit, readings=counted, first_row=int(sheet[rows[0]]), last_row=int(sheet[rows[-1]]),
             rows=tuple(rows), point=named, point_readings=short if named else 0, per_point=n)

@@ -8,7 +8,7 @@ import logging
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, QRunnable, QTimer, Signal
@@ -137,6 +137,17 @@ def _without_waiting_rows(parsed: ParsedReadings, sheet: ReadingsSheet,
         return all(not sheet.text(row, c).strip() for c in columns)
 
     return without_waiting_rows(parsed, reading_keys, blank_reading, planned)[0]
+
+
+class AwaitedColumn(NamedTuple):
+    """A column the analysis waits for (:meth:`WorkbenchPresenter.awaited_column`): its
+    ``key``, the sentence that says why there is no result and where its values come from
+    (translated), and the readings' caption's few words of what the readings wait for
+    ("waiting for the face deviations", translated)."""
+
+    key: str
+    reason: str
+    waiting: str
 
 
 @dataclass(frozen=True)
@@ -1224,10 +1235,18 @@ class WorkbenchPresenter(QObject):
         return row
 
     @staticmethod
-    def _readings_count(parsed: ParsedReadings, result: Any) -> str:
+    def _readings_count(parsed: ParsedReadings, result: Any,
+                        awaiting: tuple[int, str] | None = None) -> str:
         """"Readings — 7 used", or with a run in progress "Readings — 7 taken, 4 used": the
         figures' readings counted, not those of the run whose readings enter no figure yet
-        (day review 74 F9: "7 used" while the summary said run 2's 3 enter no figure)."""
+        (day review 74 F9: "7 used" while the summary said run 2's 3 enter no figure).
+        ``awaiting``: the rows whose only want is the column the analysis waits for
+        (:meth:`awaited_column`) and what they wait for: "Readings — 24 taken, waiting for
+        the face deviations" (live81: "0 used" beside a table full of readings read as
+        "my readings were thrown away")."""
+        if awaiting is not None and awaiting[0]:
+            return tr("Readings — {taken} taken, {waiting}").format(
+                taken=parsed.n + awaiting[0], waiting=awaiting[1])
         incomplete = getattr(result, "incomplete", None)
         waiting = len(incomplete.rows) if incomplete is not None else 0
         # and the readings the analysis left out (positioning's far beyond the limit: live76 F7)
@@ -1237,7 +1256,7 @@ class WorkbenchPresenter(QObject):
                 taken=parsed.n, used=parsed.n - waiting)
         return tr("Readings — {used} used").format(used=parsed.n)
 
-    def awaited_column(self, sheet: ReadingsSheet) -> tuple[str, str] | None:
+    def awaited_column(self, sheet: ReadingsSheet) -> AwaitedColumn | None:
         """A column the analysis cannot go without that no row of ``sheet`` has filled yet,
         with the one sentence (translated) that says what it waits for and where it comes
         from: its blank cells are then not bad cells (not red, not counted as such) and the
@@ -1247,24 +1266,30 @@ class WorkbenchPresenter(QObject):
         return None
 
     def _awaited(self, parsed: ParsedReadings, error: str,
-                 result: Any) -> tuple[list[Any], str]:
+                 result: Any) -> tuple[list[Any], str, tuple[int, str] | None]:
         """The bad cells of ``parsed`` less the blank ones of the column the analysis waits
-        for (:meth:`awaited_column`), marked so in the table; and ``error``, with no result
-        the sentence that says what it waits for."""
+        for (:meth:`awaited_column`), marked so in the table; ``error``, with no result
+        the sentence that says what it waits for; and (the rows that want nothing but that
+        column, what they wait for), for the readings' caption (None: none awaited)."""
         sheet = self.result_sheet
         awaited = None if isinstance(sheet.rows, NumericRows) else self.awaited_column(sheet)
         self.table_model.set_awaited_columns(
-            {} if awaited is None else {sheet.column_index(awaited[0]): awaited[1]})
+            {} if awaited is None else {sheet.column_index(awaited.key): awaited.reason})
         if awaited is None:
-            return list(parsed.errors), error
-        errors = [e for e in parsed.errors
-                  if not (e.column_key == awaited[0] and not str(e.text).strip())]
-        return errors, (awaited[1] if result is None else error)
+            return list(parsed.errors), error, None
+
+        def blank_awaited(e: Any) -> bool:
+            return e.column_key == awaited.key and not str(e.text).strip()
+
+        errors = [e for e in parsed.errors if not blank_awaited(e)]
+        wanting = {e.row for e in parsed.errors if blank_awaited(e)} - {e.row for e in errors}
+        return (errors, (awaited.reason if result is None else error),
+                (len(wanting), awaited.waiting))
 
     def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None,
                 shown: ShownAsPrinted | None = None, refused: str = "") -> None:
         # the blank cells of a column the analysis waits for: one sentence, not bad cells
-        bad_cells, error = self._awaited(parsed, error, result)
+        bad_cells, error, awaiting = self._awaited(parsed, error, result)
         self.parsed = parsed
         self.display = display
         self.result = result
@@ -1289,7 +1314,7 @@ class WorkbenchPresenter(QObject):
         if self.plan_problem:
             input_warnings.append(tr("Entry plan: {reason}").format(
                 reason=translated(self.plan_problem)))
-        self.view.set_readings_caption(self._readings_count(parsed, result) + (
+        self.view.set_readings_caption(self._readings_count(parsed, result, awaiting) + (
                 tr(", {cells} bad cell(s)").format(cells=len(bad_cells))
                                              if bad_cells else ""))
         self.view.set_next_row(next_text)

@@ -35,6 +35,7 @@ from models.polygon.indicative_figures import (
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
+    NO_CLOSURE_READING,
     SHORT_FORM_COEFFICIENT,
     PolygonResult,
     PolygonSetReadings,
@@ -219,6 +220,11 @@ def closure_limit_arcsec(grade: int, table: str = "") -> float:
     if grade - 1 < len(values):
         return values[grade - 1]
     return GRADE_ACCURACY_ARCSEC[grade] / 2.0
+
+
+#: a set's closure as the entry plan names it (models/readings/entry_plan.py), and as the
+#: progress line names it when it is short of its n readings (Polygon.lone_point_name)
+CLOSURE_POINT = QT_TR_NOOP("set {set}: closure on face {face}")
 
 
 def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
@@ -1034,6 +1040,19 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
 
     def point_name(self, parsed: ParsedReadings, index: int) -> str:
         return message(QT_TR_NOOP("face {face}"), face=f"{parsed['position'][index]:g}")
+
+    def lone_point_name(self, parsed: ParsedReadings, index: int) -> str:
+        # a set's closure short of its n readings, every face of the set read (the set is
+        # complete without it, so no set is in progress): named as the entry plan names it
+        # (live81: "point 13: 1 of 2 readings" beside "next: set 1: closure on face 1,
+        # reading 2 of 2"); its set's first face again, after another face of the set
+        set_ids = np.nan_to_num(parsed["set"], nan=1.0).astype(int)
+        rows = np.nonzero(set_ids[:index + 1] == set_ids[index])[0]
+        positions = parsed["position"][rows]
+        if positions[-1] == positions[0] and np.any(positions != positions[0]):
+            return message(CLOSURE_POINT, set=int(set_ids[index]), face=f"{positions[0]:g}")
+        return message(QT_TR_NOOP("set {set}: face {face}"), set=int(set_ids[index]),
+                       face=f"{positions[-1]:g}")
     measurand_standards = MEASURAND_STANDARDS
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
     #: what the DCC says of a column's U where the PDF prints none beside it
@@ -1101,6 +1120,20 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
 
     def split_incomplete(self, parsed, settings):
         return split_incomplete(parsed, settings)
+
+    def analyze_as_far_as_it_goes(self, parsed: ParsedReadings,
+                                  settings: Mapping[str, Any]) -> PolygonResult:
+        result = super().analyze_as_far_as_it_goes(parsed, settings)
+        unit = getattr(result, "incomplete", None)
+        if unit is not None and getattr(unit.point, "template", None) == CLOSURE_POINT:
+            # the last set's closure in progress (its first reading taken): not "Set 1: no
+            # closure reading (the row back on its start face)" beside "In progress: set 1:
+            # closure on face 1: reading 1 of 2" (live81); its figures say "closure not
+            # measured" until it is complete
+            unread = [w for w in result.sets[-1].warnings
+                      if getattr(w, "template", None) == NO_CLOSURE_READING]
+            result.warnings[:] = [w for w in result.warnings if w not in unread]
+        return result
 
     plan_reading_keys = ("encoder_deg", "ac_x_arcsec", "ac_y_arcsec")
 

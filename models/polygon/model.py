@@ -178,6 +178,11 @@ def pyramidal_y_short_arcsec(theta_deg, psi_arcsec: float, omega_deg: float):
     return psi_arcsec * (np.cos(om - th) - math.cos(om))
 
 
+#: a set's warning when it ends without its closure reading
+NO_CLOSURE_READING = QT_TR_NOOP("{set}: no closure reading (the row back on its start face): "
+                                "drift not checked.")
+
+
 def set_name(label: str) -> Message:
     """ "Set 2" for the set labelled "set 2", as a warning begins with it."""
     return message(QT_TR_NOOP("Set {number}"), number=label.split()[-1])
@@ -411,9 +416,7 @@ def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
                                "is invalid; repeat it."), set=set_name(s.label),
                     drift=f"{drift:+.2f}\"", limit=f"{closure_limit_arcsec:g}\""))
         else:
-            warnings.append(message(QT_TR_NOOP("{set}: no closure reading (the row back on its "
-                                               "start face): drift not checked."),
-                                    set=set_name(s.label)))
+            warnings.append(message(NO_CLOSURE_READING, set=set_name(s.label)))
         ac_y = np.asarray(s.ac_y_arcsec, dtype=float)[order]
         tilt = None
         pyramidal = np.zeros(n)

@@ -48,14 +48,19 @@ class IncompleteUnit:
     last_row: int
     rows: tuple[int, ...] = ()
     #: with n readings per point, the unit's last point when it is short of them (it is not
-    #: counted in ``readings``): what it is ("face 3"), its readings taken, and n
+    #: counted in ``readings``): what it is ("face 3"), its readings taken, and n; a unit
+    #: "point" (that point in progress on its own) named so when its workbench names it
     point: str = ""
     point_readings: int = 0
     per_point: int = 1
 
     def text(self) -> Message:
         """"set 2: 3 of 24 faces"; with its last point short of its n readings "set 2: 2 of
-        24 faces, face 3: reading 1 of 2"."""
+        24 faces, face 3: reading 1 of 2"; that point in progress on its own, named (a
+        polygon set's closure): "set 1: closure on face 1: reading 1 of 2"."""
+        if self.unit == "point" and self.point:  # the point on its own, named with its unit
+            return message(QT_TR_NOOP("{point}: reading {readings} of {n}"), point=self.point,
+                           readings=self.point_readings, n=self.per_point)
         number = int(self.number) if float(self.number).is_integer() else self.number
         unit = message(UNIT_WORDS[self.unit][0], number=f"{number:g}"
                        if isinstance(number, float) else number, readings=self.readings,

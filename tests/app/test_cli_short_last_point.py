@@ -144,3 +144,54 @@ def test_positioning_runs_counted_from_the_order_find_the_run_in_progress(capsys
     short = _json(capsys, "positioning",
                   _write(tmp_path / "c.csv", header, done + _twice(last[:2]) + last[2:3]))
     assert short["incomplete"]["text"] == "run 5: 2 of 26 readings, target 60: reading 1 of 2"
+
+
+def test_a_sets_closure_short_of_its_readings_is_named_as_the_plan_names_it(
+        capsys, samples_dir, tmp_path):
+    """live81: a set read but for its closure's second reading was "point 25: 1 of 2
+    readings" (every face of the set read, no set is in progress: the closure stood alone,
+    counted among the points); it is the set's closure, as the entry plan names it ("set 1:
+    closure on face 1, reading 2 of 2"), in the forward set 1 and the reverse set 2."""
+    header, rows = _rows(samples_dir / "polygon_sample.csv")
+    sets = _units(rows, header.index("set"))
+    assert sets[0][-1][0] == sets[1][-1][0] == "1"  # each set ends on its closure
+    without = _json(capsys, "polygon", _write(tmp_path / "a.csv", header,
+                                              _twice(sets[0][:-1])))
+    partial = _json(capsys, "polygon", _write(tmp_path / "b.csv", header,
+                                              _twice(sets[0])[:-1]))
+    got = partial.pop("incomplete")
+    assert got["text"] == "set 1: closure on face 1: reading 1 of 2"
+    assert got["point"] == {"name": "set 1: closure on face 1", "readings": 1, "expected": 2}
+    assert (got["unit"], got["readings"], got["expected"]) == ("point", 1, 2)
+    assert (got["first_row"], got["last_row"]) == (49, 49)
+    without.pop("incomplete")
+    # set 1's faces as without the closure; but its closure is being read, not missing
+    unread = "Set 1: no closure reading (the row back on its start face): drift not checked."
+    assert without["warnings"][0] == unread and unread not in partial["warnings"]
+    without["warnings"].remove(unread)
+    assert partial == without
+    got = _json(capsys, "polygon", _write(tmp_path / "c.csv", header,
+                                          _twice(sets[0]) + _twice(sets[1])[:-1]))["incomplete"]
+    assert got["text"] == "set 2: closure on face 1: reading 1 of 2"
+    assert (got["first_row"], got["last_row"]) == (99, 99)
+    thrice = [row for row in sets[0] for row in (row, row, row)]
+    assert main(["analyze", "polygon", _write(tmp_path / "d.csv", header, thrice[:-1]),
+                 "--json", "--readings-per-point", "3"]) == 0
+    got = json.loads(capsys.readouterr().out)["incomplete"]
+    assert got["text"] == "set 1: closure on face 1: reading 2 of 3"
+    assert (got["first_row"], got["last_row"]) == (73, 74)
+
+
+def test_a_lone_point_of_a_polygon_set_is_named_by_its_set_and_face(capsys, samples_dir,
+                                                                    tmp_path):
+    """live81: a point short of its readings that no set in progress takes (one partial set
+    with the face count "from the readings": nothing says the set is short) is named by its
+    set and face, not counted ("point 4: 1 of 2 readings"), in the reason the set is
+    refused."""
+    header, rows = _rows(samples_dir / "polygon_sample.csv")
+    sets = _units(rows, header.index("set"))
+    taken = _twice(sets[0][:3]) + [sets[0][3]]
+    assert main(["analyze", "polygon", _write(tmp_path / "p.csv", header, taken),
+                 "--readings-per-point", "2"]) == 2
+    err = capsys.readouterr().err
+    assert "(in progress, left out: set 1: face 4: reading 1 of 2)" in err, err

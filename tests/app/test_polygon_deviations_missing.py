@@ -58,7 +58,8 @@ def test_blank_deviations_are_said_once_not_marked_bad_in_every_row(bench, tmp_p
     view = bench.view
     assert bench.result is None
     assert view.summary.toPlainText() == f"No result: {MISSING}"
-    assert view.readings_label.text() == "Readings — 0 used"  # no "24 bad cell(s)"
+    # no "24 bad cell(s)"; and not "0 used" beside 24 readings (live81)
+    assert view.readings_label.text() == "Readings — 24 taken, waiting for the face deviations"
     assert view.warnings.text() == ""  # no "24 cell(s) cannot be read … red cell"
     assert _marks(bench, "polygon_dev_arcsec") == [(LEFT_OUT_BRUSH, MISSING)] * 24
     dev = bench.sheet.column_index("polygon_dev_arcsec")
@@ -71,7 +72,8 @@ def test_blank_deviations_are_said_once_not_marked_bad_in_every_row(bench, tmp_p
     model.setData(model.index(4, ac_x), "0,3x")
     bench.refresh()
     assert _marks(bench, "ac_x_arcsec")[4][0] == INVALID_BRUSH
-    assert view.readings_label.text() == "Readings — 0 used, 1 bad cell(s)"
+    assert view.readings_label.text() == \
+        "Readings — 23 taken, waiting for the face deviations, 1 bad cell(s)"
     assert view.warnings.text() == ("⚠ 1 cell(s) cannot be read (row 5); those rows are left "
                                     "out. Point at a red cell to see why.")
     assert view.summary.toPlainText() == f"No result: {MISSING}"
@@ -82,7 +84,8 @@ def test_blank_deviations_are_said_once_not_marked_bad_in_every_row(bench, tmp_p
     marks = _marks(bench, "polygon_dev_arcsec")
     assert marks[6][0] == INVALID_BRUSH and "0.1.2" not in MISSING
     assert marks[:6] == [(LEFT_OUT_BRUSH, MISSING)] * 6
-    assert view.readings_label.text() == "Readings — 0 used, 1 bad cell(s)"
+    assert view.readings_label.text() == \
+        "Readings — 23 taken, waiting for the face deviations, 1 bad cell(s)"
     model.setData(model.index(6, dev), "")
 
     # the certificate loaded: every row gets its face's deviation, and the result comes

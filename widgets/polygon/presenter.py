@@ -17,7 +17,7 @@ from models.readings.tabular_import import TableImportError
 from widgets.i18n import declared, explained, tr, translated
 from widgets.polygon.view import PolygonView
 from widgets.table_commands import KeptValueCommand
-from widgets.workbench_presenter import WorkbenchPresenter
+from widgets.workbench_presenter import AwaitedColumn, WorkbenchPresenter
 
 
 def _face_list(faces: list[int]) -> str:
@@ -77,7 +77,7 @@ class PolygonPresenter(WorkbenchPresenter):
         if not result.valid:
             self.view.append_to_readings_caption(tr(" — RUN INVALID (closure failed)"))
 
-    def awaited_column(self, sheet: ReadingsSheet) -> tuple[str, str] | None:
+    def awaited_column(self, sheet: ReadingsSheet) -> AwaitedColumn | None:
         """The deviation column while no row has a face deviation that reads and no
         certificate is kept by face (:attr:`face_deviations`), with readings in the table:
         every row needs its face's deviation from the polygon's certificate (SPEC §2,
@@ -100,14 +100,17 @@ class PolygonPresenter(WorkbenchPresenter):
                 except ValueError:
                     continue  # typed wrong: that cell stays red, the column still awaited
                 return None
-        return "polygon_dev_arcsec", tr(
+        return AwaitedColumn("polygon_dev_arcsec", tr(
             "the polygon's face deviations are missing: load its certificate (“Load polygon "
             "certificate…”, at the end of the set-up) or type them in the {column} column. A "
             "blank one is not taken as 0; the readings are kept.").format(
                 # its header as the table shows it ("棱体偏差 [\"]"): the title alone has no
                 # translation, and the Chinese sentence named an English "polygon dev" column
                 # the table has not (gui80)
-                column=declared(column.header))
+                column=declared(column.header)),
+            # the readings' caption: "Readings — 24 taken, waiting for the face deviations"
+            # (live81: "0 used" beside the readings read as readings thrown away)
+            tr("waiting for the face deviations"))
 
     def load_certificate_dialog(self) -> None:
         from models.certificate.metadata import MetadataError
