@@ -179,21 +179,52 @@ def branch_factors(r: np.ndarray, c: np.ndarray, crits: list[float], ours: tuple
     return np.array(up), np.array(low)
 
 
-def narrowest_study(figure: str, m: int, runs: int, rng: np.random.Generator):
+def grid_cases(figure: str, m: int):
+    """(curve, pattern, K, μ, σ) of every σ pattern of the grid."""
+    cases = ([("-", p) for p in ("one", "two", "ramp")] if figure == "R_up" else
+             [(c, p) for c in ("flat", "crest") for p in ("one", "two", "ramp")]
+             + [("trough", "quiet")])
+    for curve, pattern in cases:
+        mu = np.zeros(m)
+        if curve in ("crest", "trough"):
+            mu[m // 2] = -CREST
+        if curve == "crest":
+            mu[0] = CREST
+        for k in NARROW_KS:
+            yield curve, pattern, k, mu, pattern_sigmas(pattern, k, m, curve == "crest")
+
+
+def case_draws(figure: str, s: np.ndarray, z: np.ndarray, mu: np.ndarray, sigma: np.ndarray):
+    """(r, C, measured, truth, s, x̄) of a case's draws: an upper end f misses where f < r,
+    a lower end where it is above r."""
+    sd = s * sigma
+    if figure == "R_up":
+        truth, measured = float(sigma.max()), sd.max(axis=1)
+        return truth / measured, cochran_c(sd), measured, truth, sd, None
+    xbar = mu + z * sigma
+    truth = float(np.max(mu + 2.0 * sigma) - np.min(mu - 2.0 * sigma))
+    return (band_root(xbar, sd, truth), cochran_c(sd), band_span(xbar, sd, 2.0), truth, sd,
+            xbar)
+
+
+def ours_factors(figure: str, m: int, runs: int) -> tuple[float, float]:
+    """The factors of our upper and lower ends (models.uncertainty.figure_intervals)."""
+    nu, root = runs - 1, math.sqrt(runs)
+    if figure == "R_up":
+        return (math.sqrt(nu / chdtri(nu, 1.0 - TAIL)),
+                math.sqrt(nu / chdtri(nu, 1.0 - (1.0 - TAIL) ** (1.0 / m))))
+    cut = 0.5 * (1.0 - (1.0 - TAIL) ** (1.0 / m))
+    return (float(nctdtrit(nu, 2.0 * root, 1.0 - TAIL) / root),
+            float(nctdtrit(nu, 2.0 * root, cut) / root))
+
+
+def narrowest_study(figure: str, m: int, runs: int, rng: np.random.Generator,
+                    draws: int | None = None):
     """Ours, the critical values, each family's factors by level, ours' worst misses
     and the evaluation cases' draws."""
     nu, root = runs - 1, math.sqrt(runs)
-    draws = NARROW_N if figure == "R_up" else NARROW_A_N
-    if figure == "R_up":
-        ours = (math.sqrt(nu / chdtri(nu, 1.0 - TAIL)),
-                math.sqrt(nu / chdtri(nu, 1.0 - (1.0 - TAIL) ** (1.0 / m))))
-        cases = [("-", p) for p in ("one", "two", "ramp")]
-    else:
-        cut = 0.5 * (1.0 - (1.0 - TAIL) ** (1.0 / m))
-        ours = (float(nctdtrit(nu, 2.0 * root, 1.0 - TAIL) / root),
-                float(nctdtrit(nu, 2.0 * root, cut) / root))
-        cases = ([(c, p) for c in ("flat", "crest") for p in ("one", "two", "ramp")]
-                 + [("trough", "quiet")])
+    draws = draws or (NARROW_N if figure == "R_up" else NARROW_A_N)
+    ours = ours_factors(figure, m, runs)
     alike = cochran_c(np.sqrt(rng.chisquare(nu, (draws, m)) / nu))
     crits = [math.inf if level == 0 else float(np.quantile(alike, 1.0 - level))
              for level in LEVELS]
@@ -204,39 +235,23 @@ def narrowest_study(figure: str, m: int, runs: int, rng: np.random.Generator):
     noise = math.sqrt(TAIL * (1.0 - TAIL) / draws)
     worst = [0.0, 0.0]
     kept = {}
-    for curve, pattern in cases:
-        mu = np.zeros(m)
-        if curve in ("crest", "trough"):
-            mu[m // 2] = -CREST
-        if curve == "crest":
-            mu[0] = CREST
-        for k in NARROW_KS:
-            sigma = pattern_sigmas(pattern, k, m, curve == "crest")
-            sd = s * sigma
-            if figure == "R_up":
-                truth, measured = float(sigma.max()), sd.max(axis=1)
-                r, xbar = truth / measured, None
-            else:
-                xbar = mu + z * sigma
-                truth = float(np.max(mu + 2.0 * sigma) - np.min(mu - 2.0 * sigma))
-                measured, r = band_span(xbar, sd, 2.0), band_root(xbar, sd, truth)
-            c = cochran_c(sd)
-            worst = [max(worst[0], float(np.mean(ours[0] < r))),
-                     max(worst[1], float(np.mean(ours[1] > r)))]
-            own = (int(np.sum(ours[0] < r)), int(np.sum(ours[1] > r)))
-            for name, k_max, margin in FAMILIES:
-                if k > k_max:
-                    continue
-                up, low = branch_factors(r, c, crits, ours,
-                                         math.floor((TAIL - margin * noise) * draws), own)
-                if pattern == "quiet":  # the lower end's case: the upper end's is "one"
-                    up = np.full(len(LEVELS), -math.inf)
-                need[name][0] = np.maximum(need[name][0], up)
-                need[name][1] = np.minimum(need[name][1], low)
-            if pattern == "one" and k in (1.0, 2.0, 3.0):
-                spread = 2.0 * float(ndtri(1.0 - TAIL)) * float(np.std(measured - truth, ddof=1))
-                kept[(curve, k)] = (spread, c[:EVAL_N], sd[:EVAL_N],
-                                    None if xbar is None else xbar[:EVAL_N])
+    for curve, pattern, k, mu, sigma in grid_cases(figure, m):
+        r, c, measured, truth, sd, xbar = case_draws(figure, s, z, mu, sigma)
+        own = (int(np.sum(ours[0] < r)), int(np.sum(ours[1] > r)))
+        worst = [max(worst[0], own[0] / draws), max(worst[1], own[1] / draws)]
+        for name, k_max, margin in FAMILIES:
+            if k > k_max:
+                continue
+            up, low = branch_factors(r, c, crits, ours,
+                                     math.floor((TAIL - margin * noise) * draws), own)
+            if pattern == "quiet":  # the lower end's case: the upper end's is "one"
+                up = np.full(len(LEVELS), -math.inf)
+            need[name][0] = np.maximum(need[name][0], up)
+            need[name][1] = np.minimum(need[name][1], low)
+        if pattern == "one" and k in (1.0, 2.0, 3.0):
+            spread = 2.0 * float(ndtri(1.0 - TAIL)) * float(np.std(measured - truth, ddof=1))
+            kept[(curve, k)] = (spread, c[:EVAL_N], sd[:EVAL_N],
+                                None if xbar is None else xbar[:EVAL_N])
     return ours, crits, need, worst, kept
 
 
@@ -244,17 +259,17 @@ def end_values(figure: str, sd: np.ndarray, xbar: np.ndarray | None, f) -> np.nd
     return np.asarray(f) * sd.max(axis=1) if figure == "R_up" else band_span(xbar, sd, f)
 
 
-def narrowest_report(figure: str, m: int, runs: int, rng: np.random.Generator,
-                     out: TextIO) -> None:
-    """Each family's narrowest design per end, and the widths of ours and of it at
-    alike σ and at one target's σ × 2 and × 3, ÷ the oracle spread."""
-    ours, crits, need, worst, kept = narrowest_study(figure, m, runs, rng)
-    out.write(f"{figure}, {m} targets, {runs} runs: ours x̄/max ± {ours[0]:.3f} / "
-              f"{ours[1]:.3f} s; its worst miss over the grid above {worst[0]:.4f}, below "
-              f"{worst[1]:.4f} (tail {TAIL:.5f})\n")
+def narrowest_widths(figure: str, m: int, runs: int, rng: np.random.Generator,
+                     draws: int | None = None):
+    """(ours, ours' worst misses, designs, widths): per curve, each family's narrowest
+    design, per end (factor, critical value, level), and per case (one target's σ × 1,
+    2, 3) ours ÷ the oracle spread and each family's narrowest ÷ it."""
+    ours, crits, need, worst, kept = narrowest_study(figure, m, runs, rng, draws)
+    designs: dict[str, dict[str, list[tuple[float, float, float]]]] = {}
+    widths: dict[str, list[tuple[str, float, dict[str, float]]]] = {}
     for curve in sorted({c for c, _ in kept}):
         _, c, sd, xbar = kept[(curve, 1.0)]
-        designs = {}
+        designs[curve] = {}
         for name, _, _ in FAMILIES:
             ends = []
             for side in (0, 1):
@@ -268,9 +283,8 @@ def narrowest_report(figure: str, m: int, runs: int, rng: np.random.Generator,
                     if (v < value) if side == 0 else (v > value):
                         value, best = v, (factor, crit, level)
                 ends.append(best)
-            designs[name] = ends
-            out.write(f"  {curve}, narrowest holding {name}: upper {ends[0][0]:.3f} at level "
-                      f"{ends[0][2]:g}, lower {ends[1][0]:.3f} at level {ends[1][2]:g}\n")
+            designs[curve][name] = ends
+        widths[curve] = []
         for k, label in EVAL_CASES:
             spread, c, sd, xbar = kept[(curve, k)]
 
@@ -278,58 +292,80 @@ def narrowest_report(figure: str, m: int, runs: int, rng: np.random.Generator,
                 return float(np.mean(end_values(figure, sd, xbar, up)
                                      - end_values(figure, sd, xbar, low)))
 
-            w_ours = width(*ours)
-            cells = [f"    {label:8s} ours/oracle {w_ours / spread:.2f}"]
-            for name, (u, low) in designs.items():
-                w = width(np.where(c > u[1], ours[0], u[0]), np.where(c > low[1], ours[1], low[0]))
-                cells.append(f"{name}: narrowest/oracle {w / spread:.2f}, ours/narrowest "
-                             f"{w_ours / w:.2f}")
-            out.write(" | ".join(cells) + "\n")
-        if figure == "R_up" and runs == 5:
-            for line in verify_r_up(m, runs, ours, {name: designs[name] for name in (
-                    "every K", "every K, 2 sd below")}, rng):
-                out.write(f"  {line}\n")
+            widths[curve].append((label, width(*ours) / spread, {
+                name: width(np.where(c > u[1], ours[0], u[0]),
+                            np.where(c > low[1], ours[1], low[0])) / spread
+                for name, (u, low) in designs[curve].items()}))
+    return ours, worst, designs, widths
 
 
-def verify_r_up(m: int, runs: int, ours: tuple[float, float], designs: dict,
-                rng: np.random.Generator) -> list[str]:
-    """The worst miss of each end of R↑'s narrowest designs over the grid again, on
-    VERIFY_N fresh draws (the search chose each on the draws that it then passed)."""
+def narrowest_report(figure: str, m: int, runs: int, rng: np.random.Generator,
+                     out: TextIO, verify: bool) -> None:
+    """Each family's narrowest design per end, and the widths of ours and of it at
+    alike σ and at one target's σ × 2 and × 3, ÷ the oracle spread; with ``verify``,
+    the every-K designs' misses again on fresh draws."""
+    ours, worst, designs, widths = narrowest_widths(figure, m, runs, rng)
+    out.write(f"{figure}, {m} targets, {runs} runs: ours x̄/max ± {ours[0]:.3f} / "
+              f"{ours[1]:.3f} s; its worst miss over the grid above {worst[0]:.4f}, below "
+              f"{worst[1]:.4f} (tail {TAIL:.5f})\n")
+    for curve, by_family in designs.items():
+        for name, ends in by_family.items():
+            out.write(f"  {curve}, narrowest holding {name}: upper {ends[0][0]:.3f} at level "
+                      f"{ends[0][2]:g}, lower {ends[1][0]:.3f} at level {ends[1][2]:g}\n")
+        for label, mine, narrow in widths[curve]:
+            out.write(" | ".join([f"    {label:8s} ours/oracle {mine:.2f}"] + [
+                f"{name}: narrowest/oracle {w:.2f}, ours/narrowest {mine / w:.2f}"
+                for name, w in narrow.items()]) + "\n")
+    if verify:  # fresh draws of their own: the runs after see the same draws either way
+        for line in verify_designs(figure, m, runs, ours, {
+                f"{curve}, {name}": by_family[name] for curve, by_family in designs.items()
+                for name in ("every K", "every K, 2 sd below")},
+                np.random.default_rng([81, m, runs])):
+            out.write(f"  {line}\n")
+
+
+def verify_designs(figure: str, m: int, runs: int, ours: tuple[float, float], designs: dict,
+                   rng: np.random.Generator) -> list[str]:
+    """The worst miss of each end of the narrowest designs over the grid again, on fresh
+    draws (the search chose each on the draws that it then passed): VERIFY_N (R↑),
+    NARROW_A_N (A↑)."""
     nu = runs - 1
-    missed: dict[tuple[str, int, str, float], int] = {}
-    for _ in range(VERIFY_N // VERIFY_CHUNK):
-        s = np.sqrt(rng.chisquare(nu, (VERIFY_CHUNK, m)) / nu)
-        for pattern in ("one", "two", "ramp"):
-            for k in NARROW_KS:
-                sigma = pattern_sigmas(pattern, k, m, False)
-                sd = s * sigma
-                c, top = cochran_c(sd), sd.max(axis=1)
-                for name, design in designs.items():
-                    for side, (factor, crit, _) in enumerate(design):
-                        f = np.where(c > crit, ours[side], factor) * top
-                        miss = f < sigma.max() if side == 0 else f > sigma.max()
-                        key = (name, side, pattern, k)
-                        missed[key] = missed.get(key, 0) + int(np.sum(miss))
-    noise = math.sqrt(TAIL * (1.0 - TAIL) / VERIFY_N)
+    total = VERIFY_N if figure == "R_up" else NARROW_A_N
+    missed: dict[tuple[str, int, str, str, float], int] = {}
+    for _ in range(max(1, total // VERIFY_CHUNK)):
+        chunk = min(total, VERIFY_CHUNK)
+        s = np.sqrt(rng.chisquare(nu, (chunk, m)) / nu)
+        z = rng.standard_normal((chunk, m)) / math.sqrt(runs)
+        for curve, pattern, k, mu, sigma in grid_cases(figure, m):
+            r, c, *_ = case_draws(figure, s, z, mu, sigma)
+            for name, design in designs.items():
+                for side, (factor, crit, _) in enumerate(design):
+                    f = np.where(c > crit, ours[side], factor)
+                    key = (name, side, f"{curve} {pattern}", k)
+                    missed[key] = missed.get(key, 0) + int(np.sum(f < r if side == 0 else f > r))
+    noise = math.sqrt(TAIL * (1.0 - TAIL) / total)
     lines = []
     for name in designs:
         cells = []
         for side, end in ((0, "above"), (1, "below")):
             key = max((key for key in missed if key[:2] == (name, side)),
                       key=missed.__getitem__)
-            cells.append(f"{end} {missed[key] / VERIFY_N:.4f} ({key[2]}, K = {key[3]:g})")
-        lines.append(f"{name}: on {VERIFY_N} fresh draws the worst miss " + ", ".join(cells)
+            cells.append(f"{end} {missed[key] / total:.4f} ({key[2]}, K = {key[3]:g})")
+        lines.append(f"{name}: on {total} fresh draws the worst miss " + ", ".join(cells)
                      + f" (± {noise:.5f})")
     return lines
 
 
-def narrowest_main() -> None:
+def narrowest_main(verify_a: bool) -> None:
+    """The narrowest-correct section; ``verify_a`` (``--verify-a``, about 1 min more): A↑'s
+    every-K designs at 5 runs also on fresh draws, as R↑'s always are."""
     rng = np.random.default_rng(81)
     for figure, m, runs in (("R_up", 12, 5), ("R_up", 36, 5), ("R_up", 12, 3), ("R_up", 36, 3),
                             ("A_up", 12, 5), ("A_up", 36, 5), ("A_up", 12, 3)):
-        narrowest_report(figure, m, runs, rng, sys.stdout)
+        narrowest_report(figure, m, runs, rng, sys.stdout,
+                         runs == 5 and (figure == "R_up" or verify_a))
 
 
 if __name__ == "__main__":
     main()
-    narrowest_main()
+    narrowest_main("--verify-a" in sys.argv[1:])
