@@ -29,8 +29,8 @@ and that case is not in the study's grid:
   1.8–1.9 × the oracle (R↑; a fixed factor, no test) and 3.2–4.2 × (A↑ flat; 1.5 crest): the
   rest of our width is the price of K unbounded. Each narrowest was chosen on the draws it
   passed (a bound from below of the narrowest correct width); on 10⁶ fresh draws R↑'s missed
-  at most 0.0229 (tail 0.02275 ± 0.00015), and asking 2 standard deviations of room moves
-  the ratios by ≤ 0.02 at 5 runs.
+  at most 0.0229 (tail 0.02275 ± 0.00015), A↑'s on 10⁵ (--verify-a) at most 0.0229
+  (± 0.00047), and asking 2 standard deviations of room moves the ratios by ≤ 0.02 at 5 runs.
   A↑'s narrowest (x̄ ± 4.8 s where C at level 0.3 does not reject, x̄ + 0.68 s below; 36
   targets x̄ ± 4.8–5.2 s, x̄ + 0.50 s) is 18–20 % narrower than ours where σ is alike:
   reported (#39, width81), not adopted.

@@ -35,7 +35,9 @@ the narrowest correct width); "every K, 2 sd below" asks the tail less 2 of them
 has room (from above); R↑'s two are estimated again on VERIFY_N fresh draws (5 runs). Then
 the designs that need to hold K ≤ 2 alone (the audit's pattern: one target's σ × 2).
 Widths: mean over EVAL_N draws of the case (one target's σ × 1, 2, 3) ÷ its oracle spread
-over all the case's draws. About 3 min at nice 10 on the shared 2-core machine.
+over all the case's draws. About 2.5 min at nice 10 on the shared 2-core machine;
+``--verify-a`` also estimates A↑'s every-K designs at 5 runs again on fresh draws (a few
+minutes more).
 """
 
 from __future__ import annotations
