@@ -103,8 +103,12 @@ ACCEPTANCE = (
                "at the probability printed beside the figure would miss in 99 studies of 100 "
                "(binomial test); the probability printed is the one the full study reached "
                "where that is below the one asked for. Its mean width is stated as a multiple "
-               "of the width a correct interval needs (2z × the spread of measured − truth over "
-               "the same tests); 1.6 × is the aim."),
+               "of the spread of measured − truth in each case (2z × its standard deviation "
+               "over the case's tests): the width of an interval that knew σ along the axis, "
+               "not of a correct one, which must also hold where σ differs from target to "
+               "target in ways the readings cannot show; 1.6 × is the aim. For R↑ and A↑ it is "
+               "also stated against the narrowest interval that holds whatever σ does "
+               "(tests/benchmarks/least_favourable_width_study.py)."),
     QT_TR_NOOP("Software cases: exact (every name and figure found in the PDF's text; the "
                "register finds what it issued and reports what was changed; a file reads to "
                "the same numbers as numpy.loadtxt)."),

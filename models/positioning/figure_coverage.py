@@ -6,14 +6,34 @@ user's file would be, and the share of tests whose interval holds the truth coun
 Acceptance: a figure's coverage passes when the number of tests that missed is not more
 than the binomial test allows at the probability stated beside the figure (one-sided, 1 %:
 a correct interval fails it once in a hundred studies). Its width is stated beside it as a
-multiple of the width a correct interval needs (2 z σ of measured − truth over the tests
-of each case); 1.6 × is the aim, stated, not a condition of passing.
+multiple of the oracle spread, 2 z σ of measured − truth over the tests of each case: the
+width of an interval that knew σ along that axis, not of a correct one (an interval that
+must hold whatever σ does needs more: below); 1.6 × is the aim, stated, not a condition of
+passing. For R↑ and A↑ the record also states their width against the narrowest interval
+that holds every σ pattern of the width study (:data:`NARROWEST_CORRECT_RATIO`).
 
 What sets the widths (#39's widths, wide80; an assessor can check each number with the
 scripts named). The needed width is that of the case at hand; an interval that must hold
 whatever σ and the curve do along the axis is as wide as their least favourable case needs,
 and that case is not in the study's grid:
 
+* The narrowest that holds (width81: tests/benchmarks/least_favourable_width_study.py, its
+  second part, seed 81): designs that may switch on Cochran's C (ISO 5725-2; level
+  0.02–0.7, or no test) to a factor of their own where σ looks alike, held in every pattern
+  of one, two or a ramp of targets K × the others, K 1–100 (A↑ on a flat curve and on one
+  with a crest and a trough; its lower end also over a quiet trough). At 5 runs and alike
+  σ, ours ÷ the oracle spread, the narrowest ÷ it, ours ÷ the narrowest, 12 | 36 targets:
+  R↑ 4.10, 3.68, 1.11 | 5.33, 4.70, 1.13; A↑ flat 5.01, 4.07, 1.23 | 6.75, 5.55, 1.22, crest
+  2.43, 1.94, 1.25 | 2.63, 2.10, 1.25; one target × 2: 1.04–1.12, × 3: 1.01–1.03. At 3 runs
+  R↑ 1.30 | 1.42, A↑ 1.50–1.65 (12). Holding only K ≤ 2 (the audit's pattern) would take
+  1.8–1.9 × the oracle (R↑; a fixed factor, no test) and 3.2–4.2 × (A↑ flat; 1.5 crest): the
+  rest of our width is the price of K unbounded. Each narrowest was chosen on the draws it
+  passed (a bound from below of the narrowest correct width); on 10⁶ fresh draws R↑'s missed
+  at most 0.0229 (tail 0.02275 ± 0.00015), A↑'s on 10⁵ (--verify-a) at most 0.0229
+  (± 0.00047), and asking 2 standard deviations of room moves the ratios by ≤ 0.02 at 5 runs.
+  A↑'s narrowest (x̄ ± 4.8 s where C at level 0.3 does not reject, x̄ + 0.68 s below; 36
+  targets x̄ ± 4.8–5.2 s, x̄ + 0.50 s) is 18–20 % narrower than ours where σ is alike:
+  reported (#39, width81), not adopted.
 * R↑, R↓ (and R's 4σ terms, Ps_max): the upper end is 4 c max s_i, c = √(ν/χ²_ν(tail)) = 2.95
   at 5 runs (models.uncertainty.figure_intervals._repeatability_bounds). With 12 targets and
   one target's σ K × the others', its s drawn low hides it among theirs, and the end misses
@@ -62,15 +82,15 @@ import numpy as np
 from scipy.special import ndtri
 from scipy.stats import binom
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, message, separated
 from models.positioning.analysis import POSITIONING
 from models.positioning.report import figure_uncertainties
 from models.readings.sheet import ReadingsSheet
 from models.uncertainty.probability_text import percent_text
 from models.validation.axis_figures_rig import SIGMA_ALONG, AxisCase
 
-__all__ = ["FIGURES", "PROBABILITY_STEPS", "STUDY_CASES", "TRUTHS", "VALIDATE_CASES",
-           "FigureCoverage", "achieved_probability", "axis_hits", "coverage_study",
+__all__ = ["FIGURES", "NARROWEST_CORRECT_RATIO", "PROBABILITY_STEPS", "STUDY_CASES", "TRUTHS",
+           "VALIDATE_CASES", "FigureCoverage", "achieved_probability", "axis_hits", "coverage_study",
            "figure_coverage_cases", "study_case_tests"]
 
 FIGURES = ("A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B",
@@ -106,8 +126,18 @@ VALIDATE_CASES = tuple(c for c in STUDY_CASES if c.targets == 12 and (
 
 #: the miss rate allowed by the binomial test (one-sided)
 ALPHA = 0.01
-#: the widest interval, as a multiple of what a correct one needs, that is still honest
+#: the aim for a figure's width as a multiple of the oracle spread (#39's "not more than
+#: 1.6× what a correct interval needs")
 WIDTH_LIMIT = 1.6
+
+#: ours ÷ the narrowest interval that holds every σ pattern of the width study (a family of
+#: designs that may switch on Cochran's C, held for one, two or a ramp of targets K × the
+#: others, K 1–100), at alike σ and 5 runs (the study's), the larger of 12 and 36 targets
+#: (A↑: and of a flat curve and one with a crest and a trough): width81,
+#: tests/benchmarks/least_favourable_width_study.py (seed 81; R↑ 1.11 | 1.13, A↑ 1.22–1.25;
+#: a bound from above: the narrowest there passed on its own draws). Only the figures
+#: measured there.
+NARROWEST_CORRECT_RATIO = {"R_up": 1.13, "A_up": 1.25}
 
 
 @dataclass
@@ -120,7 +150,7 @@ class FigureCoverage:
     probability: float = 1.0
     widths: list[float] = field(default_factory=list)
     errors: list[float] = field(default_factory=list)  # measured − truth
-    needed: list[float] = field(default_factory=list)  # per case: a correct interval's width
+    needed: list[float] = field(default_factory=list)  # per case: the oracle spread
 
     @property
     def coverage(self) -> float:
@@ -169,8 +199,9 @@ def coverage_study(cases=STUDY_CASES, tests: int = 100, seed: int = 39
                 per_case.setdefault(key, []).append((interval.value - truth[key],
                                                      interval.probability))
         for key, values in per_case.items():
-            # a correct interval's width: the spread of measured − truth between the stated
-            # tails (normal quantiles of its standard deviation: steady with few tests)
+            # the oracle spread: the spread of measured − truth between the stated tails
+            # (normal quantiles of its standard deviation: steady with few tests), the width
+            # of an interval that knew σ along this case's axis
             errors = np.array([e for e, _ in values])
             tail = 0.5 * (1.0 - min(p for _, p in values))
             spread = float(np.std(errors, ddof=1)) if errors.size > 1 else math.nan
@@ -242,16 +273,22 @@ def figure_coverage_cases(trials: int, case_type) -> list:
     study = coverage_study(VALIDATE_CASES, tests_per_case(trials))
 
     def case(row: FigureCoverage, what):
+        result = message(QT_TR_NOOP("{coverage} % ({missed} missed); width {ratio} × the "
+                                    "spread of measured − truth in each case (an interval "
+                                    "that knew σ along the axis; aim ≤ {limit} ×)"),
+                         coverage=f"{100 * row.coverage:.1f}", missed=row.tests - row.hits,
+                         ratio=f"{row.width_ratio:.2f}", limit=f"{WIDTH_LIMIT:g}")
+        if row.figure in NARROWEST_CORRECT_RATIO:
+            result = separated([result, message(
+                QT_TR_NOOP("{ratio} × the narrowest interval that holds whatever σ does "
+                           "(σ alike, width study)"),
+                ratio=f"{NARROWEST_CORRECT_RATIO[row.figure]:.2f}")])
         return case_type(
             POSITIONING.title, what, COVERAGE_STUDY,
             message(QT_TR_NOOP("≥ {p} % (at most {allowed} of {tests} missed)"),
                     p=percent_text(row.probability), allowed=row.allowed_misses,
                     tests=row.tests),
-            message(QT_TR_NOOP("{coverage} % ({missed} missed); width {ratio} × a correct "
-                               "interval's (aim ≤ {limit} ×)"),
-                    coverage=f"{100 * row.coverage:.1f}", missed=row.tests - row.hits,
-                    ratio=f"{row.width_ratio:.2f}", limit=f"{WIDTH_LIMIT:g}"),
-            row.coverage_passes)
+            result, row.coverage_passes)
 
     out = [case(study[key], message(
         QT_TR_NOOP("interval of {figure} covers its truth ({truth}; μ, σ the true mean and "

@@ -1,0 +1,78 @@
+"""What the positioning coverage record measures a figure's width against (#39, width81): the
+oracle spread, 2 z σ of measured − truth over the tests of one case, is the width of an
+interval that knew σ along that axis, not of a correct one, and the record says so; for R↑
+and A↑ it also states their width against the narrowest interval that holds whatever σ does,
+the number tests/benchmarks/least_favourable_width_study.py measures (a small run of it here).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from models.positioning import figure_coverage
+from models.positioning.figure_coverage import (
+    FIGURES,
+    NARROWEST_CORRECT_RATIO,
+    FigureCoverage,
+    figure_coverage_cases,
+)
+from models.validation.cases import ValidationCase
+from tests.benchmarks.least_favourable_width_study import narrowest_widths
+
+ORACLE = ("the spread of measured − truth in each case (an interval that knew σ along the "
+          "axis; aim ≤ 1.6 ×)")
+
+
+@pytest.fixture
+def record(monkeypatch) -> dict[str, str]:
+    """The record's obtained text per case name, on a study of made-up rows (20 tests a
+    figure, 1 missed, width 3 × the oracle spread): the wording, not the simulation."""
+
+    def study(cases, tests):
+        rows = {}
+        for key in FIGURES:
+            row = FigureCoverage(key, hits=19, tests=20, probability=0.9545)
+            row.widths, row.needed = [3.0] * 20, [1.0] * 20
+            rows[key] = row
+        return rows
+
+    monkeypatch.setattr(figure_coverage, "coverage_study", study)
+    cases = figure_coverage_cases(200, ValidationCase)
+    return {str(case.name): str(case.obtained) for case in cases}
+
+
+def test_record_states_the_oracle_spread_not_a_correct_interval(record):
+    assert len(record) == len(FIGURES) + 1  # and the decided quantity's
+    for name, obtained in record.items():
+        assert "a correct interval" not in obtained, name
+        assert obtained.startswith("95.0 % (1 missed); width 3.00 × " + ORACLE), name
+
+
+def test_narrowest_correct_ratio_stated_for_the_measured_figures_only(record):
+    assert set(NARROWEST_CORRECT_RATIO) == {"R_up", "A_up"}
+    for name, obtained in record.items():
+        key = name.split("interval of ")[-1].split(" covers")[0]
+        if key in NARROWEST_CORRECT_RATIO:
+            assert obtained.endswith(
+                f"; {NARROWEST_CORRECT_RATIO[key]:.2f} × the narrowest interval that holds "
+                "whatever σ does (σ alike, width study)"), key
+        else:
+            assert "narrowest" not in obtained, name
+
+
+def test_narrowest_correct_ratio_is_the_width_study_s():
+    """R↑ at 12 targets, 5 runs, on 50 000 draws (the benchmark: 200 000, 12 and 36 targets,
+    1.11 and 1.13): ours is 4.1 × the oracle spread where σ is alike, the narrowest design
+    that holds every σ pattern 3.6–3.8 ×, so ours ÷ it is 1.08–1.15, at most the record's
+    1.13 within this run's noise; the narrowest that holds one target × 2 alone is 1.8 ×."""
+    ours, _, designs, widths = narrowest_widths("R_up", 12, 5, np.random.default_rng(81),
+                                                draws=50_000)
+    label, mine, narrow = widths["-"][0]
+    assert label == "alike"
+    assert mine == pytest.approx(4.10, abs=0.1)
+    assert 3.55 <= narrow["every K"] <= 3.85
+    assert 1.08 <= mine / narrow["every K"] <= NARROWEST_CORRECT_RATIO["R_up"] + 0.02
+    assert narrow["K <= 2"] == pytest.approx(1.82, abs=0.08)
+    upper, lower = designs["-"]["every K"]
+    assert upper[0] < ours[0] and lower[0] >= ours[1]  # a narrower factor where C accepts
