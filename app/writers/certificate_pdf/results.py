@@ -21,11 +21,14 @@ def draw_curves(pdf: _CertificatePdf, document: CertificateDocument) -> None:
 
 def draw_statistics(pdf: _CertificatePdf, document: CertificateDocument) -> None:
     pdf.heading(label(document, document.statistics.title))
+    # its rows and notes in Chinese above the English on a bilingual certificate, as the
+    # header (zh81: a theodolite run's note on figures without an interval English only)
+    both = {"rows_in_both": True, "report": document.is_test_report}
     if len(document.statistics.header) == 5:  # figures with their coverage interval
         pdf.data_table(document.statistics, (46, 26, 42, 24, 36),
-                       ("LEFT", "RIGHT", "RIGHT", "RIGHT", "LEFT"))
+                       ("LEFT", "RIGHT", "RIGHT", "RIGHT", "LEFT"), **both)
     else:
-        pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))
+        pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"), **both)
 
 
 def draw_results(pdf: _CertificatePdf, document: CertificateDocument) -> None:

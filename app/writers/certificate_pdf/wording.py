@@ -162,10 +162,19 @@ def _in_both(document: CertificateDocument, text) -> list[str]:
     Chinese one). For the texts a bilingual certificate gives in both languages: the
     statement of conformity with its rule, decided quantity and zones, the statements and
     the remarks, the traceability statement, the method and the uncertainty's statement of
-    U, k and p (not the tables, whose headers are already in both)."""
+    U, k and p, and the cells of the statistics table (each its Chinese above its English:
+    :meth:`~app.writers.certificate_pdf.tables.TableDrawing.data_table`; the other tables'
+    headers are in both)."""
     if document.metadata.language != "zh+en" or not text:
         return [text]
-    chinese, english = _say("zh", document.is_test_report)(text), str(text)
+    return _chinese_then_english(text, document.is_test_report)
+
+
+def _chinese_then_english(text, report: bool = False) -> list[str]:
+    """``text`` in Chinese, then in English, from the one message (:func:`_in_both`); once,
+    as it is, where it has no Chinese (a figure, a lab's own words). ``report``: a test
+    report's, which names the item in its own terms."""
+    chinese, english = _say("zh", report)(text), str(text)
     return [english] if chinese == english else [chinese, english]
 
 
