@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.page import GREY
-from app.writers.certificate_pdf.wording import _colon, _stop, _translatable, label
+from app.writers.certificate_pdf.wording import _colon, _in_both, _stop, _translatable, label
 from models.certificate.document import CertificateDocument
 from models.messages import QT_TR_NOOP, joined, message
 from models.software import software_identity
@@ -36,4 +36,7 @@ def draw_method(pdf: _CertificatePdf, document: CertificateDocument) -> None:
                           _translatable(document.sign_convention), _stop(document)]), 8.5)
     if document.settings:
         pdf.heading(label(document, "Analysis settings"), keep_with=30)
-        pdf.key_values(list(document.settings))
+        # each label and value in Chinese above its English on a bilingual certificate (zh81)
+        pdf.key_values([("\n".join(_in_both(document, _translatable(key))),
+                         "\n".join(_in_both(document, _translatable(value))))
+                        for key, value in document.settings])

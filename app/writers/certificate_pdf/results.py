@@ -10,7 +10,8 @@ from models.certificate.document import CertificateDocument
 
 def draw_parameters(pdf: _CertificatePdf, document: CertificateDocument) -> None:
     pdf.heading(label(document, document.parameters.title))
-    pdf.data_table(document.parameters, (70, 60, 44), ("LEFT", "RIGHT", "RIGHT"))
+    pdf.data_table(document.parameters, (70, 60, 44), ("LEFT", "RIGHT", "RIGHT"),
+                   rows_in_both=True, report=document.is_test_report)
 
 
 def draw_curves(pdf: _CertificatePdf, document: CertificateDocument) -> None:

@@ -46,6 +46,11 @@ class TableDrawing(PageFrame):
             wrapped = []
             for i, (key, value) in enumerate(rows):
                 sizes[i], text = self._value_wrapped(value)
+                # a label broken between words too (a bilingual setting's English: "when
+                # not me / asured" where fpdf2 broke it by character, zh81)
+                style = "" if "\n" in key else "B"
+                key = "\n".join(self._wrapped(line, 45 - 2.6, 9, style) if line else line
+                                 for line in key.split("\n"))
                 wrapped.append((key, text))
             rows = wrapped
             self.set_font(FONT, "", 9)  # the wrapping leaves its last size selected
@@ -108,8 +113,9 @@ class TableDrawing(PageFrame):
                 table.row(row)
         for text in moved:
             self.paragraph(text, 7.5, GREY)
-        if t.note:
-            self.paragraph(t.note, 7.5, GREY)
+        for note in (_chinese_then_english(t.note, report) if in_both else [t.note]) \
+                if t.note else []:
+            self.paragraph(note, 7.5, GREY)
 
 
 #: a cell taller than this (mm, estimated) goes below its table: a table row cannot break

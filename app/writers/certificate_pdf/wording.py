@@ -111,8 +111,11 @@ def label(document: CertificateDocument, english: str, separator: str = " ") -> 
     if document.is_test_report:
         english = REPORT_WORDS.get(english, english)
         chinese_words = {**CHINESE, **REPORT_CHINESE}
-    if language == "zh+en" and english in chinese_words:
-        return f"{chinese_words[english]}{separator}{english}"
+    if language == "zh+en":
+        # the fixed words, else the catalogue's, as a Chinese certificate says it (zh81: a
+        # workbench's own table titles, "Set-up parameters identified", English only)
+        chinese = chinese_words.get(english) or _say("zh", document.is_test_report)(english)
+        return english if chinese == str(english) else f"{chinese}{separator}{english}"
     if language == "zh":
         return chinese_words.get(english) or _say("zh", document.is_test_report)(english)
     return english
