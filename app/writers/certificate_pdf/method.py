@@ -17,7 +17,11 @@ def draw_method(pdf: _CertificatePdf, document: CertificateDocument) -> None:
     # (assessment 76 L1: English only); the published reference as written
     pdf.paragraph_in_both(_translatable(document.method))
     if document.method_reference:
-        pdf.paragraph(message(QT_TR_NOOP("Reference: {reference}."),
+        # the published reference once, as written, after its label in both on a bilingual
+        # certificate, as the sign convention's (zh81: "Reference:" English only)
+        pdf.paragraph(joined([label(document, "Reference"), ": ", document.method_reference,
+                              "."]) if pdf.language == "zh+en" else
+                      message(QT_TR_NOOP("Reference: {reference}."),
                               reference=document.method_reference), 8, GREY)
     if document.standard:
         pdf.paragraph_in_both(message(QT_TR_NOOP(

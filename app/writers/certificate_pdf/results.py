@@ -38,4 +38,6 @@ def draw_results(pdf: _CertificatePdf, document: CertificateDocument) -> None:
     pdf.heading(label(document, document.results.title),
                 keep_with=26.0 if pdf.language == "zh+en" else 18.0)
     n_cols = len(document.results.header)
-    pdf.data_table(document.results, (174 / n_cols,) * n_cols, ("RIGHT",) * n_cols)
+    # a text cell ("reference point, by definition") and the table's note in both (zh81)
+    pdf.data_table(document.results, (174 / n_cols,) * n_cols, ("RIGHT",) * n_cols,
+                   rows_in_both=True, report=document.is_test_report)

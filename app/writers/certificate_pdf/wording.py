@@ -27,7 +27,7 @@ CHINESE = {
     "Measurement uncertainty": "测量不确定度", "Statement of conformity": "符合性声明",
     "Statements": "声明", "Remarks": "备注", "Uncertainty budget": "不确定度分量一览表",
     "Figures of the axis": "轴线定位指标", "Test": "检测", "Sign convention": "符号约定",
-    "Model": "型号", "Place of calibration": "校准地点",
+    "Model": "型号", "Place of calibration": "校准地点", "Reference": "参考文献",
     "Instrument output": "仪器原始输出", "Changes after capture": "采集后变动",
     "Report number": "报告编号", "Date of test": "检测日期", "Place of test": "检测地点",
     # the results file's (XLSX) own labels and statements (app/writers/results_export.py):
