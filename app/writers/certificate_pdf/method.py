@@ -41,6 +41,5 @@ def draw_method(pdf: _CertificatePdf, document: CertificateDocument) -> None:
     if document.settings:
         pdf.heading(label(document, "Analysis settings"), keep_with=30)
         # each label and value in Chinese above its English on a bilingual certificate (zh81)
-        pdf.key_values([("\n".join(_in_both(document, _translatable(key))),
-                         "\n".join(_in_both(document, _translatable(value))))
+        pdf.key_values([("\n".join(_in_both(document, key)), "\n".join(_in_both(document, value)))
                         for key, value in document.settings])

@@ -46,14 +46,20 @@ def _document(key: str, readings: Path, language: str):
     return replace(document, metadata=replace(document.metadata, language=language))
 
 
+#: a page's foot and the next page's head, between which a paragraph may break
+_FOOT_AND_HEAD = re.compile(r"This (?:certificate|report) shall not.*?"
+                            r"(?:Certificate|Test report) AB-\d+-\d+\s*$", re.S | re.M)
+
+
 def _text(document) -> str:
-    """The printed PDF's text, without white space (a line breaks anywhere in Chinese)."""
+    """The printed PDF's text, without each page's foot and head and without white space (a
+    line breaks anywhere in Chinese)."""
     pdf = pdfium.PdfDocument(certificate_pdf_bytes(document))
     try:
-        return re.sub(r"\s+", "", "".join(pdf[i].get_textpage().get_text_range()
-                                          for i in range(len(pdf))))
+        pages = "".join(pdf[i].get_textpage().get_text_range() for i in range(len(pdf)))
     finally:
         pdf.close()
+    return re.sub(r"\s+", "", _FOOT_AND_HEAD.sub("", pages))
 
 
 def _flat(text) -> str:
@@ -135,3 +141,45 @@ def test_the_english_and_chinese_certificates_print_the_statistics_once(one_pass
     chinese = _text(_document("theodolite", one_pass, "zh"))
     assert chinese.count("各项指标不给出包含区间") == 1
     assert "Nocoverageinterval" not in chinese
+
+
+def _translated(document, texts) -> list[tuple[str, str]]:
+    """(Chinese, English) of each of ``texts`` the catalogue translates."""
+    words = report_translator(ZH) if document.is_test_report else ZH
+    out = []
+    for text in texts:
+        if isinstance(text, str) and text:
+            chinese = in_language(text, words)
+            if chinese != str(text):
+                out.append((chinese, str(text)))
+    return out
+
+
+@pytest.mark.parametrize("key", ["theodolite", "polygon", "fringe", "positioning", "crosscal"])
+def test_every_label_and_row_the_assessor_reads_is_in_both(key):
+    """Fails before zh81: under their two-language headings a bilingual certificate printed
+    the analysis settings, the parameters' table (its title too: "Set-up parameters
+    identified"), the budget's inputs and notes, the results' note, the plots' titles, axes
+    and legends, the place of calibration, the environment and the signatures' "Signature
+    and date" in English only."""
+    kind = KINDS[key]
+    document = _document(key, SAMPLES / kind.sample_file, "zh+en")
+    texts = [
+        *(text for row in document.settings for text in row),
+        document.parameters.title,
+        *(cell for row in document.parameters.rows for cell in row),
+        *(component.name for component in document.budget.components),
+        document.results.note,
+        *(text for figure in document.plots
+          for text in (figure.title, figure.x_label, figure.y_label,
+                       *(series.label for series in figure.series if series.label))),
+        "Signature and date",
+    ]
+    pairs = _translated(document, texts)
+    assert len(pairs) >= 10, pairs
+    printed = _text(document)
+    for chinese, english in pairs:
+        assert _flat(chinese) in printed, (key, chinese)
+        assert _flat(english) in printed, (key, english)
+    for chinese, english in (("在实验室内", "atthelaboratory"), ("温度", "temperature")):
+        assert chinese in printed and english in printed, (key, chinese)
