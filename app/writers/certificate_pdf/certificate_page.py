@@ -24,12 +24,14 @@ class _CertificatePdf(ReportPdf):
                   QT_TR_NOOP("This certificate shall not be reproduced except in full without "
                              "the laboratory's written approval."))
         super().__init__(
+            # the number in Chinese, then in English on a bilingual certificate (zh81)
             (meta.lab_name or say(QT_TR_NOOP("Laboratory not stated")),
-             say(message(QT_TR_NOOP("Test report {number}") if report else
-                         QT_TR_NOOP("Certificate {number}"), number=meta.certificate_number)
+             " ".join(say(part) for part in _in_both(document, message(
+                 QT_TR_NOOP("Test report {number}") if report else
+                 QT_TR_NOOP("Certificate {number}"), number=meta.certificate_number)
                  if meta.certificate_number else
                  message(QT_TR_NOOP("Test report no number") if report else
-                         QT_TR_NOOP("Certificate no number")))),
+                         QT_TR_NOOP("Certificate no number"))))),
             # the notice in Chinese above the English on a bilingual certificate (zh81)
             ("\n".join(say(line) for line in _in_both(document, message(notice))),
              say(message(QT_TR_NOOP("Test report {number} · AngleBench {version}") if report else

@@ -46,8 +46,12 @@ def _document(key: str, readings: Path, language: str):
     return replace(document, metadata=replace(document.metadata, language=language))
 
 
-#: a page's foot and the next page's head, between which a paragraph may break
-_FOOT_AND_HEAD = re.compile(r"This (?:certificate|report) shall not.*?"
+#: a page's foot (its notice in Chinese above the English) and the next page's head,
+#: between which a paragraph may break
+_NOTICES = "|".join(re.escape(ZH(f"This {what} shall not be reproduced except in full without "
+                                 "the laboratory's written approval."))
+                    for what in ("certificate", "report"))
+_FOOT_AND_HEAD = re.compile(rf"(?:(?:{_NOTICES}).*?)?This (?:certificate|report) shall not.*?"
                             r"(?:Certificate|Test report) AB-\d+-\d+\s*$", re.S | re.M)
 
 
