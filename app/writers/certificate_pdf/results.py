@@ -7,9 +7,14 @@ from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.wording import label
 from models.certificate.document import CertificateDocument
 
+#: how far (mm) a bilingual table's heading needs below it for its two-line header and a
+#: first row in both languages (zh81: "轴线定位指标 Figures of the axis" alone at a page's foot)
+_BILINGUAL_KEEP_WITH = 30.0
+
 
 def draw_parameters(pdf: _CertificatePdf, document: CertificateDocument) -> None:
-    pdf.heading(label(document, document.parameters.title))
+    pdf.heading(label(document, document.parameters.title),
+                keep_with=_BILINGUAL_KEEP_WITH if pdf.language == "zh+en" else 18.0)
     pdf.data_table(document.parameters, (70, 60, 44), ("LEFT", "RIGHT", "RIGHT"),
                    rows_in_both=True, report=document.is_test_report)
 
@@ -21,7 +26,8 @@ def draw_curves(pdf: _CertificatePdf, document: CertificateDocument) -> None:
 
 
 def draw_statistics(pdf: _CertificatePdf, document: CertificateDocument) -> None:
-    pdf.heading(label(document, document.statistics.title))
+    pdf.heading(label(document, document.statistics.title),
+                keep_with=_BILINGUAL_KEEP_WITH if pdf.language == "zh+en" else 18.0)
     # its rows and notes in Chinese above the English on a bilingual certificate, as the
     # header (zh81: a theodolite run's note on figures without an interval English only)
     both = {"rows_in_both": True, "report": document.is_test_report}
