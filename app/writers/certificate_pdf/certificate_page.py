@@ -19,17 +19,21 @@ class _CertificatePdf(ReportPdf):
         # a test report speaks of itself as a report throughout (ISO/IEC 17025 7.8.2.1 a))
         report = document.is_test_report
         say = _say(meta.language, report)
+        notice = (QT_TR_NOOP("This report shall not be reproduced except in full without the "
+                             "laboratory's written approval.") if report else
+                  QT_TR_NOOP("This certificate shall not be reproduced except in full without "
+                             "the laboratory's written approval."))
         super().__init__(
+            # the number in Chinese, then in English on a bilingual certificate (zh81)
             (meta.lab_name or say(QT_TR_NOOP("Laboratory not stated")),
-             say(message(QT_TR_NOOP("Test report {number}") if report else
-                         QT_TR_NOOP("Certificate {number}"), number=meta.certificate_number)
+             " ".join(say(part) for part in _in_both(document, message(
+                 QT_TR_NOOP("Test report {number}") if report else
+                 QT_TR_NOOP("Certificate {number}"), number=meta.certificate_number)
                  if meta.certificate_number else
                  message(QT_TR_NOOP("Test report no number") if report else
-                         QT_TR_NOOP("Certificate no number")))),
-            (say(QT_TR_NOOP("This report shall not be reproduced except in full without the "
-                            "laboratory's written approval.") if report else
-                 QT_TR_NOOP("This certificate shall not be reproduced except in full without "
-                            "the laboratory's written approval.")),
+                         QT_TR_NOOP("Certificate no number"))))),
+            # the notice in Chinese above the English on a bilingual certificate (zh81)
+            ("\n".join(say(line) for line in _in_both(document, message(notice))),
              say(message(QT_TR_NOOP("Test report {number} · AngleBench {version}") if report else
                          QT_TR_NOOP("Certificate {number} · AngleBench {version}"),
                          number=meta.certificate_number or "—",
@@ -67,8 +71,10 @@ class _CertificatePdf(ReportPdf):
         head = self.document.register_head
         if head:
             self.set_xy(self.l_margin, self.h - 6)
-            self.cell(self.epw, 3.5, self.say(message(
-                QT_TR_NOOP("Register chain head before this report: {head}…")
-                if self.document.is_test_report else
-                QT_TR_NOOP("Register chain head before this certificate: {head}…"),
-                head=head[:16])))
+            # in Chinese, then in English on the one line of a bilingual certificate (zh81)
+            self.cell(self.epw, 3.5, " ".join(self.say(said) for said in _in_both(
+                self.document, message(
+                    QT_TR_NOOP("Register chain head before this report: {head}…")
+                    if self.document.is_test_report else
+                    QT_TR_NOOP("Register chain head before this certificate: {head}…"),
+                    head=head[:16]))))

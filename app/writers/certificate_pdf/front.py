@@ -66,14 +66,17 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
         (label(document, "Manufacturer", "\n"), meta.item_manufacturer),
         (label(document, "Model", "\n"), meta.item_model),
         (label(document, "Serial number", "\n"), meta.item_serial),
-        (label(document, "Grade / specification", "\n"), joined(_between("; ", [
-            meta.item_grade, message(QT_TR_NOOP("tolerance ±{tolerance}"),
-                                     tolerance=tolerance_figure(document.tolerance,
-                                                                document.unit))
-            if document.tolerance else ""]))),
+        # the program's words of a value (the tolerance, the place, the environment) in
+        # Chinese, then in English on a bilingual certificate, as its label (zh81)
+        (label(document, "Grade / specification", "\n"), _both_lines(document, joined(_between(
+            "; ", [meta.item_grade, message(QT_TR_NOOP("tolerance ±{tolerance}"),
+                                            tolerance=tolerance_figure(document.tolerance,
+                                                                       document.unit))
+                   if document.tolerance else ""])))),
         (label(document, "Date of calibration", "\n"), meta.calibration_date),
-        (label(document, "Place of calibration", "\n"), _place(meta, _colon(document))),
-        (label(document, "Environment", "\n"), _environment(meta)),
+        (label(document, "Place of calibration", "\n"),
+         _both_lines(document, _place(meta, _colon(document)))),
+        (label(document, "Environment", "\n"), _both_lines(document, _environment(meta))),
         # on a bilingual certificate in Chinese, then in English, as every line of the
         # heading (day review 68 F12: English only under "原始记录 Readings")
         (label(document, "Readings", "\n"),
@@ -89,6 +92,12 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
                                     for line in _in_both(document, edit)])))]
           if document.edited_readings else []),
     ])
+
+
+def _both_lines(document: CertificateDocument, text) -> str:
+    """``text`` as a details value: on a bilingual certificate its Chinese line above its
+    English (once where it has no Chinese: a lab's own words)."""
+    return joined(_between("\n", _in_both(document, text))) if text else text
 
 
 def _created(document: CertificateDocument) -> dt.datetime:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.page import GREY
-from app.writers.certificate_pdf.wording import _colon, _stop, _translatable, label
+from app.writers.certificate_pdf.wording import _colon, _in_both, _stop, _translatable, label
 from models.certificate.document import CertificateDocument
 from models.messages import QT_TR_NOOP, joined, message
 from models.software import software_identity
@@ -17,7 +17,11 @@ def draw_method(pdf: _CertificatePdf, document: CertificateDocument) -> None:
     # (assessment 76 L1: English only); the published reference as written
     pdf.paragraph_in_both(_translatable(document.method))
     if document.method_reference:
-        pdf.paragraph(message(QT_TR_NOOP("Reference: {reference}."),
+        # the published reference once, as written, after its label in both on a bilingual
+        # certificate, as the sign convention's (zh81: "Reference:" English only)
+        pdf.paragraph(joined([label(document, "Reference"), ": ", document.method_reference,
+                              "."]) if pdf.language == "zh+en" else
+                      message(QT_TR_NOOP("Reference: {reference}."),
                               reference=document.method_reference), 8, GREY)
     if document.standard:
         pdf.paragraph_in_both(message(QT_TR_NOOP(
@@ -36,4 +40,6 @@ def draw_method(pdf: _CertificatePdf, document: CertificateDocument) -> None:
                           _translatable(document.sign_convention), _stop(document)]), 8.5)
     if document.settings:
         pdf.heading(label(document, "Analysis settings"), keep_with=30)
-        pdf.key_values(list(document.settings))
+        # each label and value in Chinese above its English on a bilingual certificate (zh81)
+        pdf.key_values([("\n".join(_in_both(document, key)), "\n".join(_in_both(document, value)))
+                        for key, value in document.settings])

@@ -13,7 +13,7 @@ from app.writers.certificate_pdf.fonts import CJK_FONT, FONT, _latin_coverage, f
 from app.writers.certificate_pdf.line_breaks import _CLOSING, _long_word, _mostly_cjk, _units
 from app.writers.certificate_pdf.measured_fragments import measured
 from app.writers.certificate_pdf.parsed_fonts import add_parsed_font
-from app.writers.certificate_pdf.wording import _say
+from app.writers.certificate_pdf.wording import _chinese_then_english, _say
 from models.messages import QT_TR_NOOP, message
 
 PAGE_TOTAL_ALIAS = "{nb}"
@@ -115,18 +115,25 @@ class PageFrame(FPDF):
         self.set_text_color(*INK)
 
     def footer(self) -> None:
-        self.set_y(-14)
+        # the first line's text may be lines of its own, each with its "Page x of y" (a
+        # bilingual certificate's notice in Chinese above the English): they begin higher
+        notices = self.foot[0].split("\n")
+        self.set_y(-14 - 4 * (len(notices) - 1))
         self.set_font(FONT, "", 7.5)
         self.set_text_color(*GREY)
-        self.cell(self.epw * 0.75, 4, self.foot[0], new_x=XPos.RIGHT, new_y=YPos.TOP)
-        # The page-count alias is live only here: elsewhere a "{nb}" typed by the user
-        # would be replaced by the number of pages.
-        previous, self.str_alias_nb_pages = self.str_alias_nb_pages, PAGE_TOTAL_ALIAS
-        self.cell(self.epw * 0.25, 4, self.say(message(QT_TR_NOOP("Page {page} of {pages}"),
-                                                       page=self.page_no(),
-                                                       pages=PAGE_TOTAL_ALIAS)),
-                  align="R", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
-        self.str_alias_nb_pages = previous
+        page = message(QT_TR_NOOP("Page {page} of {pages}"), page=self.page_no(),
+                       pages=PAGE_TOTAL_ALIAS)
+        said = (_chinese_then_english(page) if len(notices) == 2 and self.language == "zh+en"
+                else [self.say(page)])
+        for notice, number in zip(notices, [""] * (len(notices) - len(said)) + said,
+                                  strict=True):
+            self.cell(self.epw * 0.75, 4, notice, new_x=XPos.RIGHT, new_y=YPos.TOP)
+            # The page-count alias is live only here: elsewhere a "{nb}" typed by the user
+            # would be replaced by the number of pages.
+            previous, self.str_alias_nb_pages = self.str_alias_nb_pages, PAGE_TOTAL_ALIAS
+            self.cell(self.epw * 0.25, 4, number, align="R", new_x=XPos.LMARGIN,
+                      new_y=YPos.NEXT)
+            self.str_alias_nb_pages = previous
         self.cell(self.epw, 4, self.foot[1])
         self._foot_anchor()
         self.set_text_color(*INK)

@@ -10,6 +10,7 @@ from fpdf.enums import XPos, YPos
 
 from app.writers.certificate_pdf.fonts import FONT
 from app.writers.certificate_pdf.page import GREY, INK, PageFrame
+from app.writers.certificate_pdf.wording import _chinese_then_english
 from models.certificate.document import PlotFigure
 from models.messages import QT_TR_NOOP
 from models.plot_style import drawing_order, legend_series, series_style
@@ -18,11 +19,19 @@ from models.plot_style import drawing_order, legend_series, series_style
 class PlotDrawing(PageFrame):
     """The page with its vector plots."""
 
+    def _plot_words(self, text) -> str:
+        """A plot's title, axis label or series name in the certificate's language; on a
+        bilingual certificate its Chinese, then its English on the one line (zh81: English
+        only)."""
+        if self.language == "zh+en" and text:
+            return " ".join(_chinese_then_english(text))
+        return self.say(text)
+
     def plot(self, figure: PlotFigure, height: float = 62.0) -> None:
         if self.will_page_break(height + 12):
             self.add_page()
         self.set_font(FONT, "B", 9)
-        self.cell(0, 5, self.say(figure.title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        self.cell(0, 5, self._plot_words(figure.title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
         x0, y0 = self.l_margin + 14, self.get_y() + 2
         w, h = self.epw - 16, height - 14
         xs = np.concatenate([s.x for s in figure.series if s.x.size])
@@ -100,7 +109,7 @@ class PlotDrawing(PageFrame):
                 self.set_fill_color(*colour)
                 for x, y in pts:
                     self.circle(x, y, 0.45, style="F")
-        x_label, y_label = self.say(figure.x_label), self.say(figure.y_label)
+        x_label, y_label = self._plot_words(figure.x_label), self._plot_words(figure.y_label)
         self.mixed_text(x0 + w / 2 - self.text_width(x_label, 7) / 2, y0 + h + 7, x_label, 7)
         with self.rotation(90, self.l_margin + 1.5, y0 + h / 2):
             self.mixed_text(self.l_margin + 1.5 - self.text_width(y_label, 7) / 2,
@@ -110,7 +119,7 @@ class PlotDrawing(PageFrame):
             self.set_draw_color(*series_style(s).colour)
             self.set_line_width(0.6)
             self.line(lx, y0 + 3, lx + 5, y0 + 3)
-            name = self.say(s.label)
+            name = self._plot_words(s.label)
             self.mixed_text(lx + 6, y0 + 4, name, 7)
             lx += 9 + self.text_width(name, 7)
         self.set_line_width(0.2)

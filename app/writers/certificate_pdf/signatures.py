@@ -8,7 +8,7 @@ from fpdf.enums import XPos, YPos
 from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.fonts import FONT
 from app.writers.certificate_pdf.page import GREY, INK
-from app.writers.certificate_pdf.wording import _colon, _say
+from app.writers.certificate_pdf.wording import _colon, _in_both, _say
 from models.messages import QT_TR_NOOP, message
 
 
@@ -18,23 +18,26 @@ def draw_end(pdf: _CertificatePdf) -> None:
     _signatures(pdf)
     pdf.set_font(FONT, "", 8)
     report = document.is_test_report  # a report, never "certificate" (ISO/IEC 17025 7.8.2.1 a))
+    # in Chinese, then in English on a bilingual certificate (zh81: English only)
     with pdf.local_context(text_color=GREY):
-        pdf.multi_cell(0, 5, pdf.say(message(
-            QT_TR_NOOP("— End of test report {number} —") if report else
-            QT_TR_NOOP("— End of certificate {number} —"),
-            number=meta.certificate_number or "—")),
-                       align="C", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        for said in _in_both(document, message(
+                QT_TR_NOOP("— End of test report {number} —") if report else
+                QT_TR_NOOP("— End of certificate {number} —"),
+                number=meta.certificate_number or "—")):
+            pdf.multi_cell(0, 5, pdf.say(said), align="C", new_x=XPos.LMARGIN,
+                           new_y=YPos.NEXT)
         if document.register_head:
             pdf.set_font(FONT, "", 7)
-            pdf.multi_cell(0, 4, pdf.say(message(
-                QT_TR_NOOP("The laboratory's certificate register, before this report, ended at "
-                           "chain head {head}; 'anglebench register verify --head' proves the "
-                           "register still holds that history.") if report else
-                QT_TR_NOOP("The laboratory's certificate register, before this certificate, "
-                           "ended at chain head {head}; 'anglebench register verify --head' "
-                           "proves the register still holds that history."),
-                head=document.register_head)),
-                align="C", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+            for said in _in_both(document, message(
+                    QT_TR_NOOP("The laboratory's certificate register, before this report, "
+                               "ended at chain head {head}; 'anglebench register verify --head' "
+                               "proves the register still holds that history.") if report else
+                    QT_TR_NOOP("The laboratory's certificate register, before this "
+                               "certificate, ended at chain head {head}; 'anglebench register "
+                               "verify --head' proves the register still holds that history."),
+                    head=document.register_head)):
+                pdf.multi_cell(0, 4, pdf.say(said), align="C", new_x=XPos.LMARGIN,
+                               new_y=YPos.NEXT)
 
 
 def _signatures(pdf: _CertificatePdf) -> None:
@@ -59,11 +62,13 @@ def _signatures(pdf: _CertificatePdf) -> None:
         pdf.set_draw_color(*INK)
         pdf.line(x, y + 12, x + half - 12, y + 12)
         pdf.set_font(FONT, "", 8)
-        said = (f"{_say('zh')(role)} {role}" if meta.checker_role and pdf.language == "zh+en"
+        # each role and "Signature and date" in Chinese and English on a bilingual
+        # certificate (zh81: English only without a checker)
+        said = (f"{_say('zh', report)(role)} {role}" if pdf.language == "zh+en"
                 else pdf.say(role))
         pdf.cell(half - 12, 4.5, f"{said}{_colon(pdf.document)}{name or '—'}",
                  new_x=XPos.LEFT, new_y=YPos.NEXT)
         pdf.set_x(x)
-        pdf.cell(half - 12, 4.5, pdf.say(QT_TR_NOOP("Signature and date")), new_x=XPos.LEFT,
-                 new_y=YPos.NEXT)
+        pdf.cell(half - 12, 4.5, " ".join(pdf.say(part) for part in _in_both(
+            pdf.document, QT_TR_NOOP("Signature and date"))), new_x=XPos.LEFT, new_y=YPos.NEXT)
     pdf.set_y(y + 24)

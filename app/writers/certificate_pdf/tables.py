@@ -11,7 +11,7 @@ from fpdf.fonts import FontFace
 from app.writers.certificate_pdf.fonts import FONT
 from app.writers.certificate_pdf.line_breaks import _CLOSING, _wrapmode
 from app.writers.certificate_pdf.page import GREY, PageFrame
-from app.writers.certificate_pdf.wording import _both
+from app.writers.certificate_pdf.wording import _both, _chinese_then_english
 from models.certificate.document import Table
 
 HEADER_FILL = (228, 233, 240)
@@ -46,6 +46,11 @@ class TableDrawing(PageFrame):
             wrapped = []
             for i, (key, value) in enumerate(rows):
                 sizes[i], text = self._value_wrapped(value)
+                # a label broken between words too (a bilingual setting's English: "when
+                # not me / asured" where fpdf2 broke it by character, zh81)
+                style = "" if "\n" in key else "B"
+                key = "\n".join(self._wrapped(line, 45 - 2.6, 9, style) if line else line
+                                 for line in key.split("\n"))
                 wrapped.append((key, text))
             rows = wrapped
             self.set_font(FONT, "", 9)  # the wrapping leaves its last size selected
@@ -58,6 +63,13 @@ class TableDrawing(PageFrame):
                 # bold cell that falls back to the CJK font (seen in poppler: "No font in show")
                 row.cell(key, style=None if "\n" in key else FontFace(emphasis="BOLD"))
                 row.cell(value or "—", style=None if size == 9.0 else FontFace(size_pt=size))
+
+    def _cell_said(self, cell, in_both: bool, report: bool) -> list[str]:
+        """A body cell's text, in the certificate's language, or ``in_both``: in Chinese,
+        then in English (once where it has no Chinese: a figure)."""
+        if in_both and isinstance(cell, str) and cell:
+            return [_no_negative_zero(part) for part in _chinese_then_english(cell, report)]
+        return [_no_negative_zero(self.say(cell))]
 
     def _value_wrapped(self, value: str) -> tuple[float, str]:
         """A details value wrapped for its 129 mm column, at 9 pt, or a little smaller where
@@ -74,13 +86,22 @@ class TableDrawing(PageFrame):
         return 9.0, text  # no size a reader can read holds them: the marks go down
 
     def data_table(self, t: Table, widths: tuple[float, ...], align: tuple[str, ...],
-                   size: float = 8) -> None:
+                   size: float = 8, rows_in_both: bool = False, report: bool = False) -> None:
+        """``t`` as a ruled table; a cell too tall for a page below it, marked ("[1]"). On a
+        bilingual certificate the header's names in Chinese above the English, and with
+        ``rows_in_both`` every cell too (the statistics: their rows and notes, read by the
+        assessor; assessment zh81: English only under "统计结果 Statistics"), a cell below the
+        table then in Chinese, then in English; ``report``: a test report's words."""
         self.set_font(FONT, "", size)
         self.set_fill_color(246, 247, 249)
         heading = FontFace(emphasis="BOLD", fill_color=HEADER_FILL)
-        header = [_both(cell) if self.language == "zh+en" else cell for cell in t.header]
-        cells = [[_no_negative_zero(self.say(cell)) for cell in row] for row in (header, *t.rows)]
-        cells, moved = _long_cells_below(cells, widths, size)
+        both = self.language == "zh+en"
+        header = [_both(cell) if both else cell for cell in t.header]
+        in_both = both and rows_in_both
+        said = [[self._cell_said(cell, in_both, report) for cell in row] for row in t.rows]
+        cells = [[_no_negative_zero(self.say(cell)) for cell in header],
+                 *[["\n".join(parts) for parts in row] for row in said]]
+        cells, moved = _long_cells_below(cells, widths, size, said)
         wrapmode = _wrapmode(cell for row in cells for cell in row)
         if wrapmode == "CHAR":
             cells = self._cells_wrapped(cells, widths, size, True)
@@ -92,8 +113,9 @@ class TableDrawing(PageFrame):
                 table.row(row)
         for text in moved:
             self.paragraph(text, 7.5, GREY)
-        if t.note:
-            self.paragraph(t.note, 7.5, GREY)
+        for note in (_chinese_then_english(t.note, report) if in_both else [t.note]) \
+                if t.note else []:
+            self.paragraph(note, 7.5, GREY)
 
 
 #: a cell taller than this (mm, estimated) goes below its table: a table row cannot break
@@ -107,24 +129,32 @@ def _text_width(text: str) -> int:
     return sum(2 if ord(c) >= 0x2E80 else 1 for c in text)
 
 
-def _long_cells_below(cells: list[list], widths: tuple[float, ...], size: float
-                      ) -> tuple[list[list], list[str]]:
+def _long_cells_below(cells: list[list], widths: tuple[float, ...], size: float,
+                      said: list[list[list[str]]] | None = None) -> tuple[list[list], list[str]]:
     """The table's cells with any too tall for a page replaced by a mark ("[1]"), and their
-    texts to print below the table ("[1] Decided quantity: …")."""
+    texts to print below the table ("[1] Decided quantity: …"). ``said``: each body cell's
+    texts, one a language (Chinese, then English, on a bilingual certificate's rows in
+    both): a cell moved is then printed below in each, its row's name in the same."""
     per_char_mm = size * 0.19  # an 8 pt Latin character's mean advance is about 1.5 mm
     moved: list[str] = []
+    marks = 0
     out = [list(cells[0])]
-    for row in cells[1:]:
+    for r, row in enumerate(cells[1:]):
         row = list(row)
+        parts = said[r] if said is not None else [[cell] for cell in row]
         for j, cell in enumerate(row):
             if not isinstance(cell, str) or j >= len(widths):
                 continue
             lines = _text_width(cell) * per_char_mm / max(widths[j] - 2.0, 1.0) + cell.count("\n")
             if lines * size * 0.5 > _TALLEST_CELL_MM:
-                mark = f"[{len(moved) + 1}]"  # the text once, below: no figure twice
+                marks += 1
+                mark = f"[{marks}]"  # the text once a language, below: no figure twice
                 row[j] = mark
-                moved.append(f"{mark} {_without_probability(row[0])}: {cell}" if j
-                             else f"{mark} {cell}")
+                names = parts[0] if len(parts[0]) == len(parts[j]) else [row[0]] * len(parts[j])
+                for i, (name, text) in enumerate(zip(names, parts[j], strict=True)):
+                    colon = "：" if i == 0 and len(parts[j]) > 1 else ": "  # Chinese, English
+                    moved.append(f"{mark} {_without_probability(name)}{colon}{text}" if j
+                                 else f"{mark} {text}")
         out.append(row)
     return out, moved
 

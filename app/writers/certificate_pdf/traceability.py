@@ -15,7 +15,10 @@ from models.uncertainty.printed_figure import printed
 
 def draw_traceability(pdf: _CertificatePdf, document: CertificateDocument) -> None:
     pdf.heading(label(document, "Reference standards and traceability"))
-    pdf.data_table(_standards_table(document), (50, 26, 34, 42, 22), ("LEFT",) * 5)
+    # a stated uncertainty's basis in both on a bilingual certificate (zh81), a lab's own
+    # words once
+    pdf.data_table(_standards_table(document), (50, 26, 34, 42, 22), ("LEFT",) * 5,
+                   rows_in_both=True, report=document.is_test_report)
     # in Chinese, then in English on a bilingual certificate (assessment 76 L1: English only)
     pdf.paragraph_in_both(_traceability(document), 8.5)
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.page import GREY
-from app.writers.certificate_pdf.wording import _colon, _translatable, label
+from app.writers.certificate_pdf.wording import _colon, _in_both, _translatable, label
 from models.certificate.document import CertificateDocument, budget_table
 from models.messages import QT_TR_NOOP, joined, message
 from models.uncertainty.printed_figure import printed
@@ -42,11 +42,15 @@ def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> Non
                 cmc=f"{budget_.floor:g}{document.unit}"))
     budget = budget_table(document.budget, document.budget_point, document.unit,
                           bool(document.uncertainty_withheld))
+    # its inputs, their notes and the table's note in Chinese, then in English on a
+    # bilingual certificate (zh81: English only under "不确定度分量一览表")
     pdf.data_table(budget, (46, 9, 19, 15, 13, 13, 10, 15, 14, 20),
-                   ("LEFT", "CENTER", "LEFT") + ("RIGHT",) * 7, size=7)
+                   ("LEFT", "CENTER", "LEFT") + ("RIGHT",) * 7, size=7, rows_in_both=True,
+                   report=document.is_test_report)
     notes = [joined([_translatable(row[0]), _colon(document), _translatable(c.note)])
              for row, c in zip(budget.rows, document.budget.components, strict=False) if c.note]
     for note in notes:
-        pdf.paragraph(note, 7.5, GREY)
+        for said in _in_both(document, note):
+            pdf.paragraph(said, 7.5, GREY)
     if document.not_in_u_statement:  # what U lacks, with the budget (GUM 7.2.7)
         pdf.paragraph_in_both(document.not_in_u_statement, 8.5)

@@ -27,7 +27,7 @@ CHINESE = {
     "Measurement uncertainty": "测量不确定度", "Statement of conformity": "符合性声明",
     "Statements": "声明", "Remarks": "备注", "Uncertainty budget": "不确定度分量一览表",
     "Figures of the axis": "轴线定位指标", "Test": "检测", "Sign convention": "符号约定",
-    "Model": "型号", "Place of calibration": "校准地点",
+    "Model": "型号", "Place of calibration": "校准地点", "Reference": "参考文献",
     "Instrument output": "仪器原始输出", "Changes after capture": "采集后变动",
     "Report number": "报告编号", "Date of test": "检测日期", "Place of test": "检测地点",
     # the results file's (XLSX) own labels and statements (app/writers/results_export.py):
@@ -111,8 +111,11 @@ def label(document: CertificateDocument, english: str, separator: str = " ") -> 
     if document.is_test_report:
         english = REPORT_WORDS.get(english, english)
         chinese_words = {**CHINESE, **REPORT_CHINESE}
-    if language == "zh+en" and english in chinese_words:
-        return f"{chinese_words[english]}{separator}{english}"
+    if language == "zh+en":
+        # the fixed words, else the catalogue's, as a Chinese certificate says it (zh81: a
+        # workbench's own table titles, "Set-up parameters identified", English only)
+        chinese = chinese_words.get(english) or _say("zh", document.is_test_report)(english)
+        return english if chinese == str(english) else f"{chinese}{separator}{english}"
     if language == "zh":
         return chinese_words.get(english) or _say("zh", document.is_test_report)(english)
     return english
@@ -162,10 +165,19 @@ def _in_both(document: CertificateDocument, text) -> list[str]:
     Chinese one). For the texts a bilingual certificate gives in both languages: the
     statement of conformity with its rule, decided quantity and zones, the statements and
     the remarks, the traceability statement, the method and the uncertainty's statement of
-    U, k and p (not the tables, whose headers are already in both)."""
+    U, k and p, and the cells of the statistics table (each its Chinese above its English:
+    :meth:`~app.writers.certificate_pdf.tables.TableDrawing.data_table`; the other tables'
+    headers are in both)."""
     if document.metadata.language != "zh+en" or not text:
         return [text]
-    chinese, english = _say("zh", document.is_test_report)(text), str(text)
+    return _chinese_then_english(text, document.is_test_report)
+
+
+def _chinese_then_english(text, report: bool = False) -> list[str]:
+    """``text`` in Chinese, then in English, from the one message (:func:`_in_both`); once,
+    as it is, where it has no Chinese (a figure, a lab's own words). ``report``: a test
+    report's, which names the item in its own terms."""
+    chinese, english = _say("zh", report)(text), str(text)
     return [english] if chinese == english else [chinese, english]
 
 

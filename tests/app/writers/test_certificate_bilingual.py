@@ -25,6 +25,8 @@ pytestmark = pytest.mark.slow  # prints certificates
 
 SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
 ZH = translator("zh_CN")
+_NOTICE_ZH = ZH("This certificate shall not be reproduced except in full without the "
+                "laboratory's written approval.")
 
 
 #: the module's sample document and tests/conftest.py's ``sample_certificates`` (set by
@@ -61,7 +63,9 @@ def _printed(document, language: str) -> str:
         pages = [pdf[i].get_textpage().get_text_range() for i in range(len(pdf))]
     finally:
         pdf.close()
-    foot_and_head = re.compile(r"This certificate shall not.*?Certificate AB-\d+-\d+\s*$|"
+    # a bilingual foot's notice in Chinese above the English (zh81)
+    foot_and_head = re.compile(rf"(?:{re.escape(_NOTICE_ZH)}.*?)?This certificate shall not.*?"
+                               r"Certificate AB-\d+-\d+\s*$|"
                                r"本证书未经.*?证书 AB-\d+-\d+\s*$", re.S | re.M)
     return re.sub(r"\s+", "", foot_and_head.sub("", "".join(pages)))
 

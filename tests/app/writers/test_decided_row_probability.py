@@ -47,14 +47,26 @@ def _metadata(kind: str, language: str, tmp_path: Path) -> Path:
 
 
 def _decided_rows(text: str) -> list[str]:
-    """The statistics table's decided-quantity lines (not the footnote "[1] Decided …", nor
-    the statement of conformity's "Decided quantity: …")."""
+    """The statistics table's decided-quantity rows (not the footnote "[1] Decided …", nor
+    the statement of conformity's "Decided quantity: …"). On a bilingual certificate the
+    row's name is in Chinese above its English (zh81), the figures on the lines between:
+    the row is those lines, from its Chinese name to its English one."""
     out = []
-    for line in text.splitlines():
-        s = line.strip()
-        if s.startswith(ROW_NAMES) and not s.startswith(tuple(f"{n}:" for n in ROW_NAMES)) \
-                and not s.startswith(tuple(f"{n}：" for n in ROW_NAMES)):
-            out.append(s)
+    lines = [line.strip() for line in text.splitlines()]
+    named = [i for i, s in enumerate(lines)
+             if s.startswith(ROW_NAMES) and not s.startswith(tuple(f"{n}:" for n in ROW_NAMES))
+             and not s.startswith(tuple(f"{n}：" for n in ROW_NAMES))]
+    taken: set[int] = set()
+    for i in named:
+        if i in taken:
+            continue
+        english = next((j for j in named if i < j <= i + 4 and lines[i].startswith(ROW_NAMES[1])
+                        and lines[j].startswith(ROW_NAMES[0])), None)
+        if english is None:
+            out.append(lines[i])
+        else:
+            out.append(" ".join(lines[i:english + 1]))
+            taken.add(english)
     return out
 
 
