@@ -98,8 +98,12 @@ def postgres_server():
 def register_url(request, tmp_path):
     """A fresh, empty register on each back end."""
     if request.param == "sqlite":
-        return f"sqlite:///{tmp_path / 'register.sqlite'}"
-    return request.getfixturevalue("postgres_server").new_database()
+        yield f"sqlite:///{tmp_path / 'register.sqlite'}"
+        return
+    server = request.getfixturevalue("postgres_server")
+    url = server.new_database()
+    yield url
+    server.drop_database(url)
 
 
 @pytest.fixture(scope="session", autouse=True)

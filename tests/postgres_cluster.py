@@ -64,6 +64,23 @@ class Cluster:
             conn.execute(f'CREATE DATABASE "{name}"')
         return self.url(name)
 
+    def drop_database(self, url: str) -> None:
+        """Drop the database of ``url`` (one of :meth:`new_database`'s), its sessions ended
+        (a test may leave one open). Each test's is dropped after it: a session's ~200 kept
+        to the end made ~1.6 GB a worker, whose removal at the end took 10-36 s of every
+        worker's run (wall time on CI); a drop takes ~10 ms. A drop that fails is left to
+        :meth:`stop`."""
+        import psycopg
+
+        name = url.split("/")[-1].split("?")[0]
+        try:
+            with psycopg.connect(host=str(self.socket_dir), port=self.port, user="postgres",
+                                 dbname="postgres", autocommit=True,
+                                 connect_timeout=30) as conn:
+                conn.execute(f'DROP DATABASE IF EXISTS "{name}" WITH (FORCE)')
+        except psycopg.Error:
+            pass
+
     def stop(self) -> None:
         subprocess.run(_as_server_user([_binary("pg_ctl"), "-D", str(self.folder / "data"),
                                         "-m", "immediate", "stop"]),
