@@ -57,7 +57,7 @@ from models.polygon.model import (
 )
 from models.polygon.rounding import horizontal_rounding
 from models.polygon.setup_statement import setup_statement
-from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
+from models.readings.incomplete import IncompleteUnit, RowInProgress, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
@@ -1121,9 +1121,9 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
     def split_incomplete(self, parsed, settings):
         return split_incomplete(parsed, settings)
 
-    def analyze_as_far_as_it_goes(self, parsed: ParsedReadings,
-                                  settings: Mapping[str, Any]) -> PolygonResult:
-        result = super().analyze_as_far_as_it_goes(parsed, settings)
+    def analyze_as_far_as_it_goes(self, parsed: ParsedReadings, settings: Mapping[str, Any],
+                                  typing: RowInProgress | None = None) -> PolygonResult:
+        result = super().analyze_as_far_as_it_goes(parsed, settings, typing)
         unit = getattr(result, "incomplete", None)
         if unit is not None and getattr(unit.point, "template", None) == CLOSURE_POINT:
             # the last set's closure in progress (its first reading taken): not "Set 1: no
