@@ -478,7 +478,7 @@ def run_analyze(argv: list[str]) -> int:
         parsed, typing = row_in_progress(
             parsed, typing_row(sheet.row_count, reading,
                                [kind.columns[c].required for c in reading], sheet.text),
-            kind.plan_reading_keys, kind.columns)
+            kind.plan_reading_keys, kind.columns, text=sheet.text)
     # every row the command line names (or takes: --reference-row) is the file's line, the
     # header line 1, as a bad cell's is (contract review 75 F7: the checks after parsing
     # named the window's sheet row, one less); the sheet row a reading is in is kept for

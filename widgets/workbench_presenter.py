@@ -116,7 +116,7 @@ class _AnalysisTask(QRunnable):
                     # "3 cell(s) cannot be read"), and the row being typed (row81)
                     parsed = _without_waiting_rows(parsed, sheet, reading_keys, planned)
                     parsed, typing = row_in_progress(parsed, typing_row, reading_keys,
-                                                     kind.columns, blank_too)
+                                                     kind.columns, blank_too, sheet.text)
                 result, error, refused = _run_analysis(kind, parsed, settings, typing)
                 checkpoint()
                 display = _prepare_display(prepare, result)
@@ -1215,7 +1215,7 @@ class WorkbenchPresenter(QObject):
             return
         parsed = self._without_waiting_rows(sheet.parse(), sheet, planned)
         parsed, in_progress = row_in_progress(parsed, typing[0], self._reading_keys(),
-                                              self.kind.columns, typing[1])
+                                              self.kind.columns, typing[1], sheet.text)
         settings = dict(self._settings)
         result, error, refused = _run_analysis(self.kind, parsed, settings, in_progress)
         self._shown_generation = self._generation

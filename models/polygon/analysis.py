@@ -1028,6 +1028,21 @@ def positioning_rows(result: PolygonResult) -> list[list[str]]:
     return rows
 
 
+def _closure_being_typed(parsed: ParsedReadings, result: PolygonResult,
+                         typing: RowInProgress | None) -> bool:
+    """Whether the row being typed (no set in progress) is the last set's closure: back on
+    its start face, in the same set (a blank set cell is set 1, as split_sets takes it)."""
+    if typing is None or parsed.n == 0 or not result.sets:
+        return False
+    try:
+        face = float(typing.cell("position"))
+        typed_set = float(typing.cell("set") or 1)
+    except ValueError:
+        return False
+    last_set = float(np.nan_to_num(parsed["set"][-1], nan=1.0))
+    return face == result.sets[-1].start_face and typed_set == last_set
+
+
 class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], SendsRuns[PolygonResult],
               OverlaysRuns[PolygonResult], ShowsHeadline[PolygonResult], GuidesAcquisition,
               AcceptsReference):
@@ -1130,6 +1145,13 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
             # closure reading (the row back on its start face)" beside "In progress: set 1:
             # closure on face 1: reading 1 of 2" (live81); its figures say "closure not
             # measured" until it is complete
+            unread = [w for w in result.sets[-1].warnings
+                      if getattr(w, "template", None) == NO_CLOSURE_READING]
+            result.warnings[:] = [w for w in result.warnings if w not in unread]
+        elif unit is not None and unit.unit == "row" and _closure_being_typed(
+                parsed, result, unit.typing):
+            # the same for its closure's reading being typed (its x, not yet its encoder:
+            # row81), the row back on the last set's start face, in that set
             unread = [w for w in result.sets[-1].warnings
                       if getattr(w, "template", None) == NO_CLOSURE_READING]
             result.warnings[:] = [w for w in result.warnings if w not in unread]

@@ -120,6 +120,12 @@ class RowInProgress:
     row: int
     keys: tuple[str, ...]
     headers: tuple[str, ...]
+    #: the row's cells as typed, (column key, text) each: which point it is (its face, set)
+    cells: tuple[tuple[str, str], ...] = ()
+
+    def cell(self, key: str) -> str:
+        """The text of the row's cell ``key`` ("" when blank or not known)."""
+        return next((text for k, text in self.cells if k == key), "").strip()
 
     def text(self) -> Message:
         """"row 4: encoder a [deg] not typed yet"."""
@@ -145,14 +151,15 @@ def typing_row(row_count: int, reading_columns: Sequence[int], required: Sequenc
 
 
 def row_in_progress(parsed: ParsedReadings, row: int | None, reading_keys: Sequence[str],
-                    columns: Sequence[Column], blank_too: Sequence[str] = ()
+                    columns: Sequence[Column], blank_too: Sequence[str] = (),
+                    text: Callable[[int, int], str] | None = None
                     ) -> tuple[ParsedReadings, RowInProgress | None]:
     """``parsed`` less the cells that cannot be read of ``row`` (:func:`typing_row`, or the
     row the entry plan is filling) when each is a blank cell of ``reading_keys`` (or of
     ``blank_too``: a column the analysis waits for, never named), and that row in progress;
     ``parsed`` as it is and None when ``row`` is None or has a cell typed wrong or another
     cell wanting (a bad row, as before). The row is not among the readings (its blank
-    cells left it out of them)."""
+    cells left it out of them). ``text(row, column)``: the sheet's cells, kept with it."""
     if row is None:
         return parsed, None
     errors = [e for e in parsed.errors if e.row == row]
@@ -166,7 +173,9 @@ def row_in_progress(parsed: ParsedReadings, row: int | None, reading_keys: Seque
     headers = {c.key: c.header for c in columns}
     return (ParsedReadings(parsed.values, parsed.row_index,
                            [e for e in parsed.errors if e.row != row], parsed.first_line),
-            RowInProgress(row, ordered, tuple(headers[k] for k in ordered)))
+            RowInProgress(row, ordered, tuple(headers[k] for k in ordered),
+                          () if text is None else tuple((c.key, text(row, i))
+                                                        for i, c in enumerate(columns))))
 
 
 def with_row_in_progress(unit: IncompleteUnit | None, typing: RowInProgress) -> IncompleteUnit:
