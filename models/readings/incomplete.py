@@ -13,10 +13,11 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Callable, Hashable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, Message, listed, message
+from models.messages import QT_TR_NOOP, Message, listed, message, separated
 from models.readings.sheet import Column, ParsedReadings
 
 __all__ = ["UNIT_WORDS", "IncompleteUnit", "RowInProgress", "point_groups", "row_in_progress",
@@ -60,7 +61,7 @@ class IncompleteUnit:
     #: others blank (:class:`RowInProgress`; None: none), after the unit's readings
     typing: RowInProgress | None = None
 
-    def text(self) -> Message:
+    def text(self) -> Any:
         """"set 2: 3 of 24 faces"; with its last point short of its n readings "set 2: 2 of
         24 faces, face 3: reading 1 of 2"; that point in progress on its own, named (a
         polygon set's closure): "set 1: closure on face 1: reading 1 of 2"; with a row
@@ -70,8 +71,7 @@ class IncompleteUnit:
             return self._unit_text()
         if self.unit == "row":
             return self.typing.text()
-        return message(QT_TR_NOOP("{unit}, {row}"), unit=self._unit_text(),
-                       row=self.typing.text())
+        return separated((self._unit_text(), self.typing.text()), ", ")
 
     def _unit_text(self) -> Message:
         if self.unit == "point" and self.point:  # the point on its own, named with its unit

@@ -233,3 +233,25 @@ def test_a_closure_half_typed_is_not_said_missing(polygon, window, qtbot, tmp_pa
     assert "cannot be read" not in view.warnings.text()
     assert view.readings_label.text() == "Readings — 7 taken, 6 used"
     assert bench.result.mean_corrected_arcsec.size == FACES
+
+
+def test_on_a_worker_too(theodolite, qtbot, samples_dir):
+    """While readings are captured the analysis runs on a worker: the row being typed is in
+    progress there as well (it is found on the GUI thread, with the sheet it analyses)."""
+    from tests.app.test_cli_incomplete import _rows
+
+    bench = theodolite
+    _, rows = _rows(samples_dir / "theodolite_sample.csv")
+    bench.set_capturing(True)
+    try:
+        bench.table_model.replace_all([[*r, "", ""] for r in rows[:9]] +
+                                      [[*rows[9][:2], "", "", ""]])
+        bench.refresh()
+        assert bench.analysis_pending  # on the worker
+        _analysed(qtbot, bench)
+    finally:
+        bench.set_capturing(False)
+    assert bench.result is not None and bench.result.incomplete.typing.row == 9
+    assert bench.view.readings_label.text() == "Readings — 10 taken, 9 used"
+    assert "cannot be read" not in bench.view.warnings.text()
+    assert not _red(bench, 9, "elevation_deg")
