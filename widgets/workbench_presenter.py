@@ -128,7 +128,7 @@ class _AnalysisTask(QRunnable):
             emit_if_alive(signals.cancelled, generation)
             return
         emit_if_alive(signals.finished, generation,
-                      (parsed, result, display, settings, sheet, shown, refused), error)
+                      (parsed, result, display, settings, sheet, shown, refused, typing), error)
 
 
 def _without_waiting_rows(parsed: ParsedReadings, sheet: ReadingsSheet,
@@ -455,6 +455,8 @@ class WorkbenchPresenter(QObject):
         self.display: Any = None  # prepare_display(result)
         self.shown: ShownAsPrinted | None = None  # the texts of ``result`` as printed
         self.parsed: ParsedReadings | None = None
+        #: the row a reading is being typed into when ``parsed`` was analysed (None: none)
+        self.typing: RowInProgress | None = None
         self.problem = ""
         self.refused_setting = ""  # the setting whose field the readings refuse (key)
         self.plan_problem = ""  # why the entry plan set cannot be made ("" when it can)
@@ -567,7 +569,7 @@ class WorkbenchPresenter(QObject):
         """The result shown again (a new language or unit), not analysed again."""
         if self.parsed is not None:
             self._finish(self.parsed, self.result, self.problem, self.display,
-                         refused=self.refused_setting)
+                         refused=self.refused_setting, typing=self.typing)
 
     def in_unit(self, *figures):
         """The declared plots with their angles in the chosen unit (``None``, a plot with
@@ -1221,7 +1223,7 @@ class WorkbenchPresenter(QObject):
         self._shown_generation = self._generation
         self.result_settings, self.result_sheet = settings, sheet
         self._finish(parsed, result, error, _prepare_display(self.prepare_display, result),
-                     refused=refused)
+                     refused=refused, typing=in_progress)
 
     @property
     def analysis_pending(self) -> bool:
@@ -1252,10 +1254,10 @@ class WorkbenchPresenter(QObject):
         if generation == self._generation:  # a newer edit supersedes this result
             if not self._import_pending:  # a file being read keeps the window busy
                 self._set_busy(False)
-            parsed, result, display, settings, sheet, shown, refused = payload
+            parsed, result, display, settings, sheet, shown, refused, typing = payload
             self._shown_generation = generation
             self.result_settings, self.result_sheet = settings, sheet
-            self._finish(parsed, result, error, display, shown, refused)
+            self._finish(parsed, result, error, display, shown, refused, typing)
 
     def _next_text(self) -> str:
         """"next: target 120°, run 3 ↓" with a plan; "next: row 57" without."""
@@ -1287,26 +1289,26 @@ class WorkbenchPresenter(QObject):
 
     @staticmethod
     def _readings_count(parsed: ParsedReadings, result: Any,
-                        awaiting: tuple[int, str] | None = None) -> str:
+                        awaiting: tuple[int, str] | None = None, typing: bool = False) -> str:
         """"Readings — 7 used", or with a run in progress "Readings — 7 taken, 4 used": the
         figures' readings counted, not those of the run whose readings enter no figure yet
         (day review 74 F9: "7 used" while the summary said run 2's 3 enter no figure).
         ``awaiting``: the rows whose only want is the column the analysis waits for
         (:meth:`awaited_column`) and what they wait for: "Readings — 24 taken, waiting for
         the face deviations" (live81: "0 used" beside a table full of readings read as
-        "my readings were thrown away")."""
+        "my readings were thrown away"). ``typing``: a row a reading is being typed into,
+        taken and in no figure yet (row81)."""
+        typed = int(typing)
         if awaiting is not None and awaiting[0]:
             return tr("Readings — {taken} taken, {waiting}").format(
-                taken=parsed.n + awaiting[0], waiting=awaiting[1])
+                taken=parsed.n + awaiting[0] + typed, waiting=awaiting[1])
         incomplete = getattr(result, "incomplete", None)
         waiting = len(incomplete.rows) if incomplete is not None else 0
         # and the readings the analysis left out (positioning's far beyond the limit: live76 F7)
         waiting += len(getattr(result, "left_out", ()) or ())
-        # the row being typed: taken, in no figure yet (row81)
-        typing = int(getattr(incomplete, "typing", None) is not None)
-        if waiting or typing:
+        if waiting or typed:
             return tr("Readings — {taken} taken, {used} used").format(
-                taken=parsed.n + typing, used=parsed.n - waiting)
+                taken=parsed.n + typed, used=parsed.n - waiting)
         return tr("Readings — {used} used").format(used=parsed.n)
 
     def awaited_column(self, sheet: ReadingsSheet) -> AwaitedColumn | None:
@@ -1340,10 +1342,12 @@ class WorkbenchPresenter(QObject):
                 (len(wanting), awaited.waiting))
 
     def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None,
-                shown: ShownAsPrinted | None = None, refused: str = "") -> None:
+                shown: ShownAsPrinted | None = None, refused: str = "",
+                typing: RowInProgress | None = None) -> None:
         # the blank cells of a column the analysis waits for: one sentence, not bad cells
         bad_cells, error, awaiting = self._awaited(parsed, error, result)
         self.parsed = parsed
+        self.typing = typing  # the row a reading is being typed into (row81)
         self.display = display
         self.result = result
         self.problem = error
@@ -1367,7 +1371,8 @@ class WorkbenchPresenter(QObject):
         if self.plan_problem:
             input_warnings.append(tr("Entry plan: {reason}").format(
                 reason=translated(self.plan_problem)))
-        self.view.set_readings_caption(self._readings_count(parsed, result, awaiting) + (
+        self.view.set_readings_caption(self._readings_count(parsed, result, awaiting,
+                                                            typing is not None) + (
                 tr(", {cells} bad cell(s)").format(cells=len(bad_cells))
                                              if bad_cells else ""))
         self.view.set_next_row(next_text)

@@ -255,3 +255,27 @@ def test_on_a_worker_too(theodolite, qtbot, samples_dir):
     assert bench.view.readings_label.text() == "Readings — 10 taken, 9 used"
     assert "cannot be read" not in bench.view.warnings.text()
     assert not _red(bench, 9, "elevation_deg")
+
+
+def test_half_typed_before_the_face_deviations(window, qtbot):
+    """Readings typed before the polygon's certificate (its deviations awaited, live81), two
+    a face: the next reading half-typed is taken and waits with the others, not a bad cell
+    (its blank deviation cell waits as every row's does)."""
+    from tests.app.test_polygon_live_day import _take as _take_of
+
+    bench = next(polygon_bench(window, faces=FACES, plan_sets=2, readings_per_point=2))
+    view = bench.view
+    window.show()
+    for face in (1, 2, 3):
+        for reading in (1, 2):
+            _take_of(qtbot, bench, face, reading, 1)
+    row = _next_row(bench)
+    _type_and_return(qtbot, view.table, row, bench.sheet.column_index("ac_x_arcsec"),
+                     _ac_x(4, 1, 1))
+    _analysed(qtbot, bench)
+    # main: "Readings — 6 taken, waiting for the face deviations, 1 bad cell(s)"
+    assert view.readings_label.text() == "Readings — 7 taken, waiting for the face deviations"
+    assert "cannot be read" not in view.warnings.text()
+    assert not _red(bench, row, "encoder_deg")
+    assert view.next_label.text() == "next: set 1: face 4 of 6, reading 2 of 2 (7/28)"
+    window.capture_panel.close()
