@@ -39,7 +39,7 @@ from models.project.output_guard import (
     refuse_other_kinds,
     register_files,
 )
-from models.readings.incomplete import without_waiting_rows
+from models.readings.incomplete import row_in_progress, typing_row, without_waiting_rows
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ParsedReadings, ReadingsSheet
 from models.readings.tabular_import import (
@@ -450,10 +450,35 @@ def run_analyze(argv: list[str]) -> int:
             rows = _with_reference_dcc(args, kind, rows, settings, words)
             if rows is None:
                 return EXIT_BAD_INPUT
-        parsed = ReadingsSheet(kind.columns, rows).parse()
+        sheet = ReadingsSheet(kind.columns, rows)
+        parsed = sheet.parse()
+    keys = [c.key for c in kind.columns]
+    reading = [keys.index(k) for k in kind.plan_reading_keys if k in keys]
+
+    def blank_reading(row: int) -> bool:  # as the window tells it, by the cells' text
+        return all(not sheet.text(row, c).strip() for c in reading)
+
     # rows at the end that wait for their reading (a plan's or the nominal step's cells
-    # filled, no reading yet) are points not yet taken, not bad rows
-    parsed, _ = without_waiting_rows(parsed, kind.plan_reading_keys)
+    # filled, no reading yet) are points not yet taken, not bad rows; a row with part of
+    # its reading typed is none of them (row81: it was left out without a word)
+    parsed, _ = without_waiting_rows(parsed, kind.plan_reading_keys,
+                                     blank_reading if table is not None and reading else None)
+    # The last row with a reading, some of its reading cells typed and the others blank
+    # (a file saved while a reading was being typed: the autocollimator's x, not yet the
+    # encoder) is the run in progress, as in the window (row81), not a bad row. Decided as
+    # for a point short of its n readings (tests/app/test_cli_short_last_point.py): a file
+    # may be any moment of a run, so the complete rows are analysed, the summary and the
+    # JSON's "incomplete" say what is in progress, the exit is 0, and a certificate waits
+    # for it (exit 2 with --certificate). Refusing the file would make the command line
+    # judge a sheet the window shows as fine; taking the row as complete is impossible
+    # (a reading has no value). A blank reading cell in any other row, or a cell typed
+    # wrong anywhere, is still refused, naming the cell.
+    typing = None
+    if table is not None:
+        parsed, typing = row_in_progress(
+            parsed, typing_row(sheet.row_count, reading,
+                               [kind.columns[c].required for c in reading], sheet.text),
+            kind.plan_reading_keys, kind.columns, text=sheet.text)
     # every row the command line names (or takes: --reference-row) is the file's line, the
     # header line 1, as a bad cell's is (contract review 75 F7: the checks after parsing
     # named the window's sheet row, one less); the sheet row a reading is in is kept for
@@ -470,8 +495,11 @@ def run_analyze(argv: list[str]) -> int:
                                       reason=first.reason), more)), words))
         return EXIT_BAD_INPUT
     parsed = by_file_line(parsed, first_line)
+    if typing is not None:  # its row counted as the file's line, as the readings' are
+        typing = dataclasses.replace(typing, row=typing.row + first_line - 1)
     try:
-        result = kind.analyze_as_far_as_it_goes(parsed, kind.settings_with_defaults(settings))
+        result = kind.analyze_as_far_as_it_goes(parsed, kind.settings_with_defaults(settings),
+                                                typing)
     except SettingsError as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
@@ -618,6 +646,11 @@ def _incomplete_json(incomplete, first_line: int) -> dict[str, Any]:
     data["first_row"] = int(data["first_row"]) - (first_line - 1)
     data["last_row"] = int(data["last_row"]) - (first_line - 1)
     data.update(lines)
+    if "typing" in data:  # the row being typed: its sheet row and its file line
+        typing = dict(data["typing"])
+        typing["line"] = typing["row"]
+        typing["row"] = int(typing["row"]) - (first_line - 1)
+        data["typing"] = typing
     return data
 
 

@@ -42,7 +42,13 @@ import numpy as np
 from models.certificate.traceability import test_report_statement, traceability_gaps
 from models.messages import QT_TR_NOOP, joined, listed, message, reason_of
 from models.parameters import Parameter, SettingsError, Shortcut, check_parameters
-from models.readings.incomplete import IncompleteUnit, point_groups, subset
+from models.readings.incomplete import (
+    IncompleteUnit,
+    RowInProgress,
+    point_groups,
+    subset,
+    with_row_in_progress,
+)
 from models.readings.sheet import Column, ParsedReadings
 from models.sign_convention import SIGN_CONVENTION, SIGN_CONVENTION_TEXT
 from models.uncertainty.lab_scope import cmc_quantity, scope_statement
@@ -260,24 +266,34 @@ class Workbench(ABC, Generic[ResultT]):
             unit, readings=counted, first_row=int(sheet[rows[0]]), last_row=int(sheet[rows[-1]]),
             rows=tuple(rows), point=named, point_readings=short if named else 0, per_point=n)
 
-    def analyze_as_far_as_it_goes(self, parsed: ParsedReadings,
-                                  settings: Mapping[str, Any]) -> ResultT:
+    def analyze_as_far_as_it_goes(self, parsed: ParsedReadings, settings: Mapping[str, Any],
+                                  typing: RowInProgress | None = None) -> ResultT:
         """The result of the complete units (its ``incomplete``: the last unit in progress,
         whose readings enter no figure, with n readings per point its last point short of
-        them too: :meth:`split_in_points`); ValueError when no unit is complete yet."""
+        them too: :meth:`split_in_points`); ValueError when no unit is complete yet.
+
+        ``typing``: the row a reading is being typed into (models/readings/incomplete.py
+        row_in_progress: not among ``parsed``'s readings), part of the run in progress —
+        said after the unit in progress, or on its own — so that a certificate waits for
+        it as for a unit (row81)."""
         complete, unit = self.split_in_points(parsed, settings)
-        if unit is None:
+        if unit is None and typing is None:
             return self.analyze(parsed, settings)
+        if unit is None:
+            complete = parsed
+        progress = with_row_in_progress(unit, typing) if typing is not None else unit
+        assert progress is not None
         if complete.n == 0:
             raise ValueError(message(QT_TR_NOOP("{progress}: none is complete yet"),
-                                     progress=unit.text()))
+                                     progress=progress.text()))
         try:
             result = self.analyze(complete, settings)
         except ValueError as exc:
             raise ValueError(joined((reason_of(exc), message(
-                QT_TR_NOOP(" (in progress, left out: {progress})"), progress=unit.text())))) \
-                from None
-        object.__setattr__(result, "incomplete", unit)  # a field of every result that has units
+                QT_TR_NOOP(" (in progress, left out: {progress})"),
+                progress=progress.text())))) from None
+        # a field of every result that has units
+        object.__setattr__(result, "incomplete", progress)
         return result
 
     def check_settings(self, checked: dict[str, Any]) -> None:  # noqa: B027 - none by default

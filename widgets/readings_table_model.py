@@ -106,6 +106,12 @@ class ReadingsTableModel(QAbstractTableModel):
         #: is: one in the middle whose reading was cleared waits for it too, its blank cells
         #: not red (None: a new row, or no plan)
         self.planned_row: Callable[[], int | None] = lambda: None
+        #: the row a reading is being typed into by hand, some of its reading cells typed and
+        #: the others blank (the presenter's: the last row with a reading, or the row the
+        #: entry plan is filling): its blank reading cells wait, not red (row81: between the
+        #: autocollimator's x and the encoder, every reading typed showed a bad cell). None:
+        #: none
+        self.typing_row: Callable[[], int | None] = lambda: None
         #: the figure a blank cell (row, column) shows, worked out from its row, with what
         #: to say of it (the presenter's: Workbench.shown_in_blank), or None: shown, greyed,
         #: never written into the sheet (the editor opens on the sheet's blank text)
@@ -127,6 +133,7 @@ class ReadingsTableModel(QAbstractTableModel):
                                     list[tuple[int, int, str]]] = lambda rows: []
         self._waiting_from: int | None = None  # the first of them (None: none)
         self._planned: int | None = None
+        self._typing: int | None = None
         self._waiting_known = False
         self.sheet_changed.connect(self.forget_waiting)
         self.sheet_changed.connect(self.shown_changed)
@@ -137,6 +144,7 @@ class ReadingsTableModel(QAbstractTableModel):
         repainted (their red)."""
         known = self._waiting_known
         before, planned_before = (self._waiting_from, self._planned) if known else (None, None)
+        typing_before = self._typing if known else None
         self._waiting_known = False
         after = self.waiting_from()
         last = self.sheet.row_count - 1
@@ -147,7 +155,8 @@ class ReadingsTableModel(QAbstractTableModel):
                                       self.index(last, self.sheet.column_count - 1),
                                       [Qt.ItemDataRole.BackgroundRole,
                                        Qt.ItemDataRole.ToolTipRole])
-        for row in (planned_before, self._planned) if planned_before != self._planned else ():
+        for row in ({planned_before, self._planned, typing_before, self._typing}
+                    if (planned_before, typing_before) != (self._planned, self._typing) else ()):
             if row is not None and row <= last:
                 self.dataChanged.emit(self.index(row, 0),
                                       self.index(row, self.sheet.column_count - 1),
@@ -162,6 +171,7 @@ class ReadingsTableModel(QAbstractTableModel):
             self._waiting_from = None if numeric else waiting_row(
                 sheet.row_count, sheet.column_count, self.reading_columns, sheet.text)
             self._planned = None if numeric else self.planned_row()
+            self._typing = None if numeric else self.typing_row()
             self._waiting_known = True
         return self._waiting_from
 
@@ -170,6 +180,11 @@ class ReadingsTableModel(QAbstractTableModel):
         (:meth:`waiting_from`), or the row the entry plan sends the next reading to."""
         waiting = self.waiting_from()
         return (waiting is not None and r >= waiting) or r == self._planned
+
+    def is_typing(self, r: int) -> bool:
+        """Row ``r`` is the row a reading is being typed into (:attr:`typing_row`)."""
+        self.waiting_from()
+        return r == self._typing
 
     def _on_language_changed(self) -> None:
         self.headerDataChanged.emit(Qt.Orientation.Horizontal, 0, self.sheet.column_count - 1)
@@ -318,12 +333,14 @@ class ReadingsTableModel(QAbstractTableModel):
     def cell_error(self, r: int, c: int) -> str | None:
         """The sheet's :meth:`~models.readings.sheet.ReadingsSheet.cell_error`, the parse
         remembered by column and text (a blank row is fine, asked each time, and so is a
-        blank cell of a row waiting for its reading: :meth:`is_waiting`, and one of a
-        column the analysis waits for: :attr:`awaited_columns`)."""
+        blank cell of a row waiting for its reading: :meth:`is_waiting`, one of a column
+        the analysis waits for: :attr:`awaited_columns`, and a blank reading cell of the
+        row a reading is being typed into: :meth:`is_typing`)."""
         if self.sheet.is_blank_row(r):
             return None
         key = (c, self.sheet.text(r, c))
-        if not key[1].strip() and (self.is_waiting(r) or c in self.awaited_columns):
+        if not key[1].strip() and (self.is_waiting(r) or c in self.awaited_columns
+                                   or (c in self.reading_columns and self.is_typing(r))):
             return None  # a row waiting for its reading, or a column: a cell not filled yet
         try:
             return self._reasons[key]

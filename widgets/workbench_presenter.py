@@ -30,7 +30,12 @@ from models.display_units import (
 from models.messages import reason_of
 from models.project.file import WorkbenchState, file_sha256
 from models.readings.entry_plan import EntryPlan, Placement
-from models.readings.incomplete import without_waiting_rows
+from models.readings.incomplete import (
+    RowInProgress,
+    row_in_progress,
+    typing_row,
+    without_waiting_rows,
+)
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import NumericRows, ParsedReadings, ReadingsSheet
 from models.readings.tabular_import import (
@@ -88,14 +93,15 @@ class _AnalysisTask(QRunnable):
     def __init__(self, kind: Workbench, sheet: ReadingsSheet, settings: dict[str, Any],
                  generation: int, signals: _TaskSignals, prepare, current, workers: Workers,
                  reading_keys: tuple[str, ...] = (), planned: int | None = None,
-                 details: Any = None) -> None:
+                 details: Any = None, typing: tuple[int | None, tuple[str, ...]] = (None, ())
+                 ) -> None:
         super().__init__()
         self._args = (kind, sheet, settings, generation, signals, prepare, current, workers,
-                      reading_keys, planned, details)
+                      reading_keys, planned, details, typing)
 
     def run(self) -> None:
         (kind, sheet, settings, generation, signals, prepare, current, workers, reading_keys,
-         planned, details) = self._args
+         planned, details, (typing_row, blank_too)) = self._args
         # a newer edit (come while this waited in the queue or ran) cancels this analysis at
         # its next checkpoint: the newer one has its thread and the interpreter to itself
         try:
@@ -103,12 +109,15 @@ class _AnalysisTask(QRunnable):
                   cancellable(lambda: generation != current())):
                 checkpoint()
                 parsed = sheet.parse()
+                typing = None
                 if reading_keys:
                     # the rows at the end waiting for their reading, as in the GUI thread's
                     # analysis (#62 review F8: while capturing, the plan's pre-filled row was
-                    # "3 cell(s) cannot be read")
+                    # "3 cell(s) cannot be read"), and the row being typed (row81)
                     parsed = _without_waiting_rows(parsed, sheet, reading_keys, planned)
-                result, error, refused = _run_analysis(kind, parsed, settings)
+                    parsed, typing = row_in_progress(parsed, typing_row, reading_keys,
+                                                     kind.columns, blank_too, sheet.text)
+                result, error, refused = _run_analysis(kind, parsed, settings, typing)
                 checkpoint()
                 display = _prepare_display(prepare, result)
                 checkpoint()
@@ -119,7 +128,7 @@ class _AnalysisTask(QRunnable):
             emit_if_alive(signals.cancelled, generation)
             return
         emit_if_alive(signals.finished, generation,
-                      (parsed, result, display, settings, sheet, shown, refused), error)
+                      (parsed, result, display, settings, sheet, shown, refused, typing), error)
 
 
 def _without_waiting_rows(parsed: ParsedReadings, sheet: ReadingsSheet,
@@ -363,14 +372,15 @@ def _sheet_state(sheet: ReadingsSheet, settings: dict[str, Any], deep: bool) -> 
     return WorkbenchState(rows, dict(settings))
 
 
-def _run_analysis(kind: Workbench, parsed: ParsedReadings,
-                  settings: dict[str, Any]) -> tuple[Any, str, str]:
+def _run_analysis(kind: Workbench, parsed: ParsedReadings, settings: dict[str, Any],
+                  typing: RowInProgress | None = None) -> tuple[Any, str, str]:
     """The result, or why there is none; and the key of the setting the readings refuse
     (a tilt bound of 0 where they do not identify the tilt: its field is marked), "" when
-    no one setting is to blame."""
+    no one setting is to blame. ``typing``: the row a reading is being typed into, part of
+    the run in progress (Workbench.analyze_as_far_as_it_goes)."""
     try:
         # a run in progress: the complete units analysed, the last one's progress shown
-        return kind.analyze_as_far_as_it_goes(parsed, settings), "", ""
+        return kind.analyze_as_far_as_it_goes(parsed, settings, typing), "", ""
     except AnalysisCancelled:
         raise
     except ValueError as exc:  # bad input: a message for the technician
@@ -417,6 +427,7 @@ class WorkbenchPresenter(QObject):
         self.table_model.reading_columns = tuple(keys.index(k) for k in self._reading_keys()
                                                  if k in keys)
         self.table_model.planned_row = self.planned_row
+        self.table_model.typing_row = self.typing_row
         self.view.attach_table_model(self.table_model)
         if hasattr(getattr(self.view, "table", None), "own_layout"):  # a mock view has none
             self.view.table.own_layout = kind.rows_from_table
@@ -444,6 +455,8 @@ class WorkbenchPresenter(QObject):
         self.display: Any = None  # prepare_display(result)
         self.shown: ShownAsPrinted | None = None  # the texts of ``result`` as printed
         self.parsed: ParsedReadings | None = None
+        #: the row a reading is being typed into when ``parsed`` was analysed (None: none)
+        self.typing: RowInProgress | None = None
         self.problem = ""
         self.refused_setting = ""  # the setting whose field the readings refuse (key)
         self.plan_problem = ""  # why the entry plan set cannot be made ("" when it can)
@@ -556,7 +569,7 @@ class WorkbenchPresenter(QObject):
         """The result shown again (a new language or unit), not analysed again."""
         if self.parsed is not None:
             self._finish(self.parsed, self.result, self.problem, self.display,
-                         refused=self.refused_setting)
+                         refused=self.refused_setting, typing=self.typing)
 
     def in_unit(self, *figures):
         """The declared plots with their angles in the chosen unit (``None``, a plot with
@@ -1118,6 +1131,43 @@ class WorkbenchPresenter(QObject):
             row = None
         return row if row is not None and row < self.sheet.row_count else None
 
+    def typing_row(self) -> int | None:
+        """The row a reading is being typed into by hand (row81): the last row with a
+        reading (models/readings/incomplete.py typing_row; with an entry plan, the row the
+        plan sent the reading to: the rows after it are its next points, pre-filled), some
+        of its reading cells typed, a reading cell that needs a value still blank, every
+        other cell readable (a column the analysis waits for may be blank too). Its blank
+        reading cells wait (not red, not bad cells) and the row is said in progress; a
+        reading left half-typed in any other row is a bad row. None: no such row."""
+        sheet = self.sheet
+        if isinstance(sheet.rows, NumericRows) or sheet.row_count > PLAN_ROWS:
+            return None
+        keys = [c.key for c in sheet.columns]
+        reading = [keys.index(k) for k in self._reading_keys() if k in keys]
+        last = typing_row(sheet.row_count, reading,
+                          [sheet.columns[c].required for c in reading], sheet.text)
+        return last if last is not None and self._only_readings_blank(last, reading) else None
+
+    def _only_readings_blank(self, row: int, reading: list[int]) -> bool:
+        """Every cell of ``row`` reads, but its blank reading cells (and the blank cells of
+        a column the analysis waits for)."""
+        sheet = self.sheet
+        allowed = set(reading) | {sheet.column_index(k) for k in self._blank_too(sheet)}
+        for c in range(sheet.column_count):
+            if c in allowed and not sheet.text(row, c).strip():
+                continue
+            if sheet.cell_error(row, c) is not None:
+                return False
+        return True
+
+    def _blank_too(self, sheet: ReadingsSheet) -> tuple[str, ...]:
+        """The column the analysis waits for (:meth:`awaited_column`), whose blank cells a
+        row being typed may have too."""
+        if isinstance(sheet.rows, NumericRows):
+            return ()
+        awaited = self.awaited_column(sheet)
+        return () if awaited is None else (awaited.key,)
+
     def _without_waiting_rows(self, parsed: ParsedReadings,
                               sheet: ReadingsSheet | None = None,
                               planned: int | None = None) -> ParsedReadings:
@@ -1153,6 +1203,7 @@ class WorkbenchPresenter(QObject):
         # they stay with its result (edits made while a worker analyses never reach them)
         sheet = self.sheet.snapshot()
         planned = self.planned_row()  # the plan's row waiting in the middle (cleared)
+        typing = self.typing_row(), self._blank_too(sheet)  # a reading being typed (row81)
         if sheet.row_count > THREAD_THRESHOLD_ROWS or self.capturing:
             if not self.capturing:
                 self._set_busy(True, tr("Analysing {rows} readings …").format(
@@ -1162,15 +1213,17 @@ class WorkbenchPresenter(QObject):
                               self._signals, self.prepare_display, lambda: self._generation,
                               self.workers,
                               self._reading_keys() if sheet.row_count <= PLAN_ROWS else (),
-                              planned, self.printed_details()))
+                              planned, self.printed_details(), typing))
             return
         parsed = self._without_waiting_rows(sheet.parse(), sheet, planned)
+        parsed, in_progress = row_in_progress(parsed, typing[0], self._reading_keys(),
+                                              self.kind.columns, typing[1], sheet.text)
         settings = dict(self._settings)
-        result, error, refused = _run_analysis(self.kind, parsed, settings)
+        result, error, refused = _run_analysis(self.kind, parsed, settings, in_progress)
         self._shown_generation = self._generation
         self.result_settings, self.result_sheet = settings, sheet
         self._finish(parsed, result, error, _prepare_display(self.prepare_display, result),
-                     refused=refused)
+                     refused=refused, typing=in_progress)
 
     @property
     def analysis_pending(self) -> bool:
@@ -1201,10 +1254,10 @@ class WorkbenchPresenter(QObject):
         if generation == self._generation:  # a newer edit supersedes this result
             if not self._import_pending:  # a file being read keeps the window busy
                 self._set_busy(False)
-            parsed, result, display, settings, sheet, shown, refused = payload
+            parsed, result, display, settings, sheet, shown, refused, typing = payload
             self._shown_generation = generation
             self.result_settings, self.result_sheet = settings, sheet
-            self._finish(parsed, result, error, display, shown, refused)
+            self._finish(parsed, result, error, display, shown, refused, typing)
 
     def _next_text(self) -> str:
         """"next: target 120°, run 3 ↓" with a plan; "next: row 57" without."""
@@ -1236,24 +1289,26 @@ class WorkbenchPresenter(QObject):
 
     @staticmethod
     def _readings_count(parsed: ParsedReadings, result: Any,
-                        awaiting: tuple[int, str] | None = None) -> str:
+                        awaiting: tuple[int, str] | None = None, typing: bool = False) -> str:
         """"Readings — 7 used", or with a run in progress "Readings — 7 taken, 4 used": the
         figures' readings counted, not those of the run whose readings enter no figure yet
         (day review 74 F9: "7 used" while the summary said run 2's 3 enter no figure).
         ``awaiting``: the rows whose only want is the column the analysis waits for
         (:meth:`awaited_column`) and what they wait for: "Readings — 24 taken, waiting for
         the face deviations" (live81: "0 used" beside a table full of readings read as
-        "my readings were thrown away")."""
+        "my readings were thrown away"). ``typing``: a row a reading is being typed into,
+        taken and in no figure yet (row81)."""
+        typed = int(typing)
         if awaiting is not None and awaiting[0]:
             return tr("Readings — {taken} taken, {waiting}").format(
-                taken=parsed.n + awaiting[0], waiting=awaiting[1])
+                taken=parsed.n + awaiting[0] + typed, waiting=awaiting[1])
         incomplete = getattr(result, "incomplete", None)
         waiting = len(incomplete.rows) if incomplete is not None else 0
         # and the readings the analysis left out (positioning's far beyond the limit: live76 F7)
         waiting += len(getattr(result, "left_out", ()) or ())
-        if waiting:
+        if waiting or typed:
             return tr("Readings — {taken} taken, {used} used").format(
-                taken=parsed.n, used=parsed.n - waiting)
+                taken=parsed.n + typed, used=parsed.n - waiting)
         return tr("Readings — {used} used").format(used=parsed.n)
 
     def awaited_column(self, sheet: ReadingsSheet) -> AwaitedColumn | None:
@@ -1287,10 +1342,12 @@ class WorkbenchPresenter(QObject):
                 (len(wanting), awaited.waiting))
 
     def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None,
-                shown: ShownAsPrinted | None = None, refused: str = "") -> None:
+                shown: ShownAsPrinted | None = None, refused: str = "",
+                typing: RowInProgress | None = None) -> None:
         # the blank cells of a column the analysis waits for: one sentence, not bad cells
         bad_cells, error, awaiting = self._awaited(parsed, error, result)
         self.parsed = parsed
+        self.typing = typing  # the row a reading is being typed into (row81)
         self.display = display
         self.result = result
         self.problem = error
@@ -1314,7 +1371,8 @@ class WorkbenchPresenter(QObject):
         if self.plan_problem:
             input_warnings.append(tr("Entry plan: {reason}").format(
                 reason=translated(self.plan_problem)))
-        self.view.set_readings_caption(self._readings_count(parsed, result, awaiting) + (
+        self.view.set_readings_caption(self._readings_count(parsed, result, awaiting,
+                                                            typing is not None) + (
                 tr(", {cells} bad cell(s)").format(cells=len(bad_cells))
                                              if bad_cells else ""))
         self.view.set_next_row(next_text)

@@ -57,7 +57,7 @@ from models.polygon.model import (
 )
 from models.polygon.rounding import horizontal_rounding
 from models.polygon.setup_statement import setup_statement
-from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
+from models.readings.incomplete import IncompleteUnit, RowInProgress, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
@@ -1028,6 +1028,21 @@ def positioning_rows(result: PolygonResult) -> list[list[str]]:
     return rows
 
 
+def _closure_being_typed(parsed: ParsedReadings, result: PolygonResult,
+                         typing: RowInProgress | None) -> bool:
+    """Whether the row being typed (no set in progress) is the last set's closure: back on
+    its start face, in the same set (a blank set cell is set 1, as split_sets takes it)."""
+    if typing is None or parsed.n == 0 or not result.sets:
+        return False
+    try:
+        face = float(typing.cell("position"))
+        typed_set = float(typing.cell("set") or 1)
+    except ValueError:
+        return False
+    last_set = float(np.nan_to_num(parsed["set"][-1], nan=1.0))
+    return face == result.sets[-1].start_face and typed_set == last_set
+
+
 class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], SendsRuns[PolygonResult],
               OverlaysRuns[PolygonResult], ShowsHeadline[PolygonResult], GuidesAcquisition,
               AcceptsReference):
@@ -1121,15 +1136,22 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
     def split_incomplete(self, parsed, settings):
         return split_incomplete(parsed, settings)
 
-    def analyze_as_far_as_it_goes(self, parsed: ParsedReadings,
-                                  settings: Mapping[str, Any]) -> PolygonResult:
-        result = super().analyze_as_far_as_it_goes(parsed, settings)
+    def analyze_as_far_as_it_goes(self, parsed: ParsedReadings, settings: Mapping[str, Any],
+                                  typing: RowInProgress | None = None) -> PolygonResult:
+        result = super().analyze_as_far_as_it_goes(parsed, settings, typing)
         unit = getattr(result, "incomplete", None)
         if unit is not None and getattr(unit.point, "template", None) == CLOSURE_POINT:
             # the last set's closure in progress (its first reading taken): not "Set 1: no
             # closure reading (the row back on its start face)" beside "In progress: set 1:
             # closure on face 1: reading 1 of 2" (live81); its figures say "closure not
             # measured" until it is complete
+            unread = [w for w in result.sets[-1].warnings
+                      if getattr(w, "template", None) == NO_CLOSURE_READING]
+            result.warnings[:] = [w for w in result.warnings if w not in unread]
+        elif unit is not None and unit.unit == "row" and _closure_being_typed(
+                parsed, result, unit.typing):
+            # the same for its closure's reading being typed (its x, not yet its encoder:
+            # row81), the row back on the last set's start face, in that set
             unread = [w for w in result.sets[-1].warnings
                       if getattr(w, "template", None) == NO_CLOSURE_READING]
             result.warnings[:] = [w for w in result.warnings if w not in unread]

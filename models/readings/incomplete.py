@@ -10,15 +10,18 @@ gap in the middle is refused by the analysis as before.
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable, Hashable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, Message, message
-from models.readings.sheet import ParsedReadings
+from models.messages import QT_TR_NOOP, Message, listed, message, separated
+from models.readings.sheet import Column, ParsedReadings
 
-__all__ = ["UNIT_WORDS", "IncompleteUnit", "point_groups", "short_last_unit", "subset",
+__all__ = ["UNIT_WORDS", "IncompleteUnit", "RowInProgress", "point_groups", "row_in_progress",
+           "short_last_unit", "subset", "typing_row", "with_row_in_progress",
            "without_waiting_rows"]
 
 #: each unit's words: (what the unit is, what its readings are)
@@ -37,7 +40,8 @@ UNIT_WORDS: dict[str, tuple[str, str]] = {
 @dataclass(frozen=True)
 class IncompleteUnit:
     """The last unit, short of readings: which (``unit`` "set", "mounting", "run",
-    "target" or "pass", and its ``number``), how many readings of how many, and the sheet
+    "target" or "pass", and its ``number``; "row": no unit but the row being typed, its
+    :attr:`typing`), how many readings of how many, and the sheet
     rows (1-based) its readings are in. ``rows`` index the parsed readings (0-based)."""
 
     unit: str
@@ -53,11 +57,23 @@ class IncompleteUnit:
     point: str = ""
     point_readings: int = 0
     per_point: int = 1
+    #: the row a reading is being typed into, some of its reading cells typed and the
+    #: others blank (:class:`RowInProgress`; None: none), after the unit's readings
+    typing: RowInProgress | None = None
 
-    def text(self) -> Message:
+    def text(self) -> Any:
         """"set 2: 3 of 24 faces"; with its last point short of its n readings "set 2: 2 of
         24 faces, face 3: reading 1 of 2"; that point in progress on its own, named (a
-        polygon set's closure): "set 1: closure on face 1: reading 1 of 2"."""
+        polygon set's closure): "set 1: closure on face 1: reading 1 of 2"; with a row
+        being typed, that row after it ("set 2: 3 of 24 faces, row 29: encoder a not typed
+        yet"), or the row alone (unit "row")."""
+        if self.typing is None:
+            return self._unit_text()
+        if self.unit == "row":
+            return self.typing.text()
+        return separated((self._unit_text(), self.typing.text()), ", ")
+
+    def _unit_text(self) -> Message:
         if self.unit == "point" and self.point:  # the point on its own, named with its unit
             return message(QT_TR_NOOP("{point}: reading {readings} of {n}"), point=self.point,
                            readings=self.point_readings, n=self.per_point)
@@ -87,7 +103,90 @@ class IncompleteUnit:
         if self.point:
             out["point"] = {"name": str(self.point), "readings": self.point_readings,
                             "expected": self.per_point}
+        if self.typing is not None:
+            out["typing"] = {"row": self.typing.row + 1, "blank": list(self.typing.keys)}
         return out
+
+
+@dataclass(frozen=True)
+class RowInProgress:
+    """The row a reading is being typed into by hand: some of its reading cells typed, the
+    others (``keys``, headed ``headers`` as the table heads them) still blank. Between the
+    two cells of a reading (the autocollimator's x, then the encoder; the theodolite's A,
+    then E) it is a reading in progress, not a bad row: its blank cells wait, the complete
+    rows keep their result, and a certificate waits for it (row81). ``row``: 0-based, as
+    ``parsed.row_index``."""
+
+    row: int
+    keys: tuple[str, ...]
+    headers: tuple[str, ...]
+    #: the row's cells as typed, (column key, text) each: which point it is (its face, set)
+    cells: tuple[tuple[str, str], ...] = ()
+
+    def cell(self, key: str) -> str:
+        """The text of the row's cell ``key`` ("" when blank or not known)."""
+        return next((text for k, text in self.cells if k == key), "").strip()
+
+    def text(self) -> Message:
+        """"row 4: encoder a [deg] not typed yet"."""
+        return message(QT_TR_NOOP("row {row}: {columns} not typed yet"), row=self.row + 1,
+                       columns=listed(message(h) for h in self.headers))
+
+
+def typing_row(row_count: int, reading_columns: Sequence[int], required: Sequence[bool],
+               text: Callable[[int, int], str]) -> int | None:
+    """The row a reading is being typed into at the end of the sheet: the last row with a
+    reading cell typed (the rows after it have none: the plan's next points, waiting), when
+    a reading cell that needs a value is blank in it (``required``: each of
+    ``reading_columns``'s). None otherwise. A row in the middle is never it: a reading left
+    half-typed there is a bad row, as before."""
+    if not reading_columns:
+        return None
+    for r in range(row_count - 1, -1, -1):
+        typed = [bool(text(r, c).strip()) for c in reading_columns]
+        if any(typed):
+            blank = any(need and not t for need, t in zip(required, typed, strict=True))
+            return r if blank else None
+    return None
+
+
+def row_in_progress(parsed: ParsedReadings, row: int | None, reading_keys: Sequence[str],
+                    columns: Sequence[Column], blank_too: Sequence[str] = (),
+                    text: Callable[[int, int], str] | None = None
+                    ) -> tuple[ParsedReadings, RowInProgress | None]:
+    """``parsed`` less the cells that cannot be read of ``row`` (:func:`typing_row`, or the
+    row the entry plan is filling) when each is a blank cell of ``reading_keys`` (or of
+    ``blank_too``: a column the analysis waits for, never named), and that row in progress;
+    ``parsed`` as it is and None when ``row`` is None or has a cell typed wrong or another
+    cell wanting (a bad row, as before). The row is not among the readings (its blank
+    cells left it out of them). ``text(row, column)``: the sheet's cells, kept with it."""
+    if row is None:
+        return parsed, None
+    errors = [e for e in parsed.errors if e.row == row]
+    allowed = set(reading_keys) | set(blank_too)
+    if not errors or any(e.text.strip() or e.column_key not in allowed for e in errors):
+        return parsed, None
+    keys = {e.column_key for e in errors} & set(reading_keys)
+    if not keys:
+        return parsed, None
+    ordered = tuple(c.key for c in columns if c.key in keys)
+    headers = {c.key: c.header for c in columns}
+    return (ParsedReadings(parsed.values, parsed.row_index,
+                           [e for e in parsed.errors if e.row != row], parsed.first_line),
+            RowInProgress(row, ordered, tuple(headers[k] for k in ordered),
+                          () if text is None else tuple((c.key, text(row, i))
+                                                        for i, c in enumerate(columns))))
+
+
+def with_row_in_progress(unit: IncompleteUnit | None, typing: RowInProgress) -> IncompleteUnit:
+    """The run in progress with the row being typed after it: ``unit``'s (its rows reaching
+    the row), or the row alone (unit "row") when no unit is in progress."""
+    sheet_row = typing.row + 1
+    if unit is None:
+        return IncompleteUnit("row", float(sheet_row), 0, 0, sheet_row, sheet_row, (),
+                              typing=typing)
+    return dataclasses.replace(unit, first_row=min(unit.first_row, sheet_row),
+                               last_row=max(unit.last_row, sheet_row), typing=typing)
 
 
 def point_groups(parsed: ParsedReadings, n: int) -> tuple[list[np.ndarray], int]:
