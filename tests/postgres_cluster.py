@@ -72,7 +72,7 @@ class Cluster:
         :meth:`stop`."""
         import psycopg
 
-        name = url.split("/")[-1].split("?")[0]
+        name = url.split("@/", 1)[1].split("?", 1)[0]
         try:
             with psycopg.connect(host=str(self.socket_dir), port=self.port, user="postgres",
                                  dbname="postgres", autocommit=True,
