@@ -1,3 +1,3 @@
 """AngleBench numerics: pure numpy/scipy, no Qt (a test checks this)."""
 
-__version__ = "0.8.29"
+__version__ = "0.8.30"
