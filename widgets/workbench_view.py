@@ -497,10 +497,6 @@ class WorkbenchView(QWidget):
         a 1280×720 screen at 150 % left 3–5 rows being filled beside a 100 px set-up (gui81)."""
         self._rows_kept = max(0, int(rows))
         self._share_left_pane(self._left.height())
-        # again once the window has laid out the panel's place (docked at the bottom, the
-        # left pane was measured while the panel was still at its full height: the set-up
-        # kept 58 px where the table had its rows and room for 100)
-        QTimer.singleShot(0, self, lambda: self._share_left_pane(self._left.height()))
 
     def keep_plot_height(self, height: int) -> None:
         """The plot tabs keep at least ``height`` px when the window's room shrinks (0: no
