@@ -232,6 +232,11 @@ class WorkbenchView(QWidget):
     # the least the set-up keeps (it scrolls below its full height; 120 px made the window
     # 351 px tall at the least, more than a 1280×720 screen at 200 % has below its title bar)
     SETUP_MIN_HEIGHT = 100
+    #: the least the set-up keeps while the readings keep their rows (:meth:`keep_readings_rows`):
+    #: a field's row, scrolling
+    SETUP_LEAST_HEIGHT = 32
+    #: the readings' rows kept in sight before the set-up's least height (0: none)
+    _rows_kept = 0
     #: the width the result keeps before the readings pane gives up its columns' width (its
     #: text beside the figures' table; the least the result kept when the panes had least widths)
     RESULT_WIDTH = 340
@@ -256,8 +261,29 @@ class WorkbenchView(QWidget):
         beside = sum(w.sizeHint().width() for w in (self.next_label, self.step_label, self.step)
                      if not w.isHidden()) + 3 * self._entry.horizontalSpacing()
         self._place_caption(above=self._left.width() < beside + self.CAPTION_MIN_WIDTH)
-        self.settings_area.setFixedHeight(
-            max(min(full, self.SETUP_MIN_HEIGHT), min(full, height - readings - 40)))
+        setup = max(min(full, self.SETUP_MIN_HEIGHT), min(full, height - readings - 40))
+        if self._rows_kept:  # the capture panel open: the readings' rows before the set-up's
+            setup = max(self.SETUP_LEAST_HEIGHT,
+                        min(setup, height - self._height_beside_setup(self._rows_kept)))
+        self.settings_area.setFixedHeight(setup)
+
+    def _height_beside_setup(self, rows: int) -> int:
+        """The left pane's height less the set-up's scrolling part, with ``rows`` rows of
+        readings in sight: the caption and the next row above the table (as tall as their
+        lines at the pane's width), the table's header, rows and sideways scroll bar, the
+        set-up's frame and title, the spacing between them."""
+        width = self._left.width()
+        entry = self._entry.heightForWidth(width) if self._entry.hasHeightForWidth() \
+            else self._entry.sizeHint().height()
+        table = (self.table.horizontalHeader().sizeHint().height()
+                 + self.table.verticalHeader().defaultSectionSize() * rows
+                 + 2 * self.table.frameWidth()
+                 + self.table.horizontalScrollBar().sizeHint().height())
+        inside = self.setup_box.layout()
+        margins = inside.contentsMargins()
+        frame = (self.setup_box.sizeHint().height() - inside.sizeHint().height()
+                 + margins.top() + margins.bottom())
+        return entry + table + max(0, frame) + 2 * self._left.layout().spacing()
 
     #: the least width the readings' caption keeps beside the next row and the step
     CAPTION_MIN_WIDTH = 160
@@ -464,6 +490,13 @@ class WorkbenchView(QWidget):
     #: the least height a plot panel keeps: below it the tab scrolls instead of squeezing
     #: the plots flat and overprinting their axis titles (high-DPI scale, small windows)
     PANEL_MIN_HEIGHT = 150
+
+    def keep_readings_rows(self, rows: int) -> None:
+        """The readings table keeps ``rows`` rows in sight, the set-up giving way first down to
+        :attr:`SETUP_LEAST_HEIGHT` (0: the set-up its usual least): the capture panel open on
+        a 1280×720 screen at 150 % left 3–5 rows being filled beside a 100 px set-up (gui81)."""
+        self._rows_kept = max(0, int(rows))
+        self._share_left_pane(self._left.height())
 
     def keep_plot_height(self, height: int) -> None:
         """The plot tabs keep at least ``height`` px when the window's room shrinks (0: no

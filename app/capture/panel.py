@@ -172,6 +172,15 @@ PANEL_MIN_WIDTH = 240
 BOTTOM_PANEL_MAX_HEIGHT = 200
 #: the plot tabs' lowest (their tab bar and ~200 px of plot) while the panel is at the bottom
 PLOT_TABS_MIN_HEIGHT = 232
+#: the readings' rows in sight while the panel is open, the set-up giving way (24 faces read:
+#: the rows being filled seen)
+READINGS_ROWS_IN_SIGHT = 6
+#: the window's least height (px) for the panel at the bottom: a shorter window gets it at the
+#: right. At the bottom it made the window at least ~557 px tall (the plots' 232 px, the
+#: set-up's 100, the panel's own): on a 1280×720 screen at 150 % (853×480) the window grew
+#: past the screen and the readings table kept 1–4 rows in sight, the guidance cut in
+#: Chinese; a 662 px window (1280×720 at 100 %) keeps 9 rows (7 in Chinese), 6 at ~620 (gui81)
+BOTTOM_DOCK_LEAST_WINDOW_HEIGHT = 620
 #: Qt's "no maximum" of a widget's size
 QWIDGETSIZE_MAX = (1 << 24) - 1
 #: the columns a readout goes to unless another is chosen, the first the workbench has: the
@@ -960,8 +969,13 @@ class CapturePanel(QDockWidget):
         on_language_change(self, self._guide_again)
 
     def _docked(self, area) -> None:
-        """At the bottom the panel's parts stand side by side; at a side, one above the other."""
+        """At the bottom the panel's parts stand side by side; at a side, one above the other.
+        A window too short for it at the bottom (:data:`BOTTOM_DOCK_LEAST_WINDOW_HEIGHT`) has
+        it at the right: the readings keep their rows being filled."""
         bottom = area == Qt.DockWidgetArea.BottomDockWidgetArea
+        if bottom and self._too_short_for_bottom():
+            self.window_.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self)
+            return
         self.body_layout.setDirection(QBoxLayout.Direction.LeftToRight if bottom
                                       else QBoxLayout.Direction.TopToBottom)
         # stretched one above the other, the empty guidance left ~60 px blank at the top
@@ -980,6 +994,13 @@ class CapturePanel(QDockWidget):
         self._keep_plots()
         if bottom:  # a note said before, whole at the bottom too (once the parts are laid out)
             QTimer.singleShot(0, self._show_whole_note)
+
+    def _too_short_for_bottom(self) -> bool:
+        """The window is lower than the panel at the bottom needs to leave the readings
+        table its rows (its height before the panel's least height made it grow)."""
+        window = self.window_
+        return hasattr(window, "addDockWidget") and not self.isFloating() \
+            and window.height() < BOTTOM_DOCK_LEAST_WINDOW_HEIGHT
 
     def _show_whole_note(self) -> None:
         """Docked at the bottom, the panel grows (up to :data:`BOTTOM_PANEL_MAX_HEIGHT`, as the
@@ -1012,14 +1033,20 @@ class CapturePanel(QDockWidget):
 
     def _keep_plots(self, *_args) -> None:
         """While the panel is in sight at the bottom, every workbench's plot keeps ~200 px of
-        height (its result box gives way first); elsewhere, or closed, no minimum."""
+        height (its result box gives way first); elsewhere, or closed, no minimum. While it
+        is open (docked), every readings table keeps :data:`READINGS_ROWS_IN_SIGHT` rows, the
+        set-up giving way."""
         area = self.window_.dockWidgetArea(self) if hasattr(self.window_, "dockWidgetArea") \
             else None
         bottom = area == Qt.DockWidgetArea.BottomDockWidgetArea and not self.isHidden()
+        shown = not self.isHidden() and not self.isFloating()
         for presenter in getattr(self.window_, "presenters", ()):
             keep = getattr(presenter.view, "keep_plot_height", None)
             if keep is not None:
                 keep(PLOT_TABS_MIN_HEIGHT if bottom else 0)
+            rows = getattr(presenter.view, "keep_readings_rows", None)
+            if rows is not None:
+                rows(READINGS_ROWS_IN_SIGHT if shown else 0)
 
     # ------------------------------------------------------------ the first link's state
     @property
