@@ -293,11 +293,19 @@ class WorkbenchView(QWidget):
             return
         for widget in (self.readings_label, self.next_label, self.step_label, self.step):
             self._entry.removeWidget(widget)
-        row = 1 if above else 0
         self._entry.addWidget(self.readings_label, 0, 0, 1, 4 if above else 1)
-        self._entry.addWidget(self.next_label, row, 1)
-        self._entry.addWidget(self.step_label, row, 2)
-        self._entry.addWidget(self.step, row, 3)
+        if above:
+            # a narrow pane: the next reading across the pane, the step and its caption on a
+            # row of their own below it. Side by side in the pane's last quarter each was
+            # drawn a word (in Chinese a character) a line: "下一个 目标位置 +" six lines
+            # tall beside the docked capture panel at 150 % (gui80, gui81)
+            self._entry.addWidget(self.next_label, 1, 0, 1, 4)
+            self._entry.addWidget(self.step_label, 2, 0, 1, 2)
+            self._entry.addWidget(self.step, 2, 2, 1, 2)
+        else:
+            self._entry.addWidget(self.next_label, 0, 1)
+            self._entry.addWidget(self.step_label, 0, 2)
+            self._entry.addWidget(self.step, 0, 3)
         # beside the next reading, the caption keeps the width it was placed there for: the
         # plan's long next caption ("下一个：目标位置 270°，第 1 次测量 ↑，第 1 次读数（共 2 次）")
         # squeezed it to 57 px, narrower than its unbroken last words "测量：已标注" (72 px),
