@@ -443,17 +443,18 @@ def best_at(figure: str, draws: Draws, p: Pattern, designs: dict[str, list]
     return chosen[0][1], chosen[1][1], chosen[0][0] - chosen[1][0]
 
 
-def worst_misses(figure: str, stored, designs: list[tuple[Design, Design]]
-                 ) -> list[tuple[str, float, str, float]]:
-    """Each design's worst miss above and below over the grid ((pattern, roots) of it)."""
-    worst = [["", 0.0, "", 0.0] for _ in designs]
+def worst_misses(figure: str, stored, designs: list) -> list[tuple[str, float, str, float]]:
+    """Each design's (upper, lower) worst miss above and below over the grid ((pattern,
+    roots) of it)."""
+    names = [["", ""] for _ in designs]
+    shares = [[0.0, 0.0] for _ in designs]
     for p, r in stored:
-        for row, (up, low) in zip(worst, designs, strict=True):
-            for side, design, at in (("up", up, 0), ("low", low, 2)):
-                share = float(np.mean(design.misses(r, side)))
-                if share > row[at + 1]:
-                    row[at:at + 2] = [p.name, share]
-    return [(w[0], w[1], w[2], w[3]) for w in worst]
+        for name, share, (up, low) in zip(names, shares, designs, strict=True):
+            for at, (side, design) in enumerate((("up", up), ("low", low))):
+                got = float(np.mean(design.misses(r, side)))
+                if got > share[at]:
+                    name[at], share[at] = p.name, got
+    return [(n[0], s[0], n[1], s[1]) for n, s in zip(names, shares, strict=True)]
 
 
 def ours_widths(patterns: list[tuple[str, Pattern]], tests: int, rng: np.random.Generator
@@ -465,7 +466,7 @@ def ours_widths(patterns: list[tuple[str, Pattern]], tests: int, rng: np.random.
     for label, p in patterns:
         draws = Draws.make(rng, tests)
         x_up, x_down, s_up, s_down = (np.asarray(a, float) for a in draws.at(p))
-        widths = {k: [] for k in PRINTED}
+        widths: dict[str, list[float]] = {k: [] for k in PRINTED}
         missed = {k: [0, 0] for k in PRINTED}
         for i in range(tests):
             x = {"up": x_up[i], "down": x_down[i]}
@@ -479,7 +480,8 @@ def ours_widths(patterns: list[tuple[str, Pattern]], tests: int, rng: np.random.
                 widths[key].append(iv.high - iv.low)
                 missed[key][0] += int(iv.low > truth)
                 missed[key][1] += int(iv.high < truth)
-        out[label] = {k: (float(np.mean(widths[k])), *missed[k]) for k in PRINTED}
+        out[label] = {k: (float(np.mean(widths[k])), missed[k][0], missed[k][1])
+                      for k in PRINTED}
     return out
 
 
@@ -507,7 +509,7 @@ def study(narrow_n: int = NARROW_N, verify_n: int = VERIFY_N, eval_n: int = EVAL
     out = {}
     for figure in figures:
         designs, stored = narrowest(figure, search, evaluation)
-        rows = []
+        rows: list[list] = []
         for label, p in patterns:
             spread = oracle_spread(figure, p, evaluation)
             up, low, width = best_at(figure, evaluation, p, designs)
