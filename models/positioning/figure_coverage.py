@@ -78,8 +78,10 @@ and that case is not in the study's grid:
   bound from above of the ratios. Part of ours' narrowness is coverage: on the flat curve
   with σ alike (every μ equal, the truth 0; not among this study's shapes) ours missed below
   (its lower end above 0) in 800 tests (the benchmark's ours_widths, seed 12345) E↑ 68
-  (8.5 %, printed 92 %), E 90 (11.3 %, printed 92.5 %: 4 standard deviations short), B 27
-  (3.4 %), none above; reported (#39, width81b), not changed.
+  (8.5 %, printed 92 %: the whole of its 8 % on one side), E 90 (11.3 %, printed 92.5 %: 4
+  standard deviations short), B 27 (3.4 %), none above; on a ramp whose E↑ is 0.5 standard
+  errors E↑ 26 and E 27 of 400 (6.5 %, 6.8 %), at 1 se 11 and 11. Reported (#39, width81b),
+  not changed.
 * E, E↑, E↓ with Type B inputs: the envelope k · pair_u (the reference's errors within their
   U, of any shape) is a bias; the intervals hold it at its least favourable shape, the curve's
   own against it (it flattens the measured curve). An audit's systematic drawn at random
