@@ -57,6 +57,12 @@ and that case is not in the study's grid:
   (0.0215 there): that moves the lower end up by 0.8–1.1 % of the width (A, A↑, P; smooth,
   rough and one-noisy-target axes): left as it is. No test of A, A↑, A↓, P or Ps_max missed
   on either side in 4150 (σ alike, SIGMA_ALONG, cov78's axes): what the grid lacks is K ≥ 5.
+* Ps_max (width81b: the width study's second part, R↑'s designs with each target's s the
+  mean of its two directions'): the narrowest over σ patterns that scale both directions
+  alike is 1.74–1.75 × narrower than ours where σ is alike (12 | 36 targets), but misses
+  above at 0.079 where one target's σ↑ is 6 × the others' and its σ↓ → 0, where ours (each
+  direction's bound at the whole tail, summed) is exact (0.0224 at 10 ×): not a correct
+  interval, so no ratio is stated for Ps_max until the study's grid holds σ↓/σ↑ ≠ 1.
 * B, U_max: the upper end max(|B_i| + z u_i) is exact where one target's reversal stands
   Δ above an even reversal and Δ grows (its own bound, no correction for the m targets); its
   lower end missed 7 of 1000, 22 of 2400 and 1 of 750 tests: no slack.

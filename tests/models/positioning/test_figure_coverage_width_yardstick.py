@@ -21,7 +21,7 @@ from models.positioning.figure_coverage import (
     figure_coverage_cases,
 )
 from models.validation.cases import ValidationCase
-from tests.benchmarks.least_favourable_width_study import narrowest_widths
+from tests.benchmarks.least_favourable_width_study import cochran_c, narrowest_widths
 from tests.benchmarks.reversal_range_width_study import study
 
 #: the narrowest simple bounds' width ÷ the oracle spread on the flat curve, σ alike
@@ -117,3 +117,27 @@ def test_means_figures_ratio_is_the_reversal_range_study_s():
         assert narrowest == pytest.approx(narrow, rel=0.08), figure
         assert mine > 1.0, figure  # ours is wider than the oracle spread
         assert ratio <= NARROWEST_CORRECT_RATIO[figure] + 0.1, figure
+
+
+def test_ps_max_narrowest_over_sigma_alike_both_ways_is_not_correct():
+    """Ps_max (width81b): the width study's narrowest over σ patterns that scale both
+    directions alike is narrower than ours where σ is alike (1.75 × in the benchmark) only
+    because its grid lacks a target whose σ↓ is far below its σ↑, where ours is exact: there
+    the narrowest misses above far beyond the tail, ours does not; so it is not a record's
+    number."""
+    assert "Ps_max" not in NARROWEST_CORRECT_RATIO
+    rng = np.random.default_rng(81)
+    ours, _, designs, widths = narrowest_widths("Ps_max", 12, 5, rng, draws=50_000)
+    label, mine, narrow = widths["-"][0]
+    assert label == "alike" and mine / narrow["every K"] > 1.6
+    (factor, crit, _), _ = designs["-"]["every K"]
+    draws = np.random.default_rng(82)
+    nu, m = 4, 12
+    up, down = (np.sqrt(draws.chisquare(nu, (100_000, m)) / nu) for _ in range(2))
+    sigma_up, sigma_down = np.ones(m), np.ones(m)
+    sigma_up[0], sigma_down[0] = 6.0, 1e-6  # one target: σ↑ 6 × the others', σ↓ → 0
+    mean_s = 0.5 * (up * sigma_up + down * sigma_down)
+    truth = 0.5 * float(np.max(sigma_up + sigma_down))
+    f = np.where(cochran_c(mean_s) > crit, ours[0], factor)
+    assert np.mean(f * mean_s.max(axis=1) < truth) > 0.04  # the tail: 0.02275
+    assert np.mean(ours[0] * mean_s.max(axis=1) < truth) < 0.005
