@@ -59,7 +59,7 @@ and that case is not in the study's grid:
   on either side in 4150 (σ alike, SIGMA_ALONG, cov78's axes): what the grid lacks is K ≥ 5.
 * Ps_max (width81b: the width study's second part, R↑'s designs with each target's s the
   mean of its two directions'): the narrowest over σ patterns that scale both directions
-  alike is 1.74–1.75 × narrower than ours where σ is alike (12 | 36 targets), but misses
+  alike makes ours 1.74–1.75 × its width where σ is alike (12 | 36 targets), but misses
   above at 0.079 where one target's σ↑ is 6 × the others' and its σ↓ → 0, where ours (each
   direction's bound at the whole tail, summed) is exact (0.0224 at 10 ×): not a correct
   interval, so no ratio is stated for Ps_max until the study's grid holds σ↓/σ↑ ≠ 1.
