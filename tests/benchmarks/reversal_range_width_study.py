@@ -54,7 +54,7 @@ deviation of about 1–3 % at 200 tests.
 
     nice -n 10 python tests/benchmarks/reversal_range_width_study.py
 
-About 6 min at nice 10 on the shared 2-core machine (346 s at a load of 3.6; ours' 1200
+About 6–7 min at nice 10 on the shared 2-core machine (346–429 s at a load of 3.6+; ours' 1200
 analyses about 100 s of it).
 """
 
