@@ -108,7 +108,9 @@ ACCEPTANCE = (
                "not of a correct one, which must also hold where σ differs from target to "
                "target in ways the readings cannot show; 1.6 × is the aim. For R↑ and A↑ it is "
                "also stated against the narrowest interval that holds whatever σ does "
-               "(tests/benchmarks/least_favourable_width_study.py)."),
+               "(tests/benchmarks/least_favourable_width_study.py); for B, E↑ and E (and the "
+               "decided quantity, E/2) against the narrowest of simple bounds that hold every "
+               "curve and σ pattern of tests/benchmarks/reversal_range_width_study.py."),
     QT_TR_NOOP("Software cases: exact (every name and figure found in the PDF's text; the "
                "register finds what it issued and reports what was changed; a file reads to "
                "the same numbers as numpy.loadtxt)."),

@@ -35,9 +35,19 @@ the narrowest correct width); "every K, 2 sd below" asks the tail less 2 of them
 has room (from above); R↑'s two are estimated again on VERIFY_N fresh draws (5 runs). Then
 the designs that need to hold K ≤ 2 alone (the audit's pattern: one target's σ × 2).
 Widths: mean over EVAL_N draws of the case (one target's σ × 1, 2, 3) ÷ its oracle spread
-over all the case's draws. About 2.5 min at nice 10 on the shared 2-core machine;
-``--verify-a`` also estimates A↑'s every-K designs at 5 runs again on fresh draws (a few
-minutes more).
+over all the case's draws. About 4.5 min at nice 10 on the shared 2-core machine (271 s
+with Ps_max, under load); ``--verify-a`` also estimates A↑'s every-K designs at 5 runs
+again on fresh draws (a few minutes more).
+
+Ps_max (width81b, 12 and 36 targets, 5 runs, after the others: their draws unchanged): R↑'s
+machinery with each target's s the mean of its two directions' (σ↑ = σ↓ at every target)
+and ours 3 c max(s↑ + s↓). Ours ÷ the narrowest there is 1.74–1.75 where σ is alike, but
+that narrowest is NOT correct: ours is exact where one direction's σ at a target is far
+the larger (_repeatability_bounds; tests/models/uncertainty/test_joint_band_bounds.py), a
+pattern this grid does not hold (its every σ pattern scales both directions alike), and
+on it the narrowest found (1.99 where C at level 0.02 accepts) misses: one target's σ↑
+6 × the others', its σ↓ → 0, 400 000 draws: above 0.079 (ours 0.0002), at 10 × 0.031 (ours
+0.0224; tail 0.02275). Not a record's number until the grid holds σ↓/σ↑ ≠ 1.
 """
 
 from __future__ import annotations
@@ -114,6 +124,22 @@ FAMILIES = (("every K", 100.0, 0.0), ("every K, 2 sd below", 100.0, 2.0),
 VERIFY_N, VERIFY_CHUNK = 1_000_000, 200_000
 
 
+#: the figures that are a largest σ over the targets, with the same bounds' form: R↑ = 4 max σ
+#: (4 c max s_i) and Ps_max = 3 max(σ↑ + σ↓) (3 c max(s↑_i + s↓_i): _repeatability_bounds takes
+#: each direction's bound at the same level, so its ends are ours' factors times the largest
+#: sum), here in units of 4σ and 6σ with σ↑ = σ↓ at each target (width81b)
+SIGMA_MAXIMA = ("R_up", "Ps_max")
+
+
+def scatter_draws(figure: str, rng: np.random.Generator, count: int, m: int, nu: int
+                  ) -> np.ndarray:
+    """s / σ of each target: √(χ²_ν/ν); Ps_max's (s↑ + s↓)/(2σ), two such draws averaged."""
+    if figure == "Ps_max":
+        return 0.5 * (np.sqrt(rng.chisquare(nu, (count, m)) / nu)
+                      + np.sqrt(rng.chisquare(nu, (count, m)) / nu))
+    return np.sqrt(rng.chisquare(nu, (count, m)) / nu)
+
+
 def pattern_sigmas(pattern: str, k: float, m: int, crest: bool) -> np.ndarray:
     """σ along the axis: one target (0), two (0 and 1; the crest and the trough on the crest
     curve), a ramp 1 … K, or the trough quiet (σ / K)."""
@@ -183,7 +209,7 @@ def branch_factors(r: np.ndarray, c: np.ndarray, crits: list[float], ours: tuple
 
 def grid_cases(figure: str, m: int):
     """(curve, pattern, K, μ, σ) of every σ pattern of the grid."""
-    cases = ([("-", p) for p in ("one", "two", "ramp")] if figure == "R_up" else
+    cases = ([("-", p) for p in ("one", "two", "ramp")] if figure in SIGMA_MAXIMA else
              [(c, p) for c in ("flat", "crest") for p in ("one", "two", "ramp")]
              + [("trough", "quiet")])
     for curve, pattern in cases:
@@ -200,7 +226,7 @@ def case_draws(figure: str, s: np.ndarray, z: np.ndarray, mu: np.ndarray, sigma:
     """(r, C, measured, truth, s, x̄) of a case's draws: an upper end f misses where f < r,
     a lower end where it is above r."""
     sd = s * sigma
-    if figure == "R_up":
+    if figure in SIGMA_MAXIMA:
         truth, measured = float(sigma.max()), sd.max(axis=1)
         return truth / measured, cochran_c(sd), measured, truth, sd, None
     xbar = mu + z * sigma
@@ -212,7 +238,7 @@ def case_draws(figure: str, s: np.ndarray, z: np.ndarray, mu: np.ndarray, sigma:
 def ours_factors(figure: str, m: int, runs: int) -> tuple[float, float]:
     """The factors of our upper and lower ends (models.uncertainty.figure_intervals)."""
     nu, root = runs - 1, math.sqrt(runs)
-    if figure == "R_up":
+    if figure in SIGMA_MAXIMA:
         return (math.sqrt(nu / chdtri(nu, 1.0 - TAIL)),
                 math.sqrt(nu / chdtri(nu, 1.0 - (1.0 - TAIL) ** (1.0 / m))))
     cut = 0.5 * (1.0 - (1.0 - TAIL) ** (1.0 / m))
@@ -225,12 +251,12 @@ def narrowest_study(figure: str, m: int, runs: int, rng: np.random.Generator,
     """Ours, the critical values, each family's factors by level, ours' worst misses
     and the evaluation cases' draws."""
     nu, root = runs - 1, math.sqrt(runs)
-    draws = draws or (NARROW_N if figure == "R_up" else NARROW_A_N)
+    draws = draws or (NARROW_N if figure in SIGMA_MAXIMA else NARROW_A_N)
     ours = ours_factors(figure, m, runs)
-    alike = cochran_c(np.sqrt(rng.chisquare(nu, (draws, m)) / nu))
+    alike = cochran_c(scatter_draws(figure, rng, draws, m, nu))
     crits = [math.inf if level == 0 else float(np.quantile(alike, 1.0 - level))
              for level in LEVELS]
-    s = np.sqrt(rng.chisquare(nu, (draws, m)) / nu)
+    s = scatter_draws(figure, rng, draws, m, nu)
     z = rng.standard_normal((draws, m)) / root
     need = {name: [np.full(len(LEVELS), -math.inf), np.full(len(LEVELS), math.inf)]
             for name, _, _ in FAMILIES}
@@ -258,7 +284,7 @@ def narrowest_study(figure: str, m: int, runs: int, rng: np.random.Generator,
 
 
 def end_values(figure: str, sd: np.ndarray, xbar: np.ndarray | None, f) -> np.ndarray:
-    return np.asarray(f) * sd.max(axis=1) if figure == "R_up" else band_span(xbar, sd, f)
+    return np.asarray(f) * sd.max(axis=1) if figure in SIGMA_MAXIMA else band_span(xbar, sd, f)
 
 
 def narrowest_widths(figure: str, m: int, runs: int, rng: np.random.Generator,
@@ -332,11 +358,11 @@ def verify_designs(figure: str, m: int, runs: int, ours: tuple[float, float], de
     draws (the search chose each on the draws that it then passed): VERIFY_N (R↑),
     NARROW_A_N (A↑)."""
     nu = runs - 1
-    total = VERIFY_N if figure == "R_up" else NARROW_A_N
+    total = VERIFY_N if figure in SIGMA_MAXIMA else NARROW_A_N
     missed: dict[tuple[str, int, str, str, float], int] = {}
     for _ in range(max(1, total // VERIFY_CHUNK)):
         chunk = min(total, VERIFY_CHUNK)
-        s = np.sqrt(rng.chisquare(nu, (chunk, m)) / nu)
+        s = scatter_draws(figure, rng, chunk, m, nu)
         z = rng.standard_normal((chunk, m)) / math.sqrt(runs)
         for curve, pattern, k, mu, sigma in grid_cases(figure, m):
             r, c, *_ = case_draws(figure, s, z, mu, sigma)
@@ -363,9 +389,10 @@ def narrowest_main(verify_a: bool) -> None:
     every-K designs at 5 runs also on fresh draws, as R↑'s always are."""
     rng = np.random.default_rng(81)
     for figure, m, runs in (("R_up", 12, 5), ("R_up", 36, 5), ("R_up", 12, 3), ("R_up", 36, 3),
-                            ("A_up", 12, 5), ("A_up", 36, 5), ("A_up", 12, 3)):
+                            ("A_up", 12, 5), ("A_up", 36, 5), ("A_up", 12, 3),
+                            ("Ps_max", 12, 5), ("Ps_max", 36, 5)):
         narrowest_report(figure, m, runs, rng, sys.stdout,
-                         runs == 5 and (figure == "R_up" or verify_a))
+                         runs == 5 and (figure in SIGMA_MAXIMA or verify_a))
 
 
 if __name__ == "__main__":
