@@ -284,22 +284,26 @@ def check_b_holds_one_target_above_an_even_reversal(tests: int, most_above: int,
 @pytest.mark.slow
 def test_e_interval_is_not_wider_than_needed_on_a_spike_in_scatter():
     """The smoke version of :func:`check_e_not_wider_than_needed`: 20 tests, at most 5
-    missed (:func:`smoke_misses`), the same width bound (1.41 here, 1.49 at 40 tests); an
-    interval twice as wide as it is (the width the constrained Bayes world gave) fails it."""
+    missed (:func:`smoke_misses`), the same width bound (1.93 here since 0.8.30, 1.41 before);
+    an interval twice as wide as it was (the width the constrained Bayes world gave) fails it."""
     check_e_not_wider_than_needed(SMOKE_TESTS, smoke_misses(SMOKE_TESTS, 2.0 * TAIL))
 
 
 def check_e_not_wider_than_needed(tests: int, most_missed: int) -> None:
     """One target off a small sine, 72 targets, repeatability as large as the signal: E's
-    interval holds the truth and is at most 1.7 times the width a correct interval needs
-    (4 standard deviations of E − truth over the tests); with the constrained Bayes world
-    and its calibration it was twice that."""
+    interval holds the truth and is at most 2.0 times the oracle spread (4 standard
+    deviations of E − truth over the tests; 1.7 until 0.8.30); with the constrained Bayes
+    world and its calibration it was 2.8 times. Since 0.8.30 the lower end is 0 where the
+    measured range is within what the noise alone makes on a flat axis
+    (figure_intervals._range_within_noise): here the range of the 144 means mostly is, and
+    nothing in the readings tells this axis from a flat one, on which the lower end stood
+    above the truth 0 in 13 % of tests against 7.5 % allowed."""
     case = AxisCase("spike", 72, 1.0, seed=1)
     rows, truth = _interval_runs(case, "E", tests, 12)
     missed = int(np.sum((truth < rows[:, 1]) | (truth > rows[:, 2])))
     needed = 4.0 * float(np.std(rows[:, 0] - truth, ddof=1))
     assert missed <= most_missed
-    assert float(np.mean(rows[:, 2] - rows[:, 1])) <= 1.7 * needed
+    assert float(np.mean(rows[:, 2] - rows[:, 1])) <= 2.0 * needed
 
 
 def test_the_probability_stated_is_the_highest_no_axis_falls_short_of():
