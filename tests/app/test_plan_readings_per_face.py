@@ -12,10 +12,9 @@ import json
 from pathlib import Path
 
 import pytest
-from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QLineEdit
 
 from tests.app.capture.window_steps import show_workbench as _show
+from tests.app.table_typing import type_and_return
 
 #: two polygon projects with an entry plan saved by main before plan80, and what its window
 #: said of them (tests/fixtures/plan80/written_by_main.py)
@@ -37,17 +36,6 @@ def _ac_x(face: int, reading: int) -> str:
     return f"{0.3 * ((face * 7) % 5 - 2) + 0.05 * (reading - 1):.2f}"
 
 
-def _type_and_return(qtbot, table, row: int, column: int, text: str) -> None:
-    """``text`` typed into cell (row, column) through the table's editor, then Return."""
-    index = table.model().index(row, column)
-    table.setCurrentIndex(index)
-    table.edit(index)
-    editors = [w for w in table.viewport().findChildren(QLineEdit) if w.isVisible()]
-    assert len(editors) == 1
-    editors[0].selectAll()
-    qtbot.keyClicks(editors[0], text)
-    qtbot.keyClick(editors[0], Qt.Key.Key_Return)
-    qtbot.waitUntil(lambda: table.model().data(table.model().index(row, column)) == text)
 
 
 def _cursor_row(table) -> int:
@@ -82,8 +70,8 @@ def test_typed_readings_of_twelve_faces_twice_each_land_on_their_faces(bench, qt
         for reading in (1, 2):
             row = _cursor_row(table)  # where Return sent the cursor: the plan's next row
             captions[(face, reading)] = bench._next_text()
-            _type_and_return(qtbot, table, row, ac_x, _ac_x(face, reading))
-            _type_and_return(qtbot, table, row, encoder, _encoder(face, reading))
+            type_and_return(qtbot, table, row, ac_x, _ac_x(face, reading))
+            type_and_return(qtbot, table, row, encoder, _encoder(face, reading))
     sheet = bench.sheet
     used = [r for r in range(sheet.row_count) if sheet.text(r, encoder).strip()]
     assert len(used) == 2 * FACES
@@ -100,8 +88,8 @@ def test_typed_readings_of_twelve_faces_twice_each_land_on_their_faces(bench, qt
     # the closure's two readings: the analysis averages every face's two, no refusal
     for reading in (1, 2):
         row = _cursor_row(table)
-        _type_and_return(qtbot, table, row, ac_x, _ac_x(1, reading))
-        _type_and_return(qtbot, table, row, encoder, _encoder(1, reading))
+        type_and_return(qtbot, table, row, ac_x, _ac_x(1, reading))
+        type_and_return(qtbot, table, row, encoder, _encoder(1, reading))
     assert bench.plan_placement() is None
     qtbot.waitUntil(lambda: not bench.analysis_pending and bench.parsed is not None
                     and bench.parsed.n == 26, timeout=10000)

@@ -15,10 +15,9 @@ Through the real window: the readings typed in the table's editor, Return after 
 from __future__ import annotations
 
 import pytest
-from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QLineEdit
 
 from tests.app.capture.window_steps import polygon_bench
+from tests.app.table_typing import type_and_return
 
 pytestmark = pytest.mark.slow  # a window, a few dozen readings typed
 
@@ -40,18 +39,6 @@ def _ac_x(face: int, reading: int, set_: int) -> str:
     return f"{0.3 * ((face * 7) % 5 - 2) + 0.05 * (reading - 1) + 0.03 * set_:.2f}"
 
 
-def _type_and_return(qtbot, table, row: int, column: int, text: str) -> None:
-    """``text`` typed into cell (row, column) through the table's editor, then Return."""
-    index = table.model().index(row, column)
-    table.scrollTo(index)
-    table.setCurrentIndex(index)
-    table.edit(index)
-    editors = [w for w in table.viewport().findChildren(QLineEdit) if w.isVisible()]
-    assert len(editors) == 1
-    editors[0].selectAll()
-    qtbot.keyClicks(editors[0], text)
-    qtbot.keyClick(editors[0], Qt.Key.Key_Return)
-    qtbot.waitUntil(lambda: table.model().data(table.model().index(row, column)) == text)
 
 
 def _take(qtbot, bench, face: int, reading: int, set_: int) -> int:
@@ -62,9 +49,9 @@ def _take(qtbot, bench, face: int, reading: int, set_: int) -> int:
     row = index.row() if index.isValid() else 0
     if row < bench.sheet.row_count:  # a planned row: its face filled by the plan
         assert bench.sheet.text(row, bench.sheet.column_index("position")) in ("", str(face))
-    _type_and_return(qtbot, table, row, bench.sheet.column_index("ac_x_arcsec"),
+    type_and_return(qtbot, table, row, bench.sheet.column_index("ac_x_arcsec"),
                      _ac_x(face, reading, set_))
-    _type_and_return(qtbot, table, row, bench.sheet.column_index("encoder_deg"),
+    type_and_return(qtbot, table, row, bench.sheet.column_index("encoder_deg"),
                      _encoder(face, reading, set_))
     return row
 
@@ -101,13 +88,13 @@ def test_readings_typed_before_the_certificate_say_they_wait_for_it(bench, windo
 
     # a reading typed wrong is a bad cell, and not among those waiting
     table = view.table
-    _type_and_return(qtbot, table, 2, bench.sheet.column_index("ac_x_arcsec"), "0,3x")
+    type_and_return(qtbot, table, 2, bench.sheet.column_index("ac_x_arcsec"), "0,3x")
     _analysed(qtbot, bench)
     assert view.readings_label.text() == \
         "Readings — 5 taken, waiting for the face deviations, 1 bad cell(s)"
     assert view.warnings.text() == ("⚠ 1 cell(s) cannot be read (row 3); those rows are left "
                                     "out. Point at a red cell to see why.")
-    _type_and_return(qtbot, table, 2, bench.sheet.column_index("ac_x_arcsec"), _ac_x(2, 1, 1))
+    type_and_return(qtbot, table, 2, bench.sheet.column_index("ac_x_arcsec"), _ac_x(2, 1, 1))
     _analysed(qtbot, bench)
     assert view.readings_label.text() == "Readings — 6 taken, waiting for the face deviations"
 

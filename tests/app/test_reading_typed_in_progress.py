@@ -16,10 +16,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QLineEdit
 
 from tests.app.capture.window_steps import polygon_bench, show_workbench
-from tests.app.test_polygon_live_day import _ac_x, _certificate, _encoder, _type_and_return
+from tests.app.table_typing import clear_and_return, type_and_return
+from tests.app.test_polygon_live_day import _ac_x, _certificate, _encoder
 
 pytestmark = pytest.mark.slow  # a window, a few dozen cells typed
 
@@ -47,18 +47,6 @@ def polygon(window):
     yield from polygon_bench(window, faces=FACES, plan_sets=2)
 
 
-def _clear(qtbot, table, row: int, column: int) -> None:
-    """Cell (row, column) emptied in the table's editor (Delete), then Return."""
-    index = table.model().index(row, column)
-    table.scrollTo(index)
-    table.setCurrentIndex(index)
-    table.edit(index)
-    editors = [w for w in table.viewport().findChildren(QLineEdit) if w.isVisible()]
-    assert len(editors) == 1
-    editors[0].selectAll()
-    qtbot.keyClick(editors[0], Qt.Key.Key_Delete)
-    qtbot.keyClick(editors[0], Qt.Key.Key_Return)
-    qtbot.waitUntil(lambda: table.model().data(index) == "")
 
 
 def _next_row(bench) -> int:
@@ -71,9 +59,9 @@ def _take(qtbot, bench, face: int, set_: int) -> int:
     encoder. Its row."""
     row = _next_row(bench)
     table = bench.view.table
-    _type_and_return(qtbot, table, row, bench.sheet.column_index("ac_x_arcsec"),
+    type_and_return(qtbot, table, row, bench.sheet.column_index("ac_x_arcsec"),
                      _ac_x(face, 1, set_))
-    _type_and_return(qtbot, table, row, bench.sheet.column_index("encoder_deg"),
+    type_and_return(qtbot, table, row, bench.sheet.column_index("encoder_deg"),
                      _encoder(face, 1, set_))
     return row
 
@@ -96,7 +84,7 @@ def test_a_polygon_reading_half_typed_is_in_progress(polygon, window, qtbot, tmp
     # face 5 of set 2: its autocollimator x typed, not yet its encoder
     row = _next_row(bench)
     assert row == 9
-    _type_and_return(qtbot, view.table, row, bench.sheet.column_index("ac_x_arcsec"),
+    type_and_return(qtbot, view.table, row, bench.sheet.column_index("ac_x_arcsec"),
                      _ac_x(5, 1, 2))
     _analysed(qtbot, bench)
     assert view.next_label.text() == "next: set 2: face 4 of 6 (10/14)"  # moved on
@@ -125,7 +113,7 @@ def test_a_polygon_reading_half_typed_is_in_progress(polygon, window, qtbot, tmp
         "delete its rows to certify the complete ones."]
 
     # a text that cannot be read is bad even in the last row
-    _type_and_return(qtbot, view.table, row, bench.sheet.column_index("encoder_deg"), "130,0x")
+    type_and_return(qtbot, view.table, row, bench.sheet.column_index("encoder_deg"), "130,0x")
     _analysed(qtbot, bench)
     assert view.readings_label.text() == "Readings — 9 taken, 7 used, 1 bad cell(s)"
     assert view.warnings.text().startswith("⚠ 1 cell(s) cannot be read (row 10)")
@@ -133,7 +121,7 @@ def test_a_polygon_reading_half_typed_is_in_progress(polygon, window, qtbot, tmp
     assert bench.result.incomplete.typing is None
 
     # the encoder typed: the reading is complete, set 2 counts it
-    _type_and_return(qtbot, view.table, row, bench.sheet.column_index("encoder_deg"),
+    type_and_return(qtbot, view.table, row, bench.sheet.column_index("encoder_deg"),
                      _encoder(5, 1, 2))
     _analysed(qtbot, bench)
     assert view.readings_label.text() == "Readings — 10 taken, 7 used"
@@ -141,7 +129,7 @@ def test_a_polygon_reading_half_typed_is_in_progress(polygon, window, qtbot, tmp
     assert "cannot be read" not in view.warnings.text()
 
     # a reading cell left blank in any other row is still a bad cell
-    _clear(qtbot, view.table, 2, bench.sheet.column_index("encoder_deg"))
+    clear_and_return(qtbot, view.table, 2, bench.sheet.column_index("encoder_deg"))
     _analysed(qtbot, bench)
     assert view.warnings.text().startswith("⚠ 1 cell(s) cannot be read (row 3)")
     assert view.readings_label.text().endswith(", 1 bad cell(s)")
@@ -171,7 +159,7 @@ def test_a_theodolite_reading_half_typed_is_in_progress(theodolite, window, qtbo
                                                        "elevation_deg")]
     for r, cells in enumerate(rows[:9]):
         for column, text in zip(columns, cells, strict=True):
-            _type_and_return(qtbot, table, r, column, text)
+            type_and_return(qtbot, table, r, column, text)
     _analysed(qtbot, bench)
     assert bench.result is not None and bench.result.incomplete is None
     assert view.readings_label.text() == "Readings — 9 used"
@@ -180,7 +168,7 @@ def test_a_theodolite_reading_half_typed_is_in_progress(theodolite, window, qtbo
 
     # θ and A of the 10th row typed, not yet E
     for column, text in zip(columns[:2], rows[9][:2], strict=True):
-        _type_and_return(qtbot, table, 9, column, text)
+        type_and_return(qtbot, table, 9, column, text)
     _analysed(qtbot, bench)
     # main: "Readings — 9 used, 1 bad cell(s)", "⚠ 1 cell(s) cannot be read (row 10) …"
     assert view.readings_label.text() == "Readings — 10 taken, 9 used"
@@ -198,14 +186,14 @@ def test_a_theodolite_reading_half_typed_is_in_progress(theodolite, window, qtbo
         "No certificate: row 10: E / V [deg] not typed yet is not complete.")
 
     # E typed: ten readings, nothing in progress
-    _type_and_return(qtbot, table, 9, columns[2], rows[9][2])
+    type_and_return(qtbot, table, 9, columns[2], rows[9][2])
     _analysed(qtbot, bench)
     assert view.readings_label.text() == "Readings — 10 used"
     assert bench.result.incomplete is None
     assert view.error_plot.corrected_curve.getData()[0].size == 10
 
     # a reading cell blank in a row that is not the last: a bad cell
-    _clear(qtbot, table, 4, columns[1])
+    clear_and_return(qtbot, table, 4, columns[1])
     _analysed(qtbot, bench)
     assert view.readings_label.text() == "Readings — 9 used, 1 bad cell(s)"
     assert view.warnings.text().startswith("⚠ 1 cell(s) cannot be read (row 5)")
@@ -223,7 +211,7 @@ def test_a_closure_half_typed_is_not_said_missing(polygon, window, qtbot, tmp_pa
     _analysed(qtbot, bench)
     unread = "⚠ Set 1: no closure reading (the row back on its start face): drift not checked."
     assert unread in view.warnings.text()  # not typed: missing
-    _type_and_return(qtbot, view.table, FACES, bench.sheet.column_index("ac_x_arcsec"),
+    type_and_return(qtbot, view.table, FACES, bench.sheet.column_index("ac_x_arcsec"),
                      _ac_x(1, 1, 1))
     _analysed(qtbot, bench)
     assert view.next_label.text() == "next: set 2: face 1 of 6 (7/14)"
@@ -270,7 +258,7 @@ def test_half_typed_before_the_face_deviations(window, qtbot):
         for reading in (1, 2):
             _take_of(qtbot, bench, face, reading, 1)
     row = _next_row(bench)
-    _type_and_return(qtbot, view.table, row, bench.sheet.column_index("ac_x_arcsec"),
+    type_and_return(qtbot, view.table, row, bench.sheet.column_index("ac_x_arcsec"),
                      _ac_x(4, 1, 1))
     _analysed(qtbot, bench)
     # main: "Readings — 6 taken, waiting for the face deviations, 1 bad cell(s)"

@@ -73,15 +73,7 @@ def _flat(text) -> str:
 def _cells_with_chinese(document) -> list[tuple[str, str]]:
     """(Chinese, English) of every text cell of the statistics table the catalogue
     translates (a test report's in its own terms: 被检测对象)."""
-    words = report_translator(ZH) if document.is_test_report else ZH
-    out = []
-    for row in document.statistics.rows:
-        for cell in row:
-            if isinstance(cell, str) and cell:
-                chinese = in_language(cell, words)
-                if chinese != str(cell):
-                    out.append((chinese, str(cell)))
-    return out
+    return _translated(document, [cell for row in document.statistics.rows for cell in row])
 
 
 @pytest.fixture(scope="module")
