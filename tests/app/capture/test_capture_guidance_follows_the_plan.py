@@ -103,7 +103,9 @@ def test_a_take_after_the_plans_end_is_said_and_kept(window, qtbot):
             "points)); the reading is kept but left out of the analysis until its pos is typed")
         panel.disconnect_instrument()
     presenter.analyse_if_due()
-    assert rows in {e.row for e in presenter.parsed.errors}
+    # left out: a bad row, or (0.8.30, row81) the last row with part of a reading, its
+    # encoder not yet typed, in progress; either way never among the readings analysed
+    assert rows in {e.row for e in presenter.parsed.errors} or presenter.typing_row() == rows
     assert rows not in presenter.parsed.row_index.tolist()
 
 
