@@ -106,11 +106,12 @@ ACCEPTANCE = (
                "of the spread of measured − truth in each case (2z × its standard deviation "
                "over the case's tests): the width of an interval that knew σ along the axis, "
                "not of a correct one, which must also hold where σ differs from target to "
-               "target in ways the readings cannot show; 1.6 × is the aim. For R↑ and A↑ it is "
-               "also stated against the narrowest interval that holds whatever σ does "
+               "target in ways the readings cannot show. For R↑ and A↑ it is also stated "
+               "against the narrowest interval that holds whatever σ does "
                "(tests/benchmarks/least_favourable_width_study.py); for B, E↑ and E (and the "
                "decided quantity, E/2) against the narrowest of simple bounds that hold every "
-               "curve and σ pattern of tests/benchmarks/reversal_range_width_study.py."),
+               "curve and σ pattern of tests/benchmarks/reversal_range_width_study.py: 1.6 × "
+               "that narrowest is the aim."),
     QT_TR_NOOP("Software cases: exact (every name and figure found in the PDF's text; the "
                "register finds what it issued and reports what was changed; a file reads to "
                "the same numbers as numpy.loadtxt)."),

@@ -7999,10 +7999,6 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
         <translation>平台</translation>
     </message>
     <message>
-        <source>Coverage study of the positioning figures (ISO 230-2 / GB/T 17421.2 A, E, M, R, B, B̄ and their one-direction forms; VDI/DGQ 3441 P, Ps, Pa, U): simulated axes (models/validation/axis_figures_rig.py) with a known systematic deviation curve (smooth pitch error, every harmonic the targets resolve, one spike, the bundled sample&apos;s curve), a known reversal and a known repeatability (constant, or ±50 % along the axis; the backward 10 % larger) of 0.1, 0.5 and 2 × the signal, 12 and 72 targets, 5 runs each way by the standard test cycle, each test through the whole analysis. A figure&apos;s truth is the figure of the true distribution as the standard defines it. It passes when no more tests missed than a correct interval at the probability printed beside the figure would miss in 99 studies of 100 (binomial test); the probability printed is the one the full study reached where that is below the one asked for. Its mean width is stated as a multiple of the spread of measured − truth in each case (2z × its standard deviation over the case&apos;s tests): the width of an interval that knew σ along the axis, not of a correct one, which must also hold where σ differs from target to target in ways the readings cannot show; 1.6 × is the aim. For R↑ and A↑ it is also stated against the narrowest interval that holds whatever σ does (tests/benchmarks/least_favourable_width_study.py); for B, E↑ and E (and the decided quantity, E/2) against the narrowest of simple bounds that hold every curve and σ pattern of tests/benchmarks/reversal_range_width_study.py.</source>
-        <translation>定位指标的包含研究（ISO 230-2 / GB/T 17421.2 的 A、E、M、R、B、B̄ 及其单向形式；VDI/DGQ 3441 的 P、Ps、Pa、U）：仿真轴（models/validation/axis_figures_rig.py）具有已知的系统偏差曲线（平滑的螺距误差、目标位置可分辨的全部谐波、一个尖峰、随附样例的曲线）、已知的反向差值和已知的重复性（恒定，或沿轴变化 ±50 %；反向大 10 %），为信号的 0.1、0.5 和 2 倍，12 和 72 个目标位置，按标准检验循环每个方向 5 次，每次检验都经完整分析。指标的真值是按标准定义、由真实分布计算的指标。当未包含真值的检验次数不多于按指标旁所印概率的正确区间在 100 次研究中 99 次不会超过的次数（二项检验）时判为通过；当研究达到的概率低于要求的概率时，所印的是全面研究达到的概率。其平均宽度以各情形中“测得值 − 真值”分散范围的倍数给出（该情形各次检验标准差的 2z 倍）：这是已知 σ 沿轴分布的区间的宽度，而非正确区间的宽度——正确区间还须在 σ 因目标位置而异、而读数无法显示的情况下成立；目标为 1.6 倍。对 R↑ 和 A↑ 还给出其相对于无论 σ 如何变化都成立的最窄区间的倍数（tests/benchmarks/least_favourable_width_study.py）；对 B、E↑ 和 E（及判定量 E/2）则相对于在 tests/benchmarks/reversal_range_width_study.py 的每种曲线和 σ 分布下都成立的简单界限中最窄者。</translation>
-    </message>
-    <message>
         <source>pass</source>
         <extracomment>a decision&apos;s verdict and a rule&apos;s name, as the report prints them</extracomment>
         <translation>通过</translation>
@@ -9555,6 +9551,10 @@ what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO)
     <message>
         <source>Coverage by simulation (the decided quantity&apos;s interval, half the peak-to-peak): the interval must cover the true value at least as often as the probability printed beside it, since a customer&apos;s risk rests on that figure; N runs of a true coverage p give fewer hits than the least number stated in under 1 % of studies (binomial), so fewer fail. The shapes are those that occur (smooth, rough, a single spike, the samples&apos; real curves) with noise 0.1 to 2 times the half range at 12 to 72 points, and through the theodolite, polygon and positioning workbenches, each decided as its certificate decides (positioning: E/2 with E&apos;s own interval). Its width against what a correct interval needs (the oracle: the 2.275 %–97.725 % spread of value − truth over runs at the truth, read at Hazen&apos;s plotting positions, which few runs do not narrow) is reported beside it, and against the same spread of the measured half range, the least scattered estimate (the value, the measured half range less the noise&apos;s median excess, scatters more but runs less high); the aim is 1.6 times at the most.</source>
         <translation>按仿真检验包含概率（判定的量的区间，峰峰值的一半）：该区间包含真值的频率不得低于其旁所印的概率，因为客户的风险取决于这一数字；真实包含概率为 p 时，N 次仿真得到少于所述最少包含次数的情况不到 1 %（二项分布），故少于此数即为不合格。曲线形状取实际出现的形状（平滑、粗糙、单个尖峰、示例的真实曲线），噪声为峰峰值一半的 0.1 至 2 倍，12 至 72 个点，并经经纬仪、多面棱体和定位三个工作台，各按其证书的方式判定（定位：E/2，用 E 自身的区间）。其宽度与正确区间所需宽度（理想区间：在真值处重复仿真所得“值 − 真值”的 2.275 %–97.725 % 分位数间距，按 Hazen 绘图位置读取，不因仿真次数少而变窄）之比列于旁边，并与实测峰峰值一半的同一间距（离散最小的估计）相比（判定值为实测值减去噪声超出量的中位数，离散较大但偏高较少）；目标为不超过 1.6 倍。</translation>
+    </message>
+    <message>
+        <source>Coverage study of the positioning figures (ISO 230-2 / GB/T 17421.2 A, E, M, R, B, B̄ and their one-direction forms; VDI/DGQ 3441 P, Ps, Pa, U): simulated axes (models/validation/axis_figures_rig.py) with a known systematic deviation curve (smooth pitch error, every harmonic the targets resolve, one spike, the bundled sample&apos;s curve), a known reversal and a known repeatability (constant, or ±50 % along the axis; the backward 10 % larger) of 0.1, 0.5 and 2 × the signal, 12 and 72 targets, 5 runs each way by the standard test cycle, each test through the whole analysis. A figure&apos;s truth is the figure of the true distribution as the standard defines it. It passes when no more tests missed than a correct interval at the probability printed beside the figure would miss in 99 studies of 100 (binomial test); the probability printed is the one the full study reached where that is below the one asked for. Its mean width is stated as a multiple of the spread of measured − truth in each case (2z × its standard deviation over the case&apos;s tests): the width of an interval that knew σ along the axis, not of a correct one, which must also hold where σ differs from target to target in ways the readings cannot show. For R↑ and A↑ it is also stated against the narrowest interval that holds whatever σ does (tests/benchmarks/least_favourable_width_study.py); for B, E↑ and E (and the decided quantity, E/2) against the narrowest of simple bounds that hold every curve and σ pattern of tests/benchmarks/reversal_range_width_study.py: 1.6 × that narrowest is the aim.</source>
+        <translation>定位指标的包含研究（ISO 230-2 / GB/T 17421.2 的 A、E、M、R、B、B̄ 及其单向形式；VDI/DGQ 3441 的 P、Ps、Pa、U）：仿真轴（models/validation/axis_figures_rig.py）具有已知的系统偏差曲线（平滑的螺距误差、目标位置可分辨的全部谐波、一个尖峰、随附样例的曲线）、已知的反向差值和已知的重复性（恒定，或沿轴变化 ±50 %；反向大 10 %），为信号的 0.1、0.5 和 2 倍，12 和 72 个目标位置，按标准检验循环每个方向 5 次，每次检验都经完整分析。指标的真值是按标准定义、由真实分布计算的指标。当未包含真值的检验次数不多于按指标旁所印概率的正确区间在 100 次研究中 99 次不会超过的次数（二项检验）时判为通过；当研究达到的概率低于要求的概率时，所印的是全面研究达到的概率。其平均宽度以各情形中“测得值 − 真值”分散范围的倍数给出（该情形各次检验标准差的 2z 倍）：这是已知 σ 沿轴分布的区间的宽度，而非正确区间的宽度——正确区间还须在 σ 因目标位置而异、而读数无法显示的情况下成立。对 R↑ 和 A↑ 还给出其相对于无论 σ 如何变化都成立的最窄区间的倍数（tests/benchmarks/least_favourable_width_study.py）；对 B、E↑ 和 E（及判定量 E/2）则相对于在 tests/benchmarks/reversal_range_width_study.py 的每种曲线和 σ 分布下都成立的简单界限中最窄者：目标为该最窄者的 1.6 倍。</translation>
     </message>
     <message>
         <source>Software cases: exact (every name and figure found in the PDF&apos;s text; the register finds what it issued and reports what was changed; a file reads to the same numbers as numpy.loadtxt).</source>
@@ -12730,24 +12730,24 @@ what a name or description may hold that prints as no character of its own: a li
         <translation>包含研究</translation>
     </message>
     <message>
-        <source>{coverage} % ({missed} missed); width {ratio} × the spread of measured − truth in each case (an interval that knew σ along the axis; aim ≤ {limit} ×)</source>
-        <translation>{coverage} %（{missed} 次未包含）；宽度为各情形中“测得值 − 真值”分散范围的 {ratio} 倍（即已知 σ 沿轴分布的区间的宽度；目标 ≤ {limit} 倍）</translation>
-    </message>
-    <message>
-        <source>{ratio} × the narrowest of the width study&apos;s simple bounds that hold every curve and σ pattern it tries (its largest over the curves and σ it measures)</source>
-        <translation>为宽度研究中在其所试每种曲线和 σ 分布下都成立的简单界限中最窄者的 {ratio} 倍（取其所测各曲线和 σ 中的最大值）</translation>
-    </message>
-    <message>
-        <source>{ratio} × the narrowest interval that holds whatever σ does (σ alike, width study)</source>
-        <translation>为无论 σ 如何变化都成立的最窄区间的 {ratio} 倍（σ 相同，宽度研究）</translation>
-    </message>
-    <message>
         <source>interval of {figure} covers its truth ({truth}; μ, σ the true mean and standard deviation at each target)</source>
         <translation>{figure} 的区间包含其真值（{truth}；μ、σ 为各目标位置的真实平均值和标准偏差）</translation>
     </message>
     <message>
         <source>≥ {p} % (at most {allowed} of {tests} missed)</source>
         <translation>≥ {p} %（{tests} 次中至多 {allowed} 次未包含）</translation>
+    </message>
+    <message>
+        <source>{coverage} % ({missed} missed); width {ratio} × the spread of measured − truth in each case (an interval that knew σ along the axis)</source>
+        <translation>{coverage} %（{missed} 次未包含）；宽度为各情形中“测得值 − 真值”分散范围的 {ratio} 倍（即已知 σ 沿轴分布的区间的宽度）</translation>
+    </message>
+    <message>
+        <source>{ratio} × the narrowest of the width study&apos;s simple bounds that hold every curve and σ pattern it tries (its largest over the curves and σ it measures; aim ≤ {limit} ×)</source>
+        <translation>为宽度研究中在其所试每种曲线和 σ 分布下都成立的简单界限中最窄者的 {ratio} 倍（取其所测各曲线和 σ 中的最大值；目标 ≤ {limit} 倍）</translation>
+    </message>
+    <message>
+        <source>{ratio} × the narrowest interval that holds whatever σ does (σ alike, width study; aim ≤ {limit} ×)</source>
+        <translation>为无论 σ 如何变化都成立的最窄区间的 {ratio} 倍（σ 相同，宽度研究；目标 ≤ {limit} 倍）</translation>
     </message>
     <message>
         <source>interval of the decided quantity (half the peak-to-peak of both directions&apos; mean deviations, E/2, with the interval of E halved) covers its truth (half the range of μ↑ and μ↓)</source>
